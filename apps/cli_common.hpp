@@ -1,0 +1,31 @@
+#pragma once
+// Shared conventions of the cpkit command line (exit codes, output helpers).
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace cpkit::cli {
+
+/// Exit codes users script against (keep exactly).
+enum ExitCode : int {
+  kExitOk = 0,            ///< solved / at least one solution
+  kExitNoSolution = 1,    ///< the solve ran but found no solution
+  kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
+  kExitDisagreement = 3,  ///< `lcp verify`: a solver disagrees with the enumeration
+};
+
+/// Each subcommand registers itself and sets `exit_code` from its callback.
+/// Errors of the input kind are thrown as cpkit::InputError and mapped to kExitBadInput by main.
+struct Context {
+  int exit_code = kExitOk;
+};
+
+void add_lcp_command(CLI::App& app, Context& ctx);
+// Further subcommands (rate, map, step, simulate) declare their registration functions here.
+
+/// Prints a JSON object to stdout (one line per object, pretty with indent 1).
+inline void print_json(const nlohmann::json& j) { std::cout << j.dump(1) << std::endl; }
+
+}  // namespace cpkit::cli

@@ -1,0 +1,37 @@
+// cpkit: the command-line program. Thin: parse, call the library, print.
+#include <exception>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace cpkit::cli;
+  CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
+  app.set_version_flag("--version", std::string("cpkit ") + CPKIT_VERSION);
+  app.require_subcommand(1);
+  Context ctx;
+  add_lcp_command(app, ctx);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "cpkit: " << e.what() << "\n(run 'cpkit --help' for usage)\n";
+    return kExitBadInput;
+  } catch (const cpkit::InputError& e) {
+    std::cerr << "cpkit: bad input: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "cpkit: bad input: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "cpkit: internal error: " << e.what() << '\n';
+    return 4;
+  }
+  return ctx.exit_code;
+}

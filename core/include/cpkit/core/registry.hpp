@@ -1,0 +1,55 @@
+#pragma once
+/// \file registry.hpp
+/// Name -> solver, with capabilities, so the CLI, tests and benchmarks can run every solver on
+/// the same problem. Solvers are plain functions (no hidden mutable state: safe on many threads).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/problem.hpp"
+#include "cpkit/core/result.hpp"
+
+namespace cpkit {
+
+enum class ProblemKind { kLcp, kBoxLcp, kMcp };
+
+struct SolverInfo {
+  std::string name;          ///< registry key, e.g. "lemke", "fb-newton"
+  std::string description;   ///< one line, with a citation key
+  bool dense = true;         ///< accepts dense LCP storage
+  bool sparse = false;       ///< accepts sparse LCP storage
+  bool serialized = false;   ///< calls are serialized internally (e.g. Ipopt)
+};
+
+using LcpSolveFn = std::function<SolveResult(const LcpProblem&, const CommonOptions&)>;
+using BoxLcpSolveFn = std::function<SolveResult(const BoxLcpProblem&, const CommonOptions&)>;
+using McpSolveFn = std::function<SolveResult(const McpProblem&, const CommonOptions&)>;
+
+/// One registered solver. Entry points that are empty mean "does not accept that kind".
+struct SolverEntry {
+  SolverInfo info;
+  LcpSolveFn solve_lcp;
+  BoxLcpSolveFn solve_box_lcp;
+  McpSolveFn solve_mcp;
+  bool accepts(ProblemKind kind) const;
+  /// Accepts this LCP (kind and storage).
+  bool accepts(const LcpProblem& p) const;
+};
+
+class SolverRegistry {
+ public:
+  /// Adds a solver; throws std::invalid_argument on a duplicate or empty name.
+  void add(SolverEntry entry);
+  /// nullptr when unknown.
+  const SolverEntry* find(const std::string& name) const;
+  /// Names in registration order, optionally only those accepting `kind`.
+  std::vector<std::string> names() const;
+  std::vector<std::string> names(ProblemKind kind) const;
+  const std::vector<SolverEntry>& entries() const { return entries_; }
+
+ private:
+  std::vector<SolverEntry> entries_;
+};
+
+}  // namespace cpkit

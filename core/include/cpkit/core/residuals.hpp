@@ -1,0 +1,32 @@
+#pragma once
+/// \file residuals.hpp
+/// Residuals of a candidate solution, computed from the problem data only.
+///
+/// Scale (documented tolerance convention, docs/conventions.md):
+///   scale = 1 + max( ||q||_inf, || |M| |z| ||_inf )
+/// i.e. one plus the magnitude of the terms that make up w = M z + q, which bounds the rounding
+/// error of w. The acceptance test is  natural / scale <= tol.
+#include <Eigen/Core>
+
+#include "cpkit/core/problem.hpp"
+
+namespace cpkit {
+
+struct Residuals {
+  double natural = 0;        ///< scaled natural residual ||min(z, w)||_inf / scale (the test)
+  double natural_abs = 0;    ///< unscaled ||min(z, w)||_inf
+  double complementarity = 0;///< max_i |z_i w_i|
+  double min_z = 0;          ///< min_i z_i (negative = infeasible); for MCPs min distance to box
+  double min_w = 0;          ///< min_i w_i (negative = infeasible); for MCPs the sign error
+  Eigen::Index worst_index = -1;  ///< index attaining natural_abs (-1 when n = 0)
+  double scale = 1;          ///< the scale used
+};
+
+/// LCP residuals of z; also returns w = M z + q recomputed from the data.
+Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w);
+/// Box-LCP residuals: natural = ||z - mid(l, u, z - w)||_inf / scale.
+Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w);
+/// MCP residuals with F evaluated at x (F given). scale = 1 + ||F(x)||_inf.
+Residuals mcp_residuals(const McpProblem& p, const Vec& x, const Vec& F);
+
+}  // namespace cpkit

@@ -1,0 +1,62 @@
+#pragma once
+/// \file result.hpp
+/// What every solver returns (through finalize()).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/problem.hpp"
+#include "cpkit/core/residuals.hpp"
+#include "cpkit/core/status.hpp"
+
+namespace cpkit {
+
+/// Farkas-type proof that an LCP has no solution: y >= 0, M^T y <= 0, q^T y < 0
+/// (then y^T w = (M^T y)^T z + q^T y < 0 for every z >= 0, so w >= 0 is impossible).
+struct Certificate {
+  Vec y;
+  bool checked = false;      ///< set by finalize() after re-checking from the data
+  double q_dot_y = 0;        ///< q^T y (negative), recomputed by finalize()
+  double max_MTy = 0;        ///< max_i (M^T y)_i (<= tolerance), recomputed by finalize()
+};
+
+/// One row of the optional per-iteration trace (PATH-style log).
+struct TraceEntry {
+  int iteration = 0;
+  double residual = 0;       ///< solver's merit (e.g. ||Phi|| or natural residual)
+  double step = 0;           ///< step length taken
+  std::string kind;          ///< e.g. "newton", "gradient", "pivot", "z0-enters"
+  int entering = -1;         ///< pivoting solvers: entering variable index
+  int leaving = -1;          ///< pivoting solvers: leaving variable index
+};
+
+/// How one solver of a chain ended (SolveResult::attempts).
+struct Attempt {
+  std::string solver;
+  Status status = Status::kNotRun;
+  double residual = 0;
+  double seconds = 0;
+  std::string message;
+};
+
+struct SolveResult {
+  Status status = Status::kNotRun;
+  std::string solver;        ///< registry name of the solver that produced z
+  Vec z;                     ///< candidate (solution when is_solution(status))
+  Vec w;                     ///< w = M z + q (F(x) for MCPs), recomputed by finalize()
+  Residuals residuals;       ///< recomputed by finalize()
+  int iterations = 0;        ///< iterations, or pivots for pivoting methods
+  int function_evals = 0;
+  int jacobian_evals = 0;
+  int line_search_steps = 0;
+  int gradient_steps = 0;
+  double seconds = 0;        ///< wall time of the solve
+  std::optional<Certificate> certificate;  ///< only with kInfeasible (checked)
+  std::optional<Vec> ray;    ///< Lemke: direction of the secondary ray in (z, z0) space
+  std::vector<int> basis;    ///< pivoting methods: final complementary basis (i: z_i, ~i: w_i)
+  std::vector<TraceEntry> trace;
+  std::vector<Attempt> attempts;  ///< solver chains: every attempt, in order
+  std::string message;       ///< human-readable account of the outcome
+};
+
+}  // namespace cpkit

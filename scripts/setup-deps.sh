@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages cpkit needs, only those that are missing.
+# Usage: scripts/setup-deps.sh [--bench]
+#   --bench  also the peers the benchmarks compare against (Siconos numerics, lrslib).
+# Runs `apt-get update` once, and only when something is missing. Needs root (or sudo).
+set -euo pipefail
+
+packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
+          catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy)
+if [[ "${1:-}" == "--bench" ]]; then
+  packages+=(libsiconos-numerics-dev lrslib)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "cpkit setup: installing missing Debian packages: ${missing[*]}" >&2
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "cpkit setup: need root or sudo to install ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
