@@ -1,0 +1,57 @@
+#pragma once
+/// \file rate_problem.hpp
+/// The rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]:
+/// given a contact state and a load rate (dF_T, dF_N), every solution (rates), by one of three
+/// independent routes (docs/contact_model.md).
+#include <string_view>
+#include <optional>
+#include <vector>
+
+#include "cpkit/rate_problem/contact_state.hpp"
+#include "cpkit/rate_problem/parameters.hpp"
+#include "cpkit/rate_problem/rates.hpp"
+
+namespace cpkit::rate {
+
+enum class RateMethod {
+  kEnumerate,  ///< the state's LCP (model.md) + complete enumeration, mapped to physical rates
+  kAnalytic,   ///< the paper's closed forms (b.i-b.iii, c, d.i-d.ii, eqn (51))
+  kLemke,      ///< one solution by Lemke's method on the state's LCP
+  kFbNewton,   ///< one solution by the Fischer-Burmeister Newton method
+  kIpopt,      ///< one solution by the Ipopt MPCC route
+};
+std::string_view to_string(RateMethod m) noexcept;  ///< "enumerate", "analytic", "lemke", "fb-newton", "ipopt"
+std::optional<RateMethod> rate_method_from_string(std::string_view s) noexcept;
+
+/// All solutions of one rate problem, and the quantities that decide them.
+struct RateSolutionSet {
+  std::vector<RateSolution> solutions;  ///< points, segments, rays; types partition the set
+  bool infinite = false;                ///< some piece is a segment or a ray
+  bool complete = true;                 ///< false for single-solution methods (lemke, ...)
+  double Lambda = 0;                    ///< eqn (51) for state d with s = sgn P_T (else 0)
+  double D_plus = 0, D_minus = 0;       ///< D_s = a11 - s mu a12 (state b)
+  bool unique_for_all_directions = false;  ///< b: a11 > mu|a12|; c: true; d: Lambda > 0; a: true
+  /// Number of solutions: -1 when infinite.
+  int count() const noexcept;
+  /// Bit mask of the types present (bit = static_cast<int>(SolutionType)).
+  unsigned type_mask() const noexcept;
+};
+
+/// Solves the rate problem. Throws InputError for invalid parameters/state/load (NaN, A not
+/// SPD, mu <= 0, P_N <= 0 in c/d, ...).
+RateSolutionSet solve_rate_problem(const ContactParameters& params, const ContactState& state,
+                                   const LoadRate& load,
+                                   RateMethod method = RateMethod::kEnumerate);
+
+/// Count (-1: infinite) and type mask only: the allocation-free fast path the maps call
+/// millions of times. Inputs must already be valid (no validation here: call
+/// params.validate() / state.validate() once per map).
+struct RateSummary {
+  int count = 0;
+  unsigned types = 0;
+};
+RateSummary summarize_rate_problem(const ContactParameters& params, const ContactState& state,
+                                   const LoadRate& load,
+                                   RateMethod method = RateMethod::kEnumerate) noexcept;
+
+}  // namespace cpkit::rate
