@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   Context ctx;
   add_lcp_command(app, ctx);
+  add_map_command(app, ctx);
+  add_rate_command(app, ctx);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,6 +1,9 @@
 #include "cpkit/lcp/solvers.hpp"
 
+#include "cpkit/lcp/auto_chain.hpp"
+#include "cpkit/lcp/fb_newton.hpp"
 #include "cpkit/lcp/lemke.hpp"
+#include "cpkit/lcp/mpcc_solvers.hpp"
 
 namespace cpkit::lcp {
 namespace {
@@ -8,6 +11,10 @@ namespace {
 SolverRegistry build() {
   SolverRegistry r;
   r.add(lemke_entry());
+  r.add(fb_newton_entry());
+  r.add(ipopt_entry());
+  r.add(nlopt_entry());
+  r.add(auto_entry());
   // Each solver module adds its entry here, in the order of the automatic chain.
   return r;
 }

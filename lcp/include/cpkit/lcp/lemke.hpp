@@ -3,12 +3,27 @@
 /// Lemke's complementary pivoting method for dense LCPs [Cottle-Pang-Stone 1992, Sec. 4.4],
 /// with the lexicographic minimum-ratio test so that degenerate problems never cycle.
 ///
-/// Problem: z >= 0, w = M z + q >= 0, z . w = 0 (cpkit's convention).
-/// Guarantees: terminates (lexicographic rule) with a solution or a secondary ray. For
-/// copositive-plus M a secondary ray proves infeasibility [CPS 1992, Thm 4.4.13]; the ray's
-/// certificate y >= 0, M^T y <= 0, q^T y < 0 is re-checked by finalize() before kInfeasible is
-/// reported; otherwise the result is kRayTermination with the ray in `result.ray`.
+/// Problem: z >= 0, w = M z + q >= 0, z . w = 0 (cpkit's convention), augmented with the
+/// artificial variable z0 >= 0 and the covering vector d > 0:  w = M z + q + d z0.
+///
+/// Guarantees: terminates (lexicographic rule, finite number of bases) with a solution, a
+/// secondary ray, or at the pivot/time limit. Lemke solves every LCP with a P-matrix, and for a
+/// copositive-plus M a secondary ray proves infeasibility [CPS 1992, Thm 4.4.13]. On a secondary
+/// ray the candidate certificates y (the z-part of the ray direction, then minus the z0-row of
+/// the basis inverse) are checked for y >= 0, M^T y <= 0, q^T y < 0 and finalize() re-checks the
+/// one kept before kInfeasible is reported; otherwise the result is kRayTermination with the ray
+/// (z-part then z0-part, size n + 1) in `result.ray`.
 /// On failure z holds the last basic solution (z0 dropped) and is not a solution.
+///
+/// result.iterations counts the pivots, the initial z0 pivot included (q >= 0: no pivot).
+/// Trace (CommonOptions::record_trace): one TraceEntry per pivot with kind "z0-enters",
+/// "pivot" or "z0-leaves", entering/leaving variable ids (0..n-1: z_i, n: z0, n+1+i: w_i),
+/// step = the value of the entering variable, residual = z0 after the pivot.
+///
+/// Work per pivot: O(n k + k^2) with k the number of basic z's (the basis inverse is kept in
+/// block form: only the k x k inverse of M's basic block is updated); its accuracy is checked
+/// every 16 pivots from the data and it is recomputed when the check fails.
+/// Sparse input is densified when n <= kLemkeMaxDensify, else the result is kUnsupported.
 #include <vector>
 
 #include "cpkit/core/finalize.hpp"
@@ -19,14 +34,22 @@
 
 namespace cpkit::lcp {
 
+/// Largest sparse LCP that solve_lemke densifies (larger ones: Status::kUnsupported).
+constexpr Eigen::Index kLemkeMaxDensify = 2000;
+
 struct LemkeOptions {
   CommonOptions common;  ///< max_iterations = 0: pivot limit 50 * (n + 1) + 1000 (documented)
-  Vec covering;          ///< covering vector d > 0 for z0 (empty: all ones)
-  /// Optional warm start: a complementary basis, basis[i] = i (z_i basic) or ~i (w_i basic).
-  /// When it is feasible for q the method returns it (after verification) without pivoting;
-  /// otherwise Lemke starts from it as documented in docs/solvers.md.
+  Vec covering;          ///< covering vector d > 0 for z0 (empty: all ones), size n
+  /// Optional warm start: a complementary basis, basis[i] = i (z_i basic) or ~i (w_i basic),
+  /// e.g. SolveResult::basis of a previous solve of a nearby problem. When its basic solution
+  /// is a solution it is returned (after verification) with 0 pivots; otherwise Lemke starts
+  /// from it with the covering vector applied in that basis' coordinates (docs/solvers.md).
+  /// A warm basis whose block M(Z, Z) is singular is ignored (cold start, noted in message).
   std::vector<int> warm_basis;
-  int refactor_every = 0;  ///< pivots between refactorizations of the basis; 0: automatic
+  /// > 0: recompute the basis inverse from the data every that many pivots (in addition to
+  /// the automatic accuracy check); 0: only when the automatic check fails.
+  int refactor_every = 0;
+  /// Empty when usable for a problem of size n; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
 

@@ -3,6 +3,7 @@
 /// The rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]:
 /// given a contact state and a load rate (dF_T, dF_N), every solution (rates), by one of three
 /// independent routes (docs/contact_model.md).
+#include <string>
 #include <string_view>
 #include <optional>
 #include <vector>
@@ -31,6 +32,11 @@ struct RateSolutionSet {
   double Lambda = 0;                    ///< eqn (51) for state d with s = sgn P_T (else 0)
   double D_plus = 0, D_minus = 0;       ///< D_s = a11 - s mu a12 (state b)
   bool unique_for_all_directions = false;  ///< b: a11 > mu|a12|; c: true; d: Lambda > 0; a: true
+  /// Componentwise magnitudes used for tolerance comparisons of rates (see contains()):
+  /// forces |dF_T| + |dF_N|, displacement rates that times (C_T + 1/a11 + 1/a22).
+  Rates scale;
+  /// Why the set is incomplete or a single solver failed (empty otherwise).
+  std::string message;
   /// Number of solutions: -1 when infinite.
   int count() const noexcept;
   /// Bit mask of the types present (bit = static_cast<int>(SolutionType)).
@@ -43,12 +49,21 @@ RateSolutionSet solve_rate_problem(const ContactParameters& params, const Contac
                                    const LoadRate& load,
                                    RateMethod method = RateMethod::kEnumerate);
 
+/// Do two solution sets agree (same pieces: type, kind, ends and their closedness, rates within
+/// rel_tol per component relative to a.scale)? Segment ends may be listed in either order.
+/// When they differ and `why` is set, it receives a one-line reason.
+bool same_solution_sets(const RateSolutionSet& a, const RateSolutionSet& b, double rel_tol = 1e-7,
+                        std::string* why = nullptr);
+
 /// Count (-1: infinite) and type mask only: the allocation-free fast path the maps call
 /// millions of times. Inputs must already be valid (no validation here: call
 /// params.validate() / state.validate() once per map).
 struct RateSummary {
   int count = 0;
   unsigned types = 0;
+  /// false when the enumeration met sign tests too close to call (count/types may then be
+  /// wrong near a boundary between solution types); always true for the analytic route.
+  bool reliable = true;
 };
 RateSummary summarize_rate_problem(const ContactParameters& params, const ContactState& state,
                                    const LoadRate& load,

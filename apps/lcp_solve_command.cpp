@@ -1,0 +1,139 @@
+// `cpkit lcp solve FILE [--solver NAME] [--json] [--tol T] [--max-iter K] [--time-limit S]
+//                       [--trace]`
+// Reads an LCP (.json or .dat), runs one solver from cpkit::lcp::solvers() and prints the result
+// (JSON object with --json, a short text report otherwise). Exit codes: 0 solved (solved or
+// solved_inaccurate), 1 the solve ran but found no solution, 2 bad input or usage (message on
+// stderr, nothing on stdout).
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/io.hpp"
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/report.hpp"
+#include "cpkit/core/result.hpp"
+#include "cpkit/lcp/solvers.hpp"
+#include "lcp_actions.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+/// Command-line arguments of `lcp solve` (owned by the callback, alive during parse()).
+struct LcpSolveArgs {
+  std::string file;
+  std::string solver = "lemke";
+  bool json = false;
+  double tol = CommonOptions{}.tol;
+  int max_iter = 0;
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  bool trace = false;
+};
+
+/// "a, b, c": the registered LCP solver names (for error messages and help).
+std::string lcp_solver_list() {
+  std::string out;
+  for (const auto& name : cpkit::lcp::solvers().names(ProblemKind::kLcp))
+    out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+/// Looks `name` up in the registry; InputError listing the valid names when unknown or when the
+/// solver does not accept this problem's storage.
+const SolverEntry& find_lcp_solver(const std::string& name, const LcpProblem& problem) {
+  const SolverEntry* entry = cpkit::lcp::solvers().find(name);
+  if (entry == nullptr || !entry->accepts(ProblemKind::kLcp))
+    throw InputError("unknown solver '" + name + "' (valid: " + lcp_solver_list() + ")");
+  if (!entry->accepts(problem))
+    throw InputError("solver '" + name + "' does not accept " +
+                     (problem.is_sparse() ? "sparse" : "dense") + " LCPs");
+  return *entry;
+}
+
+/// Common options from the command line; InputError naming the bad option.
+CommonOptions common_options(const LcpSolveArgs& a) {
+  CommonOptions o;
+  o.tol = a.tol;
+  if (o.tol_acceptable < o.tol) o.tol_acceptable = o.tol;  // --tol above 1e-6 widens both
+  o.max_iterations = a.max_iter;
+  o.time_limit_s = a.time_limit_s;
+  o.record_trace = a.trace;
+  throw_if_invalid(o.validate(), "options");
+  return o;
+}
+
+/// Runs one solver on the problem. The result has been through cpkit::finalize() (every
+/// registered solver returns through it).
+SolveResult run_one_solver(const SolverEntry& entry, const LcpProblem& problem,
+                           const CommonOptions& options) {
+  SolveResult r = entry.solve_lcp(problem, options);
+  if (r.solver.empty()) r.solver = entry.info.name;
+  return r;
+}
+
+/// The JSON object printed for one result (to_json plus the problem's name when known).
+nlohmann::json result_json(const SolveResult& r, const LcpProblem& problem) {
+  nlohmann::json j = to_json(r);
+  if (!problem.name.empty()) j["problem"] = problem.name;
+  return j;
+}
+
+/// The text report printed for one result (with the pivot/iteration trace when recorded).
+std::string result_text(const SolveResult& r, const LcpProblem& problem) {
+  std::ostringstream s;
+  if (!problem.name.empty()) s << "problem:    " << problem.name << " (n = " << problem.size()
+                               << ")\n";
+  s << to_text(r);
+  if (!r.trace.empty()) {
+    s << "trace:\n";
+    for (const auto& e : r.trace) {
+      s << "  " << e.iteration << ' ' << e.kind;
+      if (e.entering >= 0 || e.leaving >= 0)
+        s << " entering " << e.entering << " leaving " << e.leaving;
+      s << " residual " << e.residual << '\n';
+    }
+  }
+  return s.str();
+}
+
+/// Exit code of one result: 0 when it is a (verified) solution, else 1.
+int exit_code_of(const SolveResult& r) { return is_solution(r.status) ? kExitOk : kExitNoSolution; }
+
+/// The whole action. Everything that can be bad input is checked before anything is printed.
+int run_lcp_solve(const LcpSolveArgs& a) {
+  const LcpProblem problem = read_lcp_file(a.file);  // validates; InputError names file/line
+  const CommonOptions options = common_options(a);
+  const SolverEntry& entry = find_lcp_solver(a.solver, problem);
+  const SolveResult r = run_one_solver(entry, problem, options);
+  if (a.json)
+    print_json(result_json(r, problem));
+  else
+    std::cout << result_text(r, problem) << std::flush;
+  return exit_code_of(r);
+}
+
+}  // namespace
+
+void add_lcp_solve(CLI::App& lcp, Context& ctx) {
+  auto args = std::make_shared<LcpSolveArgs>();
+  auto* cmd = lcp.add_subcommand("solve", "Solve an LCP 0 <= z _|_ Mz + q >= 0 from a .json or "
+                                          ".dat file");
+  cmd->add_option("FILE", args->file, "problem file (.json or Siconos .dat)")->required();
+  cmd->add_option("--solver", args->solver,
+                  "solver name from the registry (default lemke; valid: " + lcp_solver_list() +
+                      ")");
+  cmd->add_flag("--json", args->json, "print one JSON object on stdout");
+  cmd->add_option("--tol", args->tol,
+                  "tolerance on the scaled natural residual (default 1e-10)");
+  cmd->add_option("--max-iter", args->max_iter,
+                  "iteration/pivot limit (0: the solver's documented default)");
+  cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");
+  cmd->add_flag("--trace", args->trace, "record and print the per-iteration (pivot) trace");
+  cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_solve(*args); });
+}
+
+}  // namespace cpkit::cli

@@ -1,0 +1,481 @@
+// `cpkit map`: non-existence and non-uniqueness maps of the rate problem (docs/maps.md).
+// Thin: parse, call the library (cpkit/rate_problem/{direction_map,grid_map,map_output}.hpp),
+// write CSV/JSON, run the plotting script.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
+#include "cpkit/rate_problem/direction_map.hpp"
+#include "cpkit/rate_problem/grid_map.hpp"
+#include "cpkit/rate_problem/map_output.hpp"
+#include "cpkit/rate_problem/map_presets.hpp"
+
+namespace cpkit::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cpkit::rate;
+
+constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplotlib is missing
+
+struct MapArgs {
+  std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
+  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
+  int sgnPT = 1;
+  double from = 0, to = 0, from2 = 0, to2 = 0;
+  int n = 0, n2 = 0, theta_n = 0, threads = 0;
+  bool plot = false, json = false, list_presets = false;
+  // Which options were given (CLI11 Option pointers).
+  std::map<std::string, CLI::Option*> opt;
+  bool given(const std::string& name) const {
+    auto it = opt.find(name);
+    return it != opt.end() && it->second->count() > 0;
+  }
+};
+
+std::string fmt(double x, int digits = 4) {
+  std::ostringstream s;
+  s << std::setprecision(digits) << x;
+  return s.str();
+}
+
+std::string types_text(unsigned mask) {
+  std::string s = types_to_string(mask);
+  for (auto& c : s)
+    if (c == '|') c = ',';
+  std::string out;
+  for (char c : s) {
+    out += c;
+    if (c == ',') out += ' ';
+  }
+  return out;
+}
+
+std::string count_text(int count) {
+  if (count < 0) return "a continuum of solutions";
+  if (count == 0) return "no solution";
+  return std::to_string(count) + (count == 1 ? " solution" : " solutions");
+}
+
+void require_finite(double v, const char* name) {
+  if (!std::isfinite(v)) throw InputError(std::string("--") + name + " must be finite");
+}
+
+/// The model, kind and axes from the preset (if any) and the explicit options.
+struct MapSetup {
+  ContactParameters params;
+  ContactState state;
+  MapKind kind = MapKind::kDirection;
+  MapAxis axis, axis2;
+  bool have_axis = false, have_axis2 = false;
+  int theta_n = 360;
+};
+
+MapSetup build_setup(const MapArgs& a) {
+  MapSetup s;
+  if (!a.preset.empty()) {
+    const auto p = find_map_preset(a.preset);
+    if (!p) {
+      std::string names;
+      for (const auto& x : map_presets()) names += (names.empty() ? "" : ", ") + x.name;
+      throw InputError("unknown preset '" + a.preset + "' (known: " + names + ")");
+    }
+    s.params = p->params;
+    s.state = p->state;
+    s.kind = p->kind;
+    s.axis = p->axis;
+    s.axis2 = p->axis2;
+    s.have_axis = s.have_axis2 = true;
+    s.theta_n = p->theta_n;
+  }
+  if (a.given("--kind")) {
+    const auto k = map_kind_from_string(a.kind);
+    if (!k) throw InputError("--kind must be direction, param-direction or param-param, got '" +
+                             a.kind + "'");
+    s.kind = *k;
+  }
+  if (a.given("--state")) {
+    const auto l = state_from_string(a.state);
+    if (!l) throw InputError("--state must be a, b, c or d, got '" + a.state + "'");
+    s.state.label = *l;
+  }
+  if (a.given("--criterion")) {
+    const auto c = criterion_from_string(a.criterion);
+    if (!c) throw InputError("--criterion must be coulomb or softening, got '" + a.criterion + "'");
+    s.params.criterion = *c;
+  }
+  struct {
+    const char* name;
+    const double* value;
+    double* target;
+  } const fields[] = {{"--a11", &a.a11, &s.params.a11}, {"--a12", &a.a12, &s.params.a12},
+                      {"--a22", &a.a22, &s.params.a22}, {"--mu", &a.mu, &s.params.mu},
+                      {"--C_T", &a.C_T, &s.params.C_T}, {"--k_a", &a.k_a, &s.params.k_a},
+                      {"--P_s", &a.P_s, &s.params.P_s}, {"--P_N", &a.P_N, &s.state.P_N}};
+  for (const auto& f : fields)
+    if (a.given(f.name)) {
+      require_finite(*f.value, f.name + 2);
+      *f.target = *f.value;
+    }
+  if (a.given("--sgnPT")) {
+    if (a.sgnPT != 1 && a.sgnPT != -1) throw InputError("--sgnPT must be +1 or -1");
+    s.state.sgn_PT = a.sgnPT;
+  }
+  throw_if_invalid(s.params.validate(), "model parameters");
+  throw_if_invalid(s.state.validate(s.params), "contact state");
+
+  auto set_axis = [&](MapAxis& axis, bool& have, const std::string& name, const char* o_param,
+                      const char* o_from, const char* o_to, const char* o_n, double from,
+                      double to, int n) {
+    if (a.given(o_param)) {
+      const auto p = map_parameter_from_string(name);
+      if (!p)
+        throw InputError(std::string(o_param) + ": unknown parameter '" + name + "' (known: " +
+                         map_parameter_names() + ")");
+      if (!have || axis.param != *p) {
+        if (!a.given(o_from) || !a.given(o_to))
+          throw InputError(std::string(o_param) + " " + name + " needs " + o_from + " and " + o_to);
+        axis.n = 200;
+      }
+      axis.param = *p;
+      have = true;
+    }
+    if (a.given(o_from)) axis.from = from;
+    if (a.given(o_to)) axis.to = to;
+    if (a.given(o_n)) axis.n = n;
+    if ((a.given(o_from) || a.given(o_to) || a.given(o_n)) && !have)
+      throw InputError(std::string(o_from) + "/" + o_to + "/" + o_n + " need " + o_param);
+    require_finite(axis.from, o_from + 2);
+    require_finite(axis.to, o_to + 2);
+  };
+  set_axis(s.axis, s.have_axis, a.param, "--param", "--from", "--to", "--n", a.from, a.to, a.n);
+  set_axis(s.axis2, s.have_axis2, a.param2, "--param2", "--from2", "--to2", "--n2", a.from2,
+           a.to2, a.n2);
+  if (a.given("--theta-n")) s.theta_n = a.theta_n;
+  if (s.kind != MapKind::kDirection && !s.have_axis)
+    throw InputError(std::string(to_string(s.kind)) + " map needs --param NAME --from X --to Y");
+  if (s.kind == MapKind::kParamParam && !s.have_axis2)
+    throw InputError("param-param map needs --param2 NAME --from2 X --to2 Y");
+  if (s.kind != MapKind::kDirection) throw_if_invalid(s.axis.validate(), "--param axis");
+  if (s.kind == MapKind::kParamParam) throw_if_invalid(s.axis2.validate(), "--param2 axis");
+  if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
+    throw InputError("--theta-n must be in [1, 1000000]");
+  return s;
+}
+
+std::string model_text(const ContactParameters& p, const ContactState& s) {
+  std::string t = "state " + std::string(to_string(s.label)) + ", a11 = " + fmt(p.a11) +
+                  ", a12 = " + fmt(p.a12) + ", a22 = " + fmt(p.a22) + ", mu = " + fmt(p.mu) +
+                  ", C_T = " + fmt(p.C_T);
+  if (s.label == StateLabel::kC || s.label == StateLabel::kD)
+    t += ", P_N = " + fmt(s.P_N) + ", k_a = " + fmt(p.k_a) + ", P_s = " + fmt(p.P_s) +
+         ", kappa = " + fmt(p.kappa(s.P_N)) +
+         (s.label == StateLabel::kD ? ", sgn P_T = " + std::to_string(s.sgn_PT) : "");
+  return t;
+}
+
+/// Prints "\rcpkit map: 40% (1.2 s)" on stderr once the map has run for more than a second.
+MapProgress make_progress() {
+  auto clock = std::make_shared<Stopwatch>();
+  auto printed = std::make_shared<bool>(false);
+  return [clock, printed](double f) {
+    const double t = clock->seconds();
+    if (f < 1.0 && t > 1.0) {
+      std::cerr << "\rcpkit map: " << std::setw(3) << static_cast<int>(100 * f) << "% ("
+                << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
+                << std::flush;
+      *printed = true;
+    } else if (f >= 1.0 && *printed) {
+      std::cerr << "\rcpkit map: 100% (" << std::fixed << std::setprecision(1) << t << " s)"
+                << std::defaultfloat << '\n';
+    }
+  };
+}
+
+fs::path plot_script() {
+  const fs::path src = fs::path(CPKIT_PLOT_SCRIPT_DIR) / "cpkit_plot.py";
+  if (fs::exists(src)) return src;
+  return fs::path(CPKIT_INSTALLED_PLOT_SCRIPT_DIR) / "cpkit_plot.py";
+}
+
+std::string python() {
+  if (const char* p = std::getenv("CPKIT_PYTHON")) return p;
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs the plotting script on PREFIX.json; never fails the command (the data is written).
+void run_plot(const std::string& prefix, nlohmann::json& files) {
+  const fs::path script = plot_script();
+  const std::string cmd = python() + " " + shell_quote(script.string()) + " " +
+                          shell_quote(prefix + ".json");
+  if (!fs::exists(script)) {
+    std::cerr << "cpkit map: plotting script not found (" << script.string()
+              << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
+    return;
+  }
+  const int rc = std::system((cmd + " 1>&2").c_str());
+  const int code = rc == -1 ? -1 : WEXITSTATUS(rc);
+  if (code == 0) {
+    files["png"] = fs::path(prefix + ".png").filename().string();
+    files["svg"] = fs::path(prefix + ".svg").filename().string();
+    std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
+  } else if (code == kPlotNoMatplotlib) {
+    std::cerr << "cpkit map: no picture: matplotlib is not available to " << python()
+              << ". The data was written (" << prefix << ".csv, " << prefix
+              << ".json). To get the picture install matplotlib (Debian: apt-get install "
+                 "python3-matplotlib) and run:\n  "
+              << cmd << '\n';
+  } else {
+    std::cerr << "cpkit map: the plotting script failed (exit " << code
+              << "); the data was written. Command:\n  " << cmd << '\n';
+  }
+}
+
+void write_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write '" + path + "'");
+  fn(f);
+  if (!f) throw InputError("error writing '" + path + "'");
+}
+
+void print_direction_text(const DirectionMap& m) {
+  std::cout << "sectors (theta in rad from +dF_T towards +dF_N; open arcs):\n";
+  for (const auto& s : m.sectors)
+    std::cout << "  (" << std::fixed << std::setprecision(4) << s.theta_from << ", " << s.theta_to
+              << ")" << std::defaultfloat << "  " << count_text(s.summary.count)
+              << (s.summary.types ? ": " + types_text(s.summary.types) : "") << '\n';
+  if (!m.critical.empty()) std::cout << "critical directions:\n";
+  for (const auto& c : m.critical) {
+    std::string cond;
+    for (const auto& x : c.conditions) cond += (cond.empty() ? "" : ", ") + x;
+    std::cout << "  " << std::fixed << std::setprecision(4) << c.theta << std::defaultfloat
+              << " (" << cond << ")  " << count_text(c.summary.count)
+              << (c.summary.types ? ": " + types_text(c.summary.types) : "") << '\n';
+  }
+  for (const auto& s : m.sectors)
+    if (s.summary.count != 1)
+      std::cout << "summary: " << count_text(s.summary.count) << " for theta in [" << std::fixed
+                << std::setprecision(2) << s.theta_from << ", " << s.theta_to << "]"
+                << std::defaultfloat << '\n';
+  bool all_unique = true;
+  for (const auto& s : m.sectors) all_unique = all_unique && s.summary.count == 1;
+  for (const auto& c : m.critical) all_unique = all_unique && c.summary.count == 1;
+  if (all_unique) std::cout << "summary: exactly one solution for every direction\n";
+}
+
+void report_disagreements(int64_t n, const std::string& what) {
+  if (n == 0) return;
+  std::cerr << "cpkit map: " << n << ' ' << what
+            << " where the analytic and the enumeration routes disagree (see 'disagree' in the "
+               "CSV / 'enumerate' in the JSON)\n";
+}
+
+int run_map(const MapArgs& a) {
+  if (a.list_presets) {
+    for (const auto& p : map_presets())
+      std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
+    return kExitOk;
+  }
+  const MapSetup s = build_setup(a);
+  MapOptions options;
+  const auto method = rate_method_from_string(a.method);
+  if (!method) throw InputError("--method must be enumerate or analytic, got '" + a.method + "'");
+  options.method = *method;
+  options.threads = a.threads;
+  throw_if_invalid(options.validate(), "map options");
+  if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+  if (!a.out.empty()) {
+    const fs::path parent = fs::path(a.out).parent_path();
+    if (!parent.empty()) {
+      std::error_code ec;
+      fs::create_directories(parent, ec);
+      if (ec) throw InputError("cannot create the output folder '" + parent.string() + "'");
+    }
+  }
+
+  nlohmann::json j;
+  j["kind"] = std::string(to_string(s.kind));
+  if (!a.preset.empty()) j["preset"] = a.preset;
+  j["cpkit_version"] = CPKIT_VERSION;
+  j["method"] = a.method;
+  j["model"] = model_to_json(s.params, s.state);
+  nlohmann::json files = nlohmann::json::object();
+  const std::string prefix = a.out;
+  const std::string name = prefix.empty() ? "" : fs::path(prefix).filename().string();
+  int64_t disagreements = 0;
+  const Stopwatch clock;
+  std::function<void()> print_text;
+
+  if (s.kind == MapKind::kDirection) {
+    const DirectionMap m = compute_direction_map(s.params, s.state, options);
+    j.update(to_json(m));
+    j["seconds"] = clock.seconds();
+    disagreements = m.disagreements;
+    report_disagreements(m.disagreements, "directions");
+    if (m.inconsistent_sectors > 0)
+      std::cerr << "cpkit map: " << m.inconsistent_sectors
+                << " sectors are not uniform (a missed critical direction?)\n";
+    if (!prefix.empty()) {
+      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
+      files["csv"] = name + ".csv";
+    }
+    print_text = [m, &s] {
+      std::cout << "direction map, " << model_text(s.params, s.state) << '\n';
+      print_direction_text(m);
+    };
+  } else if (s.kind == MapKind::kParamDirection) {
+    const ParamDirectionMap m =
+        compute_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, make_progress());
+    j.update(to_json(m));
+    disagreements = m.disagreements;
+    report_disagreements(m.disagreements, "cells");
+    if (m.disagreements > 0) {
+      int shown = 0;
+      for (int i = 0; i < m.axis.n && shown < 10; ++i)
+        for (int k = 0; k < m.theta_n && shown < 10; ++k)
+          if (m.disagree[static_cast<std::size_t>(i) * m.theta_n + k]) {
+            std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
+                      << ", theta = " << m.theta[k] << '\n';
+            ++shown;
+          }
+    }
+    if (!prefix.empty()) {
+      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
+      write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+      files["csv"] = name + ".csv";
+      files["critical_csv"] = name + "_critical.csv";
+    }
+    const nlohmann::json summary = j;
+    print_text = [summary, &s] {
+      const auto& ax = summary["axis"];
+      std::cout << "param-direction map, " << model_text(s.params, s.state) << "\n  "
+                << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
+                << ", " << fmt(ax["to"].get<double>()) << "] x theta in [0, 2 pi): "
+                << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
+                << " s, " << summary["threads"] << " threads\n";
+      for (const auto& c : summary["classes"]) {
+        const int count = c["count"].is_string() ? -1 : c["count"].get<int>();
+        std::cout << "  " << count_text(count) << ": " << c["cells"] << " cells, "
+                  << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                  << ", " << fmt(c["x_max"].get<double>()) << "], theta in ["
+                  << fmt(c["theta_min"].get<double>(), 3) << ", "
+                  << fmt(c["theta_max"].get<double>(), 3) << "]\n";
+      }
+      for (const auto& c : summary["critical_values"])
+        std::cout << "  critical: " << c["name"].get<std::string>() << " at "
+                  << ax["param"].get<std::string>() << " = " << fmt(c["x"].get<double>(), 10)
+                  << '\n';
+    };
+  } else {
+    const ParamParamMap m =
+        compute_param_param_map(s.params, s.state, s.axis, s.axis2, options, make_progress());
+    j.update(to_json(m));
+    disagreements = m.disagreements;
+    report_disagreements(m.disagreements, "cells");
+    if (!prefix.empty()) {
+      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
+      write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+      files["csv"] = name + ".csv";
+      files["critical_csv"] = name + "_critical.csv";
+    }
+    const nlohmann::json summary = j;
+    print_text = [summary, &s] {
+      const auto& ax = summary["axis"];
+      const auto& ay = summary["axis2"];
+      std::cout << "param-param map, " << model_text(s.params, s.state) << "\n  "
+                << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
+                << ": " << summary["cells"] << " cells, "
+                << fmt(summary["seconds"].get<double>(), 3) << " s\n";
+      for (const auto& c : summary["classes"])
+        std::cout << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, "
+                  << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                  << ", " << fmt(c["x_max"].get<double>()) << "], "
+                  << ay["param"].get<std::string>() << " in [" << fmt(c["y_min"].get<double>())
+                  << ", " << fmt(c["y_max"].get<double>()) << "]\n";
+    };
+  }
+
+  if (!prefix.empty()) {
+    files["json"] = name + ".json";
+    j["files"] = files;
+    write_file(prefix + ".json", [&](std::ostream& o) { o << j.dump(1) << '\n'; });
+    if (a.plot) {
+      run_plot(prefix, files);
+      j["files"] = files;
+      write_file(prefix + ".json", [&](std::ostream& o) { o << j.dump(1) << '\n'; });
+    }
+  }
+  if (a.json) {
+    print_json(j);
+  } else {
+    print_text();
+    if (!prefix.empty()) {
+      std::cout << "wrote";
+      for (const auto& [k, v] : files.items()) std::cout << ' ' << (fs::path(prefix).parent_path() / v.get<std::string>()).string();
+      std::cout << '\n';
+    }
+  }
+  return disagreements > 0 ? kExitDisagreement : kExitOk;
+}
+
+}  // namespace
+
+void add_map_command(CLI::App& app, Context& ctx) {
+  auto args = std::make_shared<MapArgs>();
+  auto* cmd = app.add_subcommand(
+      "map", "Non-existence / non-uniqueness maps of the rate problem over load directions and "
+             "parameters (docs/maps.md)");
+  auto& o = args->opt;
+  o["--preset"] = cmd->add_option("--preset", args->preset,
+                                  "fig5a, fig5b, state-d, state-d-mu-kappa (--list-presets)");
+  cmd->add_flag("--list-presets", args->list_presets, "list the presets and exit");
+  o["--kind"] = cmd->add_option("--kind", args->kind, "direction | param-direction | param-param");
+  o["--state"] = cmd->add_option("--state", args->state, "contact state a|b|c|d (default b)");
+  o["--a11"] = cmd->add_option("--a11", args->a11, "stiffness a11");
+  o["--a12"] = cmd->add_option("--a12", args->a12, "stiffness a12");
+  o["--a22"] = cmd->add_option("--a22", args->a22, "stiffness a22");
+  o["--mu"] = cmd->add_option("--mu", args->mu, "friction coefficient");
+  o["--C_T"] = cmd->add_option("--C_T", args->C_T, "tangential compliance");
+  o["--k_a"] = cmd->add_option("--k_a", args->k_a, "Archard wear coefficient");
+  o["--P_s"] = cmd->add_option("--P_s", args->P_s, "hardness");
+  o["--P_N"] = cmd->add_option("--P_N", args->P_N, "normal force (states c, d)");
+  o["--sgnPT"] = cmd->add_option("--sgnPT", args->sgnPT, "sign of P_T in state d (+1/-1)");
+  o["--criterion"] = cmd->add_option("--criterion", args->criterion, "coulomb (38) | softening (35)");
+  o["--param"] = cmd->add_option("--param", args->param,
+                                 "first axis: mu, a11, a12, a22, a12/a11, C_T, k_a, P_s, P_N, kappa");
+  o["--from"] = cmd->add_option("--from", args->from, "first axis start");
+  o["--to"] = cmd->add_option("--to", args->to, "first axis end");
+  o["--n"] = cmd->add_option("--n", args->n, "first axis values (default 200)");
+  o["--param2"] = cmd->add_option("--param2", args->param2, "second axis (param-param)");
+  o["--from2"] = cmd->add_option("--from2", args->from2, "second axis start");
+  o["--to2"] = cmd->add_option("--to2", args->to2, "second axis end");
+  o["--n2"] = cmd->add_option("--n2", args->n2, "second axis values (default 200)");
+  o["--theta-n"] = cmd->add_option("--theta-n", args->theta_n,
+                                   "directions of a param-direction map (default 360)");
+  o["--method"] = cmd->add_option("--method", args->method,
+                                  "enumerate (default) | analytic (also cross-checks with enumerate)");
+  o["--threads"] = cmd->add_option("--threads", args->threads, "worker threads (0: all cores)");
+  o["--out"] = cmd->add_option("--out", args->out, "write PREFIX.csv, PREFIX.json (+ PREFIX_critical.csv)");
+  cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
+  cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
+  cmd->callback([args, &ctx] { ctx.exit_code = run_map(*args); });
+}
+
+}  // namespace cpkit::cli

@@ -1,0 +1,211 @@
+// `cpkit rate`: the rate problem of the one-point contact problem [Stromberg et al. 1996,
+// Sec. 4.3]: every solution for a contact state and a load rate (docs/contact_model.md).
+//
+//   cpkit rate --state a|b|c|d --a11 X --a12 X --a22 X --mu X [--C_T X] [--k_a X --P_s X
+//              --P_N X --sgnPT S] --dF DFT DFN [--method enumerate|analytic|lemke|fb-newton|ipopt]
+//              [--criterion 38|35] [--json]
+//
+// Default method: enumerate, cross-checked against analytic. Single solvers (lemke, fb-newton,
+// ipopt) are checked against the enumerated set. Exit codes: 0 at least one solution, 1 none
+// (or the single solver found none), 2 bad input, 3 the routes disagree (reason on stderr).
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/rate_lcp.hpp"
+#include "cpkit/rate_problem/rate_problem.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+struct RateArgs {
+  std::string state;
+  double a11 = 0, a12 = 0, a22 = 0, mu = 0;
+  double C_T = 0, k_a = 0, P_s = 1, P_N = 0;
+  int sgn_PT = 1;
+  std::vector<double> dF;
+  std::string method = "enumerate";
+  std::string criterion = "38";
+  bool json = false;
+};
+
+nlohmann::json rates_json(const rate::Rates& r) {
+  nlohmann::json j;
+  j["dP_T"] = r.dP_T;
+  j["dP_N"] = r.dP_N;
+  j["dw_T"] = r.dw_T;
+  j["dw_N"] = r.dw_N;
+  j["dw_Ti"] = r.dw_Ti;
+  j["dw_w"] = r.dw_w;
+  return j;
+}
+
+std::string rates_text(const rate::Rates& r) {
+  std::ostringstream o;
+  o.precision(10);
+  o << "dP_T=" << r.dP_T << " dP_N=" << r.dP_N << " dw_T=" << r.dw_T << " dw_N=" << r.dw_N
+    << " dw_Ti=" << r.dw_Ti << " dw_w=" << r.dw_w;
+  return o.str();
+}
+
+std::vector<std::string> sorted_types(const rate::RateSolutionSet& s) {
+  std::set<std::string> t;
+  for (const auto& p : s.solutions) t.insert(std::string(rate::to_string(p.type)));
+  return {t.begin(), t.end()};
+}
+
+nlohmann::json set_json(const rate::RateSolutionSet& s) {
+  nlohmann::json j;
+  if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
+  j["types"] = sorted_types(s);
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& p : s.solutions) {
+    nlohmann::json e;
+    e["type"] = std::string(rate::to_string(p.type));
+    e["kind"] = std::string(rate::to_string(p.kind));
+    switch (p.kind) {
+      case rate::RateSolution::Kind::kPoint:
+        e["rates"] = rates_json(p.start);
+        break;
+      case rate::RateSolution::Kind::kSegment:
+        e["start"] = rates_json(p.start);
+        e["start_closed"] = p.start_closed;
+        e["end"] = rates_json(p.end);
+        e["end_closed"] = p.end_closed;
+        break;
+      case rate::RateSolution::Kind::kRay:
+        e["start"] = rates_json(p.start);
+        e["start_closed"] = p.start_closed;
+        e["direction"] = rates_json(p.direction);
+        break;
+    }
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  j["Lambda"] = s.Lambda;
+  j["unique_for_all_directions"] = s.unique_for_all_directions;
+  return j;
+}
+
+void print_text(const rate::RateSolutionSet& s, const RateArgs& a) {
+  std::cout << "rate problem, state " << a.state << ", method " << a.method << "\n";
+  std::cout << "count: " << (s.count() < 0 ? std::string("inf") : std::to_string(s.count()))
+            << "   types:";
+  for (const auto& t : sorted_types(s)) std::cout << ' ' << t;
+  std::cout << "\nLambda: " << s.Lambda << "   D_+: " << s.D_plus << "   D_-: " << s.D_minus
+            << "   unique for all directions: " << (s.unique_for_all_directions ? "yes" : "no")
+            << "\n";
+  for (const auto& p : s.solutions) {
+    std::cout << "  " << rate::to_string(p.type) << ' ' << rate::to_string(p.kind) << ": ";
+    switch (p.kind) {
+      case rate::RateSolution::Kind::kPoint:
+        std::cout << rates_text(p.start) << "\n";
+        break;
+      case rate::RateSolution::Kind::kSegment:
+        std::cout << "from " << rates_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                  << "\n      to " << rates_text(p.end) << (p.end_closed ? " (closed)" : " (open)")
+                  << "\n";
+        break;
+      case rate::RateSolution::Kind::kRay:
+        std::cout << "from " << rates_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                  << "\n      direction " << rates_text(p.direction) << "\n";
+        break;
+    }
+  }
+  if (!s.message.empty()) std::cout << "note: " << s.message << "\n";
+}
+
+int run_rate(const RateArgs& a) {
+  rate::ContactParameters p;
+  p.a11 = a.a11;
+  p.a12 = a.a12;
+  p.a22 = a.a22;
+  p.mu = a.mu;
+  p.C_T = a.C_T;
+  p.k_a = a.k_a;
+  p.P_s = a.P_s;
+  const auto crit = rate::criterion_from_string(a.criterion);
+  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + a.criterion + "'");
+  p.criterion = *crit;
+  throw_if_invalid(p.validate(), "contact parameters");
+  rate::ContactState st;
+  const auto label = rate::state_from_string(a.state);
+  if (!label) throw InputError("--state must be a, b, c or d, got '" + a.state + "'");
+  st.label = *label;
+  st.P_N = a.P_N;
+  st.sgn_PT = a.sgn_PT;
+  throw_if_invalid(st.validate(p), "contact state");
+  if (a.dF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
+  const rate::LoadRate f{a.dF[0], a.dF[1]};
+  const auto method = rate::rate_method_from_string(a.method);
+  if (!method)
+    throw InputError("--method must be enumerate, analytic, lemke, fb-newton or ipopt, got '" +
+                     a.method + "'");
+  const rate::RateSolutionSet s = rate::solve_rate_problem(p, st, f, *method);
+  int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
+  std::string problem;
+  if (*method == rate::RateMethod::kEnumerate) {
+    const rate::RateSolutionSet ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kAnalytic);
+    std::string why;
+    if (!s.complete) {
+      problem = "the enumeration is not conclusive: " + s.message;
+    } else if (!rate::same_solution_sets(s, ref, 1e-7, &why)) {
+      problem = "enumeration and analytic routes disagree: " + why;
+    }
+  } else if (*method != rate::RateMethod::kAnalytic) {
+    const rate::RateSolutionSet ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
+    if (!s.solutions.empty() && !rate::contains(ref, s.solutions.front().start, 1e-6)) {
+      problem = a.method + "'s solution is not in the enumerated solution set";
+    } else if (!s.solutions.empty() &&
+               ref.solutions[rate::find_piece(ref, s.solutions.front().start, 1e-6)].type !=
+                   s.solutions.front().type) {
+      problem = a.method + "'s solution has another type than the enumerated set's piece";
+    } else if (s.solutions.empty()) {
+      std::cerr << "cpkit rate: " << s.message << "; the enumeration has "
+                << (ref.count() < 0 ? std::string("infinitely many")
+                                    : std::to_string(ref.count()))
+                << " solution(s)\n";
+    }
+  }
+  if (a.json) print_json(set_json(s)); else print_text(s, a);
+  if (!problem.empty()) {
+    std::cerr << "cpkit rate: " << problem << '\n';
+    code = kExitDisagreement;
+  }
+  return code;
+}
+
+}  // namespace
+
+void add_rate_command(CLI::App& app, Context& ctx) {
+  auto args = std::make_shared<RateArgs>();
+  auto* cmd = app.add_subcommand(
+      "rate", "Rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]");
+  cmd->add_option("--state", args->state, "contact state: a (open), b (grazing), c (stick), "
+                                          "d (sliding)")->required();
+  cmd->add_option("--a11", args->a11, "stiffness A11")->required();
+  cmd->add_option("--a12", args->a12, "stiffness A12")->required();
+  cmd->add_option("--a22", args->a22, "stiffness A22")->required();
+  cmd->add_option("--mu", args->mu, "friction coefficient (> 0)")->required();
+  cmd->add_option("--C_T", args->C_T, "tangential compliance (>= 0; default 0)");
+  cmd->add_option("--k_a", args->k_a, "Archard wear coefficient (>= 0; default 0)");
+  cmd->add_option("--P_s", args->P_s, "hardness (> 0; default 1)");
+  cmd->add_option("--P_N", args->P_N, "normal force in states c/d (> 0)");
+  cmd->add_option("--sgnPT", args->sgn_PT, "sign of P_T in state d (+1 or -1; default +1)");
+  cmd->add_option("--dF", args->dF, "load rate: DFT DFN")->expected(2)->required();
+  cmd->add_option("--method", args->method,
+                  "enumerate (default, cross-checked against analytic), analytic, lemke, "
+                  "fb-newton, ipopt");
+  cmd->add_option("--criterion", args->criterion,
+                  "friction-and-wear criterion: 38 (Coulomb, default) or 35 (softening)");
+  cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->callback([args, &ctx]() { ctx.exit_code = run_rate(*args); });
+}
+
+}  // namespace cpkit::cli

@@ -1,0 +1,550 @@
+#pragma once
+/// \file enumerate_small.hpp
+/// All solutions of a tiny LCP (1 <= N <= 4) on a fixed-size, allocation-free path.
+///
+/// Problem: z >= 0, w = M z + q >= 0, z . w = 0 (cpkit's sign convention everywhere).
+/// The solution set is the finite union of the polyhedral pieces
+///   P_S = { z : z_i = 0 (i not in S), w_i = 0 (i in S), z >= 0, w >= 0 },  S subset of {0..N-1}
+/// [Cottle-Pang-Stone 1992, Sec. 3.9 (the solution set of an LCP)]. Singular principal blocks are
+/// normal input: the rate LCPs of the contact model [Stromberg et al. 1996, Sec. 4.2] always have
+/// a singular 2x2 block, and every physical solution with dP_N = 0 is a whole ray of z.
+///
+/// Algorithm (docs/enumeration.md):
+/// - vertices: a point z is a vertex of some piece iff it is complementary and feasible and
+///   n linearly independent equations of the family {z_i = 0, w_j = 0} hold at it. Every such
+///   point is the basic solution of one square subsystem: choose a row set R and a column set C of
+///   equal size, set z_i = 0 for i not in C and w_r = 0 for r in R, i.e. solve M[R,C] z_C = -q_R.
+///   All sum_k C(N,k)^2 = C(2N,N) pairs are tried (20 for N = 3) - these are all bases of
+///   [I, -M], not only the 2^N complementary ones, which is what keeps vertices whose
+///   complementary bases are all singular.
+/// - rays: an extreme ray of the recession cone of a piece is the null vector of M[R,C] with
+///   |C| = |R| + 1 and rank |R| (C(2N,N-1) pairs, 15 for N = 3), normalised to ||d||_inf = 1.
+/// - pieces: P_S contains exactly the vertices z with z_i = 0 off S and w_i = 0 on S, and its
+///   recession cone exactly the rays d with d_i = 0 off S and (M d)_i = 0 on S. A piece has
+///   positive dimension iff it has two vertices or a ray; only inclusion-maximal pieces of
+///   positive dimension are listed.
+///
+/// Tolerance (scale-aware, `tol` relative): a value v of z_i is zero when |v| <= tol ||z||_inf,
+/// a value of w_i when |v| <= tol (|q_i| + sum_j |M_ij| |z_j|) (the size of the terms that make
+/// up w_i); a sign test fails clearly below -1e4 tol * scale, and values in the band between are
+/// counted in `ambiguous` (and rejected). A square block is singular when a complete-pivoting
+/// elimination meets a pivot <= tol * max|block|; pivots within 1e4 x of that are also counted
+/// as ambiguous. Two vertices are the same when they differ by <= 1e4 tol ||z||_inf.
+#include <Eigen/Core>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::lcp {
+
+/// All solutions of a tiny LCP (1 <= N <= 4) on a fixed-size, allocation-free path.
+template <int N>
+struct SmallSolutionSet {
+  static_assert(N >= 1 && N <= 4, "enumerate_small: 1 <= N <= 4");
+  static constexpr int kMax = 1 << N;
+  using V = Eigen::Matrix<double, N, 1>;
+  struct Piece {                 ///< one complementary piece of positive dimension
+    unsigned support = 0;        ///< bit i set: w_i = 0 on the piece (z_i free >= 0); clear: z_i = 0
+    unsigned vertex_mask = 0;    ///< bit k set: z[k] (an extreme solution) belongs to the piece
+    int num_rays = 0;            ///< extreme rays of the piece's recession cone (unbounded piece)
+    std::array<V, kMax> rays;    ///< unit rays (||d||_inf = 1), d >= 0, M d >= 0, d.(M d) = 0
+  };
+  int num_points = 0;            ///< distinct extreme solutions (vertices of the solution set)
+  std::array<V, kMax> z;         ///< the extreme solutions (w = M z + q)
+  std::array<V, kMax> w;         ///< w = M z + q of each extreme solution (entries judged zero are 0)
+  /// Support of each extreme solution: bit i set iff z_i > 0 (the smallest support S whose
+  /// piece P_S holds the point; for a nondegenerate solution, the basic z-variables).
+  std::array<unsigned, kMax> support;
+  int num_pieces = 0;
+  std::array<Piece, kMax> pieces;
+  bool infinite = false;         ///< some piece has positive dimension
+  int ambiguous = 0;             ///< sign tests too close to call (see docs/enumeration.md)
+  /// Vertices or rays beyond the fixed capacity kMax (never observed; nonzero means the lists
+  /// are incomplete and the caller must not rely on them).
+  int dropped = 0;
+};
+
+namespace detail {
+
+inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tests
+
+constexpr int small_popcount(unsigned x) noexcept {
+  int c = 0;
+  for (; x; x &= x - 1) ++c;
+  return c;
+}
+inline double small_abs(double x) noexcept { return x < 0 ? -x : x; }
+inline double small_max(double a, double b) noexcept { return a < b ? b : a; }
+
+/// Outcome of a sign test v >= 0 at scale s: 0 pass, 1 ambiguous, 2 fail.
+inline int small_sign(double v, double s, double tol) noexcept {
+  if (v >= -tol * s) return 0;
+  if (v >= -kSmallGray * tol * s) return 1;
+  return 2;
+}
+
+/// det and "permanent" (sum of the absolute values of the determinant's terms) of a k x k
+/// block, k <= 3, taken from rows r[] and columns c[] of M.
+template <typename Mat>
+inline void small_det(const Mat& M, const int* r, const int* c, int k, double& det,
+                      double& perm) noexcept {
+  if (k == 1) {
+    det = M(r[0], c[0]);
+    perm = small_abs(det);
+  } else if (k == 2) {
+    const double t1 = M(r[0], c[0]) * M(r[1], c[1]), t2 = M(r[0], c[1]) * M(r[1], c[0]);
+    det = t1 - t2;
+    perm = small_abs(t1) + small_abs(t2);
+  } else {
+    det = 0;
+    perm = 0;
+    constexpr int p[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+    for (int t = 0; t < 6; ++t) {
+      const double v = M(r[0], c[p[t][0]]) * M(r[1], c[p[t][1]]) * M(r[2], c[p[t][2]]);
+      det += t < 3 ? v : -v;
+      perm += small_abs(v);
+    }
+  }
+}
+
+/// Complete-pivoting elimination of the k x c block a (c <= k + 1 columns, column 4 is a
+/// right-hand side) in place. Returns the rank found (pivots > piv_tol); perm receives the
+/// column order; `gray` is set when an accepted pivot lies within kSmallGray of the threshold.
+inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], double piv_tol,
+                           bool& gray) noexcept {
+  for (int j = 0; j < c; ++j) perm[j] = j;
+  int rank = 0;
+  for (int p = 0; p < k && p < c; ++p) {
+    int br = p, bc = p;
+    double best = -1;
+    for (int r = p; r < k; ++r)
+      for (int cc = p; cc < c; ++cc) {
+        const double v = small_abs(a[r][perm[cc]]);
+        if (v > best) { best = v; br = r; bc = cc; }
+      }
+    if (!(best > piv_tol)) break;
+    if (best <= kSmallGray * piv_tol) gray = true;
+    if (br != p)
+      for (int cc = 0; cc < 5; ++cc) std::swap(a[p][cc], a[br][cc]);
+    std::swap(perm[p], perm[bc]);
+    const double piv = a[p][perm[p]];
+    for (int r = p + 1; r < k; ++r) {
+      const double f = a[r][perm[p]] / piv;
+      if (f == 0) continue;
+      for (int cc = p; cc < c; ++cc) a[r][perm[cc]] -= f * a[p][perm[cc]];
+      a[r][4] -= f * a[p][4];
+    }
+    ++rank;
+  }
+  return rank;
+}
+
+/// Solves M[R,C] x = -q[R] (|R| = |C| = k <= 4). Returns false when the block is singular at
+/// tolerance tol; sets gray when the decision was close.
+template <typename Mat, typename Vq>
+inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const int* cols, int k,
+                               double tol, double* x, bool& gray) noexcept {
+  if (k <= 3) {
+    double det, perm;
+    small_det(M, rows, cols, k, det, perm);
+    if (!(small_abs(det) > tol * perm)) return false;
+    if (small_abs(det) <= kSmallGray * tol * perm) gray = true;
+    const double inv = 1.0 / det;
+    if (k == 1) {
+      x[0] = -q(rows[0]) * inv;
+    } else if (k == 2) {
+      const double b0 = -q(rows[0]), b1 = -q(rows[1]);
+      x[0] = (b0 * M(rows[1], cols[1]) - M(rows[0], cols[1]) * b1) * inv;
+      x[1] = (M(rows[0], cols[0]) * b1 - b0 * M(rows[1], cols[0])) * inv;
+    } else {
+      // Cramer with cofactors of the 3x3 block
+      const double a00 = M(rows[0], cols[0]), a01 = M(rows[0], cols[1]), a02 = M(rows[0], cols[2]);
+      const double a10 = M(rows[1], cols[0]), a11 = M(rows[1], cols[1]), a12 = M(rows[1], cols[2]);
+      const double a20 = M(rows[2], cols[0]), a21 = M(rows[2], cols[1]), a22 = M(rows[2], cols[2]);
+      const double b0 = -q(rows[0]), b1 = -q(rows[1]), b2 = -q(rows[2]);
+      x[0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
+              a02 * (b1 * a21 - a11 * b2)) * inv;
+      x[1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
+              a02 * (a10 * b2 - b1 * a20)) * inv;
+      x[2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
+              b0 * (a10 * a21 - a11 * a20)) * inv;
+    }
+    return true;
+  }
+  double a[4][5];
+  double amax = 0;
+  for (int r = 0; r < k; ++r) {
+    for (int c = 0; c < k; ++c) {
+      a[r][c] = M(rows[r], cols[c]);
+      amax = small_max(amax, small_abs(a[r][c]));
+    }
+    a[r][4] = -q(rows[r]);
+  }
+  int perm[5];
+  if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
+  for (int p = k - 1; p >= 0; --p) {
+    double s = a[p][4];
+    for (int c = p + 1; c < k; ++c) s -= a[p][perm[c]] * x[perm[c]];
+    x[perm[p]] = s / a[p][perm[p]];
+  }
+  return true;
+}
+
+/// Working state of one enumerate_small call (all on the stack).
+template <int N>
+struct SmallEnumerator {
+  static constexpr int kMax = SmallSolutionSet<N>::kMax;
+  static constexpr unsigned kAll = (1u << N) - 1;
+  static constexpr int kRayCap = 4 * kMax;  // distinct extreme rays of all pieces
+  const Eigen::Matrix<double, N, N>& M;
+  const Eigen::Matrix<double, N, 1>& q;
+  SmallSolutionSet<N>& out;
+  double tol;
+  unsigned zero_z[kMax] = {}, zero_w[kMax] = {};  // zero patterns of the stored vertices
+  double rays[kRayCap][N] = {};
+  unsigned ray_zero_d[kRayCap] = {}, ray_zero_md[kRayCap] = {};
+  int num_rays = 0;
+
+  SmallEnumerator(const Eigen::Matrix<double, N, N>& m, const Eigen::Matrix<double, N, 1>& qq,
+                  SmallSolutionSet<N>& o, double t)
+      : M(m), q(qq), out(o), tol(t) {}
+
+  /// Judges the candidate z (z_i = 0 off S, w_i = 0 on S by construction) of piece S and
+  /// stores it when feasible and new.
+  void add_point(unsigned S, double (&z)[N]) {
+    double zs = 0;
+    for (int j = 0; j < N; ++j) zs = small_max(zs, small_abs(z[j]));
+    int verdict = 0;
+    unsigned zz = ~S & kAll, zw = S;
+    for (int j = 0; j < N; ++j) {
+      if (!(S & (1u << j))) { z[j] = 0; continue; }
+      const int sgn = small_sign(z[j], zs, tol);
+      if (sgn == 2) return;
+      verdict = sgn > verdict ? sgn : verdict;
+      if (small_abs(z[j]) <= tol * zs) { z[j] = 0; zz |= 1u << j; }
+    }
+    double w[N];
+    for (int i = 0; i < N; ++i) {
+      if (S & (1u << i)) { w[i] = 0; continue; }
+      double v = q(i), sc = small_abs(q(i));
+      for (int j = 0; j < N; ++j)
+        if (z[j] != 0) { v += M(i, j) * z[j]; sc += small_abs(M(i, j) * z[j]); }
+      const int sgn = small_sign(v, sc, tol);
+      if (sgn == 2) return;
+      verdict = sgn > verdict ? sgn : verdict;
+      if (small_abs(v) <= tol * sc) { w[i] = 0; zw |= 1u << i; } else { w[i] = v; }
+    }
+    if (verdict == 1) { ++out.ambiguous; return; }
+    for (int p = 0; p < out.num_points; ++p) {
+      double d = 0, s2 = zs;
+      for (int j = 0; j < N; ++j) {
+        d = small_max(d, small_abs(out.z[p](j) - z[j]));
+        s2 = small_max(s2, small_abs(out.z[p](j)));
+      }
+      if (d <= kSmallGray * tol * s2) {  // the same point from another piece or basis
+        zero_z[p] |= zz;
+        zero_w[p] |= zw;
+        return;
+      }
+    }
+    if (out.num_points == kMax) { ++out.dropped; return; }
+    const int p = out.num_points++;
+    for (int j = 0; j < N; ++j) { out.z[p](j) = z[j]; out.w[p](j) = w[j]; }
+    zero_z[p] = zz;
+    zero_w[p] = zw;
+  }
+
+  /// Judges the direction d (d_i = 0 off S, (M d)_i = 0 on S by construction) of the
+  /// recession cone of piece S, up to sign; stores it when it is a new ray.
+  void add_ray(unsigned S, double (&d)[N]) {
+    double big = 0;
+    int arg = 0;
+    for (int j = 0; j < N; ++j)
+      if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
+    if (!(big > 0)) return;
+    const double f = (d[arg] > 0 ? 1.0 : -1.0) / big;
+    int verdict = 0;
+    unsigned zd = ~S & kAll, zmd = S;
+    for (int j = 0; j < N; ++j) {
+      if (!(S & (1u << j))) { d[j] = 0; continue; }
+      d[j] *= f;
+      const int sgn = small_sign(d[j], 1.0, tol);
+      if (sgn == 2) return;
+      verdict = sgn > verdict ? sgn : verdict;
+      if (small_abs(d[j]) <= tol) { d[j] = 0; zd |= 1u << j; }
+    }
+    for (int i = 0; i < N; ++i) {
+      if (S & (1u << i)) continue;
+      double v = 0, sc = 0;
+      for (int j = 0; j < N; ++j)
+        if (d[j] != 0) { v += M(i, j) * d[j]; sc += small_abs(M(i, j) * d[j]); }
+      const int sgn = small_sign(v, sc, tol);
+      if (sgn == 2) return;
+      verdict = sgn > verdict ? sgn : verdict;
+      if (small_abs(v) <= tol * sc) zmd |= 1u << i;
+    }
+    if (verdict == 1) { ++out.ambiguous; return; }
+    for (int p = 0; p < num_rays; ++p) {
+      double dd = 0;
+      for (int j = 0; j < N; ++j) dd = small_max(dd, small_abs(rays[p][j] - d[j]));
+      if (dd <= kSmallGray * tol) {
+        ray_zero_d[p] |= zd;
+        ray_zero_md[p] |= zmd;
+        return;
+      }
+    }
+    if (num_rays == kRayCap) { ++out.dropped; return; }
+    for (int j = 0; j < N; ++j) rays[num_rays][j] = d[j];
+    ray_zero_d[num_rays] = zd;
+    ray_zero_md[num_rays] = zmd;
+    ++num_rays;
+  }
+
+  /// Piece S with a singular (or 4x4) block M_SS: P_S = {z0 + N t} cut by the n inequalities
+  /// z_i >= 0 (i in S), w_j >= 0 (j not in S); vertices have m = dim t of them active,
+  /// extreme rays m - 1.
+  void singular_piece(unsigned S, const int* idx, int k) {
+    double a[4][5];
+    double amax = 0;
+    for (int r = 0; r < k; ++r) {
+      for (int c = 0; c < k; ++c) {
+        a[r][c] = M(idx[r], idx[c]);
+        amax = small_max(amax, small_abs(a[r][c]));
+      }
+      a[r][4] = -q(idx[r]);
+    }
+    int perm[5];
+    bool gray = false;
+    const int r = small_eliminate(a, k, k, perm, tol * amax, gray);
+    if (gray) ++out.ambiguous;
+    const int m = k - r;
+    // particular solution (free variables 0) and null basis (one column per free variable)
+    double z0[N] = {}, nb[4][N] = {};
+    {
+      double x[4] = {};
+      for (int p = r - 1; p >= 0; --p) {
+        double s = a[p][4];
+        for (int c = p + 1; c < r; ++c) s -= a[p][perm[c]] * x[perm[c]];
+        x[perm[p]] = s / a[p][perm[p]];
+      }
+      for (int c = 0; c < k; ++c) z0[idx[c]] = x[c];
+      for (int f = 0; f < m; ++f) {
+        double y[4] = {};
+        y[perm[r + f]] = 1;
+        for (int p = r - 1; p >= 0; --p) {
+          double s = -a[p][perm[r + f]];
+          for (int c = p + 1; c < r; ++c) s -= a[p][perm[c]] * y[perm[c]];
+          y[perm[p]] = s / a[p][perm[p]];
+        }
+        for (int c = 0; c < k; ++c) nb[f][idx[c]] = y[c];
+      }
+    }
+    // consistency: -q_S must lie in the range of M_SS
+    for (int c = 0; c < k; ++c) {
+      const int i = idx[c];
+      double v = q(i), sc = small_abs(q(i));
+      for (int j = 0; j < N; ++j)
+        if (z0[j] != 0) { v += M(i, j) * z0[j]; sc += small_abs(M(i, j) * z0[j]); }
+      if (small_abs(v) > kSmallGray * tol * sc) return;  // empty piece
+      if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
+    }
+    // constraint g_i(t) = b_i + sum_f A_if t_f >= 0 for every i (z_i on S, w_i off S)
+    double A[N][4] = {}, b[N];
+    for (int i = 0; i < N; ++i) {
+      if (S & (1u << i)) {
+        b[i] = z0[i];
+        for (int f = 0; f < m; ++f) A[i][f] = nb[f][i];
+      } else {
+        double v = q(i);
+        for (int j = 0; j < N; ++j) v += M(i, j) * z0[j];
+        b[i] = v;
+        for (int f = 0; f < m; ++f) {
+          double u = 0;
+          for (int j = 0; j < N; ++j) u += M(i, j) * nb[f][j];
+          A[i][f] = u;
+        }
+      }
+    }
+    // vertices: m active constraints
+    for (unsigned act = 0; act <= kAll; ++act) {
+      if (small_popcount(act) != m) continue;
+      double z[N];
+      for (int j = 0; j < N; ++j) z[j] = z0[j];
+      if (m > 0) {
+        double e[4][5];
+        double emax = 0;
+        int t = 0;
+        for (int i = 0; i < N; ++i) {
+          if (!(act & (1u << i))) continue;
+          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; emax = small_max(emax, small_abs(A[i][f])); }
+          e[t][4] = -b[i];
+          ++t;
+        }
+        int pm[5];
+        bool g2 = false;
+        if (small_eliminate(e, m, m, pm, tol * emax, g2) < m) continue;
+        if (g2) ++out.ambiguous;
+        double x[4];
+        for (int p = m - 1; p >= 0; --p) {
+          double s = e[p][4];
+          for (int c = p + 1; c < m; ++c) s -= e[p][pm[c]] * x[pm[c]];
+          x[pm[p]] = s / e[p][pm[p]];
+        }
+        for (int f = 0; f < m; ++f)
+          for (int j = 0; j < N; ++j) z[j] += x[f] * nb[f][j];
+      }
+      add_point(S, z);
+    }
+    // rays: m - 1 active constraints (only for m >= 1)
+    if (m == 0) return;
+    for (unsigned act = 0; act <= kAll; ++act) {
+      if (small_popcount(act) != m - 1) continue;
+      double x[5] = {};
+      if (m == 1) {
+        x[0] = 1;
+      } else {
+        double e[4][5];
+        double emax = 0;
+        int t = 0;
+        for (int i = 0; i < N; ++i) {
+          if (!(act & (1u << i))) continue;
+          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; emax = small_max(emax, small_abs(A[i][f])); }
+          e[t][4] = 0;
+          ++t;
+        }
+        int pm[5];
+        bool g2 = false;
+        if (small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
+        if (g2) ++out.ambiguous;
+        x[pm[m - 1]] = 1;
+        for (int p = m - 2; p >= 0; --p) {
+          double s = -e[p][pm[m - 1]];
+          for (int c = p + 1; c < m - 1; ++c) s -= e[p][pm[c]] * x[pm[c]];
+          x[pm[p]] = s / e[p][pm[p]];
+        }
+      }
+      for (double sign : {1.0, -1.0}) {
+        double d[N] = {};
+        for (int f = 0; f < m; ++f)
+          for (int j = 0; j < N; ++j) d[j] += sign * x[f] * nb[f][j];
+        // the normalisation in add_ray flips to the largest entry positive; test that sign only
+        double big = 0;
+        int arg = 0;
+        for (int j = 0; j < N; ++j)
+          if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
+        if (!(big > 0) || d[arg] < 0) continue;
+        add_ray(S, d);
+      }
+    }
+  }
+
+  void run() {
+    for (unsigned S = 0; S <= kAll; ++S) {
+      int idx[4], k = 0;
+      for (int j = 0; j < N; ++j)
+        if (S & (1u << j)) idx[k++] = j;
+      if (k <= 3) {
+        double z[N] = {};
+        if (k > 0) {
+          double det, perm;
+          small_det(M, idx, idx, k, det, perm);
+          if (small_abs(det) <= kSmallGray * tol * perm) {  // singular or close: the general path
+            singular_piece(S, idx, k);
+            continue;
+          }
+          double x[4] = {};
+          bool gray = false;
+          small_square_solve(M, q, idx, idx, k, tol, x, gray);
+          for (int c = 0; c < k; ++c) z[idx[c]] = x[c];
+        }
+        add_point(S, z);
+      } else {
+        singular_piece(S, idx, k);
+      }
+    }
+  }
+};
+
+}  // namespace detail
+
+/// Enumerates every extreme solution, every positive-dimensional piece (with its vertices and
+/// extreme rays) and whether the solution set is infinite. `tol` is relative to the data scale
+/// (see the file comment). Throws InputError on non-finite data or tol outside (0, 1e-3].
+/// Allocation-free; `out` is overwritten (its counts are reset).
+template <int N>
+void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<double, N, 1>& q,
+                     SmallSolutionSet<N>& out, double tol = 1e-12) {
+  constexpr int kMax = SmallSolutionSet<N>::kMax;
+  constexpr unsigned kAll = (1u << N) - 1;
+  if (!M.allFinite() || !q.allFinite())
+    throw InputError("enumerate_small: M or q has a non-finite entry");
+  if (!(tol > 0 && tol <= 1e-3))
+    throw InputError("enumerate_small: tol must lie in (0, 1e-3], got " + std::to_string(tol));
+  out.num_points = 0;
+  out.num_pieces = 0;
+  out.infinite = false;
+  out.ambiguous = 0;
+  out.dropped = 0;
+  detail::SmallEnumerator<N> en(M, q, out, tol);
+  en.run();
+  const unsigned* zero_z = en.zero_z;
+  const unsigned* zero_w = en.zero_w;
+  const unsigned* ray_zero_d = en.ray_zero_d;
+  const unsigned* ray_zero_md = en.ray_zero_md;
+  const int num_rays = en.num_rays;
+  const auto& rays = en.rays;
+  for (int p = 0; p < out.num_points; ++p) {
+    for (int j = 0; j < N; ++j) {
+      if (zero_z[p] & (1u << j)) out.z[p](j) = 0;
+      if (zero_w[p] & (1u << j)) out.w[p](j) = 0;
+    }
+    out.support[p] = ~zero_z[p] & kAll;
+  }
+
+  // ---- pieces ----
+  if (out.num_points < 2 && num_rays == 0) return;  // finite: no piece of positive dimension
+  unsigned vmask[kMax];
+  unsigned long long rmask[kMax];
+  unsigned cand_support[kMax];
+  int cand = 0;
+  for (unsigned S = 0; S <= kAll; ++S) {
+    const unsigned off = ~S & kAll;
+    unsigned vm = 0;
+    for (int p = 0; p < out.num_points; ++p)
+      if ((zero_z[p] & off) == off && (zero_w[p] & S) == S) vm |= 1u << p;
+    if (vm == 0) continue;  // empty piece
+    unsigned long long rm = 0;
+    for (int r = 0; r < num_rays; ++r)
+      if ((ray_zero_d[r] & off) == off && (ray_zero_md[r] & S) == S) rm |= 1ull << r;
+    if (rm == 0 && (vm & (vm - 1)) == 0) continue;  // a single point
+    vmask[cand] = vm;
+    rmask[cand] = rm;
+    cand_support[cand] = S;
+    ++cand;
+  }
+  for (int a = 0; a < cand; ++a) {
+    bool maximal = true;
+    for (int b = 0; b < cand && maximal; ++b) {
+      if (b == a) continue;
+      const bool sub = (vmask[a] & ~vmask[b]) == 0 && (rmask[a] & ~rmask[b]) == 0;
+      const bool equal = vmask[a] == vmask[b] && rmask[a] == rmask[b];
+      if (sub && (!equal || b < a)) maximal = false;
+    }
+    if (!maximal) continue;
+    auto& piece = out.pieces[out.num_pieces++];
+    piece.support = cand_support[a];
+    piece.vertex_mask = vmask[a];
+    piece.num_rays = 0;
+    for (int r = 0; r < num_rays; ++r) {
+      if (!(rmask[a] & (1ull << r))) continue;
+      if (piece.num_rays == kMax) { ++out.dropped; continue; }
+      for (int j = 0; j < N; ++j) piece.rays[piece.num_rays](j) = rays[r][j];
+      ++piece.num_rays;
+    }
+  }
+  out.infinite = out.num_pieces > 0;
+}
+
+}  // namespace cpkit::lcp

@@ -1,0 +1,194 @@
+// The automatic solver chain (see auto_chain.hpp).
+#include "cpkit/lcp/auto_chain.hpp"
+
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/finalize.hpp"
+#include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/mpcc.hpp"
+#include "cpkit/lcp/solvers.hpp"
+
+namespace cpkit::lcp {
+
+std::vector<std::string> auto_chain_names(ProblemKind kind) {
+  if (kind == ProblemKind::kLcp) return {"lemke", "fb-newton", "ipopt"};
+  return {"fb-newton", "ipopt"};
+}
+
+namespace {
+
+const LcpSolveFn* pick(const SolverEntry& e, const LcpProblem& p) {
+  return e.accepts(p) ? &e.solve_lcp : nullptr;
+}
+const BoxLcpSolveFn* pick(const SolverEntry& e, const BoxLcpProblem&) {
+  return e.solve_box_lcp ? &e.solve_box_lcp : nullptr;
+}
+const McpSolveFn* pick(const SolverEntry& e, const McpProblem&) {
+  return e.solve_mcp ? &e.solve_mcp : nullptr;
+}
+
+ProblemKind kind_of(const LcpProblem&) { return ProblemKind::kLcp; }
+ProblemKind kind_of(const BoxLcpProblem&) { return ProblemKind::kBoxLcp; }
+ProblemKind kind_of(const McpProblem&) { return ProblemKind::kMcp; }
+
+/// Searches a Farkas certificate of infeasibility with Ipopt (an LP; see auto_chain.hpp).
+std::optional<Certificate> farkas_search(const LcpProblem& p, const CommonOptions& common,
+                                         double time_left) {
+  const Eigen::Index n = p.size();
+  const Mat M = p.dense_M();
+  const Vec q = p.q;
+  MpccProblem lp;
+  lp.name = "farkas";
+  lp.n = n;
+  lp.lower = Vec::Zero(n);
+  lp.upper = Vec::Constant(n, std::numeric_limits<double>::infinity());
+  lp.x0 = Vec::Constant(n, 1.0 / static_cast<double>(n));
+  lp.objective = [q](const Vec& y, double& f) { f = q.dot(y); return true; };
+  lp.gradient = [q](const Vec&, Vec& g) { g = q; return true; };
+  lp.m = n + 1;
+  lp.constraints = [M](const Vec& y, Vec& c) {
+    c.resize(M.cols() + 1);
+    c.head(M.cols()) = M.transpose() * y;
+    c(M.cols()) = y.sum();
+    return true;
+  };
+  lp.constraint_jacobian = [M](const Vec&, Mat& J) {
+    J.resize(M.cols() + 1, M.rows());
+    J.topRows(M.cols()) = M.transpose();
+    J.row(M.cols()).setOnes();
+    return true;
+  };
+  lp.c_lower = Vec::Constant(n + 1, -std::numeric_limits<double>::infinity());
+  lp.c_upper = Vec::Zero(n + 1);
+  lp.c_lower(n) = 1;
+  lp.c_upper(n) = 1;
+  lp.hessian = [n](const Vec&, double, const Vec&, const Vec&, const Vec&, Mat& Hs) {
+    Hs.setZero(n, n);
+    return true;
+  };
+  MpccOptions o;
+  o.common.time_limit_s = time_left;
+  o.common.log = common.log;
+  o.common.verbosity = common.verbosity;
+  const MpccResult r = solve_mpcc(lp, o);
+  if (!(r.objective < 0) || r.x.size() != n) return std::nullopt;
+  Certificate cert;
+  cert.y = r.x.cwiseMax(0.0);
+  if (!check_certificate(p, cert)) return std::nullopt;
+  return cert;
+}
+
+template <class Problem>
+SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
+  throw_if_invalid(problem.validate(), "auto");
+  throw_if_invalid(options.validate(), "options");
+  Stopwatch timer;
+  std::vector<Attempt> attempts;
+  std::optional<SolveResult> chosen, inaccurate, last;
+  for (const std::string& name : auto_chain_names(kind_of(problem))) {
+    const SolverEntry* entry = solvers().find(name);
+    const auto* fn = entry ? pick(*entry, problem) : nullptr;
+    if (fn == nullptr) {
+      attempts.push_back({name, Status::kNotRun, 0, 0,
+                          entry ? "skipped: does not accept this problem"
+                                : "skipped: not registered"});
+      continue;
+    }
+    CommonOptions o = options;
+    o.time_limit_s = options.time_limit_s - timer.seconds();
+    if (!(o.time_limit_s > 0)) {
+      attempts.push_back({name, Status::kTimeLimit, 0, 0, "skipped: time limit reached"});
+      break;
+    }
+    SolveResult r;
+    try {
+      r = (*fn)(problem, o);
+    } catch (const InputError&) {
+      throw;  // misuse is the caller's error, not the solver's outcome
+    } catch (const std::exception& e) {
+      r.status = Status::kNumericalFailure;
+      r.solver = name;
+      r.message = std::string("exception: ") + e.what();
+    }
+    if (r.solver.empty()) r.solver = name;
+    attempts.push_back({name, r.status, r.residuals.natural, r.seconds, r.message});
+    if (r.status == Status::kSolved || r.status == Status::kInfeasible) {
+      chosen = std::move(r);
+      break;
+    }
+    if (r.status == Status::kSolvedInaccurate && !inaccurate) inaccurate = r;
+    last = std::move(r);
+  }
+  SolveResult result;
+  if (chosen) result = std::move(*chosen);
+  else if (inaccurate) result = std::move(*inaccurate);
+  else if (last) result = std::move(*last);
+  else result.message = "no solver of the chain could run";
+  if constexpr (std::is_same_v<Problem, LcpProblem>) {
+    if (!is_solution(result.status) && result.status != Status::kInfeasible &&
+        solvers().find("ipopt") != nullptr) {
+      const double left = options.time_limit_s - timer.seconds();
+      Stopwatch t;
+      if (left > 0) {
+        auto cert = farkas_search(problem, options, left);
+        attempts.push_back({"farkas-search", cert ? Status::kInfeasible : Status::kStalled, 0,
+                            t.seconds(),
+                            cert ? "certificate y >= 0, M^T y <= 0, q^T y < 0 found"
+                                 : "no Farkas certificate found"});
+        if (cert) {
+          result.status = Status::kInfeasible;
+          result.solver = "farkas-search";
+          result.certificate = std::move(*cert);
+          result.message = "infeasible: Farkas certificate found after every solver failed";
+        }
+      }
+    }
+  }
+  std::ostringstream msg;
+  msg << "auto: ";
+  if (is_solution(result.status) || result.status == Status::kInfeasible)
+    msg << "answer from " << result.solver;
+  else
+    msg << "no solver succeeded";
+  msg << " after " << attempts.size() << " attempt(s)";
+  result.message = msg.str() + (result.message.empty() ? "" : "; " + result.message);
+  result.attempts = std::move(attempts);
+  result = finalize(problem, std::move(result), options);
+  result.seconds = timer.seconds();
+  return result;
+}
+
+}  // namespace
+
+SolveResult solve_auto(const LcpProblem& problem, const CommonOptions& options) {
+  return run_chain(problem, options);
+}
+SolveResult solve_auto(const BoxLcpProblem& problem, const CommonOptions& options) {
+  return run_chain(problem, options);
+}
+SolveResult solve_auto(const McpProblem& problem, const CommonOptions& options) {
+  return run_chain(problem, options);
+}
+
+SolverEntry auto_entry() {
+  SolverEntry e;
+  e.info.name = "auto";
+  e.info.description =
+      "automatic chain: lemke, fb-newton, ipopt for LCPs; fb-newton, ipopt for box LCPs and "
+      "MCPs; first verified answer (docs/mpcc.md)";
+  e.info.dense = true;
+  e.info.sparse = true;
+  e.info.serialized = false;
+  e.solve_lcp = [](const LcpProblem& p, const CommonOptions& o) { return solve_auto(p, o); };
+  e.solve_box_lcp = [](const BoxLcpProblem& p, const CommonOptions& o) {
+    return solve_auto(p, o);
+  };
+  e.solve_mcp = [](const McpProblem& p, const CommonOptions& o) { return solve_auto(p, o); };
+  return e;
+}
+
+}  // namespace cpkit::lcp

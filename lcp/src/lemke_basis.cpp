@@ -1,0 +1,205 @@
+#include "lemke_basis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cpkit::lcp::detail {
+
+LemkeBasis::LemkeBasis(const Mat& M, const Vec& q)
+    : M_(M),
+      q_(q),
+      n_(q.size()),
+      c_(Vec::Ones(q.size())),
+      hinv_(q.size(), q.size()),
+      xz_(Vec::Zero(q.size() + 1)),
+      w_(q),
+      zcols_(static_cast<size_t>(q.size() + 1), -1),
+      rrows_(static_cast<size_t>(q.size() + 1), -1),
+      zpos_(static_cast<size_t>(q.size() + 1), -1),
+      rpos_(static_cast<size_t>(q.size()), -1),
+      gz_(q.size(), q.size()),
+      tmp_(q.size() + 1),
+      tmp2_(q.size() + 1) {}
+
+bool LemkeBasis::reset(const std::vector<int>& zset) {
+  std::fill(zpos_.begin(), zpos_.end(), -1);
+  std::fill(rpos_.begin(), rpos_.end(), -1);
+  k_ = static_cast<int>(zset.size());
+  for (int p = 0; p < k_; ++p) {
+    const int j = zset[static_cast<size_t>(p)];
+    zcols_[static_cast<size_t>(p)] = j;
+    rrows_[static_cast<size_t>(p)] = j;
+    zpos_[static_cast<size_t>(j)] = p;
+    rpos_[static_cast<size_t>(j)] = p;
+    gz_.col(p) = Eigen::Map<const Vec>(gcol(j), n_);
+  }
+  if (!refactor()) return false;
+  recompute_values();
+  return true;
+}
+
+bool LemkeBasis::refactor() {
+  if (k_ == 0) return true;
+  Mat h(k_, k_);
+  for (int t = 0; t < k_; ++t) h.row(t) = gz_.row(rrows_[static_cast<size_t>(t)]).head(k_);
+  const Eigen::PartialPivLU<Mat> lu(h);
+  const double rc = lu.rcond();
+  if (!(rc > 1e-14) || !std::isfinite(rc)) return false;
+  hinv_.topLeftCorner(k_, k_) = lu.inverse();
+  return hinv_.topLeftCorner(k_, k_).allFinite();
+}
+
+void LemkeBasis::recompute_values() {
+  const Eigen::Index k = k_;
+  // x_Z = -H^{-1} q_R, then one refinement step r = H x_Z + q_R, x_Z -= H^{-1} r.
+  for (int t = 0; t < k_; ++t) tmp_[t] = q_[rrows_[static_cast<size_t>(t)]];
+  xz_.head(k).noalias() = -hinv_.topLeftCorner(k, k) * tmp_.head(k);
+  for (int t = 0; t < k_; ++t)
+    tmp_[t] = gz_.row(rrows_[static_cast<size_t>(t)]).head(k).dot(xz_.head(k)) +
+              q_[rrows_[static_cast<size_t>(t)]];
+  xz_.head(k).noalias() -= hinv_.topLeftCorner(k, k) * tmp_.head(k);
+  w_ = q_;
+  w_.noalias() += gz_.leftCols(k) * xz_.head(k);
+  for (int t = 0; t < k_; ++t) w_[rrows_[static_cast<size_t>(t)]] = 0.0;
+}
+
+double LemkeBasis::hinv_quality() {
+  if (k_ == 0) return 0.0;
+  const Eigen::Index k = k_;
+  for (int t = 0; t < k_; ++t) tmp_[t] = q_[rrows_[static_cast<size_t>(t)]];
+  tmp2_.head(k).noalias() = -hinv_.topLeftCorner(k, k) * tmp_.head(k);  // x_Z from H^{-1}
+  double worst = 0.0;
+  for (int t = 0; t < k_; ++t) {
+    const auto row = gz_.row(rrows_[static_cast<size_t>(t)]).head(k);
+    const double r = row.dot(tmp2_.head(k)) + tmp_[t];
+    const double s = row.cwiseAbs().dot(tmp2_.head(k).cwiseAbs()) + std::abs(tmp_[t]);
+    if (s > 0) worst = std::max(worst, std::abs(r) / s);
+    if (!std::isfinite(r)) return INFINITY;
+  }
+  return worst;
+}
+
+void LemkeBasis::direction(int var, Vec& dxz, Vec& dw) {
+  const Eigen::Index k = k_;
+  if (var <= n_) {
+    const double* col = gcol(var);
+    for (int t = 0; t < k_; ++t) tmp_[t] = col[rrows_[static_cast<size_t>(t)]];
+    dxz.head(k).noalias() = -hinv_.topLeftCorner(k, k) * tmp_.head(k);
+    dw = Eigen::Map<const Vec>(col, n_);
+  } else {
+    const int pj = rpos(var - n_ - 1);
+    dxz.head(k) = hinv_.col(pj).head(k);
+    dw.setZero();
+  }
+  dw.noalias() += gz_.leftCols(k) * dxz.head(k);
+}
+
+void LemkeBasis::inverse_row(int var, Vec& out) {
+  const Eigen::Index k = k_;
+  out.setZero();
+  if (var <= n_) {
+    const int p = zpos(var);
+    for (int t = 0; t < k_; ++t) out[rrows_[static_cast<size_t>(t)]] = -hinv_(p, t);
+  } else {
+    const Eigen::Index i = var - n_ - 1;
+    tmp_.head(k) = gz_.row(i).head(k).transpose();
+    tmp2_.head(k).noalias() = hinv_.topLeftCorner(k, k).transpose() * tmp_.head(k);
+    out[i] = 1.0;
+    for (int t = 0; t < k_; ++t) out[rrows_[static_cast<size_t>(t)]] -= tmp2_[t];
+  }
+}
+
+void LemkeBasis::pivot(int entering, int leaving, double t, const Vec& dxz, const Vec& dw) {
+  const Eigen::Index k = k_;
+  xz_.head(k) += t * dxz.head(k);
+  w_ += t * dw;
+  auto H = hinv_.topLeftCorner(k, k);
+  if (entering <= n_ && leaving > n_) {
+    // z_j enters, w_r leaves: H grows by row r and column j (bordering).
+    const Eigen::Index r = leaving - n_ - 1;
+    const double s = dw[r];  // = G(r, j) + G(r, Z) dxz, the Schur complement
+    tmp_.head(k) = gz_.row(r).head(k).transpose();
+    tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);  // v = H^{-T} g
+    tmp2_.head(k) /= s;
+    H.noalias() -= dxz.head(k) * tmp2_.head(k).transpose();
+    hinv_.col(k).head(k) = dxz.head(k) / s;
+    hinv_.row(k).head(k) = -tmp2_.head(k).transpose();
+    hinv_(k, k) = 1.0 / s;
+    zcols_[static_cast<size_t>(k)] = entering;
+    rrows_[static_cast<size_t>(k)] = static_cast<int>(r);
+    zpos_[static_cast<size_t>(entering)] = k_;
+    rpos_[static_cast<size_t>(r)] = k_;
+    gz_.col(k) = Eigen::Map<const Vec>(gcol(entering), n_);
+    xz_[k] = t;
+    w_[r] = 0.0;
+    ++k_;
+  } else if (entering <= n_) {
+    // z_j enters, x_l leaves: column p of H replaced (Sherman-Morrison).
+    const int p = zpos(leaving);
+    const double up = -dxz[p];
+    tmp_.head(k) = hinv_.row(p).head(k).transpose() / up;
+    H.noalias() += dxz.head(k) * tmp_.head(k).transpose();
+    hinv_.row(p).head(k) = tmp_.head(k).transpose();
+    zcols_[static_cast<size_t>(p)] = entering;
+    zpos_[static_cast<size_t>(entering)] = p;
+    zpos_[static_cast<size_t>(leaving)] = -1;
+    gz_.col(p) = Eigen::Map<const Vec>(gcol(entering), n_);
+    xz_[p] = t;
+  } else if (leaving > n_) {
+    // w_j enters, w_r leaves: row pj of H replaced by G(r, Z).
+    const Eigen::Index j = entering - n_ - 1;
+    const Eigen::Index r = leaving - n_ - 1;
+    const int pj = rpos(j);
+    tmp_.head(k) = gz_.row(r).head(k).transpose();
+    tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);
+    const double den = tmp2_[pj];
+    tmp2_[pj] -= 1.0;
+    tmp2_.head(k) /= den;
+    H.noalias() -= dxz.head(k) * tmp2_.head(k).transpose();
+    rrows_[static_cast<size_t>(pj)] = static_cast<int>(r);
+    rpos_[static_cast<size_t>(r)] = pj;
+    rpos_[static_cast<size_t>(j)] = -1;
+    w_[j] = t;
+    w_[r] = 0.0;
+  } else {
+    // w_j enters, x_l leaves: H loses row pj and column p (Schur complement in H^{-1}).
+    const Eigen::Index j = entering - n_ - 1;
+    const int pj = rpos(j);
+    const int p = zpos(leaving);
+    const double piv = hinv_(p, pj);
+    tmp_.head(k) = hinv_.row(p).head(k).transpose() / piv;
+    H.noalias() -= dxz.head(k) * tmp_.head(k).transpose();
+    const int last = k_ - 1;
+    zpos_[static_cast<size_t>(leaving)] = -1;
+    rpos_[static_cast<size_t>(j)] = -1;
+    if (p != last) {
+      hinv_.row(p).head(k) = hinv_.row(last).head(k);
+      const int moved = zcols_[static_cast<size_t>(last)];
+      zcols_[static_cast<size_t>(p)] = moved;
+      zpos_[static_cast<size_t>(moved)] = p;
+      gz_.col(p) = gz_.col(last);
+      xz_[p] = xz_[last];
+    }
+    if (pj != last) {
+      hinv_.col(pj).head(last) = hinv_.col(last).head(last);
+      const int moved = rrows_[static_cast<size_t>(last)];
+      rrows_[static_cast<size_t>(pj)] = moved;
+      rpos_[static_cast<size_t>(moved)] = pj;
+    }
+    w_[j] = t;
+    --k_;
+  }
+  for (int s = 0; s < k_; ++s) w_[rrows_[static_cast<size_t>(s)]] = 0.0;
+}
+
+void LemkeBasis::current_point(Vec& z, double& z0) const {
+  z.setZero(n_);
+  z0 = 0.0;
+  for (int p = 0; p < k_; ++p) {
+    const int j = zcols_[static_cast<size_t>(p)];
+    if (j < n_) z[j] = xz_[p];
+    else z0 = xz_[p];
+  }
+}
+
+}  // namespace cpkit::lcp::detail

@@ -1,0 +1,92 @@
+#pragma once
+/// \file lemke_basis.hpp
+/// Private to cpkit::lcp: the basis of Lemke's method in block form.
+///
+/// System (cpkit convention, with the artificial column c for z0):
+///   w = G x + q,  G = [M | c]  (n x (n+1)),  x = (z_0..z_{n-1}, z0),  w, x >= 0.
+/// A basis has the basic w_i for i in W, and k basic x_j for j in Z (z0 included when basic);
+/// R is the complement of W (the rows where w is nonbasic), |R| = |Z| = k. With
+/// H = G(R, Z) (k x k) the basic values are
+///   x_Z = -H^{-1} q_R,   w_W = q_W + G(W, Z) x_Z,
+/// so only H^{-1} is maintained (explicit k x k, updated by rank-one / bordering formulas, and
+/// recomputed from the data when a residual check fails). Work per pivot: O(n k + k^2) instead
+/// of the O(n^2) of a full basis inverse [Cottle-Pang-Stone 1992, Sec. 4.4 for the method].
+///
+/// Variable ids: 0..n-1 = z_i, n = z0, n+1+i = w_i.
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace cpkit::lcp::detail {
+
+using Vec = Eigen::VectorXd;
+using Mat = Eigen::MatrixXd;
+
+class LemkeBasis {
+ public:
+  /// M (n x n, column-major, not owned: must outlive the basis) and q (not owned).
+  LemkeBasis(const Mat& M, const Vec& q);
+
+  Eigen::Index n() const { return n_; }
+  int k() const { return k_; }
+
+  /// Sets the z0 column c (size n).
+  void set_artificial_column(const Vec& c) { c_ = c; }
+  const Vec& artificial_column() const { return c_; }
+
+  /// G(i, j) for j in 0..n (j = n: the artificial column).
+  double g(Eigen::Index i, int j) const { return j < n_ ? M_(i, j) : c_[i]; }
+  const double* gcol(int j) const { return j < n_ ? M_.data() + j * n_ : c_.data(); }
+
+  /// Sets a complementary basis with basic z_j for j in `zset` (R = zset), computes H^{-1}
+  /// from the data. Returns false when H = M(zset, zset) is singular.
+  bool reset(const std::vector<int>& zset);
+
+  /// Recomputes H^{-1} from the data (LU with full pivoting). False when H is singular.
+  bool refactor();
+  /// Recomputes the basic values from the data with one step of iterative refinement.
+  void recompute_values();
+  /// Accuracy of H^{-1}: with x_Z = -H^{-1} q_R, max_t |(H x_Z + q_R)_t| relative to the size
+  /// of the terms of that row (O(k^2), no allocation).
+  double hinv_quality();
+
+  /// Basic values: xz(p) for the p-th basic x (zcols()[p]); w(i) for i in W (0 for i in R).
+  const Vec& xz() const { return xz_; }
+  const Vec& w() const { return w_; }
+  const std::vector<int>& zcols() const { return zcols_; }
+  const std::vector<int>& rrows() const { return rrows_; }
+  /// Position of x_j in Z (-1 when nonbasic), position of row i in R (-1: w_i basic).
+  int zpos(int j) const { return zpos_[static_cast<size_t>(j)]; }
+  int rpos(Eigen::Index i) const { return rpos_[static_cast<size_t>(i)]; }
+  bool is_basic(int var) const {
+    return var <= n_ ? zpos(var) >= 0 : rpos(var - n_ - 1) < 0;
+  }
+
+  /// Direction of the basic values when the nonbasic variable `var` increases at unit rate:
+  /// dxz (by Z position) and dw (every row; meaningful on W).
+  void direction(int var, Vec& dxz, Vec& dw);
+
+  /// Row of the basis inverse B^{-1} (system I w - G x = q, equation order 0..n-1) of the basic
+  /// variable `var`, into out (size n). O(n k). Used by the lexicographic ratio test.
+  void inverse_row(int var, Vec& out);
+
+  /// Pivot: `entering` becomes basic at value t, `leaving` leaves; dxz/dw from direction().
+  void pivot(int entering, int leaving, double t, const Vec& dxz, const Vec& dw);
+
+  /// z (size n) of the current basic solution, z0 (0 when nonbasic).
+  void current_point(Vec& z, double& z0) const;
+
+ private:
+  const Mat& M_;
+  const Vec& q_;
+  Eigen::Index n_;
+  Vec c_;
+  int k_ = 0;
+  Mat hinv_;              // top-left k x k block is H^{-1}
+  Vec xz_, w_;            // basic values
+  std::vector<int> zcols_, rrows_, zpos_, rpos_;
+  Mat gz_;                // column p = G(:, zcols_[p]) (contiguous copy for gemv)
+  Vec tmp_, tmp2_;        // workspaces (size n + 1)
+};
+
+}  // namespace cpkit::lcp::detail

@@ -1,0 +1,52 @@
+#pragma once
+/// \file load_history.hpp
+/// Load histories (t, F_T, F_N) for the quasi-static simulation (simulation.hpp,
+/// docs/simulation.md): a CSV file, a built-in fretting cycle, or a ramp. The simulation starts
+/// from the unloaded grazing state (F = 0, P = 0, w = 0) and takes one step to every point.
+#include <string>
+#include <vector>
+
+namespace cpkit::rate {
+
+struct LoadPoint {
+  double t = 0, F_T = 0, F_N = 0;
+};
+
+struct LoadHistory {
+  std::vector<LoadPoint> points;  ///< t strictly increasing, values finite
+  double period = 0;              ///< > 0: cycle length in t (slip/wear per cycle are reported)
+  double cycle_start = 0;         ///< t at which cycle 0 begins
+  /// Empty when usable; else names the first bad row.
+  std::string validate() const;
+};
+
+/// CSV with columns t, F_T, F_N (a header line naming them is optional; '#' starts a comment).
+/// Throws InputError naming the file and line for malformed input.
+LoadHistory read_load_csv(const std::string& path);
+LoadHistory parse_load_csv(const std::string& text, const std::string& origin = "<string>");
+
+/// Constant normal load F_N (reached by a linear ramp over ramp_steps steps with F_T = 0) plus
+/// F_T = amplitude sin(2 pi (t - t_ramp) / period) for `cycles` cycles of `steps_per_cycle`
+/// steps each; the ramp takes one period / steps_per_cycle per step.
+struct FrettingCycle {
+  double F_N = 1;
+  double amplitude = 0.1;
+  double period = 1;
+  int cycles = 10;
+  int steps_per_cycle = 100;
+  int ramp_steps = 10;
+  std::string validate() const;
+};
+LoadHistory fretting_history(const FrettingCycle& cycle);
+
+/// Linear ramp from (F_T0, F_N0) to (F_T1, F_N1) in `steps` steps over `duration`; when the
+/// start is not zero a first step goes from the unloaded state to it.
+struct LoadRamp {
+  double F_T0 = 0, F_N0 = 0, F_T1 = 0, F_N1 = 1;
+  double duration = 1;
+  int steps = 100;
+  std::string validate() const;
+};
+LoadHistory ramp_history(const LoadRamp& ramp);
+
+}  // namespace cpkit::rate

@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Draws the maps written by `cpkit map --out PREFIX` (docs/maps.md).
+
+usage: cpkit_plot.py PREFIX.json [--out PREFIX2] [--formats png,svg]
+
+Reads the JSON summary and the CSV files it names (paths relative to the JSON file) and writes
+PREFIX.png and PREFIX.svg:
+  direction        a polar figure in the style of Fig. 5 of Stromberg, Johansson & Klarbring
+                   (1996): one coloured ring per solution type over the directions where that
+                   type exists, the number of solutions per sector, the critical directions;
+  param-direction  the parameter x direction map coloured by the solution count (left) and by
+                   the combination of solution types (right), with the analytic critical values
+                   (a11 = mu|a12| in state b, Lambda = 0 in state d) and the exact critical
+                   directions drawn over it;
+  param-param      unique / non-unique / no-solution classes with the analytic critical curve.
+Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
+Run it with /usr/bin/python3 (Debian's python3-matplotlib).
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+EXIT_BAD_INPUT = 2
+EXIT_NO_MATPLOTLIB = 5
+
+TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]
+TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
+                "slip-": "#c44e52", "open": "#8172b3"}
+COUNT_COLOURS = {"0": "#d62728", "1": "#e8e8e8", "2": "#f2b134", "3": "#1f77b4",
+                 "4": "#9467bd", "inf": "#000000"}
+CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": "#d62728"}
+CLASS_LABELS = {"unique": "unique for every direction",
+                "non-unique": "several solutions for some directions",
+                "no-solution": "no solution for some directions"}
+
+
+def fail(msg, code=EXIT_BAD_INPUT):
+    sys.stderr.write("cpkit_plot.py: %s\n" % msg)
+    sys.exit(code)
+
+
+def model_title(summary):
+    m = summary.get("model", {})
+    t = "state %s: a11=%g, a12=%g, a22=%g, C_T=%g" % (m.get("state"), m.get("a11"), m.get("a12"),
+                                                   m.get("a22"), m.get("C_T"))
+    kind = summary.get("kind")
+    if kind == "direction" or summary.get("axis", {}).get("param") != "mu":
+        if kind != "param-param" or "mu" not in (summary["axis"]["param"], summary["axis2"]["param"]):
+            t += ", mu=%g" % m.get("mu")
+    if m.get("state") in ("c", "d"):
+        t += ", P_N=%g, kappa=%g" % (m.get("P_N"), m.get("kappa"))
+        if m.get("state") == "d":
+            t += ", sgn P_T=%+d" % m.get("sgnPT")
+    return t
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.reader(f))
+
+
+def count_key(c):
+    return "inf" if c == "inf" or c == -1 else str(c)
+
+
+def plot_direction(summary, base, plt):
+    from matplotlib.patches import Patch, Wedge
+    fig = plt.figure(figsize=(7.2, 7.6))
+    ax = fig.add_axes([0.08, 0.13, 0.84, 0.75])
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.55, 1.55)
+    ax.set_ylim(-1.55, 1.55)
+    ax.axis("off")
+    present = [t for t in TYPE_ORDER
+               if any(t in s["types"] for s in summary["sectors"])
+               or any(t in c["types"] for c in summary["critical"])]
+    r0, width = 0.35, 0.16
+    ring = {t: r0 + k * (width + 0.02) for k, t in enumerate(present)}
+    r_out = r0 + len(present) * (width + 0.02)
+    # Faint guide circles and the load axes.
+    for t in present:
+        ax.add_patch(Wedge((0, 0), ring[t] + width, 0, 360, width=width, facecolor="none",
+                           edgecolor="#cccccc", linewidth=0.6))
+    ax.annotate("", xy=(1.45, 0), xytext=(-1.45, 0),
+                arrowprops=dict(arrowstyle="->", color="#888888", lw=0.8))
+    ax.annotate("", xy=(0, 1.45), xytext=(0, -1.45),
+                arrowprops=dict(arrowstyle="->", color="#888888", lw=0.8))
+    ax.text(1.47, -0.08, r"$\dot F_T$", fontsize=12, ha="left")
+    ax.text(0.04, 1.47, r"$\dot F_N$", fontsize=12, va="bottom")
+    for s in summary["sectors"]:
+        a0, a1 = math.degrees(s["theta_from"]), math.degrees(s["theta_to"])
+        for t in s["types"]:
+            ax.add_patch(Wedge((0, 0), ring[t] + width, a0, a1, width=width,
+                               facecolor=TYPE_COLOURS[t], edgecolor="white", linewidth=0.5))
+        mid = 0.5 * (s["theta_from"] + s["theta_to"])
+        n = s["count"]
+        colour = "#d62728" if n == 0 else ("black" if n in (1,) else "#1f4e9c")
+        label = "inf" if n == "inf" else str(n)
+        ax.text((r_out + 0.12) * math.cos(mid), (r_out + 0.12) * math.sin(mid), label,
+                ha="center", va="center", fontsize=13, fontweight="bold", color=colour,
+                bbox=dict(boxstyle="circle,pad=0.25", facecolor="white", edgecolor=colour,
+                          linewidth=0.8))
+    for c in summary["critical"]:
+        th = c["theta"]
+        ax.plot([0, 1.35 * math.cos(th)], [0, 1.35 * math.sin(th)], color="black", lw=1.0)
+        # Types present on the critical direction itself: dots on the rings.
+        for t in c["types"]:
+            rr = ring[t] + 0.5 * width
+            ax.plot([rr * math.cos(th)], [rr * math.sin(th)], "o", ms=5,
+                    markerfacecolor=TYPE_COLOURS[t], markeredgecolor="black", markeredgewidth=0.6)
+        lab = "%s\n%.4f (%s)" % (", ".join(c["conditions"]), th, count_key(c["count"]))
+        ha = "left" if math.cos(th) >= 0 else "right"
+        ax.text(1.37 * math.cos(th), 1.37 * math.sin(th), lab, fontsize=7.5, ha=ha,
+                va="center")
+    handles = [Patch(facecolor=TYPE_COLOURS[t], label=t) for t in present]
+    fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.045), fontsize=9,
+               title="solution types (one ring each, inner to outer)", title_fontsize=9,
+               frameon=False, ncol=len(handles))
+    fig.suptitle("Rate problem: solutions per load direction\n" + model_title(summary),
+                 fontsize=10.5)
+    fig.text(0.5, 0.015, "circled numbers: solutions per sector; rays: critical directions "
+             "(theta in rad, count on the ray in brackets)", ha="center", fontsize=8)
+    return fig
+
+
+def plot_param_direction(summary, base, plt):
+    import numpy as np
+    from matplotlib.colors import ListedColormap, BoundaryNorm
+    from matplotlib.patches import Patch
+    rows = read_csv(os.path.join(base, summary["files"]["csv"]))
+    header, rows = rows[0], rows[1:]
+    ax_info = summary["axis"]
+    n, tn = ax_info["n"], summary["theta_n"]
+    if len(rows) != n * tn:
+        fail("CSV has %d cells, the summary says %d" % (len(rows), n * tn))
+    xs = np.array([float(rows[i * tn][0]) for i in range(n)])
+    th = np.array([float(rows[j][1]) for j in range(tn)])
+    keys = sorted({r[2] for r in rows}, key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
+    kidx = {k: i for i, k in enumerate(keys)}
+    cnt = np.array([kidx[r[2]] for r in rows]).reshape(n, tn).T
+    combos = sorted({r[3] for r in rows})
+    cidx = {c: i for i, c in enumerate(combos)}
+    typ = np.array([cidx[r[3]] for r in rows]).reshape(n, tn).T
+
+    def edges(v, lo=None, hi=None):
+        if len(v) == 1:
+            return np.array([v[0] - 0.5, v[0] + 0.5])
+        mid = 0.5 * (v[1:] + v[:-1])
+        e = np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+        if lo is not None:
+            e[0], e[-1] = lo, hi
+        return e
+    xe, te = edges(xs), edges(th, 0.0, 2 * math.pi)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.6), sharey=True)
+    cmap = ListedColormap([COUNT_COLOURS.get(k, "#777777") for k in keys])
+    norm = BoundaryNorm(np.arange(len(keys) + 1) - 0.5, len(keys))
+    axes[0].pcolormesh(xe, te, cnt, cmap=cmap, norm=norm, shading="flat", rasterized=True)
+    palette = ["#e8e8e8", "#4c72b0", "#55a868", "#dd8452", "#c44e52", "#8172b3", "#937860",
+               "#da8bc3", "#8c8c8c", "#ccb974", "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf"]
+    tcols = []
+    for c in combos:
+        if c in TYPE_COLOURS:
+            tcols.append(TYPE_COLOURS[c])
+        elif c == "none":
+            tcols.append("#d62728")
+        else:
+            tcols.append(palette[(len(tcols) + 5) % len(palette)])
+    axes[1].pcolormesh(xe, te, typ, cmap=ListedColormap(tcols),
+                       norm=BoundaryNorm(np.arange(len(combos) + 1) - 0.5, len(combos)),
+                       shading="flat", rasterized=True)
+    crit_pts = []
+    crit_vals = summary.get("critical_values", [])
+    if "critical_csv" in summary.get("files", {}):
+        for r in read_csv(os.path.join(base, summary["files"]["critical_csv"]))[1:]:
+            if r[0] == "direction":
+                crit_pts.append((float(r[1]), float(r[2])))
+    names = {"D+=0": r"$a_{11}=\mu a_{12}$ ($D_+=0$)", "D-=0": r"$a_{11}=-\mu a_{12}$ ($D_-=0$)",
+             "Lambda=0": r"$\Lambda=0$ (eqn 51)"}
+    for a in axes:
+        if crit_pts:
+            a.plot([p[0] for p in crit_pts], [p[1] for p in crit_pts], ".", ms=1.2,
+                   color="black", label="critical directions (exact)")
+        for k, cv in enumerate(crit_vals):
+            a.axvline(cv["x"], color="#7a0177", lw=1.6, ls="--",
+                      label=names.get(cv["name"], cv["name"]) + " at %s = %.6g" %
+                      (ax_info["param"], cv["x"]) if k < 4 else None)
+        a.set_xlabel(ax_info["param"])
+        a.set_xlim(xe[0], xe[-1])
+        a.set_ylim(0, 2 * math.pi)
+        a.set_yticks([0, math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi])
+        a.set_yticklabels(["0", r"$\pi/2$", r"$\pi$", r"$3\pi/2$", r"$2\pi$"])
+    axes[0].set_ylabel(r"load direction $\theta$ ($\dot F_T=\cos\theta$, $\dot F_N=\sin\theta$)")
+    axes[0].set_title("number of solutions")
+    axes[1].set_title("solution types")
+    h0 = [Patch(facecolor=COUNT_COLOURS.get(k, "#777777"), edgecolor="#999999",
+                label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
+                else "continuum") for k in keys]
+    l0, lab0 = axes[0].get_legend_handles_labels()
+    axes[0].legend(handles=h0 + l0, fontsize=8, loc="upper left", framealpha=0.9)
+    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999", label=c.replace("|", " + "))
+          for i, c in enumerate(combos)]
+    axes[1].legend(handles=h1, fontsize=7.5, loc="upper left", framealpha=0.9)
+    fig.suptitle("Rate problem: %s x load direction (%d x %d cells, %s route)\n%s" %
+                 (ax_info["param"], n, tn, summary.get("method", "enumerate"),
+                  model_title(summary)), fontsize=10.5)
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    return fig
+
+
+def plot_param_param(summary, base, plt):
+    import numpy as np
+    from matplotlib.colors import ListedColormap, BoundaryNorm
+    from matplotlib.patches import Patch
+    rows = read_csv(os.path.join(base, summary["files"]["csv"]))[1:]
+    a1, a2 = summary["axis"], summary["axis2"]
+    n1, n2 = a1["n"], a2["n"]
+    if len(rows) != n1 * n2:
+        fail("CSV has %d cells, the summary says %d" % (len(rows), n1 * n2))
+    classes = ["unique", "non-unique", "no-solution"]
+    cls = np.array([classes.index(r[2]) for r in rows]).reshape(n1, n2).T
+    xs = np.array([float(rows[i * n2][0]) for i in range(n1)])
+    ys = np.array([float(rows[j][1]) for j in range(n2)])
+
+    def edges(v):
+        if len(v) == 1:
+            return np.array([v[0] - 0.5, v[0] + 0.5])
+        mid = 0.5 * (v[1:] + v[:-1])
+        return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+    fig, ax = plt.subplots(figsize=(7.5, 6))
+    ax.pcolormesh(edges(xs), edges(ys), cls, cmap=ListedColormap([CLASS_COLOURS[c] for c in classes]),
+                  norm=BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3), shading="flat", rasterized=True)
+    handles = [Patch(facecolor=CLASS_COLOURS[c], edgecolor="#999999", label=CLASS_LABELS[c])
+               for c in classes if (cls == classes.index(c)).any()]
+    if "critical_csv" in summary.get("files", {}):
+        pts = [r for r in read_csv(os.path.join(base, summary["files"]["critical_csv"]))[1:]]
+        for name in sorted({p[0] for p in pts}):
+            q = [(float(p[1]), float(p[2])) for p in pts if p[0] == name]
+            lab = {"Lambda=0": r"$\Lambda = 0$ (eqn 51)", "D+=0": r"$a_{11} = \mu a_{12}$",
+                   "D-=0": r"$a_{11} = -\mu a_{12}$"}.get(name, name)
+            ax.plot([p[0] for p in q], [p[1] for p in q], ".", ms=1.5, color="black")
+            handles.append(plt.Line2D([], [], color="black", marker=".", ls="", label=lab))
+    ax.set_xlim(edges(xs)[0], edges(xs)[-1])
+    ax.set_ylim(edges(ys)[0], edges(ys)[-1])
+    ax.set_xlabel(a1["param"])
+    ax.set_ylabel(a2["param"])
+    ax.legend(handles=handles, fontsize=8, loc="upper right", framealpha=0.9)
+    ax.set_title("Rate problem over all load directions (%d x %d cells)\n%s" %
+                 (n1, n2, model_title(summary)), fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def main(argv):
+    args = argv[1:]
+    if not args or args[0] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if args else EXIT_BAD_INPUT
+    src = args[0]
+    out, formats = None, ["png", "svg"]
+    i = 1
+    while i < len(args):
+        if args[i] == "--out" and i + 1 < len(args):
+            out = args[i + 1]
+            i += 2
+        elif args[i] == "--formats" and i + 1 < len(args):
+            formats = [f for f in args[i + 1].split(",") if f]
+            i += 2
+        else:
+            fail("unknown argument '%s'" % args[i])
+    try:
+        with open(src) as f:
+            summary = json.load(f)
+    except (OSError, ValueError) as e:
+        fail("cannot read %s: %s" % (src, e))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import numpy  # noqa: F401
+    except ImportError as e:
+        sys.stderr.write("cpkit_plot.py: matplotlib/numpy not available to %s (%s); install "
+                         "python3-matplotlib (Debian) and run with /usr/bin/python3\n" %
+                         (sys.executable, e))
+        return EXIT_NO_MATPLOTLIB
+    base = os.path.dirname(os.path.abspath(src))
+    if out is None:
+        out = src[:-5] if src.endswith(".json") else src
+    kind = summary.get("kind")
+    if kind == "direction":
+        fig = plot_direction(summary, base, plt)
+    elif kind == "param-direction":
+        fig = plot_param_direction(summary, base, plt)
+    elif kind == "param-param":
+        fig = plot_param_param(summary, base, plt)
+    else:
+        fail("unknown map kind %r in %s" % (kind, src))
+    for fmt in formats:
+        fig.savefig("%s.%s" % (out, fmt), dpi=110)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

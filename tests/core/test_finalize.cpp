@@ -1,0 +1,214 @@
+// finalize() and check_certificate(): the data decide, never the claim. Expected values are
+// hand calculations written in the comments.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "cpkit/core/finalize.hpp"
+#include "cpkit/core/residuals.hpp"
+
+namespace {
+
+using cpkit::BoxLcpProblem;
+using cpkit::Certificate;
+using cpkit::CommonOptions;
+using cpkit::LcpProblem;
+using cpkit::Mat;
+using cpkit::SolveResult;
+using cpkit::Status;
+using cpkit::Vec;
+
+SolveResult claim(Status s, Vec z) {
+  SolveResult r;
+  r.status = s;
+  r.z = std::move(z);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("Siconos 1x1 trap: M = -1, q = -1, z = -1 claimed solved is refuted", "[finalize]") {
+  // w = -z - 1 = 0 at z = -1, but z < 0: min(z, w) = -1, natural residual 1 / scale 2.
+  const LcpProblem p(Mat{{-1}}, Vec{{-1}});
+  const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{-1}}), {});
+  CHECK(r.status == Status::kNumericalFailure);
+  CHECK(r.message.find("refuted") != std::string::npos);
+  CHECK(r.w[0] == 0.0);
+  CHECK(r.residuals.natural_abs == 1.0);
+  CHECK(r.residuals.scale == 2.0);  // 1 + max(|q| = 1, |M||z| = 1)
+  CHECK(r.residuals.natural == 0.5);
+  CHECK(r.residuals.min_z == -1.0);
+}
+
+TEST_CASE("M = 0 cases", "[finalize]") {
+  SECTION("M = 0, q = -1: any claimed z is refuted (w = -1)") {
+    const LcpProblem p(Mat{{0}}, Vec{{-1}});
+    for (double z : {0.0, 1.0, 5.0}) {
+      const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{z}}), {});
+      CHECK(r.status == Status::kNumericalFailure);
+      CHECK(r.w[0] == -1.0);
+    }
+  }
+  SECTION("M = 0, q = 0: z = 0 is a solution, even when the solver said otherwise") {
+    const LcpProblem p(Mat{{0}}, Vec{{0}});
+    const auto r = cpkit::finalize(p, claim(Status::kIterationLimit, Vec{{0}}), {});
+    CHECK(r.status == Status::kSolved);
+    CHECK(r.message.find("verified as a solution although") != std::string::npos);
+  }
+  SECTION("M = 0, q = 0: z = 3 is also a solution (w = 0)") {
+    const LcpProblem p(Mat{{0}}, Vec{{0}});
+    CHECK(cpkit::finalize(p, claim(Status::kSolved, Vec{{3}}), {}).status == Status::kSolved);
+  }
+}
+
+TEST_CASE("Claims of the wrong size or with non-finite entries", "[finalize]") {
+  const LcpProblem p(Mat::Identity(2, 2), Vec{{-1, -1}});
+  auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{1}}), {});
+  CHECK(r.status == Status::kNumericalFailure);
+  CHECK(r.message.find("size 1, expected 2") != std::string::npos);
+  r = cpkit::finalize(p, claim(Status::kSolved, Vec{{1, NAN}}), {});
+  CHECK(r.status == Status::kNumericalFailure);
+  CHECK(r.message.find("non-finite") != std::string::npos);
+  // A non-solution claim with an unusable point keeps its status.
+  r = cpkit::finalize(p, claim(Status::kStalled, Vec()), {});
+  CHECK(r.status == Status::kStalled);
+}
+
+TEST_CASE("Solved, solved inaccurately, refuted: the tolerance bands", "[finalize]") {
+  // M = I, q = (-1, -1): the solution is z = (1, 1). z = (1 + e, 1): w = (e, 0),
+  // min(z, w) = (e, 0), scale = 1 + max(1, 1 + e) = 2 + e.
+  const LcpProblem p(Mat::Identity(2, 2), Vec{{-1, -1}});
+  CommonOptions o;  // tol 1e-10, tol_acceptable 1e-6
+  auto at = [&](double e, Status s) {
+    return cpkit::finalize(p, claim(s, Vec{{1 + e, 1}}), o);
+  };
+  CHECK(at(0, Status::kSolved).status == Status::kSolved);
+  CHECK(at(1e-11, Status::kSolved).status == Status::kSolved);
+  const auto inacc = at(1e-8, Status::kSolved);
+  CHECK(inacc.status == Status::kSolvedInaccurate);
+  CHECK(inacc.residuals.natural == Approx(1e-8 / (2 + 1e-8)).epsilon(1e-6));
+  CHECK(at(1e-3, Status::kSolved).status == Status::kNumericalFailure);
+  // A claimed failure whose point is far off stays a failure.
+  CHECK(at(1e-3, Status::kIterationLimit).status == Status::kIterationLimit);
+  // A claimed failure whose point is within tol_acceptable is granted solved_inaccurate.
+  CHECK(at(1e-8, Status::kIterationLimit).status == Status::kSolvedInaccurate);
+}
+
+TEST_CASE("Residual definitions by hand", "[finalize][residuals]") {
+  // M = [[1, -2], [3, 4]], q = (1, -20), z = (2, 3):
+  // w = (2 - 6 + 1, 6 + 12 - 20) = (-3, -2); min(z, w) = (-3, -2) -> natural_abs 3 at index 0;
+  // |z_i w_i| = (6, 6) -> 6; min z = 2; min w = -3;
+  // |M||z| = (2 + 6, 6 + 12) = (8, 18); scale = 1 + max(20, 18) = 21.
+  const LcpProblem p(Mat{{1, -2}, {3, 4}}, Vec{{1, -20}});
+  Vec w;
+  const auto r = cpkit::lcp_residuals(p, Vec{{2, 3}}, w);
+  CHECK(w == Vec{{-3, -2}});
+  CHECK(r.natural_abs == 3.0);
+  CHECK(r.worst_index == 0);
+  CHECK(r.complementarity == 6.0);
+  CHECK(r.min_z == 2.0);
+  CHECK(r.min_w == -3.0);
+  CHECK(r.scale == 21.0);
+  CHECK(r.natural == Approx(3.0 / 21.0));
+  // Sparse storage gives the same numbers.
+  LcpProblem sp;
+  sp.M_sparse = p.M.sparseView();
+  sp.q = p.q;
+  Vec w2;
+  const auto r2 = cpkit::lcp_residuals(sp, Vec{{2, 3}}, w2);
+  CHECK(w2 == w);
+  CHECK(r2.scale == 21.0);
+  CHECK(r2.natural_abs == 3.0);
+}
+
+TEST_CASE("Box LCP residual by hand", "[finalize][residuals]") {
+  // l = (0, -1), u = (1, 1), M = I, q = (-2, 0.5), z = (1, -0.5): w = (-1, 0).
+  // z - mid(l, u, z - w) = (1 - mid(0, 1, 2), -0.5 - mid(-1, 1, -0.5)) = (0, 0): a solution
+  // (z_1 = u_1 with w_1 <= 0, z_2 interior with w_2 = 0).
+  BoxLcpProblem b{LcpProblem(Mat::Identity(2, 2), Vec{{-2, 0.5}}), Vec{{0, -1}}, Vec{{1, 1}}};
+  const auto r = cpkit::finalize(b, claim(Status::kSolved, Vec{{1, -0.5}}), {});
+  CHECK(r.status == Status::kSolved);
+  CHECK(r.residuals.natural_abs == 0.0);
+  // z = (0.5, -0.5): z_1 interior but w_1 = -1.5: natural map entry 0.5 - mid(0,1,2) = -0.5.
+  const auto bad = cpkit::finalize(b, claim(Status::kSolved, Vec{{0.5, -0.5}}), {});
+  CHECK(bad.status == Status::kNumericalFailure);
+  CHECK(bad.residuals.natural_abs == 0.5);
+}
+
+TEST_CASE("Infeasibility certificates are re-checked from the data", "[finalize][certificate]") {
+  // M = [[1,-1],[-1,1]], q = (-1,-1): y = (1, 1) gives M^T y = 0, q^T y = -2.
+  const LcpProblem p(Mat{{1, -1}, {-1, 1}}, Vec{{-1, -1}});
+  auto infeasible = [](Vec y) {
+    SolveResult r;
+    r.status = Status::kInfeasible;
+    r.certificate = Certificate{};
+    r.certificate->y = std::move(y);
+    return r;
+  };
+  SECTION("a valid certificate is kept, normalised and measured") {
+    const auto r = cpkit::finalize(p, infeasible(Vec{{3, 3}}), {});
+    REQUIRE(r.status == Status::kInfeasible);
+    REQUIRE(r.certificate);
+    CHECK(r.certificate->checked);
+    CHECK(r.certificate->y == Vec{{1, 1}});  // scaled to ||y||_inf = 1
+    CHECK(r.certificate->q_dot_y == -2.0);
+    CHECK(r.certificate->max_MTy == 0.0);
+  }
+  SECTION("refuted certificates become numerical failures") {
+    for (const Vec& y : {Vec{{1, 0}}, Vec{{1, 2}}, Vec{{-1, -1}}, Vec{{0, 0}}, Vec{{1, 1, 1}},
+                         Vec{{1, NAN}}}) {
+      CAPTURE(y);
+      const auto r = cpkit::finalize(p, infeasible(y), {});
+      CHECK(r.status == Status::kNumericalFailure);
+      CHECK_FALSE(r.certificate.has_value());
+      CHECK(r.message.find("refuted") != std::string::npos);
+    }
+  }
+  SECTION("infeasible without a certificate") {
+    SolveResult c;
+    c.status = Status::kInfeasible;
+    const auto r = cpkit::finalize(p, c, {});
+    CHECK(r.status == Status::kNumericalFailure);
+    CHECK(r.message.find("without a certificate") != std::string::npos);
+  }
+  SECTION("a certificate of a feasible problem cannot pass") {
+    // q = (1, 1): z = 0 solves; q^T y > 0 for every y >= 0, y != 0.
+    const LcpProblem feasible(p.M, Vec{{1, 1}});
+    Certificate c;
+    c.y = Vec{{1, 1}};
+    CHECK_FALSE(cpkit::check_certificate(feasible, c));
+    CHECK_FALSE(c.checked);
+    CHECK(c.q_dot_y == 2.0);
+  }
+  SECTION("a certificate attached to a non-infeasible claim is dropped") {
+    SolveResult c = infeasible(Vec{{1, 1}});
+    c.status = Status::kRayTermination;
+    c.z = Vec{{0, 0}};
+    const auto r = cpkit::finalize(p, c, {});
+    CHECK(r.status == Status::kRayTermination);
+    CHECK_FALSE(r.certificate.has_value());
+  }
+  SECTION("the 1x1 traps have certificates y = 1") {
+    for (double m : {-1.0, 0.0}) {
+      Certificate c;
+      c.y = Vec{{1}};
+      CHECK(cpkit::check_certificate(LcpProblem(Mat{{m}}, Vec{{-1}}), c));
+    }
+  }
+}
+
+TEST_CASE("MCP finalize evaluates F and respects its domain", "[finalize][mcp]") {
+  // NCP F(x) = x - 2 on x >= 0: solution x = 2. F undefined for x > 10 (domain test).
+  auto mcp = cpkit::make_ncp(1, [](const Vec& x, Vec& F) {
+    if (x[0] > 10) return false;
+    F = Vec{{x[0] - 2}};
+    return true;
+  });
+  CHECK(cpkit::finalize(mcp, claim(Status::kSolved, Vec{{2}}), {}).status == Status::kSolved);
+  const auto out = cpkit::finalize(mcp, claim(Status::kSolved, Vec{{11}}), {});
+  CHECK(out.status == Status::kNumericalFailure);
+  CHECK(out.message.find("F is undefined") != std::string::npos);
+  SolveResult inf;
+  inf.status = Status::kInfeasible;
+  CHECK(cpkit::finalize(mcp, inf, {}).status == Status::kNumericalFailure);
+}

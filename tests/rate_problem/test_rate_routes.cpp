@@ -1,0 +1,208 @@
+// Routes 1 (analytic) and 2 (LCP + enumeration) of the rate problem agree on every input, and
+// both agree with a brute force over the solution types written here; every reported solution
+// satisfies the rate laws (checked by rate_test_util.hpp, independent of the library). Route 3
+// (single LCP solvers) lands inside the set.
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "cpkit/lcp/solvers.hpp"
+#include "cpkit/rate_problem/analytic.hpp"
+#include "cpkit/rate_problem/rate_lcp.hpp"
+#include "cpkit/rate_problem/rate_problem.hpp"
+#include "rate_problem/rate_test_util.hpp"
+
+using namespace cpkit::rate;
+using cpkit::rate::test::brute_force_types;
+using cpkit::rate::test::check_set_laws;
+using cpkit::rate::test::compare_sets;
+
+namespace {
+
+struct Case {
+  ContactParameters p;
+  ContactState st;
+  LoadRate f;
+};
+
+/// Random SPD A, mu, C_T, wear, state and load direction. `limit`: 0 general, 1 C_T = 0
+/// (Lambda_A), 2 k_a = 0 (Lambda_C), 3 tiny C_T, 4 tiny k_a.
+Case random_case(std::mt19937_64& rng, StateLabel label, int limit, bool softening = false) {
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Case c;
+  c.p.a11 = 0.1 + 3 * U(rng);
+  c.p.a22 = 0.1 + 3 * U(rng);
+  c.p.a12 = (2 * U(rng) - 1) * 0.97 * std::sqrt(c.p.a11 * c.p.a22);
+  c.p.mu = 0.05 + 2 * U(rng);
+  c.p.C_T = U(rng) < 0.2 ? 0.0 : 2 * U(rng);
+  c.p.k_a = U(rng) < 0.2 ? 0.0 : U(rng);
+  c.p.P_s = 0.5 + 1.5 * U(rng);
+  if (limit == 1) c.p.C_T = 0;
+  if (limit == 2) c.p.k_a = 0;
+  if (limit == 3) c.p.C_T = 1e-9 * U(rng);
+  if (limit == 4) c.p.k_a = 1e-9 * U(rng);
+  c.p.criterion = softening ? Criterion::kSoftening : Criterion::kCoulomb;
+  c.st.label = label;
+  c.st.sgn_PT = U(rng) < 0.5 ? 1 : -1;
+  c.st.P_N = 0;
+  if (label == StateLabel::kC || label == StateLabel::kD) {
+    c.st.P_N = 0.1 + 5 * U(rng);
+    if (softening && c.p.k_a > 0) {
+      // stay below the bound (46): k P_N < mu
+      const double bound = 3 * c.p.P_s * c.p.mu / c.p.k_a;
+      c.st.P_N = std::min(c.st.P_N, 0.999 * bound * U(rng) + 1e-3 * bound);
+    }
+  }
+  const double th = 2 * M_PI * U(rng);
+  const double r = std::pow(10.0, 4 * U(rng) - 2);
+  c.f = LoadRate{r * std::cos(th), r * std::sin(th)};
+  return c;
+}
+
+std::vector<SolutionType> types_of(const RateSolutionSet& s) {
+  std::vector<SolutionType> t;
+  for (const auto& x : s.solutions) t.push_back(x.type);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("routes 1 and 2 agree with each other and with brute force on random inputs",
+          "[rate][routes][property]") {
+  const auto label = GENERATE(StateLabel::kA, StateLabel::kB, StateLabel::kC, StateLabel::kD);
+  const int limit = GENERATE(0, 1, 2, 3, 4);
+  const bool softening = GENERATE(false, true);
+  std::mt19937_64 rng(20261122u + 97u * static_cast<unsigned>(label) + 13u * limit + softening);
+  int checked = 0, brute_checked = 0;
+  for (int it = 0; it < 1500; ++it) {
+    const Case c = random_case(rng, label, limit, softening);
+    CAPTURE(it, c.p.a11, c.p.a12, c.p.a22, c.p.mu, c.p.C_T, c.p.k_a, c.p.P_s, c.st.P_N,
+            c.st.sgn_PT, c.f.dF_T, c.f.dF_N);
+    const RateSolutionSet r1 = solve_rate_problem(c.p, c.st, c.f, RateMethod::kAnalytic);
+    const RateSolutionSet r2 = solve_rate_problem(c.p, c.st, c.f, RateMethod::kEnumerate);
+    CAPTURE(r2.message);
+    REQUIRE(r2.complete);
+    const auto sc = cpkit::rate::test::scales(c.p, c.f);
+    INFO(compare_sets(r1, r2, sc));
+    REQUIRE(compare_sets(r1, r2, sc).empty());
+    INFO(check_set_laws(c.p, c.st, c.f, r1));
+    REQUIRE(check_set_laws(c.p, c.st, c.f, r1).empty());
+    // summaries agree with the full sets
+    const RateSummary s1 = summarize_rate_problem(c.p, c.st, c.f, RateMethod::kAnalytic);
+    const RateSummary s2 = summarize_rate_problem(c.p, c.st, c.f, RateMethod::kEnumerate);
+    REQUIRE(s1.count == r1.count());
+    REQUIRE(s2.count == r2.count());
+    REQUIRE(s1.types == r1.type_mask());
+    REQUIRE(s2.types == r2.type_mask());
+    REQUIRE(s2.reliable);
+    ++checked;
+    if (label == StateLabel::kB || label == StateLabel::kD) {
+      double margin = 0;
+      const auto bt = brute_force_types(c.p, c.st, c.f, margin);
+      if (margin > 1e-6 && !r1.infinite) {
+        CHECK(bt == types_of(r1));
+        REQUIRE(r1.count() == static_cast<int>(bt.size()));
+        ++brute_checked;
+      }
+    }
+  }
+  CHECK(checked == 1500);
+  if (label == StateLabel::kB || label == StateLabel::kD) CHECK(brute_checked > 1400);
+}
+
+TEST_CASE("state d LCP built from the rate equations equals [Lambda], [-L_s] (eqn (51))",
+          "[rate][lcp]") {
+  std::mt19937_64 rng(7);
+  for (int it = 0; it < 500; ++it) {
+    const Case c = random_case(rng, StateLabel::kD, it % 3, it % 2 == 1);
+    const StateDLcp l = state_d_lcp(c.p, c.st, c.f);
+    // eqn (51) and L_s typed in again here (mu -> mu - 2 kappa under (35))
+    const double s = c.st.sgn_PT, k = c.p.k_a * c.st.P_N / (3 * c.p.P_s);
+    const double m = c.p.criterion == Criterion::kSoftening ? c.p.mu - 2 * k : c.p.mu;
+    const double det = c.p.a11 * c.p.a22 - c.p.a12 * c.p.a12;
+    const double Lambda = c.p.a11 - m * c.p.a12 * s + k * (c.p.a12 * s - m * c.p.a22) -
+                          m * c.p.C_T * k * det;
+    const double Ls = (s + m * c.p.a12 * c.p.C_T) * c.f.dF_T - m * (1 + c.p.a11 * c.p.C_T) * c.f.dF_N;
+    const double mag = c.p.a11 + c.p.a22 + 1;
+    CHECK(l.M == Approx(Lambda).margin(1e-12 * mag * (1 + c.p.C_T) * (1 + k)));
+    CHECK(l.q == Approx(-Ls).margin(1e-12 * (std::abs(c.f.dF_T) + std::abs(c.f.dF_N)) * mag * (1 + c.p.C_T) * (1 + m)));
+    const RateIndicators ind = rate_indicators(c.p, c.st);
+    CHECK(ind.Lambda == Approx(Lambda).margin(1e-12 * mag * (1 + c.p.C_T) * (1 + k)));
+  }
+}
+
+TEST_CASE("limits C_T -> 0 and k_a -> 0 give the paper's Lambda_A and Lambda_C", "[rate][limits]") {
+  // Lambda_C = a11 - mu a12 sgn P_T (k_a -> 0), Lambda_A = Lambda_C + kappa (a12 s - mu a22)
+  // (C_T -> 0) [Stromberg et al. 1996, Sec. 4.3 d].
+  ContactParameters p;
+  p.a11 = 2;
+  p.a12 = 0.7;
+  p.a22 = 1.5;
+  p.mu = 0.9;
+  p.P_s = 2;
+  ContactState st{StateLabel::kD, 3.0, -1};
+  for (double eps : {1e-2, 1e-4, 1e-8, 0.0}) {
+    p.C_T = 0.5;
+    p.k_a = eps;
+    const double lc = 2 - 0.9 * 0.7 * -1;  // 2.63
+    CHECK(rate_indicators(p, st).Lambda == Approx(lc).margin(10 * eps + 1e-15));
+    p.C_T = eps;
+    p.k_a = 0.4;
+    const double kappa = 0.4 * 3.0 / (3 * 2.0);  // 0.2
+    const double la = lc + kappa * (0.7 * -1 - 0.9 * 1.5);  // 2.63 - 0.41 = 2.22
+    CHECK(rate_indicators(p, st).Lambda == Approx(la).margin(10 * eps + 1e-15));
+  }
+  // the solution sets converge too: compare the C_T = 1e-10 set with the C_T = 0 set
+  std::mt19937_64 rng(99);
+  for (int it = 0; it < 300; ++it) {
+    Case c = random_case(rng, it % 2 ? StateLabel::kB : StateLabel::kD, 1);
+    const RateSolutionSet a = solve_rate_problem(c.p, c.st, c.f, RateMethod::kEnumerate);
+    c.p.C_T = 1e-11;
+    const RateSolutionSet b = solve_rate_problem(c.p, c.st, c.f, RateMethod::kEnumerate);
+    CAPTURE(it);
+    CHECK(compare_sets(a, b, cpkit::rate::test::scales(c.p, c.f), 1e-6).empty());
+  }
+}
+
+TEST_CASE("route 3: every registered single solver lands inside the set", "[rate][route3]") {
+  const auto& reg = cpkit::lcp::solvers();
+  std::vector<std::string> names;
+  for (const char* n : {"lemke", "fb-newton", "ipopt"})
+    if (reg.find(n) != nullptr) names.push_back(n);
+  REQUIRE(!names.empty());  // lemke at least
+  std::mt19937_64 rng(31337);
+  for (const auto& name : names) {
+    CAPTURE(name);
+    const int n = name == "ipopt" ? 20 : 300;
+    int solved = 0;
+    for (int it = 0; it < n; ++it) {
+      const Case c = random_case(rng, it % 2 ? StateLabel::kB : StateLabel::kD, 0);
+      CAPTURE(it);
+      const RateSolutionSet all = solve_rate_problem(c.p, c.st, c.f, RateMethod::kAnalytic);
+      const RateSolutionSet one = solve_rate_single(c.p, c.st, c.f, name);
+      CHECK_FALSE(one.complete);
+      REQUIRE(one.solutions.size() <= 1);
+      if (one.solutions.empty()) {
+        // Lemke may end on a ray when the set is empty or M is not copositive-plus; a solver
+        // may fail: but never claim a solution where there is none.
+        continue;
+      }
+      ++solved;
+      const Rates& r = one.solutions.front().start;
+      const int k = find_piece(all, r, 1e-6);
+      INFO(check_set_laws(c.p, c.st, c.f, one));
+      CHECK(check_set_laws(c.p, c.st, c.f, one, 1e-6).empty());
+      REQUIRE(k >= 0);
+      CHECK(all.solutions[k].type == one.solutions.front().type);
+    }
+    CHECK(solved > n / 2);
+  }
+}
+
+TEST_CASE("route 3: an unregistered solver is a clear InputError", "[rate][route3]") {
+  ContactParameters p;
+  ContactState st{StateLabel::kB, 0, 1};
+  CHECK_THROWS_WITH(solve_rate_single(p, st, LoadRate{1, 1}, "no-such-solver"),
+                    Catch::Contains("not registered"));
+}
