@@ -25,6 +25,8 @@ struct Context {
 void add_lcp_command(CLI::App& app, Context& ctx);
 void add_map_command(CLI::App& app, Context& ctx);  ///< `cpkit map` (issue 7)
 void add_rate_command(CLI::App& app, Context& ctx);
+void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step` (issue 8)
+void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate` (issue 8)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
 
 /// Prints a JSON object to stdout (one line per object, pretty with indent 1).

@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   add_lcp_command(app, ctx);
   add_map_command(app, ctx);
   add_rate_command(app, ctx);
+  add_step_command(app, ctx);
+  add_simulate_command(app, ctx);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -42,18 +42,20 @@ def fail(msg, code=EXIT_BAD_INPUT):
 
 
 def model_title(summary):
+    """The model parameters, without the ones that vary along an axis."""
     m = summary.get("model", {})
-    t = "state %s: a11=%g, a12=%g, a22=%g, C_T=%g" % (m.get("state"), m.get("a11"), m.get("a12"),
-                                                   m.get("a22"), m.get("C_T"))
-    kind = summary.get("kind")
-    if kind == "direction" or summary.get("axis", {}).get("param") != "mu":
-        if kind != "param-param" or "mu" not in (summary["axis"]["param"], summary["axis2"]["param"]):
-            t += ", mu=%g" % m.get("mu")
+    axes = {summary.get(k, {}).get("param") for k in ("axis", "axis2")}
+    if "kappa" in axes or "P_N" in axes or "k_a" in axes or "P_s" in axes:
+        axes |= {"kappa"}
+    if "a12/a11" in axes:
+        axes |= {"a12"}
+    parts = ["%s=%g" % (k, m[k]) for k in ("a11", "a12", "a22", "C_T", "mu")
+             if k not in axes and k in m]
     if m.get("state") in ("c", "d"):
-        t += ", P_N=%g, kappa=%g" % (m.get("P_N"), m.get("kappa"))
+        parts += ["%s=%g" % (k, m[k]) for k in ("P_N", "kappa") if k not in axes]
         if m.get("state") == "d":
-            t += ", sgn P_T=%+d" % m.get("sgnPT")
-    return t
+            parts.append("sgn P_T=%+d" % m.get("sgnPT"))
+    return "state %s: %s" % (m.get("state"), ", ".join(parts))
 
 
 def read_csv(path):

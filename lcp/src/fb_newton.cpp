@@ -16,12 +16,21 @@
 #include "cpkit/core/log.hpp"
 #include "cpkit/core/timer.hpp"
 
+#ifdef CPKIT_HAVE_LAPACK
+// LAPACK's LU factorization (Debian's liblapack3; OpenBLAS when it provides the alternative).
+extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv,
+                        int* info);
+#endif
+
 namespace cpkit::lcp {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kDefaultMaxIterations = 200;
+/// Dense systems of at least this size are factorized by LAPACK's dgetrf when cpkit was built
+/// with LAPACK (blocked, vectorized BLAS); smaller ones by Eigen's PartialPivLU.
+constexpr Eigen::Index kLapackMinSize = 48;
 /// An accepted step with Psi_new > (1 - kWeakDecrease) Psi_old makes little progress;
 /// kWeakLimit of them in a row count as stagnation (watchdog trigger).
 constexpr double kWeakDecrease = 1e-4;
@@ -198,14 +207,35 @@ struct DenseAlgebra {
   bool solve(const Vec& Da, const Vec& Db, const Vec& rhs, Vec& d) {
     H.noalias() = Db.asDiagonal() * *J;
     H.diagonal() += Da;
+    const Eigen::Index n = H.rows();
+#ifdef CPKIT_HAVE_LAPACK
+    if (n >= kLapackMinSize) {
+      // In place: H becomes L\U with row interchanges ipiv (1-based).
+      const int nn = static_cast<int>(n);
+      int info = 0;
+      if (ipiv.size() != static_cast<size_t>(n)) ipiv.resize(static_cast<size_t>(n));
+      dgetrf_(&nn, &nn, H.data(), &nn, ipiv.data(), &info);
+      if (info < 0 || !pivots_ok(H.diagonal())) return false;
+      d = rhs;
+      for (Eigen::Index i = 0; i < n; ++i) std::swap(d[i], d[ipiv[static_cast<size_t>(i)] - 1]);
+      H.triangularView<Eigen::UnitLower>().solveInPlace(d);
+      H.triangularView<Eigen::Upper>().solveInPlace(d);
+      return d.allFinite();
+    }
+#endif
     lu.compute(H);
-    const auto diag = lu.matrixLU().diagonal().cwiseAbs();
-    const double umax = diag.maxCoeff();
-    if (!(umax > 0) || !(diag.minCoeff() > umax * kEps * static_cast<double>(H.rows())))
-      return false;
+    if (!pivots_ok(lu.matrixLU().diagonal())) return false;
     d.noalias() = lu.solve(rhs);
     return d.allFinite();
   }
+  /// U's diagonal: every |u_ii| > n eps max |u_jj| (else H is treated as singular).
+  template <class Diag>
+  static bool pivots_ok(const Diag& u) {
+    const double umax = u.cwiseAbs().maxCoeff();
+    return umax > 0 && std::isfinite(umax) &&
+           u.cwiseAbs().minCoeff() > umax * kEps * static_cast<double>(u.size());
+  }
+  std::vector<int> ipiv;
 };
 
 /// Sparse: J from sparse M or a sparse Jacobian callback; H shares J's pattern plus the
@@ -425,8 +455,10 @@ class FbDriver {
     best_res_x_ = x_;
     double best_res = res;
     if (o_.common.record_trace) r.trace.push_back({0, res, 0.0, "start", -1, -1});
-    log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
-        "fb-newton: start, scaled natural residual " + fmt(res));
+    const bool debug_log = o_.common.log != nullptr && o_.common.verbosity >= 3;
+    if (debug_log)
+      log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
+          "fb-newton: start, scaled natural residual " + fmt(res));
 
     Status claim = Status::kIterationLimit;
     std::string why;
@@ -461,9 +493,10 @@ class FbDriver {
       }
       ++it;
       if (o_.common.record_trace) r.trace.push_back({it, res, t, kind, -1, -1});
-      log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
-          "fb-newton: it " + std::to_string(it) + " residual " + fmt(res) + " step " + fmt(t) +
-              " " + kind);
+      if (debug_log)
+        log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
+            "fb-newton: it " + std::to_string(it) + " residual " + fmt(res) + " step " + fmt(t) +
+                " " + kind);
     };
     for (;;) {
       if (res <= o_.common.tol) {

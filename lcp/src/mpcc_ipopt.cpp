@@ -176,6 +176,7 @@ class Driver {
         const Step s = solve("scholtes", t, std::vector<PairMode>(p_.p, PairMode::kRelaxed), t,
                              0.0, x, std::min(1e-8, 1e-2 * t));
         if (s.usable && s.converged) x = s.x;  // warm start only from a converged NLP
+        if (s.usable && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
       }
     } else {
@@ -184,6 +185,7 @@ class Driver {
         const Step s = solve("penalty", rho, std::vector<PairMode>(p_.p, PairMode::kPenalty), 0.0,
                              rho, x);
         if (s.usable && s.converged) x = s.x;  // an unbounded penalty NLP (small rho) diverges
+        if (s.usable && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
       }
     }
@@ -197,6 +199,13 @@ class Driver {
     Vec x;
     bool usable = false, accepted = false, converged = false;
   };
+
+  bool caller_stops(const Vec& x) {
+    if (!o_.early_stop || !o_.early_stop(x)) return false;
+    const Measure m = measure(p_, x);
+    early_ = Candidate{x, m, result_.subproblems.back().nlp_converged, false};
+    return true;
+  }
 
   Vec start() const {
     Vec x = p_.x0.size() == p_.n ? p_.x0 : Vec::Zero(p_.n);
@@ -292,6 +301,18 @@ class Driver {
   MpccResult finish() {
     MpccResult& r = result_;
     r.seconds = timer_.seconds();
+    if (early_) {
+      r.stopped_early = true;
+      r.x = early_->x;
+      r.objective = early_->m.f;
+      r.complementarity = early_->m.complementarity;
+      r.infeasibility = early_->m.infeasibility;
+      r.status = accepted(early_->m) && early_->converged ? Status::kSolved : Status::kStalled;
+      r.message = std::to_string(r.subproblems.size()) + " NLP(s) with " +
+                  std::string(to_string(o_.backend)) + " (" +
+                  std::string(to_string(o_.reformulation)) + "); stopped early by the caller's test";
+      return r;
+    }
     const Candidate* c = best_ ? &*best_ : least_violated_ ? &*least_violated_ : nullptr;
     std::ostringstream msg;
     msg << r.subproblems.size() << " NLP(s) with " << to_string(o_.backend) << " ("
@@ -327,7 +348,7 @@ class Driver {
   const MpccOptions& o_;
   Stopwatch timer_;
   MpccResult result_;
-  std::optional<Candidate> best_, least_violated_;
+  std::optional<Candidate> best_, least_violated_, early_;
   double least_violation_ = 0;
   int eval_failures_ = 0;
   bool time_out_ = false;

@@ -143,6 +143,73 @@ Rates plane_rates(const ContactParameters& p, const ContactState& st, const Load
   return state_d_rates(p, st, f, st.sgn_PT * x.v);
 }
 
+/// Fast complete enumeration of the state-b LCP for the summary (count and types), by
+/// complementary supports, using two facts about this M (docs/contact_model.md, Sec. 5):
+///  (i) a solution with l+ > 0 and l- > 0 has w2 = w3 = 0, i.e. dP_T = dP_N = 0 (mu > 0); its
+///      physical rates depend on l+ - l- only, so z' = (0, max(xi,0), max(-xi,0)) is a solution
+///      with the same rates: supports holding both 2 and 3 add no physical solution;
+/// (ii) the other principal blocks are M11 = 1 + a11 C_T > 0, M22 = M33 = det A > 0 and the
+///      2x2 blocks {1,2}, {1,3} with determinants D0 D_+ and D0 D_-.
+/// So when D_+ and D_- are clearly nonzero, every solution is the unique basic solution of one
+/// of the supports {}, {1}, {2}, {3}, {1,2}, {1,3}, and the set is finite. Returns false (the
+/// caller then runs the general engine) when a 2x2 block is near-singular.
+bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
+  const StateBLcp l = state_b_lcp(p, f);
+  const Eigen::Matrix3d& M = l.M;
+  const Eigen::Vector3d& q = l.q;
+  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
+  const double s12 = std::abs(M(0, 0) * M(1, 1)) + std::abs(M(0, 1) * M(1, 0));
+  const double s13 = std::abs(M(0, 0) * M(2, 2)) + std::abs(M(0, 2) * M(2, 0));
+  constexpr double kSingular = 1e-6;
+  if (std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13) return false;
+  constexpr double kFeas = 1e-10;  // relative tolerance of the sign tests
+  const double sF = load_scale(f);
+  double U = sF, V = sF * (p.C_T + 1.0 / p.a11);
+  detail::P2 pts[6];
+  int np = 0;
+  auto try_support = [&](double z0, double z1, double z2) {
+    const double z[3] = {z0, z1, z2};
+    double zs = 0;
+    for (double v : z) zs = std::max(zs, std::abs(v));
+    for (double v : z)
+      if (v < -kFeas * zs) return;
+    for (int i = 0; i < 3; ++i) {
+      const double w = q(i) + M(i, 0) * z0 + M(i, 1) * z1 + M(i, 2) * z2;
+      const double ws = std::abs(q(i)) + std::abs(M(i, 0) * z0) + std::abs(M(i, 1) * z1) +
+                        std::abs(M(i, 2) * z2);
+      if (w < -kFeas * ws) return;
+    }
+    pts[np++] = detail::P2{z0, z1 - z2};
+  };
+  try_support(0, 0, 0);
+  try_support(-q(0) / M(0, 0), 0, 0);
+  try_support(0, -q(1) / M(1, 1), 0);
+  try_support(0, 0, -q(2) / M(2, 2));
+  // {1,2}: [M00 M01; M10 M11] z = -q (Cramer)
+  try_support((-q(0) * M(1, 1) + q(1) * M(0, 1)) / d12, (-q(1) * M(0, 0) + q(0) * M(1, 0)) / d12, 0);
+  try_support((-q(0) * M(2, 2) + q(2) * M(0, 2)) / d13, 0, (-q(2) * M(0, 0) + q(0) * M(2, 0)) / d13);
+  for (int k = 0; k < np; ++k) {
+    U = std::max(U, std::abs(pts[k].u));
+    V = std::max(V, std::abs(pts[k].v));
+  }
+  const double c1 = 1.0 + p.a11 * p.C_T;
+  const TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
+                   c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V};
+  sum.count = 0;
+  sum.types = 0;
+  for (int k = 0; k < np; ++k) {
+    bool dup = false;
+    for (int j = 0; j < k && !dup; ++j)
+      dup = std::abs(pts[k].u - pts[j].u) <= kGeoTol * U && std::abs(pts[k].v - pts[j].v) <= kGeoTol * V;
+    if (dup) continue;
+    ++sum.count;
+    sum.types |= 1u << static_cast<unsigned>(type(pts[k]));
+  }
+  sum.reliable = true;
+  return true;
+}
+
 }  // namespace
 
 RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactState& st,
@@ -194,6 +261,7 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
                                                                        : SolutionType::kStick);
     return sum;
   }
+  if (st.label == StateLabel::kB && summarize_b_fast(p, f, sum)) return sum;
   PlaneResult res;
   try {
     if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);

@@ -121,6 +121,9 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
         res.outcome = SimulationResult::Outcome::kNoSolution;
         m << "the step has no solution (complete active-set enumeration: no separation, stick "
              "or slip solution satisfies the step NCP). ";
+        if (a.criterion == Criterion::kSoftening && sp.params.k() > 0)
+          m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << a.mu / sp.params.k()
+            << " (condition (46)). ";
       }
       m << "Last state: " << describe(cur);
       res.message = m.str();

@@ -159,26 +159,35 @@ TEST_CASE("ALoadPathWithoutSolutionStopsWithAReport", "[sim]") {
   CHECK(r.message.find("P_N = 5") != std::string::npos);
 }
 
-TEST_CASE("BranchRuleStopHaltsAtTheFirstStepWithSeveralSolutions", "[sim]") {
-  // mu a12 > a11 with a load that reaches the sliding limit: several step solutions appear.
+TEST_CASE("BranchPointsAreRecordedAndRuleStopHaltsThere", "[sim]") {
+  // mu a12 > a11 (Lambda = a11 - mu a12 < 0 at the sliding limit, model.md eqn (51)). Load
+  // (0, 1), then F_T up to the sliding limit P_T = mu P_N = 2 and back. Stick steps below the
+  // limit have three solutions. Hand check of step 2 (from P = (0, 1), dF = (1.5, 0), C_T = 0):
+  // stick P_T1 = 1.5 < 2; slip+: g1 = -x - 0.9 xi = 0, P_T1 = 1.5 - xi = 2 P_N1 = 2 (1 - 0.9 xi)
+  // gives xi = 0.625, P_N1 = 0.4375 > 0; separation: w = A^-1 F has w_N = (1 - 1.35)/0.19 < 0.
+  // At F_T = 2.5 the only solution is the jump to separation.
   SimulationOptions o;
   o.params.a11 = 1.0;
   o.params.a12 = 0.9;
   o.params.a22 = 1.0;
   o.params.mu = 2.0;
   LoadHistory h;
-  h.points = {{1, 0, 1}, {2, 1.5, 1}, {3, 2.5, 1}, {4, 3.0, 1}};
+  h.points = {{1, 0, 1}, {2, 1.5, 1}, {3, 2.0, 1}, {4, 1.9, 1}, {5, 2.5, 1}};
   const auto closest = simulate(h, o);
+  REQUIRE(closest.outcome == SimulationResult::Outcome::kCompleted);
+  CHECK(closest.branch_steps == 3);
+  REQUIRE_FALSE(closest.branch_points.empty());
+  CHECK(closest.branch_points.front().step == 2);
+  CHECK(closest.branch_points.front().chosen == SolutionType::kStick);
+  // The closest rule keeps sticking: P_T = F_T (C_T = 0, a12 dF_N = 0).
+  CHECK(closest.series[4].P_T == Approx(1.9));
+  CHECK(closest.series[5].type == SolutionType::kSeparation);
+  CHECK(closest.series[5].P_N == 0);
   o.branch_rule = BranchRule::kStop;
   const auto stop = simulate(h, o);
-  if (closest.branch_steps > 0) {
-    CHECK(stop.outcome == SimulationResult::Outcome::kBranchStop);
-    CHECK(stop.steps == closest.branch_points.front().step - 1);
-    CHECK(closest.branch_points.front().count > 1);
-  } else {
-    CHECK(stop.outcome == SimulationResult::Outcome::kCompleted);
-  }
-  CHECK(closest.outcome == SimulationResult::Outcome::kCompleted);
+  CHECK(stop.outcome == SimulationResult::Outcome::kBranchStop);
+  CHECK(stop.steps == 1);
+  CHECK(stop.message.find("3 solutions") != std::string::npos);
 }
 
 TEST_CASE("HeatFollowsTheBackwardEulerEnergyBalance", "[sim][heat]") {

@@ -257,14 +257,14 @@ struct SmallEnumerator {
   }
 
   /// Judges the direction d (d_i = 0 off S, (M d)_i = 0 on S by construction) of the
-  /// recession cone of piece S, up to sign; stores it when it is a new ray.
+  /// recession cone of piece S; stores it (scaled to ||d||_inf = 1) when it is a new ray.
   void add_ray(unsigned S, double (&d)[N]) {
     double big = 0;
     int arg = 0;
     for (int j = 0; j < N; ++j)
       if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
-    if (!(big > 0)) return;
-    const double f = (d[arg] > 0 ? 1.0 : -1.0) / big;
+    if (!(big > 0) || d[arg] < 0) return;  // a ray is >= 0: its largest entry is positive
+    const double f = 1.0 / big;
     int verdict = 0;
     unsigned zd = ~S & kAll, zmd = S;
     for (int j = 0; j < N; ++j) {
@@ -367,6 +367,27 @@ struct SmallEnumerator {
         }
       }
     }
+    if (m == 1) {  // a line: vertices where one constraint is active, rays +-nb
+      for (int i = 0; i < N; ++i) {
+        double sa = 0;
+        if (S & (1u << i)) {
+          for (int j = 0; j < N; ++j) sa = small_max(sa, small_abs(nb[0][j]));
+        } else {
+          for (int j = 0; j < N; ++j) sa += small_abs(M(i, j) * nb[0][j]);
+        }
+        if (!(small_abs(A[i][0]) > tol * sa)) continue;  // parallel to the line
+        const double t = -b[i] / A[i][0];
+        double z[N];
+        for (int j = 0; j < N; ++j) z[j] = z0[j] + t * nb[0][j];
+        add_point(S, z);
+      }
+      double d[N];
+      for (int j = 0; j < N; ++j) d[j] = nb[0][j];
+      add_ray(S, d);
+      for (int j = 0; j < N; ++j) d[j] = -nb[0][j];
+      add_ray(S, d);
+      return;
+    }
     // vertices: m active constraints
     for (unsigned act = 0; act <= kAll; ++act) {
       if (small_popcount(act) != m) continue;
@@ -429,12 +450,6 @@ struct SmallEnumerator {
         double d[N] = {};
         for (int f = 0; f < m; ++f)
           for (int j = 0; j < N; ++j) d[j] += sign * x[f] * nb[f][j];
-        // the normalisation in add_ray flips to the largest entry positive; test that sign only
-        double big = 0;
-        int arg = 0;
-        for (int j = 0; j < N; ++j)
-          if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
-        if (!(big > 0) || d[arg] < 0) continue;
         add_ray(S, d);
       }
     }

@@ -117,6 +117,11 @@ struct MpccOptions {
   bool exact_hessian = true;  ///< use MpccProblem::hessian when present (else limited memory)
   bool polish = true;         ///< run the piece-NLP polish after the relaxation sequence
   int max_subproblems = 60;   ///< cap on NLP solves (relaxation + polish)
+  /// Optional caller's test, called with the final point of every relaxation/penalty NLP; when
+  /// it returns true the sequence ends there (no piece polish), x is that point and
+  /// MpccResult::stopped_early is set. Used by the complementarity solvers, whose own
+  /// verification (active-set Newton + finalize) usually succeeds long before t reaches t_min.
+  std::function<bool(const Vec& x)> early_stop;
   std::string validate() const;
 };
 
@@ -148,6 +153,7 @@ struct MpccResult {
   int iterations = 0;          ///< NLP iterations summed over subproblems
   double seconds = 0;
   std::vector<MpccSubproblem> subproblems;  ///< every NLP solved, in order
+  bool stopped_early = false;  ///< MpccOptions::early_stop ended the sequence
   std::string message;
 };
 

@@ -19,6 +19,8 @@
 /// map, Jacobian of F on it; for an LCP one linear solve) when that lowers the natural residual,
 /// and the answer goes through cpkit::finalize() on the ORIGINAL problem: an MPCC point that is
 /// not complementary to tolerance is never "solved". Never kInfeasible (no certificate).
+#include <cstdint>
+
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/registry.hpp"
@@ -38,11 +40,18 @@ struct ComplementarityMpccOptions {
   }();
   Vec reference;             ///< empty: no selection objective; else size n
   bool newton_polish = true; ///< the active-set Newton polish described above
+  /// When the answer does not verify, restart the whole MPCC solve up to this many times from
+  /// pseudo-random points (deterministic for a given seed): x_i uniform in [l_i, u_i] for a
+  /// finite box, in [l_i, l_i + 1 + |x0_i|] (or [u_i - 1 - |x0_i|, u_i]) for one finite bound,
+  /// in [-1 - |x0_i|, 1 + |x0_i|] for a free variable. 0: no restart.
+  int restarts = 4;
+  std::uint64_t seed = 1;    ///< seed of the restart points
   std::string validate(Eigen::Index n) const;
 };
 
 /// Each throws InputError for invalid problems or options. `details` (optional) receives the
-/// MPCC record (subproblems and how each ended). result.solver is "ipopt" or "nlopt" (the
+/// MPCC record of the attempt returned (subproblems and how each ended; the message counts
+/// restarts). result.solver is "ipopt" or "nlopt" (the
 /// backend); result.iterations sums NLP iterations; with common.record_trace every NLP is one
 /// trace entry (kind "scholtes t=...", "penalty rho=...", residual = its complementarity).
 SolveResult solve_lcp_mpcc(const LcpProblem& problem, const ComplementarityMpccOptions& options,

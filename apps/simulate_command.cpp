@@ -1,0 +1,414 @@
+// `cpkit simulate`: quasi-static fretting simulation with friction, wear and heat
+// (docs/simulation.md; library: cpkit/rate_problem/simulation.hpp).
+//
+//   cpkit simulate --config FILE.json [options overriding the file]
+//   cpkit simulate --a11 X --a12 X --a22 X --mu X [--C_T X --k_a X --P_s X --criterion 38|35]
+//                  [--load fretting|ramp|csv] [--F_N X --amplitude X --cycles N
+//                  --steps-per-cycle N --period X --ramp-steps N] [--load-csv FILE]
+//                  [--heat --heat-capacity X --T-ref X --T-initial X --T-body T1 T2
+//                  --conductance C1 C2] [--branch-rule closest|stop]
+//                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
+//
+// Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, or a branch point
+// with --branch-rule stop; the reason on stdout/in the summary), 2 bad input.
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/simulation.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+struct SimArgs {
+  std::string config;
+  std::map<std::string, double> num;  // numeric options given on the command line
+  std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot;
+  std::vector<double> T_body, conductance;
+  bool heat = false, json = false;
+  int every = -1;
+};
+
+/// The settings, from the config file then the command line.
+struct Settings {
+  rate::SimulationOptions opt;
+  std::string load_type = "fretting";
+  rate::FrettingCycle fretting;
+  rate::LoadRamp ramp;
+  std::string load_csv;
+  double csv_period = 0;
+  std::string csv, summary, plot;
+  int every = 1;
+  bool have[4] = {false, false, false, false};  // a11, a12, a22, mu
+};
+
+double get_num(const nlohmann::json& j, const std::string& key, const std::string& where) {
+  if (!j.is_number()) throw InputError(where + "." + key + " must be a number");
+  return j.get<double>();
+}
+
+int get_int(const nlohmann::json& j, const std::string& key, const std::string& where) {
+  if (!j.is_number_integer()) throw InputError(where + "." + key + " must be an integer");
+  return j.get<int>();
+}
+
+std::string get_str(const nlohmann::json& j, const std::string& key, const std::string& where) {
+  if (!j.is_string()) throw InputError(where + "." + key + " must be a string");
+  return j.get<std::string>();
+}
+
+void set_criterion(Settings& s, const std::string& c) {
+  const auto crit = rate::criterion_from_string(c);
+  if (!crit) throw InputError("criterion must be 38 or 35, got '" + c + "'");
+  s.opt.params.criterion = *crit;
+}
+
+void set_wear_law(Settings& s, const std::string& w) {
+  const auto law = rate::wear_law_from_string(w);
+  if (!law) throw InputError("wear law must be archard or mroz, got '" + w + "'");
+  s.opt.wear.law = *law;
+}
+
+void set_branch_rule(Settings& s, const std::string& r) {
+  const auto rule = rate::branch_rule_from_string(r);
+  if (!rule) throw InputError("branch rule must be closest or stop, got '" + r + "'");
+  s.opt.branch_rule = *rule;
+}
+
+void read_config(const std::string& path, Settings& s) {
+  std::ifstream f(path);
+  if (!f) throw InputError("cannot open config '" + path + "'");
+  nlohmann::json j;
+  try {
+    f >> j;
+  } catch (const std::exception& e) {
+    throw InputError("config '" + path + "' is not valid JSON: " + e.what());
+  }
+  if (!j.is_object()) throw InputError("config '" + path + "': the top level must be an object");
+  const std::string dir = path.find('/') == std::string::npos
+                              ? std::string(".")
+                              : path.substr(0, path.find_last_of('/'));
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string& k = it.key();
+    const nlohmann::json& v = it.value();
+    if (k == "parameters") {
+      if (!v.is_object()) throw InputError("parameters must be an object");
+      for (auto p = v.begin(); p != v.end(); ++p) {
+        const std::string& pk = p.key();
+        auto& P = s.opt.params;
+        if (pk == "a11") { P.a11 = get_num(*p, pk, k); s.have[0] = true; }
+        else if (pk == "a12") { P.a12 = get_num(*p, pk, k); s.have[1] = true; }
+        else if (pk == "a22") { P.a22 = get_num(*p, pk, k); s.have[2] = true; }
+        else if (pk == "mu") { P.mu = get_num(*p, pk, k); s.have[3] = true; }
+        else if (pk == "C_T") P.C_T = get_num(*p, pk, k);
+        else if (pk == "k_a") P.k_a = get_num(*p, pk, k);
+        else if (pk == "P_s") P.P_s = get_num(*p, pk, k);
+        else if (pk == "criterion") set_criterion(s, p->is_number() ? std::to_string(p->get<int>()) : get_str(*p, pk, k));
+        else throw InputError("unknown key parameters." + pk);
+      }
+    } else if (k == "wear") {
+      if (!v.is_object()) throw InputError("wear must be an object");
+      for (auto p = v.begin(); p != v.end(); ++p) {
+        if (p.key() == "law") set_wear_law(s, get_str(*p, p.key(), k));
+        else if (p.key() == "k_M") s.opt.wear.k_M = get_num(*p, p.key(), k);
+        else throw InputError("unknown key wear." + p.key());
+      }
+    } else if (k == "load") {
+      if (!v.is_object()) throw InputError("load must be an object");
+      for (auto p = v.begin(); p != v.end(); ++p) {
+        const std::string& pk = p.key();
+        if (pk == "type") s.load_type = get_str(*p, pk, k);
+        else if (pk == "F_N") s.fretting.F_N = get_num(*p, pk, k);
+        else if (pk == "amplitude") s.fretting.amplitude = get_num(*p, pk, k);
+        else if (pk == "period") { s.fretting.period = get_num(*p, pk, k); s.csv_period = s.fretting.period; }
+        else if (pk == "cycles") s.fretting.cycles = get_int(*p, pk, k);
+        else if (pk == "steps_per_cycle") s.fretting.steps_per_cycle = get_int(*p, pk, k);
+        else if (pk == "ramp_steps") s.fretting.ramp_steps = get_int(*p, pk, k);
+        else if (pk == "F_T0") s.ramp.F_T0 = get_num(*p, pk, k);
+        else if (pk == "F_N0") s.ramp.F_N0 = get_num(*p, pk, k);
+        else if (pk == "F_T1") s.ramp.F_T1 = get_num(*p, pk, k);
+        else if (pk == "F_N1") s.ramp.F_N1 = get_num(*p, pk, k);
+        else if (pk == "duration") s.ramp.duration = get_num(*p, pk, k);
+        else if (pk == "steps") s.ramp.steps = get_int(*p, pk, k);
+        else if (pk == "file") {
+          const std::string file = get_str(*p, pk, k);
+          s.load_csv = (!file.empty() && file[0] == '/') ? file : dir + "/" + file;
+        } else throw InputError("unknown key load." + pk);
+      }
+    } else if (k == "heat") {
+      if (!v.is_object()) throw InputError("heat must be an object");
+      auto& H = s.opt.heat;
+      for (auto p = v.begin(); p != v.end(); ++p) {
+        const std::string& pk = p.key();
+        if (pk == "enabled") {
+          if (!p->is_boolean()) throw InputError("heat.enabled must be true or false");
+          H.enabled = p->get<bool>();
+        } else if (pk == "heat_capacity") H.heat_capacity = get_num(*p, pk, k);
+        else if (pk == "T_ref") H.T_ref = get_num(*p, pk, k);
+        else if (pk == "T_initial") H.T_initial = get_num(*p, pk, k);
+        else if (pk == "T_body" || pk == "conductance") {
+          if (!p->is_array() || p->size() != 2 || !(*p)[0].is_number() || !(*p)[1].is_number())
+            throw InputError("heat." + pk + " must be an array of two numbers");
+          double* dst = pk == "T_body" ? H.T_body : H.conductance;
+          dst[0] = (*p)[0].get<double>();
+          dst[1] = (*p)[1].get<double>();
+        } else throw InputError("unknown key heat." + pk);
+      }
+    } else if (k == "branch_rule") {
+      set_branch_rule(s, get_str(v, k, "config"));
+    } else if (k == "output") {
+      if (!v.is_object()) throw InputError("output must be an object");
+      for (auto p = v.begin(); p != v.end(); ++p) {
+        const std::string& pk = p.key();
+        if (pk == "csv") s.csv = get_str(*p, pk, k);
+        else if (pk == "summary") s.summary = get_str(*p, pk, k);
+        else if (pk == "plot") s.plot = get_str(*p, pk, k);
+        else if (pk == "every") s.every = get_int(*p, pk, k);
+        else throw InputError("unknown key output." + pk);
+      }
+    } else if (k == "name" || k == "note") {
+      // free text
+    } else {
+      throw InputError("unknown config key '" + k + "'");
+    }
+  }
+}
+
+void apply_args(const SimArgs& a, Settings& s) {
+  auto& P = s.opt.params;
+  auto num = [&](const char* key, double& dst) {
+    const auto it = a.num.find(key);
+    if (it != a.num.end()) {
+      dst = it->second;
+      return true;
+    }
+    return false;
+  };
+  if (num("a11", P.a11)) s.have[0] = true;
+  if (num("a12", P.a12)) s.have[1] = true;
+  if (num("a22", P.a22)) s.have[2] = true;
+  if (num("mu", P.mu)) s.have[3] = true;
+  num("C_T", P.C_T);
+  num("k_a", P.k_a);
+  num("P_s", P.P_s);
+  num("k_M", s.opt.wear.k_M);
+  num("F_N", s.fretting.F_N);
+  num("amplitude", s.fretting.amplitude);
+  if (num("period", s.fretting.period)) s.csv_period = s.fretting.period;
+  double d;
+  if (num("cycles", d)) s.fretting.cycles = static_cast<int>(d);
+  if (num("steps-per-cycle", d)) s.fretting.steps_per_cycle = static_cast<int>(d);
+  if (num("ramp-steps", d)) s.fretting.ramp_steps = static_cast<int>(d);
+  num("F_T1", s.ramp.F_T1);
+  num("F_N1", s.ramp.F_N1);
+  num("duration", s.ramp.duration);
+  if (num("steps", d)) s.ramp.steps = static_cast<int>(d);
+  num("heat-capacity", s.opt.heat.heat_capacity);
+  num("T-ref", s.opt.heat.T_ref);
+  num("T-initial", s.opt.heat.T_initial);
+  if (!a.T_body.empty()) {
+    s.opt.heat.T_body[0] = a.T_body[0];
+    s.opt.heat.T_body[1] = a.T_body[1];
+  }
+  if (!a.conductance.empty()) {
+    s.opt.heat.conductance[0] = a.conductance[0];
+    s.opt.heat.conductance[1] = a.conductance[1];
+  }
+  if (a.heat) s.opt.heat.enabled = true;
+  if (!a.criterion.empty()) set_criterion(s, a.criterion);
+  if (!a.wear_law.empty()) set_wear_law(s, a.wear_law);
+  if (!a.branch_rule.empty()) set_branch_rule(s, a.branch_rule);
+  if (!a.load.empty()) s.load_type = a.load;
+  if (!a.load_csv.empty()) {
+    s.load_csv = a.load_csv;
+    if (a.load.empty()) s.load_type = "csv";
+  }
+  if (!a.csv.empty()) s.csv = a.csv;
+  if (!a.summary.empty()) s.summary = a.summary;
+  if (!a.plot.empty()) s.plot = a.plot;
+  if (a.every >= 0) s.every = a.every;
+}
+
+rate::LoadHistory make_history(const Settings& s) {
+  if (s.load_type == "fretting") return rate::fretting_history(s.fretting);
+  if (s.load_type == "ramp") return rate::ramp_history(s.ramp);
+  if (s.load_type == "csv") {
+    if (s.load_csv.empty()) throw InputError("load type csv needs a file (--load-csv or load.file)");
+    rate::LoadHistory h = rate::read_load_csv(s.load_csv);
+    h.period = s.csv_period;
+    h.cycle_start = 0;
+    return h;
+  }
+  throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
+}
+
+void write_csv(const std::string& path, const rate::SimulationResult& r) {
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write '" + path + "'");
+  f.precision(12);
+  f << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
+       "dissipation_total,work_total,stored,temperature\n";
+  for (const auto& s : r.series) {
+    f << s.step << ',' << s.t << ',' << s.F_T << ',' << s.F_N << ',' << s.P_T << ',' << s.P_N
+      << ',' << s.w_T << ',' << s.w_N << ',' << s.w_w << ',' << s.w_Ti << ',' << s.g << ','
+      << rate::to_string(s.state) << ',' << rate::to_string(s.type) << ',' << s.count << ','
+      << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
+      << ',' << s.temperature << '\n';
+  }
+}
+
+nlohmann::json sample_json(const rate::SimulationSample& s) {
+  return {{"step", s.step}, {"t", s.t}, {"F_T", s.F_T}, {"F_N", s.F_N}, {"P_T", s.P_T},
+          {"P_N", s.P_N}, {"w_T", s.w_T}, {"w_N", s.w_N}, {"w_w", s.w_w}, {"w_Ti", s.w_Ti},
+          {"g", s.g}, {"state", std::string(rate::to_string(s.state))},
+          {"temperature", s.temperature}};
+}
+
+nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) {
+  nlohmann::json j;
+  j["outcome"] = std::string(rate::to_string(r.outcome));
+  j["message"] = r.message;
+  j["steps"] = r.steps;
+  j["final"] = sample_json(r.final_state);
+  j["final_wear_depth"] = r.wear_depth;
+  j["wear_integral"] = r.wear_integral;
+  j["total_slip"] = r.total_slip;
+  j["slip_per_cycle"] = r.slip_per_cycle;
+  j["wear_per_cycle"] = r.wear_per_cycle;
+  j["energy"] = {{"external_work", r.external_work}, {"stored", r.stored_energy},
+                 {"dissipation", r.dissipation}, {"work_abs", r.work_abs},
+                 {"balance_error_rel", r.energy_error},
+                 {"min_step_dissipation_rel", r.min_step_dissipation},
+                 {"thermal_dissipation", r.thermal_dissipation}};
+  nlohmann::json bps = nlohmann::json::array();
+  for (const auto& b : r.branch_points) {
+    std::vector<std::string> types;
+    for (int t = 0; t < 5; ++t)
+      if (b.types & (1u << t))
+        types.emplace_back(rate::to_string(static_cast<rate::SolutionType>(t)));
+    bps.push_back({{"step", b.step}, {"t", b.t}, {"count", b.count}, {"types", types},
+                   {"chosen", std::string(rate::to_string(b.chosen))}});
+  }
+  j["branch_points"] = {{"count", r.branch_steps}, {"rule", std::string(rate::to_string(s.opt.branch_rule))},
+                        {"recorded", bps}};
+  j["max_step_residual"] = r.max_residual;
+  if (s.opt.heat.enabled) j["temperature"] = {{"final", r.final_state.temperature}, {"max", r.max_temperature}};
+  j["wear_law"] = std::string(rate::to_string(s.opt.wear.law));
+  j["criterion"] = std::string(rate::to_string(s.opt.params.criterion));
+  return j;
+}
+
+std::string plot_script() {
+  for (const char* dir : {CPKIT_INSTALLED_PLOT_SCRIPT_DIR, CPKIT_PLOT_SCRIPT_DIR}) {
+    const std::string p = std::string(dir) + "/cpkit_plot_simulation.py";
+    if (std::ifstream(p)) return p;
+  }
+  return {};
+}
+
+int run(const SimArgs& a) {
+  Settings s;
+  if (!a.config.empty()) read_config(a.config, s);
+  apply_args(a, s);
+  const char* names[] = {"a11", "a12", "a22", "mu"};
+  for (int i = 0; i < 4; ++i)
+    if (!s.have[i])
+      throw InputError(std::string(names[i]) + " is required (--" + names[i] +
+                       " or parameters." + names[i] + " in --config)");
+  if (s.every < 0) throw InputError("every must be >= 0");
+  s.opt.record_every = s.every;
+  if ((!s.csv.empty() || !s.plot.empty()) && s.every == 0)
+    throw InputError("a CSV or plot needs every >= 1");
+  const rate::LoadHistory h = make_history(s);
+  const rate::SimulationResult r = rate::simulate(h, s.opt);
+  std::string csv = s.csv;
+  if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
+  if (!csv.empty()) write_csv(csv, r);
+  const nlohmann::json sum = summary_json(r, s);
+  std::string summary = s.summary;
+  if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
+  if (!summary.empty()) {
+    std::ofstream f(summary);
+    if (!f) throw InputError("cannot write '" + summary + "'");
+    f << sum.dump(1) << '\n';
+  }
+  if (a.json) {
+    print_json(sum);
+  } else {
+    std::cout << "simulate: " << rate::to_string(r.outcome) << " after " << r.steps
+              << " steps\n  " << r.message << "\n"
+              << "  final wear depth " << r.wear_depth << " (Archard integral "
+              << r.wear_integral << "), total slip " << r.total_slip << "\n"
+              << "  energy: work " << r.external_work << " = stored " << r.stored_energy
+              << " + dissipation " << r.dissipation << " (relative error " << r.energy_error
+              << ")\n  branch points: " << r.branch_steps << "\n";
+    if (s.opt.heat.enabled)
+      std::cout << "  temperature: final " << r.final_state.temperature << ", max "
+                << r.max_temperature << "\n";
+  }
+  if (!s.plot.empty()) {
+    const std::string script = plot_script();
+    if (script.empty()) {
+      std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found; no figures\n";
+    } else {
+      const std::string cmd = "/usr/bin/python3 '" + script + "' --csv '" + csv + "' --summary '" +
+                              summary + "' --out '" + s.plot + "'";
+      if (std::system(cmd.c_str()) != 0)
+        std::cerr << "cpkit simulate: the plot script failed (" << cmd << ")\n";
+    }
+  }
+  return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app, Context& ctx) {
+  auto a = std::make_shared<SimArgs>();
+  auto* cmd = app.add_subcommand(
+      "simulate", "Quasi-static fretting simulation with friction, wear and heat "
+                  "(docs/simulation.md)");
+  cmd->add_option("--config", a->config, "JSON settings (docs/examples/fretting.json)");
+  struct NumOpt {
+    const char* name;
+    const char* help;
+  };
+  static const NumOpt nums[] = {
+      {"a11", "stiffness A11"}, {"a12", "stiffness A12"}, {"a22", "stiffness A22"},
+      {"mu", "friction coefficient"}, {"C_T", "tangential compliance"},
+      {"k_a", "Archard wear coefficient"}, {"P_s", "hardness"},
+      {"k_M", "Mroz-Stupkiewicz wear constant"}, {"F_N", "fretting: normal load"},
+      {"amplitude", "fretting: tangential load amplitude"}, {"period", "fretting/csv: period"},
+      {"cycles", "fretting: number of cycles"}, {"steps-per-cycle", "fretting: steps per cycle"},
+      {"ramp-steps", "fretting: steps of the initial normal-load ramp"},
+      {"F_T1", "ramp: final F_T"}, {"F_N1", "ramp: final F_N"}, {"duration", "ramp: duration"},
+      {"steps", "ramp: steps"}, {"heat-capacity", "heat capacity per area C"},
+      {"T-ref", "reference temperature T0"}, {"T-initial", "initial interface temperature"}};
+  for (const auto& n : nums) {
+    const std::string key = n.name;
+    cmd->add_option_function<double>("--" + key, [a, key](const double& v) { a->num[key] = v; },
+                                     n.help);
+  }
+  cmd->add_option("--criterion", a->criterion, "38 (Coulomb, default) or 35 (softening)");
+  cmd->add_option("--wear-law", a->wear_law, "archard (default) or mroz");
+  cmd->add_option("--load", a->load, "fretting (default), ramp or csv");
+  cmd->add_option("--load-csv", a->load_csv, "load history CSV: t, F_T, F_N");
+  cmd->add_flag("--heat", a->heat, "compute the interface temperature");
+  cmd->add_option("--T-body", a->T_body, "body temperatures T1 T2")->expected(2);
+  cmd->add_option("--conductance", a->conductance, "contact conductances c1 c2")->expected(2);
+  cmd->add_option("--branch-rule", a->branch_rule, "closest (default) or stop");
+  cmd->add_option("--csv", a->csv, "write the time series here");
+  cmd->add_option("--summary", a->summary, "write the JSON summary here");
+  cmd->add_option("--plot", a->plot, "figures PREFIX_loop/_wear/_state .png/.svg");
+  cmd->add_option("--every", a->every, "keep every n-th step in the series (default 1)");
+  cmd->add_flag("--json", a->json, "print the JSON summary");
+  cmd->callback([a, &ctx]() { ctx.exit_code = run(*a); });
+}
+
+}  // namespace cpkit::cli

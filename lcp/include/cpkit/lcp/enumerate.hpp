@@ -1,0 +1,93 @@
+#pragma once
+/// \file enumerate.hpp
+/// All solutions of a dense LCP: z >= 0, w = M z + q >= 0, z . w = 0 (cpkit's sign convention).
+///
+/// The solution set is the finite union of the pieces
+///   P_S = { z : z_i = 0 (i not in S), w_i = 0 (i in S), z >= 0, w >= 0 }
+/// [Cottle-Pang-Stone 1992, Sec. 3.9]. enumerate_all() lists every extreme solution (vertex of a
+/// piece) once, with z, w and a complementary basis; every piece of positive dimension with its
+/// vertices and extreme rays; whether the set is infinite; and whether the enumeration is
+/// complete. Singular principal blocks are normal input (docs/enumeration.md).
+///
+/// Size limit: n <= EnumerationOptions::max_size (default 24, at most kMaxEnumerationSize = 30);
+/// beyond it InputError, never a silent partial answer. A time or node limit that stops the
+/// search early leaves complete = false with a message saying so.
+///
+/// Algorithm: n <= 4 uses the fixed-size path enumerate_small(); larger n a depth-first search
+/// over the complementary bases with principal pivot updates of one tableau per depth (no
+/// factorization per basis), 2x2 block pivots where a diagonal pivot vanishes, and pruning of
+/// every subtree in which some tableau row proves infeasibility (q'_r < 0 with no free column
+/// able to raise it). Candidates are re-solved from the original data before they are accepted.
+/// Pieces with a singular principal block are enumerated in the null space of the block.
+#include <string>
+#include <vector>
+
+#include "cpkit/core/problem.hpp"
+
+namespace cpkit::lcp {
+
+/// Hard ceiling on the problem size (supports are bit masks).
+inline constexpr int kMaxEnumerationSize = 30;
+
+struct EnumerationOptions {
+  /// Relative tolerance of the sign and zero tests (docs/enumeration.md, "Tolerance").
+  double tol = 1e-12;
+  /// Problems with n > max_size throw InputError (1 <= max_size <= kMaxEnumerationSize).
+  int max_size = 24;
+  /// Wall-clock limit; when hit the result has complete = false.
+  double time_limit_s = 1e300;
+  /// Largest null-space dimension of a singular piece that is enumerated; a larger one leaves
+  /// complete = false (its vertices need C(n, m) subsystems).
+  int max_piece_dim = 3;
+  /// Empty when usable; otherwise names the bad field.
+  std::string validate() const;
+};
+
+/// One extreme solution (a vertex of a piece of the solution set).
+struct ExtremeSolution {
+  Vec z;                   ///< z >= 0
+  Vec w;                   ///< w = M z + q >= 0, recomputed from the data (entries judged zero are 0)
+  /// A complementary basis: entry i is i when z_i is basic, ~i (= -i-1) when w_i is basic
+  /// (SolveResult::basis convention). For a vertex whose complementary matrices are all
+  /// singular, the basis of its smallest piece {i : z_i > 0}.
+  std::vector<int> basis;
+};
+
+/// A piece of positive dimension: P_S = conv(vertices) + cone(rays).
+struct SolutionPiece {
+  std::vector<int> support;   ///< S: indices with w_i = 0 (z_i free >= 0); z_i = 0 elsewhere
+  std::vector<int> vertices;  ///< indices into SolutionSet::solutions
+  std::vector<Vec> rays;      ///< extreme rays of the recession cone, ||d||_inf = 1
+};
+
+struct SolutionSet {
+  std::vector<ExtremeSolution> solutions;  ///< every extreme solution, deduplicated
+  std::vector<SolutionPiece> pieces;       ///< inclusion-maximal pieces of positive dimension
+  /// Directions along which the set continues: every ray of a piece, and the normalised
+  /// difference of every pair of vertices of a piece (its edges; for pieces with more than two
+  /// vertices some of these pairs cross the piece's interior).
+  std::vector<Vec> directions;
+  bool complete = false;   ///< every complementary basis was accounted for
+  bool infinite = false;   ///< some piece has positive dimension
+  int ambiguous = 0;       ///< sign or rank tests too close to call (docs/enumeration.md)
+  long long nodes = 0;     ///< search-tree nodes visited (0 on the small path)
+  long long leaves = 0;    ///< complementary bases reached (not pruned)
+  double seconds = 0;
+  std::string message;     ///< why complete is false, if it is
+  Mat M;                   ///< the data (for contains())
+  Vec q;
+  double tol = 1e-12;
+
+  /// "inf" semantics: number of extreme solutions; see `infinite` for continua.
+  int count() const { return static_cast<int>(solutions.size()); }
+  /// True when z is one of the extreme solutions (max-norm distance <= tol (1 + ||z||_inf)) or a
+  /// solution lying in a listed piece (z, w >= -tol s, z_i ~ 0 off its support, w_i ~ 0 on it,
+  /// s = 1 + |q_i| + (|M| |z|)_i). A solution that is in neither proves the set incomplete.
+  bool contains(const Vec& z, double tol = 1e-8) const;
+};
+
+/// Enumerates the whole solution set of a dense (or sparse, densified) LCP. Throws InputError
+/// on invalid problems or options and on n > options.max_size.
+SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& options = {});
+
+}  // namespace cpkit::lcp

@@ -1,0 +1,647 @@
+#include "cpkit/lcp/enumerate.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/enumerate_small.hpp"
+
+namespace cpkit::lcp {
+
+std::string EnumerationOptions::validate() const {
+  if (!(tol > 0 && tol <= 1e-3))
+    return "EnumerationOptions::tol must lie in (0, 1e-3], got " + std::to_string(tol);
+  if (max_size < 1 || max_size > kMaxEnumerationSize)
+    return "EnumerationOptions::max_size must lie in [1, " + std::to_string(kMaxEnumerationSize) +
+           "], got " + std::to_string(max_size);
+  if (!(time_limit_s > 0)) return "EnumerationOptions::time_limit_s must be > 0";
+  if (max_piece_dim < 1 || max_piece_dim > 8)
+    return "EnumerationOptions::max_piece_dim must lie in [1, 8], got " +
+           std::to_string(max_piece_dim);
+  return {};
+}
+
+namespace {
+
+using Mask = std::uint32_t;
+constexpr double kGray = 1e4;        // gray band of the sign tests (as enumerate_small)
+constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its row/column
+constexpr double kPruneTol = 1e-9;   // a tableau row proves infeasibility below -kPruneTol * scale
+constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
+
+std::vector<int> basis_of(Mask S, int n) {
+  std::vector<int> b(n);
+  for (int i = 0; i < n; ++i) b[i] = (S >> i) & 1u ? i : ~i;
+  return b;
+}
+
+std::vector<int> indices_of(Mask S, int n) {
+  std::vector<int> idx;
+  for (int i = 0; i < n; ++i)
+    if ((S >> i) & 1u) idx.push_back(i);
+  return idx;
+}
+
+/// Directions of the pieces: rays, and vertex-pair differences (deduplicated, ||d||_inf = 1).
+void fill_directions(SolutionSet& out) {
+  auto add = [&](Vec d) {
+    const double big = d.cwiseAbs().maxCoeff();
+    if (!(big > 0)) return;
+    d /= big;
+    for (const Vec& e : out.directions)
+      if ((e - d).cwiseAbs().maxCoeff() <= 1e-9 || (e + d).cwiseAbs().maxCoeff() <= 1e-9) return;
+    out.directions.push_back(d);
+  };
+  for (const SolutionPiece& p : out.pieces) {
+    for (const Vec& r : p.rays) add(r);
+    for (size_t a = 0; a < p.vertices.size(); ++a)
+      for (size_t b = a + 1; b < p.vertices.size(); ++b)
+        add(out.solutions[p.vertices[b]].z - out.solutions[p.vertices[a]].z);
+  }
+}
+
+template <int N>
+void run_small(SolutionSet& out) {
+  const Eigen::Matrix<double, N, N> M = out.M;
+  const Eigen::Matrix<double, N, 1> q = out.q;
+  SmallSolutionSet<N> s;
+  enumerate_small<N>(M, q, s, out.tol);
+  for (int k = 0; k < s.num_points; ++k) {
+    ExtremeSolution e;
+    e.z = s.z[k];
+    e.w = s.w[k];
+    e.basis = basis_of(s.support[k], N);
+    out.solutions.push_back(std::move(e));
+  }
+  for (int k = 0; k < s.num_pieces; ++k) {
+    SolutionPiece p;
+    p.support = indices_of(s.pieces[k].support, N);
+    for (int v = 0; v < s.num_points; ++v)
+      if ((s.pieces[k].vertex_mask >> v) & 1u) p.vertices.push_back(v);
+    for (int r = 0; r < s.pieces[k].num_rays; ++r) p.rays.push_back(s.pieces[k].rays[r]);
+    out.pieces.push_back(std::move(p));
+  }
+  out.infinite = s.infinite;
+  out.ambiguous = s.ambiguous;
+  out.complete = s.dropped == 0;
+  if (!out.complete) out.message = "fixed-size capacity exceeded (" + std::to_string(s.dropped) + " dropped)";
+}
+
+/// Depth-first search over complementary bases with principal pivot updates.
+class Engine {
+ public:
+  Engine(const EnumerationOptions& opt, SolutionSet& out)
+      : n_(static_cast<int>(out.q.size())), M_(out.M), q_(out.q), opt_(opt), tol_(opt.tol),
+        out_(out), decided_(n_, 0) {
+    levels_.resize(n_ + 1);
+    for (Level& L : levels_) {
+      L.T.resize(size_t(n_) * n_);
+      L.qv.resize(n_);
+      L.row_label.resize(n_);
+      L.col_label.resize(n_);
+      L.row_of.resize(2 * n_);
+      L.col_of.resize(2 * n_);
+    }
+    Level& L = levels_[0];
+    for (int i = 0; i < n_; ++i) {
+      for (int j = 0; j < n_; ++j) L.T[size_t(i) * n_ + j] = M_(i, j);
+      L.qv[i] = q_(i);
+      L.row_label[i] = n_ + i;  // w_i basic
+      L.col_label[i] = i;       // z_i nonbasic
+      L.row_of[n_ + i] = i;
+      L.row_of[i] = -1;
+      L.col_of[i] = i;
+      L.col_of[n_ + i] = -1;
+    }
+    L.pending = 0;
+  }
+
+  void run() {
+    if (!prune(levels_[0])) visit(0, 0, 0);
+    out_.nodes = nodes_;
+    out_.leaves = leaves_;
+    finish();
+  }
+
+ private:
+  struct Level {
+    std::vector<double> T;  // row-major n x n: basic_r = qv_r + sum_c T(r,c) nonbasic_c
+    std::vector<double> qv;
+    std::vector<int> row_label, col_label;  // variable ids: z_j = j, w_j = n + j
+    std::vector<int> row_of, col_of;        // inverse maps (-1: not there)
+    Mask pending = 0;  // decided in S, z_j still nonbasic (diagonal pivot vanished)
+  };
+
+  double& t(Level& L, int r, int c) { return L.T[size_t(r) * n_ + c]; }
+
+  void copy_level(const Level& a, Level& b) {
+    std::copy(a.T.begin(), a.T.end(), b.T.begin());
+    b.qv = a.qv;
+    b.row_label = a.row_label;
+    b.col_label = a.col_label;
+    b.row_of = a.row_of;
+    b.col_of = a.col_of;
+    b.pending = a.pending;
+  }
+
+  /// Exchanges the basic variable of row r with the nonbasic variable of column c.
+  void pivot(Level& L, int r, int c) {
+    double* row = &L.T[size_t(r) * n_];
+    const double p = row[c];
+    const double ip = 1.0 / p;
+    L.qv[r] = -L.qv[r] * ip;
+    for (int k = 0; k < n_; ++k) row[k] = -row[k] * ip;
+    row[c] = ip;
+    for (int i = 0; i < n_; ++i) {
+      if (i == r) continue;
+      double* ri = &L.T[size_t(i) * n_];
+      const double f = ri[c];
+      if (f == 0) continue;
+      L.qv[i] += f * L.qv[r];
+      for (int k = 0; k < n_; ++k) ri[k] += f * row[k];
+      ri[c] = f * ip;
+    }
+    const int br = L.row_label[r], nc = L.col_label[c];
+    L.row_label[r] = nc;
+    L.col_label[c] = br;
+    L.row_of[nc] = r;
+    L.row_of[br] = -1;
+    L.col_of[br] = c;
+    L.col_of[nc] = -1;
+  }
+
+  bool pivot_ok(Level& L, int r, int c, double value) {
+    double s = 0;
+    for (int k = 0; k < n_; ++k) s = std::max(s, std::abs(t(L, r, k)));
+    for (int k = 0; k < n_; ++k) s = std::max(s, std::abs(t(L, k, c)));
+    return std::abs(value) > kPivotTol * s;
+  }
+
+  /// Pivots pending indices in whenever a 1x1 or 2x2 principal block allows it.
+  void resolve_pending(Level& L) {
+    bool progress = true;
+    while (progress && L.pending) {
+      progress = false;
+      for (int p = 0; p < n_; ++p) {
+        if (!((L.pending >> p) & 1u)) continue;
+        const int r = L.row_of[n_ + p], c = L.col_of[p];
+        if (pivot_ok(L, r, c, t(L, r, c))) {
+          pivot(L, r, c);
+          L.pending &= ~(Mask(1) << p);
+          progress = true;
+        }
+      }
+      if (progress) continue;
+      for (int a = 0; a < n_ && !progress; ++a) {
+        if (!((L.pending >> a) & 1u)) continue;
+        for (int b = a + 1; b < n_ && !progress; ++b) {
+          if (!((L.pending >> b) & 1u)) continue;
+          const int r1 = L.row_of[n_ + a], c1 = L.col_of[a];
+          const int r2 = L.row_of[n_ + b], c2 = L.col_of[b];
+          const double t12 = t(L, r1, c2);
+          if (!pivot_ok(L, r1, c2, t12)) continue;
+          const double t21 = t(L, r2, c1) - t(L, r2, c2) * t(L, r1, c1) / t12;
+          if (!pivot_ok(L, r2, c1, t21)) continue;
+          pivot(L, r1, c2);  // w_a <-> z_b
+          pivot(L, r2, c1);  // w_b <-> z_a
+          L.pending &= ~((Mask(1) << a) | (Mask(1) << b));
+          progress = true;
+        }
+      }
+    }
+  }
+
+  bool free_col(const Level& L, int c) const {
+    const int lab = L.col_label[c];
+    return lab < n_ && (!decided_[lab] || ((L.pending >> lab) & 1u));
+  }
+
+  /// True when some row proves that no completion of the current decisions is feasible.
+  bool prune(Level& L) {
+    for (int r = 0; r < n_; ++r) {
+      const double qr = L.qv[r];
+      const double* row = &L.T[size_t(r) * n_];
+      double s = std::abs(qr);
+      for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(row[c]));
+      const int lab = L.row_label[r];
+      const bool must_vanish = lab >= n_ && ((L.pending >> (lab - n_)) & 1u);
+      if (qr < -kPruneTol * s) {
+        bool can_rise = false;
+        for (int c = 0; c < n_ && !can_rise; ++c)
+          if (row[c] > tol_ * s && free_col(L, c)) can_rise = true;
+        if (!can_rise) return true;
+      } else if (must_vanish && qr > kPruneTol * s) {
+        bool can_fall = false;
+        for (int c = 0; c < n_ && !can_fall; ++c)
+          if (row[c] < -tol_ * s && free_col(L, c)) can_fall = true;
+        if (!can_fall) return true;
+      }
+    }
+    return false;
+  }
+
+  void visit(int d, int cur, Mask S) {
+    if (stopped_) return;
+    ++nodes_;
+    if ((nodes_ & 1023) == 0 && clock_.exceeded(opt_.time_limit_s)) {
+      stopped_ = true;
+      out_.message = "time limit reached after " + std::to_string(nodes_) + " nodes";
+      return;
+    }
+    if (d == n_) {
+      leaf(levels_[cur], S);
+      return;
+    }
+    const int i = d;
+    decided_[i] = 1;
+    // branch A: i not in S (z_i = 0, w_i basic)
+    if (!prune(levels_[cur])) visit(d + 1, cur, S);
+    // branch B: i in S (w_i = 0, z_i basic)
+    Level& nb = levels_[d + 1];
+    copy_level(levels_[cur], nb);
+    const int r = nb.row_of[n_ + i], c = nb.col_of[i];
+    if (r >= 0 && c >= 0 && pivot_ok(nb, r, c, t(nb, r, c))) {
+      pivot(nb, r, c);
+    } else {
+      nb.pending |= Mask(1) << i;
+    }
+    resolve_pending(nb);
+    if (!prune(nb)) visit(d + 1, d + 1, S | (Mask(1) << i));
+    decided_[i] = 0;
+  }
+
+  void leaf(Level& L, Mask S) {
+    ++leaves_;
+    if (L.pending) {  // a block the 1x1 / 2x2 pivots could not resolve: decide from the data
+      piece(S);
+      return;
+    }
+    for (int r = 0; r < n_; ++r) {
+      double s = std::abs(L.qv[r]);
+      for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(t(L, r, c)));
+      if (L.qv[r] < -kLeafTol * s) return;
+    }
+    piece(S);
+  }
+
+  /// Solutions of piece S decided from the original data: a point when M_SS is nonsingular,
+  /// otherwise vertices and rays in the null space of M_SS.
+  void piece(Mask S) {
+    const std::vector<int> idx = indices_of(S, n_);
+    const int k = static_cast<int>(idx.size());
+    Vec z = Vec::Zero(n_);
+    if (k == 0) {
+      add_point(S, z);
+      return;
+    }
+    Mat A(k, k);
+    Vec b(k);
+    for (int r = 0; r < k; ++r) {
+      for (int c = 0; c < k; ++c) A(r, c) = M_(idx[r], idx[c]);
+      b(r) = -q_(idx[r]);
+    }
+    Eigen::FullPivLU<Mat> lu(A);
+    lu.setThreshold(tol_);
+    const Vec x = lu.solve(b);
+    for (int c = 0; c < k; ++c) z(idx[c]) = x(c);
+    const int m = k - static_cast<int>(lu.rank());
+    if (m == 0) {
+      add_point(S, z);
+      return;
+    }
+    // consistency: -q_S in the range of M_SS
+    for (int c = 0; c < k; ++c) {
+      const int i = idx[c];
+      double v = q_(i), sc = std::abs(q_(i));
+      for (int j = 0; j < n_; ++j) {
+        v += M_(i, j) * z(j);
+        sc += std::abs(M_(i, j) * z(j));
+      }
+      if (std::abs(v) > kGray * tol_ * sc) return;  // empty piece
+      if (std::abs(v) > tol_ * sc) {
+        ++out_.ambiguous;
+        return;
+      }
+    }
+    if (m > opt_.max_piece_dim) {
+      if (!incomplete_piece_) {
+        incomplete_piece_ = true;
+        out_.message = "a piece with a " + std::to_string(m) +
+                       "-dimensional null space exceeds max_piece_dim";
+      }
+      return;
+    }
+    singular_.push_back(S);
+    const Mat K = lu.kernel();  // k x m
+    Mat N = Mat::Zero(n_, m);
+    for (int c = 0; c < k; ++c) N.row(idx[c]) = K.row(c);
+    // constraints g_i(t) = b_i + G_i t >= 0: z_i on S, w_i off S
+    Mat G(n_, m);
+    Vec g0(n_);
+    const Vec w0 = M_ * z + q_;
+    const Mat MN = M_ * N;
+    for (int i = 0; i < n_; ++i) {
+      if ((S >> i) & 1u) {
+        G.row(i) = N.row(i);
+        g0(i) = z(i);
+      } else {
+        G.row(i) = MN.row(i);
+        g0(i) = w0(i);
+      }
+    }
+    // vertices: m active constraints; rays: m - 1
+    std::vector<int> comb;
+    auto for_each_subset = [&](int size, auto&& fn) {
+      comb.resize(size);
+      for (int j = 0; j < size; ++j) comb[j] = j;
+      while (true) {
+        fn();
+        int j = size - 1;
+        while (j >= 0 && comb[j] == n_ - size + j) --j;
+        if (j < 0) break;
+        ++comb[j];
+        for (int l = j + 1; l < size; ++l) comb[l] = comb[l - 1] + 1;
+      }
+    };
+    for_each_subset(m, [&] {
+      Mat E(m, m);
+      Vec e(m);
+      for (int r = 0; r < m; ++r) {
+        E.row(r) = G.row(comb[r]);
+        e(r) = -g0(comb[r]);
+      }
+      Eigen::FullPivLU<Mat> l2(E);
+      l2.setThreshold(tol_);
+      if (l2.rank() < m) return;
+      Vec zz = z + N * l2.solve(e);
+      add_point(S, zz);
+    });
+    if (m == 1) {
+      Vec d = N.col(0);
+      add_ray(S, d);
+      d = -N.col(0);
+      add_ray(S, d);
+      return;
+    }
+    for_each_subset(m - 1, [&] {
+      Mat E(m - 1, m);
+      for (int r = 0; r < m - 1; ++r) E.row(r) = G.row(comb[r]);
+      Eigen::FullPivLU<Mat> l2(E);
+      l2.setThreshold(tol_);
+      if (l2.rank() < m - 1) return;
+      const Vec tt = l2.kernel().col(0);
+      Vec d = N * tt;
+      add_ray(S, d);
+      d = -d;
+      add_ray(S, d);
+    });
+  }
+
+  void add_point(Mask S, Vec& z) {
+    const double zs = z.cwiseAbs().maxCoeff();
+    int verdict = 0;
+    Mask zz = 0, zw = 0;
+    for (int j = 0; j < n_; ++j) {
+      if (!((S >> j) & 1u)) {
+        z(j) = 0;
+        zz |= Mask(1) << j;
+        continue;
+      }
+      if (z(j) < -kGray * tol_ * zs) return;
+      if (z(j) < -tol_ * zs) verdict = 1;
+      if (std::abs(z(j)) <= tol_ * zs) {
+        z(j) = 0;
+        zz |= Mask(1) << j;
+      }
+    }
+    Vec w(n_);
+    for (int i = 0; i < n_; ++i) {
+      if ((S >> i) & 1u) {
+        w(i) = 0;
+        zw |= Mask(1) << i;
+        continue;
+      }
+      double v = q_(i), sc = std::abs(q_(i));
+      for (int j = 0; j < n_; ++j)
+        if (z(j) != 0) {
+          v += M_(i, j) * z(j);
+          sc += std::abs(M_(i, j) * z(j));
+        }
+      if (v < -kGray * tol_ * sc) return;
+      if (v < -tol_ * sc) verdict = 1;
+      if (std::abs(v) <= tol_ * sc) {
+        w(i) = 0;
+        zw |= Mask(1) << i;
+      } else {
+        w(i) = v;
+      }
+    }
+    if (verdict == 1) {
+      ++out_.ambiguous;
+      return;
+    }
+    for (size_t p = 0; p < out_.solutions.size(); ++p) {
+      const Vec& y = out_.solutions[p].z;
+      const double s2 = std::max(zs, y.cwiseAbs().maxCoeff());
+      if ((y - z).cwiseAbs().maxCoeff() <= kGray * tol_ * s2) {
+        zero_z_[p] |= zz;
+        zero_w_[p] |= zw;
+        return;
+      }
+    }
+    ExtremeSolution e;
+    e.z = z;
+    e.w = w;
+    out_.solutions.push_back(std::move(e));
+    zero_z_.push_back(zz);
+    zero_w_.push_back(zw);
+  }
+
+  void add_ray(Mask S, Vec& d) {
+    Eigen::Index arg = 0;
+    const double big = d.cwiseAbs().maxCoeff(&arg);
+    if (!(big > 0) || d(arg) < 0) return;
+    d /= big;
+    int verdict = 0;
+    Mask zd = 0, zmd = 0;
+    for (int j = 0; j < n_; ++j) {
+      if (!((S >> j) & 1u)) {
+        d(j) = 0;
+        zd |= Mask(1) << j;
+        continue;
+      }
+      if (d(j) < -kGray * tol_) return;
+      if (d(j) < -tol_) verdict = 1;
+      if (std::abs(d(j)) <= tol_) {
+        d(j) = 0;
+        zd |= Mask(1) << j;
+      }
+    }
+    for (int i = 0; i < n_; ++i) {
+      if ((S >> i) & 1u) {
+        zmd |= Mask(1) << i;
+        continue;
+      }
+      double v = 0, sc = 0;
+      for (int j = 0; j < n_; ++j)
+        if (d(j) != 0) {
+          v += M_(i, j) * d(j);
+          sc += std::abs(M_(i, j) * d(j));
+        }
+      if (v < -kGray * tol_ * sc) return;
+      if (v < -tol_ * sc) verdict = 1;
+      if (std::abs(v) <= tol_ * sc) zmd |= Mask(1) << i;
+    }
+    if (verdict == 1) {
+      ++out_.ambiguous;
+      return;
+    }
+    for (size_t p = 0; p < rays_.size(); ++p)
+      if ((rays_[p] - d).cwiseAbs().maxCoeff() <= kGray * tol_) {
+        ray_zero_d_[p] |= zd;
+        ray_zero_md_[p] |= zmd;
+        return;
+      }
+    rays_.push_back(d);
+    ray_zero_d_.push_back(zd);
+    ray_zero_md_.push_back(zmd);
+  }
+
+  void finish() {
+    const Mask all = n_ == 32 ? ~Mask(0) : (Mask(1) << n_) - 1;
+    for (size_t p = 0; p < out_.solutions.size(); ++p) {
+      ExtremeSolution& e = out_.solutions[p];
+      for (int j = 0; j < n_; ++j) {
+        if ((zero_z_[p] >> j) & 1u) e.z(j) = 0;
+        if ((zero_w_[p] >> j) & 1u) e.w(j) = 0;
+      }
+      e.basis = basis_of(~zero_z_[p] & all, n_);
+    }
+    std::sort(singular_.begin(), singular_.end());
+    singular_.erase(std::unique(singular_.begin(), singular_.end()), singular_.end());
+    struct Cand {
+      Mask S;
+      std::vector<char> v, r;
+      int nv = 0, nr = 0;
+    };
+    std::vector<Cand> cands;
+    for (Mask S : singular_) {
+      const Mask off = ~S & all;
+      Cand c;
+      c.S = S;
+      c.v.assign(out_.solutions.size(), 0);
+      c.r.assign(rays_.size(), 0);
+      for (size_t p = 0; p < out_.solutions.size(); ++p)
+        if ((zero_z_[p] & off) == off && (zero_w_[p] & S) == S) { c.v[p] = 1; ++c.nv; }
+      for (size_t p = 0; p < rays_.size(); ++p)
+        if ((ray_zero_d_[p] & off) == off && (ray_zero_md_[p] & S) == S) { c.r[p] = 1; ++c.nr; }
+      if (c.nv == 0 || (c.nv < 2 && c.nr == 0)) continue;
+      cands.push_back(std::move(c));
+    }
+    auto subset = [](const std::vector<char>& a, const std::vector<char>& b) {
+      for (size_t i = 0; i < a.size(); ++i)
+        if (a[i] && !b[i]) return false;
+      return true;
+    };
+    for (size_t a = 0; a < cands.size(); ++a) {
+      bool maximal = true;
+      for (size_t b = 0; b < cands.size() && maximal; ++b) {
+        if (a == b) continue;
+        const bool sub = subset(cands[a].v, cands[b].v) && subset(cands[a].r, cands[b].r);
+        const bool equal = sub && cands[a].nv == cands[b].nv && cands[a].nr == cands[b].nr;
+        if (sub && (!equal || b < a)) maximal = false;
+      }
+      if (!maximal) continue;
+      SolutionPiece pc;
+      pc.support = indices_of(cands[a].S, n_);
+      for (size_t p = 0; p < cands[a].v.size(); ++p)
+        if (cands[a].v[p]) pc.vertices.push_back(static_cast<int>(p));
+      for (size_t p = 0; p < cands[a].r.size(); ++p)
+        if (cands[a].r[p]) pc.rays.push_back(rays_[p]);
+      out_.pieces.push_back(std::move(pc));
+    }
+    out_.infinite = !out_.pieces.empty();
+    out_.complete = !stopped_ && !incomplete_piece_;
+  }
+
+  int n_;
+  const Mat& M_;
+  const Vec& q_;
+  const EnumerationOptions& opt_;
+  double tol_;
+  SolutionSet& out_;
+  std::vector<char> decided_;
+  std::vector<Level> levels_;
+  std::vector<Mask> zero_z_, zero_w_;
+  std::vector<Vec> rays_;
+  std::vector<Mask> ray_zero_d_, ray_zero_md_;
+  std::vector<Mask> singular_;
+  Stopwatch clock_;
+  bool stopped_ = false;
+  bool incomplete_piece_ = false;
+  long long nodes_ = 0, leaves_ = 0;
+};
+
+}  // namespace
+
+bool SolutionSet::contains(const Vec& z, double ctol) const {
+  const int n = static_cast<int>(q.size());
+  if (z.size() != n || !z.allFinite()) return false;
+  const double zn = z.cwiseAbs().maxCoeff();
+  for (const ExtremeSolution& e : solutions)
+    if ((e.z - z).cwiseAbs().maxCoeff() <= ctol * (1 + std::max(zn, e.z.cwiseAbs().maxCoeff())))
+      return true;
+  if (pieces.empty()) return false;
+  const Vec w = M * z + q;
+  const Vec sc = (M.cwiseAbs() * z.cwiseAbs()).array() + q.cwiseAbs().array() + 1.0;
+  const double sz = 1 + zn;
+  for (int i = 0; i < n; ++i)
+    if (z(i) < -ctol * sz || w(i) < -ctol * sc(i)) return false;
+  for (const SolutionPiece& p : pieces) {
+    std::vector<char> in(n, 0);
+    for (int i : p.support) in[i] = 1;
+    bool ok = true;
+    for (int i = 0; i < n && ok; ++i)
+      ok = in[i] ? std::abs(w(i)) <= ctol * sc(i) : std::abs(z(i)) <= ctol * sz;
+    if (ok) return true;
+  }
+  return false;
+}
+
+SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& options) {
+  throw_if_invalid(problem.validate(), "enumerate_all");
+  throw_if_invalid(options.validate(), "enumerate_all");
+  const Eigen::Index n = problem.size();
+  if (n > options.max_size)
+    throw InputError("enumerate_all: n = " + std::to_string(n) + " exceeds the size limit " +
+                     std::to_string(options.max_size) + " (EnumerationOptions::max_size, at most " +
+                     std::to_string(kMaxEnumerationSize) + ")");
+  Stopwatch clock;
+  SolutionSet out;
+  out.M = problem.dense_M();
+  out.q = problem.q;
+  out.tol = options.tol;
+  switch (n) {
+    case 0:
+      out.complete = true;
+      out.solutions.push_back({Vec(), Vec(), {}});
+      break;
+    case 1: run_small<1>(out); break;
+    case 2: run_small<2>(out); break;
+    case 3: run_small<3>(out); break;
+    case 4: run_small<4>(out); break;
+    default: {
+      Engine engine(options, out);
+      engine.run();
+    }
+  }
+  fill_directions(out);
+  out.seconds = clock.seconds();
+  return out;
+}
+
+}  // namespace cpkit::lcp

@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""Draws the figures of a fretting simulation written by `cpkit simulate` (docs/simulation.md).
+
+usage: cpkit_plot_simulation.py --csv SERIES.csv [--summary SUMMARY.json] --out PREFIX
+                                [--formats png,svg]
+
+Writes, for each format:
+  PREFIX_loop.*   the fretting loop: tangential force P_T against tangential displacement w_T,
+                  coloured by time;
+  PREFIX_wear.*   wear depth w^w against cycles (and wear per cycle when the summary has it);
+  PREFIX_state.*  the contact state (a open, b grazing, c stick, d sliding) and the step's
+                  solution type over time, with the number of step solutions (branch points)
+                  and the interface temperature when heat was computed.
+Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
+Run it with /usr/bin/python3 (Debian's python3-matplotlib).
+"""
+import csv
+import json
+import sys
+
+EXIT_BAD_INPUT = 2
+EXIT_NO_MATPLOTLIB = 5
+
+TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]
+TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
+                "slip-": "#c44e52", "open": "#8172b3"}
+STATE_ORDER = ["a", "b", "c", "d"]
+STATE_LABELS = {"a": "a open", "b": "b grazing", "c": "c stick", "d": "d sliding"}
+NUMERIC = ["step", "t", "F_T", "F_N", "P_T", "P_N", "w_T", "w_N", "w_w", "w_Ti", "g", "count",
+           "dissipation", "dissipation_total", "work_total", "stored", "temperature"]
+
+
+def fail(msg, code=EXIT_BAD_INPUT):
+    sys.stderr.write("cpkit_plot_simulation.py: %s\n" % msg)
+    sys.exit(code)
+
+
+def read_series(path):
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        fail("cannot read %s: %s" % (path, e))
+    if not rows:
+        fail("%s has no rows" % path)
+    cols = {k: [] for k in NUMERIC + ["state", "type"]}
+    for i, r in enumerate(rows):
+        try:
+            for k in NUMERIC:
+                cols[k].append(float(r[k]))
+            cols["state"].append(r["state"])
+            cols["type"].append(r["type"])
+        except (KeyError, ValueError, TypeError) as e:
+            fail("%s row %d: %s" % (path, i + 2, e))
+    return cols
+
+
+def parse_args(argv):
+    args = {"csv": None, "summary": None, "out": None, "formats": ["png", "svg"]}
+    i = 1
+    while i < len(argv):
+        a = argv[i]
+        if a in ("-h", "--help"):
+            print(__doc__)
+            sys.exit(0)
+        if a not in ("--csv", "--summary", "--out", "--formats") or i + 1 >= len(argv):
+            fail("unknown or incomplete option %r (see --help)" % a)
+        v = argv[i + 1]
+        args[a[2:]] = v.split(",") if a == "--formats" else v
+        i += 2
+    if not args["csv"] or not args["out"]:
+        fail("--csv and --out are required (see --help)")
+    return args
+
+
+def main(argv):
+    args = parse_args(argv)
+    s = read_series(args["csv"])
+    summary = {}
+    if args["summary"]:
+        try:
+            with open(args["summary"]) as f:
+                summary = json.load(f)
+        except (OSError, ValueError) as e:
+            fail("cannot read summary %s: %s" % (args["summary"], e))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as e:
+        sys.stderr.write("cpkit_plot_simulation.py: matplotlib not available to %s (%s); install "
+                         "python3-matplotlib (Debian) and run with /usr/bin/python3\n" %
+                         (sys.executable, e))
+        return EXIT_NO_MATPLOTLIB
+    out = args["out"]
+    title = "cpkit simulate (%s, %s wear)" % (summary.get("criterion", "?"),
+                                               summary.get("wear_law", "?"))
+    outcome = summary.get("outcome")
+    if outcome and outcome != "completed":
+        title += " (stopped: %s)" % outcome
+
+    # 1. Fretting loop.
+    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    t = s["t"]
+    n = len(t)
+    cmap = plt.get_cmap("viridis")
+    seg = max(1, n // 400)
+    for i in range(0, n - 1, seg):
+        j = min(n - 1, i + seg)
+        ax.plot(s["w_T"][i:j + 1], s["P_T"][i:j + 1], color=cmap(i / max(1, n - 1)), lw=1.0)
+    ax.axhline(0, color="#bbbbbb", lw=0.6)
+    ax.set_xlabel("tangential displacement $w_T$")
+    ax.set_ylabel("tangential contact force $P_T$")
+    ax.set_title("fretting loop (colour: time)\n" + title)
+    sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
+    fig.colorbar(sm, ax=ax, label="t")
+    fig.tight_layout()
+    for fmt in args["formats"]:
+        fig.savefig("%s_loop.%s" % (out, fmt), dpi=110)
+    plt.close(fig)
+
+    # 2. Wear depth against cycles (or time when the run has no period).
+    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    wpc = summary.get("wear_per_cycle") or []
+    if wpc:
+        cum = [0.0]
+        for w in wpc:
+            cum.append(cum[-1] + w)
+        ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label="wear depth $w^w$")
+        ax.set_xlabel("cycles")
+        ax2 = ax.twinx()
+        ax2.bar([i + 0.5 for i in range(len(wpc))], wpc, width=0.8, color="#dd8452", alpha=0.35,
+                label="wear per cycle")
+        ax2.set_ylabel("wear per cycle", color="#dd8452")
+    else:
+        ax.plot(t, s["w_w"], color="#4c72b0", label="wear depth $w^w$")
+        ax.set_xlabel("t")
+    ax.set_ylabel("wear depth $w^w$")
+    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title))
+    fig.tight_layout()
+    for fmt in args["formats"]:
+        fig.savefig("%s_wear.%s" % (out, fmt), dpi=110)
+    plt.close(fig)
+
+    # 3. Contact state and solution type over time.
+    heat = "temperature" in summary
+    rows = 3 if heat else 2
+    fig, axes = plt.subplots(rows, 1, figsize=(7.5, 2.2 * rows + 1), sharex=True)
+    ax = axes[0]
+    for k, lab in enumerate(STATE_ORDER):
+        xs = [t[i] for i in range(n) if s["state"][i] == lab]
+        ax.scatter(xs, [k] * len(xs), s=4, color=["#8172b3", "#4c72b0", "#55a868", "#dd8452"][k])
+    ax.set_yticks(range(4))
+    ax.set_yticklabels([STATE_LABELS[k] for k in STATE_ORDER])
+    ax.set_title("contact state and step solutions over time\n" + title)
+    ax = axes[1]
+    for k, typ in enumerate(TYPE_ORDER):
+        xs = [t[i] for i in range(n) if s["type"][i] == typ]
+        ax.scatter(xs, [k] * len(xs), s=4, color=TYPE_COLOURS[typ])
+    ax.set_yticks(range(len(TYPE_ORDER)))
+    ax.set_yticklabels(TYPE_ORDER)
+    branch = [t[i] for i in range(n) if s["count"][i] > 1]
+    if branch:
+        ax.scatter(branch, [len(TYPE_ORDER) - 0.5] * len(branch), marker="v", s=10,
+                   color="#d62728", label="branch point (several solutions)")
+        ax.legend(loc="upper right", fontsize=7)
+    if heat:
+        axes[2].plot(t, s["temperature"], color="#c44e52")
+        axes[2].set_ylabel("interface T")
+    axes[-1].set_xlabel("t")
+    fig.tight_layout()
+    for fmt in args["formats"]:
+        fig.savefig("%s_state.%s" % (out, fmt), dpi=110)
+    plt.close(fig)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,191 @@
+// `cpkit map` end to end: runs the built binary (CPKIT_BINARY_DIR/apps/cpkit), checks the JSON
+// it prints, the files it writes, the exit codes for bad input, and the plotting script.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kCpkit = CPKIT_BINARY_DIR "/apps/cpkit";
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+fs::path scratch_dir() {
+  const fs::path d = fs::path(CPKIT_BINARY_DIR) / "test-cli-map";
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+Run run(const std::string& args) {
+  const fs::path d = scratch_dir();
+  const fs::path o = d / "stdout.txt", e = d / "stderr.txt";
+  const std::string cmd = kCpkit + " " + args + " >" + o.string() + " 2>" + e.string();
+  const int rc = std::system(cmd.c_str());
+  Run r;
+  r.code = rc == -1 ? -1 : WEXITSTATUS(rc);
+  r.out = slurp(o);
+  r.err = slurp(e);
+  return r;
+}
+
+int count_lines(const fs::path& p) {
+  std::ifstream f(p);
+  std::string line;
+  int n = 0;
+  while (std::getline(f, line)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("CliDirectionMapJsonListsSectorsAndCriticalDirections", "[cli][map]") {
+  const Run r = run("map --preset fig5b --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["sectors"].size() == 4);
+  REQUIRE(j["critical"].size() == 4);
+  // The three-solution sector lies between L+ = 0 and N = 0 (closed forms of model.md).
+  const auto& s0 = j["sectors"][0];
+  CHECK(s0["count"] == 3);
+  CHECK(s0["theta_from"].get<double>() == Approx(std::atan(1.375 / 3.75)).margin(1e-12));
+  CHECK(s0["theta_to"].get<double>() == Approx(std::atan(0.5)).margin(1e-12));
+  CHECK(s0["types"] == nlohmann::json({"separation", "stick", "slip+"}));
+  for (const auto& c : j["critical"]) {
+    CHECK(c["theta"].get<double>() >= 0);
+    CHECK(c["theta"].get<double>() < 2 * M_PI);
+  }
+  CHECK(j["cpkit_version"].is_string());
+  CHECK(j["method"] == "enumerate");
+  CHECK(j.contains("seconds"));
+}
+
+TEST_CASE("CliTextSummaryNamesTheNonUniqueSector", "[cli][map]") {
+  const Run r = run("map --preset fig5b");
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("3 solutions for theta in [0.35, 0.46]") != std::string::npos);
+}
+
+TEST_CASE("CliGridMapWritesCsvAndJson", "[cli][map]") {
+  const fs::path prefix = scratch_dir() / "mu_dir";
+  fs::remove(prefix.string() + ".csv");
+  const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.5 --to 3.5 "
+                    "--n 31 --theta-n 90 --threads 2 --out " + prefix.string());
+  REQUIRE(r.code == 0);
+  REQUIRE(fs::exists(prefix.string() + ".csv"));
+  REQUIRE(fs::exists(prefix.string() + ".json"));
+  REQUIRE(fs::exists(prefix.string() + "_critical.csv"));
+  CHECK(count_lines(prefix.string() + ".csv") == 31 * 90 + 1);
+  const auto j = nlohmann::json::parse(slurp(prefix.string() + ".json"));
+  CHECK(j["cells"] == 31 * 90);
+  CHECK(j["kind"] == "param-direction");
+  CHECK(j["files"]["csv"] == "mu_dir.csv");
+  REQUIRE(j["critical_values"].size() == 1);
+  CHECK(j["critical_values"][0]["x"].get<double>() == Approx(2.0).margin(1e-12));
+  CHECK(j["counts"].contains("3"));
+  // --json on a grid map prints the summary with cells and seconds.
+  const Run rj = run("map --preset state-d --n 20 --theta-n 36 --json");
+  REQUIRE(rj.code == 0);
+  const auto s = nlohmann::json::parse(rj.out);
+  CHECK(s["cells"] == 720);
+  CHECK(s.contains("seconds"));
+}
+
+TEST_CASE("CliThreadCountDoesNotChangeTheCsv", "[cli][map]") {
+  const fs::path a = scratch_dir() / "t1", b = scratch_dir() / "t3";
+  const std::string common =
+      "map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 --n 50 "
+      "--theta-n 73 --out ";
+  REQUIRE(run(common + a.string() + " --threads 1").code == 0);
+  REQUIRE(run(common + b.string() + " --threads 3").code == 0);
+  CHECK(slurp(a.string() + ".csv") == slurp(b.string() + ".csv"));
+  CHECK(slurp(a.string() + "_critical.csv") == slurp(b.string() + "_critical.csv"));
+}
+
+TEST_CASE("CliAnalyticCrossCheckOnFig5HasNoDisagreement", "[cli][map]") {
+  const Run r = run("map --preset fig5a --method analytic --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["disagreements"] == 0);
+  CHECK(j["cross_checked"] == true);
+}
+
+TEST_CASE("CliMapRejectsBadInputWithExitCode2", "[cli][map]") {
+  for (const char* args :
+       {"map --kind spiral", "map --preset nosuch", "map --mu nan", "map --a12 5",
+        "map --kind param-direction --param mu --from 2 --to 1",
+        "map --kind param-direction --param nosuch --from 0 --to 1",
+        "map --kind param-direction", "map --preset fig5b --threads -1",
+        "map --preset fig5b --method lemke", "map --bogus-option",
+        "map --preset fig5b --plot", "map --kind param-direction --param kappa --from 0 --to 1"}) {
+    CAPTURE(args);
+    const Run r = run(args);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(!r.err.empty());
+  }
+}
+
+TEST_CASE("CliPlotWritesPngAndSvg", "[cli][map][plot]") {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") != 0) {
+    WARN("skipped: /usr/bin/python3 has no matplotlib (Debian: apt-get install python3-matplotlib)");
+    return;
+  }
+  for (const char* kind : {"direction", "param-direction", "param-param"}) {
+    CAPTURE(kind);
+    const fs::path prefix = scratch_dir() / (std::string("plot_") + kind);
+    fs::remove(prefix.string() + ".png");
+    fs::remove(prefix.string() + ".svg");
+    const std::string preset = std::string(kind) == "param-param" ? "state-d-mu-kappa" : "fig5b";
+    const Run r = run("map --preset " + preset + " --kind " + kind +
+                      " --param mu --from 0.5 --to 3.5 --n 24 --n2 12 --theta-n 48 --out " +
+                      prefix.string() + " --plot");
+    REQUIRE(r.code == 0);
+    REQUIRE(fs::exists(prefix.string() + ".png"));
+    REQUIRE(fs::exists(prefix.string() + ".svg"));
+    const std::string png = slurp(prefix.string() + ".png");
+    CHECK(png.substr(1, 3) == "PNG");
+    CHECK(slurp(prefix.string() + ".svg").find("<svg") != std::string::npos);
+    const auto j = nlohmann::json::parse(slurp(prefix.string() + ".json"));
+    CHECK(j["files"]["png"] == "plot_" + std::string(kind) + ".png");
+  }
+}
+
+TEST_CASE("CliPlotWithoutMatplotlibStillWritesTheData", "[cli][map][plot]") {
+  // A Python without matplotlib: the data is written and the message says how to get the picture.
+  const fs::path fake = scratch_dir() / "fake_python.sh";
+  {
+    std::ofstream f(fake);
+    f << "#!/bin/sh\nexec /usr/bin/python3 -S -I -c 'import sys; sys.path=[p for p in sys.path "
+         "if \"dist-packages\" not in p]; sys.argv=sys.argv[1:]; "
+         "exec(open(sys.argv[0]).read())' \"$@\"\n";
+  }
+  fs::permissions(fake, fs::perms::owner_all);
+  const fs::path prefix = scratch_dir() / "nompl";
+  const std::string env_cmd = "CPKIT_PYTHON=" + fake.string() + " ";
+  const fs::path o = scratch_dir() / "nompl_err.txt";
+  fs::remove(prefix.string() + ".png");
+  fs::remove(prefix.string() + ".csv");
+  const int rc = std::system((env_cmd + kCpkit + " map --preset fig5a --out " + prefix.string() +
+                              " --plot >/dev/null 2>" + o.string())
+                                 .c_str());
+  CHECK(WEXITSTATUS(rc) == 0);
+  CHECK(fs::exists(prefix.string() + ".csv"));
+  CHECK_FALSE(fs::exists(prefix.string() + ".png"));
+  CHECK(slurp(o).find("python3-matplotlib") != std::string::npos);
+}

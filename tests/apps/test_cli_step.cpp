@@ -1,0 +1,167 @@
+// `cpkit step` and `cpkit simulate` end to end: runs the built binary (CPKIT_BINARY_DIR
+// "/apps/cpkit"), checks the JSON fields, the exit codes (0 solution / completed, 1 none /
+// stopped, 2 bad input with nothing on stdout) and the files `simulate` writes.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  static const fs::path dir = [] {
+    std::random_device rd;
+    auto d = fs::temp_directory_path() / ("cpkit_test_cli_step_" + std::to_string(rd()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Run cpkit(const std::string& args) {
+  const auto out = scratch() / "stdout.txt";
+  const auto err = scratch() / "stderr.txt";
+  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
+                          out.string() + "' 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+const std::string kLambdaNegative =
+    "step --a11 1 --a12 0.9 --a22 1 --mu 2 --P_T0 2 --P_N0 1 --g0 0 ";
+
+}  // namespace
+
+TEST_CASE("CliStepAllJsonListsEverySolution", "[cli][step]") {
+  // State d with Lambda = a11 - mu a12 = -0.8 < 0, L_+ = dF_T < 0: stick, slip+ (dP_N =
+  // -a12 dF_T / Lambda = -0.01125, hand-derived from eqn (51)) and the jump to separation.
+  const Run r = cpkit(kLambdaNegative + "--DF -0.01 0 --all --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == 3);
+  CHECK(j["types"] == nlohmann::json({"separation", "slip+", "stick"}));
+  REQUIRE(j["solutions"].size() == 3);
+  for (const auto& s : j["solutions"]) {
+    CHECK(s["kind"] == "point");
+    for (const char* k : {"DP_T", "DP_N", "Dw_T", "Dw_N", "Dw_Ti", "Dw_w", "P_T1", "P_N1", "g1"})
+      CHECK(s["values"].contains(k));
+    if (s["type"] == "slip+") CHECK(s["values"]["DP_N"].get<double>() == Approx(-0.01125));
+    if (s["type"] == "separation") {
+      CHECK(s["jump"] == true);
+      CHECK(s["values"]["P_N1"].get<double>() == 0.0);
+    }
+  }
+}
+
+TEST_CASE("CliStepJumpWhereTheRateHasNone", "[cli][step]") {
+  const Run r = cpkit(kLambdaNegative + "--DF 0.01 0 --all");
+  CHECK(r.code == 0);
+  CHECK(r.out.find("separation (point, jump)") != std::string::npos);
+  CHECK(r.out.find("the rate problem has no solution") != std::string::npos);
+}
+
+TEST_CASE("CliStepOneSolutionByTheChain", "[cli][step]") {
+  // From state b without wear, a11 > mu|a12|: the rate solution times the increment. Load
+  // (2, 1): N = a11 dF_N - a12 dF_T = 0.4 > 0, slip+ with dP_N = N / (a11 - mu a12) = 0.4/0.85.
+  const Run r = cpkit("step --a11 1 --a12 0.3 --a22 1 --mu 0.5 --P_T0 0 --P_N0 0 --g0 0 "
+                      "--DF 2 1 --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["status"] == "solved");
+  CHECK(j["type"] == "slip+");
+  CHECK(j["values"]["DP_N"].get<double>() == Approx(0.4 / 0.85));
+  CHECK(j["values"]["DP_T"].get<double>() == Approx(0.5 * 0.4 / 0.85));
+}
+
+TEST_CASE("CliStepExitCodes", "[cli][step]") {
+  // Criterion (35) with mu/k = 5: no solution above P_N = 5.
+  const Run none = cpkit("step --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
+                         "--P_T0 0 --P_N0 4.9 --g0 0 --DF 0 0.2 --all --json");
+  CHECK(none.code == 1);
+  CHECK(nlohmann::json::parse(none.out)["count"] == 0);
+  for (const std::string bad :
+       {"--P_T0 0 --P_N0 1 --g0 0.1 --DF 0 1", "--P_T0 0 --P_N0 -1 --g0 0 --DF 0 1",
+        "--P_T0 1 --P_N0 1 --g0 0 --DF 0 1", "--P_T0 0 --P_N0 1 --g0 0 --DF 0 nan",
+        "--P_T0 0 --P_N0 1 --g0 0 --DF 0", "--P_T0 0 --P_N0 1 --g0 0 --DF 0 1 --criterion 40"}) {
+    const Run r = cpkit("step --a11 1 --a12 0 --a22 1 --mu 0.5 " + bad + " --all --json");
+    CAPTURE(bad, r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(r.err.empty());
+  }
+}
+
+TEST_CASE("CliSimulateFromTheExampleConfig", "[cli][simulate]") {
+  const fs::path dir = scratch() / "sim";
+  fs::create_directories(dir);
+  const std::string cfg = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/fretting.json";
+  const std::string csv = (dir / "run.csv").string(), sum = (dir / "run.json").string();
+  const Run r = cpkit("simulate --config '" + cfg + "' --cycles 3 --csv '" + csv +
+                      "' --summary '" + sum + "' --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["outcome"] == "completed");
+  CHECK(j["steps"] == 10 + 3 * 100);
+  CHECK(j["slip_per_cycle"].size() == 3);
+  CHECK(j["final_wear_depth"].get<double>() > 0);
+  CHECK(j["final_wear_depth"].get<double>() ==
+        Approx(j["wear_integral"].get<double>()).epsilon(1e-12));
+  CHECK(j["energy"]["balance_error_rel"].get<double>() < 1e-2);
+  CHECK(j.contains("branch_points"));
+  CHECK(j.contains("temperature"));
+  // The CSV: header plus one row per step and the initial state.
+  std::ifstream in(csv);
+  std::string line;
+  int rows = 0;
+  std::getline(in, line);
+  CHECK(line.rfind("step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type", 0) == 0);
+  while (std::getline(in, line)) ++rows;
+  CHECK(rows == 311);
+  CHECK(fs::exists(sum));
+}
+
+TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
+  const Run stop = cpkit("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
+                         "--load ramp --F_N1 10 --steps 100");
+  CHECK(stop.code == 1);
+  CHECK(stop.out.find("no solution") != std::string::npos);
+  CHECK(stop.out.find("t = 0.51") != std::string::npos);
+  const fs::path bad = scratch() / "bad.json";
+  std::ofstream(bad) << R"({"parameters": {"a11": 1, "a12": 0, "a22": 1, "mu": 0.5, "typo": 1}})";
+  for (const std::string args :
+       {"simulate --config '" + bad.string() + "'", std::string("simulate --a11 1 --a12 0 --a22 1"),
+        std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --load csv"),
+        std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 0"),
+        std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --heat --T-ref -3")}) {
+    const Run r = cpkit(args);
+    CAPTURE(args, r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+  }
+}

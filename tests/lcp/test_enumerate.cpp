@@ -1,0 +1,256 @@
+// Tests of enumerate_all(): against the independent exact brute force of
+// enumerate_brute_force.hpp (integer data with singular blocks and degeneracy), against an
+// independent floating-point brute force over all 2^n complementary bases (generic data), on
+// every reference problem of tests/data/lcp (its `expected` fields), on bimatrix games with
+// known equilibrium counts, and on misuse.
+#include <catch2/catch.hpp>
+
+#include <Eigen/LU>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <vector>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/io.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "lcp/enumerate_brute_force.hpp"
+
+using cpkit::lcp::enumerate_all;
+using cpkit::lcp::EnumerationOptions;
+using cpkit::lcp::SolutionSet;
+
+namespace {
+
+brute::Found to_found(const SolutionSet& s) {
+  brute::Found f;
+  for (const auto& e : s.solutions) {
+    f.z.emplace_back(e.z.data(), e.z.data() + e.z.size());
+    f.w.emplace_back(e.w.data(), e.w.data() + e.w.size());
+  }
+  for (const auto& p : s.pieces) {
+    brute::Found::Piece pc;
+    for (int i : p.support) pc.support |= 1u << i;
+    pc.vertices = p.vertices;
+    for (const auto& r : p.rays) pc.rays.emplace_back(r.data(), r.data() + r.size());
+    f.pieces.push_back(pc);
+  }
+  f.infinite = s.infinite;
+  return f;
+}
+
+void integer_sweep(int n, unsigned seed, int count, int range, double zero_prob) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> val(-range, range);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int t = 0; t < count; ++t) {
+    std::vector<std::vector<int>> Mi(n, std::vector<int>(n));
+    std::vector<int> qi(n);
+    cpkit::Mat M(n, n);
+    cpkit::Vec q(n);
+    for (int i = 0; i < n; ++i) {
+      qi[i] = u(rng) < zero_prob ? 0 : val(rng);
+      q(i) = qi[i];
+      for (int j = 0; j < n; ++j) {
+        Mi[i][j] = u(rng) < zero_prob ? 0 : val(rng);
+        M(i, j) = Mi[i][j];
+      }
+    }
+    CAPTURE(t, M, q.transpose());
+    EnumerationOptions opt;
+    opt.max_piece_dim = 8;  // nearly-zero matrices have pieces of high dimension
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(M, q), opt);
+    REQUIRE(s.complete);
+    REQUIRE(s.ambiguous == 0);
+    for (const auto& e : s.solutions) {
+      // each basis reproduces its solution: z_i = 0 where w_i is basic... complementarity
+      REQUIRE(e.basis.size() == size_t(n));
+      for (int i = 0; i < n; ++i) REQUIRE(e.z(i) * e.w(i) == 0);
+    }
+    brute::check(Mi, qi, to_found(s));
+  }
+}
+
+/// Independent floating-point brute force for generic data: every complementary basis solved
+/// afresh with a partial-pivoting LU, feasible ones kept (deduplicated).
+std::vector<cpkit::Vec> float_brute_force(const cpkit::Mat& M, const cpkit::Vec& q) {
+  const int n = int(q.size());
+  std::vector<cpkit::Vec> sols;
+  for (unsigned S = 0; S < (1u << n); ++S) {
+    // columns: z_i (-M e_i) for i in S, w_i (e_i) otherwise; B x = q
+    cpkit::Mat B(n, n);
+    for (int i = 0; i < n; ++i)
+      B.col(i) = ((S >> i) & 1u) ? cpkit::Vec(-M.col(i)) : cpkit::Vec(cpkit::Vec::Unit(n, i));
+    Eigen::PartialPivLU<cpkit::Mat> lu(B);
+    if (std::abs(lu.determinant()) < 1e-10) continue;
+    const cpkit::Vec x = lu.solve(q);
+    if (x.minCoeff() < -1e-9) continue;
+    cpkit::Vec z = cpkit::Vec::Zero(n);
+    for (int i = 0; i < n; ++i)
+      if ((S >> i) & 1u) z(i) = x(i);
+    bool dup = false;
+    for (const auto& y : sols) dup = dup || (y - z).cwiseAbs().maxCoeff() < 1e-8;
+    if (!dup) sols.push_back(z);
+  }
+  return sols;
+}
+
+}  // namespace
+
+TEST_CASE("enumerate_all: integer LCPs with singular blocks against an exact brute force",
+          "[enumerate]") {
+  SECTION("n = 5") { integer_sweep(5, 11, 250, 2, 0.45); }
+  SECTION("n = 6") { integer_sweep(6, 12, 120, 1, 0.5); }
+  SECTION("n = 6, sparse") { integer_sweep(6, 13, 120, 2, 0.7); }
+  SECTION("n = 4 (small path)") { integer_sweep(4, 14, 200, 2, 0.45); }
+}
+
+TEST_CASE("enumerate_all: generic random LCPs against a floating-point brute force", "[enumerate]") {
+  std::mt19937 rng(2024);
+  std::normal_distribution<double> g(0, 1);
+  for (int n : {5, 6, 8, 10}) {
+    for (int t = 0; t < (n <= 6 ? 60 : 15); ++t) {
+      cpkit::Mat M(n, n);
+      cpkit::Vec q(n);
+      for (int i = 0; i < n; ++i) {
+        q(i) = g(rng);
+        for (int j = 0; j < n; ++j) M(i, j) = g(rng);
+      }
+      CAPTURE(n, t);
+      const SolutionSet s = enumerate_all(cpkit::LcpProblem(M, q));
+      const auto ref = float_brute_force(M, q);
+      REQUIRE(s.complete);
+      REQUIRE_FALSE(s.infinite);
+      REQUIRE(s.solutions.size() == ref.size());
+      for (const auto& z : ref) {
+        bool found = false;
+        for (const auto& e : s.solutions) found = found || (e.z - z).cwiseAbs().maxCoeff() < 1e-7;
+        REQUIRE(found);
+        REQUIRE(s.contains(z));
+      }
+      for (const auto& e : s.solutions) {
+        REQUIRE((M * e.z + q - e.w).cwiseAbs().maxCoeff() < 1e-9 * (1 + e.z.norm()));
+        REQUIRE(e.z.minCoeff() >= 0);
+        REQUIRE(e.w.minCoeff() >= 0);
+        REQUIRE(e.z.cwiseProduct(e.w).cwiseAbs().maxCoeff() == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("enumerate_all: every reference problem in tests/data/lcp", "[enumerate][data]") {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(CPKIT_TEST_DATA_DIR "/lcp")) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    const nlohmann::json j = nlohmann::json::parse(in);
+    const auto& ex = j.at("expected");
+    const cpkit::LcpProblem p = cpkit::read_lcp_json(entry.path().string());
+    CAPTURE(entry.path().filename().string());
+    const SolutionSet s = enumerate_all(p);
+    REQUIRE(s.complete);
+    CHECK(s.ambiguous == 0);
+    CHECK(s.infinite == ex.at("continuum").get<bool>());
+    // every listed solution is in the enumerated set (as a vertex or inside a piece)
+    for (const auto& z : ex.at("solutions")) {
+      cpkit::Vec v(z.size());
+      for (size_t i = 0; i < z.size(); ++i) v(i) = z[i].get<double>();
+      CHECK(s.contains(v, 1e-9));
+    }
+    const int num = ex.at("num_solutions").get<int>();
+    const bool listed_complete = ex.at("complete").get<bool>();
+    if (num >= 0) CHECK(int(s.solutions.size()) == num);
+    if (listed_complete && !ex.at("continuum").get<bool>())
+      CHECK(s.solutions.size() == ex.at("solutions").size());
+    if (ex.at("status") == "infeasible") CHECK(s.solutions.empty());
+  }
+  CHECK(files >= 14);
+}
+
+TEST_CASE("enumerate_all: reference continua have the documented shape", "[enumerate][data]") {
+  // CPS Example 4.4.16: M = [[1,-1],[-1,1]], q = (1,-1): the ray {(t, t+1)}
+  const SolutionSet a = enumerate_all(
+      cpkit::read_lcp_json(CPKIT_TEST_DATA_DIR "/lcp/cps_example_4_4_16.json"));
+  REQUIRE(a.solutions.size() == 1);
+  CHECK((a.solutions[0].z - Eigen::Vector2d(0, 1)).norm() < 1e-12);
+  REQUIRE(a.directions.size() == 1);
+  CHECK((a.directions[0] - Eigen::Vector2d(1, 1)).norm() < 1e-12);
+  CHECK(a.contains(Eigen::Vector2d(10, 11)));
+  CHECK_FALSE(a.contains(Eigen::Vector2d(10, 12)));
+  // CPS Remark 4.1.14: the segment z1 + z2 = 1
+  const SolutionSet b = enumerate_all(
+      cpkit::read_lcp_json(CPKIT_TEST_DATA_DIR "/lcp/cps_remark_4_1_14.json"));
+  CHECK(b.solutions.size() == 2);
+  REQUIRE(b.pieces.size() == 1);
+  CHECK(b.pieces[0].rays.empty());
+  CHECK(b.contains(Eigen::Vector2d(0.25, 0.75)));
+}
+
+TEST_CASE("enumerate_all: bimatrix games", "[enumerate][games]") {
+  // Equilibria of (A, B) with positive payoffs are the nonzero solutions of
+  // z = (x, y), M = [[0, -A], [-B^T, 0]], q = 1 [von Stengel 2002, Thm 3.4]; z = 0 also solves.
+  auto game = [](const cpkit::Mat& A, const cpkit::Mat& B) {
+    const int m = int(A.rows()), k = int(A.cols());
+    cpkit::Mat M = cpkit::Mat::Zero(m + k, m + k);
+    M.topRightCorner(m, k) = -A;
+    M.bottomLeftCorner(k, m) = -B.transpose();
+    return enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(m + k)));
+  };
+  SECTION("battle of the sexes: 3 equilibria") {
+    cpkit::Mat A(2, 2), B(2, 2);
+    A << 3, 1, 1, 2;
+    B << 2, 1, 1, 3;
+    const SolutionSet s = game(A, B);
+    CHECK(s.solutions.size() == 4);
+  }
+  SECTION("3x3 coordination game: 7 equilibria") {
+    // A = B = diag(3, 2, 1) + 1 (shifted positive): every nonempty support pairs with itself
+    cpkit::Mat A = cpkit::Mat::Constant(3, 3, 1.0);
+    A.diagonal() += Eigen::Vector3d(3, 2, 1);
+    const SolutionSet s = game(A, A);
+    CHECK(s.complete);
+    CHECK_FALSE(s.infinite);
+    CHECK(s.solutions.size() == 8);  // 7 equilibria + z = 0
+  }
+}
+
+TEST_CASE("enumerate_all: misuse and the size limit throw", "[enumerate]") {
+  cpkit::Mat M = cpkit::Mat::Identity(3, 3);
+  cpkit::Vec q = cpkit::Vec::Ones(3);
+  q(1) = std::nan("");
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, q)), cpkit::InputError);
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(2))), cpkit::InputError);
+  EnumerationOptions bad;
+  bad.tol = 0;
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), bad), cpkit::InputError);
+  const int big = 25;
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(cpkit::Mat::Identity(big, big), cpkit::Vec::Ones(big))),
+                  cpkit::InputError);
+  EnumerationOptions small;
+  small.max_size = 2;
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), small), cpkit::InputError);
+  small.max_size = 31;
+  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), small), cpkit::InputError);
+}
+
+TEST_CASE("enumerate_all: n = 24 is within the limit", "[enumerate]") {
+  // P-matrix (identity plus a small skew part): exactly one solution, found with pruning.
+  const int n = 24;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  cpkit::Mat K(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) K(i, j) = u(rng);
+  const cpkit::Mat M = cpkit::Mat::Identity(n, n) + 0.5 * (K - K.transpose());
+  cpkit::Vec q(n);
+  for (int i = 0; i < n; ++i) q(i) = u(rng);
+  const SolutionSet s = enumerate_all(cpkit::LcpProblem(M, q));
+  REQUIRE(s.complete);
+  REQUIRE(s.solutions.size() == 1);  // positive definite symmetric part => unique solution
+  const auto& e = s.solutions[0];
+  CHECK((M * e.z + q - e.w).cwiseAbs().maxCoeff() < 1e-10);
+  CHECK(e.z.minCoeff() >= 0);
+  CHECK(e.w.minCoeff() >= 0);
+}
