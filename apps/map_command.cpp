@@ -280,6 +280,13 @@ void print_direction_text(const DirectionMap& m) {
   if (all_unique) std::cout << "summary: exactly one solution for every direction\n";
 }
 
+void report_unreliable(int64_t n, const std::string& what) {
+  if (n == 0) return;
+  std::cerr << "cpkit map: " << n << ' ' << what
+            << " where the enumeration met sign tests too close to call (their count may be "
+               "wrong near a type boundary; 'unreliable' in the JSON)\n";
+}
+
 void report_disagreements(int64_t n, const std::string& what) {
   if (n == 0) return;
   std::cerr << "cpkit map: " << n << ' ' << what
@@ -329,6 +336,7 @@ int run_map(const MapArgs& a) {
     j["seconds"] = clock.seconds();
     disagreements = m.disagreements;
     report_disagreements(m.disagreements, "directions");
+    report_unreliable(m.unreliable, "evaluations");
     if (m.inconsistent_sectors > 0)
       std::cerr << "cpkit map: " << m.inconsistent_sectors
                 << " sectors are not uniform (a missed critical direction?)\n";
@@ -346,6 +354,7 @@ int run_map(const MapArgs& a) {
     j.update(to_json(m));
     disagreements = m.disagreements;
     report_disagreements(m.disagreements, "cells");
+    report_unreliable(m.unreliable, "cells");
     if (m.disagreements > 0) {
       int shown = 0;
       for (int i = 0; i < m.axis.n && shown < 10; ++i)
@@ -389,6 +398,7 @@ int run_map(const MapArgs& a) {
     j.update(to_json(m));
     disagreements = m.disagreements;
     report_disagreements(m.disagreements, "cells");
+    report_unreliable(m.unreliable, "direction-map evaluations");
     if (!prefix.empty()) {
       write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
       write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });

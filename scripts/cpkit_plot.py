@@ -83,8 +83,8 @@ def plot_direction(summary, base, plt):
     r_out = r0 + len(present) * (width + 0.02)
     # Faint guide circles and the load axes.
     for t in present:
-        ax.add_patch(Wedge((0, 0), ring[t] + width, 0, 360, width=width, facecolor="none",
-                           edgecolor="#cccccc", linewidth=0.6))
+        ax.add_patch(Wedge((0, 0), ring[t] + width, 0, 360, width=width, facecolor="#f2f2f2",
+                           edgecolor="none"))
     ax.annotate("", xy=(1.45, 0), xytext=(-1.45, 0),
                 arrowprops=dict(arrowstyle="->", color="#888888", lw=0.8))
     ax.annotate("", xy=(0, 1.45), xytext=(0, -1.45),

@@ -1,7 +1,15 @@
 #!/usr/bin/env bash
-# Set-up + build + the main job (README's first command).
+# Set-up + build + the main job (README's first command): the non-uniqueness maps of the rate
+# problem in the intermediate contact state b (Fig. 5 of Stromberg, Johansson & Klarbring 1996).
+# Writes PNG/SVG pictures, CSV data and JSON summaries into ${CPKIT_OUT_DIR:-<repo>/out}.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"
 build="${CPKIT_BUILD_DIR:-$root/build}"
-"$build/apps/cpkit" lcp solve "$root/tests/data/lcp/murty_exp_6.json"
+out="${CPKIT_OUT_DIR:-$root/out}"
+mkdir -p "$out"
+echo "== Fig. 5(b): solutions per load direction, state b, mu = 3 > a11/a12 = 2"
+"$build/apps/cpkit" map --preset fig5b --out "$out/fig5b" --plot
+echo "== mu x load direction, state b (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25)"
+"$build/apps/cpkit" map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 \
+  --n 400 --theta-n 720 --out "$out/mu_direction" --plot

@@ -1,6 +1,7 @@
 // The automatic solver chain (see auto_chain.hpp).
 #include "cpkit/lcp/auto_chain.hpp"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -82,6 +83,21 @@ std::optional<Certificate> farkas_search(const LcpProblem& p, const CommonOption
   return cert;
 }
 
+/// A runaway point: ||z||_inf > 1e10 (1 + ||q||_inf) for LCPs, 1e10 (1 + ||finite bounds||)
+/// for MCPs.
+bool diverged(const LcpProblem& p, const Vec& z) {
+  return z.lpNorm<Eigen::Infinity>() > 1e10 * (1 + p.q.lpNorm<Eigen::Infinity>());
+}
+bool diverged(const BoxLcpProblem& p, const Vec& z) { return diverged(p.lcp, z); }
+bool diverged(const McpProblem& p, const Vec& z) {
+  double ref = 1 + (p.x0.size() == p.n ? p.x0.lpNorm<Eigen::Infinity>() : 0.0);
+  for (Eigen::Index i = 0; i < p.n; ++i) {
+    if (p.lower.size() == p.n && std::isfinite(p.lower(i))) ref = std::max(ref, std::abs(p.lower(i)));
+    if (p.upper.size() == p.n && std::isfinite(p.upper(i))) ref = std::max(ref, std::abs(p.upper(i)));
+  }
+  return z.lpNorm<Eigen::Infinity>() > 1e10 * ref;
+}
+
 template <class Problem>
 SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
   throw_if_invalid(problem.validate(), "auto");
@@ -115,6 +131,13 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
       r.message = std::string("exception: ") + e.what();
     }
     if (r.solver.empty()) r.solver = name;
+    if (is_solution(r.status) && diverged(problem, r.z)) {
+      // finalize()'s scale grows with |M| |z|, so a runaway z can pass it: not an answer.
+      r.status = Status::kNumericalFailure;
+      r.message += "; rejected by auto: ||z||_inf = " +
+                   std::to_string(r.z.lpNorm<Eigen::Infinity>()) + " counts as diverged";
+      r.z.resize(0);
+    }
     attempts.push_back({name, r.status, r.residuals.natural, r.seconds, r.message});
     if (r.status == Status::kSolved || r.status == Status::kInfeasible) {
       chosen = std::move(r);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <limits>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/residuals.hpp"
@@ -40,12 +41,17 @@ bool is_disagreement(Verdict v) noexcept {
 }
 
 CrossVerifyReport cross_verify(const LcpProblem& problem, const CrossVerifyOptions& options) {
+  return cross_verify(problem, options, solvers());
+}
+
+CrossVerifyReport cross_verify(const LcpProblem& problem, const CrossVerifyOptions& options,
+                               const SolverRegistry& registry) {
   throw_if_invalid(problem.validate(), "cross_verify");
   throw_if_invalid(options.validate(), "cross_verify");
   CrossVerifyReport rep;
   rep.set = enumerate_all(problem, options.enumeration);
   const SolutionSet& set = rep.set;
-  for (const SolverEntry& entry : solvers().entries()) {
+  for (const SolverEntry& entry : registry.entries()) {
     if (!entry.solve_lcp || !entry.accepts(problem)) continue;
     if (std::find(options.skip.begin(), options.skip.end(), entry.info.name) != options.skip.end())
       continue;

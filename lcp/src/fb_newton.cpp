@@ -29,8 +29,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kDefaultMaxIterations = 200;
 /// Dense systems of at least this size are factorized by LAPACK's dgetrf when cpkit was built
-/// with LAPACK (blocked, vectorized BLAS); smaller ones by Eigen's PartialPivLU.
-constexpr Eigen::Index kLapackMinSize = 48;
+/// with LAPACK (blocked, vectorized BLAS); smaller ones by Eigen's PartialPivLU, which avoids
+/// the threading overhead of a multi-threaded BLAS on small matrices.
+constexpr Eigen::Index kLapackMinSize = 150;
 /// An accepted step with Psi_new > (1 - kWeakDecrease) Psi_old makes little progress;
 /// kWeakLimit of them in a row count as stagnation (watchdog trigger).
 constexpr double kWeakDecrease = 1e-4;
@@ -68,8 +69,8 @@ inline double phi(double a, double b, double r, double lambda) {
 /// Gradient (ga, gb) of phi at (a, b). At r = 0 the limiting gradient along the direction
 /// (da, db) (De Luca-Facchinei-Kanzow); returns false when r = 0 and the direction is zero
 /// (the caller then supplies a direction).
-inline bool phi_grad(double a, double b, double r, double da, double db, double lambda,
-                     double& ga, double& gb) {
+inline bool phi_grad(double a, double b, double r, double da, double db, double lambda, double& ga,
+                     double& gb) {
   if (r > 0) {
     ga = 1.0 - a / r;
     gb = 1.0 - b / r;
@@ -158,8 +159,10 @@ struct AffineSource {
   double q_norm = 0;
 
   bool eval(const Vec& x, Vec& F) const {
-    if (Ms) F.noalias() = *Ms * x;
-    else F.noalias() = *M * x;
+    if (Ms)
+      F.noalias() = *Ms * x;
+    else
+      F.noalias() = *M * x;
     F += *q;
     return true;
   }
@@ -178,9 +181,7 @@ struct CallbackSource {
     if (!p->F(x, F)) return false;
     return F.size() == x.size() && F.allFinite();
   }
-  double scale(const Vec& /*x*/, const Vec& F) const {
-    return 1.0 + F.lpNorm<Eigen::Infinity>();
-  }
+  double scale(const Vec& /*x*/, const Vec& F) const { return 1.0 + F.lpNorm<Eigen::Infinity>(); }
 };
 
 // ---- linear algebra back ends ------------------------------------------------------------------
@@ -348,7 +349,7 @@ struct SparseAlgebra {
     return true;
   }
 
-  bool symmetric = false;    // J == J^T (set for affine problems)
+  bool symmetric = false;  // J == J^T (set for affine problems)
   bool ldlt_usable = true;
   bool ldlt_analysed = false;
   Eigen::SimplicialLDLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
@@ -419,10 +420,9 @@ class FbDriver {
   FbDriver(const Source& src, Algebra& la, Bounds b, const FbNewtonOptions& o, Eigen::Index n)
       : src_(src), la_(la), l_(*b.lower), u_(*b.upper), o_(o), n_(n) {
     kinds_.resize(static_cast<size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i)
-      kinds_[static_cast<size_t>(i)] = bound_kind(l_[i], u_[i]);
-    for (Vec* v : {&x_, &F_, &Phi_, &Da_, &Db_, &g_, &d_, &rhs_, &xt_, &Ft_, &Phit_, &tmp_,
-                   &tmp2_, &z_, &jz_, &best_x_, &best_res_x_, &xp_, &Fp_, &Phip_})
+    for (Eigen::Index i = 0; i < n; ++i) kinds_[static_cast<size_t>(i)] = bound_kind(l_[i], u_[i]);
+    for (Vec* v : {&x_, &F_, &Phi_, &Da_, &Db_, &g_, &d_, &rhs_, &xt_, &Ft_, &Phit_, &tmp_, &z_,
+                   &jz_, &best_x_, &best_res_x_, &xp_, &Fp_, &Phip_})
       v->resize(n);
     degenerate_.reserve(static_cast<size_t>(n));
     const int m = std::max(1, o.nonmonotone_memory);
@@ -463,8 +463,8 @@ class FbDriver {
     Status claim = Status::kIterationLimit;
     std::string why;
     int it = 0;
-    int weak = 0;      // consecutive iterations with little decrease of Psi
-    int escapes = 0;   // watchdog escapes used
+    int weak = 0;     // consecutive iterations with little decrease of Psi
+    int escapes = 0;  // watchdog escapes used
     bool newton_ok = false;
     // Jacobian, row coefficients, gradient and Newton direction at x_ (false: no Jacobian).
     auto prepare = [&]() {
@@ -540,7 +540,8 @@ class FbDriver {
           if (!newton) ++r.gradient_steps;
           weak = psit > (1.0 - kWeakDecrease) * psi ? weak + 1 : 0;
           accept(t, psit, newton ? "newton" : "gradient");
-          if (weak >= kWeakLimit) stagnation = "no progress in " + std::to_string(weak) + " iterations";
+          if (weak >= kWeakLimit)
+            stagnation = "no progress in " + std::to_string(weak) + " iterations";
         } else {
           stagnation = "line search failed along the gradient at iteration " + std::to_string(it);
         }
@@ -652,8 +653,8 @@ class FbDriver {
   void row_coefficients() {
     degenerate_.clear();
     for (Eigen::Index i = 0; i < n_; ++i)
-      if (!component_grad(kinds_[static_cast<size_t>(i)], x_[i], F_[i], l_[i], u_[i], lambda_,
-                          0.0, 0.0, Da_[i], Db_[i]))
+      if (!component_grad(kinds_[static_cast<size_t>(i)], x_[i], F_[i], l_[i], u_[i], lambda_, 0.0,
+                          0.0, Da_[i], Db_[i]))
         degenerate_.push_back(i);
     if (degenerate_.empty()) return;
     z_.setZero();
@@ -687,7 +688,7 @@ class FbDriver {
   const FbNewtonOptions& o_;
   Eigen::Index n_;
   std::vector<BoundKind> kinds_;
-  Vec x_, F_, Phi_, Da_, Db_, g_, d_, rhs_, xt_, Ft_, Phit_, tmp_, tmp2_, z_, jz_, best_x_, best_res_x_;
+  Vec x_, F_, Phi_, Da_, Db_, g_, d_, rhs_, xt_, Ft_, Phit_, tmp_, z_, jz_, best_x_, best_res_x_;
   Vec xp_, Fp_, Phip_;  // previous watchdog trial
   std::vector<Eigen::Index> degenerate_;
   std::vector<double> history_;
@@ -764,7 +765,8 @@ std::string FbNewtonOptions::validate(Eigen::Index n) const {
 }
 
 SolveResult solve_fb_newton(const LcpProblem& problem, const FbNewtonOptions& options) {
-  const std::string what = "fb-newton: LCP" + (problem.name.empty() ? "" : " '" + problem.name + "'");
+  const std::string what =
+      "fb-newton: LCP" + (problem.name.empty() ? "" : " '" + problem.name + "'");
   throw_if_invalid(problem.validate(), what);
   throw_if_invalid(options.validate(problem.size()), what + " options");
   const Eigen::Index n = problem.size();
@@ -782,7 +784,8 @@ SolveResult solve_fb_newton(const BoxLcpProblem& problem, const FbNewtonOptions&
 }
 
 SolveResult solve_fb_newton(const McpProblem& problem, const FbNewtonOptions& options) {
-  const std::string what = "fb-newton: MCP" + (problem.name.empty() ? "" : " '" + problem.name + "'");
+  const std::string what =
+      "fb-newton: MCP" + (problem.name.empty() ? "" : " '" + problem.name + "'");
   throw_if_invalid(problem.validate(), what);
   throw_if_invalid(options.validate(problem.size()), what + " options");
   const Eigen::Index n = problem.size();
@@ -793,8 +796,8 @@ SolveResult solve_fb_newton(const McpProblem& problem, const FbNewtonOptions& op
   if (problem.sparse_jacobian) {
     SparseAlgebra la(n);
     la.J = &la.J_own;
-    FbDriver<CallbackSource, SparseAlgebra> drv(src, la, {&problem.lower, &problem.upper},
-                                                options, n);
+    FbDriver<CallbackSource, SparseAlgebra> drv(src, la, {&problem.lower, &problem.upper}, options,
+                                                n);
     r = drv.run(x0, [&](const Vec& x, const Vec&, SolveResult& res) {
       ++res.jacobian_evals;
       return eval_sparse_jacobian(problem, x, la);

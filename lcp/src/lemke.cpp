@@ -211,9 +211,10 @@ SolveResult LemkeRun::finish(SolveResult claim) {
   claim.trace = std::move(trace_);
   SolveResult r = finalize(problem_, std::move(claim), o_.common);
   r.seconds = clock_.seconds();
-  log(o_.common.log, o_.common.verbosity, LogLevel::kInfo,
-      "lemke: " + std::string(to_string(r.status)) + " after " + std::to_string(r.iterations) +
-          " pivots");
+  if (o_.common.log != nullptr)
+    log(o_.common.log, o_.common.verbosity, LogLevel::kInfo,
+        "lemke: " + std::string(to_string(r.status)) + " after " +
+            std::to_string(r.iterations) + " pivots");
   return r;
 }
 
@@ -338,8 +339,9 @@ SolveResult LemkeRun::run() {
   }
   claim.iterations = pivots;
   if (claim.status == Status::kSolved) {
-    // The final basis is complementary: recompute its values from the data.
-    if (!basis_.refactor()) {
+    // The final basis is complementary: recompute its values from the data (refactorizing
+    // first when the inverse fails the accuracy check).
+    if (!(basis_.hinv_quality() <= kRefactorTol) && !basis_.refactor()) {
       claim.status = Status::kNumericalFailure;
       claim.message = "final basis is singular";
     } else {

@@ -108,6 +108,9 @@ std::string MpccOptions::validate() const {
 
 namespace {
 
+/// ||x||_inf beyond kDivergence * (1 + ||x_start||_inf) counts as diverged.
+constexpr double kDivergence = 1e10;
+
 using detail::NlpEvaluator;
 using detail::NlpOutcome;
 using detail::PairMode;
@@ -176,7 +179,7 @@ class Driver {
         const Step s = solve("scholtes", t, std::vector<PairMode>(p_.p, PairMode::kRelaxed), t,
                              0.0, x, std::min(1e-8, 1e-2 * t));
         if (s.usable && s.converged) x = s.x;  // warm start only from a converged NLP
-        if (s.usable && caller_stops(s.x)) return finish();
+        if (s.usable && s.converged && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
       }
     } else {
@@ -185,7 +188,7 @@ class Driver {
         const Step s = solve("penalty", rho, std::vector<PairMode>(p_.p, PairMode::kPenalty), 0.0,
                              rho, x);
         if (s.usable && s.converged) x = s.x;  // an unbounded penalty NLP (small rho) diverges
-        if (s.usable && caller_stops(s.x)) return finish();
+        if (s.usable && s.converged && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
       }
     }
@@ -240,7 +243,10 @@ class Driver {
     sub.nlp_status = out.status;
     sub.nlp_converged = out.converged;
     sub.iterations = out.iterations;
-    const Measure m = measure(p_, out.x);
+    Measure m = measure(p_, out.x);
+    // Diverged iterates (e.g. an unbounded penalty NLP) are never candidates.
+    if (out.x.lpNorm<Eigen::Infinity>() > kDivergence * (1 + x0.lpNorm<Eigen::Infinity>()))
+      m.ok = false;
     sub.objective = m.f;
     sub.complementarity = m.complementarity;
     sub.infeasibility = m.infeasibility;

@@ -258,6 +258,16 @@ std::string trace_kind(const MpccSubproblem& s) {
   return o.str();
 }
 
+/// Points beyond 1e10 (1 + ||x0||_inf + finite bounds) are treated as diverged.
+bool within_divergence_bound(const Vec& z, const McpProblem& mcp) {
+  double ref = 1 + (mcp.x0.size() == mcp.n ? mcp.x0.lpNorm<Eigen::Infinity>() : 0.0);
+  for (Eigen::Index i = 0; i < mcp.n; ++i) {
+    if (std::isfinite(mcp.lower(i))) ref = std::max(ref, std::abs(mcp.lower(i)));
+    if (std::isfinite(mcp.upper(i))) ref = std::max(ref, std::abs(mcp.upper(i)));
+  }
+  return z.allFinite() && z.lpNorm<Eigen::Infinity>() <= 1e10 * ref;
+}
+
 /// Uniform double in [0, 1) from the 53 high bits of a 64-bit draw (portable across libraries).
 double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
@@ -291,12 +301,17 @@ SolveResult solve_via_mpcc(const Problem& original, const McpProblem& mcp, bool 
     if (attempt > 0) {
       if (!(mo.common.time_limit_s > 0)) break;
       mpcc.x0 = restart_point(mcp, mpcc.n, rng);
+      if (attempt % 2 == 1)  // odd restarts use the other reformulation
+        mo.reformulation = mo.reformulation == MpccReformulation::kScholtes
+                               ? MpccReformulation::kPenalty
+                               : MpccReformulation::kScholtes;
     }
     // Stop the sequence as soon as the Newton-polished point verifies on the original problem.
     mo.early_stop = [&](const Vec& y) {
       if (!options.newton_polish) return false;
       Vec z = y.head(mcp.n);
       newton_polish(mcp, z);
+      if (!within_divergence_bound(z, mcp)) return false;
       SolveResult probe;
       probe.z = z;
       probe.status = Status::kSolved;
@@ -313,19 +328,29 @@ SolveResult solve_via_mpcc(const Problem& original, const McpProblem& mcp, bool 
     claim.status = is_solution(mr.status) || mr.stopped_early ? Status::kSolved : mr.status;
     if (options.newton_polish && newton_polish(mcp, claim.z))
       claim.message += "; active-set Newton polish applied";
+    if (!within_divergence_bound(claim.z, mcp)) {
+      // finalize()'s scale grows with |M| |z|: never hand it a diverged point.
+      claim.message += "; iterates diverged (||z||_inf = " +
+                       std::to_string(claim.z.lpNorm<Eigen::Infinity>()) + "), point dropped";
+      claim.z.resize(0);
+      claim.status = Status::kNumericalFailure;
+    }
     if (options.mpcc.common.record_trace) {
       int k = 0;
       for (const auto& s : mr.subproblems)
         claim.trace.push_back(
             TraceEntry{k++, s.complementarity, s.parameter, trace_kind(s), -1, -1});
     }
-    if (mr.status == Status::kStalled)
+    if (mr.status == Status::kStalled && !mr.stopped_early)
       claim.message += "; the relaxation ended with complementarity violated";
     if (attempt > 0) claim.message += "; restart " + std::to_string(attempt) + " (seeded start)";
     SolveResult r = finalize(original, std::move(claim), options.mpcc.common);
+    auto merit = [](const SolveResult& x) {
+      return x.z.size() == 0 ? std::numeric_limits<double>::infinity() : x.residuals.natural;
+    };
     const bool better = !best || (is_solution(r.status) && !is_solution(best->status)) ||
                         (is_solution(r.status) == is_solution(best->status) &&
-                         r.residuals.natural < best->residuals.natural);
+                         merit(r) < merit(*best));
     if (better) {
       best = std::move(r);
       best_details = std::move(mr);

@@ -22,12 +22,14 @@ struct Evaluator {
   bool cross;
   int evaluations = 0;
   int disagreements = 0;
+  int unreliable = 0;
 
   RateSummary operator()(const LoadRate& load, RateSummary& check) {
     const RateSummary s = summarize_rate_problem(params, state, load, method);
     check = cross ? summarize_rate_problem(params, state, load, RateMethod::kEnumerate) : s;
     ++evaluations;
-    if (s != check) ++disagreements;
+    if (!s.reliable || !check.reliable) ++unreliable;
+    if (!same_solution_set(s, check)) ++disagreements;
     return s;
   }
 };
@@ -38,10 +40,6 @@ struct Arc {
   bool consistent = true;
 };
 }  // namespace
-
-bool operator==(const RateSummary& a, const RateSummary& b) noexcept {
-  return a.count == b.count && a.types == b.types;
-}
 
 std::string MapOptions::validate() const {
   if (threads < 0) return "threads must be >= 0 (0: all cores), got " + std::to_string(threads);
@@ -80,7 +78,8 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
     RateSummary c1, c2;
     const RateSummary q1 = eval(at_angle(a.from + 0.25 * w), c1);
     const RateSummary q3 = eval(at_angle(a.from + 0.75 * w), c2);
-    a.consistent = q1 == a.summary && q3 == a.summary && c1 == a.check && c2 == a.check;
+    a.consistent = same_solution_set(q1, a.summary) && same_solution_set(q3, a.summary) &&
+                   same_solution_set(c1, a.check) && same_solution_set(c2, a.check);
   }
   for (const Arc& a : arcs)
     if (!a.consistent) ++map.inconsistent_sectors;
@@ -95,9 +94,11 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
     cand[i].summary = eval(candidates[i].load, cand[i].check);
     const Arc& before = arcs[(i + m - 1) % m];
     const Arc& after = arcs[i];
-    is_critical[i] = cand[i].summary != before.summary || cand[i].summary != after.summary ||
-                     before.summary != after.summary || cand[i].check != before.check ||
-                     cand[i].check != after.check;
+    is_critical[i] = !same_solution_set(cand[i].summary, before.summary) ||
+                     !same_solution_set(cand[i].summary, after.summary) ||
+                     !same_solution_set(before.summary, after.summary) ||
+                     !same_solution_set(cand[i].check, before.check) ||
+                     !same_solution_set(cand[i].check, after.check);
   }
 
   std::vector<std::size_t> crit;
@@ -134,6 +135,7 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
   }
   map.evaluations = eval.evaluations;
   map.disagreements = eval.disagreements;
+  map.unreliable = eval.unreliable;
   return map;
 }
 

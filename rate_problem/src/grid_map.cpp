@@ -261,6 +261,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   map.types.assign(cells, 0);
   if (map.cross_checked) map.disagree.assign(cells, 0);
   std::vector<int64_t> row_disagree(static_cast<std::size_t>(axis.n), 0);
+  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(axis.n), 0);
   std::vector<std::vector<CriticalDirectionPoint>> row_crit(static_cast<std::size_t>(axis.n));
 
   map.threads = resolve_threads(options.threads, axis.n);
@@ -274,11 +275,13 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     uint8_t* types = map.types.data() + base;
     const LoadRate* load = loads.data();
     // The cell loop: allocation-free (summarize_rate_problem is).
+    int64_t n_unreliable = 0;
     if (!cross) {
       for (int j = 0; j < theta_n; ++j) {
         const RateSummary s = summarize_rate_problem(p, st, load[j], method);
         count[j] = static_cast<int8_t>(s.count);
         types[j] = static_cast<uint8_t>(s.types);
+        n_unreliable += !s.reliable;
       }
     } else {
       uint8_t* dis = map.disagree.data() + base;
@@ -288,11 +291,13 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
         const RateSummary e = summarize_rate_problem(p, st, load[j], RateMethod::kEnumerate);
         count[j] = static_cast<int8_t>(s.count);
         types[j] = static_cast<uint8_t>(s.types);
-        dis[j] = s != e ? 1 : 0;
+        dis[j] = same_solution_set(s, e) ? 0 : 1;
         n_dis += dis[j];
+        n_unreliable += !s.reliable || !e.reliable;
       }
       row_disagree[i] = n_dis;
     }
+    row_unreliable[i] = n_unreliable;
     // The exact critical directions of this row (curves theta_c(x) over the map).
     MapOptions dopt;
     dopt.method = method;
@@ -304,6 +309,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
 
   for (int i = 0; i < axis.n; ++i) {
     map.disagreements += row_disagree[i];
+    map.unreliable += row_unreliable[i];
     for (auto& c : row_crit[i]) map.critical_directions.push_back(std::move(c));
   }
   for (const auto& z : criterion_zeros(params, state, axis))
@@ -354,7 +360,8 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   map.max_count.assign(cells, 0);
   map.types.assign(cells, 0);
   if (map.cross_checked) map.disagree.assign(cells, 0);
-  std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis);
+  std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis),
+      row_unr(row_dis);
   map.threads = resolve_threads(options.threads, n1);
 
   auto row = [&](int i) {
@@ -391,12 +398,14 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
         row_dis[i] += map.disagree[k];
       }
       row_inc[i] += dm.inconsistent_sectors;
+      row_unr[i] += dm.unreliable;
     }
   };
   run_rows(n1, map.threads, row, progress);
   for (int i = 0; i < n1; ++i) {
     map.disagreements += row_dis[i];
     map.inconsistent_sectors += row_inc[i];
+    map.unreliable += row_unr[i];
   }
 
   // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed).

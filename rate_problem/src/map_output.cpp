@@ -14,9 +14,16 @@ constexpr SolutionType kTypes[] = {SolutionType::kOpen, SolutionType::kSeparatio
                                    SolutionType::kStick, SolutionType::kSlipPlus,
                                    SolutionType::kSlipMinus};
 
+/// Grid cells: 12 significant digits (the grid values themselves are not exact anyway).
 std::string num(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.12g", x);
+  return buf;
+}
+/// Critical directions and values: round-trip precision.
+std::string num17(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
 }
 
@@ -93,7 +100,7 @@ nlohmann::json to_json(const DirectionMap& map) {
                         {"count", count_to_json(s.summary.count)},
                         {"types", types_to_json(s.summary.types)}};
     if (!s.consistent) j["consistent"] = false;
-    if (map.cross_checked && s.check != s.summary)
+    if (map.cross_checked && !same_solution_set(s.check, s.summary))
       j["enumerate"] = {{"count", count_to_json(s.check.count)},
                         {"types", types_to_json(s.check.types)}};
     sectors.push_back(j);
@@ -107,7 +114,7 @@ nlohmann::json to_json(const DirectionMap& map) {
                         {"conditions", c.conditions},
                         {"count", count_to_json(c.summary.count)},
                         {"types", types_to_json(c.summary.types)}};
-    if (map.cross_checked && c.check != c.summary)
+    if (map.cross_checked && !same_solution_set(c.check, c.summary))
       j["enumerate"] = {{"count", count_to_json(c.check.count)},
                         {"types", types_to_json(c.check.types)}};
     critical.push_back(j);
@@ -120,18 +127,19 @@ nlohmann::json to_json(const DirectionMap& map) {
           {"evaluations", map.evaluations},
           {"cross_checked", map.cross_checked},
           {"disagreements", map.disagreements},
-          {"inconsistent_sectors", map.inconsistent_sectors}};
+          {"inconsistent_sectors", map.inconsistent_sectors},
+          {"unreliable", map.unreliable}};
 }
 
 void write_csv(const DirectionMap& map, std::ostream& out) {
   out << "kind,theta_from,theta_to,count,types,conditions\n";
   for (const auto& s : map.sectors)
-    out << "sector," << num(s.theta_from) << ',' << num(s.theta_to) << ','
+    out << "sector," << num17(s.theta_from) << ',' << num17(s.theta_to) << ','
         << count_to_string(s.summary.count) << ',' << types_to_string(s.summary.types) << ",\n";
   for (const auto& c : map.critical) {
     std::string cond;
     for (const auto& x : c.conditions) cond += (cond.empty() ? "" : "|") + x;
-    out << "critical," << num(c.theta) << ',' << num(c.theta) << ','
+    out << "critical," << num17(c.theta) << ',' << num17(c.theta) << ','
         << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << ','
         << cond << '\n';
   }
@@ -166,6 +174,7 @@ nlohmann::json to_json(const ParamDirectionMap& map) {
           {"critical_direction_points", map.critical_directions.size()},
           {"cross_checked", map.cross_checked},
           {"disagreements", map.disagreements},
+          {"unreliable", map.unreliable},
           {"threads", map.threads},
           {"seconds", map.seconds}};
 }
@@ -198,9 +207,9 @@ void write_csv(const ParamDirectionMap& map, std::ostream& out) {
 
 void write_critical_csv(const ParamDirectionMap& map, std::ostream& out) {
   out << "curve,x,theta,conditions,count,types\n";
-  for (const auto& c : map.critical_values) out << c.name << ',' << num(c.x) << ",,,,\n";
+  for (const auto& c : map.critical_values) out << c.name << ',' << num17(c.x) << ",,,,\n";
   for (const auto& c : map.critical_directions)
-    out << "direction," << num(c.x) << ',' << num(c.theta) << ',' << c.conditions << ','
+    out << "direction," << num17(c.x) << ',' << num17(c.theta) << ',' << c.conditions << ','
         << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << '\n';
 }
 
@@ -226,6 +235,7 @@ nlohmann::json to_json(const ParamParamMap& map) {
           {"cross_checked", map.cross_checked},
           {"disagreements", map.disagreements},
           {"inconsistent_sectors", map.inconsistent_sectors},
+          {"unreliable", map.unreliable},
           {"threads", map.threads},
           {"seconds", map.seconds}};
 }
@@ -248,7 +258,7 @@ void write_csv(const ParamParamMap& map, std::ostream& out) {
 
 void write_critical_csv(const ParamParamMap& map, std::ostream& out) {
   out << "curve,x,y\n";
-  for (const auto& c : map.critical_curve) out << c.name << ',' << num(c.x) << ',' << num(c.y) << '\n';
+  for (const auto& c : map.critical_curve) out << c.name << ',' << num17(c.x) << ',' << num17(c.y) << '\n';
 }
 
 }  // namespace cpkit::rate

@@ -3,7 +3,6 @@
 // known solutions from the literature (closed forms are derived in the comments); every answer
 // is also re-checked here against the MCP conditions computed in this file.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 #include <string>

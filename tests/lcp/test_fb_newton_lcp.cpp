@@ -3,7 +3,6 @@
 // [Cottle-Pang-Stone 1992, Thm 3.3.7], so it must equal Lemke's), degenerate and infeasible
 // problems, and NaN data.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -84,7 +83,8 @@ TEST_CASE("fb-newton on the reference LCP files", "[fb][lcp][files]") {
       double best = std::numeric_limits<double>::infinity();
       for (const auto& s : ex.at("solutions")) {
         Vec zs(p.size());
-        for (Eigen::Index i = 0; i < p.size(); ++i) zs[i] = s.at(static_cast<size_t>(i)).get<double>();
+        for (Eigen::Index i = 0; i < p.size(); ++i)
+          zs[i] = s.at(static_cast<size_t>(i)).get<double>();
         best = std::min(best, (zs - r.z).lpNorm<Eigen::Infinity>());
       }
       CHECK(best <= 1e-7 * (1 + r.z.lpNorm<Eigen::Infinity>()));
@@ -123,7 +123,8 @@ TEST_CASE("random P-matrix LCPs: the unique solution equals Lemke's", "[fb][lcp]
       o.nonmonotone_memory = 4;
       const auto fb2 = solve_fb_newton(p, o);
       REQUIRE(fb2.status == Status::kSolved);
-      CHECK((fb2.z - lk.z).lpNorm<Eigen::Infinity>() <= 1e-8 * (1 + lk.z.lpNorm<Eigen::Infinity>()));
+      CHECK((fb2.z - lk.z).lpNorm<Eigen::Infinity>() <=
+            1e-8 * (1 + lk.z.lpNorm<Eigen::Infinity>()));
     }
   }
 }

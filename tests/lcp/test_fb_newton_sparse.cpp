@@ -3,7 +3,6 @@
 // with a projected SOR reference written here, a non-symmetric (convection) variant that takes
 // the SparseLU path, and the committed Matrix Market example read through its JSON file.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>

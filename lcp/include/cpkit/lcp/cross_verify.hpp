@@ -21,6 +21,7 @@
 
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/problem.hpp"
+#include "cpkit/core/registry.hpp"
 #include "cpkit/core/status.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 
@@ -69,5 +70,8 @@ struct CrossVerifyReport {
 
 /// Throws InputError for invalid problems/options or n above the enumeration's size limit.
 CrossVerifyReport cross_verify(const LcpProblem& problem, const CrossVerifyOptions& options = {});
+/// The same against the solvers of `registry` (tests, or a subset of solvers).
+CrossVerifyReport cross_verify(const LcpProblem& problem, const CrossVerifyOptions& options,
+                               const SolverRegistry& registry);
 
 }  // namespace cpkit::lcp

@@ -23,21 +23,28 @@
 /// an Armijo step on Psi (non-monotone with nonmonotone_memory > 1). When H is singular or d is
 /// not a sufficient descent direction (grad Psi . d > -descent_rho ||d||^descent_power) the step
 /// is along -grad Psi = -H^T Phi instead. Psi can have local minimizers that are not solutions
-/// (Billups' problem from x = 0): on stagnation a bounded watchdog of undamped Newton steps is
-/// tried before giving up (options watchdog_steps, max_escapes).
+/// (Billups' problem from x = 0): on stagnation a bounded watchdog of Newton steps without the
+/// Armijo test is tried before giving up (options watchdog_steps, max_escapes).
 ///
-/// Linear algebra: dense partial-pivoting LU for dense storage / dense Jacobians; Eigen SparseLU
-/// (COLAMD ordering, pattern analysed once) for sparse LCP storage or a sparse Jacobian callback.
+/// Linear algebra: dense partial-pivoting LU for dense storage / dense Jacobians (Eigen below
+/// n = 150, LAPACK dgetrf above when cpkit was built with LAPACK); for sparse LCP storage or a
+/// sparse Jacobian callback Eigen SparseLU (COLAMD ordering, pattern analysed once), or, when M
+/// is symmetric, sparse LDL^T of the symmetric K = M + diag(Da/Db) with H = diag(Db) K
+/// (residual-checked, falling back to SparseLU).
 /// Without a Jacobian callback F' is approximated by forward differences with step
 /// h_j = fd_step * max(1, |x_j|) (backward difference when x + h_j e_j is outside F's domain).
 ///
-/// Stopping: the scaled natural residual, computed exactly as finalize() computes it, is <= tol.
+/// Stopping: ||x - mid(l, u, x - F(x))||_inf / scale <= tol with scale = 1 + max(||q||, ||w||)
+/// for LCPs (1 + ||F|| for MCPs), which is at least as strict as finalize()'s test; finalize()
+/// then decides the status from the data. The trace records this stopping residual.
 /// Guarantees: every accumulation point is a stationary point of Psi; for monotone F (PSD M)
 /// stationary points solve the problem, and for P-matrices / uniformly P-functions the iterates
 /// converge to the unique solution, locally Q-quadratically at BD-regular solutions with
 /// Lipschitz F' [DFK 1996, Thms 11, 12]. It cannot prove infeasibility: an infeasible problem
-/// ends with kStalled or kIterationLimit (never a solution status). On failure z holds the last
-/// iterate (the one of smallest Psi seen). Every result comes from cpkit::finalize().
+/// ends with kStalled or kIterationLimit (never a solution status). On failure z holds the
+/// iterate with the smallest stopping residual (the earliest on ties). Every result comes from
+/// cpkit::finalize(). Workspaces are allocated once per call (no globals): concurrent calls are
+/// safe.
 #include <string>
 
 #include "cpkit/core/finalize.hpp"
@@ -65,8 +72,10 @@ struct FbNewtonOptions {
   double descent_power = 2.1;
   /// Watchdog escape from stagnation (a line-search failure, a stationary point of Psi that is
   /// not a solution, or 3 iterations in a row reducing Psi by less than a factor 1 - 1e-4):
-  /// up to watchdog_steps undamped Newton steps (shortened only where F is undefined); the escape
-  /// succeeds when Psi falls below its value at the stagnation point, otherwise the solver
+  /// up to watchdog_steps Newton steps without the Armijo test (each halved only while Psi
+  /// keeps falling along t = 1, 1/2, ..., or where F is undefined: the backstepping rule of
+  /// Miranda-Fackler's CompEcon ncpsolve); the escape succeeds when Psi falls below its value
+  /// at the stagnation point, otherwise the solver
   /// returns to the best point and stops with kStalled [Chamberlain et al. 1982; PATH's
   /// non-monotone stabilization, Ferris-Ralph 1995]. watchdog_steps = 0 disables it.
   int watchdog_steps = 10;

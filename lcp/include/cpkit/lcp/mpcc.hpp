@@ -24,6 +24,9 @@
 /// Ipopt is not assumed thread-safe (nor is MUMPS): every Ipopt call in cpkit is serialized by
 /// one process-wide mutex, so concurrent callers wait for each other. NLopt calls are not
 /// serialized (NLopt objects are per call).
+///
+/// Iterates with ||x||_inf > 1e10 (1 + ||x_start||_inf) (an unbounded penalty NLP, say) are
+/// treated as diverged and never returned as candidates.
 #include <functional>
 #include <optional>
 #include <string>
@@ -117,7 +120,8 @@ struct MpccOptions {
   bool exact_hessian = true;  ///< use MpccProblem::hessian when present (else limited memory)
   bool polish = true;         ///< run the piece-NLP polish after the relaxation sequence
   int max_subproblems = 60;   ///< cap on NLP solves (relaxation + polish)
-  /// Optional caller's test, called with the final point of every relaxation/penalty NLP; when
+  /// Optional caller's test, called with the final point of every converged relaxation/penalty
+  /// NLP; when
   /// it returns true the sequence ends there (no piece polish), x is that point and
   /// MpccResult::stopped_early is set. Used by the complementarity solvers, whose own
   /// verification (active-set Newton + finalize) usually succeeds long before t reaches t_min.

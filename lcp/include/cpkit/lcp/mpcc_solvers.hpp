@@ -43,7 +43,8 @@ struct ComplementarityMpccOptions {
   /// When the answer does not verify, restart the whole MPCC solve up to this many times from
   /// pseudo-random points (deterministic for a given seed): x_i uniform in [l_i, u_i] for a
   /// finite box, in [l_i, l_i + 1 + |x0_i|] (or [u_i - 1 - |x0_i|, u_i]) for one finite bound,
-  /// in [-1 - |x0_i|, 1 + |x0_i|] for a free variable. 0: no restart.
+  /// in [-1 - |x0_i|, 1 + |x0_i|] for a free variable; odd restarts switch to the other
+  /// reformulation (Scholtes <-> penalty). 0: no restart.
   int restarts = 4;
   std::uint64_t seed = 1;    ///< seed of the restart points
   std::string validate(Eigen::Index n) const;

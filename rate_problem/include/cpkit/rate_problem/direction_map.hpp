@@ -28,8 +28,10 @@ struct MapOptions {
   std::string validate() const;  ///< empty when usable
 };
 
-bool operator==(const RateSummary& a, const RateSummary& b) noexcept;
-inline bool operator!=(const RateSummary& a, const RateSummary& b) noexcept { return !(a == b); }
+/// Same count and same types (the `reliable` flag is not compared).
+inline bool same_solution_set(const RateSummary& a, const RateSummary& b) noexcept {
+  return a.count == b.count && a.types == b.types;
+}
 
 /// An open sector of directions: the counter-clockwise arc from theta_from to theta_to.
 /// theta_from is in [0, 2 pi) and theta_to in (theta_from, theta_from + 2 pi], so theta_to > 2 pi
@@ -57,6 +59,7 @@ struct DirectionMap {
   int evaluations = 0;       ///< rate problems solved (per route)
   int disagreements = 0;     ///< evaluations where the two routes disagree (cross-check only)
   int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
+  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call (RateSummary)
   bool cross_checked = false;
 };
 

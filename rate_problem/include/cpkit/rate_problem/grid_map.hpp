@@ -88,6 +88,7 @@ struct ParamDirectionMap {
   std::vector<uint8_t> types;    ///< type mask (bit = SolutionType)
   std::vector<uint8_t> disagree; ///< cross-check: 1 where the routes disagree (empty otherwise)
   int64_t disagreements = 0;
+  int64_t unreliable = 0;  ///< cells the enumeration flagged as too close to call
   bool cross_checked = false;
   std::vector<CriticalValue> critical_values;            ///< analytic curves x = const
   std::vector<CriticalDirectionPoint> critical_directions;  ///< curves theta_c(x)
@@ -120,6 +121,7 @@ struct ParamParamMap {
   std::vector<uint8_t> disagree;  ///< cross-check (empty otherwise)
   int64_t disagreements = 0;
   int64_t inconsistent_sectors = 0;
+  int64_t unreliable = 0;  ///< direction-map evaluations flagged as too close to call
   bool cross_checked = false;
   std::vector<CriticalValue> critical_curve;  ///< points (x, y) where a criterion is 0
   double seconds = 0;

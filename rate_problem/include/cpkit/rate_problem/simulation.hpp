@@ -80,7 +80,9 @@ struct SimulationResult {
   double external_work = 0, stored_energy = 0, dissipation = 0;
   double work_abs = 0;           ///< sum |(F0 + F1)/2 . Dw| (the scale of the balance)
   double energy_error = 0;       ///< |W - (E - E0) - D| / max(work_abs, tiny)
-  double min_step_dissipation = 0;  ///< most negative D met (>= -tol * scale expected)
+  /// Most negative step dissipation D met, relative to its scale (|P_T1| + mu P_N1)|Dw_T^i| +
+  /// P_N1 Dw^w; 0 when every step had D >= 0 (the expected result).
+  double min_step_dissipation = 0;
   double thermal_dissipation = 0;
   double max_temperature = 0;
   double max_residual = 0;       ///< largest step NCP residual accepted

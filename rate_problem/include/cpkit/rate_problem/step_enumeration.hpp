@@ -13,15 +13,17 @@
 ///   q = -(b + sgn(b) sqrt(disc))/2 form) and a cubic for (35) (real roots in [0, mu/k] by
 ///   monotone bracketing between the critical points).
 /// When the reduced polynomial vanishes identically (degenerate data, e.g. a11 = mu |a12| on
-/// N = 0) the piece is a segment or a ray, reported as such. Every candidate is verified by the
+/// N = 0) the piece is a segment or a ray, reported as such; it contains its end points, and
+/// point solutions lying on it are not listed again. Every candidate is verified by the
 /// NCP residual (StepNcp::residual) and duplicates (the same physical point found by two
 /// pieces) are merged; the first piece in the order above names its type.
 ///
-/// Jumps: a solution is flagged `jump` when it is not the limit of a rate solution, decided by
-/// rescaling: the same enumeration at the increment scaled by eps = 1e-8 gives, per type, the
-/// number of solutions whose state change is O(eps) (the rate-consistent branches); in each type
-/// the solutions beyond that number (farthest from the start state) are jumps. From state d
-/// with Lambda < 0 a step can have a jump (e.g. to separation) where the rate problem has none.
+/// Jumps: a solution is continuous (rate-consistent) when it lies on a branch that starts at the
+/// start state as the increment is scaled from 0 to 1: the enumeration is repeated for t DF,
+/// t = 0, 1/128, ..., 1, and each solution is linked to its nearest neighbour at the previous t
+/// (distance |DP_N| + |DP_T| + (det A / D0)|xi|, links only below 0.1 times the force scale).
+/// The other solutions are flagged `jump`. From state d with Lambda < 0 a step can have a jump
+/// (e.g. to separation) where the rate problem has none (continuous_count == 0).
 #include <array>
 #include <string>
 #include <vector>
@@ -39,7 +41,7 @@ struct StepSolution {
   StepValues end;            ///< segment: second end
   StepValues direction;      ///< ray: direction (unit length in DP_N)
   double residual = 0;       ///< StepNcp::residual at `start` (worst over the ends)
-  bool jump = false;         ///< not the limit of a rate solution (see the file comment)
+  bool jump = false;         ///< not on a branch from the start state (see the file comment)
 };
 
 struct StepSolutionSet {
@@ -54,7 +56,7 @@ struct StepSolutionSet {
 
 struct StepEnumerationOptions {
   double tol = 1e-9;        ///< acceptance on StepNcp::residual
-  bool detect_jumps = true; ///< run the rescaled enumeration that flags jumps
+  bool detect_jumps = true; ///< follow the branches in t (129 enumerations) to flag jumps
 };
 
 /// All solutions. Throws InputError for an invalid problem (StepProblem::validate).

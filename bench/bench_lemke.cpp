@@ -1,0 +1,159 @@
+// Benchmark: cpkit's Lemke (lexicographic, block basis inverse) against Siconos numerics'
+// lcp_lexicolemke on the same random dense P-matrix LCPs (fixed seed), n = 10 ... 500.
+// Success of both is decided by cpkit's own residual check (finalize on the returned z), never
+// by the solver's own flag. Usage: bench_lemke [--quick] [--reps R]
+// Output: a Markdown table (docs/benchmarks/lemke.md records a run).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/finalize.hpp"
+#include "cpkit/lcp/lemke.hpp"
+
+#ifdef CPKIT_HAVE_SICONOS
+#include "LCP_Solvers.h"
+#include "LinearComplementarityProblem.h"
+#include "NumericsMatrix.h"
+#include "SolverOptions.h"
+#include "lcp_cst.h"
+#endif
+
+namespace {
+
+using cpkit::LcpProblem;
+using cpkit::Mat;
+using cpkit::Vec;
+using Clock = std::chrono::steady_clock;
+
+// Random dense P-matrix: positive definite symmetric part B B^T / n + I plus a skew part;
+// q uniform in [-1, 1]^n.
+LcpProblem random_p_lcp(int n, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Mat B(n, n), S(n, n);
+  Vec q(n);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) B(i, j) = u(rng), S(i, j) = u(rng);
+    q[i] = u(rng);
+  }
+  return LcpProblem(B * B.transpose() / n + Mat::Identity(n, n) + S - S.transpose(), q);
+}
+
+struct Outcome {
+  bool verified = false;  // cpkit's finalize accepts z
+  int pivots = 0;
+  double seconds = 0;     // best of the repetitions
+};
+
+// cpkit's verdict on a z returned by any solver.
+bool verified(const LcpProblem& p, const Vec& z) {
+  cpkit::SolveResult claim;
+  claim.status = cpkit::Status::kSolved;
+  claim.z = z;
+  return cpkit::is_solution(cpkit::finalize(p, claim, {}).status);
+}
+
+Outcome run_cpkit(const LcpProblem& p, int reps) {
+  Outcome o;
+  o.seconds = INFINITY;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = Clock::now();
+    const auto res = cpkit::lcp::solve_lemke(p);
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    o.seconds = std::min(o.seconds, s);
+    o.pivots = res.iterations;
+    o.verified = verified(p, res.z) && cpkit::is_solution(res.status);
+  }
+  return o;
+}
+
+#ifdef CPKIT_HAVE_SICONOS
+Outcome run_siconos(const LcpProblem& p, int reps) {
+  const int n = static_cast<int>(p.size());
+  Outcome o;
+  o.seconds = INFINITY;
+  for (int r = 0; r < reps; ++r) {
+    // Setup (copy of M into Siconos' column-major dense storage) is not timed.
+    NumericsMatrix* M = NM_create(NM_DENSE, n, n);
+    std::memcpy(M->matrix0, p.M.data(), sizeof(double) * static_cast<size_t>(n) * n);
+    std::vector<double> q(p.q.data(), p.q.data() + n), z(n, 0.0), w(n, 0.0);
+    LinearComplementarityProblem lcp;
+    lcp.size = n;
+    lcp.M = M;
+    lcp.q = q.data();
+    SolverOptions* opts = solver_options_create(SICONOS_LCP_LEMKE);
+    opts->iparam[SICONOS_IPARAM_MAX_ITER] = 50 * (n + 1) + 1000;  // as cpkit's default
+    int info = -1;
+    const auto t0 = Clock::now();
+    lcp_lexicolemke(&lcp, z.data(), w.data(), &info, opts);
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    o.seconds = std::min(o.seconds, s);
+    o.pivots = opts->iparam[SICONOS_IPARAM_ITER_DONE];
+    o.verified = verified(p, Eigen::Map<const Vec>(z.data(), n));
+    solver_options_delete(opts);
+    NM_free(M);
+  }
+  return o;
+}
+#endif
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int reps = 3;
+  for (int a = 1; a < argc; ++a) {
+    if (std::strcmp(argv[a], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[a], "--reps") == 0 && a + 1 < argc) reps = std::atoi(argv[++a]);
+  }
+#ifndef CPKIT_HAVE_SICONOS
+  std::printf("bench_lemke: Siconos numerics not available (libsiconos-numerics-dev); "
+              "peer comparison skipped, cpkit only.\n");
+#endif
+  std::printf("# Lemke: cpkit vs Siconos lcp_lexicolemke, random dense P-matrix LCPs "
+              "(seed 2026, best of %d runs per problem)\n\n", reps);
+  std::printf("| n | problems | cpkit ok | Siconos ok | cpkit pivots (mean) | Siconos pivots "
+              "(mean) | cpkit median ms | Siconos median ms | ratio cpkit/Siconos |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::mt19937 rng(2026);
+  const int sizes[] = {10, 50, 100, 200, 500};
+  for (int n : sizes) {
+    const int count = quick ? 3 : (n <= 50 ? 40 : n <= 100 ? 20 : n <= 200 ? 10 : 6);
+    std::vector<double> tc, ts;
+    int okc = 0, oks = 0;
+    double pivc = 0, pivs = 0;
+    for (int k = 0; k < count; ++k) {
+      const LcpProblem p = random_p_lcp(n, rng);
+      const Outcome c = run_cpkit(p, reps);
+      okc += c.verified;
+      pivc += c.pivots;
+      tc.push_back(c.seconds * 1e3);
+#ifdef CPKIT_HAVE_SICONOS
+      const Outcome s = run_siconos(p, reps);
+      oks += s.verified;
+      pivs += s.pivots;
+      ts.push_back(s.seconds * 1e3);
+#endif
+    }
+#ifdef CPKIT_HAVE_SICONOS
+    std::printf("| %d | %d | %d | %d | %.1f | %.1f | %.4g | %.4g | %.3f |\n", n, count, okc, oks,
+                pivc / count, pivs / count, median(tc), median(ts), median(tc) / median(ts));
+#else
+    std::printf("| %d | %d | %d | - | %.1f | - | %.4g | - | - |\n", n, count, okc, pivc / count,
+                median(tc));
+#endif
+    std::fflush(stdout);
+  }
+  return 0;
+}
