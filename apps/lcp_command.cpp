@@ -8,8 +8,8 @@ void add_lcp_command(CLI::App& app, Context& ctx) {
   auto* lcp = app.add_subcommand("lcp", "Linear complementarity problems: solve, enumerate, verify");
   lcp->require_subcommand(1);
   add_lcp_solve(*lcp, ctx);
-  // add_lcp_enumerate(*lcp, ctx);  (issue 3)
-  // add_lcp_verify(*lcp, ctx);     (issue 3)
+  add_lcp_enumerate(*lcp, ctx);
+  add_lcp_verify(*lcp, ctx);
 }
 
 }  // namespace cpkit::cli

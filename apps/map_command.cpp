@@ -8,7 +8,9 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <initializer_list>
 #include <map>
+#include <vector>
 #include <memory>
 #include <sstream>
 
@@ -174,13 +176,27 @@ MapSetup build_setup(const MapArgs& a) {
   return s;
 }
 
-std::string model_text(const ContactParameters& p, const ContactState& s) {
-  std::string t = "state " + std::string(to_string(s.label)) + ", a11 = " + fmt(p.a11) +
-                  ", a12 = " + fmt(p.a12) + ", a22 = " + fmt(p.a22) + ", mu = " + fmt(p.mu) +
-                  ", C_T = " + fmt(p.C_T);
+/// The model in one line; quantities that vary along a map axis are shown as "(axis)".
+std::string model_text(const ContactParameters& p, const ContactState& s,
+                       const std::vector<MapParameter>& axes = {}) {
+  auto on_axis = [&](std::initializer_list<MapParameter> ps) {
+    for (auto a : axes)
+      for (auto q : ps)
+        if (a == q) return true;
+    return false;
+  };
+  auto v = [&](const char* name, double x, std::initializer_list<MapParameter> ps) {
+    return std::string(name) + " = " + (on_axis(ps) ? std::string("(axis)") : fmt(x));
+  };
+  using P = MapParameter;
+  std::string t = "state " + std::string(to_string(s.label)) + ", " +
+                  v("a11", p.a11, {P::kA11}) + ", " + v("a12", p.a12, {P::kA12, P::kA12OverA11}) +
+                  ", " + v("a22", p.a22, {P::kA22}) + ", " + v("mu", p.mu, {P::kMu}) + ", " +
+                  v("C_T", p.C_T, {P::kCT});
   if (s.label == StateLabel::kC || s.label == StateLabel::kD)
-    t += ", P_N = " + fmt(s.P_N) + ", k_a = " + fmt(p.k_a) + ", P_s = " + fmt(p.P_s) +
-         ", kappa = " + fmt(p.kappa(s.P_N)) +
+    t += ", " + v("P_N", s.P_N, {P::kPN}) + ", " + v("k_a", p.k_a, {P::kKa, P::kKappa}) + ", " +
+         v("P_s", p.P_s, {P::kPs}) + ", " +
+         v("kappa", p.kappa(s.P_N), {P::kKappa, P::kKa, P::kPN, P::kPs}) +
          (s.label == StateLabel::kD ? ", sgn P_T = " + std::to_string(s.sgn_PT) : "");
   return t;
 }
@@ -374,7 +390,8 @@ int run_map(const MapArgs& a) {
     const nlohmann::json summary = j;
     print_text = [summary, &s] {
       const auto& ax = summary["axis"];
-      std::cout << "param-direction map, " << model_text(s.params, s.state) << "\n  "
+      std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
+                << "\n  "
                 << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
                 << ", " << fmt(ax["to"].get<double>()) << "] x theta in [0, 2 pi): "
                 << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
@@ -409,7 +426,8 @@ int run_map(const MapArgs& a) {
     print_text = [summary, &s] {
       const auto& ax = summary["axis"];
       const auto& ay = summary["axis2"];
-      std::cout << "param-param map, " << model_text(s.params, s.state) << "\n  "
+      std::cout << "param-param map, "
+                << model_text(s.params, s.state, {s.axis.param, s.axis2.param}) << "\n  "
                 << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
                 << ": " << summary["cells"] << " cells, "
                 << fmt(summary["seconds"].get<double>(), 3) << " s\n";

@@ -1,6 +1,6 @@
 // Rate problems per second for each route of the rate problem (docs/benchmarks/rate.md).
 //
-//   bench_rate [--n N] [--reps R]
+//   bench_rate [--n N] [--reps R] [--show-outside]
 //
 // Random parameter sets and load directions (fixed seed), states b and d. Routes: the
 // allocation-free summaries (count + types) through the enumeration and the closed forms, the
@@ -68,6 +68,9 @@ double best_rate(int reps, int n, F&& run) {
 
 int main(int argc, char** argv) {
   int n = 200000, reps = 5;
+  bool show_outside = false;
+  for (int i = 1; i < argc; ++i)
+    if (!std::strcmp(argv[i], "--show-outside")) show_outside = true;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--n")) n = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--reps")) reps = std::atoi(argv[i + 1]);
@@ -128,7 +131,20 @@ int main(int argc, char** argv) {
         if (one.solutions.empty()) continue;
         const RateSolutionSet all = solve_rate_problem(cases[i].p, cases[i].st, cases[i].f,
                                                        RateMethod::kAnalytic);
-        inside += contains(all, one.solutions.front().start, 1e-6);
+        const bool in = contains(all, one.solutions.front().start, 1e-6);
+        inside += in;
+        if (!in && show_outside) {
+          const Case& c = cases[i];
+          const Rates& r = one.solutions.front().start;
+          std::printf("# outside: %s state %s a=(%.17g,%.17g,%.17g) mu=%.17g C_T=%.17g k_a=%.17g "
+                      "P_N=%.17g s=%d dF=(%.17g,%.17g): dP=(%.6g,%.6g) dw_Ti=%.6g [%s]\n",
+                      name, st, c.p.a11, c.p.a12, c.p.a22, c.p.mu, c.p.C_T, c.p.k_a, c.st.P_N,
+                      c.st.sgn_PT, c.f.dF_T, c.f.dF_N, r.dP_T, r.dP_N, r.dw_Ti,
+                      one.message.c_str());
+          for (const auto& x : all.solutions)
+            std::printf("#   set: %s dP=(%.6g,%.6g) dw_Ti=%.6g\n", std::string(to_string(x.type)).c_str(),
+                        x.start.dP_T, x.start.dP_N, x.start.dw_Ti);
+        }
       }
       std::printf("%-8s %-34s %14.0f solved %d/%d, inside the set %d/%d\n", st,
                   (std::string(name) + " (one solution)").c_str(), rs, solved, ns, inside, solved);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <limits>
+#include <sstream>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/residuals.hpp"
@@ -74,16 +75,22 @@ CrossVerifyReport cross_verify(const LcpProblem& problem, const CrossVerifyOptio
     c.message = r.message;
     if (r.z.size() == problem.size() && r.z.allFinite()) {
       Vec w;
-      c.residual = lcp_residuals(problem, r.z, w).natural;
+      const Residuals res = lcp_residuals(problem, r.z, w);
+      c.residual = res.natural;
+      c.data_residual = res.natural_abs / (1 + problem.q.cwiseAbs().maxCoeff());
     } else {
-      c.residual = std::numeric_limits<double>::infinity();
+      c.residual = c.data_residual = std::numeric_limits<double>::infinity();
     }
     if (is_solution(r.status)) {
-      if (!(c.residual <= options.solve.tol_acceptable)) {
+      if (!(c.residual <= options.solve.tol_acceptable) ||
+          !(c.data_residual <= options.solve.tol_acceptable)) {
         c.verdict = Verdict::kNotASolution;
-        rep.disagreements.push_back(c.solver + ": status " + std::string(to_string(r.status)) +
-                                    " but the recomputed residual is " +
-                                    std::to_string(c.residual));
+        std::ostringstream m;
+        m << c.solver << ": status " << to_string(r.status) << " but ||min(z, w)||_inf = "
+          << c.data_residual * (1 + problem.q.cwiseAbs().maxCoeff()) << " (residual "
+          << c.residual << " on the scale of finalize(), " << c.data_residual
+          << " on the data scale 1 + ||q||_inf) at ||z||_inf = " << r.z.cwiseAbs().maxCoeff();
+        rep.disagreements.push_back(m.str());
       } else {
         const double mtol = std::max(options.membership_tol, 100 * c.residual);
         c.in_set = set.contains(r.z, mtol);

@@ -105,6 +105,7 @@ class Engine {
       L.col_label.resize(n_);
       L.row_of.resize(2 * n_);
       L.col_of.resize(2 * n_);
+      L.row_scale.resize(n_);
     }
     Level& L = levels_[0];
     for (int i = 0; i < n_; ++i) {
@@ -118,6 +119,11 @@ class Engine {
       L.col_of[n_ + i] = -1;
     }
     L.pending = 0;
+    for (int i = 0; i < n_; ++i) {
+      double sc = std::abs(q_(i));
+      for (int j = 0; j < n_; ++j) sc = std::max(sc, std::abs(M_(i, j)));
+      L.row_scale[i] = sc;
+    }
   }
 
   void run() {
@@ -133,6 +139,7 @@ class Engine {
     std::vector<double> qv;
     std::vector<int> row_label, col_label;  // variable ids: z_j = j, w_j = n + j
     std::vector<int> row_of, col_of;        // inverse maps (-1: not there)
+    std::vector<double> row_scale;          // max(|qv_r|, max_c |T(r,c)|), kept by pivot()
     Mask pending = 0;  // decided in S, z_j still nonbasic (diagonal pivot vanished)
   };
 
@@ -145,6 +152,7 @@ class Engine {
     b.col_label = a.col_label;
     b.row_of = a.row_of;
     b.col_of = a.col_of;
+    b.row_scale = a.row_scale;
     b.pending = a.pending;
   }
 
@@ -154,16 +162,26 @@ class Engine {
     const double p = row[c];
     const double ip = 1.0 / p;
     L.qv[r] = -L.qv[r] * ip;
-    for (int k = 0; k < n_; ++k) row[k] = -row[k] * ip;
+    double sr = std::abs(L.qv[r]);
+    for (int k = 0; k < n_; ++k) {
+      row[k] = -row[k] * ip;
+      sr = std::max(sr, std::abs(row[k]));
+    }
     row[c] = ip;
+    L.row_scale[r] = std::max(sr, std::abs(ip));
     for (int i = 0; i < n_; ++i) {
       if (i == r) continue;
       double* ri = &L.T[size_t(i) * n_];
       const double f = ri[c];
       if (f == 0) continue;
       L.qv[i] += f * L.qv[r];
-      for (int k = 0; k < n_; ++k) ri[k] += f * row[k];
+      double si = std::abs(L.qv[i]);
+      for (int k = 0; k < n_; ++k) {
+        ri[k] += f * row[k];
+        si = std::max(si, std::abs(ri[k]));
+      }
       ri[c] = f * ip;
+      L.row_scale[i] = std::max(si, std::abs(ri[c]));
     }
     const int br = L.row_label[r], nc = L.col_label[c];
     L.row_label[r] = nc;
@@ -221,23 +239,30 @@ class Engine {
   }
 
   /// True when some row proves that no completion of the current decisions is feasible.
-  bool prune(Level& L) {
+  /// With only_col >= 0, only the rows in which that column could raise the basic variable
+  /// are examined (the column has just stopped being free).
+  bool prune(Level& L, int only_col = -1) {
+    int nf = 0;
+    for (int c = 0; c < n_; ++c)
+      if (free_col(L, c)) free_[nf++] = c;
     for (int r = 0; r < n_; ++r) {
       const double qr = L.qv[r];
       const double* row = &L.T[size_t(r) * n_];
-      double s = std::abs(qr);
-      for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(row[c]));
+      const double s = L.row_scale[r];
+      if (only_col >= 0) {
+        const double v = row[only_col];
+        if (!(qr < -kPruneTol * s && v > tol_ * s) && !(qr > kPruneTol * s && v < -tol_ * s))
+          continue;
+      }
       const int lab = L.row_label[r];
       const bool must_vanish = lab >= n_ && ((L.pending >> (lab - n_)) & 1u);
       if (qr < -kPruneTol * s) {
         bool can_rise = false;
-        for (int c = 0; c < n_ && !can_rise; ++c)
-          if (row[c] > tol_ * s && free_col(L, c)) can_rise = true;
+        for (int f = 0; f < nf && !can_rise; ++f) can_rise = row[free_[f]] > tol_ * s;
         if (!can_rise) return true;
       } else if (must_vanish && qr > kPruneTol * s) {
         bool can_fall = false;
-        for (int c = 0; c < n_ && !can_fall; ++c)
-          if (row[c] < -tol_ * s && free_col(L, c)) can_fall = true;
+        for (int f = 0; f < nf && !can_fall; ++f) can_fall = row[free_[f]] < -tol_ * s;
         if (!can_fall) return true;
       }
     }
@@ -258,8 +283,9 @@ class Engine {
     }
     const int i = d;
     decided_[i] = 1;
-    // branch A: i not in S (z_i = 0, w_i basic)
-    if (!prune(levels_[cur])) visit(d + 1, cur, S);
+    // branch A: i not in S (z_i = 0, w_i basic): only column z_i stopped being free
+    const int ci = levels_[cur].col_of[i];
+    if (!prune(levels_[cur], ci >= 0 ? ci : -1)) visit(d + 1, cur, S);
     // branch B: i in S (w_i = 0, z_i basic)
     Level& nb = levels_[d + 1];
     copy_level(levels_[cur], nb);
@@ -283,7 +309,7 @@ class Engine {
     for (int r = 0; r < n_; ++r) {
       double s = std::abs(L.qv[r]);
       for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(t(L, r, c)));
-      if (L.qv[r] < -kLeafTol * s) return;
+      if (L.qv[r] < -kLeafTol * std::max(s, L.row_scale[r])) return;
     }
     piece(S);
   }
@@ -575,6 +601,7 @@ class Engine {
   double tol_;
   SolutionSet& out_;
   std::vector<char> decided_;
+  std::vector<int> free_ = std::vector<int>(kMaxEnumerationSize);
   std::vector<Level> levels_;
   std::vector<Mask> zero_z_, zero_w_;
   std::vector<Vec> rays_;

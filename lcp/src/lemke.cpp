@@ -68,6 +68,11 @@ class LemkeRun {
   void record(int iteration, const char* kind, int entering, int leaving, double step);
   SolveResult finish(SolveResult claim);
   bool check_accuracy(int pivots);
+  // The updated inverse is as accurate as a fresh one could be (backward error at most
+  // kRefactorTol, or within a factor 1e3 of the last freshly computed inverse's).
+  bool inverse_accurate() {
+    return basis_.hinv_quality() <= std::max(kRefactorTol, 1e3 * fresh_quality_);
+  }
 
   const LcpProblem& problem_;
   const LemkeOptions& o_;
@@ -78,6 +83,7 @@ class LemkeRun {
   std::vector<double> tied_div_;
   std::vector<TraceEntry> trace_;
   double gmax_ = 1;
+  double fresh_quality_ = 0;  // hinv_quality() right after the last refactorization
   Stopwatch clock_;
 };
 
@@ -199,8 +205,9 @@ int LemkeRun::ratio_test(double& step) {
 bool LemkeRun::check_accuracy(int pivots) {
   const bool forced = o_.refactor_every > 0 && pivots % o_.refactor_every == 0;
   if (!forced && pivots % kCheckEvery != 0) return true;
-  if (forced || !(basis_.hinv_quality() <= kRefactorTol)) {
+  if (forced || !inverse_accurate()) {
     if (!basis_.refactor()) return false;
+    fresh_quality_ = basis_.hinv_quality();
   }
   basis_.recompute_values();
   return true;
@@ -230,6 +237,7 @@ SolveResult LemkeRun::run() {
     zset.clear();
     basis_.reset(zset);
   }
+  fresh_quality_ = basis_.hinv_quality();
   // Is the starting basic solution already a solution? (q >= 0 for the cold start.)
   basis_.current_point(claim.z, z0);
   const bool start_feasible =
@@ -341,7 +349,7 @@ SolveResult LemkeRun::run() {
   if (claim.status == Status::kSolved) {
     // The final basis is complementary: recompute its values from the data (refactorizing
     // first when the inverse fails the accuracy check).
-    if (!(basis_.hinv_quality() <= kRefactorTol) && !basis_.refactor()) {
+    if (!inverse_accurate() && !basis_.refactor()) {
       claim.status = Status::kNumericalFailure;
       claim.message = "final basis is singular";
     } else {

@@ -66,15 +66,19 @@ void LemkeBasis::recompute_values() {
 double LemkeBasis::hinv_quality() {
   if (k_ == 0) return 0.0;
   const Eigen::Index k = k_;
-  for (int t = 0; t < k_; ++t) tmp_[t] = q_[rrows_[static_cast<size_t>(t)]];
-  tmp2_.head(k).noalias() = -hinv_.topLeftCorner(k, k) * tmp_.head(k);  // x_Z from H^{-1}
   double worst = 0.0;
-  for (int t = 0; t < k_; ++t) {
-    const auto row = gz_.row(rrows_[static_cast<size_t>(t)]).head(k);
-    const double r = row.dot(tmp2_.head(k)) + tmp_[t];
-    const double s = row.cwiseAbs().dot(tmp2_.head(k).cwiseAbs()) + std::abs(tmp_[t]);
-    if (s > 0) worst = std::max(worst, std::abs(r) / s);
-    if (!std::isfinite(r)) return INFINITY;
+  // Two probes b: q_R (the values the method uses) and all ones (every column of H^{-1}).
+  // With x = H^{-1} b, the componentwise backward error |H x - b|_t / (|H| |x| + |b|)_t.
+  for (int probe = 0; probe < 2; ++probe) {
+    for (int t = 0; t < k_; ++t) tmp_[t] = probe == 0 ? q_[rrows_[static_cast<size_t>(t)]] : 1.0;
+    tmp2_.head(k).noalias() = hinv_.topLeftCorner(k, k) * tmp_.head(k);
+    for (int t = 0; t < k_; ++t) {
+      const auto row = gz_.row(rrows_[static_cast<size_t>(t)]).head(k);
+      const double r = row.dot(tmp2_.head(k)) - tmp_[t];
+      const double s = row.cwiseAbs().dot(tmp2_.head(k).cwiseAbs()) + std::abs(tmp_[t]);
+      if (!std::isfinite(r)) return INFINITY;
+      if (s > 0) worst = std::max(worst, std::abs(r) / s);
+    }
   }
   return worst;
 }

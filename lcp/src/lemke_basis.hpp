@@ -46,8 +46,8 @@ class LemkeBasis {
   bool refactor();
   /// Recomputes the basic values from the data with one step of iterative refinement.
   void recompute_values();
-  /// Accuracy of H^{-1}: with x_Z = -H^{-1} q_R, max_t |(H x_Z + q_R)_t| relative to the size
-  /// of the terms of that row (O(k^2), no allocation).
+  /// Accuracy of H^{-1}: for the probes b = q_R and b = ones, x = H^{-1} b, the largest
+  /// componentwise backward error |H x - b|_t / (|H| |x| + |b|)_t (O(k^2), no allocation).
   double hinv_quality();
 
   /// Basic values: xz(p) for the p-th basic x (zcols()[p]); w(i) for i in W (0 for i in R).

@@ -181,6 +181,7 @@ class Driver {
         if (s.usable && s.converged) x = s.x;  // warm start only from a converged NLP
         if (s.usable && s.converged && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
+        if (stagnating(s)) break;
       }
     } else {
       for (double rho = o_.rho_initial; rho <= o_.rho_max * (1 + 1e-12) && !stop();
@@ -190,6 +191,7 @@ class Driver {
         if (s.usable && s.converged) x = s.x;  // an unbounded penalty NLP (small rho) diverges
         if (s.usable && s.converged && caller_stops(s.x)) return finish();
         if (s.accepted && s.converged) break;
+        if (stagnating(s)) break;
       }
     }
     // 2. Piece polish: fix the side identified as zero; enumerate both sides of biactive pairs.
@@ -202,6 +204,20 @@ class Driver {
     Vec x;
     bool usable = false, accepted = false, converged = false;
   };
+
+  /// Three NLPs in a row that failed or did not lower the complementarity violation below
+  /// 0.9 x the best so far: the sequence is stuck (e.g. at a local minimiser of the violation).
+  bool stagnating(const Step& s) {
+    const double comp = s.usable ? result_.subproblems.back().complementarity
+                                 : std::numeric_limits<double>::infinity();
+    if (s.converged && comp < 0.9 * best_comp_) {
+      best_comp_ = comp;
+      stuck_ = 0;
+    } else {
+      ++stuck_;
+    }
+    return stuck_ >= 3;
+  }
 
   bool caller_stops(const Vec& x) {
     if (!o_.early_stop || !o_.early_stop(x)) return false;
@@ -356,6 +372,8 @@ class Driver {
   MpccResult result_;
   std::optional<Candidate> best_, least_violated_, early_;
   double least_violation_ = 0;
+  double best_comp_ = std::numeric_limits<double>::infinity();
+  int stuck_ = 0;
   int eval_failures_ = 0;
   bool time_out_ = false;
 };

@@ -65,7 +65,7 @@ Rates slip_rates(const ContactParameters& p, int s, double m, double kappa, doub
 }
 
 /// The state-b solutions (b.i-b.iii), including the degenerate line a11 = mu|a12|.
-void state_b(const ContactParameters& p, const LoadRate& f, detail::PieceList& out) noexcept {
+void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceList& out) noexcept {
   const double c1 = 1.0 + p.a11 * p.C_T;
   const double N = p.a11 * f.dF_N - p.a12 * f.dF_T;
   const int sN = sign_tol(N, std::abs(p.a11 * f.dF_N) + std::abs(p.a12 * f.dF_T));
@@ -115,7 +115,7 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::PieceList& o
 
 /// The state-d solutions (d.i-d.ii) with Lambda of eqn (51) (mu -> mu_eff for (35)).
 void state_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-             detail::PieceList& out) noexcept {
+             detail::SmallPieceList& out) noexcept {
   const int s = st.sgn_PT;
   const double kappa = p.kappa(st.P_N);
   const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
@@ -207,7 +207,7 @@ RateIndicators rate_indicators(const ContactParameters& p, const ContactState& s
 namespace detail {
 
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-                     PieceList& out) noexcept {
+                     SmallPieceList& out) noexcept {
   out.n = 0;
   out.infinite = false;
   switch (st.label) {
@@ -234,14 +234,14 @@ void analytic_pieces(const ContactParameters& p, const ContactState& st, const L
 RateSolutionSet solve_rate_analytic(const ContactParameters& params, const ContactState& state,
                                     const LoadRate& load) {
   detail::validate_inputs(params, state, load);
-  detail::PieceList list;
+  detail::SmallPieceList list;
   detail::analytic_pieces(params, state, load, list);
   return detail::make_solution_set(params, state, load, list, true);
 }
 
 RateSummary summarize_rate_analytic(const ContactParameters& params, const ContactState& state,
                                     const LoadRate& load) noexcept {
-  detail::PieceList list;
+  detail::SmallPieceList list;
   detail::analytic_pieces(params, state, load, list);
   return detail::summarize(list);
 }

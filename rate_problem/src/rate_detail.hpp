@@ -10,9 +10,11 @@
 
 namespace cpkit::rate::detail {
 
-/// Fixed-capacity list of solution pieces (allocation-free).
-struct PieceList {
-  static constexpr int kCapacity = 16;
+/// Fixed-capacity list of solution pieces (allocation-free). The analytic route needs at most
+/// 4 pieces (one per type in b); the enumeration route's conversion uses the larger capacity.
+template <int Cap>
+struct PieceListN {
+  static constexpr int kCapacity = Cap;
   std::array<RateSolution, kCapacity> p;
   int n = 0;
   bool infinite = false;
@@ -26,17 +28,28 @@ struct PieceList {
   }
 };
 
+using PieceList = PieceListN<16>;
+using SmallPieceList = PieceListN<4>;
+
 /// Throws InputError naming the first problem of params, state or load.
 void validate_inputs(const ContactParameters& params, const ContactState& state,
                      const LoadRate& load);
 
 /// Route 1 into a PieceList (analytic.cpp).
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-                     PieceList& out) noexcept;
+                     SmallPieceList& out) noexcept;
 
 /// Sorted (type, kind, dP_N) RateSolutionSet with the indicators of (params, state).
 RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
-                                  const LoadRate& load, const PieceList& list, bool complete);
+                                  const LoadRate& load, const RateSolution* pieces, int n,
+                                  bool infinite, bool complete);
+template <int Cap>
+RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
+                                  const LoadRate& load, const PieceListN<Cap>& list,
+                                  bool complete) {
+  return make_solution_set(params, state, load, list.p.data(), list.n, list.infinite,
+                           complete && !list.overflow);
+}
 
 /// States a and c (no LCP): the unique rates by a numerical solve of the linear system.
 Rates linear_state_rates(const ContactParameters& p, const ContactState& st,
@@ -50,7 +63,8 @@ Rates rate_scale(const ContactParameters& p, const LoadRate& f) noexcept;
 /// that |dw_T^i| does not decrease from start to end.
 void canonicalize(std::vector<RateSolution>& solutions);
 
-inline RateSummary summarize(const PieceList& list) noexcept {
+template <int Cap>
+RateSummary summarize(const PieceListN<Cap>& list) noexcept {
   RateSummary s;
   for (int i = 0; i < list.n; ++i) s.types |= 1u << static_cast<unsigned>(list.p[i].type);
   s.count = list.infinite ? -1 : list.n;

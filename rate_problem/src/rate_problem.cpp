@@ -75,14 +75,15 @@ void canonicalize(std::vector<RateSolution>& sols) {
 }
 
 RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
-                                  const LoadRate& load, const PieceList& list, bool complete) {
+                                  const LoadRate& load, const RateSolution* pieces, int n,
+                                  bool infinite, bool complete) {
   RateSolutionSet out;
-  out.solutions.assign(list.p.begin(), list.p.begin() + list.n);
+  out.solutions.assign(pieces, pieces + n);
   canonicalize(out.solutions);
-  out.infinite = false;
+  out.infinite = infinite;
   for (const auto& s : out.solutions)
     if (s.kind != RateSolution::Kind::kPoint) out.infinite = true;
-  out.complete = complete && !list.overflow;
+  out.complete = complete;
   const RateIndicators ind = rate_indicators(params, state);
   out.Lambda = ind.Lambda;
   out.D_plus = ind.D_plus;

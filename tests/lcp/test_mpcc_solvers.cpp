@@ -149,6 +149,7 @@ TEST_CASE("a relaxation stopped early is reported with complementarity violated"
   o.mpcc.t_initial = 1.0;
   o.mpcc.t_min = 1.0;  // one subproblem: z_i w_i <= 1 only
   o.newton_polish = false;
+  o.restarts = 0;
   MpccResult details;
   const cpkit::SolveResult r = solve_lcp_mpcc(c.problem, o, &details);
   INFO(r.message);

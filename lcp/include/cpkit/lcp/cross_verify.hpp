@@ -11,7 +11,10 @@
 ///
 /// Disagreements (docs/enumeration.md, "Cross-verification"):
 /// - kNotASolution:        status solved / solved_inaccurate but the recomputed residual exceeds
-///                         tol_acceptable (cannot happen through finalize(); checked anyway);
+///                         tol_acceptable, either on finalize()'s scale or on the data scale
+///                         ||min(z, w)||_inf / (1 + ||q||_inf). The second test catches answers
+///                         with |z| -> infinity on infeasible problems, whose residual on the
+///                         scale 1 + || |M| |z| ||_inf vanishes although w stays negative;
 /// - kInfeasibleButSolvable: status infeasible while the enumeration found a solution;
 /// - kProvesIncomplete:    a verified solution that the (complete) enumeration does not contain.
 /// Solver failures without a claim (ray termination, iteration limit, ...) are not
@@ -53,7 +56,8 @@ bool is_disagreement(Verdict v) noexcept;
 struct SolverCheck {
   std::string solver;
   Status status = Status::kNotRun;
-  double residual = 0;        ///< scaled natural residual recomputed from the data
+  double residual = 0;        ///< scaled natural residual recomputed from the data (residuals.hpp)
+  double data_residual = 0;   ///< ||min(z, w)||_inf / (1 + ||q||_inf): independent of |z|
   bool in_set = false;        ///< z is an extreme solution or lies in a piece
   int solution_index = -1;    ///< index of the matching extreme solution (-1: none / in a piece)
   Verdict verdict = Verdict::kNoAnswer;

@@ -107,7 +107,9 @@ struct MpccOptions {
   NlpBackend backend = NlpBackend::kIpopt;
   double t_initial = 1.0;     ///< Scholtes: first relaxation parameter (> 0)
   double t_factor = 0.1;      ///< Scholtes: t <- t * t_factor, in (0, 1)
-  double t_min = 1e-14;       ///< Scholtes: smallest t tried (> 0)
+  /// Scholtes: smallest t tried (> 0). Either sequence also ends early when three NLPs in a
+  /// row fail or leave max_i |min(G_i, H_i)| above 0.9 x its best value (stagnation).
+  double t_min = 1e-14;
   double rho_initial = 1.0;   ///< penalty: first rho (> 0)
   double rho_factor = 10.0;   ///< penalty: rho <- rho * rho_factor on failure (> 1)
   double rho_max = 1e10;      ///< penalty: largest rho tried

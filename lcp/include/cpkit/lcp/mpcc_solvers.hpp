@@ -45,7 +45,7 @@ struct ComplementarityMpccOptions {
   /// finite box, in [l_i, l_i + 1 + |x0_i|] (or [u_i - 1 - |x0_i|, u_i]) for one finite bound,
   /// in [-1 - |x0_i|, 1 + |x0_i|] for a free variable; odd restarts switch to the other
   /// reformulation (Scholtes <-> penalty). 0: no restart.
-  int restarts = 4;
+  int restarts = 8;
   std::uint64_t seed = 1;    ///< seed of the restart points
   std::string validate(Eigen::Index n) const;
 };
