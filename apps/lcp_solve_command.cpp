@@ -4,6 +4,7 @@
 // (JSON object with --json, a short text report otherwise). Exit codes: 0 solved (solved or
 // solved_inaccurate), 1 the solve ran but found no solution, 2 bad input or usage (message on
 // stderr, nothing on stdout).
+#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -32,6 +33,7 @@ struct LcpSolveArgs {
   int max_iter = 0;
   double time_limit_s = std::numeric_limits<double>::infinity();
   bool trace = false;
+  bool all_solvers = false;  ///< --all-solvers: every registered LCP solver side by side
 };
 
 /// "a, b, c": the registered LCP solver names (for error messages and help).
@@ -103,10 +105,44 @@ std::string result_text(const SolveResult& r, const LcpProblem& problem) {
 /// Exit code of one result: 0 when it is a (verified) solution, else 1.
 int exit_code_of(const SolveResult& r) { return is_solution(r.status) ? kExitOk : kExitNoSolution; }
 
+/// --all-solvers: runs every registered solver that accepts the problem and prints the
+/// outcomes side by side (a JSON array of result objects, or a text table). Exit code 0 when at
+/// least one solver returned a verified solution, else 1.
+int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
+                        const CommonOptions& options) {
+  std::vector<SolveResult> results;
+  for (const auto& entry : cpkit::lcp::solvers().entries())
+    if (entry.accepts(problem)) results.push_back(run_one_solver(entry, problem, options));
+  bool any = false;
+  for (const auto& r : results) any |= is_solution(r.status);
+  if (a.json) {
+    nlohmann::json arr = nlohmann::json::array();
+    for (const auto& r : results) arr.push_back(result_json(r, problem));
+    print_json(arr);
+  } else {
+    std::ostringstream s;
+    if (!problem.name.empty()) s << "problem: " << problem.name << " (n = " << problem.size() << ")\n";
+    char line[160];
+    std::snprintf(line, sizeof line, "%-12s %-18s %-12s %-10s %-10s %s\n", "solver", "status",
+                  "residual", "iterations", "seconds", "answered by");
+    s << line;
+    for (const auto& r : results) {
+      std::snprintf(line, sizeof line, "%-12s %-18s %-12.3g %-10d %-10.4f %s\n",
+                    r.attempts.empty() ? r.solver.c_str() : "auto",
+                    std::string(to_string(r.status)).c_str(), r.residuals.natural, r.iterations,
+                    r.seconds, r.solver.c_str());
+      s << line;
+    }
+    std::cout << s.str() << std::flush;
+  }
+  return any ? kExitOk : kExitNoSolution;
+}
+
 /// The whole action. Everything that can be bad input is checked before anything is printed.
 int run_lcp_solve(const LcpSolveArgs& a) {
   const LcpProblem problem = read_lcp_file(a.file);  // validates; InputError names file/line
   const CommonOptions options = common_options(a);
+  if (a.all_solvers) return run_all_lcp_solvers(a, problem, options);
   const SolverEntry& entry = find_lcp_solver(a.solver, problem);
   const SolveResult r = run_one_solver(entry, problem, options);
   if (a.json)
@@ -133,6 +169,9 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
                   "iteration/pivot limit (0: the solver's documented default)");
   cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");
   cmd->add_flag("--trace", args->trace, "record and print the per-iteration (pivot) trace");
+  cmd->add_flag("--all-solvers", args->all_solvers,
+                "run every registered solver and print the outcomes side by side (JSON: an "
+                "array of result objects)");
   cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_solve(*args); });
 }
 

@@ -290,6 +290,10 @@ void print_direction_text(const DirectionMap& m) {
       std::cout << "summary: " << count_text(s.summary.count) << " for theta in [" << std::fixed
                 << std::setprecision(2) << s.theta_from << ", " << s.theta_to << "]"
                 << std::defaultfloat << '\n';
+  for (const auto& c : m.critical)
+    if (c.summary.count <= 0)
+      std::cout << "summary: " << count_text(c.summary.count) << " at theta = " << std::fixed
+                << std::setprecision(4) << c.theta << std::defaultfloat << '\n';
   bool all_unique = true;
   for (const auto& s : m.sectors) all_unique = all_unique && s.summary.count == 1;
   for (const auto& c : m.critical) all_unique = all_unique && c.summary.count == 1;
@@ -324,6 +328,8 @@ int run_map(const MapArgs& a) {
   options.threads = a.threads;
   throw_if_invalid(options.validate(), "map options");
   if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+  if (!a.out.empty() && fs::path(a.out).filename().empty())
+    throw InputError("--out needs a file prefix such as out/map (got '" + a.out + "')");
   if (!a.out.empty()) {
     const fs::path parent = fs::path(a.out).parent_path();
     if (!parent.empty()) {

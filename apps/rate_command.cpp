@@ -160,10 +160,12 @@ int run_rate(const RateArgs& a) {
     }
   } else if (*method != rate::RateMethod::kAnalytic) {
     const rate::RateSolutionSet ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
-    if (!s.solutions.empty() && !rate::contains(ref, s.solutions.front().start, 1e-6)) {
+    // the solver's point is accurate to its residual (solved_inaccurate allows up to 1e-6)
+    const double tol = std::max(1e-6, 1e3 * s.residual);
+    if (!s.solutions.empty() && !rate::contains(ref, s.solutions.front().start, tol)) {
       problem = a.method + "'s solution is not in the enumerated solution set";
     } else if (!s.solutions.empty() &&
-               ref.solutions[rate::find_piece(ref, s.solutions.front().start, 1e-6)].type !=
+               ref.solutions[rate::find_piece(ref, s.solutions.front().start, tol)].type !=
                    s.solutions.front().type) {
       problem = a.method + "'s solution has another type than the enumerated set's piece";
     } else if (s.solutions.empty()) {

@@ -11,6 +11,7 @@
 //
 // Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, or a branch point
 // with --branch-rule stop; the reason on stdout/in the summary), 2 bad input.
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -202,14 +203,22 @@ void apply_args(const SimArgs& a, Settings& s) {
   num("F_N", s.fretting.F_N);
   num("amplitude", s.fretting.amplitude);
   if (num("period", s.fretting.period)) s.csv_period = s.fretting.period;
-  double d;
-  if (num("cycles", d)) s.fretting.cycles = static_cast<int>(d);
-  if (num("steps-per-cycle", d)) s.fretting.steps_per_cycle = static_cast<int>(d);
-  if (num("ramp-steps", d)) s.fretting.ramp_steps = static_cast<int>(d);
+  auto count = [&](const char* key, int& dst) {
+    double d;
+    if (!num(key, d)) return;
+    if (!(d == std::floor(d)) || d < -1e9 || d > 1e9)
+      throw InputError(std::string("--") + key + " must be an integer");
+    dst = static_cast<int>(d);
+  };
+  count("cycles", s.fretting.cycles);
+  count("steps-per-cycle", s.fretting.steps_per_cycle);
+  count("ramp-steps", s.fretting.ramp_steps);
+  num("F_T0", s.ramp.F_T0);
+  num("F_N0", s.ramp.F_N0);
   num("F_T1", s.ramp.F_T1);
   num("F_N1", s.ramp.F_N1);
   num("duration", s.ramp.duration);
-  if (num("steps", d)) s.ramp.steps = static_cast<int>(d);
+  count("steps", s.ramp.steps);
   num("heat-capacity", s.opt.heat.heat_capacity);
   num("T-ref", s.opt.heat.T_ref);
   num("T-initial", s.opt.heat.T_initial);
@@ -387,6 +396,7 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
       {"amplitude", "fretting: tangential load amplitude"}, {"period", "fretting/csv: period"},
       {"cycles", "fretting: number of cycles"}, {"steps-per-cycle", "fretting: steps per cycle"},
       {"ramp-steps", "fretting: steps of the initial normal-load ramp"},
+      {"F_T0", "ramp: initial F_T"}, {"F_N0", "ramp: initial F_N"},
       {"F_T1", "ramp: final F_T"}, {"F_N1", "ramp: final F_N"}, {"duration", "ramp: duration"},
       {"steps", "ramp: steps"}, {"heat-capacity", "heat capacity per area C"},
       {"T-ref", "reference temperature T0"}, {"T-initial", "initial interface temperature"}};

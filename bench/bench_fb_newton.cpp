@@ -3,13 +3,13 @@
 // Success of both solvers is judged by cpkit's residual check (finalize's scaled natural
 // residual), never by the peer's own flag. Figures: docs/benchmarks/fb_newton.md.
 //
-// Usage: bench_fb_newton [--quick]   (--quick: fewer repetitions, obstacle n = 10^4 only)
+// Usage: bench_fb_newton [--quick] [--sparse-only]
+//   --quick: fewer problems and repetitions, obstacle n = 10^4 only; --sparse-only: obstacle only.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -37,24 +37,21 @@ using cpkit::SparseMat;
 using cpkit::Vec;
 using Clock = std::chrono::steady_clock;
 
-/// Random P-matrix LCP (fixed seed): M = A A^T / n + (S - S^T) / sqrt(n) + 0.1 I with A, S
-/// standard normal, so x^T M x >= 0.1 ||x||^2 (positive definite, hence a P-matrix: unique
-/// solution); q standard normal. The same idea as the Lemke benchmark (positive definite,
-/// non-symmetric, seeded std::mt19937).
-LcpProblem random_p_lcp(int n, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::normal_distribution<double> N(0.0, 1.0);
-  Mat A(n, n), S(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      A(i, j) = N(gen);
-      S(i, j) = N(gen);
-    }
-  Mat M = A * A.transpose() / n + (S - S.transpose()) / std::sqrt(double(n)) +
-          0.1 * Mat::Identity(n, n);
+/// The random dense P-matrix LCPs of bench/bench_lemke.cpp, generated the same way so that both
+/// benchmarks see the same problems: B, S, q uniform in [-1, 1], M = B B^T / n + I + S - S^T
+/// (symmetric part positive definite, hence a P-matrix with a unique solution); one
+/// std::mt19937 seeded 2026 drawn in order through n = 10, 50, 100, 200, 500 with 40, 40, 20, 10,
+/// 6 problems (3 each with --quick).
+LcpProblem random_p_lcp(int n, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Mat B(n, n), S(n, n);
   Vec q(n);
-  for (int i = 0; i < n; ++i) q[i] = N(gen);
-  return LcpProblem(std::move(M), std::move(q), "random_p_" + std::to_string(n));
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) B(i, j) = u(rng), S(i, j) = u(rng);
+    q[i] = u(rng);
+  }
+  return LcpProblem(B * B.transpose() / n + Mat::Identity(n, n) + S - S.transpose(), q,
+                    "random_p_" + std::to_string(n));
 }
 
 /// 2-D obstacle problem on the unit square, m x m interior grid (n = m^2): membrane u = 0 on
@@ -159,24 +156,34 @@ RunStats run_siconos(const LcpProblem& p, int reps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  bool quick = false, sparse_only = false;
+  for (int a = 1; a < argc; ++a) {
+    quick = quick || std::strcmp(argv[a], "--quick") == 0;
+    sparse_only = sparse_only || std::strcmp(argv[a], "--sparse-only") == 0;
+  }
   std::printf(
       "# fb-newton benchmark (median wall time per solve; success = cpkit's residual check)\n");
-  std::printf("## random dense P-matrix LCPs (seed 20261122 + n, %s)\n",
+  std::printf("## random dense P-matrix LCPs of bench_lemke (seed 2026), %s\n\n",
 #ifdef CPKIT_HAVE_SICONOS
               "peer: Siconos numerics lcp_newton_FB"
 #else
               "Siconos not found: no peer column"
 #endif
   );
-  std::printf("%6s %4s | %12s %5s %4s %10s | %12s %5s %4s %10s | %6s\n", "n", "prob", "cpkit ms",
-              "iter", "ok", "resid", "siconos ms", "iter", "ok", "resid", "ratio");
-  std::map<int, std::vector<double>> ratios;
+  std::printf(
+      "| n | problems | cpkit ok | Siconos ok | cpkit iter (mean) | Siconos iter (mean) | "
+      "cpkit median ms | Siconos median ms | ratio median (min-max) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::mt19937 rng(2026);
   for (const int n : {10, 50, 100, 200, 500}) {
-    const int problems = quick ? 2 : (n <= 100 ? 5 : 3);
-    const int reps = quick ? 3 : (n <= 100 ? 21 : (n <= 200 ? 11 : 5));
-    for (int k = 0; k < problems; ++k) {
-      const auto p = random_p_lcp(n, 20261122u + static_cast<unsigned>(n) + 1000u * k);
+    if (sparse_only) break;
+    const int count = quick ? 3 : (n <= 50 ? 40 : n <= 100 ? 20 : n <= 200 ? 10 : 6);
+    const int reps = quick ? 3 : (n <= 100 ? 15 : (n <= 200 ? 7 : 5));
+    std::vector<double> tc, ts, ratio;
+    int okc = 0, oks = 0;
+    double itc = 0, its = 0;
+    for (int k = 0; k < count; ++k) {
+      const auto p = random_p_lcp(n, rng);
 #ifdef CPKIT_HAVE_SICONOS
       // Interleaved repetitions (cpkit, Siconos, cpkit, ...) so that load changes on the shared
       // machine hit both alike; medians of each.
@@ -190,36 +197,51 @@ int main(int argc, char** argv) {
       }
       a.seconds = median(ta);
       b.seconds = median(tb);
-      std::printf("%6d %4d | %12.4f %5d %4s %10.2e | %12.4f %5d %4s %10.2e | %6.2f\n", n, k,
-                  a.seconds * 1e3, a.iterations, a.success ? "yes" : "NO", a.residual,
-                  b.seconds * 1e3, b.iterations, b.success ? "yes" : "NO", b.residual,
-                  a.seconds / b.seconds);
-      ratios[n].push_back(a.seconds / b.seconds);
+      oks += b.success;
+      its += b.iterations;
+      ts.push_back(b.seconds * 1e3);
+      ratio.push_back(a.seconds / b.seconds);
 #else
       const auto a = run_cpkit(p, reps);
-      std::printf("%6d %4d | %12.4f %5d %4s %10.2e |\n", n, k, a.seconds * 1e3, a.iterations,
-                  a.success ? "yes" : "NO", a.residual);
 #endif
+      okc += a.success;
+      itc += a.iterations;
+      tc.push_back(a.seconds * 1e3);
     }
+#ifdef CPKIT_HAVE_SICONOS
+    std::printf("| %d | %d | %d | %d | %.1f | %.1f | %.4g | %.4g | %.2f (%.2f-%.2f) |\n", n, count,
+                okc, oks, itc / count, its / count, median(tc), median(ts), median(ratio),
+                *std::min_element(ratio.begin(), ratio.end()),
+                *std::max_element(ratio.begin(), ratio.end()));
+#else
+    std::printf("| %d | %d | %d | - | %.1f | - | %.4g | - | - |\n", n, count, okc, itc / count,
+                median(tc));
+#endif
+    std::fflush(stdout);
   }
-  for (auto& [n, v] : ratios)
-    std::printf("summary n = %d: median time ratio cpkit/Siconos %.2f over %zu problems\n", n,
-                median(v), v.size());
+  std::printf("\n");
   std::printf("## sparse 2-D obstacle problem (5-point Laplacian; symmetric: sparse LDL^T)\n");
-  std::printf("%8s | %10s %5s %6s %4s %10s\n", "n", "seconds", "iter", "ls", "ok", "resid");
+  std::printf("%8s %6s | %10s %5s %6s %4s %10s\n", "n", "z0", "seconds", "iter", "ls", "ok",
+              "resid");
   std::vector<int> sides = quick ? std::vector<int>{100} : std::vector<int>{100, 316};
   for (const int m : sides) {
     const auto p = obstacle(m);
-    std::vector<double> times;
-    cpkit::SolveResult r;
-    for (int k = 0; k < (quick || m > 200 ? 1 : 3); ++k) {
-      const auto t0 = Clock::now();
-      r = cpkit::lcp::solve_fb_newton(p);
-      times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    // z0 = 0 (membrane on the obstacle everywhere) and z0 = 1 (above it everywhere).
+    for (const double start : {0.0, 1.0}) {
+      cpkit::lcp::FbNewtonOptions o;
+      o.x0 = Vec::Constant(p.size(), start);
+      std::vector<double> times;
+      cpkit::SolveResult r;
+      for (int k = 0; k < (quick || m > 200 ? 1 : 3); ++k) {
+        const auto t0 = Clock::now();
+        r = cpkit::lcp::solve_fb_newton(p, o);
+        times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+      }
+      std::printf("%8lld %6.1f | %10.3f %5d %6d %4s %10.2e\n", static_cast<long long>(p.size()),
+                  start, median(times), r.iterations, r.line_search_steps,
+                  cpkit::is_solution(r.status) ? "yes" : "NO", r.residuals.natural);
+      std::fflush(stdout);
     }
-    std::printf("%8lld | %10.3f %5d %6d %4s %10.2e\n", static_cast<long long>(p.size()),
-                median(times), r.iterations, r.line_search_steps,
-                cpkit::is_solution(r.status) ? "yes" : "NO", r.residuals.natural);
   }
   return 0;
 }

@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
         if (one.solutions.empty()) continue;
         const RateSolutionSet all = solve_rate_problem(cases[i].p, cases[i].st, cases[i].f,
                                                        RateMethod::kAnalytic);
-        const bool in = contains(all, one.solutions.front().start, 1e-6);
+        const bool in = contains(all, one.solutions.front().start, std::max(1e-6, 1e3 * one.residual));
         inside += in;
         if (!in && show_outside) {
           const Case& c = cases[i];

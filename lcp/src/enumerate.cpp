@@ -119,6 +119,7 @@ class Engine {
       L.col_of[n_ + i] = -1;
     }
     L.pending = 0;
+    make_order();
     for (int i = 0; i < n_; ++i) {
       double sc = std::abs(q_(i));
       for (int j = 0; j < n_; ++j) sc = std::max(sc, std::abs(M_(i, j)));
@@ -144,6 +145,31 @@ class Engine {
   };
 
   double& t(Level& L, int r, int c) { return L.T[size_t(r) * n_ + c]; }
+
+  /// Decision order: natural, except that an index with a vanishing diagonal is followed by
+  /// the partner j maximising |M_ij M_ji| (so that the 2x2 block pivot becomes available at
+  /// once; for bimatrix games this interleaves the two players' strategies).
+  void make_order() {
+    std::vector<char> used(n_, 0);
+    double mmax = M_.cwiseAbs().maxCoeff();
+    for (int i = 0; i < n_; ++i) {
+      if (used[i]) continue;
+      used[i] = 1;
+      order_.push_back(i);
+      if (std::abs(M_(i, i)) > kPivotTol * mmax) continue;
+      int best = -1;
+      double bv = 0;
+      for (int j = 0; j < n_; ++j)
+        if (!used[j] && std::abs(M_(i, j) * M_(j, i)) > bv) {
+          bv = std::abs(M_(i, j) * M_(j, i));
+          best = j;
+        }
+      if (best >= 0) {
+        used[best] = 1;
+        order_.push_back(best);
+      }
+    }
+  }
 
   void copy_level(const Level& a, Level& b) {
     std::copy(a.T.begin(), a.T.end(), b.T.begin());
@@ -281,7 +307,7 @@ class Engine {
       leaf(levels_[cur], S);
       return;
     }
-    const int i = d;
+    const int i = order_[d];
     decided_[i] = 1;
     // branch A: i not in S (z_i = 0, w_i basic): only column z_i stopped being free
     const int ci = levels_[cur].col_of[i];
@@ -601,6 +627,7 @@ class Engine {
   double tol_;
   SolutionSet& out_;
   std::vector<char> decided_;
+  std::vector<int> order_;
   std::vector<int> free_ = std::vector<int>(kMaxEnumerationSize);
   std::vector<Level> levels_;
   std::vector<Mask> zero_z_, zero_w_;

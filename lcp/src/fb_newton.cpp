@@ -28,10 +28,13 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kDefaultMaxIterations = 200;
-/// Dense systems of at least this size are factorized by LAPACK's dgetrf when cpkit was built
-/// with LAPACK (blocked, vectorized BLAS); smaller ones by Eigen's PartialPivLU, which avoids
-/// the threading overhead of a multi-threaded BLAS on small matrices.
-constexpr Eigen::Index kLapackMinSize = 150;
+/// Dense LU by LAPACK's dgetrf (when cpkit was built with LAPACK) or Eigen's PartialPivLU,
+/// chosen by size from measurements against Debian's OpenBLAS (docs/benchmarks/fb_newton.md):
+/// Eigen below 32 (call overhead dominates) and for 100 <= n < 150, where OpenBLAS switches to
+/// multi-threaded factorization (n^2 >= 10^4) and loses more than it gains on a shared 2-core
+/// machine; LAPACK otherwise (vectorized single-threaded kernels below 100, blocked
+/// multi-threaded ones from 150).
+constexpr bool use_lapack_lu(Eigen::Index n) { return n >= 32 && (n < 100 || n >= 150); }
 /// An accepted step with Psi_new > (1 - kWeakDecrease) Psi_old makes little progress;
 /// kWeakLimit of them in a row count as stagnation (watchdog trigger).
 constexpr double kWeakDecrease = 1e-4;
@@ -210,7 +213,7 @@ struct DenseAlgebra {
     H.diagonal() += Da;
     const Eigen::Index n = H.rows();
 #ifdef CPKIT_HAVE_LAPACK
-    if (n >= kLapackMinSize) {
+    if (use_lapack_lu(n)) {
       // In place: H becomes L\U with row interchanges ipiv (1-based).
       const int nn = static_cast<int>(n);
       int info = 0;

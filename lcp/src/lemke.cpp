@@ -43,8 +43,8 @@ class LemkeRun {
         dw_(Vec::Zero(n_)),
         row_best_(n_),
         row_cand_(n_) {
-    const double mmax = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
-    gmax_ = std::max(mmax, 1e-300);
+    mmax_ = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
+    qmax_ = problem.q.lpNorm<Eigen::Infinity>();
     tied_.reserve(static_cast<size_t>(n_ + 1));
     tied_div_.reserve(static_cast<size_t>(n_ + 1));
   }
@@ -82,7 +82,11 @@ class LemkeRun {
   std::vector<int> tied_;
   std::vector<double> tied_div_;
   std::vector<TraceEntry> trace_;
-  double gmax_ = 1;
+  double mmax_ = 0;            // max |M_ij|
+  double gmax_ = 1;            // max |[M | c]_ij| (set with the artificial column c)
+  double qmax_ = 0;            // ||q||_inf
+  double beta_ = 1;            // internal z0 = user z0 / beta_ (see run())
+  int entering_ = -1;          // the variable entering at the current pivot
   double fresh_quality_ = 0;  // hinv_quality() right after the last refactorization
   Stopwatch clock_;
 };
@@ -98,7 +102,7 @@ void LemkeRun::record(int iteration, const char* kind, int entering, int leaving
   e.entering = entering;
   e.leaving = leaving;
   e.step = step;
-  e.residual = z0;
+  e.residual = z0 * beta_;  // z0 for the covering vector d as given
   trace_.push_back(std::move(e));
 }
 
@@ -148,12 +152,16 @@ int LemkeRun::initial_leaving(const Vec& dtilde) {
 }
 
 int LemkeRun::ratio_test(double& step) {
+  // Scale-aware tolerances (invariant under scaling M, q and the units of z): a pivot entry
+  // must exceed kPivotTol relative to the size of the pivot column's terms; a basic value below
+  // kDegenTol relative to the size of its kind of values counts as a degenerate zero.
   const int k = basis_.k();
-  const double dz_scale = std::max(1.0, dxz_.head(k).lpNorm<Eigen::Infinity>());
+  const double dz_norm = k > 0 ? dxz_.head(k).lpNorm<Eigen::Infinity>() : 0.0;
+  const double dz_scale = entering_ <= n_ ? std::max(1.0, dz_norm) : dz_norm;  // z enters at rate 1
   const double tol_z = kPivotTol * dz_scale;
   const double tol_w = kPivotTol * gmax_ * dz_scale;
-  const double xz_tol = kDegenTol * (1.0 + basis_.xz().head(k).lpNorm<Eigen::Infinity>());
-  const double w_tol = kDegenTol * (1.0 + basis_.w().lpNorm<Eigen::Infinity>());
+  const double xz_tol = kDegenTol * (k > 0 ? basis_.xz().head(k).lpNorm<Eigen::Infinity>() : 0.0);
+  const double w_tol = kDegenTol * std::max(basis_.w().lpNorm<Eigen::Infinity>(), qmax_);
   // Pass 1: the minimum ratio.
   double best = INFINITY;
   for (int p = 0; p < k; ++p) {
@@ -256,13 +264,21 @@ SolveResult LemkeRun::run() {
     }
   }
   // Covering vector in the coordinates of the starting basis: z0 raises every basic variable
-  // at rate dtilde_i: c = dtilde on W rows minus M(:, Z) dtilde_Z.
-  const Vec dtilde = o_.covering.size() ? o_.covering : Vec::Ones(n_);
+  // at rate rate0_i: c = rate0 on W rows minus M(:, Z) rate0_Z. Internally z0 is measured in
+  // the units of z (the w-rates are d_i * beta_ with beta_ = max |M_ij|), so that z and z0
+  // share the scale-aware tolerances; this rescales z0 only and leaves the path unchanged.
+  // User-facing values of z0 (trace, ray) are converted back to the units of d.
+  const Vec d = o_.covering.size() ? o_.covering : Vec::Ones(n_);
+  beta_ = mmax_ > 0 ? mmax_ : 1.0;
+  Vec rate0(n_);
   Vec c = Vec::Zero(n_);
-  for (Eigen::Index i = 0; i < n_; ++i)
-    if (basis_.rpos(i) < 0) c[i] = dtilde[i];
-  for (int j : zset) c.noalias() -= dtilde[j] * Eigen::Map<const Vec>(basis_.gcol(j), n_);
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    rate0[i] = basis_.rpos(i) < 0 ? beta_ * d[i] : d[i];
+    if (basis_.rpos(i) < 0) c[i] = rate0[i];
+  }
+  for (int j : zset) c.noalias() -= rate0[j] * Eigen::Map<const Vec>(basis_.gcol(j), n_);
   basis_.set_artificial_column(c);
+  gmax_ = std::max({mmax_, c.lpNorm<Eigen::Infinity>(), 1e-300});
 
   const int limit =
       o_.common.max_iterations > 0 ? o_.common.max_iterations : default_pivot_limit(n_);
@@ -276,11 +292,11 @@ SolveResult LemkeRun::run() {
   // Initial pivot: z0 enters.
   {
     basis_.direction(z0var, dxz_, dw_);
-    const int leaving = initial_leaving(dtilde);
+    const int leaving = initial_leaving(rate0);
     const double step = -value(leaving) / rate(leaving);
     basis_.pivot(z0var, leaving, step, dxz_, dw_);
     ++pivots;
-    record(pivots, "z0-enters", z0var, leaving, step);
+    record(pivots, "z0-enters", z0var, leaving, step * beta_);
     // The complement of the leaving variable enters next.
     entering = leaving < n_ ? leaving + static_cast<int>(n_) + 1 : leaving - static_cast<int>(n_) - 1;
   }
@@ -295,6 +311,7 @@ SolveResult LemkeRun::run() {
       claim.message = "time limit reached after " + std::to_string(pivots) + " pivots";
       break;
     }
+    entering_ = entering;
     basis_.direction(entering, dxz_, dw_);
     if (!dxz_.head(basis_.k()).allFinite() || !dw_.allFinite()) {
       claim.status = Status::kNumericalFailure;
@@ -308,6 +325,7 @@ SolveResult LemkeRun::run() {
       Vec ray = Vec::Zero(n_ + 1);
       if (entering <= n_) ray[entering] = 1.0;
       for (int p = 0; p < basis_.k(); ++p) ray[basis_.zcols()[static_cast<size_t>(p)]] = dxz_[p];
+      ray[n_] *= beta_;  // z0 for the covering vector d as given
       claim.ray = ray;
       claim.status = Status::kRayTermination;
       claim.message = "secondary ray after " + std::to_string(pivots) + " pivots (" +

@@ -112,7 +112,7 @@ NlpOutcome solve_nlp_nlopt(const NlpEvaluator& nlp, const Vec& x0, const MpccOpt
                                      std::vector<double>(ineq.rows.size(), ctol));
     opt.set_ftol_rel(options.nlp_tol);
     opt.set_xtol_rel(options.nlp_tol);
-    opt.set_maxeval(options.common.max_iterations > 0 ? options.common.max_iterations : 5000);
+    opt.set_maxeval(options.common.max_iterations > 0 ? options.common.max_iterations : 1000);
     if (time_limit_s > 0 && std::isfinite(time_limit_s)) opt.set_maxtime(time_limit_s);
     double f = 0;
     const nlopt::result r = opt.optimize(x, f);

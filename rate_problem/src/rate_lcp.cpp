@@ -93,6 +93,12 @@ StateDLcp state_d_lcp(const ContactParameters& p, const ContactState& st,
   StateDLcp l;
   l.q = c1 * (m * r0.dP_N - s * r0.dP_T);
   l.M = c1 * (m * r1.dP_N - s * r1.dP_T);
+  // A 1x1 block has no relative size of its own: judge M and q against the size of the terms
+  // they are made of (the cancellation that makes Lambda = 0 or L_s = 0 leaves rounding noise
+  // of that size), and snap such noise to an exact zero for the enumeration.
+  constexpr double kSnap = 1e-10;  // = kRateTol of the analytic route
+  if (std::abs(l.q) <= kSnap * c1 * (std::abs(m * r0.dP_N) + std::abs(r0.dP_T))) l.q = 0;
+  if (std::abs(l.M) <= kSnap * c1 * (std::abs(m * r1.dP_N) + std::abs(r1.dP_T))) l.M = 0;
   return l;
 }
 

@@ -99,9 +99,22 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
   if (opt.record_every > 0) res.series.push_back(cur);
   const bool cycles = history.period > 0;
   double t_prev = 0;
+  std::size_t first = 0;
+  if (n > 0 && !(history.points.front().t > 0)) {
+    // A leading unloaded point at t <= 0 is the start of the run; any other load needs t > 0.
+    const LoadPoint& p0 = history.points.front();
+    if (p0.F_T != 0 || p0.F_N != 0)
+      throw InputError("load history: the run starts unloaded at t = 0, so the first point "
+                       "needs t > 0 unless it is the unloaded start (F = 0); got t = " +
+                       std::to_string(p0.t));
+    t_prev = p0.t;
+    cur.t = p0.t;
+    if (!res.series.empty()) res.series.front().t = p0.t;
+    first = 1;
+  }
   double min_D = 0;
   StepPoints pts;
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = first; k < n; ++k) {
     const LoadPoint& lp = history.points[k];
     sp.state.P_T0 = cur.P_T;
     sp.state.P_N0 = cur.P_N;
@@ -143,7 +156,7 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
       ++res.branch_steps;
       if (static_cast<int>(res.branch_points.size()) < opt.max_branch_records) {
         BranchPoint bp;
-        bp.step = static_cast<long>(k) + 1;
+        bp.step = res.steps + 1;
         bp.t = lp.t;
         bp.count = pts.n;
         for (int i = 0; i < pts.n; ++i) bp.types |= 1u << static_cast<int>(pts.points[i].type);
@@ -163,7 +176,7 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
     const StepValues v = step_values(sp, chosen.DP_N, chosen.xi);
     res.max_residual = std::max(res.max_residual, ncp.residual(step_unknowns(v)));
     SimulationSample nx = cur;
-    nx.step = static_cast<long>(k) + 1;
+    nx.step = res.steps + 1;
     nx.t = lp.t;
     nx.F_T = lp.F_T;
     nx.F_N = lp.F_N;

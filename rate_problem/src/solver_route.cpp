@@ -41,6 +41,7 @@ RateSolutionSet solve_rate_single(const ContactParameters& p, const ContactState
   }
   detail::PieceList list;
   std::string message;
+  double residual = 0;
   if (st.label == StateLabel::kA || st.label == StateLabel::kC) {
     RateSolution s;
     s.type = st.label == StateLabel::kA ? SolutionType::kOpen : SolutionType::kStick;
@@ -59,10 +60,12 @@ RateSolutionSet solve_rate_single(const ContactParameters& p, const ContactState
     }
     message = entry->info.name + ": " + std::string(to_string(r.status)) +
               (r.message.empty() ? "" : " (" + r.message + ")");
+    residual = r.residuals.natural;
     if (raw != nullptr) *raw = std::move(r);
   }
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, false);
   out.message = message;
+  out.residual = residual;
   return out;
 }
 

@@ -144,6 +144,18 @@ TEST_CASE("CliSimulateFromTheExampleConfig", "[cli][simulate]") {
   while (std::getline(in, line)) ++rows;
   CHECK(rows == 311);
   CHECK(fs::exists(sum));
+  // Figures (the script is run with /usr/bin/python3; skipped without matplotlib).
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0) {
+    const std::string prefix = (dir / "fig").string();
+    const Run p = cpkit("simulate --config '" + cfg + "' --cycles 2 --csv '" + csv +
+                        "' --summary '" + sum + "' --plot '" + prefix + "'");
+    REQUIRE(p.code == 0);
+    CHECK(p.err.empty());
+    for (const char* f : {"_loop", "_wear", "_state"})
+      for (const char* ext : {".png", ".svg"}) CHECK(fs::exists(prefix + f + ext));
+  } else {
+    WARN("matplotlib not available to /usr/bin/python3: figures not checked");
+  }
 }
 
 TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
@@ -154,7 +166,7 @@ TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
   CHECK(stop.out.find("t = 0.51") != std::string::npos);
   const fs::path bad = scratch() / "bad.json";
   std::ofstream(bad) << R"({"parameters": {"a11": 1, "a12": 0, "a22": 1, "mu": 0.5, "typo": 1}})";
-  for (const std::string args :
+  for (const std::string& args :
        {"simulate --config '" + bad.string() + "'", std::string("simulate --a11 1 --a12 0 --a22 1"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --load csv"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 0"),

@@ -2,11 +2,10 @@
 // Matrix Market example: runs the built binary, checks the exit code against each file's stated
 // outcome (0 for solvable files, 1 for infeasible ones) and re-checks the printed z against the
 // file's data here.
-#include <catch2/catch.hpp>
-
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

@@ -218,6 +218,33 @@ TEST_CASE("DegenerateA11EqualsMuA12GivesAContinuumOnN0", "[map][direction]") {
   CHECK(found_down);
 }
 
+TEST_CASE("StateDWithLambdaZeroHasARayOnLs0", "[map][direction]") {
+  // C_T = 0, a11 = 1, a12 = 0.5, a22 = 1, mu = 1, kappa = k_a P_N / (3 P_s) = 1:
+  // Lambda = a11 - mu a12 + kappa (a12 - mu a22) = 0.5 - 0.5 = 0 exactly. model.md: one solution
+  // (stick) for L_+ < 0, a ray on L_+ = 0, none for L_+ > 0; L_+ = dF_T - dF_N.
+  ContactParameters p;
+  p.a11 = 1;
+  p.a12 = 0.5;
+  p.a22 = 1;
+  p.mu = 1;
+  p.C_T = 0;
+  p.k_a = 3;
+  p.P_s = 1;
+  ContactState s;
+  s.label = StateLabel::kD;
+  s.P_N = 1;
+  s.sgn_PT = +1;
+  const DirectionMap m = compute_direction_map(p, s);
+  REQUIRE(m.critical.size() == 2);
+  CHECK(m.critical[0].theta == Approx(kPi / 4).margin(1e-14));
+  CHECK(m.critical[1].theta == Approx(5 * kPi / 4).margin(1e-14));
+  for (const auto& c : m.critical) CHECK(c.summary.count == -1);
+  REQUIRE(m.sectors.size() == 2);
+  CHECK(m.sectors[0].summary.count == 1);  // (pi/4, 5 pi/4): L_+ < 0, stick
+  CHECK(m.sectors[0].summary.types == kStick);
+  CHECK(m.sectors[1].summary.count == 0);  // L_+ > 0
+}
+
 TEST_CASE("DirectionMapRejectsBadInput", "[map][direction]") {
   ContactParameters p = fig5(1.0);
   p.mu = std::nan("");
@@ -228,4 +255,31 @@ TEST_CASE("DirectionMapRejectsBadInput", "[map][direction]") {
   MapOptions opt;
   opt.method = RateMethod::kLemke;  // single-solution method: cannot count
   CHECK_THROWS_AS(compute_direction_map(fig5(1.0), state_b(), opt), cpkit::InputError);
+}
+
+// Known issue (reported to the rate-problem module, issue 6): in state d with Lambda < 0 the
+// enumeration route returns no solution on one exact direction L_s = 0, where stick
+// (lambda = 0) is a solution; the analytic route finds it. Tagged [!mayfail] so the run shows the
+// failure without failing the suite; remove the tag once the enumeration route is fixed.
+TEST_CASE("StateDCriticalDirectionsAgreeAcrossRoutes", "[map][direction][!mayfail]") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  int disagreeing_maps = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    ContactParameters p;
+    p.a11 = 0.5 + 2 * u(rng);
+    p.a22 = 0.5 + 2 * u(rng);
+    p.a12 = (2 * u(rng) - 1) * 0.95 * std::sqrt(p.a11 * p.a22);
+    p.mu = 0.1 + 3 * u(rng);
+    p.C_T = 2 * u(rng);
+    p.k_a = 3 * u(rng);
+    ContactState s;
+    s.label = StateLabel::kD;
+    s.P_N = 0.2 + 2 * u(rng);
+    s.sgn_PT = u(rng) < 0.5 ? 1 : -1;
+    MapOptions opt;
+    opt.method = RateMethod::kAnalytic;
+    disagreeing_maps += compute_direction_map(p, s, opt).disagreements > 0;
+  }
+  CHECK(disagreeing_maps == 0);
 }

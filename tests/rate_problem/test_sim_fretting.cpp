@@ -248,6 +248,14 @@ TEST_CASE("LoadHistoriesParseAndRejectBadInput", "[sim][input]") {
   CHECK_THROWS_AS(parse_load_csv("0.5,nan,1\n"), cpkit::InputError);
   CHECK_THROWS_AS(parse_load_csv(""), cpkit::InputError);
   CHECK_THROWS_AS(read_load_csv("/nonexistent/file.csv"), cpkit::InputError);
+  // A leading unloaded point at t = 0 is the start; a loaded one at t <= 0 is bad input.
+  const LoadHistory h0 = parse_load_csv("0,0,0\n1,0,1\n2,0.1,1\n");
+  SimulationOptions o0;
+  const auto r0 = simulate(h0, o0);
+  CHECK(r0.steps == 2);
+  CHECK(r0.series.back().step == 2);
+  CHECK(r0.series.back().P_N == Approx(1.0));
+  CHECK_THROWS_AS(simulate(parse_load_csv("0,0,1\n1,0,1\n"), o0), cpkit::InputError);
   FrettingCycle c;
   c.steps_per_cycle = 2;
   CHECK_THROWS_AS(fretting_history(c), cpkit::InputError);

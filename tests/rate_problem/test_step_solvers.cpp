@@ -75,7 +75,11 @@ TEST_CASE("EveryRegisteredSolverReturnsAnEnumeratedStepSolution", "[step][chain]
   for (bool wear : {false, true}) {
     if (wear && name == "lemke") continue;  // an LCP solver: only the no-wear steps
     int solved = 0, total = 0;
-    for (const auto& p : corpus(wear)) {
+    const auto problems = corpus(wear);
+    // Ipopt takes ~0.1 s per step: a third of the corpus keeps the test fast.
+    const std::size_t n = name == "ipopt" ? problems.size() / 3 : problems.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const StepProblem& p = problems[i];
       const StepSolutionSet set = enumerate_step(p);
       if (set.solutions.empty()) continue;
       StepSolveOptions o;

@@ -1,0 +1,163 @@
+// `cpkit rate`: exit codes, JSON output, disagreement handling. Runs the built binary.
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Run run_rate(const std::string& args) {
+  static int counter = 0;
+  const std::string base = std::string(CPKIT_BINARY_DIR) + "/test_cli_rate_" + std::to_string(++counter);
+  const std::string cmd = std::string(CPKIT_BINARY_DIR) + "/apps/cpkit rate " + args + " >" + base +
+                          ".out 2>" + base + ".err";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(base + ".out");
+  r.err = slurp(base + ".err");
+  std::remove((base + ".out").c_str());
+  std::remove((base + ".err").c_str());
+  return r;
+}
+
+const std::string kB = "--state b --a11 1 --a12 2 --a22 5 --mu 1 ";  // D_+ = -1: non-unique
+
+}  // namespace
+
+TEST_CASE("cpkit rate: three solutions in JSON (hand case of Fig. 5b)", "[cli][rate]") {
+  // A = [[1,2],[2,5]], mu = 1, dF = (1, 1.2): separation, stick, slip+ (hand computation in
+  // tests/rate_problem/test_rate_paper.cpp); slip+ has dP = (0.8, 0.8), dw_T^i = 0.2.
+  const Run r = run_rate(kB + "--dF 1 1.2 --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == 3);
+  CHECK(j["types"] == nlohmann::json({"separation", "slip+", "stick"}));
+  CHECK(j["unique_for_all_directions"] == false);
+  REQUIRE(j["solutions"].size() == 3);
+  bool found = false;
+  for (const auto& s : j["solutions"]) {
+    CHECK(s["kind"] == "point");
+    if (s["type"] == "slip+") {
+      found = true;
+      CHECK(s["rates"]["dP_T"].get<double>() == Approx(0.8));
+      CHECK(s["rates"]["dP_N"].get<double>() == Approx(0.8));
+      CHECK(s["rates"]["dw_Ti"].get<double>() == Approx(0.2));
+      CHECK(s["rates"]["dw_N"].get<double>() == Approx(0).margin(1e-12));
+      CHECK(s["rates"]["dw_w"].get<double>() == Approx(0).margin(1e-12));
+    }
+  }
+  CHECK(found);
+  CHECK(j.contains("Lambda"));
+}
+
+TEST_CASE("cpkit rate: a segment with open/closed ends (degenerate a11 = mu|a12|)", "[cli][rate]") {
+  // D_+ = 1 - 0.5*2 = 0, dF = (1,2) on N = 0: stick point + slip+ segment from stick (open) to
+  // zero-force slip dP = 0, dw_T^i = dF_N/|a12| = 1 (closed).
+  for (const char* method : {"enumerate", "analytic"}) {
+    const Run r = run_rate("--state b --a11 1 --a12 2 --a22 5 --mu 0.5 --dF 1 2 --json --method " +
+                           std::string(method));
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["count"] == "inf");
+    CHECK(j["types"] == nlohmann::json({"slip+", "stick"}));
+    bool seg = false;
+    for (const auto& s : j["solutions"])
+      if (s["kind"] == "segment") {
+        seg = true;
+        CHECK(s["type"] == "slip+");
+        CHECK(s["start_closed"] == false);
+        CHECK(s["end_closed"] == true);
+        CHECK(s["end"]["dw_Ti"].get<double>() == Approx(1));
+        CHECK(s["start"]["dP_N"].get<double>() == Approx(2));
+      }
+    CHECK(seg);
+  }
+}
+
+TEST_CASE("cpkit rate: a ray (state d, Lambda = 0, L_s = 0)", "[cli][rate]") {
+  const Run r = run_rate("--state d --a11 1 --a12 0.5 --a22 1 --mu 2 --P_N 1 --sgnPT 1 --dF 2 1 --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == "inf");
+  bool ray = false;
+  for (const auto& s : j["solutions"])
+    if (s["kind"] == "ray") {
+      ray = true;
+      CHECK(s["start_closed"] == false);
+      CHECK(s["direction"]["dw_Ti"].get<double>() > 0);
+    }
+  CHECK(ray);
+}
+
+TEST_CASE("cpkit rate: no solution exits 1", "[cli][rate]") {
+  // Lambda = 1 - 3*0.5 = -0.5, L_+ = 4 - 3 = 1 > 0: none.
+  const Run r = run_rate("--state d --a11 1 --a12 0.5 --a22 1 --mu 3 --P_N 1 --dF 4 1 --json");
+  CHECK(r.code == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == 0);
+  CHECK(j["Lambda"].get<double>() == Approx(-0.5));
+}
+
+TEST_CASE("cpkit rate: single solvers are checked against the set", "[cli][rate]") {
+  for (const char* m : {"lemke", "fb-newton"}) {
+    const Run r = run_rate(kB + "--dF 1 1.2 --json --method " + std::string(m));
+    INFO(m << ": " << r.err);
+    if (r.code == 2 && r.err.find("not registered") != std::string::npos) continue;
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["count"] == 1);
+  }
+}
+
+TEST_CASE("cpkit rate: bad input exits 2 with nothing on stdout", "[cli][rate]") {
+  const std::string base = "--a11 1 --a12 0.5 --a22 1 --mu 0.5 --dF 1 1 ";
+  const std::vector<std::string> cases = {
+        "--state b --a11 1 --a12 2 --a22 1 --mu 0.5 --dF 1 1",  // indefinite A
+        "--state b --a11 1 --a12 0 --a22 1 --mu 0 --dF 1 1",    // mu <= 0
+        "--state b --a11 1 --a12 0 --a22 1 --mu -1 --dF 1 1",
+        std::string("--state c --P_N 0 ") + base,                // P_N <= 0 in c
+        std::string("--state d --P_N -1 ") + base,               // P_N <= 0 in d
+        "--state b --a11 nan --a12 0 --a22 1 --mu 0.5 --dF 1 1", // NaN
+        "--state b --a11 1 --a12 0 --a22 1 --mu 0.5 --dF nan 1",
+        std::string("--state e ") + base,                        // unknown state
+        std::string("--state b --frobnicate 1 ") + base,         // unknown option
+        std::string("--state b --method simplex ") + base,       // unknown method
+        std::string("--state b --criterion 36 ") + base,
+        "--state b --a11 1 --a12 0 --a22 1 --mu 0.5 --dF 1",     // dF needs 2 values
+        std::string("--state d --P_N 1 --sgnPT 0 ") + base};
+  for (const std::string& args : cases) {
+    const Run r = run_rate(args);
+    CAPTURE(args, r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(r.err.empty());
+  }
+}
+
+TEST_CASE("cpkit rate: text output", "[cli][rate]") {
+  const Run r = run_rate("--state c --a11 2 --a12 1 --a22 3 --mu 0.5 --C_T 0.5 --P_N 1 --dF 1 1");
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("count: 1") != std::string::npos);
+  CHECK(r.out.find("stick point") != std::string::npos);
+}
