@@ -91,12 +91,19 @@ std::string result_text(const SolveResult& r, const LcpProblem& problem) {
                                << ")\n";
   s << to_text(r);
   if (!r.trace.empty()) {
+    // Pivoting methods number the variables 0..n-1 = z_i, n = z0, n+1+i = w_i.
+    const Eigen::Index n = problem.size();
+    auto var = [n](int id) {
+      if (id < n) return "z" + std::to_string(id + 1);
+      if (id == n) return std::string("z0");
+      return "w" + std::to_string(id - n);
+    };
     s << "trace:\n";
     for (const auto& e : r.trace) {
       s << "  " << e.iteration << ' ' << e.kind;
-      if (e.entering >= 0 || e.leaving >= 0)
-        s << " entering " << e.entering << " leaving " << e.leaving;
-      s << " residual " << e.residual << '\n';
+      if (e.entering >= 0 && e.leaving >= 0)
+        s << ": " << var(e.entering) << " enters, " << var(e.leaving) << " leaves";
+      s << " (step " << e.step << ", residual " << e.residual << ")\n";
     }
   }
   return s.str();
@@ -111,13 +118,21 @@ int exit_code_of(const SolveResult& r) { return is_solution(r.status) ? kExitOk 
 int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
                         const CommonOptions& options) {
   std::vector<SolveResult> results;
+  std::vector<std::string> names;
   for (const auto& entry : cpkit::lcp::solvers().entries())
-    if (entry.accepts(problem)) results.push_back(run_one_solver(entry, problem, options));
+    if (entry.accepts(problem)) {
+      results.push_back(run_one_solver(entry, problem, options));
+      names.push_back(entry.info.name);
+    }
   bool any = false;
   for (const auto& r : results) any |= is_solution(r.status);
   if (a.json) {
     nlohmann::json arr = nlohmann::json::array();
-    for (const auto& r : results) arr.push_back(result_json(r, problem));
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      nlohmann::json j = result_json(results[k], problem);
+      j["entry"] = names[k];  // the registry entry run ("solver" is who produced z)
+      arr.push_back(j);
+    }
     print_json(arr);
   } else {
     std::ostringstream s;
@@ -126,9 +141,10 @@ int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
     std::snprintf(line, sizeof line, "%-12s %-18s %-12s %-10s %-10s %s\n", "solver", "status",
                   "residual", "iterations", "seconds", "answered by");
     s << line;
-    for (const auto& r : results) {
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      const SolveResult& r = results[k];
       std::snprintf(line, sizeof line, "%-12s %-18s %-12.3g %-10d %-10.4f %s\n",
-                    r.attempts.empty() ? r.solver.c_str() : "auto",
+                    names[k].c_str(),
                     std::string(to_string(r.status)).c_str(), r.residuals.natural, r.iterations,
                     r.seconds, r.solver.c_str());
       s << line;

@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
         std::printf("%-8s %-34s %14s\n", st, name, "not registered");
         continue;
       }
-      const int ns = std::string(name) == "ipopt" ? std::min(n, 300) : std::min(n, 20000);
+      const int ns = std::string(name) == "ipopt" ? std::min(n, 100) : std::min(n, 20000);
       int solved = 0, inside = 0;
       const double rs = best_rate(std::string(name) == "ipopt" ? 1 : reps, ns, [&] {
         solved = inside = 0;

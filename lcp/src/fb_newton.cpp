@@ -169,11 +169,12 @@ struct AffineSource {
     F += *q;
     return true;
   }
-  /// Stopping scale 1 + max(||q||, ||w||). Deliberately stricter than finalize()'s
+  /// Stopping scale 1 + max(||q||, ||w|| - ||q||) <= finalize()'s scale (since
+  /// ||w|| - ||q|| <= ||M z|| <= || |M| |z| ||). Deliberately stricter than finalize()'s
   /// 1 + max(||q||, || |M| |z| ||): along a diverging sequence z -> inf of an infeasible problem
   /// the latter grows without bound and would let min(z, w) = O(1) pass as "solved".
   double scale(const Vec& /*x*/, const Vec& F) const {
-    return 1.0 + std::max(q_norm, F.lpNorm<Eigen::Infinity>());
+    return 1.0 + std::max(q_norm, F.lpNorm<Eigen::Infinity>() - q_norm);
   }
 };
 

@@ -254,7 +254,7 @@ NlpOutcome solve_nlp_ipopt(const NlpEvaluator& nlp, const Vec& x0, const MpccOpt
     opts->SetNumericValue("tol", options.nlp_tol);
     opts->SetNumericValue("acceptable_tol", std::max(1e-6, options.nlp_tol));
     opts->SetIntegerValue("max_iter",
-                          options.common.max_iterations > 0 ? options.common.max_iterations : 3000);
+                          options.common.max_iterations > 0 ? options.common.max_iterations : 500);
     opts->SetNumericValue("bound_relax_factor", bound_relax);
     if (time_limit_s > 0 && std::isfinite(time_limit_s))
       opts->SetNumericValue("max_cpu_time", time_limit_s);

@@ -143,6 +143,22 @@ Rates plane_rates(const ContactParameters& p, const ContactState& st, const Load
   return state_d_rates(p, st, f, st.sgn_PT * x.v);
 }
 
+/// Rates of a point of the given type: quantities the type decision judged zero (within the
+/// route's tolerance) are set to exact zeros (dw_N off separation in b; dw_T^i, dw_N, dw^w at
+/// stick), so that rounding noise of order 1e-17 is not printed as a rate.
+Rates typed_rates(const ContactParameters& p, const ContactState& st, const LoadRate& f,
+                  detail::P2 x, SolutionType type) {
+  Rates r = plane_rates(p, st, f, x);
+  if (st.label == StateLabel::kB && type != SolutionType::kSeparation) r.dw_N = 0;
+  if (type == SolutionType::kStick) {
+    r.dw_T -= r.dw_Ti;
+    r.dw_Ti = 0;
+    r.dw_N = 0;
+    r.dw_w = 0;
+  }
+  return r;
+}
+
 /// Fast complete enumeration of the state-b LCP for the summary (count and types), by
 /// complementary supports, using two facts about this M (docs/contact_model.md, Sec. 5):
 ///  (i) a solution with l+ > 0 and l- > 0 has w2 = w3 = 0, i.e. dP_T = dP_N = 0 (mu > 0); its
@@ -230,10 +246,12 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     RateSolution s;
     s.type = t.type;
     s.kind = t.kind;
-    s.start = plane_rates(p, st, f, t.a);
+    // an open end is a point of another type: its rates are not snapped
+    s.start = t.a_closed ? typed_rates(p, st, f, t.a, t.type) : plane_rates(p, st, f, t.a);
     s.start_closed = t.a_closed;
     if (t.kind == RateSolution::Kind::kSegment) {
-      s.end = plane_rates(p, st, f, detail::P2{t.a.u + t.t1 * t.d.u, t.a.v + t.t1 * t.d.v});
+      const detail::P2 b{t.a.u + t.t1 * t.d.u, t.a.v + t.t1 * t.d.v};
+      s.end = t.b_closed ? typed_rates(p, st, f, b, t.type) : plane_rates(p, st, f, b);
       s.end_closed = t.b_closed;
     } else if (t.kind == RateSolution::Kind::kRay) {
       s.direction = plane_rates(p, st, LoadRate{}, t.d);

@@ -170,6 +170,7 @@ TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
        {"simulate --config '" + bad.string() + "'", std::string("simulate --a11 1 --a12 0 --a22 1"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --load csv"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 0"),
+        std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 2.5"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --heat --T-ref -3")}) {
     const Run r = cpkit(args);
     CAPTURE(args, r.err);

@@ -617,3 +617,27 @@ TEST_CASE("Registry entry 'lemke' runs solve_lemke with the common options", "[l
   CHECK(r.iterations == 3);
   CHECK(r.solver == "lemke");
 }
+
+TEST_CASE("Scale invariance: scaling M and q does not change the path or the verdict",
+          "[lemke][scaling]") {
+  // Hilbert matrix (positive definite, condition ~1e13 at n = 10) with q = -H 1 - small: the
+  // Lemke path (a P-matrix problem) is the same for (a M, b q) in exact arithmetic, z scales by
+  // b / a. Tolerances that are not scale-aware break this (they did in development).
+  const int n = 10;
+  Mat H(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) H(i, j) = 1.0 / (i + j + 1);
+  std::mt19937 rng(3);
+  const Vec q = -H * Vec::Ones(n) - 0.01 * random_vec(n, rng).cwiseAbs();
+  const auto ref = solve_lemke(LcpProblem(H, q));
+  REQUIRE(ref.status == Status::kSolved);
+  for (double a : {1e-8, 1.0, 1e8}) {
+    for (double b : {1e-6, 1.0, 1e6}) {
+      CAPTURE(a, b);
+      const auto r = solve_lemke(LcpProblem(a * H, b * q));
+      REQUIRE(r.status == Status::kSolved);
+      CHECK(r.iterations == ref.iterations);
+      CHECK(r.basis == ref.basis);
+    }
+  }
+}

@@ -26,16 +26,17 @@
 /// (Billups' problem from x = 0): on stagnation a bounded watchdog of Newton steps without the
 /// Armijo test is tried before giving up (options watchdog_steps, max_escapes).
 ///
-/// Linear algebra: dense partial-pivoting LU for dense storage / dense Jacobians (Eigen below
-/// n = 150, LAPACK dgetrf above when cpkit was built with LAPACK); for sparse LCP storage or a
+/// Linear algebra: dense partial-pivoting LU for dense storage / dense Jacobians (LAPACK dgetrf
+/// when cpkit was built with LAPACK, for n >= 32 except 100 <= n < 150; Eigen's PartialPivLU
+/// otherwise; see docs/fb_newton.md); for sparse LCP storage or a
 /// sparse Jacobian callback Eigen SparseLU (COLAMD ordering, pattern analysed once), or, when M
 /// is symmetric, sparse LDL^T of the symmetric K = M + diag(Da/Db) with H = diag(Db) K
 /// (residual-checked, falling back to SparseLU).
 /// Without a Jacobian callback F' is approximated by forward differences with step
 /// h_j = fd_step * max(1, |x_j|) (backward difference when x + h_j e_j is outside F's domain).
 ///
-/// Stopping: ||x - mid(l, u, x - F(x))||_inf / scale <= tol with scale = 1 + max(||q||, ||w||)
-/// for LCPs (1 + ||F|| for MCPs), which is at least as strict as finalize()'s test; finalize()
+/// Stopping: ||x - mid(l, u, x - F(x))||_inf / scale <= tol with scale = 1 + max(||q||,
+/// ||w|| - ||q||) for LCPs (1 + ||F|| for MCPs), never larger than finalize()'s; finalize()
 /// then decides the status from the data. The trace records this stopping residual.
 /// Guarantees: every accumulation point is a stationary point of Psi; for monotone F (PSD M)
 /// stationary points solve the problem, and for P-matrices / uniformly P-functions the iterates

@@ -99,7 +99,7 @@ std::string_view to_string(NlpBackend b) noexcept;
 std::optional<NlpBackend> nlp_backend_from_string(std::string_view s) noexcept;
 
 struct MpccOptions {
-  /// max_iterations: per-NLP iteration limit (0: Ipopt 3000, NLopt 1000 evaluations);
+  /// max_iterations: per-NLP iteration limit (0: Ipopt 500, NLopt 1000 evaluations);
   /// time_limit_s: for the whole sequence; verbosity >= 3 (with a log sink) forwards the NLP
   /// solver's own output to the sink (Ipopt print level 5); otherwise the NLP solver is silent.
   CommonOptions common;
