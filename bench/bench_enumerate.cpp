@@ -108,7 +108,8 @@ void bench_tiny(bool quick) {
 
 // ---------------- (2) random LCPs vs Siconos lcp_enum ----------------
 #ifdef CPKIT_HAVE_SICONOS
-/// Siconos lcp_enum restarted after every solution until it has scanned all 2^n bases.
+/// Siconos lcp_enum restarted after every solution until it has scanned all 2^n bases (its
+/// scan starts at iparam SEED and wraps around cyclically, so it stops at the first wrap).
 /// Returns the number of solutions it reported (each feasible basis once).
 int siconos_all(const Mat& Mm, const Vec& q, double& seconds) {
   const int n = static_cast<int>(q.size());
@@ -130,8 +131,10 @@ int siconos_all(const Mat& Mm, const Vec& q, double& seconds) {
     int info = 1;
     lcp_enum(&lcp, z.data(), w.data(), &info, opts);
     if (info != 0) break;
+    const long current = opts->iparam[SICONOS_LCP_IPARAM_ENUM_CURRENT_ENUM];
+    if (current < seed) break;  // the scan wrapped around to a basis already counted
     ++count;
-    seed = opts->iparam[SICONOS_LCP_IPARAM_ENUM_CURRENT_ENUM] + 1;
+    seed = current + 1;
     if (seed >= (1L << n)) break;
   }
   seconds = cpu_now() - t0;
@@ -287,6 +290,7 @@ int main(int argc, char** argv) {
   bool quick = false;
   for (int a = 1; a < argc; ++a)
     if (std::strcmp(argv[a], "--quick") == 0) quick = true;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   std::printf("# LCP enumeration benchmark%s\n\n", quick ? " (--quick)" : "");
   bench_tiny(quick);
   bench_random(quick);

@@ -299,7 +299,7 @@ int main(int argc, char** argv) {
   prof << "tau";
   for (const auto& c : columns) prof << ',' << c;
   prof << '\n';
-  for (double log_tau = 0; log_tau <= 4.0001; log_tau += 0.05) {
+  for (double log_tau = 0; log_tau <= 6.0001; log_tau += 0.05) {
     const double tau = std::pow(10.0, log_tau);
     prof << tau;
     for (std::size_t c = 0; c < columns.size(); ++c) {

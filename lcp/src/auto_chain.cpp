@@ -16,8 +16,8 @@
 namespace cpkit::lcp {
 
 std::vector<std::string> auto_chain_names(ProblemKind kind) {
-  if (kind == ProblemKind::kLcp) return {"lemke", "fb-newton", "ipopt"};
-  return {"fb-newton", "ipopt"};
+  if (kind == ProblemKind::kLcp) return {"lemke", "fb-newton", "ipopt", "nlopt"};
+  return {"fb-newton", "ipopt", "nlopt"};
 }
 
 namespace {
@@ -105,6 +105,7 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
   Stopwatch timer;
   std::vector<Attempt> attempts;
   std::optional<SolveResult> chosen, inaccurate, last;
+  bool farkas_done = false;
   for (const std::string& name : auto_chain_names(kind_of(problem))) {
     const SolverEntry* entry = solvers().find(name);
     const auto* fn = entry ? pick(*entry, problem) : nullptr;
@@ -145,32 +146,36 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
     }
     if (r.status == Status::kSolvedInaccurate && !inaccurate) inaccurate = r;
     last = std::move(r);
+    if constexpr (std::is_same_v<Problem, LcpProblem>) {
+      // After the first failure (normally Lemke's ray): look for a Farkas certificate once.
+      if (!farkas_done && !inaccurate && solvers().find("ipopt") != nullptr) {
+        farkas_done = true;
+        const double left = options.time_limit_s - timer.seconds();
+        Stopwatch t;
+        if (left > 0) {
+          auto cert = farkas_search(problem, options, left);
+          attempts.push_back({"farkas-search", cert ? Status::kInfeasible : Status::kStalled, 0,
+                              t.seconds(),
+                              cert ? "certificate y >= 0, M^T y <= 0, q^T y < 0 found (LP by Ipopt)"
+                                   : "no Farkas certificate found"});
+          if (cert) {
+            SolveResult proof;
+            proof.status = Status::kInfeasible;
+            proof.solver = "farkas-search";
+            proof.certificate = std::move(*cert);
+            proof.message = "infeasible: Farkas certificate found by the LP after " + name;
+            chosen = std::move(proof);
+            break;
+          }
+        }
+      }
+    }
   }
   SolveResult result;
   if (chosen) result = std::move(*chosen);
   else if (inaccurate) result = std::move(*inaccurate);
   else if (last) result = std::move(*last);
   else result.message = "no solver of the chain could run";
-  if constexpr (std::is_same_v<Problem, LcpProblem>) {
-    if (!is_solution(result.status) && result.status != Status::kInfeasible &&
-        solvers().find("ipopt") != nullptr) {
-      const double left = options.time_limit_s - timer.seconds();
-      Stopwatch t;
-      if (left > 0) {
-        auto cert = farkas_search(problem, options, left);
-        attempts.push_back({"farkas-search", cert ? Status::kInfeasible : Status::kStalled, 0,
-                            t.seconds(),
-                            cert ? "certificate y >= 0, M^T y <= 0, q^T y < 0 found"
-                                 : "no Farkas certificate found"});
-        if (cert) {
-          result.status = Status::kInfeasible;
-          result.solver = "farkas-search";
-          result.certificate = std::move(*cert);
-          result.message = "infeasible: Farkas certificate found after every solver failed";
-        }
-      }
-    }
-  }
   std::ostringstream msg;
   msg << "auto: ";
   if (is_solution(result.status) || result.status == Status::kInfeasible)

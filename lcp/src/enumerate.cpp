@@ -365,13 +365,15 @@ class Engine {
       add_point(S, z);
       return;
     }
-    // consistency: -q_S in the range of M_SS
+    // consistency: -q_S in the range of M_SS (backward-error scale |q_i| + ||M_i.||_1 ||z0||_inf:
+    // entries of z0 that should vanish carry round-off of the size of the whole z0)
+    const double z0n = z.cwiseAbs().maxCoeff();
     for (int c = 0; c < k; ++c) {
       const int i = idx[c];
       double v = q_(i), sc = std::abs(q_(i));
       for (int j = 0; j < n_; ++j) {
         v += M_(i, j) * z(j);
-        sc += std::abs(M_(i, j) * z(j));
+        sc += std::abs(M_(i, j)) * z0n;
       }
       if (std::abs(v) > kGray * tol_ * sc) return;  // empty piece
       if (std::abs(v) > tol_ * sc) {

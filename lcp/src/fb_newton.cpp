@@ -527,10 +527,13 @@ class FbDriver {
       if (!(gnorm > 0) || !std::isfinite(gnorm)) {
         stagnation = "stationary point of the merit function that is not a solution";
       } else {
-        // Newton direction, or the gradient fallback.
+        // Newton direction, or the gradient fallback. An exactly solved Newton system gives
+        // grad.d = -||Phi||^2 = -2 Psi; a direction achieving at least half of that is accepted
+        // even when the (scale-dependent) test grad.d <= -rho ||d||^p fails, which happens on
+        // ill-conditioned problems where ||d|| is large although d is an accurate Newton step.
         double gd = newton_ok ? g_.dot(d_) : 0.0;
         bool newton = newton_ok && std::isfinite(gd) &&
-                      gd <= -o_.descent_rho * std::pow(d_.norm(), o_.descent_power);
+                      (gd <= -o_.descent_rho * std::pow(d_.norm(), o_.descent_power) || gd <= -psi);
         const double psi_ref = *std::max_element(history_.begin(), history_.end());
         double t = 0, psit = 0;
         bool ok = newton && line_search(psi_ref, gd, t, psit, r);

@@ -23,12 +23,17 @@ constexpr double kTieTol = 1e-9;      // relative tie in the minimum ratio
 constexpr int kCheckEvery = 16;       // pivots between accuracy checks of the basis inverse
 constexpr double kRefactorTol = 1e-10;  // relative residual that triggers a refactorization
 
+void add_message(SolveResult& r, const std::string& text) {
+  r.message += (r.message.empty() ? "" : "; ") + text;
+}
+
 int default_pivot_limit(Eigen::Index n) { return static_cast<int>(50 * (n + 1) + 1000); }
 
+// Textbook names for messages: z1..zn, z0 (artificial), w1..wn (1-based, unlike the ids).
 std::string var_name(int var, Eigen::Index n) {
-  if (var < n) return "z" + std::to_string(var);
+  if (var < n) return "z" + std::to_string(var + 1);
   if (var == n) return "z0";
-  return "w" + std::to_string(var - n - 1);
+  return "w" + std::to_string(var - n);
 }
 
 /// Per-call state of one Lemke run (no hidden state shared between calls).
@@ -241,7 +246,7 @@ SolveResult LemkeRun::run() {
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(o_.warm_basis.size()); ++i)
     if (o_.warm_basis[static_cast<size_t>(i)] >= 0) zset.push_back(static_cast<int>(i));
   if (!basis_.reset(zset)) {
-    claim.message = "warm basis ignored: its block M(Z, Z) is singular; cold start";
+    add_message(claim, "warm basis ignored: its block M(Z, Z) is singular; cold start");
     zset.clear();
     basis_.reset(zset);
   }
@@ -303,19 +308,19 @@ SolveResult LemkeRun::run() {
   while (true) {
     if (pivots >= limit) {
       claim.status = Status::kIterationLimit;
-      claim.message = "pivot limit " + std::to_string(limit) + " reached";
+      add_message(claim, "pivot limit " + std::to_string(limit) + " reached");
       break;
     }
     if (clock_.exceeded(o_.common.time_limit_s)) {
       claim.status = Status::kTimeLimit;
-      claim.message = "time limit reached after " + std::to_string(pivots) + " pivots";
+      add_message(claim, "time limit reached after " + std::to_string(pivots) + " pivots");
       break;
     }
     entering_ = entering;
     basis_.direction(entering, dxz_, dw_);
     if (!dxz_.head(basis_.k()).allFinite() || !dw_.allFinite()) {
       claim.status = Status::kNumericalFailure;
-      claim.message = "non-finite pivot column";
+      add_message(claim, "non-finite pivot column");
       break;
     }
     double step = 0;
@@ -328,8 +333,8 @@ SolveResult LemkeRun::run() {
       ray[n_] *= beta_;  // z0 for the covering vector d as given
       claim.ray = ray;
       claim.status = Status::kRayTermination;
-      claim.message = "secondary ray after " + std::to_string(pivots) + " pivots (" +
-                      var_name(entering, n_) + " unblocked)";
+      add_message(claim, "secondary ray after " + std::to_string(pivots) + " pivots (" +
+                             var_name(entering, n_) + " unblocked)");
       // Candidate certificates, kept only when the data confirm them.
       Certificate cand;
       cand.y = ray.head(n_);
@@ -359,7 +364,7 @@ SolveResult LemkeRun::run() {
     entering = leaving < n_ ? leaving + static_cast<int>(n_) + 1 : leaving - static_cast<int>(n_) - 1;
     if (!check_accuracy(pivots)) {
       claim.status = Status::kNumericalFailure;
-      claim.message = "basis became singular after " + std::to_string(pivots) + " pivots";
+      add_message(claim, "basis became singular after " + std::to_string(pivots) + " pivots");
       break;
     }
   }
@@ -369,7 +374,7 @@ SolveResult LemkeRun::run() {
     // first when the inverse fails the accuracy check).
     if (!inverse_accurate() && !basis_.refactor()) {
       claim.status = Status::kNumericalFailure;
-      claim.message = "final basis is singular";
+      add_message(claim, "final basis is singular");
     } else {
       basis_.recompute_values();
       for (Eigen::Index i = 0; i < n_; ++i)
@@ -424,9 +429,9 @@ SolveResult solve_lemke(const LcpProblem& problem, const LemkeOptions& options) 
       SolveResult claim;
       claim.solver = "lemke";
       claim.status = Status::kUnsupported;
-      claim.message = "lemke is a dense method: sparse LCPs are densified only up to n = " +
+      add_message(claim, "lemke is a dense method: sparse LCPs are densified only up to n = " +
                       std::to_string(kLemkeMaxDensify) + " (n = " +
-                      std::to_string(problem.size()) + ")";
+                      std::to_string(problem.size()) + ")");
       return finalize(problem, std::move(claim), options.common);
     }
     const Mat dense = problem.dense_M();

@@ -65,7 +65,8 @@ std::string ContactState::validate(const ContactParameters& params) const {
     // (46): the softened cone |P_T| <= mu P_N - k P_N^2 needs k P_N <= mu. At equality the cone
     // is the single point P_T = 0 and neither state c nor a sliding direction exists.
     const double bound = 3.0 * params.P_s * params.mu / params.k_a;
-    if (!(params.kappa(P_N) < params.mu)) {
+    // within a relative 1e-12 of the bound counts as at the bound (rounding of k = k_a/(3 P_s))
+    if (!(params.kappa(P_N) < params.mu * (1.0 - 1e-12))) {
       msg << "P_N = " << P_N << " violates the bound (46) of the softening criterion (35): need "
           << "P_N < 3 P_s mu / k_a = " << bound
           << " (at the bound the friction cone degenerates to P_T = 0)";

@@ -226,6 +226,38 @@ bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary
   return true;
 }
 
+/// State d's 1x1 LCP enumerated inline for the summary: support {} (lambda = 0, stick) is a
+/// solution iff q >= 0; support {1} (lambda = -q/M) iff M != 0 and -q/M > 0; M = q = 0 makes
+/// every lambda >= 0 a solution (the ray). M and q arrive snapped (state_d_lcp).
+RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
+                             const LoadRate& f) noexcept {
+  const StateDLcp l = state_d_lcp(p, st, f);
+  const unsigned stick = 1u << static_cast<unsigned>(SolutionType::kStick);
+  const unsigned slip = 1u << static_cast<unsigned>(st.sgn_PT > 0 ? SolutionType::kSlipPlus
+                                                                   : SolutionType::kSlipMinus);
+  RateSummary sum;
+  if (l.M == 0) {
+    if (l.q == 0) {
+      sum.count = -1;
+      sum.types = stick | slip;
+    } else if (l.q > 0) {
+      sum.count = 1;
+      sum.types = stick;
+    }
+    return sum;
+  }
+  if (l.q >= 0) {
+    sum.count = 1;
+    sum.types = stick;
+  }
+  const double lambda = -l.q / l.M;
+  if (lambda > 0) {  // distinct from lambda = 0 (q != 0 here since lambda > 0)
+    ++sum.count;
+    sum.types |= slip;
+  }
+  return sum;
+}
+
 }  // namespace
 
 RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactState& st,
@@ -280,6 +312,7 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
     return sum;
   }
   if (st.label == StateLabel::kB && summarize_b_fast(p, f, sum)) return sum;
+  if (st.label == StateLabel::kD) return summarize_d_fast(p, st, f);
   PlaneResult res;
   try {
     if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);

@@ -190,3 +190,26 @@ TEST_CASE("NaN or inconsistent LCP data throws InputError", "[fb][lcp][input]") 
                          Vec::Constant(1, 1.0), Vec::Constant(1, 0.0)};
   CHECK_THROWS_AS(solve_fb_newton(b), cpkit::InputError);
 }
+
+TEST_CASE("ill-conditioned positive definite LCP: solved, equal to Lemke", "[fb][lcp][lemke]") {
+  // M = V diag(1, 1e-1, ..., 1e-6) V^T with V the Householder reflection I - 2 v v^T / v^T v,
+  // v = (1, 2, ..., 7): symmetric positive definite (a P-matrix, unique solution), condition
+  // number 1e6: Newton directions are long, where the scale-dependent DFK descent test alone can
+  // reject accurate Newton steps (docs/fb_newton.md); the solve must still end solved.
+  const int n = 7;
+  Vec v(n), lam(n), q(n);
+  for (int i = 0; i < n; ++i) {
+    v[i] = i + 1;
+    lam[i] = std::pow(10.0, -i);
+    q[i] = (i % 2 == 0 ? -1.0 : 1.0) * (1 + 0.1 * i);
+  }
+  const Mat V = Mat::Identity(n, n) - 2 * v * v.transpose() / v.squaredNorm();
+  const Mat M = V * lam.asDiagonal() * V.transpose();
+  const LcpProblem p(M, q, "ill_conditioned_pd");
+  const auto fb = solve_fb_newton(p);
+  const auto lk = cpkit::lcp::solve_lemke(p);
+  CAPTURE(fb.iterations, fb.gradient_steps, fb.message);
+  REQUIRE(fb.status == Status::kSolved);
+  REQUIRE(cpkit::is_solution(lk.status));
+  CHECK((fb.z - lk.z).lpNorm<Eigen::Infinity>() <= 1e-6 * (1 + lk.z.lpNorm<Eigen::Infinity>()));
+}

@@ -78,6 +78,7 @@ TEST_CASE("ContactState::validate", "[rate][model]") {
   p.k_a = 0.3;
   CHECK(ContactState{StateLabel::kD, 4.9, 1}.validate(p).empty());
   CHECK(ContactState{StateLabel::kD, 5.01, 1}.validate(p).find("(46)") != std::string::npos);
+  CHECK(ContactState{StateLabel::kD, 5.0, 1}.validate(p).find("(46)") != std::string::npos);
   CHECK(ContactState{StateLabel::kC, 7.0, 1}.validate(p).find("(46)") != std::string::npos);
   p.criterion = Criterion::kCoulomb;
   CHECK(ContactState{StateLabel::kD, 7.0, 1}.validate(p).empty());  // no bound for (38)

@@ -5,13 +5,16 @@
 ///
 /// Order (looked up by name in cpkit::lcp::solvers() at call time; a name that is not
 /// registered, or whose entry does not accept the problem, is recorded as skipped):
-///   LCP:            lemke, fb-newton, ipopt
-///   box LCP, MCP:   fb-newton, ipopt
+///   LCP:            lemke, fb-newton, ipopt, nlopt
+///   box LCP, MCP:   fb-newton, ipopt, nlopt
+/// (nlopt, the same MPCC solved by SLSQP, is a last resort beyond the chain: on the
+/// robustness benchmark it solves indefinite LCPs on which the Ipopt MPCC stalls.)
 /// The chain stops at the first kSolved answer, or at a kInfeasible one (whose certificate
 /// finalize() re-checked). A kSolvedInaccurate answer is kept while later solvers try for
-/// kSolved. When every solver fails on an LCP, a Farkas certificate y >= 0, M^T y <= 0,
-/// q^T y < 0 is searched for with Ipopt (the LP  min q^T y, M^T y <= 0, sum y = 1, y >= 0);
-/// kInfeasible is reported only when check_certificate() accepts it [CPS 1992, Sec. 3.8].
+/// kSolved. For LCPs, after the first failed attempt (normally Lemke's secondary ray without a
+/// proof) a Farkas certificate y >= 0, M^T y <= 0, q^T y < 0 is searched once with Ipopt (the LP
+/// min q^T y, M^T y <= 0, sum y = 1, y >= 0); kInfeasible is reported only when
+/// check_certificate() accepts it [CPS 1992, Sec. 3.8] (attempt "farkas-search").
 /// Otherwise the status is that of the last attempt (never "infeasible" without a proof).
 ///
 /// result.solver names the solver that produced the answer (e.g. "fb-newton"), or the last

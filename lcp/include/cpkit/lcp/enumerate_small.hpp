@@ -182,7 +182,7 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
     }
     a[r][4] = -q(rows[r]);
   }
-  int perm[5];
+  int perm[5] = {};
   if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
   for (int p = k - 1; p >= 0; --p) {
     double s = a[p][4];
@@ -315,7 +315,7 @@ struct SmallEnumerator {
       }
       a[r][4] = -q(idx[r]);
     }
-    int perm[5];
+    int perm[5] = {};
     bool gray = false;
     const int r = small_eliminate(a, k, k, perm, tol * amax, gray);
     if (gray) ++out.ambiguous;
@@ -341,12 +341,18 @@ struct SmallEnumerator {
         for (int c = 0; c < k; ++c) nb[f][idx[c]] = y[c];
       }
     }
-    // consistency: -q_S must lie in the range of M_SS
+    // consistency: -q_S must lie in the range of M_SS (backward-error scale
+    // |q_i| + ||M_i.||_1 ||z0||_inf: entries of z0 that should vanish carry round-off of the
+    // size of the whole z0)
+    double z0n = 0;
+    for (int j = 0; j < N; ++j) z0n = small_max(z0n, small_abs(z0[j]));
     for (int c = 0; c < k; ++c) {
       const int i = idx[c];
       double v = q(i), sc = small_abs(q(i));
-      for (int j = 0; j < N; ++j)
-        if (z0[j] != 0) { v += M(i, j) * z0[j]; sc += small_abs(M(i, j) * z0[j]); }
+      for (int j = 0; j < N; ++j) {
+        v += M(i, j) * z0[j];
+        sc += small_abs(M(i, j)) * z0n;
+      }
       if (small_abs(v) > kSmallGray * tol * sc) return;  // empty piece
       if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
     }
@@ -403,7 +409,7 @@ struct SmallEnumerator {
           e[t][4] = -b[i];
           ++t;
         }
-        int pm[5];
+        int pm[5] = {};
         bool g2 = false;
         if (small_eliminate(e, m, m, pm, tol * emax, g2) < m) continue;
         if (g2) ++out.ambiguous;
@@ -435,7 +441,7 @@ struct SmallEnumerator {
           e[t][4] = 0;
           ++t;
         }
-        int pm[5];
+        int pm[5] = {};
         bool g2 = false;
         if (small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
         if (g2) ++out.ambiguous;

@@ -68,7 +68,9 @@ struct FbNewtonOptions {
   /// Memory of the non-monotone (Grippo-Lampariello-Lucidi) reference Psi_ref = max of the last
   /// m values; 1 = monotone Armijo.
   int nonmonotone_memory = 1;
-  /// Sufficient descent test for the Newton direction: grad.d <= -rho ||d||^p, else gradient step.
+  /// Sufficient descent test for the Newton direction: grad.d <= -rho ||d||^p [DFK 1996], or
+  /// grad.d <= -Psi (at least half the decrease rate -2 Psi of an exactly solved Newton system:
+  /// keeps accurate Newton steps on ill-conditioned problems); else a gradient step.
   double descent_rho = 1e-8;
   double descent_power = 2.1;
   /// Watchdog escape from stagnation (a line-search failure, a stationary point of Psi that is

@@ -37,8 +37,9 @@ struct RateSolutionSet {
   Rates scale;
   /// Why the set is incomplete or a single solver failed (empty otherwise).
   std::string message;
-  /// Single solvers: the scaled natural residual of the LCP solution (0 otherwise). Checks of
-  /// such a point against a complete set should allow an error of order 1e3 x residual.
+  /// Single solvers: the natural residual ||min(z, w)||_inf of the LCP solution divided by
+  /// 1 + ||q||_inf (relative to the data, not to the iterate; 0 otherwise). Checks of such a
+  /// point against a complete set should allow an error of order 1e3 x residual.
   double residual = 0;
   /// Number of solutions: -1 when infinite.
   int count() const noexcept;

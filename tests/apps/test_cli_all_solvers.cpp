@@ -1,0 +1,125 @@
+// `cpkit lcp solve FILE --solver ipopt|nlopt|auto` and `--all-solvers`: runs the built binary;
+// checks exit codes, that JSON output is clean (Ipopt never writes to stdout) and that every
+// verified answer is a solution of the file's LCP (recomputed here from the file's data).
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  static const fs::path dir = [] {
+    std::random_device rd;
+    auto d = fs::temp_directory_path() / ("cpkit_test_all_solvers_" + std::to_string(rd()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Run cpkit(const std::string& args) {
+  const auto out = scratch() / "stdout.txt";
+  const auto err = scratch() / "stderr.txt";
+  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
+                          out.string() + "' 2> '" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string path(const std::string& name) {
+  return std::string(CPKIT_TEST_DATA_DIR) + "/lcp/" + name + ".json";
+}
+
+/// z >= 0, w = M z + q >= 0, z.w = 0 to 1e-9 (relative), from the file's M and q.
+bool solves_file(const std::string& name, const nlohmann::json& z) {
+  const auto j = nlohmann::json::parse(slurp(path(name)));
+  const auto& M = j.at("M");
+  const auto& q = j.at("q");
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    double w = q[i].get<double>();
+    for (std::size_t k = 0; k < q.size(); ++k) w += M[i][k].get<double>() * z[k].get<double>();
+    const double zi = z[i].get<double>();
+    if (zi < -1e-9 || w < -1e-9 || std::abs(std::min(zi, w)) > 1e-9) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("cpkit lcp solve --solver ipopt|nlopt|auto on battle_of_the_sexes", "[cli][mpcc]") {
+  const std::string solver = GENERATE(as<std::string>{}, "ipopt", "nlopt", "auto");
+  CAPTURE(solver);
+  const Run r = cpkit("lcp solve '" + path("battle_of_the_sexes") + "' --solver " + solver +
+                      " --json");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);  // throws if anything else reached stdout
+  CHECK(j.at("status") == "solved");
+  CHECK(solves_file("battle_of_the_sexes", j.at("z")));
+  if (solver == "auto") {
+    CHECK(j.at("attempts").at(0).at("solver") == "lemke");
+    CHECK(j.at("attempts").at(0).at("status") == "ray_termination");
+  }
+}
+
+TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli][mpcc]") {
+  SECTION("JSON array, one object per registered solver") {
+    const Run r = cpkit("lcp solve '" + path("battle_of_the_sexes") + "' --all-solvers --json");
+    CHECK(r.code == 0);
+    const auto arr = nlohmann::json::parse(r.out);
+    REQUIRE(arr.is_array());
+    std::vector<std::string> entries;
+    for (const auto& o : arr) {
+      entries.push_back(o.at("entry"));
+      if (o.at("status") == "solved") CHECK(solves_file("battle_of_the_sexes", o.at("z")));
+    }
+    for (const char* name : {"lemke", "fb-newton", "ipopt", "nlopt", "auto"})
+      CHECK(std::find(entries.begin(), entries.end(), name) != entries.end());
+  }
+  SECTION("infeasible problem: exit 1, nobody solved") {
+    const Run r = cpkit("lcp solve '" + path("pang_isolated_perturbed") +
+                        "' --all-solvers --json");
+    CHECK(r.code == 1);
+    const auto arr = nlohmann::json::parse(r.out);
+    for (const auto& o : arr) {
+      CAPTURE(o.at("entry"));
+      CHECK(o.at("status") != "solved");
+      CHECK(o.at("status") != "solved_inaccurate");
+    }
+  }
+  SECTION("text table") {
+    const Run r = cpkit("lcp solve '" + path("deudeu") + "' --all-solvers");
+    CHECK(r.code == 0);
+    CHECK(r.out.find("answered by") != std::string::npos);
+    CHECK(r.out.find("ipopt") != std::string::npos);
+  }
+}
