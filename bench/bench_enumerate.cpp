@@ -100,7 +100,7 @@ void bench_tiny(bool quick) {
       inf = double(ninf) / (double(sweeps) * K);
     }
     std::printf("| %s | %d directions | %.3f | %.3f | %.0f | %.2e |\n",
-                fam == 0 ? "a11 > mu|a12| (A=[[2,.5],[.5,1]], mu=.3)" : "a11 = mu|a12| (A=[[1,2],[2,5]], mu=.5)",
+                fam == 0 ? "a11 > mu abs(a12) (A=[[2,.5],[.5,1]], mu=.3)" : "a11 = mu abs(a12) (A=[[1,2],[2,5]], mu=.5)",
                 K, pts, inf, best * 1e9, 1.0 / best);
   }
   std::printf("\n");

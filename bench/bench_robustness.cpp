@@ -205,7 +205,7 @@ Outcome run_siconos(int solver_id, const LcpProblem& p) {
   const auto r = cpkit::finalize(p, claim, cpkit::CommonOptions{});
   out.solved = cpkit::is_solution(r.status) && !diverged(p, z);
   out.residual = r.residuals.natural;
-  out.status = out.solved ? "verified" : "info=" + std::to_string(info) + ",refuted";
+  out.status = out.solved ? "verified" : "info=" + std::to_string(info) + ";refuted";
   if (!out.solved && info != 0) out.status = "info=" + std::to_string(info);
   return out;
 }

@@ -398,13 +398,27 @@ class Engine {
     Vec g0(n_);
     const Vec w0 = M_ * z + q_;
     const Mat MN = M_ * N;
+    // entries at round-off level of their own terms are zero (a constraint that is constant
+    // on the piece must not produce a "vertex" from noise / noise)
+    const double nmax = N.cwiseAbs().maxCoeff();
     for (int i = 0; i < n_; ++i) {
       if ((S >> i) & 1u) {
         G.row(i) = N.row(i);
         g0(i) = z(i);
+        for (int f = 0; f < m; ++f)
+          if (std::abs(G(i, f)) <= tol_ * nmax) G(i, f) = 0;
+        if (std::abs(g0(i)) <= tol_ * z0n) g0(i) = 0;
       } else {
         G.row(i) = MN.row(i);
         g0(i) = w0(i);
+        double sz = std::abs(q_(i));
+        for (int j = 0; j < n_; ++j) sz += std::abs(M_(i, j)) * z0n;
+        for (int f = 0; f < m; ++f) {
+          double sf = 0;
+          for (int j = 0; j < n_; ++j) sf += std::abs(M_(i, j) * N(j, f));
+          if (std::abs(G(i, f)) <= tol_ * sf) G(i, f) = 0;
+        }
+        if (std::abs(g0(i)) <= tol_ * sz) g0(i) = 0;
       }
     }
     // vertices: m active constraints; rays: m - 1
@@ -428,6 +442,8 @@ class Engine {
         E.row(r) = G.row(comb[r]);
         e(r) = -g0(comb[r]);
       }
+      for (int r = 0; r < m; ++r)
+        if (E.row(r).cwiseAbs().maxCoeff() == 0) return;  // constant on the piece
       Eigen::FullPivLU<Mat> l2(E);
       l2.setThreshold(tol_);
       if (l2.rank() < m) return;

@@ -391,34 +391,36 @@ SolveResult LemkeRun::run() {
 
 std::string LemkeOptions::validate(Eigen::Index n) const {
   if (auto m = common.validate(); !m.empty()) return m;
-  std::ostringstream msg;
+  // Messages are built only on error (this runs on every solve).
+  auto num = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
   if (covering.size() != 0) {
-    if (covering.size() != n) {
-      msg << "covering vector has size " << covering.size() << ", expected " << n;
-    } else {
-      for (Eigen::Index i = 0; i < n; ++i)
-        if (!(covering[i] > 0) || !std::isfinite(covering[i])) {
-          msg << "covering vector entry " << i << " must be positive and finite (got "
-              << covering[i] << ")";
-          break;
-        }
+    if (covering.size() != n)
+      return "covering vector has size " + std::to_string(covering.size()) + ", expected " +
+             std::to_string(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!(covering[i] > 0) || !std::isfinite(covering[i]))
+        return "covering vector entry " + std::to_string(i) +
+               " must be positive and finite (got " + num(covering[i]) + ")";
+  }
+  if (!warm_basis.empty()) {
+    if (static_cast<Eigen::Index>(warm_basis.size()) != n)
+      return "warm_basis has size " + std::to_string(warm_basis.size()) + ", expected " +
+             std::to_string(n);
+    for (size_t i = 0; i < warm_basis.size(); ++i) {
+      const int zi = static_cast<int>(i);
+      if (warm_basis[i] != zi && warm_basis[i] != ~zi)
+        return "warm_basis[" + std::to_string(i) + "] must be " + std::to_string(zi) +
+               " (z basic) or " + std::to_string(~zi) + " (w basic), got " +
+               std::to_string(warm_basis[i]);
     }
   }
-  if (msg.tellp() == 0 && !warm_basis.empty()) {
-    if (static_cast<Eigen::Index>(warm_basis.size()) != n) {
-      msg << "warm_basis has size " << warm_basis.size() << ", expected " << n;
-    } else {
-      for (size_t i = 0; i < warm_basis.size(); ++i)
-        if (warm_basis[i] != static_cast<int>(i) && warm_basis[i] != ~static_cast<int>(i)) {
-          msg << "warm_basis[" << i << "] must be " << i << " (z basic) or " << ~static_cast<int>(i)
-              << " (w basic), got " << warm_basis[i];
-          break;
-        }
-    }
-  }
-  if (msg.tellp() == 0 && refactor_every < 0)
-    msg << "refactor_every must be >= 0 (got " << refactor_every << ")";
-  return msg.str();
+  if (refactor_every < 0)
+    return "refactor_every must be >= 0 (got " + std::to_string(refactor_every) + ")";
+  return {};
 }
 
 SolveResult solve_lemke(const LcpProblem& problem, const LemkeOptions& options) {

@@ -169,16 +169,20 @@ Rates typed_rates(const ContactParameters& p, const ContactState& st, const Load
 /// So when D_+ and D_- are clearly nonzero, every solution is the unique basic solution of one
 /// of the supports {}, {1}, {2}, {3}, {1,2}, {1,3}, and the set is finite. Returns false (the
 /// caller then runs the general engine) when a 2x2 block is near-singular.
-bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
-  const StateBLcp l = state_b_lcp(p, f);
-  const Eigen::Matrix3d& M = l.M;
-  const Eigen::Vector3d& q = l.q;
+bool b_blocks_regular(const Eigen::Matrix3d& M) noexcept {
   const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
   const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
   const double s12 = std::abs(M(0, 0) * M(1, 1)) + std::abs(M(0, 1) * M(1, 0));
   const double s13 = std::abs(M(0, 0) * M(2, 2)) + std::abs(M(0, 2) * M(2, 0));
   constexpr double kSingular = 1e-6;
-  if (std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13) return false;
+  return !(std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13);
+}
+
+/// The support enumeration proper, for a state-b LCP (M, q) whose 2x2 blocks are regular.
+void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen::Matrix3d& M,
+                      const Eigen::Vector3d& q, RateSummary& sum) noexcept {
+  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
   constexpr double kFeas = 1e-10;  // relative tolerance of the sign tests
   const double sF = load_scale(f);
   double U = sF, V = sF * (p.C_T + 1.0 / p.a11);
@@ -223,15 +227,19 @@ bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary
     sum.types |= 1u << static_cast<unsigned>(type(pts[k]));
   }
   sum.reliable = true;
+}
+
+bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
+  const StateBLcp l = state_b_lcp(p, f);
+  if (!b_blocks_regular(l.M)) return false;
+  summarize_b_core(p, f, l.M, l.q, sum);
   return true;
 }
 
 /// State d's 1x1 LCP enumerated inline for the summary: support {} (lambda = 0, stick) is a
 /// solution iff q >= 0; support {1} (lambda = -q/M) iff M != 0 and -q/M > 0; M = q = 0 makes
 /// every lambda >= 0 a solution (the ray). M and q arrive snapped (state_d_lcp).
-RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
-                             const LoadRate& f) noexcept {
-  const StateDLcp l = state_d_lcp(p, st, f);
+RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcept {
   const unsigned stick = 1u << static_cast<unsigned>(SolutionType::kStick);
   const unsigned slip = 1u << static_cast<unsigned>(st.sgn_PT > 0 ? SolutionType::kSlipPlus
                                                                    : SolutionType::kSlipMinus);
@@ -256,6 +264,11 @@ RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
     sum.types |= slip;
   }
   return sum;
+}
+
+RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
+                             const LoadRate& f) noexcept {
+  return summarize_d_core(st, state_d_lcp(p, st, f));
 }
 
 }  // namespace
@@ -324,6 +337,66 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
   sum.count = res.infinite ? -1 : res.n;
   sum.reliable = !(res.ambiguous > 0 || res.dropped > 0 || res.bad);
   return sum;
+}
+
+RatePrecomputed precompute_rate_problem(const ContactParameters& params,
+                                        const ContactState& state) {
+  detail::validate_inputs(params, state, LoadRate{});
+  RatePrecomputed pre;
+  pre.params = params;
+  pre.state = state;
+  if (state.label == StateLabel::kB) {
+    const StateBLcp l0 = state_b_lcp(params, LoadRate{});  // M does not depend on the load
+    const StateBLcp lT = state_b_lcp(params, LoadRate{1.0, 0.0});
+    const StateBLcp lN = state_b_lcp(params, LoadRate{0.0, 1.0});
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) pre.M_b[i][j] = l0.M(i, j);
+      pre.qT_b[i] = lT.q(i);
+      pre.qN_b[i] = lN.q(i);
+    }
+    pre.b_fast = b_blocks_regular(l0.M);
+  } else if (state.label == StateLabel::kD) {
+    pre.M_d = state_d_lcp(params, state, LoadRate{}).M;  // snapped, load-independent
+    const Rates rT = state_d_rates(params, state, LoadRate{1.0, 0.0}, 0.0);
+    const Rates rN = state_d_rates(params, state, LoadRate{0.0, 1.0}, 0.0);
+    pre.dPN_T = rT.dP_N;
+    pre.dPN_N = rN.dP_N;
+    pre.dPT_T = rT.dP_T;
+    pre.dPT_N = rN.dP_T;
+  }
+  return pre;
+}
+
+RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& f,
+                                   RateMethod method) noexcept {
+  const ContactParameters& p = pre.params;
+  const ContactState& st = pre.state;
+  if (method != RateMethod::kEnumerate) return summarize_rate_problem(p, st, f, method);
+  if (st.label == StateLabel::kB && pre.b_fast) {
+    Eigen::Matrix3d M;
+    Eigen::Vector3d q;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) M(i, j) = pre.M_b[i][j];
+      q(i) = pre.qT_b[i] * f.dF_T + pre.qN_b[i] * f.dF_N;
+    }
+    RateSummary sum;
+    summarize_b_core(p, f, M, q, sum);
+    return sum;
+  }
+  if (st.label == StateLabel::kD) {
+    // q = (1 + a11 C_T)(mu_eff dP_N - s dP_T) at lambda = 0, snapped as in state_d_lcp
+    const double c1 = 1.0 + p.a11 * p.C_T;
+    const double m =
+        p.criterion == Criterion::kSoftening ? p.mu - 2.0 * p.kappa(st.P_N) : p.mu;
+    const double dPN = pre.dPN_T * f.dF_T + pre.dPN_N * f.dF_N;
+    const double dPT = pre.dPT_T * f.dF_T + pre.dPT_N * f.dF_N;
+    StateDLcp l;
+    l.M = pre.M_d;
+    l.q = c1 * (m * dPN - st.sgn_PT * dPT);
+    if (std::abs(l.q) <= 1e-10 * c1 * (std::abs(m * dPN) + std::abs(dPT))) l.q = 0;
+    return summarize_d_core(st, l);
+  }
+  return summarize_rate_problem(p, st, f, method);
 }
 
 }  // namespace cpkit::rate

@@ -44,6 +44,10 @@ class PlaneSet {
   /// Adds the image of one polyhedral piece: vertex images `vert` (n of them) and ray images
   /// `ray` (m of them; zero images allowed). Points are added too.
   void add_piece(const P2* vert, int n, const P2* ray, int m) noexcept {
+    if (n <= 0) {  // a piece of an LCP lies in the orthant and always has a vertex
+      bad_ = true;
+      return;
+    }
     for (int i = 0; i < n; ++i) add_point(vert[i]);
     int rr = -1;
     for (int j = 0; j < m; ++j)

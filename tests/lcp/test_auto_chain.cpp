@@ -121,12 +121,25 @@ TEST_CASE("auto never claims a solution of an infeasible LCP", "[auto][infeasibl
   CHECK(is_farkas(p, r.certificate->y));
 }
 
-TEST_CASE("auto on an infeasible LCP without a Farkas certificate is not infeasible",
+TEST_CASE("auto proves infeasibility by the Farkas LP when Lemke's ray is no proof",
           "[auto][infeasible]") {
-  // M = -1, q = -1: w = -z - 1 < 0 for all z >= 0, so no solution; y = 1 gives M^T y = -1 <= 0,
-  // q^T y = -1 < 0 (a certificate exists). With M = [[0, 1], [-1, 0]], q = (-1, -1):
-  // w1 = z2 - 1, w2 = -z1 - 1 < 0: infeasible; y = (0, 1): M^T y = (-1, 0) <= 0, q^T y = -1.
-  // Both prove out; the check here is on the 1x1 case Siconos gets wrong.
+  // Indefinite M with row 2 <= 0 and q_2 < 0: w_2 < 0 for every z >= 0, and y = e_2 is a
+  // Farkas certificate (M^T e_2 = row 2 <= 0, q^T e_2 < 0).
+  Mat M(3, 3);
+  M << 1, -2, 3, -1, 2, -1, -0.5, -1, -2;
+  Vec q(3);
+  q << 1, -1, -0.5;
+  const cpkit::LcpProblem p(M, q, "planted_infeasible");
+  const auto r = solve_auto(p);
+  INFO(r.message);
+  REQUIRE(r.status == Status::kInfeasible);
+  REQUIRE(r.certificate.has_value());
+  CHECK(is_farkas(p, r.certificate->y));
+}
+
+TEST_CASE("auto on Siconos' 1x1 trap M = -1, q = -1 is never solved", "[auto][infeasible]") {
+  // w = -z - 1 < 0 for every z >= 0; Siconos' 1x1 fast path returns z = -1 as a "solution".
+  // y = 1 is a Farkas certificate (M^T y = -1 <= 0, q^T y = -1 < 0).
   const cpkit::LcpProblem p(Mat::Constant(1, 1, -1.0), Vec::Constant(1, -1.0), "siconos_1x1");
   const auto r = solve_auto(p);
   INFO(r.message);
@@ -134,10 +147,11 @@ TEST_CASE("auto on an infeasible LCP without a Farkas certificate is not infeasi
   if (r.status == Status::kInfeasible) CHECK(is_farkas(p, r.certificate->y));
 }
 
-TEST_CASE("auto for an NCP runs fb-newton then ipopt", "[auto][mcp]") {
-  CHECK(auto_chain_names(cpkit::ProblemKind::kMcp) == std::vector<std::string>{"fb-newton", "ipopt"});
+TEST_CASE("auto for an NCP runs fb-newton, then ipopt, then nlopt", "[auto][mcp]") {
+  CHECK(auto_chain_names(cpkit::ProblemKind::kMcp) ==
+        std::vector<std::string>{"fb-newton", "ipopt", "nlopt"});
   CHECK(auto_chain_names(cpkit::ProblemKind::kLcp) ==
-        std::vector<std::string>{"lemke", "fb-newton", "ipopt"});
+        std::vector<std::string>{"lemke", "fb-newton", "ipopt", "nlopt"});
   // billups [ncp.md]: unique solution 1 + sqrt(1.01).
   auto p = cpkit::make_ncp(
       1, [](const Vec& x, Vec& F) { F.resize(1); F(0) = (x(0) - 1) * (x(0) - 1) - 1.01; return true; },

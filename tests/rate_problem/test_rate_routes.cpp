@@ -96,6 +96,11 @@ TEST_CASE("routes 1 and 2 agree with each other and with brute force on random i
     REQUIRE(s1.types == r1.type_mask());
     REQUIRE(s2.types == r2.type_mask());
     REQUIRE(s2.reliable);
+    // the precomputed (per parameter set) summary for maps gives the same answer
+    const RatePrecomputed pre = precompute_rate_problem(c.p, c.st);
+    const RateSummary s3 = summarize_rate_problem(pre, c.f);
+    REQUIRE(s3.count == s2.count);
+    REQUIRE(s3.types == s2.types);
     ++checked;
     if (label == StateLabel::kB || label == StateLabel::kD) {
       double margin = 0;
@@ -251,6 +256,9 @@ TEST_CASE("routes 1 and 2 agree on the degenerate lines (a11 = mu|a12|, Lambda =
     INFO(check_set_laws(p, st, f, r1));
     REQUIRE(check_set_laws(p, st, f, r1).empty());
     REQUIRE(summarize_rate_problem(p, st, f, RateMethod::kEnumerate).count == r2.count());
+    const RateSummary s3 = summarize_rate_problem(precompute_rate_problem(p, st), f);
+    CHECK(s3.count == r2.count());
+    CHECK(s3.types == r2.type_mask());
     infinite += r1.infinite;
   }
   CHECK(infinite > 500);  // the segments and rays were actually exercised

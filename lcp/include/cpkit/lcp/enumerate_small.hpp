@@ -357,19 +357,25 @@ struct SmallEnumerator {
       if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
     }
     // constraint g_i(t) = b_i + sum_f A_if t_f >= 0 for every i (z_i on S, w_i off S)
+    // entries at round-off level of their own terms are zero (a constraint that is constant on
+    // the piece must not produce a "vertex" from noise / noise)
     double A[N][4] = {}, b[N];
     for (int i = 0; i < N; ++i) {
       if (S & (1u << i)) {
-        b[i] = z0[i];
-        for (int f = 0; f < m; ++f) A[i][f] = nb[f][i];
-      } else {
-        double v = q(i);
-        for (int j = 0; j < N; ++j) v += M(i, j) * z0[j];
-        b[i] = v;
+        b[i] = small_abs(z0[i]) <= tol * z0n ? 0.0 : z0[i];
         for (int f = 0; f < m; ++f) {
-          double u = 0;
-          for (int j = 0; j < N; ++j) u += M(i, j) * nb[f][j];
-          A[i][f] = u;
+          double nm = 0;
+          for (int j = 0; j < N; ++j) nm = small_max(nm, small_abs(nb[f][j]));
+          A[i][f] = small_abs(nb[f][i]) <= tol * nm ? 0.0 : nb[f][i];
+        }
+      } else {
+        double v = q(i), sv = small_abs(q(i));
+        for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
+        b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
+        for (int f = 0; f < m; ++f) {
+          double u = 0, su = 0;
+          for (int j = 0; j < N; ++j) { u += M(i, j) * nb[f][j]; su += small_abs(M(i, j) * nb[f][j]); }
+          A[i][f] = small_abs(u) <= tol * su ? 0.0 : u;
         }
       }
     }
@@ -403,12 +409,17 @@ struct SmallEnumerator {
         double e[4][5];
         double emax = 0;
         int t = 0;
+        bool constant_row = false;
         for (int i = 0; i < N; ++i) {
           if (!(act & (1u << i))) continue;
-          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; emax = small_max(emax, small_abs(A[i][f])); }
+          double rmax = 0;
+          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; rmax = small_max(rmax, small_abs(A[i][f])); }
+          emax = small_max(emax, rmax);
+          constant_row = constant_row || rmax == 0;
           e[t][4] = -b[i];
           ++t;
         }
+        if (constant_row) continue;
         int pm[5] = {};
         bool g2 = false;
         if (small_eliminate(e, m, m, pm, tol * emax, g2) < m) continue;

@@ -73,4 +73,24 @@ RateSummary summarize_rate_problem(const ContactParameters& params, const Contac
                                    const LoadRate& load,
                                    RateMethod method = RateMethod::kEnumerate) noexcept;
 
+/// What the enumeration route can compute once per (parameters, state) for maps over many load
+/// rates: the state's LCP matrix and q as a linear function of the load (q = q_T dF_T +
+/// q_N dF_N). Built by precompute_rate_problem (which validates); read-only afterwards, so one
+/// object can serve many threads.
+struct RatePrecomputed {
+  ContactParameters params;
+  ContactState state;
+  double M_b[3][3] = {};                   ///< state b: M of docs/model.md
+  double qT_b[3] = {}, qN_b[3] = {};       ///< state b: q = qT dF_T + qN dF_N
+  bool b_fast = false;                     ///< state b: D_+, D_- clearly nonzero
+  double M_d = 0;                          ///< state d: the 1x1 LCP matrix (snapped)
+  double dPN_T = 0, dPN_N = 0, dPT_T = 0, dPT_N = 0;  ///< state d: stick rates per unit load
+};
+/// Validates (InputError) and precomputes.
+RatePrecomputed precompute_rate_problem(const ContactParameters& params, const ContactState& state);
+/// Same result as summarize_rate_problem(pre.params, pre.state, load, method); faster for the
+/// enumeration route. Allocation-free.
+RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& load,
+                                   RateMethod method = RateMethod::kEnumerate) noexcept;
+
 }  // namespace cpkit::rate
