@@ -173,7 +173,7 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
     }
     return true;
   }
-  double a[4][5];
+  double a[4][5] = {};
   double amax = 0;
   for (int r = 0; r < k; ++r) {
     for (int c = 0; c < k; ++c) {
@@ -306,7 +306,7 @@ struct SmallEnumerator {
   /// z_i >= 0 (i in S), w_j >= 0 (j not in S); vertices have m = dim t of them active,
   /// extreme rays m - 1.
   void singular_piece(unsigned S, const int* idx, int k) {
-    double a[4][5];
+    double a[4][5] = {};
     double amax = 0;
     for (int r = 0; r < k; ++r) {
       for (int c = 0; c < k; ++c) {
@@ -406,7 +406,7 @@ struct SmallEnumerator {
       double z[N];
       for (int j = 0; j < N; ++j) z[j] = z0[j];
       if (m > 0) {
-        double e[4][5];
+        double e[4][5] = {};
         double emax = 0;
         int t = 0;
         bool constant_row = false;
@@ -443,7 +443,7 @@ struct SmallEnumerator {
       if (m == 1) {
         x[0] = 1;
       } else {
-        double e[4][5];
+        double e[4][5] = {};
         double emax = 0;
         int t = 0;
         for (int i = 0; i < N; ++i) {
