@@ -114,7 +114,9 @@ MapSetup build_setup(const MapArgs& a) {
   }
   if (a.given("--criterion")) {
     const auto c = criterion_from_string(a.criterion);
-    if (!c) throw InputError("--criterion must be coulomb or softening, got '" + a.criterion + "'");
+    if (!c)
+      throw InputError("--criterion must be 38 (Coulomb, default) or 35 (softening), got '" +
+                       a.criterion + "'");
     s.params.criterion = *c;
   }
   struct {
@@ -164,7 +166,15 @@ MapSetup build_setup(const MapArgs& a) {
   set_axis(s.axis, s.have_axis, a.param, "--param", "--from", "--to", "--n", a.from, a.to, a.n);
   set_axis(s.axis2, s.have_axis2, a.param2, "--param2", "--from2", "--to2", "--n2", a.from2,
            a.to2, a.n2);
-  if (a.given("--theta-n")) s.theta_n = a.theta_n;
+  if (a.given("--theta-n")) {
+    // Only a param-direction map samples directions; a direction map computes its critical
+    // directions exactly and a param-param map classifies each cell from its exact direction map.
+    if (s.kind != MapKind::kParamDirection)
+      throw InputError("--theta-n applies to --kind param-direction only (a " +
+                       std::string(to_string(s.kind)) +
+                       " map computes the critical directions exactly, without sampling)");
+    s.theta_n = a.theta_n;
+  }
   if (s.kind != MapKind::kDirection && !s.have_axis)
     throw InputError(std::string(to_string(s.kind)) + " map needs --param NAME --from X --to Y");
   if (s.kind == MapKind::kParamParam && !s.have_axis2)
@@ -198,6 +208,9 @@ std::string model_text(const ContactParameters& p, const ContactState& s,
          v("P_s", p.P_s, {P::kPs}) + ", " +
          v("kappa", p.kappa(s.P_N), {P::kKappa, P::kKa, P::kPN, P::kPs}) +
          (s.label == StateLabel::kD ? ", sgn P_T = " + std::to_string(s.sgn_PT) : "");
+  if (p.criterion == Criterion::kSoftening)
+    t += ", criterion (35)" +
+         std::string(s.label == StateLabel::kD ? " (mu_eff = mu - 2 kappa)" : "");
   return t;
 }
 
@@ -491,7 +504,9 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--P_s"] = cmd->add_option("--P_s", args->P_s, "hardness");
   o["--P_N"] = cmd->add_option("--P_N", args->P_N, "normal force (states c, d)");
   o["--sgnPT"] = cmd->add_option("--sgnPT", args->sgnPT, "sign of P_T in state d (+1/-1)");
-  o["--criterion"] = cmd->add_option("--criterion", args->criterion, "coulomb (38) | softening (35)");
+  o["--criterion"] = cmd->add_option("--criterion", args->criterion,
+                                     "friction-and-wear criterion: 38 (Coulomb, default) or 35 "
+                                     "(softening; state d uses mu_eff = mu - 2 kappa)");
   o["--param"] = cmd->add_option("--param", args->param,
                                  "first axis: mu, a11, a12, a22, a12/a11, C_T, k_a, P_s, P_N, kappa");
   o["--from"] = cmd->add_option("--from", args->from, "first axis start");
@@ -502,7 +517,8 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--to2"] = cmd->add_option("--to2", args->to2, "second axis end");
   o["--n2"] = cmd->add_option("--n2", args->n2, "second axis values (default 200)");
   o["--theta-n"] = cmd->add_option("--theta-n", args->theta_n,
-                                   "directions of a param-direction map (default 360)");
+                                   "directions of a param-direction map (default 360; "
+                                   "rejected for the other kinds)");
   o["--method"] = cmd->add_option("--method", args->method,
                                   "enumerate (default) | analytic (also cross-checks with enumerate)");
   o["--threads"] = cmd->add_option("--threads", args->threads, "worker threads (0: all cores)");

@@ -55,7 +55,17 @@ def model_title(summary):
         parts += ["%s=%g" % (k, m[k]) for k in ("P_N", "kappa") if k not in axes]
         if m.get("state") == "d":
             parts.append("sgn P_T=%+d" % m.get("sgnPT"))
+    if m.get("criterion") == "softening":
+        parts.append("criterion (35)")
     return "state %s: %s" % (m.get("state"), ", ".join(parts))
+
+
+def lambda_label(summary):
+    """Legend text of the Lambda = 0 curve; with the softening criterion (35) Lambda is eqn (51)
+    with mu replaced by mu_eff = mu - 2 kappa (as computed by cpkit)."""
+    if summary.get("model", {}).get("criterion") == "softening":
+        return r"$\Lambda=0$ (eqn 51, $\mu_{eff}=\mu-2\kappa$)"
+    return r"$\Lambda=0$ (eqn 51)"
 
 
 def read_csv(path):
@@ -179,7 +189,7 @@ def plot_param_direction(summary, base, plt):
             if r[0] == "direction":
                 crit_pts.append((float(r[1]), float(r[2])))
     names = {"D+=0": r"$a_{11}=\mu a_{12}$ ($D_+=0$)", "D-=0": r"$a_{11}=-\mu a_{12}$ ($D_-=0$)",
-             "Lambda=0": r"$\Lambda=0$ (eqn 51)"}
+             "Lambda=0": lambda_label(summary)}
     for a in axes:
         if crit_pts:
             a.plot([p[0] for p in crit_pts], [p[1] for p in crit_pts], ".", ms=1.2,
@@ -239,7 +249,7 @@ def plot_param_param(summary, base, plt):
         pts = [r for r in read_csv(os.path.join(base, summary["files"]["critical_csv"]))[1:]]
         for name in sorted({p[0] for p in pts}):
             q = [(float(p[1]), float(p[2])) for p in pts if p[0] == name]
-            lab = {"Lambda=0": r"$\Lambda = 0$ (eqn 51)", "D+=0": r"$a_{11} = \mu a_{12}$",
+            lab = {"Lambda=0": lambda_label(summary), "D+=0": r"$a_{11} = \mu a_{12}$",
                    "D-=0": r"$a_{11} = -\mu a_{12}$"}.get(name, name)
             ax.plot([p[0] for p in q], [p[1] for p in q], ".", ms=1.5, color="black")
             handles.append(plt.Line2D([], [], color="black", marker=".", ls="", label=lab))

@@ -18,7 +18,7 @@ nlohmann::json to_json(const Residuals& r) {
   return {{"natural", r.natural},         {"natural_abs", r.natural_abs},
           {"complementarity", r.complementarity}, {"min_z", r.min_z},
           {"min_w", r.min_w},             {"worst_index", r.worst_index},
-          {"scale", r.scale}};
+          {"scale", r.scale},             {"rounding", r.rounding}};
 }
 
 nlohmann::json to_json(const SolveResult& r) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cpkit {
 namespace {
@@ -20,12 +21,17 @@ void max_abs(const Vec& v, double& value, Eigen::Index& index) {
   }
 }
 
-// 1 + max(||q||_inf, || |M| |z| ||_inf): the magnitude of the terms summed into w = M z + q.
-double lcp_scale(const LcpProblem& p, const Vec& z) {
+// scale = 1 + ||q||_inf; rounding = 2 n eps max_i (|M||z| + |q|)_i / scale, the worst-case
+// error of the dot products that form w = M z + q [Higham 2002, Sec. 3.1].
+void lcp_scale(const LcpProblem& p, const Vec& z, Residuals& r) {
   const Vec az = z.cwiseAbs();
-  const double mz = p.is_sparse() ? (p.M_sparse.cwiseAbs() * az).lpNorm<Eigen::Infinity>()
-                                  : (p.M.cwiseAbs() * az).lpNorm<Eigen::Infinity>();
-  return 1.0 + std::max(p.q.lpNorm<Eigen::Infinity>(), mz);
+  const Vec terms = (p.is_sparse() ? Vec(p.M_sparse.cwiseAbs() * az) : Vec(p.M.cwiseAbs() * az)) +
+                    p.q.cwiseAbs();
+  const double n = static_cast<double>(std::max<Eigen::Index>(z.size(), 1));
+  r.scale = 1.0 + p.q.lpNorm<Eigen::Infinity>();
+  r.rounding = terms.size() ? 2.0 * n * std::numeric_limits<double>::epsilon() *
+                                  terms.maxCoeff() / r.scale
+                            : 0.0;
 }
 
 // Natural residual of a box problem: x - mid(l, u, x - F).
@@ -63,7 +69,7 @@ Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w) {
   r.complementarity = z.size() ? z.cwiseProduct(w).cwiseAbs().maxCoeff() : 0.0;
   r.min_z = z.size() ? z.minCoeff() : 0.0;
   r.min_w = w.size() ? w.minCoeff() : 0.0;
-  r.scale = lcp_scale(p, z);
+  lcp_scale(p, z, r);
   r.natural = r.natural_abs / r.scale;
   return r;
 }
@@ -83,7 +89,7 @@ Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w) {
   r.complementarity = comp;
   r.min_z = box_margin(z, p.lower, p.upper);
   r.min_w = box_sign_error(z, w, p.lower, p.upper);
-  r.scale = lcp_scale(p.lcp, z);
+  lcp_scale(p.lcp, z, r);
   r.natural = r.natural_abs / r.scale;
   return r;
 }

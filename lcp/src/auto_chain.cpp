@@ -133,7 +133,7 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
     }
     if (r.solver.empty()) r.solver = name;
     if (is_solution(r.status) && diverged(problem, r.z)) {
-      // finalize()'s scale grows with |M| |z|, so a runaway z can pass it: not an answer.
+      // A runaway z is not an answer (defence in depth against a residual scale growing with z).
       r.status = Status::kNumericalFailure;
       r.message += "; rejected by auto: ||z||_inf = " +
                    std::to_string(r.z.lpNorm<Eigen::Infinity>()) + " counts as diverged";

@@ -329,7 +329,7 @@ SolveResult solve_via_mpcc(const Problem& original, const McpProblem& mcp, bool 
     if (options.newton_polish && newton_polish(mcp, claim.z))
       claim.message += "; active-set Newton polish applied";
     if (!within_divergence_bound(claim.z, mcp)) {
-      // finalize()'s scale grows with |M| |z|: never hand it a diverged point.
+      // Never hand finalize() a diverged point (defence in depth, see docs/mpcc.md).
       claim.message += "; iterates diverged (||z||_inf = " +
                        std::to_string(claim.z.lpNorm<Eigen::Infinity>()) + "), point dropped";
       claim.z.resize(0);

@@ -22,10 +22,16 @@ std::vector<LoadLinearForm> critical_linear_forms(const ContactParameters& p,
                                                   const ContactState& state) {
   std::vector<LoadLinearForm> forms;
   const double g = 1.0 + p.a11 * p.C_T;  // 1 + a11 C_T
+  // The friction coefficient of the slip equations: mu for criterion (38); for the softening
+  // criterion (35) in state d, mu_eff = mu - 2 kappa (docs/model.md; P_N = 0 in state b, so
+  // mu_eff = mu there).
+  const double m = state.label == StateLabel::kD && p.criterion == Criterion::kSoftening
+                       ? p.mu - 2.0 * p.kappa(state.P_N)
+                       : p.mu;
   auto L = [&](int s) {
-    // L_s = (s + mu a12 C_T) dF_T - mu (1 + a11 C_T) dF_N
-    return LoadLinearForm{s > 0 ? "L+" : "L-", static_cast<double>(s) + p.mu * p.a12 * p.C_T,
-                          -p.mu * g};
+    // L_s = (s + m a12 C_T) dF_T - m (1 + a11 C_T) dF_N
+    return LoadLinearForm{s > 0 ? "L+" : "L-", static_cast<double>(s) + m * p.a12 * p.C_T,
+                          -m * g};
   };
   switch (state.label) {
     case StateLabel::kA:

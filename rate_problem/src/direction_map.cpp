@@ -16,8 +16,7 @@ LoadRate at_angle(double theta) noexcept { return {std::cos(theta), std::sin(the
 
 /// Evaluates the rate problem by the map's route and, when cross-checking, by enumeration.
 struct Evaluator {
-  const ContactParameters& params;
-  const ContactState& state;
+  const RatePrecomputed& pre;  // once per direction map (validated by precompute_rate_problem)
   RateMethod method;
   bool cross;
   int evaluations = 0;
@@ -25,8 +24,8 @@ struct Evaluator {
   int unreliable = 0;
 
   RateSummary operator()(const LoadRate& load, RateSummary& check) {
-    const RateSummary s = summarize_rate_problem(params, state, load, method);
-    check = cross ? summarize_rate_problem(params, state, load, RateMethod::kEnumerate) : s;
+    const RateSummary s = summarize_rate_problem(pre, load, method);
+    check = cross ? summarize_rate_problem(pre, load, RateMethod::kEnumerate) : s;
     ++evaluations;
     if (!s.reliable || !check.reliable) ++unreliable;
     if (!same_solution_set(s, check)) ++disagreements;
@@ -57,7 +56,8 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
 
   DirectionMap map;
   map.cross_checked = options.method != RateMethod::kEnumerate;
-  Evaluator eval{params, state, options.method, map.cross_checked};
+  const RatePrecomputed pre = precompute_rate_problem(params, state);
+  Evaluator eval{pre, options.method, map.cross_checked};
 
   const auto candidates = candidate_critical_directions(params, state);
   const std::size_t m = candidates.size();

@@ -221,12 +221,15 @@ std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& p,
   if (state.label == StateLabel::kB) {
     c.push_back({"D+", p.a11 - p.mu * p.a12});
     c.push_back({"D-", p.a11 + p.mu * p.a12});
-  } else if (state.label == StateLabel::kD && p.criterion == Criterion::kCoulomb) {
+  } else if (state.label == StateLabel::kD) {
     const double s = state.sgn_PT >= 0 ? 1.0 : -1.0;
     const double kappa = p.kappa(state.P_N);
-    // eqn (51): Lambda = a11 - mu s a12 + kappa (s a12 - mu a22) - mu kappa C_T detA
-    c.push_back({"Lambda", p.a11 - p.mu * s * p.a12 + kappa * (s * p.a12 - p.mu * p.a22) -
-                               p.mu * kappa * p.C_T * p.detA()});
+    // eqn (51): Lambda = a11 - m s a12 + kappa (s a12 - m a22) - m kappa C_T detA with m = mu
+    // for criterion (38) and m = mu_eff = mu - 2 kappa for the softening criterion (35)
+    // (docs/model.md; the same m as the rate problem's slip equations).
+    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
+    c.push_back({"Lambda", p.a11 - m * s * p.a12 + kappa * (s * p.a12 - m * p.a22) -
+                               m * kappa * p.C_T * p.detA()});
   }
   return c;
 }
@@ -270,6 +273,8 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   auto row = [&](int i) {
     const ContactParameters& p = row_params[i];
     const ContactState& st = row_state[i];
+    // Once per row (the row's model is fixed): the state's LCP as a linear function of the load.
+    const RatePrecomputed pre = precompute_rate_problem(p, st);
     const std::size_t base = static_cast<std::size_t>(i) * static_cast<std::size_t>(theta_n);
     int8_t* count = map.count.data() + base;
     uint8_t* types = map.types.data() + base;
@@ -278,7 +283,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     int64_t n_unreliable = 0;
     if (!cross) {
       for (int j = 0; j < theta_n; ++j) {
-        const RateSummary s = summarize_rate_problem(p, st, load[j], method);
+        const RateSummary s = summarize_rate_problem(pre, load[j], method);
         count[j] = static_cast<int8_t>(s.count);
         types[j] = static_cast<uint8_t>(s.types);
         n_unreliable += !s.reliable;
@@ -287,8 +292,8 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
       uint8_t* dis = map.disagree.data() + base;
       int64_t n_dis = 0;
       for (int j = 0; j < theta_n; ++j) {
-        const RateSummary s = summarize_rate_problem(p, st, load[j], method);
-        const RateSummary e = summarize_rate_problem(p, st, load[j], RateMethod::kEnumerate);
+        const RateSummary s = summarize_rate_problem(pre, load[j], method);
+        const RateSummary e = summarize_rate_problem(pre, load[j], RateMethod::kEnumerate);
         count[j] = static_cast<int8_t>(s.count);
         types[j] = static_cast<uint8_t>(s.types);
         dis[j] = same_solution_set(s, e) ? 0 : 1;

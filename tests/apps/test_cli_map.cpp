@@ -132,7 +132,9 @@ TEST_CASE("CliMapRejectsBadInputWithExitCode2", "[cli][map]") {
         "map --kind param-direction --param nosuch --from 0 --to 1",
         "map --kind param-direction", "map --preset fig5b --threads -1",
         "map --preset fig5b --method lemke", "map --bogus-option",
-        "map --preset fig5b --plot", "map --kind param-direction --param kappa --from 0 --to 1"}) {
+        "map --preset fig5b --plot", "map --kind param-direction --param kappa --from 0 --to 1",
+        "map --preset fig5b --theta-n 90", "map --preset state-d-mu-kappa --n 3 --n2 3 --theta-n 9",
+        "map --preset fig5b --criterion 37", "map --preset fig5b --criterion coulomb38"}) {
     CAPTURE(args);
     const Run r = run(args);
     CHECK(r.code == 2);
@@ -152,8 +154,10 @@ TEST_CASE("CliPlotWritesPngAndSvg", "[cli][map][plot]") {
     fs::remove(prefix.string() + ".png");
     fs::remove(prefix.string() + ".svg");
     const std::string preset = std::string(kind) == "param-param" ? "state-d-mu-kappa" : "fig5b";
+    // --theta-n is accepted only where directions are sampled (param-direction).
+    const std::string theta_n = std::string(kind) == "param-direction" ? " --theta-n 48" : "";
     const Run r = run("map --preset " + preset + " --kind " + kind +
-                      " --param mu --from 0.5 --to 3.5 --n 24 --n2 12 --theta-n 48 --out " +
+                      " --param mu --from 0.5 --to 3.5 --n 24 --n2 12" + theta_n + " --out " +
                       prefix.string() + " --plot");
     REQUIRE(r.code == 0);
     REQUIRE(fs::exists(prefix.string() + ".png"));
@@ -188,4 +192,44 @@ TEST_CASE("CliPlotWithoutMatplotlibStillWritesTheData", "[cli][map][plot]") {
   CHECK(fs::exists(prefix.string() + ".csv"));
   CHECK_FALSE(fs::exists(prefix.string() + ".png"));
   CHECK(slurp(o).find("python3-matplotlib") != std::string::npos);
+}
+
+// --criterion 38|35 as in `cpkit rate`. State-d preset (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25,
+// kappa = 0.5, s = +1), by hand from eqn (51): Lambda = 1.25 - (1 + 3/32) m, zero at m = 8/7.
+// (38): m = mu, so mu = 8/7; (35): m = mu - 2 kappa = mu - 1, so mu = 15/7.
+TEST_CASE("CliCriterion35MovesTheLambdaCurve", "[cli][map]") {
+  const Run r38 = run("map --preset state-d --criterion 38 --n 23 --theta-n 40 --json");
+  REQUIRE(r38.code == 0);
+  const auto j38 = nlohmann::json::parse(r38.out);
+  CHECK(j38["model"]["criterion"] == "coulomb");
+  REQUIRE(j38["critical_values"].size() == 1);
+  CHECK(j38["critical_values"][0]["x"].get<double>() == Approx(8.0 / 7.0).epsilon(1e-12));
+  // (35) needs P_N < 3 P_s mu / k_a, i.e. mu > 0.5 here; cross-checked by the analytic route.
+  const Run r35 = run("map --preset state-d --criterion 35 --from 0.6 --to 3 --n 23 "
+                      "--theta-n 40 --method analytic --json");
+  REQUIRE(r35.code == 0);
+  const auto j35 = nlohmann::json::parse(r35.out);
+  CHECK(j35["model"]["criterion"] == "softening");
+  CHECK(j35["disagreements"] == 0);
+  CHECK(j35["unreliable"] == 0);
+  REQUIRE(j35["critical_values"].size() == 1);
+  CHECK(j35["critical_values"][0]["x"].get<double>() == Approx(15.0 / 7.0).epsilon(1e-12));
+  // The text output names the criterion.
+  const Run rt = run("map --preset state-d --kind direction --criterion 35 --mu 3");
+  REQUIRE(rt.code == 0);
+  CHECK(rt.out.find("criterion (35)") != std::string::npos);
+}
+
+// Every map reports how many evaluations the enumeration could not decide (never hidden).
+TEST_CASE("CliMapJsonReportsUnreliableCells", "[cli][map]") {
+  for (const char* args : {"map --preset fig5b --json",
+                           "map --preset state-d --n 5 --theta-n 12 --json",
+                           "map --preset state-d-mu-kappa --n 4 --n2 4 --json"}) {
+    CAPTURE(args);
+    const Run r = run(args);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    REQUIRE(j.contains("unreliable"));
+    CHECK(j["unreliable"].get<int64_t>() >= 0);
+  }
 }

@@ -212,3 +212,29 @@ TEST_CASE("MCP finalize evaluates F and respects its domain", "[finalize][mcp]")
   inf.status = Status::kInfeasible;
   CHECK(cpkit::finalize(mcp, inf, {}).status == Status::kNumericalFailure);
 }
+
+TEST_CASE("A diverging iterate is never granted solved", "[finalize][residuals]") {
+  // infeasible_copositive_plus: M = [[1, -1], [-1, 1]], q = (-1, -1). Along z = (t, t),
+  // w = (-1, -1) for every t, so min(z, w) = -1 however large t is. A scale that grew with
+  // |M||z| would call z = (1e11, 1e11) "solved"; the data scale 1 + ||q|| = 2 does not.
+  const LcpProblem p(Mat{{1, -1}, {-1, 1}}, Vec{{-1, -1}});
+  for (double t : {1e3, 1e11, 1e14}) {
+    CAPTURE(t);
+    const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{t, t}}), {});
+    CHECK(r.status == Status::kNumericalFailure);
+    CHECK(r.residuals.natural == Approx(0.5));
+  }
+}
+
+TEST_CASE("A genuine solution with a huge z verifies through the rounding allowance",
+          "[finalize][residuals]") {
+  // cps_example_4_4_16: M = [[1, -1], [-1, 1]], q = (1, -1); every z = (t, t + 1) solves it
+  // (w = 0). At t = 1e12 the computed w carries rounding errors of order 1e-4, far above
+  // tol * (1 + ||q||); the allowance 2 n eps (|M||z| + |q|) covers exactly that.
+  const LcpProblem p(Mat{{1, -1}, {-1, 1}}, Vec{{1, -1}});
+  const double t = 1e12;
+  const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{t, t + 1}}), {});
+  CHECK(cpkit::is_solution(r.status));
+  CHECK(r.residuals.rounding > 0);
+  CHECK(r.residuals.rounding < 1e-2);
+}

@@ -20,9 +20,9 @@ using cpkit::Vec;
 namespace {
 
 /// Known disagreements, keyed by (solver, problem name): "solved" answers with |z| ~ 1e16..1e26
-/// on an infeasible LCP, accepted by finalize() because its residual scale 1 + || |M||z| ||
-/// grows with z (w stays at -1). Reported to the lead; cross_verify flags them as
-/// not_a_solution (asserted below).
+/// on an infeasible LCP were accepted by finalize() while its residual scale was
+/// 1 + || |M||z| || (w stays at -1). If such an answer appears, cross_verify must flag it as
+/// not_a_solution (asserted below); with the core's current scale it should not appear.
 bool known_failure(const std::string& solver, const std::string& problem) {
   return (solver == "ipopt" || solver == "nlopt") && problem == "infeasible_copositive_plus";
 }

@@ -254,3 +254,31 @@ TEST_CASE("enumerate_all: n = 24 is within the limit", "[enumerate]") {
   CHECK(e.z.minCoeff() >= 0);
   CHECK(e.w.minCoeff() >= 0);
 }
+
+TEST_CASE("enumerate_all: regressions found by large random sweeps", "[enumerate]") {
+  auto check = [](const std::vector<std::vector<int>>& Mi, const std::vector<int>& qi) {
+    const int n = int(qi.size());
+    cpkit::Mat M(n, n);
+    cpkit::Vec q(n);
+    for (int i = 0; i < n; ++i) {
+      q(i) = qi[i];
+      for (int j = 0; j < n; ++j) M(i, j) = Mi[i][j];
+    }
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(M, q));
+    REQUIRE(s.complete);
+    REQUIRE(s.ambiguous == 0);
+    brute::check(Mi, qi, to_found(s));
+  };
+  SECTION("SingularPieceWithVanishingParticularSolution") {
+    // piece {0,1,2,4}: the particular solution's residual is pure round-off (a segment was lost
+    // when the consistency test used the element-wise scale)
+    check({{2, 2, 3, 1, -2}, {0, 0, -3, -3, 1}, {0, 0, 0, -1, 0}, {1, -1, 0, 0, 0}, {0, 2, -2, 3, 0}},
+          {-2, 0, 0, 0, 3});
+  }
+  SECTION("ConstraintConstantOnThePiece") {
+    // w_1 and w_2 vanish identically on the segment of piece {0,3,4}: a round-off "active"
+    // constraint once produced a spurious midpoint vertex
+    check({{1, 2, 0, -2, 0}, {0, 1, -2, 0, 0}, {0, 1, 2, 0, 0}, {0, 1, 2, 2, 1}, {0, 0, -2, 0, 0}},
+          {0, 0, 0, -2, 0});
+  }
+}

@@ -184,6 +184,46 @@ TEST_CASE("StateDSectorsFollowTheSignOfLambda", "[map][direction]") {
   }
 }
 
+// Softening criterion (35): the slip equations use mu_eff = mu - 2 kappa (docs/model.md), so the
+// critical directions are where (s + m a12 C_T) dF_T - m (1 + a11 C_T) dF_N = 0 with m = mu_eff,
+// and the sectors follow the sign of Lambda(m). Here kappa = 0.5: m = mu - 1.
+TEST_CASE("StateDSofteningCriterionUsesMuEff", "[map][direction]") {
+  ContactParameters p = fig5(0.6);
+  p.k_a = 1.5;
+  p.P_s = 1;
+  p.criterion = Criterion::kSoftening;
+  ContactState s;
+  s.label = StateLabel::kD;
+  s.P_N = 1;  // kappa = 0.5; (46) needs mu > kappa
+  for (int sgn : {+1, -1}) {
+    s.sgn_PT = sgn;
+    for (double mu : {1.6, 3.0}) {  // m = 0.6 (Lambda > 0), m = 2 (Lambda < 0)
+      p.mu = mu;
+      CAPTURE(sgn, mu);
+      const double kappa = 0.5, m = mu - 2 * kappa, g = 1 + p.a11 * p.C_T;
+      const double Lambda = p.a11 - m * sgn * p.a12 + kappa * (sgn * p.a12 - m * p.a22) -
+                            m * kappa * p.C_T * p.detA();
+      const double cT = sgn + m * p.a12 * p.C_T, cN = -m * g;
+      const double t1 = wrap(std::atan2(-cT, cN)), t2 = wrap(std::atan2(cT, -cN));
+      MapOptions opt;
+      opt.method = RateMethod::kAnalytic;  // cross-checked by the enumeration on every sample
+      const DirectionMap map = compute_direction_map(p, s, opt);
+      CHECK(map.disagreements == 0);
+      CHECK(map.unreliable == 0);
+      REQUIRE(map.critical.size() == 2);
+      CHECK(map.critical[0].theta == Approx(std::min(t1, t2)).margin(1e-13));
+      CHECK(map.critical[1].theta == Approx(std::max(t1, t2)).margin(1e-13));
+      REQUIRE(map.sectors.size() == 2);
+      for (const auto& sec : map.sectors) {
+        const double mid = 0.5 * (sec.theta_from + sec.theta_to);
+        const double L = cT * std::cos(mid) + cN * std::sin(mid);
+        if (Lambda > 0) CHECK(sec.summary.count == 1);
+        else CHECK(sec.summary.count == (L < 0 ? 2 : 0));
+      }
+    }
+  }
+}
+
 TEST_CASE("StatesAAndCAreUniqueForEveryDirection", "[map][direction]") {
   for (StateLabel l : {StateLabel::kA, StateLabel::kC}) {
     ContactState s;
@@ -257,11 +297,11 @@ TEST_CASE("DirectionMapRejectsBadInput", "[map][direction]") {
   CHECK_THROWS_AS(compute_direction_map(fig5(1.0), state_b(), opt), cpkit::InputError);
 }
 
-// Known issue (reported to the rate-problem module, issue 6): in state d with Lambda < 0 the
-// enumeration route returns no solution on one exact direction L_s = 0, where stick
-// (lambda = 0) is a solution; the analytic route finds it. Tagged [!mayfail] so the run shows the
-// failure without failing the suite; remove the tag once the enumeration route is fixed.
-TEST_CASE("StateDCriticalDirectionsAgreeAcrossRoutes", "[map][direction][!mayfail]") {
+// State d over random models (Lambda of both signs): on every sector and every exact critical
+// direction L_s = 0 the enumeration route and the closed forms (d.i-d.ii) give the same count and
+// types. (Until issue 6 fixed it, the enumeration missed the stick solution on L_s = 0 when
+// Lambda < 0.)
+TEST_CASE("StateDCriticalDirectionsAgreeAcrossRoutes", "[map][direction]") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
   int disagreeing_maps = 0;

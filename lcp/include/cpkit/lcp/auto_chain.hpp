@@ -21,8 +21,8 @@
 /// solver tried when none did; result.attempts lists every attempt in order (skips included,
 /// status kNotRun with message "not registered" / "does not accept this problem").
 /// A "solution" with ||z||_inf > 1e10 (1 + ||q||_inf) (MCP: 1e10 (1 + largest finite bound or
-/// |x0|)) is rejected as diverged: finalize()'s scale grows with |M| |z|, so a runaway z with
-/// w = -1 can otherwise pass it. time_limit_s is shared by the whole chain. The final answer goes through finalize() again.
+/// |x0|)) is rejected as diverged (defence in depth: a residual scale that grows with |M| |z|
+/// would let a runaway z with w = -1 pass). time_limit_s is shared by the whole chain. The final answer goes through finalize() again.
 #include <string>
 #include <vector>
 

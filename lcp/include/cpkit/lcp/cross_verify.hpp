@@ -11,10 +11,11 @@
 ///
 /// Disagreements (docs/enumeration.md, "Cross-verification"):
 /// - kNotASolution:        status solved / solved_inaccurate but the recomputed residual exceeds
-///                         tol_acceptable, either on finalize()'s scale or on the data scale
-///                         ||min(z, w)||_inf / (1 + ||q||_inf). The second test catches answers
-///                         with |z| -> infinity on infeasible problems, whose residual on the
-///                         scale 1 + || |M| |z| ||_inf vanishes although w stays negative;
+///                         tol_acceptable (plus the rounding allowance of residuals.hpp), on
+///                         the residual's own scale or on the data scale
+///                         ||min(z, w)||_inf / (1 + ||q||_inf). The second test is kept
+///                         independent of the core's scale convention: an answer with
+///                         |z| -> infinity and w = -1 on an infeasible LCP must never pass;
 /// - kInfeasibleButSolvable: status infeasible while the enumeration found a solution;
 /// - kProvesIncomplete:    a verified solution that the (complete) enumeration does not contain.
 /// Solver failures without a claim (ray termination, iteration limit, ...) are not

@@ -442,6 +442,8 @@ struct SmallEnumerator {
       double x[5] = {};
       if (m == 1) {
         x[0] = 1;
+      } else if constexpr (N == 1) {
+        continue;  // m <= N: unreachable for N = 1
       } else {
         double e[4][5] = {};
         double emax = 0;

@@ -9,7 +9,8 @@
 ///            S = (1 + a11 C_T) dF_N - a12 C_T dF_T (stick dP_N >= 0),
 ///            L_+ and L_-, L_s = (s + mu a12 C_T) dF_T - mu (1 + a11 C_T) dF_N
 ///            (stick L_s <= 0; slip lambda = L_s / D_s > 0);
-///   state d: L_s with s = sgn P_T (stick L_s <= 0; slip lambda = L_s / Lambda > 0);
+///   state d: L_s with s = sgn P_T (stick L_s <= 0; slip lambda = L_s / Lambda > 0), mu replaced
+///            by mu_eff = mu - 2 kappa for the softening criterion (35);
 ///   states a and c: none (the solution is unique for every direction).
 /// A form vanishes on exactly two opposite directions, here computed in closed form:
 /// the load (dF_T, dF_N) = (c_N, -c_T) and its negative, with no sampling. Load directions are

@@ -69,7 +69,8 @@ struct CriticalDirectionPoint {
 };
 
 /// The analytic criteria whose sign decides uniqueness for every direction: state b
-/// {"D+", D_+}, {"D-", D_-}; state d {"Lambda", Lambda(sgn P_T)} (criterion (38)); else none.
+/// {"D+", D_+}, {"D-", D_-}; state d {"Lambda", Lambda(sgn P_T)} of eqn (51), with mu replaced
+/// by mu_eff = mu - 2 kappa for the softening criterion (35) (as in the rate problem); else none.
 struct UniquenessCriterion {
   std::string name;
   double value = 0;
