@@ -29,6 +29,8 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include "bench_problems.hpp"
+
 namespace {
 
 using cpkit::LcpProblem;
@@ -37,22 +39,8 @@ using cpkit::SparseMat;
 using cpkit::Vec;
 using Clock = std::chrono::steady_clock;
 
-/// The random dense P-matrix LCPs of bench/bench_lemke.cpp, generated the same way so that both
-/// benchmarks see the same problems: B, S, q uniform in [-1, 1], M = B B^T / n + I + S - S^T
-/// (symmetric part positive definite, hence a P-matrix with a unique solution); one
-/// std::mt19937 seeded 2026 drawn in order through n = 10, 50, 100, 200, 500 with 40, 40, 20, 10,
-/// 6 problems (3 each with --quick).
-LcpProblem random_p_lcp(int n, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Mat B(n, n), S(n, n);
-  Vec q(n);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) B(i, j) = u(rng), S(i, j) = u(rng);
-    q[i] = u(rng);
-  }
-  return LcpProblem(B * B.transpose() / n + Mat::Identity(n, n) + S - S.transpose(), q,
-                    "random_p_" + std::to_string(n));
-}
+// The random dense P-matrix LCPs shared with bench_lemke / bench_fb_newton (bench_problems.hpp).
+using cpkit::bench::random_p_lcp;
 
 /// 2-D obstacle problem on the unit square, m x m interior grid (n = m^2): membrane u = 0 on
 /// the boundary under a downward load f = -20, obstacle psi(x, y) = -0.2 - ((x - .5)^2 +

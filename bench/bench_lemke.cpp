@@ -23,6 +23,8 @@
 #include "lcp_cst.h"
 #endif
 
+#include "bench_problems.hpp"
+
 namespace {
 
 using cpkit::LcpProblem;
@@ -30,18 +32,8 @@ using cpkit::Mat;
 using cpkit::Vec;
 using Clock = std::chrono::steady_clock;
 
-// Random dense P-matrix: positive definite symmetric part B B^T / n + I plus a skew part;
-// q uniform in [-1, 1]^n.
-LcpProblem random_p_lcp(int n, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Mat B(n, n), S(n, n);
-  Vec q(n);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) B(i, j) = u(rng), S(i, j) = u(rng);
-    q[i] = u(rng);
-  }
-  return LcpProblem(B * B.transpose() / n + Mat::Identity(n, n) + S - S.transpose(), q);
-}
+// The random dense P-matrix LCPs shared with bench_lemke / bench_fb_newton (bench_problems.hpp).
+using cpkit::bench::random_p_lcp;
 
 struct Outcome {
   bool verified = false;  // cpkit's finalize accepts z

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <unordered_set>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
@@ -658,6 +659,172 @@ class Engine {
   long long nodes_ = 0, leaves_ = 0;
 };
 
+// ---------------------------------------------------------------------------------------------
+// Structured path: block-bipartite LCPs M = [[0, M12], [M21, 0]] with q > 0, M12 < 0, M21 < 0
+// (bimatrix games, M12 = -A, M21 = -B^T). The solutions are exactly the pairs (x, y) of
+// vertices of the polytopes P = {x >= 0, q2 + M21 x >= 0} and Q = {y >= 0, q1 + M12 y >= 0}
+// whose label sets (tight inequalities, indexed by the LCP index i: z_i = 0 or w_i = 0) cover
+// all n indices [von Stengel 2002, Handbook of Game Theory 3, Ch. 45, Sec. 3] - the vertex
+// enumeration approach of lrsnash. Both polytopes are bounded (M12, M21 < 0) and contain 0.
+// Each polytope's vertex graph is traversed by simplex pivots on a dictionary. The path is
+// taken only when every vertex is nondegenerate (no basic variable near zero, no ratio tie);
+// otherwise it reports failure and the general engine runs. Every equilibrium is re-solved
+// from the original data and checked with the same tests as the general engine.
+
+/// Vertices of {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded) as label masks (bit of the
+/// LCP index of each tight inequality). Returns false when degenerate or over the cap.
+bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
+                       const std::vector<int>& row_label, std::vector<Mask>& masks, double tol) {
+  const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
+  struct State {
+    std::vector<double> T, beta;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
+    std::vector<int> bl, nl;      // labels of basic / nonbasic variables
+  };
+  const double dscale = std::max(b.cwiseAbs().maxCoeff(), D.cwiseAbs().maxCoeff());
+  const double eps = std::max(1e3 * tol, 1e-10);  // degeneracy threshold (relative)
+  State s0;
+  s0.T.resize(size_t(m) * d);
+  for (int r = 0; r < m; ++r)
+    for (int c = 0; c < d; ++c) s0.T[size_t(r) * d + c] = D(r, c);
+  s0.beta.assign(b.data(), b.data() + m);
+  s0.bl = row_label;
+  s0.nl = var_label;
+  Mask m0 = 0;
+  for (int c = 0; c < d; ++c) m0 |= Mask(1) << var_label[c];
+  std::unordered_set<Mask> seen{m0};
+  masks.assign(1, m0);
+  std::vector<State> stack{s0};
+  const size_t cap = 2000000;
+  while (!stack.empty()) {
+    State s = std::move(stack.back());
+    stack.pop_back();
+    // basic values at this vertex: all must be clearly positive (nondegenerate)
+    double bmax = 0;
+    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.beta[r]));
+    for (int r = 0; r < m; ++r)
+      if (!(s.beta[r] > eps * std::max(bmax, dscale))) return false;
+    Mask cob = 0;
+    for (int c = 0; c < d; ++c) cob |= Mask(1) << s.nl[c];
+    for (int c = 0; c < d; ++c) {
+      int best = -1;
+      double tb = 0, tmax = 0;
+      for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
+      for (int r = 0; r < m; ++r) {
+        const double a = s.T[size_t(r) * d + c];
+        if (!(a < -eps * tmax)) continue;
+        const double t = s.beta[r] / -a;
+        if (best < 0 || t < tb) {
+          if (best >= 0 && tb - t <= eps * tb) return false;  // tie: degenerate neighbour
+          best = r;
+          tb = t;
+        } else if (t - tb <= eps * tb) {
+          return false;
+        }
+      }
+      if (best < 0) return false;  // unbounded edge: not a polytope
+      const Mask nm = (cob & ~(Mask(1) << s.nl[c])) | (Mask(1) << s.bl[best]);
+      if (!seen.insert(nm).second) continue;
+      if (seen.size() > cap) return false;
+      masks.push_back(nm);
+      // pivot: nonbasic c enters, basic `best` leaves
+      State t = s;
+      const int r0 = best;
+      const double p = s.T[size_t(r0) * d + c];
+      double* rowp = &t.T[size_t(r0) * d];
+      t.beta[r0] = -s.beta[r0] / p;
+      for (int cc = 0; cc < d; ++cc) rowp[cc] = cc == c ? 1.0 / p : -s.T[size_t(r0) * d + cc] / p;
+      for (int r = 0; r < m; ++r) {
+        if (r == r0) continue;
+        const double f = s.T[size_t(r) * d + c];
+        double* row = &t.T[size_t(r) * d];
+        t.beta[r] = s.beta[r] + f * t.beta[r0];
+        if (f == 0) continue;
+        for (int cc = 0; cc < d; ++cc)
+          row[cc] = cc == c ? f * rowp[cc] : s.T[size_t(r) * d + cc] + f * rowp[cc];
+      }
+      std::swap(t.bl[r0], t.nl[c]);
+      stack.push_back(std::move(t));
+    }
+  }
+  return true;
+}
+
+/// The structured path; true when it produced the complete answer in `out` (else `out` is
+/// untouched and the general engine must run).
+bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
+  const Mat& M = out.M;
+  const Vec& q = out.q;
+  const int n = static_cast<int>(q.size());
+  const double tol = opt.tol;
+  if (!(q.minCoeff() > 0)) return false;
+  int k = -1;
+  for (int kk = 1; kk < n && k < 0; ++kk)
+    if ((M.topLeftCorner(kk, kk).array() == 0).all() &&
+        (M.bottomRightCorner(n - kk, n - kk).array() == 0).all())
+      k = kk;
+  if (k < 0) return false;
+  const int l = n - k;
+  const Mat M12 = M.topRightCorner(k, l), M21 = M.bottomLeftCorner(l, k);
+  if (!(M12.maxCoeff() < 0) || !(M21.maxCoeff() < 0)) return false;
+  std::vector<int> xl(k), yl(l);
+  for (int i = 0; i < k; ++i) xl[i] = i;
+  for (int j = 0; j < l; ++j) yl[j] = k + j;
+  std::vector<Mask> pm, qm;
+  if (!polytope_vertices(M21, q.tail(l), xl, yl, pm, tol)) return false;
+  if (!polytope_vertices(M12, q.head(k), yl, xl, qm, tol)) return false;
+  const Mask all = (Mask(1) << n) - 1;
+  std::unordered_set<Mask> qset(qm.begin(), qm.end());
+  std::vector<ExtremeSolution> sols;
+  for (Mask lp : pm) {
+    const Mask lq = all & ~lp;
+    if (!qset.count(lq)) continue;
+    // support S = indices whose z is basic: x_i > 0 (i < k, not a P label), y_j > 0 (not a
+    // Q label, i.e. a P label among k..n-1)
+    const Mask S = (~lp & ((Mask(1) << k) - 1)) | (lp & ~((Mask(1) << k) - 1));
+    std::vector<int> idx = indices_of(S, n);
+    const int s = static_cast<int>(idx.size());
+    Vec z = Vec::Zero(n);
+    if (s > 0) {
+      Mat B(s, s);
+      Vec rhs(s);
+      for (int a = 0; a < s; ++a) {
+        rhs(a) = -q(idx[a]);
+        for (int c = 0; c < s; ++c) B(a, c) = M(idx[a], idx[c]);
+      }
+      Eigen::FullPivLU<Mat> lu(B);
+      lu.setThreshold(std::max(1e3 * tol, 1e-10));
+      if (lu.rank() < s) return false;
+      const Vec x = lu.solve(rhs);
+      for (int a = 0; a < s; ++a) z(idx[a]) = x(a);
+    }
+    const double zs = z.cwiseAbs().maxCoeff();
+    Vec w = M * z + q;
+    for (int i = 0; i < n; ++i) {
+      const double sc = std::abs(q(i)) + (M.row(i).cwiseAbs() * z.cwiseAbs())(0);
+      if ((S >> i) & 1u) {
+        if (!(z(i) > kGray * tol * zs)) return false;            // not clearly positive
+        if (std::abs(w(i)) > kGray * tol * sc) return false;     // inaccurate solve
+        w(i) = 0;
+      } else {
+        if (!(w(i) > kGray * tol * sc)) return false;            // not clearly positive
+      }
+    }
+    ExtremeSolution e;
+    e.z = z;
+    e.w = w;
+    e.basis = basis_of(S, n);
+    sols.push_back(std::move(e));
+  }
+  out.solutions = std::move(sols);
+  out.complete = true;
+  out.infinite = false;
+  out.nodes = static_cast<long long>(pm.size() + qm.size());
+  out.leaves = static_cast<long long>(out.solutions.size());
+  out.message.clear();
+  out.structured = true;
+  return true;
+}
+
 }  // namespace
 
 bool SolutionSet::contains(const Vec& z, double ctol) const {
@@ -707,6 +874,7 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
     case 3: run_small<3>(out); break;
     case 4: run_small<4>(out); break;
     default: {
+      if (options.use_structure && try_bipartite(options, out)) break;
       Engine engine(options, out);
       engine.run();
     }

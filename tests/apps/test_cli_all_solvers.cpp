@@ -3,6 +3,8 @@
 // verified answer is a solution of the file's LCP (recomputed here from the file's data).
 #include <catch2/catch.hpp>
 
+#include "cli_runner.hpp"
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -20,40 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = cpkit::test::CliRun;
+using cpkit::test::scratch_dir;
+using cpkit::test::slurp;
 
-fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_all_solvers_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run cpkit(const std::string& args) {
-  const auto out = scratch() / "stdout.txt";
-  const auto err = scratch() / "stderr.txt";
-  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
-                          out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+Run run_cli(const std::string& args) { return cpkit::test::run_cpkit(args); }
 
 std::string path(const std::string& name) {
   return std::string(CPKIT_TEST_DATA_DIR) + "/lcp/" + name + ".json";
@@ -78,7 +51,7 @@ bool solves_file(const std::string& name, const nlohmann::json& z) {
 TEST_CASE("cpkit lcp solve --solver ipopt|nlopt|auto on battle_of_the_sexes", "[cli][mpcc]") {
   const std::string solver = GENERATE(as<std::string>{}, "ipopt", "nlopt", "auto");
   CAPTURE(solver);
-  const Run r = cpkit("lcp solve '" + path("battle_of_the_sexes") + "' --solver " + solver +
+  const Run r = run_cli("lcp solve '" + path("battle_of_the_sexes") + "' --solver " + solver +
                       " --json");
   INFO(r.err);
   CHECK(r.code == 0);
@@ -93,7 +66,7 @@ TEST_CASE("cpkit lcp solve --solver ipopt|nlopt|auto on battle_of_the_sexes", "[
 
 TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli][mpcc]") {
   SECTION("JSON array, one object per registered solver") {
-    const Run r = cpkit("lcp solve '" + path("battle_of_the_sexes") + "' --all-solvers --json");
+    const Run r = run_cli("lcp solve '" + path("battle_of_the_sexes") + "' --all-solvers --json");
     CHECK(r.code == 0);
     const auto arr = nlohmann::json::parse(r.out);
     REQUIRE(arr.is_array());
@@ -106,7 +79,7 @@ TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli
       CHECK(std::find(entries.begin(), entries.end(), name) != entries.end());
   }
   SECTION("infeasible problem: exit 1, nobody solved") {
-    const Run r = cpkit("lcp solve '" + path("pang_isolated_perturbed") +
+    const Run r = run_cli("lcp solve '" + path("pang_isolated_perturbed") +
                         "' --all-solvers --json");
     CHECK(r.code == 1);
     const auto arr = nlohmann::json::parse(r.out);
@@ -117,7 +90,7 @@ TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli
     }
   }
   SECTION("text table") {
-    const Run r = cpkit("lcp solve '" + path("deudeu") + "' --all-solvers");
+    const Run r = run_cli("lcp solve '" + path("deudeu") + "' --all-solvers");
     CHECK(r.code == 0);
     CHECK(r.out.find("answered by") != std::string::npos);
     CHECK(r.out.find("ipopt") != std::string::npos);

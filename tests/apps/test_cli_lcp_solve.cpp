@@ -3,6 +3,8 @@
 // that bad input prints nothing on stdout.
 #include <catch2/catch.hpp>
 
+#include "cli_runner.hpp"
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -17,48 +19,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = cpkit::test::CliRun;
+using cpkit::test::scratch_dir;
+using cpkit::test::slurp;
 
-fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_cli_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs `cpkit ARGS` with stdout and stderr captured to files.
-Run cpkit(const std::string& args) {
-  const auto out = scratch() / "stdout.txt";
-  const auto err = scratch() / "stderr.txt";
-  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
-                          out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+Run run_cli(const std::string& args) { return cpkit::test::run_cpkit(args); }
 
 std::string data(const std::string& name) {
   return std::string("'") + CPKIT_TEST_DATA_DIR + "/lcp/" + name + "'";
 }
 
 std::string write(const std::string& name, const std::string& text) {
-  const auto path = scratch() / name;
+  const auto path = scratch_dir() / name;
   std::ofstream(path) << text;
   return "'" + path.string() + "'";
 }
@@ -66,7 +38,7 @@ std::string write(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST_CASE("cli: solved problem, JSON output", "[cli]") {
-  const auto r = cpkit("lcp solve " + data("deudeu.json") + " --json");
+  const auto r = run_cli("lcp solve " + data("deudeu.json") + " --json");
   CAPTURE(r.err);
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -84,7 +56,7 @@ TEST_CASE("cli: solved problem, JSON output", "[cli]") {
 }
 
 TEST_CASE("cli: infeasible problem exits 1 with a certificate", "[cli]") {
-  const auto r = cpkit("lcp solve " + data("infeasible_copositive_plus.json") + " --json");
+  const auto r = run_cli("lcp solve " + data("infeasible_copositive_plus.json") + " --json");
   REQUIRE(r.code == 1);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j.at("status") == "infeasible");
@@ -95,10 +67,10 @@ TEST_CASE("cli: infeasible problem exits 1 with a certificate", "[cli]") {
 }
 
 TEST_CASE("cli: ray termination and pivot limit exit 1", "[cli]") {
-  auto r = cpkit("lcp solve " + data("battle_of_the_sexes.json") + " --json");
+  auto r = run_cli("lcp solve " + data("battle_of_the_sexes.json") + " --json");
   CHECK(r.code == 1);
   CHECK(nlohmann::json::parse(r.out).at("status") == "ray_termination");
-  r = cpkit("lcp solve " + data("murty_exp_6.json") + " --json --max-iter 10");
+  r = run_cli("lcp solve " + data("murty_exp_6.json") + " --json --max-iter 10");
   CHECK(r.code == 1);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j.at("status") == "iteration_limit");
@@ -106,16 +78,16 @@ TEST_CASE("cli: ray termination and pivot limit exit 1", "[cli]") {
 }
 
 TEST_CASE("cli: text report, trace, .dat input", "[cli]") {
-  auto r = cpkit("lcp solve " + data("murty_exp_6.json"));
+  auto r = run_cli("lcp solve " + data("murty_exp_6.json"));
   REQUIRE(r.code == 0);
   CHECK(r.out.find("status:     solved") != std::string::npos);
   CHECK(r.out.find("iterations: 64") != std::string::npos);
-  r = cpkit("lcp solve " + data("deudeu.json") + " --trace --json");
+  r = run_cli("lcp solve " + data("deudeu.json") + " --trace --json");
   REQUIRE(r.code == 0);
   CHECK(nlohmann::json::parse(r.out).at("trace").size() == 3);
   // Siconos .dat, column-major: M = [[2, 1], [0, 3]] is stored as columns (2, 0), (1, 3).
   // q = (-2, -3): z2 = 1 (w2 = 0), w1 = 2 z1 + 1 - 2 = 0 -> z1 = 1/2.
-  r = cpkit("lcp solve " + write("p.dat", "2\n2 0\n1 3\n-2 -3\n") + " --json");
+  r = run_cli("lcp solve " + write("p.dat", "2\n2 0\n1 3\n-2 -3\n") + " --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["z"][0].get<double>() == Approx(0.5));
@@ -123,13 +95,13 @@ TEST_CASE("cli: text report, trace, .dat input", "[cli]") {
 }
 
 TEST_CASE("cli: options --tol and --time-limit are passed on", "[cli]") {
-  auto r = cpkit("lcp solve " + data("deudeu.json") + " --json --tol 1e-3 --time-limit 10");
+  auto r = run_cli("lcp solve " + data("deudeu.json") + " --json --tol 1e-3 --time-limit 10");
   CHECK(r.code == 0);
-  r = cpkit("lcp solve " + data("deudeu.json") + " --tol -1");
+  r = run_cli("lcp solve " + data("deudeu.json") + " --tol -1");
   CHECK(r.code == 2);
   CHECK(r.out.empty());
   CHECK(r.err.find("tol") != std::string::npos);
-  r = cpkit("lcp solve " + data("deudeu.json") + " --time-limit 0");
+  r = run_cli("lcp solve " + data("deudeu.json") + " --time-limit 0");
   CHECK(r.code == 2);
   CHECK(r.out.empty());
 }
@@ -149,17 +121,17 @@ TEST_CASE("cli: bad input and usage exit 2 with nothing on stdout", "[cli]") {
   };
   for (const auto& args : cases) {
     CAPTURE(args);
-    const auto r = cpkit(args);
+    const auto r = run_cli(args);
     CAPTURE(r.err);
     CHECK(r.code == 2);
     CHECK(r.out.empty());
     CHECK_FALSE(r.err.empty());
   }
   // Messages name the problem.
-  CHECK(cpkit("lcp solve " + data("deudeu.json") + " --solver nope").err.find("valid: lemke") !=
+  CHECK(run_cli("lcp solve " + data("deudeu.json") + " --solver nope").err.find("valid: lemke") !=
         std::string::npos);
-  CHECK(cpkit("lcp solve " + write("bad2.dat", "2\n1 2\n3 oops\n5 6\n")).err.find(":3:") !=
+  CHECK(run_cli("lcp solve " + write("bad2.dat", "2\n1 2\n3 oops\n5 6\n")).err.find(":3:") !=
         std::string::npos);
-  CHECK(cpkit("lcp solve " + write("bad2.json", R"({"M": [[1, 2], [3]], "q": [1, 2]})"))
+  CHECK(run_cli("lcp solve " + write("bad2.json", R"({"M": [[1, 2], [3]], "q": [1, 2]})"))
             .err.find("M row 1") != std::string::npos);
 }

@@ -1,6 +1,8 @@
 // `cpkit map` end to end: runs the built binary (CPKIT_BINARY_DIR/apps/cpkit), checks the JSON
 // it prints, the files it writes, the exit codes for bad input, and the plotting script.
 #include <catch2/catch.hpp>
+
+#include "cli_runner.hpp"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,35 +17,16 @@ namespace fs = std::filesystem;
 namespace {
 const std::string kCpkit = CPKIT_BINARY_DIR "/apps/cpkit";
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = cpkit::test::CliRun;
+using cpkit::test::slurp;
 
 fs::path scratch_dir() {
-  const fs::path d = fs::path(CPKIT_BINARY_DIR) / "test-cli-map";
+  const fs::path d = cpkit::test::scratch_dir() / "map";
   fs::create_directories(d);
   return d;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-Run run(const std::string& args) {
-  const fs::path d = scratch_dir();
-  const fs::path o = d / "stdout.txt", e = d / "stderr.txt";
-  const std::string cmd = kCpkit + " " + args + " >" + o.string() + " 2>" + e.string();
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.code = rc == -1 ? -1 : WEXITSTATUS(rc);
-  r.out = slurp(o);
-  r.err = slurp(e);
-  return r;
-}
+Run run(const std::string& args) { return cpkit::test::run_cpkit(args); }
 
 int count_lines(const fs::path& p) {
   std::ifstream f(p);

@@ -2,6 +2,8 @@
 #include <sys/wait.h>
 
 #include <catch2/catch.hpp>
+
+#include "cli_runner.hpp"
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,32 +13,9 @@
 
 namespace {
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = cpkit::test::CliRun;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-Run run_rate(const std::string& args) {
-  static int counter = 0;
-  const std::string base = std::string(CPKIT_BINARY_DIR) + "/test_cli_rate_" + std::to_string(++counter);
-  const std::string cmd = std::string(CPKIT_BINARY_DIR) + "/apps/cpkit rate " + args + " >" + base +
-                          ".out 2>" + base + ".err";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(base + ".out");
-  r.err = slurp(base + ".err");
-  std::remove((base + ".out").c_str());
-  std::remove((base + ".err").c_str());
-  return r;
-}
+Run run_rate(const std::string& args) { return cpkit::test::run_cpkit("rate " + args); }
 
 const std::string kB = "--state b --a11 1 --a12 2 --a22 5 --mu 1 ";  // D_+ = -1: non-unique
 

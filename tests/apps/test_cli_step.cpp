@@ -3,6 +3,8 @@
 // stopped, 2 bad input with nothing on stdout) and the files `simulate` writes.
 #include <catch2/catch.hpp>
 
+#include "cli_runner.hpp"
+
 #include <sys/wait.h>
 
 #include <cmath>
@@ -18,40 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
+using Run = cpkit::test::CliRun;
+using cpkit::test::scratch_dir;
+using cpkit::test::slurp;
 
-fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_cli_step_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run cpkit(const std::string& args) {
-  const auto out = scratch() / "stdout.txt";
-  const auto err = scratch() / "stderr.txt";
-  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
-                          out.string() + "' 2> '" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+Run run_cli(const std::string& args) { return cpkit::test::run_cpkit(args); }
 
 const std::string kLambdaNegative =
     "step --a11 1 --a12 0.9 --a22 1 --mu 2 --P_T0 2 --P_N0 1 --g0 0 ";
@@ -61,7 +34,7 @@ const std::string kLambdaNegative =
 TEST_CASE("CliStepAllJsonListsEverySolution", "[cli][step]") {
   // State d with Lambda = a11 - mu a12 = -0.8 < 0, L_+ = dF_T < 0: stick, slip+ (dP_N =
   // -a12 dF_T / Lambda = -0.01125, hand-derived from eqn (51)) and the jump to separation.
-  const Run r = cpkit(kLambdaNegative + "--DF -0.01 0 --all --json");
+  const Run r = run_cli(kLambdaNegative + "--DF -0.01 0 --all --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["count"] == 3);
@@ -80,7 +53,7 @@ TEST_CASE("CliStepAllJsonListsEverySolution", "[cli][step]") {
 }
 
 TEST_CASE("CliStepJumpWhereTheRateHasNone", "[cli][step]") {
-  const Run r = cpkit(kLambdaNegative + "--DF 0.01 0 --all");
+  const Run r = run_cli(kLambdaNegative + "--DF 0.01 0 --all");
   CHECK(r.code == 0);
   CHECK(r.out.find("separation (point, jump)") != std::string::npos);
   CHECK(r.out.find("the rate problem has no solution") != std::string::npos);
@@ -89,7 +62,7 @@ TEST_CASE("CliStepJumpWhereTheRateHasNone", "[cli][step]") {
 TEST_CASE("CliStepOneSolutionByTheChain", "[cli][step]") {
   // From state b without wear, a11 > mu|a12|: the rate solution times the increment. Load
   // (2, 1): N = a11 dF_N - a12 dF_T = 0.4 > 0, slip+ with dP_N = N / (a11 - mu a12) = 0.4/0.85.
-  const Run r = cpkit("step --a11 1 --a12 0.3 --a22 1 --mu 0.5 --P_T0 0 --P_N0 0 --g0 0 "
+  const Run r = run_cli("step --a11 1 --a12 0.3 --a22 1 --mu 0.5 --P_T0 0 --P_N0 0 --g0 0 "
                       "--DF 2 1 --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -101,7 +74,7 @@ TEST_CASE("CliStepOneSolutionByTheChain", "[cli][step]") {
 
 TEST_CASE("CliStepExitCodes", "[cli][step]") {
   // Criterion (35) with mu/k = 5: no solution above P_N = 5.
-  const Run none = cpkit("step --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
+  const Run none = run_cli("step --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
                          "--P_T0 0 --P_N0 4.9 --g0 0 --DF 0 0.2 --all --json");
   CHECK(none.code == 1);
   CHECK(nlohmann::json::parse(none.out)["count"] == 0);
@@ -109,7 +82,7 @@ TEST_CASE("CliStepExitCodes", "[cli][step]") {
        {"--P_T0 0 --P_N0 1 --g0 0.1 --DF 0 1", "--P_T0 0 --P_N0 -1 --g0 0 --DF 0 1",
         "--P_T0 1 --P_N0 1 --g0 0 --DF 0 1", "--P_T0 0 --P_N0 1 --g0 0 --DF 0 nan",
         "--P_T0 0 --P_N0 1 --g0 0 --DF 0", "--P_T0 0 --P_N0 1 --g0 0 --DF 0 1 --criterion 40"}) {
-    const Run r = cpkit("step --a11 1 --a12 0 --a22 1 --mu 0.5 " + bad + " --all --json");
+    const Run r = run_cli("step --a11 1 --a12 0 --a22 1 --mu 0.5 " + bad + " --all --json");
     CAPTURE(bad, r.err);
     CHECK(r.code == 2);
     CHECK(r.out.empty());
@@ -118,11 +91,11 @@ TEST_CASE("CliStepExitCodes", "[cli][step]") {
 }
 
 TEST_CASE("CliSimulateFromTheExampleConfig", "[cli][simulate]") {
-  const fs::path dir = scratch() / "sim";
+  const fs::path dir = scratch_dir() / "sim";
   fs::create_directories(dir);
   const std::string cfg = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/fretting.json";
   const std::string csv = (dir / "run.csv").string(), sum = (dir / "run.json").string();
-  const Run r = cpkit("simulate --config '" + cfg + "' --cycles 3 --csv '" + csv +
+  const Run r = run_cli("simulate --config '" + cfg + "' --cycles 3 --csv '" + csv +
                       "' --summary '" + sum + "' --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -147,7 +120,7 @@ TEST_CASE("CliSimulateFromTheExampleConfig", "[cli][simulate]") {
   // Figures (the script is run with /usr/bin/python3; skipped without matplotlib).
   if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0) {
     const std::string prefix = (dir / "fig").string();
-    const Run p = cpkit("simulate --config '" + cfg + "' --cycles 2 --csv '" + csv +
+    const Run p = run_cli("simulate --config '" + cfg + "' --cycles 2 --csv '" + csv +
                         "' --summary '" + sum + "' --plot '" + prefix + "'");
     REQUIRE(p.code == 0);
     CHECK(p.err.empty());
@@ -159,12 +132,12 @@ TEST_CASE("CliSimulateFromTheExampleConfig", "[cli][simulate]") {
 }
 
 TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
-  const Run stop = cpkit("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
+  const Run stop = run_cli("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "
                          "--load ramp --F_N1 10 --steps 100");
   CHECK(stop.code == 1);
   CHECK(stop.out.find("no solution") != std::string::npos);
   CHECK(stop.out.find("t = 0.51") != std::string::npos);
-  const fs::path bad = scratch() / "bad.json";
+  const fs::path bad = scratch_dir() / "bad.json";
   std::ofstream(bad) << R"({"parameters": {"a11": 1, "a12": 0, "a22": 1, "mu": 0.5, "typo": 1}})";
   for (const std::string& args :
        {"simulate --config '" + bad.string() + "'", std::string("simulate --a11 1 --a12 0 --a22 1"),
@@ -172,7 +145,7 @@ TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 0"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --cycles 2.5"),
         std::string("simulate --a11 1 --a12 0 --a22 1 --mu 0.5 --heat --T-ref -3")}) {
-    const Run r = cpkit(args);
+    const Run r = run_cli(args);
     CAPTURE(args, r.err);
     CHECK(r.code == 2);
     CHECK(r.out.empty());

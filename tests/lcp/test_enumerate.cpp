@@ -216,6 +216,79 @@ TEST_CASE("enumerate_all: bimatrix games", "[enumerate][games]") {
   }
 }
 
+TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", "[enumerate][games]") {
+  // Random games (integer payoffs 1..100 and real payoffs, square and rectangular): the
+  // structured path (vertex enumeration of the two polytopes) must return exactly the
+  // solutions of the general depth-first engine (use_structure = false).
+  std::mt19937 rng(11);
+  auto lcp_of = [](const cpkit::Mat& A, const cpkit::Mat& B) {
+    const int m = int(A.rows()), k = int(A.cols());
+    cpkit::Mat M = cpkit::Mat::Zero(m + k, m + k);
+    M.topRightCorner(m, k) = -A;
+    M.bottomLeftCorner(k, m) = -B.transpose();
+    return cpkit::LcpProblem(M, cpkit::Vec::Ones(m + k));
+  };
+  auto compare = [](const cpkit::LcpProblem& p, bool expect_structured) {
+    EnumerationOptions gen;
+    gen.use_structure = false;
+    const SolutionSet a = enumerate_all(p);
+    const SolutionSet b = enumerate_all(p, gen);
+    REQUIRE(a.complete);
+    REQUIRE(b.complete);
+    CHECK_FALSE(b.structured);
+    if (expect_structured) CHECK(a.structured);
+    REQUIRE(a.solutions.size() == b.solutions.size());
+    CHECK(a.infinite == b.infinite);
+    CHECK(a.ambiguous == b.ambiguous);
+    for (const auto& e : a.solutions) {
+      int hits = 0;
+      for (const auto& f : b.solutions)
+        if ((e.z - f.z).cwiseAbs().maxCoeff() <= 1e-9 * (1 + e.z.cwiseAbs().maxCoeff())) {
+          ++hits;
+          CHECK((e.w - f.w).cwiseAbs().maxCoeff() <= 1e-9 * (1 + e.w.cwiseAbs().maxCoeff()));
+          CHECK(e.basis == f.basis);
+        }
+      CHECK(hits == 1);
+      CHECK((p.dense_M() * e.z + p.q - e.w).cwiseAbs().maxCoeff() < 1e-10);
+      CHECK(e.z.minCoeff() >= 0);
+      CHECK(e.w.minCoeff() >= 0);
+      CHECK(std::abs(e.z.dot(e.w)) == 0.0);  // zero entries are set exactly
+    }
+  };
+  const int shapes[][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 5}, {6, 4}, {6, 6}};
+  for (const auto& sh : shapes)
+    for (int rep = 0; rep < 8; ++rep) {
+      cpkit::Mat A(sh[0], sh[1]), B(sh[0], sh[1]);
+      if (rep % 2 == 0) {
+        std::uniform_int_distribution<int> u(1, 100);
+        for (int i = 0; i < sh[0]; ++i)
+          for (int j = 0; j < sh[1]; ++j) { A(i, j) = u(rng); B(i, j) = u(rng); }
+      } else {
+        std::uniform_real_distribution<double> u(0.5, 2.0);
+        for (int i = 0; i < sh[0]; ++i)
+          for (int j = 0; j < sh[1]; ++j) { A(i, j) = u(rng); B(i, j) = u(rng); }
+      }
+      compare(lcp_of(A, B), rep % 2 == 1);  // real payoffs: nondegenerate with probability 1
+    }
+  SECTION("degenerate game falls back to the general engine") {
+    // row 0 of A is constant: its best responses tie, the polytope Q is degenerate
+    cpkit::Mat A(3, 3), B(3, 3);
+    A << 2, 2, 2, 3, 1, 2, 1, 3, 2;
+    B << 3, 1, 2, 1, 3, 2, 2, 2, 3;
+    const SolutionSet s = enumerate_all(lcp_of(A, B));
+    CHECK_FALSE(s.structured);
+    compare(lcp_of(A, B), false);
+  }
+  SECTION("coordination game 4x4: 15 equilibria + z = 0") {
+    cpkit::Mat A = cpkit::Mat::Constant(4, 4, 1.0);
+    A.diagonal() += Eigen::Vector4d(4, 3, 2, 1);
+    // (degenerate: ties between best responses; whichever path answers must agree)
+    const SolutionSet s = enumerate_all(lcp_of(A, A));
+    CHECK(s.solutions.size() == 16);
+    compare(lcp_of(A, A), false);
+  }
+}
+
 TEST_CASE("enumerate_all: misuse and the size limit throw", "[enumerate]") {
   cpkit::Mat M = cpkit::Mat::Identity(3, 3);
   cpkit::Vec q = cpkit::Vec::Ones(3);

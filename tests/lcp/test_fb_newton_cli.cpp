@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "cli_runner.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -22,31 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int code = -1;
-  std::string out;
-};
-
-// Runs `cpkit ARGS`, stdout captured in a scratch file, stderr discarded.
-Run run_cpkit(const std::string& args) {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_fb_cli_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
-  const auto out = dir / "stdout.txt";
-  const std::string cmd = std::string("'") + CPKIT_BINARY_DIR + "/apps/cpkit' " + args + " > '" +
-                          out.string() + "' 2> /dev/null";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(out);
-  std::ostringstream s;
-  s << in.rdbuf();
-  r.out = s.str();
-  return r;
-}
+using Run = cpkit::test::CliRun;
+using cpkit::test::run_cpkit;
 
 // ||min(z, Mz + q)||_inf / (1 + ||q||_inf) from the file's data.
 double scaled_natural(const cpkit::LcpProblem& p, const cpkit::Vec& z) {

@@ -39,6 +39,11 @@ struct EnumerationOptions {
   /// Largest null-space dimension of a singular piece that is enumerated; a larger one leaves
   /// complete = false (its vertices need C(n, m) subsystems).
   int max_piece_dim = 3;
+  /// Use the structured path for block-bipartite LCPs (bimatrix games: M = [[0, M12], [M21, 0]],
+  /// q > 0, M12 < 0, M21 < 0 entrywise): vertex enumeration of the two players' polytopes and
+  /// matching of complementary labels. It is taken only when both polytopes are nondegenerate
+  /// (otherwise the general engine runs); false forces the general engine (cross-checks).
+  bool use_structure = true;
   /// Empty when usable; otherwise names the bad field.
   std::string validate() const;
 };
@@ -70,7 +75,9 @@ struct SolutionSet {
   bool complete = false;   ///< every complementary basis was accounted for
   bool infinite = false;   ///< some piece has positive dimension
   int ambiguous = 0;       ///< sign or rank tests too close to call (docs/enumeration.md)
-  long long nodes = 0;     ///< search-tree nodes visited (0 on the small path)
+  long long nodes = 0;     ///< search-tree nodes visited (0 on the small path; polytope
+                           ///< vertices visited on the block-bipartite path)
+  bool structured = false; ///< answered by the block-bipartite (bimatrix-game) path
   long long leaves = 0;    ///< complementary bases reached (not pruned)
   double seconds = 0;
   std::string message;     ///< why complete is false, if it is
