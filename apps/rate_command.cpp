@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate_lcp.hpp"
 #include "cpkit/rate_problem/rate_problem.hpp"
@@ -26,12 +27,11 @@ namespace {
 
 struct RateArgs {
   std::string state;
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0;
-  double C_T = 0, k_a = 0, P_s = 1, P_N = 0;
+  ModelArgs model;
+  double P_N = 0;
   int sgn_PT = 1;
   std::vector<double> dF;
   std::string method = "enumerate";
-  std::string criterion = "38";
   bool json = false;
 };
 
@@ -122,18 +122,7 @@ void print_text(const rate::RateSolutionSet& s, const RateArgs& a) {
 }
 
 int run_rate(const RateArgs& a) {
-  rate::ContactParameters p;
-  p.a11 = a.a11;
-  p.a12 = a.a12;
-  p.a22 = a.a22;
-  p.mu = a.mu;
-  p.C_T = a.C_T;
-  p.k_a = a.k_a;
-  p.P_s = a.P_s;
-  const auto crit = rate::criterion_from_string(a.criterion);
-  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + a.criterion + "'");
-  p.criterion = *crit;
-  throw_if_invalid(p.validate(), "contact parameters");
+  const rate::ContactParameters p = model_parameters(a.model);
   rate::ContactState st;
   const auto label = rate::state_from_string(a.state);
   if (!label) throw InputError("--state must be a, b, c or d, got '" + a.state + "'");
@@ -191,21 +180,13 @@ void add_rate_command(CLI::App& app, Context& ctx) {
       "rate", "Rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]");
   cmd->add_option("--state", args->state, "contact state: a (open), b (grazing), c (stick), "
                                           "d (sliding)")->required();
-  cmd->add_option("--a11", args->a11, "stiffness A11")->required();
-  cmd->add_option("--a12", args->a12, "stiffness A12")->required();
-  cmd->add_option("--a22", args->a22, "stiffness A22")->required();
-  cmd->add_option("--mu", args->mu, "friction coefficient (> 0)")->required();
-  cmd->add_option("--C_T", args->C_T, "tangential compliance (>= 0; default 0)");
-  cmd->add_option("--k_a", args->k_a, "Archard wear coefficient (>= 0; default 0)");
-  cmd->add_option("--P_s", args->P_s, "hardness (> 0; default 1)");
+  add_model_options(*cmd, args->model);
   cmd->add_option("--P_N", args->P_N, "normal force in states c/d (> 0)");
   cmd->add_option("--sgnPT", args->sgn_PT, "sign of P_T in state d (+1 or -1; default +1)");
   cmd->add_option("--dF", args->dF, "load rate: DFT DFN")->expected(2)->required();
   cmd->add_option("--method", args->method,
                   "enumerate (default, cross-checked against analytic), analytic, lemke, "
                   "fb-newton, ipopt");
-  cmd->add_option("--criterion", args->criterion,
-                  "friction-and-wear criterion: 38 (Coulomb, default) or 35 (softening)");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args, &ctx]() { ctx.exit_code = run_rate(*args); });
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/incremental_step.hpp"
 #include "cpkit/rate_problem/step_enumeration.hpp"
@@ -25,9 +26,8 @@ namespace cpkit::cli {
 namespace {
 
 struct StepArgs {
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0;
-  double C_T = 0, k_a = 0, P_s = 1, k_M = 0;
-  std::string criterion = "38";
+  ModelArgs model;
+  double k_M = 0;
   std::string wear_law = "archard";
   double P_T0 = 0, P_N0 = 0, g0 = 0;
   std::vector<double> DF;
@@ -61,16 +61,7 @@ std::string values_text(const rate::StepValues& v) {
 
 rate::StepProblem make_problem(const StepArgs& a) {
   rate::StepProblem p;
-  p.params.a11 = a.a11;
-  p.params.a12 = a.a12;
-  p.params.a22 = a.a22;
-  p.params.mu = a.mu;
-  p.params.C_T = a.C_T;
-  p.params.k_a = a.k_a;
-  p.params.P_s = a.P_s;
-  const auto crit = rate::criterion_from_string(a.criterion);
-  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + a.criterion + "'");
-  p.params.criterion = *crit;
+  p.params = model_parameters(a.model);
   const auto law = rate::wear_law_from_string(a.wear_law);
   if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
   p.wear.law = *law;
@@ -186,15 +177,7 @@ void add_step_command(CLI::App& app, Context& ctx) {
   auto* cmd = app.add_subcommand(
       "step", "One implicit time step of the one-point contact problem with friction and wear "
               "(the incremental problem, docs/simulation.md)");
-  cmd->add_option("--a11", args->a11, "stiffness A11")->required();
-  cmd->add_option("--a12", args->a12, "stiffness A12")->required();
-  cmd->add_option("--a22", args->a22, "stiffness A22")->required();
-  cmd->add_option("--mu", args->mu, "friction coefficient (> 0)")->required();
-  cmd->add_option("--C_T", args->C_T, "tangential compliance (>= 0; default 0)");
-  cmd->add_option("--k_a", args->k_a, "Archard wear coefficient (>= 0; default 0)");
-  cmd->add_option("--P_s", args->P_s, "hardness (> 0; default 1)");
-  cmd->add_option("--criterion", args->criterion,
-                  "friction-and-wear criterion: 38 (Coulomb, default) or 35 (softening)");
+  add_model_options(*cmd, args->model);
   cmd->add_option("--wear-law", args->wear_law,
                   "archard (37, default) or mroz (Mroz-Stupkiewicz (41), with --k_M)");
   cmd->add_option("--k_M", args->k_M, "Mroz-Stupkiewicz wear constant (>= 0)");

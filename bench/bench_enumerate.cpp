@@ -233,14 +233,14 @@ int lrsnash_count(const std::vector<std::vector<int>>& A, const std::vector<std:
 
 void bench_games(bool quick) {
   std::printf("## (3) Random bimatrix games (payoffs uniform in 1..100): equilibria vs lrsnash\n\n");
-  std::printf("| game | LCP n | games | equilibria (total) | lrsnash (total) | counts agree | cpkit ms (median) | lrsnash ms (median, incl. process start) | ratio lrsnash/cpkit |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| game | LCP n | games | equilibria (total) | lrsnash (total) | counts agree | structured path (games) | cpkit ms (median) | general engine ms (median) | lrsnash ms (median, incl. process start) | ratio lrsnash/cpkit |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> pay(1, 100);
   for (int m : {6, 8, 10}) {
     const int games = quick ? 2 : (m == 10 ? 5 : 10);
-    std::vector<double> tc, tl;
-    long eq = 0, leq = 0;
+    std::vector<double> tc, tl, tg;
+    long eq = 0, leq = 0, nstruct = 0;
     bool agree = true, have_lrs = true;
     for (int g = 0; g < games; ++g) {
       std::vector<std::vector<int>> A(m, std::vector<int>(m)), B = A;
@@ -261,6 +261,15 @@ void bench_games(bool quick) {
         best = std::min(best, cpu_now() - t0);
       }
       tc.push_back(best * 1e3);
+      nstruct += s.structured;
+      {
+        cpkit::lcp::EnumerationOptions gen;
+        gen.use_structure = false;
+        const double t0 = cpu_now();
+        const cpkit::lcp::SolutionSet gs = cpkit::lcp::enumerate_all(p, gen);
+        tg.push_back((cpu_now() - t0) * 1e3);
+        if (gs.count() != s.count()) agree = false;
+      }
       const int mine = s.count() - 1;  // z = 0 is not an equilibrium
       eq += mine;
       double sec = 0;
@@ -274,9 +283,9 @@ void bench_games(bool quick) {
       agree = agree && theirs == mine;
     }
     const double mc = median(tc), ml = median(tl);
-    std::printf("| %dx%d | %d | %d | %ld | %s | %s | %.2f | %s | %s |\n", m, m, 2 * m, games, eq,
-                have_lrs ? std::to_string(leq).c_str() : "-",
-                have_lrs ? (agree ? "yes" : "NO") : "-", mc,
+    std::printf("| %dx%d | %d | %d | %ld | %s | %s | %ld | %.2f | %.2f | %s | %s |\n", m, m, 2 * m,
+                games, eq, have_lrs ? std::to_string(leq).c_str() : "-",
+                have_lrs ? (agree ? "yes" : "NO") : "-", nstruct, mc, median(tg),
                 have_lrs ? std::to_string(ml).c_str() : "-",
                 have_lrs ? std::to_string(ml / mc).c_str() : "-");
     std::fflush(stdout);

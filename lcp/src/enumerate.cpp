@@ -1,6 +1,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -671,81 +672,135 @@ class Engine {
 // otherwise it reports failure and the general engine runs. Every equilibrium is re-solved
 // from the original data and checked with the same tests as the general engine.
 
-/// Vertices of {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded) as label masks (bit of the
-/// LCP index of each tight inequality). Returns false when degenerate or over the cap.
+/// Vertices of the polytope {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded), each as the
+/// mask of its labels (LCP index of every tight inequality: var_label[c] for v_c = 0,
+/// row_label[r] for row r). Traverses the vertex graph by simplex pivots on a dictionary with
+/// the lexicographic ratio test (b perturbed by (e, e^2, ...) [Dantzig-Orden-Wolfe 1955]), so
+/// that degenerate vertices are handled: every lexicographically feasible basis is visited once
+/// and each geometric vertex is reported once with all its tight inequalities. Returns false
+/// (caller falls back to the general engine) on an unbounded edge, a tie or a value in the gray
+/// band of the zero test, or more than `cap` bases.
 bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
-                       const std::vector<int>& row_label, std::vector<Mask>& masks, double tol) {
+                       const std::vector<int>& row_label, std::vector<Mask>& masks) {
   const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
+  const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
   struct State {
-    std::vector<double> T, beta;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
-    std::vector<int> bl, nl;      // labels of basic / nonbasic variables
+    std::vector<double> T;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
+    std::vector<double> R;  // R[r w + 0] = beta_r, R[r w + 1 + k] = P_rk (lexicographic part)
+    std::vector<int> bl, nl;  // labels of the basic / nonbasic variables
   };
-  const double dscale = std::max(b.cwiseAbs().maxCoeff(), D.cwiseAbs().maxCoeff());
-  const double eps = std::max(1e3 * tol, 1e-10);  // degeneracy threshold (relative)
+  constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
   State s0;
   s0.T.resize(size_t(m) * d);
-  for (int r = 0; r < m; ++r)
+  s0.R.assign(size_t(m) * w, 0.0);
+  for (int r = 0; r < m; ++r) {
     for (int c = 0; c < d; ++c) s0.T[size_t(r) * d + c] = D(r, c);
-  s0.beta.assign(b.data(), b.data() + m);
+    s0.R[size_t(r) * w] = b(r);
+    s0.R[size_t(r) * w + 1 + r] = 1.0;
+  }
   s0.bl = row_label;
   s0.nl = var_label;
-  Mask m0 = 0;
-  for (int c = 0; c < d; ++c) m0 |= Mask(1) << var_label[c];
-  std::unordered_set<Mask> seen{m0};
-  masks.assign(1, m0);
-  std::vector<State> stack{s0};
-  const size_t cap = 2000000;
+  std::unordered_set<Mask> seen_basis, seen_vertex;
+  {
+    Mask m0 = 0;
+    for (int c = 0; c < d; ++c) m0 |= Mask(1) << var_label[c];
+    seen_basis.insert(m0);
+  }
+  masks.clear();
+  std::vector<State> stack;
+  stack.push_back(std::move(s0));
+  const size_t cap = 1000000;
+  // a < b, a == b, a > b (-1, 0, 1) for two numbers at relative tolerance kTie
+  auto cmp = [](double a, double bb) {
+    const double s = std::max(std::abs(a), std::abs(bb));
+    if (std::abs(a - bb) <= kTie * s) return 0;
+    return a < bb ? -1 : 1;
+  };
   while (!stack.empty()) {
     State s = std::move(stack.back());
     stack.pop_back();
-    // basic values at this vertex: all must be clearly positive (nondegenerate)
     double bmax = 0;
-    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.beta[r]));
-    for (int r = 0; r < m; ++r)
-      if (!(s.beta[r] > eps * std::max(bmax, dscale))) return false;
-    Mask cob = 0;
+    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
+    Mask cob = 0, lab = 0;
     for (int c = 0; c < d; ++c) cob |= Mask(1) << s.nl[c];
+    lab = cob;
+    for (int r = 0; r < m; ++r) {
+      const double* row = &s.R[size_t(r) * w];
+      const double v = row[0];
+      if (std::abs(v) <= kZero * bmax) {
+        lab |= Mask(1) << s.bl[r];  // degenerate: a basic variable at zero
+        int k = 1;
+        while (k < w && row[k] == 0) ++k;
+        if (k == w || row[k] < 0) return false;  // not lexicographically feasible
+      } else if (v < 0 || v <= kGrayHi * bmax) {
+        return false;  // infeasible or too close to call
+      }
+    }
+    if (seen_vertex.insert(lab).second) masks.push_back(lab);
     for (int c = 0; c < d; ++c) {
-      int best = -1;
-      double tb = 0, tmax = 0;
+      double tmax = 0;
       for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
+      int best = -1;
       for (int r = 0; r < m; ++r) {
         const double a = s.T[size_t(r) * d + c];
-        if (!(a < -eps * tmax)) continue;
-        const double t = s.beta[r] / -a;
-        if (best < 0 || t < tb) {
-          if (best >= 0 && tb - t <= eps * tb) return false;  // tie: degenerate neighbour
-          best = r;
-          tb = t;
-        } else if (t - tb <= eps * tb) {
-          return false;
+        if (!(a < -kTie * tmax)) {
+          if (a < -kZero * tmax) return false;  // pivot too small to call
+          continue;
         }
+        if (best < 0) { best = r; continue; }
+        const double ab = s.T[size_t(best) * d + c];
+        int o = 0;
+        for (int k = 0; k < w && o == 0; ++k)
+          o = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab);
+        if (o == 0) return false;  // cannot happen for independent perturbations
+        if (o < 0) best = r;
       }
       if (best < 0) return false;  // unbounded edge: not a polytope
-      const Mask nm = (cob & ~(Mask(1) << s.nl[c])) | (Mask(1) << s.bl[best]);
-      if (!seen.insert(nm).second) continue;
-      if (seen.size() > cap) return false;
-      masks.push_back(nm);
+      const Mask nb = (cob & ~(Mask(1) << s.nl[c])) | (Mask(1) << s.bl[best]);
+      if (!seen_basis.insert(nb).second) continue;
+      if (seen_basis.size() > cap) return false;
       // pivot: nonbasic c enters, basic `best` leaves
       State t = s;
       const int r0 = best;
       const double p = s.T[size_t(r0) * d + c];
-      double* rowp = &t.T[size_t(r0) * d];
-      t.beta[r0] = -s.beta[r0] / p;
-      for (int cc = 0; cc < d; ++cc) rowp[cc] = cc == c ? 1.0 / p : -s.T[size_t(r0) * d + cc] / p;
+      double* tp = &t.T[size_t(r0) * d];
+      double* rp = &t.R[size_t(r0) * w];
+      for (int cc = 0; cc < d; ++cc) tp[cc] = cc == c ? 1.0 / p : -tp[cc] / p;
+      for (int k = 0; k < w; ++k) rp[k] = -rp[k] / p;
       for (int r = 0; r < m; ++r) {
         if (r == r0) continue;
-        const double f = s.T[size_t(r) * d + c];
-        double* row = &t.T[size_t(r) * d];
-        t.beta[r] = s.beta[r] + f * t.beta[r0];
+        double* tr = &t.T[size_t(r) * d];
+        const double f = tr[c];
         if (f == 0) continue;
-        for (int cc = 0; cc < d; ++cc)
-          row[cc] = cc == c ? f * rowp[cc] : s.T[size_t(r) * d + cc] + f * rowp[cc];
+        double* rr = &t.R[size_t(r) * w];
+        for (int cc = 0; cc < d; ++cc) tr[cc] = cc == c ? f * tp[cc] : tr[cc] + f * tp[cc];
+        for (int k = 0; k < w; ++k) rr[k] += f * rp[k];
       }
       std::swap(t.bl[r0], t.nl[c]);
       stack.push_back(std::move(t));
     }
   }
+  return true;
+}
+
+/// Solves the (possibly overdetermined, consistent) system M[rows, cols] x = -q[rows] into
+/// z[cols]; false when the columns are rank deficient.
+bool solve_face(const Mat& M, const Vec& q, const std::vector<int>& rows,
+                const std::vector<int>& cols, Vec& z) {
+  const int a = static_cast<int>(rows.size()), c = static_cast<int>(cols.size());
+  if (c == 0) return true;
+  if (a < c) return false;
+  Mat B(a, c);
+  Vec rhs(a);
+  for (int i = 0; i < a; ++i) {
+    rhs(i) = -q(rows[i]);
+    for (int j = 0; j < c; ++j) B(i, j) = M(rows[i], cols[j]);
+  }
+  Eigen::ColPivHouseholderQR<Mat> qr(B);
+  qr.setThreshold(1e-10);
+  if (qr.rank() < c) return false;
+  const Vec x = qr.solve(rhs);
+  for (int j = 0; j < c; ++j) z(cols[j]) = x(j);
   return true;
 }
 
@@ -770,48 +825,49 @@ bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
   for (int i = 0; i < k; ++i) xl[i] = i;
   for (int j = 0; j < l; ++j) yl[j] = k + j;
   std::vector<Mask> pm, qm;
-  if (!polytope_vertices(M21, q.tail(l), xl, yl, pm, tol)) return false;
-  if (!polytope_vertices(M12, q.head(k), yl, xl, qm, tol)) return false;
-  const Mask all = (Mask(1) << n) - 1;
-  std::unordered_set<Mask> qset(qm.begin(), qm.end());
-  std::vector<ExtremeSolution> sols;
+  if (!polytope_vertices(M21, q.tail(l), xl, yl, pm)) return false;
+  if (!polytope_vertices(M12, q.head(k), yl, xl, qm)) return false;
+  const Mask all = (Mask(1) << n) - 1, xs = (Mask(1) << k) - 1;
+  // completely labelled pairs; a vertex in two pairs may lie on a continuum (maximal Nash
+  // subsets are products of faces): then the general engine (which lists pieces) answers
+  std::vector<int> qcount(qm.size(), 0);
+  std::vector<std::pair<Mask, Mask>> pairs;
   for (Mask lp : pm) {
-    const Mask lq = all & ~lp;
-    if (!qset.count(lq)) continue;
-    // support S = indices whose z is basic: x_i > 0 (i < k, not a P label), y_j > 0 (not a
-    // Q label, i.e. a P label among k..n-1)
-    const Mask S = (~lp & ((Mask(1) << k) - 1)) | (lp & ~((Mask(1) << k) - 1));
-    std::vector<int> idx = indices_of(S, n);
-    const int s = static_cast<int>(idx.size());
-    Vec z = Vec::Zero(n);
-    if (s > 0) {
-      Mat B(s, s);
-      Vec rhs(s);
-      for (int a = 0; a < s; ++a) {
-        rhs(a) = -q(idx[a]);
-        for (int c = 0; c < s; ++c) B(a, c) = M(idx[a], idx[c]);
+    int c = 0;
+    for (size_t b = 0; b < qm.size(); ++b)
+      if ((lp | qm[b]) == all) {
+        if (++c > 1 || ++qcount[b] > 1) return false;
+        pairs.emplace_back(lp, qm[b]);
       }
-      Eigen::FullPivLU<Mat> lu(B);
-      lu.setThreshold(std::max(1e3 * tol, 1e-10));
-      if (lu.rank() < s) return false;
-      const Vec x = lu.solve(rhs);
-      for (int a = 0; a < s; ++a) z(idx[a]) = x(a);
-    }
+  }
+  std::vector<ExtremeSolution> sols;
+  for (const auto& [lp, lq] : pairs) {
+    // x_i > 0 off lp (i < k), rows w_j = 0 (j >= k) in lp; y_j > 0 off lq, rows w_i = 0 in lq
+    const Mask S = (~lp & xs) | (~lq & all & ~xs);
+    const Mask zero_w = (lp & ~xs) | (lq & xs);
+    Vec z = Vec::Zero(n);
+    if (!solve_face(M, q, indices_of(zero_w & ~xs, n), indices_of(S & xs, n), z)) return false;
+    if (!solve_face(M, q, indices_of(zero_w & xs, n), indices_of(S & ~xs, n), z)) return false;
     const double zs = z.cwiseAbs().maxCoeff();
-    Vec w = M * z + q;
+    Vec wv = M * z + q;
     for (int i = 0; i < n; ++i) {
       const double sc = std::abs(q(i)) + (M.row(i).cwiseAbs() * z.cwiseAbs())(0);
       if ((S >> i) & 1u) {
-        if (!(z(i) > kGray * tol * zs)) return false;            // not clearly positive
-        if (std::abs(w(i)) > kGray * tol * sc) return false;     // inaccurate solve
-        w(i) = 0;
-      } else {
-        if (!(w(i) > kGray * tol * sc)) return false;            // not clearly positive
+        if (!(z(i) > tol * zs)) return false;  // a support entry at zero: let the engine judge
       }
+      if ((zero_w >> i) & 1u) {
+        if (std::abs(wv(i)) > kGray * tol * sc) return false;  // inaccurate solve
+        wv(i) = 0;
+      } else if (std::abs(wv(i)) <= tol * sc) {
+        wv(i) = 0;
+      } else if (wv(i) < 0) {
+        return false;
+      }
+      if (z(i) != 0 && wv(i) != 0) return false;  // not complementary
     }
     ExtremeSolution e;
     e.z = z;
-    e.w = w;
+    e.w = wv;
     e.basis = basis_of(S, n);
     sols.push_back(std::move(e));
   }
