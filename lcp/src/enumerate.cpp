@@ -710,10 +710,10 @@ bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_l
   std::vector<State> stack;
   stack.push_back(std::move(s0));
   const size_t cap = 1000000;
-  // a < b, a == b, a > b (-1, 0, 1) for two numbers at relative tolerance kTie
-  auto cmp = [](double a, double bb) {
-    const double s = std::max(std::abs(a), std::abs(bb));
-    if (std::abs(a - bb) <= kTie * s) return 0;
+  std::vector<double> cm(w);
+  // a < b, a == b, a > b (-1, 0, 1) for two numbers at absolute tolerance kTie * sc
+  auto cmp = [](double a, double bb, double sc) {
+    if (std::abs(a - bb) <= kTie * sc) return 0;
     return a < bb ? -1 : 1;
   };
   while (!stack.empty()) {
@@ -724,13 +724,17 @@ bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_l
     Mask cob = 0, lab = 0;
     for (int c = 0; c < d; ++c) cob |= Mask(1) << s.nl[c];
     lab = cob;
+    // column scales of the right-hand side: round-off of a column is relative to them
+    std::fill(cm.begin(), cm.end(), 0.0);
+    for (int r = 0; r < m; ++r)
+      for (int k = 0; k < w; ++k) cm[k] = std::max(cm[k], std::abs(s.R[size_t(r) * w + k]));
     for (int r = 0; r < m; ++r) {
       const double* row = &s.R[size_t(r) * w];
       const double v = row[0];
       if (std::abs(v) <= kZero * bmax) {
         lab |= Mask(1) << s.bl[r];  // degenerate: a basic variable at zero
         int k = 1;
-        while (k < w && row[k] == 0) ++k;
+        while (k < w && std::abs(row[k]) <= kTie * cm[k]) ++k;
         if (k == w || row[k] < 0) return false;  // not lexicographically feasible
       } else if (v < 0 || v <= kGrayHi * bmax) {
         return false;  // infeasible or too close to call
@@ -750,8 +754,9 @@ bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_l
         if (best < 0) { best = r; continue; }
         const double ab = s.T[size_t(best) * d + c];
         int o = 0;
+        const double amin = std::min(-a, -ab);
         for (int k = 0; k < w && o == 0; ++k)
-          o = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab);
+          o = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab, cm[k] / amin);
         if (o == 0) return false;  // cannot happen for independent perturbations
         if (o < 0) best = r;
       }

@@ -216,6 +216,10 @@ TEST_CASE("enumerate_all: bimatrix games", "[enumerate][games]") {
   }
 }
 
+#ifndef CPKIT_GAME_REPS
+#define CPKIT_GAME_REPS 9
+#endif
+
 TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", "[enumerate][games]") {
   // Random games (integer payoffs 1..100 and real payoffs, square and rectangular): the
   // structured path (vertex enumeration of the two polytopes) must return exactly the
@@ -228,14 +232,17 @@ TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", 
     M.bottomLeftCorner(k, m) = -B.transpose();
     return cpkit::LcpProblem(M, cpkit::Vec::Ones(m + k));
   };
-  auto compare = [](const cpkit::LcpProblem& p, bool expect_structured) {
+  int structured = 0, total = 0;
+  auto compare = [&](const cpkit::LcpProblem& p, bool expect_structured) {
     EnumerationOptions gen;
     gen.use_structure = false;
     const SolutionSet a = enumerate_all(p);
     const SolutionSet b = enumerate_all(p, gen);
-    REQUIRE(a.complete);
-    REQUIRE(b.complete);
     CHECK_FALSE(b.structured);
+    if (!b.complete) return;  // a continuum beyond max_piece_dim: nothing to compare against
+    REQUIRE(a.complete);
+    structured += a.structured;
+    ++total;
     if (expect_structured) CHECK(a.structured);
     REQUIRE(a.solutions.size() == b.solutions.size());
     CHECK(a.infinite == b.infinite);
@@ -255,12 +262,14 @@ TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", 
       CHECK(std::abs(e.z.dot(e.w)) == 0.0);  // zero entries are set exactly
     }
   };
-  const int shapes[][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 5}, {6, 4}, {6, 6}};
+  // integer payoffs in 1..100 and 1..6 give degenerate polytopes (ties of best responses,
+  // handled by the lexicographic ratio test) and sometimes continua (general engine)
+  const int shapes[][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 5}, {6, 4}, {6, 6}, {7, 7}, {8, 8}};
   for (const auto& sh : shapes)
-    for (int rep = 0; rep < 8; ++rep) {
+    for (int rep = 0; rep < CPKIT_GAME_REPS; ++rep) {
       cpkit::Mat A(sh[0], sh[1]), B(sh[0], sh[1]);
-      if (rep % 2 == 0) {
-        std::uniform_int_distribution<int> u(1, 100);
+      if (rep % 3 < 2) {
+        std::uniform_int_distribution<int> u(1, rep % 3 == 0 ? 100 : 6);
         for (int i = 0; i < sh[0]; ++i)
           for (int j = 0; j < sh[1]; ++j) { A(i, j) = u(rng); B(i, j) = u(rng); }
       } else {
@@ -268,8 +277,10 @@ TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", 
         for (int i = 0; i < sh[0]; ++i)
           for (int j = 0; j < sh[1]; ++j) { A(i, j) = u(rng); B(i, j) = u(rng); }
       }
-      compare(lcp_of(A, B), rep % 2 == 1);  // real payoffs: nondegenerate with probability 1
+      compare(lcp_of(A, B), rep % 3 == 2);  // real payoffs: nondegenerate with probability 1
     }
+  WARN("structured path answered " << structured << " of " << total << " games");
+  CHECK(structured >= total / 2);
   SECTION("degenerate game falls back to the general engine") {
     // row 0 of A is constant: its best responses tie, the polytope Q is degenerate
     cpkit::Mat A(3, 3), B(3, 3);

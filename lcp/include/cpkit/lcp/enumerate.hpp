@@ -19,6 +19,10 @@
 /// every subtree in which some tableau row proves infeasibility (q'_r < 0 with no free column
 /// able to raise it). Candidates are re-solved from the original data before they are accepted.
 /// Pieces with a singular principal block are enumerated in the null space of the block.
+/// Block-bipartite LCPs (bimatrix games: zero diagonal blocks, q > 0, negative off-diagonal
+/// blocks) first try vertex enumeration of the two players' polytopes (lexicographic simplex
+/// pivots) and matching of complementary labels [von Stengel 2002, Handbook of Game Theory 3,
+/// Ch. 45]; the general engine runs whenever that path cannot decide (docs/enumeration.md).
 #include <string>
 #include <vector>
 

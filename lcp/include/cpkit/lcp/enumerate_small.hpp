@@ -192,6 +192,34 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
   return true;
 }
 
+/// Cramer's rule for the principal block M[S,S] z_S = -q_S (k = |S| <= 3) whose determinant
+/// det (nonzero, from small_det) is already known; writes z[idx[c]].
+template <typename Mat, typename Vq>
+inline void small_cramer(const Mat& M, const Vq& q, const int* idx, int k, double det,
+                         double* z) noexcept {
+  const double inv = 1.0 / det;
+  if (k == 1) {
+    z[idx[0]] = -q(idx[0]) * inv;
+  } else if (k == 2) {
+    const int i0 = idx[0], i1 = idx[1];
+    const double b0 = -q(i0), b1 = -q(i1);
+    z[i0] = (b0 * M(i1, i1) - M(i0, i1) * b1) * inv;
+    z[i1] = (M(i0, i0) * b1 - b0 * M(i1, i0)) * inv;
+  } else {
+    const int i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    const double a00 = M(i0, i0), a01 = M(i0, i1), a02 = M(i0, i2);
+    const double a10 = M(i1, i0), a11 = M(i1, i1), a12 = M(i1, i2);
+    const double a20 = M(i2, i0), a21 = M(i2, i1), a22 = M(i2, i2);
+    const double b0 = -q(i0), b1 = -q(i1), b2 = -q(i2);
+    z[i0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
+             a02 * (b1 * a21 - a11 * b2)) * inv;
+    z[i1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
+             a02 * (a10 * b2 - b1 * a20)) * inv;
+    z[i2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
+             b0 * (a10 * a21 - a11 * a20)) * inv;
+  }
+}
+
 /// Working state of one enumerate_small call (all on the stack).
 template <int N>
 struct SmallEnumerator {
@@ -202,9 +230,11 @@ struct SmallEnumerator {
   const Eigen::Matrix<double, N, 1>& q;
   SmallSolutionSet<N>& out;
   double tol;
-  unsigned zero_z[kMax] = {}, zero_w[kMax] = {};  // zero patterns of the stored vertices
-  double rays[kRayCap][N] = {};
-  unsigned ray_zero_d[kRayCap] = {}, ray_zero_md[kRayCap] = {};
+  // Written before they are read (entry p when vertex / ray p is stored): deliberately not
+  // zero-initialised, which would cost more than the whole enumeration of a 3x3 problem.
+  unsigned zero_z[kMax], zero_w[kMax];  // zero patterns of the stored vertices
+  double rays[kRayCap][N];
+  unsigned ray_zero_d[kRayCap], ray_zero_md[kRayCap];
   int num_rays = 0;
 
   SmallEnumerator(const Eigen::Matrix<double, N, N>& m, const Eigen::Matrix<double, N, 1>& qq,
@@ -488,10 +518,7 @@ struct SmallEnumerator {
             singular_piece(S, idx, k);
             continue;
           }
-          double x[4] = {};
-          bool gray = false;
-          small_square_solve(M, q, idx, idx, k, tol, x, gray);
-          for (int c = 0; c < k; ++c) z[idx[c]] = x[c];
+          small_cramer(M, q, idx, k, det, z);
         }
         add_point(S, z);
       } else {
