@@ -13,6 +13,7 @@
 // with --branch-rule stop; the reason on stdout/in the summary), 2 bad input.
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -258,9 +259,18 @@ rate::LoadHistory make_history(const Settings& s) {
   throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
 }
 
-void write_csv(const std::string& path, const rate::SimulationResult& r) {
+// Opens an output file, creating its folder first (configs name paths like out/fretting.csv).
+std::ofstream open_output(const std::string& path) {
+  const auto dir = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
   std::ofstream f(path);
   if (!f) throw InputError("cannot write '" + path + "'");
+  return f;
+}
+
+void write_csv(const std::string& path, const rate::SimulationResult& r) {
+  std::ofstream f = open_output(path);
   f.precision(12);
   f << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
        "dissipation_total,work_total,stored,temperature\n";
@@ -344,8 +354,7 @@ int run(const SimArgs& a) {
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
   if (!summary.empty()) {
-    std::ofstream f(summary);
-    if (!f) throw InputError("cannot write '" + summary + "'");
+    std::ofstream f = open_output(summary);
     f << sum.dump(1) << '\n';
   }
   if (a.json) {
