@@ -8,8 +8,8 @@
 ///   rounding = 2 n eps max_i ( |M| |z| + |q| )_i / scale        (bound on the error of
 ///              computing w = M z + q in double precision)
 /// finalize() accepts  natural <= tol + rounding. The allowance lets a genuine solution with a
-/// huge z verify, while a diverging iterate (|z| -> inf with min(z, w) = O(1)) is never accepted:
-/// its residual does not shrink with |z|.
+/// huge z verify, while a diverging iterate (min(z, w) = O(1) as |z| grows) is rejected until
+/// |M||z| reaches ~1 / (n eps) times that error, i.e. until z itself is meaningless in doubles.
 #include <Eigen/Core>
 
 #include "cpkit/core/problem.hpp"
