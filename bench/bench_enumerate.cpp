@@ -1,5 +1,6 @@
 // Benchmark of the LCP enumeration (enumerate_small, enumerate_all):
-//  (1) tiny problems: all solutions of 3x3 state-b rate LCPs (docs/model.md) per second;
+//  (1) tiny problems: all solutions of 3x3 state-b rate LCPs (docs/model.md) per second, per
+//      call of enumerate_small<3> and with one SmallPreparedLcp<3> per parameter set;
 //  (2) random LCPs n = 8, 12, 16, 20 (M, q uniform in [-1, 1]) against Siconos' lcp_enum
 //      restarted (iparam SEED = last CURRENT_ENUM + 1) until it has scanned every basis;
 //      counts compared, time ratio;
@@ -24,6 +25,7 @@
 
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
+#include "cpkit/lcp/enumerate_small_prepared.hpp"
 
 #ifdef CPKIT_HAVE_SICONOS
 #include "LCP_Solvers.h"
@@ -78,30 +80,59 @@ void bench_tiny(bool quick) {
   Eigen::Matrix3d Md;
   Md << 1 + b11 * CT, b12, -b12, bmu * bD0 - b12, bdet, -bdet, bmu * bD0 + b12, -bdet, bdet;
   std::printf("## (1) Tiny problems: all solutions of a 3x3 state-b rate LCP (enumerate_small<3>)\n\n");
-  std::printf("| family | problems | points (mean) | infinite (share) | ns per problem (best of 5) | problems per second |\n");
-  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("| family | path | problems | points (mean) | infinite (share) | ns per problem (best of 5) | problems per second |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
   cpkit::lcp::SmallSolutionSet<3> out;
   const int sweeps = quick ? 200 : 2000;
-  for (int fam = 0; fam < 2; ++fam) {
+  for (int run = 0; run < 4; ++run) {
+    // run 0, 1: enumerate_small per call; run 2, 3: the maps' use, one SmallPreparedLcp per
+    // parameter set (built inside the timed sweep, once per sweep of K load directions)
+    const int fam = run % 2;
+    const bool prepared = run >= 2;
     const Eigen::Matrix3d& MM = fam == 0 ? M : Md;
     double best = INFINITY, pts = 0, inf = 0;
     for (int rep = 0; rep < 5; ++rep) {
       long long acc = 0, ninf = 0;
       const double t0 = cpu_now();
-      for (int s = 0; s < sweeps; ++s)
+      for (int s = 0; s < sweeps; ++s) {
+        if (prepared) {
+          const cpkit::lcp::SmallPreparedLcp<3> prep(MM);
+          for (int k = 0; k < K; ++k) {
+            prep.enumerate(qs[k], out);
+            acc += out.num_points;
+            ninf += out.infinite;
+          }
+          continue;
+        }
         for (int k = 0; k < K; ++k) {
           cpkit::lcp::enumerate_small<3>(MM, qs[k], out);
           acc += out.num_points;
           ninf += out.infinite;
         }
+      }
       const double dt = cpu_now() - t0;
       best = std::min(best, dt / (double(sweeps) * K));
       pts = double(acc) / (double(sweeps) * K);
       inf = double(ninf) / (double(sweeps) * K);
     }
-    std::printf("| %s | %d directions | %.3f | %.3f | %.0f | %.2e |\n",
+    std::printf("| %s | %s | %d directions | %.3f | %.3f | %.0f | %.2e |\n",
                 fam == 0 ? "a11 > mu abs(a12) (A=[[2,.5],[.5,1]], mu=.3)" : "a11 = mu abs(a12) (A=[[1,2],[2,5]], mu=.5)",
+                prepared ? "SmallPreparedLcp<3> (one per parameter set)" : "enumerate_small<3> per call",
                 K, pts, inf, best * 1e9, 1.0 / best);
+  }
+  {  // the one-off cost of the preparation (M-only work), included in the rows above
+    double best = INFINITY, sink = 0;
+    const int builds = quick ? 20000 : 200000;
+    for (int rep = 0; rep < 5; ++rep) {
+      const double t0 = cpu_now();
+      for (int b = 0; b < builds; ++b) {
+        const cpkit::lcp::SmallPreparedLcp<3> prep(b % 2 ? M : Md);
+        sink += prep.matrix()(0, 0);
+      }
+      best = std::min(best, (cpu_now() - t0) / builds);
+    }
+    std::printf("\nConstruction of one SmallPreparedLcp<3> (either family): %.0f ns (best of 5; checksum %.0f).\n",
+                best * 1e9, sink);
   }
   std::printf("\n");
 }

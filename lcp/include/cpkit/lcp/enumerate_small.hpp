@@ -528,28 +528,13 @@ struct SmallEnumerator {
   }
 };
 
-}  // namespace detail
-
-/// Enumerates every extreme solution, every positive-dimensional piece (with its vertices and
-/// extreme rays) and whether the solution set is infinite. `tol` is relative to the data scale
-/// (see the file comment). Throws InputError on non-finite data or tol outside (0, 1e-3].
-/// Allocation-free; `out` is overwritten (its counts are reset).
+/// Final pass shared by enumerate_small and SmallPreparedLcp: applies the zero patterns to the
+/// stored vertices, sets their supports and collects the inclusion-maximal pieces of positive
+/// dimension with their vertices and rays.
 template <int N>
-void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<double, N, 1>& q,
-                     SmallSolutionSet<N>& out, double tol = 1e-12) {
+void small_finish(const SmallEnumerator<N>& en, SmallSolutionSet<N>& out) {
   constexpr int kMax = SmallSolutionSet<N>::kMax;
   constexpr unsigned kAll = (1u << N) - 1;
-  if (!M.allFinite() || !q.allFinite())
-    throw InputError("enumerate_small: M or q has a non-finite entry");
-  if (!(tol > 0 && tol <= 1e-3))
-    throw InputError("enumerate_small: tol must lie in (0, 1e-3], got " + std::to_string(tol));
-  out.num_points = 0;
-  out.num_pieces = 0;
-  out.infinite = false;
-  out.ambiguous = 0;
-  out.dropped = 0;
-  detail::SmallEnumerator<N> en(M, q, out, tol);
-  en.run();
   const unsigned* zero_z = en.zero_z;
   const unsigned* zero_w = en.zero_w;
   const unsigned* ray_zero_d = en.ray_zero_d;
@@ -606,6 +591,29 @@ void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<d
     }
   }
   out.infinite = out.num_pieces > 0;
+}
+
+}  // namespace detail
+
+/// Enumerates every extreme solution, every positive-dimensional piece (with its vertices and
+/// extreme rays) and whether the solution set is infinite. `tol` is relative to the data scale
+/// (see the file comment). Throws InputError on non-finite data or tol outside (0, 1e-3].
+/// Allocation-free; `out` is overwritten (its counts are reset).
+template <int N>
+void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<double, N, 1>& q,
+                     SmallSolutionSet<N>& out, double tol = 1e-12) {
+  if (!M.allFinite() || !q.allFinite())
+    throw InputError("enumerate_small: M or q has a non-finite entry");
+  if (!(tol > 0 && tol <= 1e-3))
+    throw InputError("enumerate_small: tol must lie in (0, 1e-3], got " + std::to_string(tol));
+  out.num_points = 0;
+  out.num_pieces = 0;
+  out.infinite = false;
+  out.ambiguous = 0;
+  out.dropped = 0;
+  detail::SmallEnumerator<N> en(M, q, out, tol);
+  en.run();
+  detail::small_finish<N>(en, out);
 }
 
 }  // namespace cpkit::lcp
