@@ -109,11 +109,23 @@ inline void small_det(const Mat& M, const int* r, const int* c, int k, double& d
   }
 }
 
+/// The row operations of one small_eliminate call, for replaying them on other right-hand
+/// sides (SmallPreparedLcp, enumerate_small_prepared.hpp).
+struct SmallElimRecord {
+  int rank = 0;
+  int perm[5] = {};     ///< column order
+  int swap[4] = {};     ///< row exchanged with row p at step p
+  double f[4][4] = {};  ///< f[p][r]: multiple of row p subtracted from row r > p
+  double a[4][5] = {};  ///< the eliminated block (column 4 unused)
+};
+
 /// Complete-pivoting elimination of the k x c block a (c <= k + 1 columns, column 4 is a
 /// right-hand side) in place. Returns the rank found (pivots > piv_tol); perm receives the
 /// column order; `gray` is set when an accepted pivot lies within kSmallGray of the threshold.
+/// With `rec`, the matrix part only is eliminated (column 4 is left alone) and the row
+/// operations are recorded in *rec (then perm must be rec->perm).
 inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], double piv_tol,
-                           bool& gray) noexcept {
+                           bool& gray, SmallElimRecord* rec = nullptr) noexcept {
   for (int j = 0; j < c; ++j) perm[j] = j;
   int rank = 0;
   for (int p = 0; p < k && p < c; ++p) {
@@ -126,17 +138,24 @@ inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], doub
       }
     if (!(best > piv_tol)) break;
     if (best <= kSmallGray * piv_tol) gray = true;
+    if (rec) rec->swap[p] = br;
     if (br != p)
       for (int cc = 0; cc < 5; ++cc) std::swap(a[p][cc], a[br][cc]);
     std::swap(perm[p], perm[bc]);
     const double piv = a[p][perm[p]];
     for (int r = p + 1; r < k; ++r) {
       const double f = a[r][perm[p]] / piv;
+      if (rec) rec->f[p][r] = f;
       if (f == 0) continue;
       for (int cc = p; cc < c; ++cc) a[r][perm[cc]] -= f * a[p][perm[cc]];
-      a[r][4] -= f * a[p][4];
+      if (!rec) a[r][4] -= f * a[p][4];
     }
     ++rank;
+  }
+  if (rec) {
+    rec->rank = rank;
+    for (int r = 0; r < 4; ++r)
+      for (int cc = 0; cc < 5; ++cc) rec->a[r][cc] = a[r][cc];
   }
   return rank;
 }

@@ -41,50 +41,11 @@ namespace cpkit::lcp {
 
 namespace detail {
 
-/// A complete-pivoting elimination of the matrix part of a block with its row operations
-/// recorded, so that they can be replayed on any right-hand side.
-struct SmallElimRecord {
-  int rank = 0;
-  int perm[5] = {};     ///< column order (as small_eliminate)
-  int swap[4] = {};     ///< row exchanged with row p at step p
-  double f[4][4] = {};  ///< f[p][r]: multiple of row p subtracted from row r > p
-  double a[4][5] = {};  ///< the eliminated block (column 4 unused)
-};
-
 /// small_eliminate (same arithmetic, same decisions) on the matrix part only, recording the row
-/// operations in rec.
+/// operations in rec (enumerate_small.hpp).
 inline int small_eliminate_recorded(double (&a)[4][5], int k, int c, SmallElimRecord& rec,
                                     double piv_tol, bool& gray) noexcept {
-  int(&perm)[5] = rec.perm;
-  for (int j = 0; j < c; ++j) perm[j] = j;
-  int rank = 0;
-  for (int p = 0; p < k && p < c; ++p) {
-    int br = p, bc = p;
-    double best = -1;
-    for (int r = p; r < k; ++r)
-      for (int cc = p; cc < c; ++cc) {
-        const double v = small_abs(a[r][perm[cc]]);
-        if (v > best) { best = v; br = r; bc = cc; }
-      }
-    if (!(best > piv_tol)) break;
-    if (best <= kSmallGray * piv_tol) gray = true;
-    rec.swap[p] = br;
-    if (br != p)
-      for (int cc = 0; cc < 5; ++cc) std::swap(a[p][cc], a[br][cc]);
-    std::swap(perm[p], perm[bc]);
-    const double piv = a[p][perm[p]];
-    for (int r = p + 1; r < k; ++r) {
-      const double f = a[r][perm[p]] / piv;
-      rec.f[p][r] = f;
-      if (f == 0) continue;
-      for (int cc = p; cc < c; ++cc) a[r][perm[cc]] -= f * a[p][perm[cc]];
-    }
-    ++rank;
-  }
-  rec.rank = rank;
-  for (int r = 0; r < 4; ++r)
-    for (int cc = 0; cc < 5; ++cc) rec.a[r][cc] = a[r][cc];
-  return rank;
+  return small_eliminate(a, k, c, rec.perm, piv_tol, gray, &rec);
 }
 
 /// Replays the recorded row operations on the right-hand side b (k rows).
