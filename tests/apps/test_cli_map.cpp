@@ -213,6 +213,8 @@ TEST_CASE("CliMapJsonReportsUnreliableCells", "[cli][map]") {
     REQUIRE(r.code == 0);
     const auto j = nlohmann::json::parse(r.out);
     REQUIRE(j.contains("unreliable"));
-    CHECK(j["unreliable"].get<int64_t>() >= 0);
+    // These presets sit well away from ties (every cell also agrees with the analytic route,
+    // test_map_direction / test_map_grid): no sign test may be reported too close to call.
+    CHECK(j["unreliable"].get<int64_t>() == 0);
   }
 }

@@ -160,6 +160,18 @@ inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], doub
   return rank;
 }
 
+/// Null vector x (m entries, x[pm[m-1]] = 1) of an m x m block whose first m - 1 rows were
+/// eliminated by small_eliminate with column order pm (rank m - 1): back substitution.
+inline void small_null_vector(const double (&e)[4][5], int m, const int (&pm)[5],
+                              double* x) noexcept {
+  x[pm[m - 1]] = 1;
+  for (int p = m - 2; p >= 0; --p) {
+    double sum = -e[p][pm[m - 1]];
+    for (int c = p + 1; c < m - 1; ++c) sum -= e[p][pm[c]] * x[pm[c]];
+    x[pm[p]] = sum / e[p][pm[p]];
+  }
+}
+
 /// Solves M[R,C] x = -q[R] (|R| = |C| = k <= 4). Returns false when the block is singular at
 /// tolerance tol; sets gray when the decision was close.
 template <typename Mat, typename Vq>
@@ -507,12 +519,7 @@ struct SmallEnumerator {
         bool g2 = false;
         if (small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
         if (g2) ++out.ambiguous;
-        x[pm[m - 1]] = 1;
-        for (int p = m - 2; p >= 0; --p) {
-          double s = -e[p][pm[m - 1]];
-          for (int c = p + 1; c < m - 1; ++c) s -= e[p][pm[c]] * x[pm[c]];
-          x[pm[p]] = s / e[p][pm[p]];
-        }
+        small_null_vector(e, m, pm, x);
       }
       for (double sign : {1.0, -1.0}) {
         double d[N] = {};

@@ -291,12 +291,7 @@ class SmallPreparedLcp {
       bool g2 = false;
       if (detail::small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
       if (g2) ++s.post_ambiguous;
-      x[pm[m - 1]] = 1;
-      for (int p = m - 2; p >= 0; --p) {
-        double sum = -e[p][pm[m - 1]];
-        for (int c = p + 1; c < m - 1; ++c) sum -= e[p][pm[c]] * x[pm[c]];
-        x[pm[p]] = sum / e[p][pm[p]];
-      }
+      detail::small_null_vector(e, m, pm, x);
       for (double sign : {1.0, -1.0}) {
         double d[N] = {};
         for (int f = 0; f < m; ++f)
