@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+
 
 namespace cpkit {
 namespace {
@@ -19,10 +21,10 @@ void append(std::string& message, const std::string& text) {
   message += text;
 }
 
-// Shared decision once residuals are known: the data decide, not the claim.
+// Shared decision once residuals are known: the data decide, not the claim. `natural` is unit-free
+// and already has the rounding allowance deducted (residuals.hpp); non-finite is never accepted.
 void decide(SolveResult& r, bool claimed_solution, const CommonOptions& o) {
-  // The rounding allowance of w is granted on top of each band (residuals.hpp).
-  const double res = std::max(0.0, r.residuals.natural - r.residuals.rounding);
+  const double res = r.residuals.finite ? r.residuals.natural : std::numeric_limits<double>::infinity();
   if (res <= o.tol) {
     if (!claimed_solution && r.status != Status::kNotRun)
       append(r.message, std::string("point verified as a solution although the solver reported ") +
@@ -30,11 +32,14 @@ void decide(SolveResult& r, bool claimed_solution, const CommonOptions& o) {
     r.status = Status::kSolved;
   } else if (res <= o.tol_acceptable) {
     r.status = Status::kSolvedInaccurate;
-    append(r.message, "scaled residual " + fmt(res) + " above tol " + fmt(o.tol));
+    append(r.message, "unit-free residual " + fmt(res) + " above tol " + fmt(o.tol));
   } else if (claimed_solution) {
     r.status = Status::kNumericalFailure;
-    append(r.message, "claimed solution refuted by the data: scaled natural residual " + fmt(res) +
-                          " > tol_acceptable " + fmt(o.tol_acceptable));
+    append(r.message, !r.residuals.finite
+                          ? std::string("claimed solution refuted: w = M z + q or its scale is not "
+                                        "representable in double precision (overflow/NaN)")
+                          : "claimed solution refuted by the data: unit-free residual " + fmt(res) +
+                                " > tol_acceptable " + fmt(o.tol_acceptable));
   }
 }
 
@@ -50,41 +55,16 @@ bool usable_point(SolveResult& r, Eigen::Index n, bool claimed_solution) {
   return false;
 }
 
-// Largest |M_ij| without densifying sparse storage.
-double max_abs_entry(const LcpProblem& p) {
-  if (!p.is_sparse()) return p.M.size() ? p.M.cwiseAbs().maxCoeff() : 0.0;
-  double m = 0;
-  for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
-    for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) m = std::max(m, std::abs(it.value()));
-  return m;
-}
-
 }  // namespace
-
-bool check_certificate(const LcpProblem& p, Certificate& cert, double tol) {
-  cert.checked = false;
-  const Eigen::Index n = p.size();
-  if (cert.y.size() != n || !cert.y.allFinite()) return false;
-  const double ymax = cert.y.lpNorm<Eigen::Infinity>();
-  if (!(ymax > 0)) return false;
-  const Vec y = cert.y / ymax;
-  if (y.minCoeff() < -tol) return false;
-  const Vec yp = y.cwiseMax(0.0);  // tiny negatives dropped: the proof is made with yp
-  const Vec mty = p.is_sparse() ? Vec(p.M_sparse.transpose() * yp) : Vec(p.M.transpose() * yp);
-  const double mscale = std::max(1.0, max_abs_entry(p));
-  const double qscale = std::max(1.0, p.q.lpNorm<Eigen::Infinity>());
-  cert.max_MTy = mty.maxCoeff();
-  cert.q_dot_y = p.q.dot(yp);
-  cert.y = yp;
-  cert.checked = cert.max_MTy <= tol * mscale * static_cast<double>(n) && cert.q_dot_y < -tol * qscale;
-  return cert.checked;
-}
 
 SolveResult finalize(const LcpProblem& p, SolveResult r, const CommonOptions& o) {
   const bool claimed_solution = is_solution(r.status);
   if (r.status == Status::kInfeasible) {
     if (r.certificate && check_certificate(p, *r.certificate)) {
       if (r.z.size() == p.size() && r.z.allFinite()) r.residuals = lcp_residuals(p, r.z, r.w);
+      if (!r.certificate->exact)
+        append(r.message, "the certificate holds within the rounding error of M^T y and q^T y "
+                          "(componentwise), not exactly");
       return r;
     }
     r.status = Status::kNumericalFailure;

@@ -40,7 +40,8 @@ nlohmann::json to_json(const SolveResult& r) {
     j["certificate"] = {{"y", to_json(r.certificate->y)},
                         {"q_dot_y", r.certificate->q_dot_y},
                         {"max_MTy", r.certificate->max_MTy},
-                        {"checked", r.certificate->checked}};
+                        {"checked", r.certificate->checked},
+                        {"exact", r.certificate->exact}};
   }
   if (r.ray) j["ray"] = to_json(*r.ray);
   if (!r.basis.empty()) j["basis"] = r.basis;

@@ -7,41 +7,172 @@
 namespace cpkit {
 namespace {
 
-// Largest |v_i| and its index (first on ties); -1 for an empty vector.
-void max_abs(const Vec& v, double& value, Eigen::Index& index) {
-  value = 0;
-  index = v.size() > 0 ? 0 : -1;
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    const double a = std::abs(v[i]);
-    if (a > value || std::isnan(a)) {
-      value = a;
-      index = i;
-      if (std::isnan(a)) return;
-    }
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// gamma_k = k u / (1 - k u), u = eps / 2: the relative error bound of a k-term dot product
+// [Higham 2002, Lemma 3.1]; w_i = sum_j M_ij z_j + q_i has n + 1 terms.
+double gamma_bound(Eigen::Index n) {
+  const double ku = static_cast<double>(n + 1) * kEps / 2;
+  return ku < 0.5 ? ku / (1 - ku) : kInf;
+}
+
+// a / s in the extended sense: s = 0 gives 0 for a = 0 and +-inf otherwise.
+double ratio(double a, double s) {
+  if (s > 0) return a / s;
+  if (a == 0) return 0.0;
+  return a > 0 ? kInf : -kInf;
+}
+
+double max_abs_entry(const LcpProblem& p) {
+  if (!p.is_sparse()) return p.M.size() ? p.M.cwiseAbs().maxCoeff() : 0.0;
+  double m = 0;
+  for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
+    for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) m = std::max(m, std::abs(it.value()));
+  return m;
+}
+
+Vec row_abs_sums(const LcpProblem& p) {
+  if (!p.is_sparse()) return p.M.cwiseAbs().rowwise().sum();
+  Vec r = Vec::Zero(p.size());
+  for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
+    for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) r[it.row()] += std::abs(it.value());
+  return r;
+}
+
+}  // namespace
+
+DataSizes data_sizes(const LcpProblem& p) {
+  DataSizes d;
+  d.q_norm = p.q.size() ? p.q.lpNorm<Eigen::Infinity>() : 0.0;
+  d.m_max = max_abs_entry(p);
+  d.row_sums = row_abs_sums(p);
+  return d;
+}
+
+double z_unit(const DataSizes& d, double z_norm) {
+  if (d.q_norm > 0 && d.m_max > 0) {
+    const double z_ref = d.q_norm / d.m_max;  // may overflow to inf: then nothing is small
+    return std::max(z_norm, z_ref);
+  }
+  return z_norm;
+}
+
+void w_units(const DataSizes& d, const Vec& q, double z_norm, Vec& s) {
+  s.resize(q.size());
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    // ||M_i||_1 z_ref, written as a ratio <= n times ||q|| so that it cannot overflow; with
+    // q = 0 the data have no size of z and the candidate's own ||z|| stands in.
+    const double row = d.m_max > 0 ? (d.q_norm > 0 ? (d.row_sums[i] / d.m_max) * d.q_norm
+                                                   : d.row_sums[i] * z_norm)
+                                   : 0.0;
+    s[i] = std::abs(q[i]) + row;
   }
 }
 
-// scale = 1 + ||q||_inf; rounding = 2 n eps max_i (|M||z| + |q|)_i / scale, the worst-case
-// error of the dot products that form w = M z + q [Higham 2002, Sec. 3.1].
-void lcp_scale(const LcpProblem& p, const Vec& z, Residuals& r) {
-  const Vec az = z.cwiseAbs();
-  const Vec terms = (p.is_sparse() ? Vec(p.M_sparse.cwiseAbs() * az) : Vec(p.M.cwiseAbs() * az)) +
-                    p.q.cwiseAbs();
-  const double n = static_cast<double>(std::max<Eigen::Index>(z.size(), 1));
-  r.scale = 1.0 + p.q.lpNorm<Eigen::Infinity>();
-  r.rounding = terms.size() ? 2.0 * n * std::numeric_limits<double>::epsilon() *
-                                  terms.maxCoeff() / r.scale
-                            : 0.0;
+namespace {
+
+struct RowValues {
+  double zn, wn, to_lower, to_upper;
+};
+
+// Row i in the units of the test (residuals.hpp): the one place the formula is written.
+inline RowValues row_values(double z, double w, double R, double s, double l, double h, double Z,
+                            double g) {
+  RowValues v;
+  v.zn = ratio(z, Z);
+  // The rounding allowance is deducted in w's own units first: |w_i| <= gamma R_i is zero.
+  const double excess = std::max(0.0, std::abs(w) - g * R);
+  v.wn = excess > 0 ? std::copysign(ratio(excess, s), w) : 0.0;
+  v.to_lower = std::isinf(l) ? kInf : ratio(z - l, Z);
+  v.to_upper = std::isinf(h) ? kInf : ratio(h - z, Z);
+  return v;
 }
 
-// Natural residual of a box problem: x - mid(l, u, x - F).
-Vec box_natural_map(const Vec& x, const Vec& F, const Vec& l, const Vec& u) {
-  return x - (x - F).cwiseMax(l).cwiseMin(u);
+// The units of one candidate: Z, s and R = |M||z| + |q| (header comment).
+struct CandidateUnits {
+  double Z = 0;
+  Vec s, R;
+};
+
+CandidateUnits candidate_units(const LcpProblem& p, const Vec& z) {
+  CandidateUnits c;
+  const DataSizes d = data_sizes(p);
+  const double z_norm = z.size() ? z.lpNorm<Eigen::Infinity>() : 0.0;
+  c.R = abs_product(p, z) + p.q.cwiseAbs();
+  w_units(d, p.q, z_norm, c.s);
+  c.Z = z_unit(d, z_norm);
+  return c;
+}
+
+UnitFreePoint make_point(const Vec& z, const Vec& w, const CandidateUnits& c, const Vec* lower,
+                         const Vec* upper) {
+  const Eigen::Index n = z.size();
+  UnitFreePoint u;
+  u.z.resize(n);
+  u.w.resize(n);
+  u.to_lower.resize(n);
+  u.to_upper.resize(n);
+  const double g = gamma_bound(n);
+  u.finite = z.allFinite() && w.allFinite() && c.R.allFinite() && c.s.allFinite();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const RowValues v = row_values(z[i], w[i], c.R[i], c.s[i], lower ? (*lower)[i] : 0.0,
+                                   upper ? (*upper)[i] : kInf, c.Z, g);
+    u.z[i] = v.zn;
+    u.w[i] = v.wn;
+    u.to_lower[i] = v.to_lower;
+    u.to_upper[i] = v.to_upper;
+  }
+  return u;
+}
+
+}  // namespace
+
+Vec abs_product(const LcpProblem& p, const Vec& z) {
+  const Vec az = z.cwiseAbs();
+  return p.is_sparse() ? Vec(p.M_sparse.cwiseAbs() * az) : Vec(p.M.cwiseAbs() * az);
+}
+
+double unit_free_residual(const Vec& z, const Vec& w, const Vec& R, const Vec& s, double Z,
+                          const Vec* lower, const Vec* upper, Eigen::Index* worst) {
+  const Eigen::Index n = z.size();
+  const double g = gamma_bound(n);
+  double worst_value = 0;
+  if (worst) *worst = n ? 0 : -1;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const RowValues v = row_values(z[i], w[i], R[i], s[i], lower ? (*lower)[i] : 0.0,
+                                   upper ? (*upper)[i] : kInf, Z, g);
+    double r = row_violation(v.wn, v.to_lower, v.to_upper);
+    if (!std::isfinite(z[i]) || !std::isfinite(w[i]) || !std::isfinite(R[i]) ||
+        !std::isfinite(s[i]) || std::isnan(r))
+      r = kInf;
+    if (r > worst_value) {
+      worst_value = r;
+      if (worst) *worst = i;
+    }
+  }
+  return worst_value;
+}
+
+namespace {
+
+void fill_common(Residuals& r, const Vec& z, const Vec& w, const CandidateUnits& c,
+                 const Vec* lower, const Vec* upper) {
+  const Eigen::Index n = z.size();
+  r.finite = z.allFinite() && w.allFinite() && c.R.allFinite() && c.s.allFinite();
+  r.z_scale = c.Z;
+  r.scale = n ? c.s.maxCoeff() : 0.0;
+  r.natural = unit_free_residual(z, w, c.R, c.s, c.Z, lower, upper, &r.worst_index);
+  if (!r.finite) r.natural = kInf;
+  const double g = gamma_bound(n);
+  for (Eigen::Index i = 0; i < n; ++i) r.rounding = std::max(r.rounding, ratio(g * c.R[i], c.s[i]));
+  r.min_z = n ? z.minCoeff() : 0.0;
+  r.min_w = n ? w.minCoeff() : 0.0;
 }
 
 // min over i of the distance of x_i inside [l_i, u_i] (negative when outside).
 double box_margin(const Vec& x, const Vec& l, const Vec& u) {
-  double m = std::numeric_limits<double>::infinity();
+  double m = kInf;
   for (Eigen::Index i = 0; i < x.size(); ++i) m = std::min({m, x[i] - l[i], u[i] - x[i]});
   return x.size() ? m : 0.0;
 }
@@ -60,55 +191,123 @@ double box_sign_error(const Vec& x, const Vec& F, const Vec& l, const Vec& u) {
   return m;
 }
 
+// Natural map of a box problem: x - mid(l, u, x - F) (information: natural_abs).
+double box_natural_abs(const Vec& x, const Vec& F, const Vec& l, const Vec& u) {
+  double m = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double v = std::abs(x[i] - std::min(std::max(x[i] - F[i], l[i]), u[i]));
+    if (!(v <= m)) m = v;
+  }
+  return m;
+}
+
+double box_complementarity(const Vec& z, const Vec& w, const Vec& l, const Vec& u) {
+  double comp = 0;
+  for (Eigen::Index i = 0; i < z.size(); ++i) {
+    const double lo = std::isfinite(l[i]) ? std::abs(z[i] - l[i]) : kInf;
+    const double hi = std::isfinite(u[i]) ? std::abs(u[i] - z[i]) : kInf;
+    comp = std::max(comp, std::min({lo * std::max(w[i], 0.0), hi * std::max(-w[i], 0.0),
+                                    (std::isinf(lo) && std::isinf(hi)) ? std::abs(w[i]) : kInf}));
+  }
+  return comp;
+}
+
 }  // namespace
+
+double row_violation(double wn, double dlo, double dhi) noexcept {
+  const double feas = std::max({0.0, -dlo, -dhi});
+  const double lo = std::max(dlo, 0.0), hi = std::max(dhi, 0.0);
+  const double at_lower = std::max(lo, std::max(0.0, -wn));   // z at l, w >= 0
+  const double at_upper = std::max(hi, std::max(0.0, wn));    // z at u, w <= 0
+  const double inside = std::abs(wn);                         // w = 0
+  return std::max(feas, std::min({at_lower, at_upper, inside}));
+}
+
+UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w) {
+  w = p.w(z);
+  return make_point(z, w, candidate_units(p, z), nullptr, nullptr);
+}
+
+UnitFreePoint unit_free_point(const BoxLcpProblem& p, const Vec& z, Vec& w) {
+  w = p.lcp.w(z);
+  return make_point(z, w, candidate_units(p.lcp, z), &p.lower, &p.upper);
+}
 
 Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w) {
   w = p.w(z);
   Residuals r;
-  max_abs(z.cwiseMin(w), r.natural_abs, r.worst_index);
-  r.complementarity = z.size() ? z.cwiseProduct(w).cwiseAbs().maxCoeff() : 0.0;
-  r.min_z = z.size() ? z.minCoeff() : 0.0;
-  r.min_w = w.size() ? w.minCoeff() : 0.0;
-  lcp_scale(p, z, r);
-  r.natural = r.natural_abs / r.scale;
+  fill_common(r, z, w, candidate_units(p, z), nullptr, nullptr);
+  const Eigen::Index n = z.size();
+  r.natural_abs = n ? z.cwiseMin(w).cwiseAbs().maxCoeff() : 0.0;
+  if (n && z.cwiseMin(w).hasNaN()) r.natural_abs = std::numeric_limits<double>::quiet_NaN();
+  r.complementarity = n ? z.cwiseProduct(w).cwiseAbs().maxCoeff() : 0.0;
   return r;
 }
 
 Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w) {
   w = p.lcp.w(z);
   Residuals r;
-  max_abs(box_natural_map(z, w, p.lower, p.upper), r.natural_abs, r.worst_index);
-  // |z_i - l_i| w_i^+ and |u_i - z_i| w_i^- are the box analogues of z_i w_i.
-  double comp = 0;
-  for (Eigen::Index i = 0; i < z.size(); ++i) {
-    const double lo = std::isfinite(p.lower[i]) ? std::abs(z[i] - p.lower[i]) : INFINITY;
-    const double hi = std::isfinite(p.upper[i]) ? std::abs(p.upper[i] - z[i]) : INFINITY;
-    comp = std::max(comp, std::min({lo * std::max(w[i], 0.0), hi * std::max(-w[i], 0.0),
-                                    (std::isinf(lo) && std::isinf(hi)) ? std::abs(w[i]) : INFINITY}));
-  }
-  r.complementarity = comp;
+  fill_common(r, z, w, candidate_units(p.lcp, z), &p.lower, &p.upper);
+  r.natural_abs = box_natural_abs(z, w, p.lower, p.upper);
+  r.complementarity = box_complementarity(z, w, p.lower, p.upper);
   r.min_z = box_margin(z, p.lower, p.upper);
   r.min_w = box_sign_error(z, w, p.lower, p.upper);
-  lcp_scale(p.lcp, z, r);
-  r.natural = r.natural_abs / r.scale;
   return r;
 }
 
-Residuals mcp_residuals(const McpProblem& p, const Vec& x, const Vec& F) {
-  Residuals r;
-  max_abs(box_natural_map(x, F, p.lower, p.upper), r.natural_abs, r.worst_index);
-  double comp = 0;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    const double lo = std::isfinite(p.lower[i]) ? std::abs(x[i] - p.lower[i]) : INFINITY;
-    const double hi = std::isfinite(p.upper[i]) ? std::abs(p.upper[i] - x[i]) : INFINITY;
-    comp = std::max(comp, std::min({lo * std::max(F[i], 0.0), hi * std::max(-F[i], 0.0),
-                                    (std::isinf(lo) && std::isinf(hi)) ? std::abs(F[i]) : INFINITY}));
+namespace {
+
+// The MCP's Jacobian at x: the callback, else forward differences. False when unavailable.
+bool mcp_jacobian(const McpProblem& p, const Vec& x, const Vec& F, LcpProblem& lin) {
+  const Eigen::Index n = p.size();
+  if (p.sparse_jacobian) {
+    SparseMat J;
+    if (!p.sparse_jacobian(x, J) || J.rows() != n || J.cols() != n) return false;
+    lin.M_sparse = J;
+    return true;
   }
-  r.complementarity = comp;
+  Mat J(n, n);
+  if (p.jacobian) {
+    if (!p.jacobian(x, J) || J.rows() != n || J.cols() != n) return false;
+    lin.M = J;
+    return true;
+  }
+  // Forward differences with steps relative to x's own size.
+  const double xn = n ? x.lpNorm<Eigen::Infinity>() : 0.0;
+  Vec xp = x, Fp(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double ref = x[j] != 0 ? std::abs(x[j]) : (xn > 0 ? xn : 1.0);
+    const double h = std::sqrt(kEps) * ref;
+    xp[j] = x[j] + h;
+    if (!p.F(xp, Fp) || Fp.size() != n || !Fp.allFinite()) return false;
+    J.col(j) = (Fp - F) / (xp[j] - x[j]);
+    xp[j] = x[j];
+  }
+  lin.M = J;
+  return true;
+}
+
+}  // namespace
+
+Residuals mcp_residuals(const McpProblem& p, const Vec& x, const Vec& F) {
+  const Eigen::Index n = x.size();
+  LcpProblem lin;
+  CandidateUnits c;
+  if (mcp_jacobian(p, x, F, lin) && (lin.is_sparse() || lin.M.allFinite())) {
+    lin.q = F - (lin.is_sparse() ? Vec(lin.M_sparse * x) : Vec(lin.M * x));
+    c = candidate_units(lin, x);
+  } else {
+    // No usable Jacobian: F's own size, row by row and as a whole, and z's own size.
+    c.R = F.cwiseAbs();
+    c.s = F.cwiseAbs().array() + (n ? F.lpNorm<Eigen::Infinity>() : 0.0);
+    c.Z = n ? x.lpNorm<Eigen::Infinity>() : 0.0;
+  }
+  Residuals r;
+  fill_common(r, x, F, c, &p.lower, &p.upper);
+  r.natural_abs = box_natural_abs(x, F, p.lower, p.upper);
+  r.complementarity = box_complementarity(x, F, p.lower, p.upper);
   r.min_z = box_margin(x, p.lower, p.upper);
   r.min_w = box_sign_error(x, F, p.lower, p.upper);
-  r.scale = 1.0 + F.lpNorm<Eigen::Infinity>();
-  r.natural = r.natural_abs / r.scale;
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
 
@@ -889,25 +890,35 @@ bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
 }  // namespace
 
 bool SolutionSet::contains(const Vec& z, double ctol) const {
-  const int n = static_cast<int>(q.size());
+  const Eigen::Index n = q.size();
   if (z.size() != n || !z.allFinite()) return false;
-  const double zn = z.cwiseAbs().maxCoeff();
+  // The acceptance test's own units (residuals.hpp): a point finalize() accepts at tolerance
+  // ctol is judged here by the same numbers, whatever the problem's units.
+  Vec w;
+  const UnitFreePoint u = unit_free_point(LcpProblem(M, q), z, w);
+  if (!u.finite) return false;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (u.to_lower[i] < -ctol || u.w[i] < -ctol) return false;
+  const double zn = n ? z.cwiseAbs().maxCoeff() : 0.0;
   for (const ExtremeSolution& e : solutions)
-    if ((e.z - z).cwiseAbs().maxCoeff() <= ctol * (1 + std::max(zn, e.z.cwiseAbs().maxCoeff())))
+    if (n == 0 || (e.z - z).cwiseAbs().maxCoeff() <=
+                      ctol * std::max(zn, e.z.cwiseAbs().maxCoeff()))
       return true;
-  if (pieces.empty()) return false;
-  const Vec w = M * z + q;
-  const Vec sc = (M.cwiseAbs() * z.cwiseAbs()).array() + q.cwiseAbs().array() + 1.0;
-  const double sz = 1 + zn;
-  for (int i = 0; i < n; ++i)
-    if (z(i) < -ctol * sz || w(i) < -ctol * sc(i)) return false;
+  // Row i "free in z" must have w_i ~ 0, otherwise z_i ~ 0: the complementarity pattern of a
+  // listed basis or piece, met within ctol in the test's units.
+  auto fits = [&](auto z_free) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (z_free(i) ? !(std::abs(u.w[i]) <= ctol) : !(std::abs(u.z[i]) <= ctol)) return false;
+    return true;
+  };
+  for (const ExtremeSolution& e : solutions)
+    if (static_cast<Eigen::Index>(e.basis.size()) == n &&
+        fits([&](Eigen::Index i) { return e.basis[static_cast<size_t>(i)] >= 0; }))
+      return true;
   for (const SolutionPiece& p : pieces) {
-    std::vector<char> in(n, 0);
-    for (int i : p.support) in[i] = 1;
-    bool ok = true;
-    for (int i = 0; i < n && ok; ++i)
-      ok = in[i] ? std::abs(w(i)) <= ctol * sc(i) : std::abs(z(i)) <= ctol * sz;
-    if (ok) return true;
+    std::vector<char> in(static_cast<size_t>(n), 0);
+    for (int i : p.support) in[static_cast<size_t>(i)] = 1;
+    if (fits([&](Eigen::Index i) { return in[static_cast<size_t>(i)] != 0; })) return true;
   }
   return false;
 }

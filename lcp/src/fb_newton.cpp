@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/units.hpp"
 #include "cpkit/core/log.hpp"
+#include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 
 #ifdef CPKIT_HAVE_LAPACK
@@ -156,36 +158,60 @@ inline bool component_grad(BoundKind k, double x, double f, double l, double u, 
 
 /// F(x) = M x + q with dense or sparse M (the Jacobian is M, evaluated once).
 struct AffineSource {
-  const Mat* M = nullptr;
-  const SparseMat* Ms = nullptr;
-  const Vec* q = nullptr;
-  double q_norm = 0;
+  const LcpProblem* lcp = nullptr;
+  DataSizes sizes;    // the data's part of the acceptance test's units (residuals.hpp)
+  Mat absM;
+  SparseMat absMs;
+  mutable Vec R, s;   // workspaces: |M||x| + |q| and the w-units
 
-  bool eval(const Vec& x, Vec& F) const {
-    if (Ms)
-      F.noalias() = *Ms * x;
+  explicit AffineSource(const LcpProblem& p) : lcp(&p), sizes(data_sizes(p)) {
+    if (p.is_sparse())
+      absMs = p.M_sparse.cwiseAbs();
     else
-      F.noalias() = *M * x;
-    F += *q;
+      absM = p.M.cwiseAbs();
+    R.resize(p.size());
+    s.resize(p.size());
+  }
+  bool eval(const Vec& x, Vec& F) const {
+    if (lcp->is_sparse())
+      F.noalias() = lcp->M_sparse * x;
+    else
+      F.noalias() = lcp->M * x;
+    F += lcp->q;
     return true;
   }
-  /// Stopping scale 1 + max(||q||, ||w|| - ||q||) <= finalize()'s scale (since
-  /// ||w|| - ||q|| <= ||M z|| <= || |M| |z| ||). Deliberately stricter than finalize()'s
-  /// 1 + max(||q||, || |M| |z| ||): along a diverging sequence z -> inf of an infeasible problem
-  /// the latter grows without bound and would let min(z, w) = O(1) pass as "solved".
-  double scale(const Vec& /*x*/, const Vec& F) const {
-    return 1.0 + std::max(q_norm, F.lpNorm<Eigen::Infinity>() - q_norm);
+  /// The acceptance number of finalize() (residuals.hpp), so that the iteration stops exactly
+  /// when the answer will verify: unit-free, per row, never growing with |x| (a diverging
+  /// sequence of an infeasible problem is never "converged").
+  double residual(const Vec& x, const Vec& F, const Vec& l, const Vec& u) const {
+    if (lcp->is_sparse())
+      R.noalias() = absMs * x.cwiseAbs();
+    else
+      R.noalias() = absM * x.cwiseAbs();
+    R += lcp->q.cwiseAbs();
+    const double x_norm = x.lpNorm<Eigen::Infinity>();
+    w_units(sizes, lcp->q, x_norm, s);
+    const double Z = z_unit(sizes, x_norm);
+    return unit_free_residual(x, F, R, s, Z, &l, &u);
   }
 };
 
-/// F from the McpProblem callback; scale 1 + ||F||_inf as in finalize() for MCPs.
+/// F from the McpProblem callback; stopping scale 1 + ||F||_inf (the final word is finalize()'s
+/// unit-free test, which linearises F at the answer: residuals.hpp).
 struct CallbackSource {
   const McpProblem* p = nullptr;
   bool eval(const Vec& x, Vec& F) const {
     if (!p->F(x, F)) return false;
     return F.size() == x.size() && F.allFinite();
   }
-  double scale(const Vec& /*x*/, const Vec& F) const { return 1.0 + F.lpNorm<Eigen::Infinity>(); }
+  double residual(const Vec& x, const Vec& F, const Vec& l, const Vec& u) const {
+    double m = 0;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const double q = std::min(std::max(x[i] - F[i], l[i]), u[i]);
+      m = std::max(m, std::abs(x[i] - q));
+    }
+    return m / (1.0 + F.lpNorm<Eigen::Infinity>());
+  }
 };
 
 // ---- linear algebra back ends ------------------------------------------------------------------
@@ -647,15 +673,8 @@ class FbDriver {
       Phi[i] = component_value(kinds_[static_cast<size_t>(i)], x[i], F[i], l_[i], u_[i], lambda_);
     return 0.5 * Phi.squaredNorm();
   }
-  // Scaled natural residual ||x - mid(l, u, x - F)||_inf / scale, as finalize() computes it.
-  double natural_residual(const Vec& x, const Vec& F) {
-    double m = 0;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-      const double p = std::min(std::max(x[i] - F[i], l_[i]), u_[i]);
-      m = std::max(m, std::abs(x[i] - p));
-    }
-    return m / src_.scale(x, F);
-  }
+  // The stopping residual of the source (for LCPs exactly finalize()'s acceptance number).
+  double natural_residual(const Vec& x, const Vec& F) { return src_.residual(x, F, l_, u_); }
   // Da, Db at x_; degenerate pairs get the DFK direction z = sum of their unit vectors.
   void row_coefficients() {
     degenerate_.clear();
@@ -716,23 +735,19 @@ double fd_step_of(const FbNewtonOptions& o) { return o.fd_step > 0 ? o.fd_step :
 SolveResult solve_affine(const LcpProblem& lcp, const Vec& l, const Vec& u,
                          const FbNewtonOptions& o) {
   const Eigen::Index n = lcp.size();
-  AffineSource src;
-  src.q = &lcp.q;
-  src.q_norm = lcp.q.lpNorm<Eigen::Infinity>();
+  AffineSource src(lcp);
   const Vec x0 = start_point(o, Vec(), l, u);
   auto jac_once = [](const Vec&, const Vec&, SolveResult& r) {
     if (r.jacobian_evals == 0) r.jacobian_evals = 1;  // J = M, constant
     return true;
   };
   if (lcp.is_sparse()) {
-    src.Ms = &lcp.M_sparse;
     SparseAlgebra la(n);
     la.J = &lcp.M_sparse;
     la.symmetric = SparseMat(lcp.M_sparse.transpose()).isApprox(lcp.M_sparse, 0.0);
     FbDriver<AffineSource, SparseAlgebra> drv(src, la, {&l, &u}, o, n);
     return drv.run(x0, jac_once);
   }
-  src.M = &lcp.M;
   DenseAlgebra la(n);
   la.J = &lcp.M;
   FbDriver<AffineSource, DenseAlgebra> drv(src, la, {&l, &u}, o, n);
@@ -778,7 +793,13 @@ SolveResult solve_fb_newton(const LcpProblem& problem, const FbNewtonOptions& op
   throw_if_invalid(options.validate(problem.size()), what + " options");
   const Eigen::Index n = problem.size();
   const Vec l = Vec::Zero(n), u = Vec::Constant(n, kInf);
-  return finalize(problem, solve_affine(problem, l, u, options), options.common);
+  // Iterate on the problem in its natural units (units.hpp), answer in the caller's.
+  const LcpUnits units = natural_units(problem);
+  FbNewtonOptions o = options;
+  if (o.x0.size()) o.x0 = z_to_units(o.x0, units);
+  SolveResult r = solve_affine(to_units(problem, units), l, u, o);
+  r.z = z_from_units(r.z, units);
+  return finalize(problem, std::move(r), options.common);
 }
 
 SolveResult solve_fb_newton(const BoxLcpProblem& problem, const FbNewtonOptions& options) {
@@ -786,8 +807,13 @@ SolveResult solve_fb_newton(const BoxLcpProblem& problem, const FbNewtonOptions&
       "fb-newton: box LCP" + (problem.lcp.name.empty() ? "" : " '" + problem.lcp.name + "'");
   throw_if_invalid(problem.validate(), what);
   throw_if_invalid(options.validate(problem.size()), what + " options");
-  return finalize(problem, solve_affine(problem.lcp, problem.lower, problem.upper, options),
-                  options.common);
+  const LcpUnits units = natural_units(problem.lcp);
+  const BoxLcpProblem scaled = to_units(problem, units);
+  FbNewtonOptions o = options;
+  if (o.x0.size()) o.x0 = z_to_units(o.x0, units);
+  SolveResult r = solve_affine(scaled.lcp, scaled.lower, scaled.upper, o);
+  r.z = z_from_units(r.z, units);
+  return finalize(problem, std::move(r), options.common);
 }
 
 SolveResult solve_fb_newton(const McpProblem& problem, const FbNewtonOptions& options) {

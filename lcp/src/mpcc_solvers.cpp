@@ -11,6 +11,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/finalize.hpp"
+#include "cpkit/core/units.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 
@@ -364,6 +365,15 @@ SolveResult solve_via_mpcc(const Problem& original, const McpProblem& mcp, bool 
   return r;
 }
 
+// A result computed in natural units, decided again on the caller's data (same verdict up to
+// rounding: the acceptance test is unit-free).
+template <class Problem>
+SolveResult back_to_units(const Problem& original, SolveResult r, const LcpUnits& units,
+                          const CommonOptions& common) {
+  if (r.z.size()) r.z = z_from_units(r.z, units);
+  return finalize(original, std::move(r), common);
+}
+
 McpProblem checked_mcp(McpProblem mcp) {
   if (mcp.lower.size() != mcp.n) mcp.lower = Vec::Zero(mcp.n);
   if (mcp.upper.size() != mcp.n) mcp.upper = Vec::Constant(mcp.n, kInf);
@@ -383,16 +393,29 @@ SolveResult solve_lcp_mpcc(const LcpProblem& problem, const ComplementarityMpccO
                            MpccResult* details) {
   throw_if_invalid(problem.validate(), "LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  const McpProblem mcp = checked_mcp(lcp_as_mcp(problem));
-  return solve_via_mpcc(problem, mcp, true, options, details);
+  // The NLP is posed in the problem's natural units (units.hpp): its feasibility tolerances,
+  // relaxation parameters and divergence bound are then meaningful whatever units the caller
+  // used. The answer is mapped back and decided again on the caller's data.
+  const LcpUnits units = natural_units(problem);
+  const LcpProblem scaled = to_units(problem, units);
+  ComplementarityMpccOptions o = options;
+  if (o.reference.size()) o.reference = z_to_units(o.reference, units);
+  const McpProblem mcp = checked_mcp(lcp_as_mcp(scaled));
+  return back_to_units(problem, solve_via_mpcc(scaled, mcp, true, o, details), units,
+                       options.mpcc.common);
 }
 
 SolveResult solve_box_lcp_mpcc(const BoxLcpProblem& problem,
                                const ComplementarityMpccOptions& options, MpccResult* details) {
   throw_if_invalid(problem.validate(), "box LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  const McpProblem mcp = checked_mcp(box_lcp_as_mcp(problem));
-  return solve_via_mpcc(problem, mcp, true, options, details);
+  const LcpUnits units = natural_units(problem.lcp);
+  const BoxLcpProblem scaled = to_units(problem, units);
+  ComplementarityMpccOptions o = options;
+  if (o.reference.size()) o.reference = z_to_units(o.reference, units);
+  const McpProblem mcp = checked_mcp(box_lcp_as_mcp(scaled));
+  return back_to_units(problem, solve_via_mpcc(scaled, mcp, true, o, details), units,
+                       options.mpcc.common);
 }
 
 SolveResult solve_mcp_mpcc(const McpProblem& problem, const ComplementarityMpccOptions& options,

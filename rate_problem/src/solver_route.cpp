@@ -60,9 +60,9 @@ RateSolutionSet solve_rate_single(const ContactParameters& p, const ContactState
     }
     message = entry->info.name + ": " + std::string(to_string(r.status)) +
               (r.message.empty() ? "" : " (" + r.message + ")");
-    // relative to the data (not to the iterate: on the z-rays of state b a solver may drift to
-    // large z, which shrinks the iterate-scaled residual but not the error of the rates)
-    residual = r.residuals.natural_abs / (1.0 + lcp.q.lpNorm<Eigen::Infinity>());
+    // finalize()'s unit-free number: its w-units do not grow with z, so a drift to large z
+    // along the z-rays of state b does not shrink it (residuals.hpp)
+    residual = r.residuals.natural;
     if (raw != nullptr) *raw = std::move(r);
   }
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, false);

@@ -1,15 +1,27 @@
 #pragma once
 /// \file residuals.hpp
-/// Residuals of a candidate solution, computed from the problem data only.
+/// Residuals of a candidate solution, computed from the problem data only, in units that do
+/// not depend on the problem's units (docs/conventions.md, "What within tolerance means").
 ///
-/// Scale and rounding allowance (documented tolerance convention, docs/conventions.md):
-///   scale    = 1 + ||q||_inf                                   (the data's own size)
-///   natural  = ||min(z, w)||_inf / scale                       (the reported residual)
-///   rounding = 2 n eps max_i ( |M| |z| + |q| )_i / scale        (bound on the error of
-///              computing w = M z + q in double precision)
-/// finalize() accepts  natural <= tol + rounding. The allowance lets a genuine solution with a
-/// huge z verify, while a diverging iterate (min(z, w) = O(1) as |z| grows) is rejected until
-/// |M||z| reaches ~1 / (n eps) times that error, i.e. until z itself is meaningless in doubles.
+/// For LCP(M, q) and a candidate z (w = M z + q recomputed), row i is judged in its own units:
+///   z_ref = ||q||_inf / ||M||_max      the data's own size of z (none when q = 0 or M = 0)
+///   Z     = max(||z||_inf, z_ref)      the unit of every z_i (||z||_inf without z_ref)
+///   s_i   = |q_i| + ||M_i,:||_1 z_ref   the unit of w_i: what row i can err by when q_i is
+///           perturbed relative to itself and z within its unit (componentwise in q, normwise in
+///           z); it is fixed by the data, so it never grows with a diverging z (q = 0: ||z||_inf
+///           stands in for z_ref)
+///   a_i   = gamma_{n+1} ((|M| |z|)_i + |q_i|)   the worst-case rounding error of computing w_i
+///           in double precision [Higham 2002, Sec. 3.1]; |w_i| <= a_i counts as 0, and a
+///           larger |w_i| is reduced by a_i before it is divided by s_i
+///   zn_i = z_i / Z,  wn_i = (w_i reduced by a_i) / s_i
+///   r_i  = violation of the complementarity rule by (zn_i, wn_i): |min(zn_i, wn_i)| for an LCP
+///   natural = max_i r_i                 the one acceptance number
+/// Every quantity is invariant under q -> a q (z -> a z) and (M, q) -> b (M, q) (z unchanged),
+/// for all a, b > 0 (exactly when a and b are powers of two, up to rounding otherwise).
+/// finalize(), SolutionSet::contains() and cross_verify() all use this one definition.
+/// - A diverging iterate (|z| -> inf with min(z, w) = O(1)) is never accepted: s_i is capped.
+/// - z = 0 is never accepted when q has a negative entry: at z = 0, s_i = |q_i| and wn_i = -1.
+/// - One large row excuses nothing in another: every unit is per row.
 #include <Eigen/Core>
 
 #include "cpkit/core/problem.hpp"
@@ -17,22 +29,64 @@
 namespace cpkit {
 
 struct Residuals {
-  double natural = 0;        ///< scaled natural residual ||min(z, w)||_inf / scale (the test)
-  double natural_abs = 0;    ///< unscaled ||min(z, w)||_inf
-  double complementarity = 0;///< max_i |z_i w_i|
-  double min_z = 0;          ///< min_i z_i (negative = infeasible); for MCPs min distance to box
-  double min_w = 0;          ///< min_i w_i (negative = infeasible); for MCPs the sign error
-  Eigen::Index worst_index = -1;  ///< index attaining natural_abs (-1 when n = 0)
-  double scale = 1;          ///< the scale used (1 + ||q||_inf; MCP: 1 + ||F(x)||_inf)
-  double rounding = 0;       ///< rounding allowance of w, on the same scale as `natural`
+  double natural = 0;         ///< unit-free residual max_i r_i (the test; rounding deducted)
+  double natural_abs = 0;     ///< ||min(z, w)||_inf in the problem's units (information only)
+  double complementarity = 0; ///< max_i |z_i w_i|
+  double min_z = 0;           ///< min_i z_i (negative = infeasible); for MCPs min distance to box
+  double min_w = 0;           ///< min_i w_i (negative = infeasible); for MCPs the sign error
+  Eigen::Index worst_index = -1;  ///< index attaining `natural` (-1 when n = 0)
+  double scale = 0;           ///< largest w-unit s_i (units of w; information only)
+  double z_scale = 0;         ///< the z-unit Z (units of z; information only)
+  double rounding = 0;        ///< largest per-row rounding allowance a_i (unit-free)
+  bool finite = true;         ///< false when z, w or a scale is NaN/Inf (never acceptable)
 };
 
-/// LCP residuals of z; also returns w = M z + q recomputed from the data.
+/// A candidate in the units of the acceptance test, row by row: zn_i = z_i / Z, wn_i = w_i / s_i
+/// (rounding allowance deducted), and the distances to the bounds (z_i - l_i) / Z and
+/// (u_i - z_i) / Z (+inf for infinite bounds; an LCP has l = 0, u = +inf).
+struct UnitFreePoint {
+  Vec z, w, to_lower, to_upper;
+  bool finite = true;  ///< false when some value or unit is NaN/Inf
+};
+
+/// Violation of one row of the box rule by unit-free values: the largest bound violation, or
+/// else the smallest violation among "z at l and w >= 0", "z at u and w <= 0", "w = 0".
+/// Zero exactly when the row holds; |min(zn, wn)| for an LCP row (to_lower = zn, to_upper = inf).
+double row_violation(double wn, double to_lower, double to_upper) noexcept;
+
+/// The data's part of the units, computed once per problem.
+struct DataSizes {
+  double q_norm = 0;  ///< ||q||_inf
+  double m_max = 0;   ///< ||M||_max
+  Vec row_sums;       ///< ||M_i,:||_1
+};
+DataSizes data_sizes(const LcpProblem& p);
+/// Z of the header comment for a candidate with ||z||_inf = z_norm.
+double z_unit(const DataSizes& d, double z_norm);
+/// s of the header comment (z_norm = ||z||_inf is used only when q = 0); allocation-free when s
+/// already has size n.
+void w_units(const DataSizes& d, const Vec& q, double z_norm, Vec& s);
+/// |M| |z| (without q).
+Vec abs_product(const LcpProblem& p, const Vec& z);
+/// max_i r_i from raw values z, w = M z + q, R = |M||z| + |q|, s (w_units), Z (z_unit), bounds
+/// (nullptr: 0 and +inf, the LCP). The one acceptance number; allocation-free, for solvers'
+/// stopping tests. Non-finite inputs give +inf. `worst` receives the index of the maximum.
+double unit_free_residual(const Vec& z, const Vec& w, const Vec& R, const Vec& s, double Z,
+                          const Vec* lower, const Vec* upper, Eigen::Index* worst = nullptr);
+
+/// z, w of an LCP candidate in unit-free form; w = M z + q is returned in `w`.
+UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w);
+/// The same for a box LCP (bounds divided by Z as z is).
+UnitFreePoint unit_free_point(const BoxLcpProblem& p, const Vec& z, Vec& w);
+
+/// LCP residuals of z; also returns w = M z + q computed from the data.
 Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w);
-/// Box-LCP residuals: natural = ||z - mid(l, u, z - w)||_inf / scale.
+/// Box-LCP residuals (box rule per row).
 Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w);
-/// MCP residuals with F evaluated at x (F given). scale = 1 + ||F(x)||_inf, rounding = 0
-/// (F's own rounding is unknown).
+/// MCP residuals with F evaluated at x (F given). The units come from the linearisation
+/// F(y) ~ J y + (F(x) - J x) at x, i.e. the LCP rule with M = J and q = F(x) - J x; J from the
+/// problem's Jacobian callback, else forward differences (when those leave F's domain, the
+/// units fall back to |F_i(x)| + ||F(x)||_inf). For lcp_as_mcp() this is exactly the LCP test.
 Residuals mcp_residuals(const McpProblem& p, const Vec& x, const Vec& F);
 
 }  // namespace cpkit

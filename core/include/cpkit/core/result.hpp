@@ -16,6 +16,7 @@ namespace cpkit {
 struct Certificate {
   Vec y;
   bool checked = false;      ///< set by finalize() after re-checking from the data
+  bool exact = false;        ///< checked with exact signs (else within componentwise rounding)
   double q_dot_y = 0;        ///< q^T y (negative), recomputed by finalize()
   double max_MTy = 0;        ///< max_i (M^T y)_i (<= tolerance), recomputed by finalize()
 };

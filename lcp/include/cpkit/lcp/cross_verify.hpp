@@ -10,12 +10,10 @@
 /// which point of a continuum a solver returned.
 ///
 /// Disagreements (docs/enumeration.md, "Cross-verification"):
-/// - kNotASolution:        status solved / solved_inaccurate but the recomputed residual exceeds
-///                         tol_acceptable (plus the rounding allowance of residuals.hpp), on
-///                         the residual's own scale or on the data scale
-///                         ||min(z, w)||_inf / (1 + ||q||_inf). The second test is kept
-///                         independent of the core's scale convention: an answer with
-///                         |z| -> infinity and w = -1 on an infeasible LCP must never pass;
+/// - kNotASolution:        status solved / solved_inaccurate but the residual recomputed from
+///                         the data exceeds tol_acceptable: the same unit-free number and band as
+///                         finalize() (residuals.hpp), so a diverging iterate with w = -1 on an
+///                         infeasible LCP never passes, whatever the units;
 /// - kInfeasibleButSolvable: status infeasible while the enumeration found a solution;
 /// - kProvesIncomplete:    a verified solution that the (complete) enumeration does not contain.
 /// Solver failures without a claim (ray termination, iteration limit, ...) are not
@@ -34,8 +32,8 @@ namespace cpkit::lcp {
 struct CrossVerifyOptions {
   EnumerationOptions enumeration;  ///< options of the enumeration
   CommonOptions solve;             ///< options passed to every solver
-  /// Membership tolerance for a solver's z (SolutionSet::contains); raised to 100 x the
-  /// answer's own residual for solved_inaccurate answers.
+  /// Membership tolerance for a solver's z (SolutionSet::contains, in the units of the
+  /// acceptance test); raised to the answer's own residual when that is larger.
   double membership_tol = 1e-7;
   std::vector<std::string> skip;   ///< registry names not to run (e.g. slow ones)
   std::string validate() const;
@@ -57,8 +55,8 @@ bool is_disagreement(Verdict v) noexcept;
 struct SolverCheck {
   std::string solver;
   Status status = Status::kNotRun;
-  double residual = 0;        ///< scaled natural residual recomputed from the data (residuals.hpp)
-  double data_residual = 0;   ///< ||min(z, w)||_inf / (1 + ||q||_inf): independent of |z|
+  double residual = 0;        ///< unit-free residual recomputed from the data (residuals.hpp)
+  double data_residual = 0;   ///< ||min(z, w)||_inf in the problem's units (information only)
   bool in_set = false;        ///< z is an extreme solution or lies in a piece
   int solution_index = -1;    ///< index of the matching extreme solution (-1: none / in a piece)
   Verdict verdict = Verdict::kNoAnswer;

@@ -91,9 +91,13 @@ struct SolutionSet {
 
   /// "inf" semantics: number of extreme solutions; see `infinite` for continua.
   int count() const { return static_cast<int>(solutions.size()); }
-  /// True when z is one of the extreme solutions (max-norm distance <= tol (1 + ||z||_inf)) or a
-  /// solution lying in a listed piece (z, w >= -tol s, z_i ~ 0 off its support, w_i ~ 0 on it,
-  /// s = 1 + |q_i| + (|M| |z|)_i). A solution that is in neither proves the set incomplete.
+  /// True when z is a solution within `tol` in the units of finalize()'s acceptance test
+  /// (residuals.hpp: z_i / ||z||_inf, w_i / s_i, rounding allowance deducted) that this set
+  /// accounts for: feasible within tol, and either within relative distance
+  /// tol max(||z||, ||e.z||) of an extreme solution e, or matching the complementarity pattern
+  /// of a listed basis or piece (w_i ~ 0 where z_i is free, z_i ~ 0 elsewhere). Invariant under
+  /// q -> a q and (M, q) -> b (M, q). A verified solution that is not contained in a complete
+  /// set proves the set incomplete.
   bool contains(const Vec& z, double tol = 1e-8) const;
 };
 
