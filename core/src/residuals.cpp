@@ -61,11 +61,10 @@ double z_unit(const DataSizes& d, double z_norm) {
 void w_units(const DataSizes& d, const Vec& q, double z_norm, Vec& s) {
   s.resize(q.size());
   for (Eigen::Index i = 0; i < q.size(); ++i) {
-    // ||M_i||_1 z_ref, written as a ratio <= n times ||q|| so that it cannot overflow; with
-    // q = 0 the data have no size of z and the candidate's own ||z|| stands in.
-    const double row = d.m_max > 0 ? (d.q_norm > 0 ? (d.row_sums[i] / d.m_max) * d.q_norm
-                                                   : d.row_sums[i] * z_norm)
-                                   : 0.0;
+    // ||M_i||_1 min(||z||, z_ref); the cap is written as a ratio <= n times ||q|| so that it
+    // cannot overflow. With q = 0 the data have no size of z: no cap.
+    double row = d.row_sums[i] * z_norm;
+    if (d.m_max > 0 && d.q_norm > 0) row = std::min(row, (d.row_sums[i] / d.m_max) * d.q_norm);
     s[i] = std::abs(q[i]) + row;
   }
 }

@@ -28,15 +28,17 @@ SolveResult claim(Status s, Vec z) {
 }  // namespace
 
 TEST_CASE("Siconos 1x1 trap: M = -1, q = -1, z = -1 claimed solved is refuted", "[finalize]") {
-  // w = -z - 1 = 0 at z = -1, but z < 0: min(z, w) = -1, natural residual 1 / scale 2.
+  // w = -z - 1 = 0 at z = -1, but z < 0. Units (residuals.hpp): z_ref = |q| / |M| = 1,
+  // Z = max(|z|, z_ref) = 1, s = |q| + |M| min(|z|, z_ref) = 2; zn = -1, wn = 0: violation 1.
   const LcpProblem p(Mat{{-1}}, Vec{{-1}});
   const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{-1}}), {});
   CHECK(r.status == Status::kNumericalFailure);
   CHECK(r.message.find("refuted") != std::string::npos);
   CHECK(r.w[0] == 0.0);
   CHECK(r.residuals.natural_abs == 1.0);
-  CHECK(r.residuals.scale == 2.0);  // 1 + max(|q| = 1, |M||z| = 1)
-  CHECK(r.residuals.natural == 0.5);
+  CHECK(r.residuals.scale == 2.0);
+  CHECK(r.residuals.z_scale == 1.0);
+  CHECK(r.residuals.natural == 1.0);
   CHECK(r.residuals.min_z == -1.0);
 }
 
@@ -75,8 +77,9 @@ TEST_CASE("Claims of the wrong size or with non-finite entries", "[finalize]") {
 }
 
 TEST_CASE("Solved, solved inaccurately, refuted: the tolerance bands", "[finalize]") {
-  // M = I, q = (-1, -1): the solution is z = (1, 1). z = (1 + e, 1): w = (e, 0),
-  // min(z, w) = (e, 0), scale = 1 + max(1, 1 + e) = 2 + e.
+  // M = I, q = (-1, -1): the solution is z = (1, 1). z = (1 + e, 1): w = (e, 0).
+  // z_ref = 1, Z = 1 + e, s_i = 1 + 1 min(1 + e, 1) = 2: row 0 has zn = 1, wn = e / 2 (less a
+  // rounding allowance of order 1e-16), so the residual is e / 2.
   const LcpProblem p(Mat::Identity(2, 2), Vec{{-1, -1}});
   CommonOptions o;  // tol 1e-10, tol_acceptable 1e-6
   auto at = [&](double e, Status s) {
@@ -86,7 +89,7 @@ TEST_CASE("Solved, solved inaccurately, refuted: the tolerance bands", "[finaliz
   CHECK(at(1e-11, Status::kSolved).status == Status::kSolved);
   const auto inacc = at(1e-8, Status::kSolved);
   CHECK(inacc.status == Status::kSolvedInaccurate);
-  CHECK(inacc.residuals.natural == Approx(1e-8 / (2 + 1e-8)).epsilon(1e-6));
+  CHECK(inacc.residuals.natural == Approx(1e-8 / 2).epsilon(1e-6));
   CHECK(at(1e-3, Status::kSolved).status == Status::kNumericalFailure);
   // A claimed failure whose point is far off stays a failure.
   CHECK(at(1e-3, Status::kIterationLimit).status == Status::kIterationLimit);
@@ -98,7 +101,9 @@ TEST_CASE("Residual definitions by hand", "[finalize][residuals]") {
   // M = [[1, -2], [3, 4]], q = (1, -20), z = (2, 3):
   // w = (2 - 6 + 1, 6 + 12 - 20) = (-3, -2); min(z, w) = (-3, -2) -> natural_abs 3 at index 0;
   // |z_i w_i| = (6, 6) -> 6; min z = 2; min w = -3;
-  // |M||z| = (2 + 6, 6 + 12) = (8, 18); scale = 1 + max(20, 18) = 21.
+  // Units: ||q|| = 20, ||M||_max = 4, z_ref = 5, ||z|| = 3, Z = max(3, 5) = 5;
+  // row sums (3, 7); s = (1 + 3 min(3, 5), 20 + 7 min(3, 5)) = (10, 41);
+  // zn = (0.4, 0.6), wn = (-0.3, -2/41) (less rounding ~1e-15): residual 0.3 at index 0.
   const LcpProblem p(Mat{{1, -2}, {3, 4}}, Vec{{1, -20}});
   Vec w;
   const auto r = cpkit::lcp_residuals(p, Vec{{2, 3}}, w);
@@ -108,8 +113,9 @@ TEST_CASE("Residual definitions by hand", "[finalize][residuals]") {
   CHECK(r.complementarity == 6.0);
   CHECK(r.min_z == 2.0);
   CHECK(r.min_w == -3.0);
-  CHECK(r.scale == 21.0);
-  CHECK(r.natural == Approx(3.0 / 21.0));
+  CHECK(r.scale == 41.0);
+  CHECK(r.z_scale == 5.0);
+  CHECK(r.natural == Approx(0.3).epsilon(1e-12));
   // Sparse storage gives the same numbers.
   LcpProblem sp;
   sp.M_sparse = p.M.sparseView();
@@ -117,7 +123,8 @@ TEST_CASE("Residual definitions by hand", "[finalize][residuals]") {
   Vec w2;
   const auto r2 = cpkit::lcp_residuals(sp, Vec{{2, 3}}, w2);
   CHECK(w2 == w);
-  CHECK(r2.scale == 21.0);
+  CHECK(r2.scale == 41.0);
+  CHECK(r2.natural == r.natural);
   CHECK(r2.natural_abs == 3.0);
 }
 
@@ -150,8 +157,10 @@ TEST_CASE("Infeasibility certificates are re-checked from the data", "[finalize]
     REQUIRE(r.status == Status::kInfeasible);
     REQUIRE(r.certificate);
     CHECK(r.certificate->checked);
-    CHECK(r.certificate->y == Vec{{1, 1}});  // scaled to ||y||_inf = 1
-    CHECK(r.certificate->q_dot_y == -2.0);
+    // scaled by a power of two (exactly) to ||y||_inf in [1, 2): 3 / 2 = 1.5
+    CHECK(r.certificate->y == Vec{{1.5, 1.5}});
+    CHECK(r.certificate->exact);
+    CHECK(r.certificate->q_dot_y == -3.0);
     CHECK(r.certificate->max_MTy == 0.0);
   }
   SECTION("refuted certificates become numerical failures") {
@@ -215,14 +224,16 @@ TEST_CASE("MCP finalize evaluates F and respects its domain", "[finalize][mcp]")
 
 TEST_CASE("A diverging iterate is never granted solved", "[finalize][residuals]") {
   // infeasible_copositive_plus: M = [[1, -1], [-1, 1]], q = (-1, -1). Along z = (t, t),
-  // w = (-1, -1) for every t, so min(z, w) = -1 however large t is. A scale that grew with
-  // |M||z| would call z = (1e11, 1e11) "solved"; the data scale 1 + ||q|| = 2 does not.
+  // w = (-1, -1) for every t, so min(z, w) = -1 however large t is. A unit that grew with
+  // |M||z| would call z = (1e11, 1e11) "solved"; s_i = 1 + 2 min(t, z_ref = 1) = 3 does not:
+  // wn_i = -(1 - a_i) / 3 with the rounding allowance a_i = gamma_3 (2 t + 1).
   const LcpProblem p(Mat{{1, -1}, {-1, 1}}, Vec{{-1, -1}});
   for (double t : {1e3, 1e11, 1e14}) {
     CAPTURE(t);
     const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{t, t}}), {});
     CHECK(r.status == Status::kNumericalFailure);
-    CHECK(r.residuals.natural == Approx(0.5));
+    const double g = 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
+    CHECK(r.residuals.natural == Approx((1 - g * (2 * t + 1)) / 3).epsilon(1e-12));
   }
 }
 
@@ -230,11 +241,118 @@ TEST_CASE("A genuine solution with a huge z verifies through the rounding allowa
           "[finalize][residuals]") {
   // cps_example_4_4_16: M = [[1, -1], [-1, 1]], q = (1, -1); every z = (t, t + 1) solves it
   // (w = 0). At t = 1e12 the computed w carries rounding errors of order 1e-4, far above
-  // tol * (1 + ||q||); the allowance 2 n eps (|M||z| + |q|) covers exactly that.
+  // tol s_i; the per-row allowance gamma_3 (|M||z| + |q|)_i covers exactly that.
   const LcpProblem p(Mat{{1, -1}, {-1, 1}}, Vec{{1, -1}});
   const double t = 1e12;
   const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{t, t + 1}}), {});
   CHECK(cpkit::is_solution(r.status));
   CHECK(r.residuals.rounding > 0);
   CHECK(r.residuals.rounding < 1e-2);
+}
+
+TEST_CASE("Certificates: exact signs, no magnitude excuses a positive column", "[finalize][certificate]") {
+  SECTION("M = diag(1e11, 1), q = (1, -1) is solvable (z = (0, 1)): y = (0, 1) is refuted") {
+    // (M^T y)_2 = 1 > 0: a tolerance relative to max|M| = 1e11 would have excused it.
+    const LcpProblem p(Mat{{1e11, 0}, {0, 1}}, Vec{{1, -1}});
+    for (double big : {1e11, 1e200}) {
+      LcpProblem q = p;
+      q.M(0, 0) = big;
+      Certificate c;
+      c.y = Vec{{0, 1}};
+      CHECK_FALSE(cpkit::check_certificate(q, c));
+      c.y = Vec{{1e-20, 1}};
+      CHECK_FALSE(cpkit::check_certificate(q, c));
+    }
+  }
+  SECTION("a column that is positive by one unit in the last place is refuted") {
+    // M = [[1, -1], [-1, 1 + 2^-52]], y = (1, 1): (M^T y)_2 = 2^-52 > 0 exactly; q^T y = -2.
+    const LcpProblem p(Mat{{1, -1}, {-1, 1 + 0x1p-52}}, Vec{{-1, -1}});
+    Certificate c;
+    c.y = Vec{{1, 1}};
+    // Within rounding of forming M^T y (gamma_3 (|M|^T y)_2 ~ 6.7e-16 > 2.2e-16): accepted as
+    // a certificate of a problem within rounding, flagged not exact.
+    CHECK(cpkit::check_certificate(p, c));
+    CHECK_FALSE(c.exact);
+    // Ten thousand ulps are not rounding: refuted.
+    const LcpProblem far(Mat{{1, -1}, {-1, 1 + 1e4 * 0x1p-52}}, Vec{{-1, -1}});
+    c.y = Vec{{1, 1}};
+    CHECK_FALSE(cpkit::check_certificate(far, c));
+  }
+  SECTION("a floating-point y of a rational certificate is snapped and proven exactly") {
+    // M = [[4, 4, -6], [4, 8, -6], [-6, -6, 9]] (PSD), q = (0, 1, -1): y = (3, 0, 2) / 3 gives
+    // M^T y = 0 and q^T y = -2/3 exactly; 2/3 is not a double, so the stored y must be snapped.
+    const LcpProblem p(Mat{{4, 4, -6}, {4, 8, -6}, {-6, -6, 9}}, Vec{{0, 1, -1}});
+    Certificate c;
+    c.y = Vec{{1.0, 0.0, 2.0 / 3.0}};
+    REQUIRE(cpkit::check_certificate(p, c));
+    CHECK(c.exact);
+    CHECK(c.max_MTy == 0.0);
+    CHECK(c.y[0] / c.y[2] == 1.5);
+  }
+  SECTION("the verdict does not depend on units") {
+    // M = [[-2, 1], [1, -2]], q = (-1, -1): y = (1, 1), M^T y = (-1, -1), q^T y = -2.
+    for (double a : {1e-300, 1e-12, 1.0, 1e12, 1e300}) {
+      for (double b : {1e-12, 1.0, 1e12}) {
+        if (!std::isfinite(a * b)) continue;  // q itself would not be representable
+        CAPTURE(a, b);
+        const LcpProblem p(b * Mat{{-2, 1}, {1, -2}}, a * b * Vec{{-1, -1}});
+        Certificate c;
+        c.y = Vec{{1, 1}};
+        CHECK(cpkit::check_certificate(p, c));
+        CHECK(c.exact);
+      }
+    }
+  }
+}
+
+TEST_CASE("Verdicts do not depend on units", "[finalize][units]") {
+  // M = [[2, 1], [1, 2]], q = (-5, -6): the unique solution is z = (4/3, 7/3).
+  const Mat M{{2, 1}, {1, 2}};
+  const Vec q{{-5, -6}}, zs{{4.0 / 3, 7.0 / 3}};
+  for (double a : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+    for (double b : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+      CAPTURE(a, b);
+      const LcpProblem p(b * M, a * b * q);
+      // The solution (scaled by a) is accepted, z = 0 never (however small q is), and a point
+      // off by 1e-3 relative is refuted, in every unit.
+      CHECK(cpkit::finalize(p, claim(Status::kSolved, a * zs), {}).status == Status::kSolved);
+      const auto zero = cpkit::finalize(p, claim(Status::kSolved, Vec::Zero(2)), {});
+      CHECK(zero.status == Status::kNumericalFailure);
+      CHECK(zero.residuals.natural == Approx(5.0 / 5.0).epsilon(1e-12));  // wn_0 = -5 / |q_0|
+      const auto off = cpkit::finalize(p, claim(Status::kSolved, a * zs * (1 + 1e-3)), {});
+      CHECK(off.status == Status::kNumericalFailure);
+      Vec w;
+      const auto r1 = cpkit::lcp_residuals(p, a * Vec{{1.0, 2.0}}, w);
+      const auto r0 = cpkit::lcp_residuals(LcpProblem(M, q), Vec{{1.0, 2.0}}, w);
+      CHECK(r1.natural == Approx(r0.natural).epsilon(1e-12));
+    }
+  }
+}
+
+TEST_CASE("A huge row excuses nothing in a small one; nothing non-finite is solved",
+          "[finalize][units]") {
+  SECTION("M = [[1e16, 0], [0, -1]], q = (1, -1) has no solution: w = (1.2e15, -1) is refuted") {
+    const LcpProblem p(Mat{{1e16, 0}, {0, -1}}, Vec{{1, -1}});
+    const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{0.12, 0}}), {});
+    CHECK(r.status == Status::kNumericalFailure);
+    CHECK(r.residuals.natural >= 1.0);  // row 1: wn = -1 / (1 + 1 min(0.12, 1e-16)) ~ -1
+  }
+  SECTION("M = I, q = (1e16, -1): z = 0 is refuted (the solution is (0, 1))") {
+    const LcpProblem p(Mat::Identity(2, 2), Vec{{1e16, -1}});
+    CHECK(cpkit::finalize(p, claim(Status::kSolved, Vec::Zero(2)), {}).status ==
+          Status::kNumericalFailure);
+    CHECK(cpkit::finalize(p, claim(Status::kSolved, Vec{{0, 0.5}}), {}).status ==
+          Status::kNumericalFailure);
+    CHECK(cpkit::finalize(p, claim(Status::kSolved, Vec{{0, 1}}), {}).status == Status::kSolved);
+  }
+  SECTION("overflowing |M||z| or NaN in w is never solved") {
+    const LcpProblem p(Mat{{1e300, -1e300}, {-1e300, 1e300}}, Vec{{1, -1}});
+    const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{1e300, 1e300}}), {});
+    CHECK(r.status == Status::kNumericalFailure);
+    const LcpProblem t(Mat{{1e-320}}, Vec{{-1}});
+    CHECK(cpkit::finalize(t, claim(Status::kSolved, Vec{{1e308}}), {}).status ==
+          Status::kNumericalFailure);
+    CHECK(cpkit::finalize(t, claim(Status::kSolved, Vec{{0}}), {}).status ==
+          Status::kNumericalFailure);
+  }
 }

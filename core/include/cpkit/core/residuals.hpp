@@ -6,10 +6,10 @@
 /// For LCP(M, q) and a candidate z (w = M z + q recomputed), row i is judged in its own units:
 ///   z_ref = ||q||_inf / ||M||_max      the data's own size of z (none when q = 0 or M = 0)
 ///   Z     = max(||z||_inf, z_ref)      the unit of every z_i (||z||_inf without z_ref)
-///   s_i   = |q_i| + ||M_i,:||_1 z_ref   the unit of w_i: what row i can err by when q_i is
-///           perturbed relative to itself and z within its unit (componentwise in q, normwise in
-///           z); it is fixed by the data, so it never grows with a diverging z (q = 0: ||z||_inf
-///           stands in for z_ref)
+///   s_i   = |q_i| + ||M_i,:||_1 min(||z||_inf, z_ref)
+///           the unit of w_i: what row i can err by when q_i is perturbed relative to itself and
+///           z within its own size (componentwise in q, normwise in z), capped at the size row i
+///           has when z has the data's own size, so that it never grows with a diverging z
 ///   a_i   = gamma_{n+1} ((|M| |z|)_i + |q_i|)   the worst-case rounding error of computing w_i
 ///           in double precision [Higham 2002, Sec. 3.1]; |w_i| <= a_i counts as 0, and a
 ///           larger |w_i| is reduced by a_i before it is divided by s_i
@@ -63,7 +63,7 @@ struct DataSizes {
 DataSizes data_sizes(const LcpProblem& p);
 /// Z of the header comment for a candidate with ||z||_inf = z_norm.
 double z_unit(const DataSizes& d, double z_norm);
-/// s of the header comment (z_norm = ||z||_inf is used only when q = 0); allocation-free when s
+/// s of the header comment for a candidate with ||z||_inf = z_norm; allocation-free when s
 /// already has size n.
 void w_units(const DataSizes& d, const Vec& q, double z_norm, Vec& s);
 /// |M| |z| (without q).
