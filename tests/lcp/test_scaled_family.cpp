@@ -1,0 +1,110 @@
+// The same problem in other units gets the same answer, from every solver (issue 11, part 1).
+// A seeded family of LCPs with unique solutions (integer symmetric positive definite M), the
+// solution known exactly from a rational brute-force enumeration (enumerate_brute_force.hpp,
+// independent of cpkit), is given to every registered solver in the units q -> a q and
+// (M, q) -> b (M, q) for a, b in {1e-12, 1e-6, 1, 1e6, 1e12}. Every answer must be `solved` and
+// equal a times the exact solution.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/registry.hpp"
+#include "cpkit/lcp/solvers.hpp"
+#include "lcp/enumerate_brute_force.hpp"
+
+namespace {
+
+using cpkit::LcpProblem;
+using cpkit::Mat;
+using cpkit::Vec;
+
+struct Case {
+  std::string name;
+  std::vector<std::vector<int>> M;
+  std::vector<int> q;
+};
+
+std::vector<Case> family() {
+  std::vector<Case> out;
+  // deudeu (Siconos' test problem) and the issue's first example in units of 1e-12.
+  out.push_back({"deudeu", {{2, 1}, {1, 2}}, {-5, -6}});
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> e(-2, 2), qd(-6, 6);
+  for (int k = 0; k < 4; ++k) {
+    const int n = 3 + k % 3;
+    std::vector<std::vector<int>> B(n, std::vector<int>(n)), M(n, std::vector<int>(n));
+    for (auto& row : B)
+      for (int& v : row) v = e(rng);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        int s = i == j ? 1 : 0;  // M = B^T B + I: symmetric positive definite
+        for (int r = 0; r < n; ++r) s += B[r][i] * B[r][j];
+        M[i][j] = s;
+      }
+    std::vector<int> q(n);
+    for (int& v : q) v = qd(rng);
+    q[0] = -std::abs(q[0]) - 1;  // at least one negative entry: z = 0 is not the solution
+    out.push_back({"spd" + std::to_string(k), M, q});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Every solver: same verdict and same (rescaled) solution in every unit",
+          "[units][solvers]") {
+  const auto& registry = cpkit::lcp::solvers();
+  for (const Case& c : family()) {
+    const brute::Exact ex = brute::brute_force(c.M, c.q);
+    REQUIRE(ex.vertices.size() == 1);  // a P-matrix: exactly one solution
+    const int n = static_cast<int>(c.q.size());
+    Mat M(n, n);
+    Vec q(n), zstar(n);
+    for (int i = 0; i < n; ++i) {
+      q[i] = c.q[i];
+      zstar[i] = ex.vertices[0][i].val();
+      for (int j = 0; j < n; ++j) M(i, j) = c.M[i][j];
+    }
+    for (const cpkit::SolverEntry& entry : registry.entries()) {
+      if (!entry.solve_lcp) continue;
+      for (double a : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+        for (double b : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+          CAPTURE(c.name, entry.info.name, a, b);
+          const LcpProblem p(b * M, a * b * q);
+          const cpkit::SolveResult r = entry.solve_lcp(p, cpkit::CommonOptions{});
+          INFO(r.message);
+          CHECK(r.status == cpkit::Status::kSolved);
+          if (r.z.size() == n)
+            CHECK((r.z / a - zstar).cwiseAbs().maxCoeff() <= 1e-8 * zstar.cwiseAbs().maxCoeff());
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("The issue's tiny problem: z = (4/3, 7/3) 1e-12, never z = 0", "[units][solvers]") {
+  const LcpProblem p(Mat{{2, 1}, {1, 2}}, Vec{{-5e-12, -6e-12}});
+  for (const cpkit::SolverEntry& entry : cpkit::lcp::solvers().entries()) {
+    if (!entry.solve_lcp) continue;
+    CAPTURE(entry.info.name);
+    const auto r = entry.solve_lcp(p, cpkit::CommonOptions{});
+    REQUIRE(r.status == cpkit::Status::kSolved);
+    CHECK(r.z[0] == Approx(4.0 / 3 * 1e-12).epsilon(1e-9));
+    CHECK(r.z[1] == Approx(7.0 / 3 * 1e-12).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("No solver claims a solution of M = [[1e16, 0], [0, -1]], q = (1, -1)",
+          "[units][solvers]") {
+  // w_2 = -z_2 - 1 < 0 for every z_2 >= 0: no solution; y = (0, 1) is an exact certificate.
+  const LcpProblem p(Mat{{1e16, 0}, {0, -1}}, Vec{{1, -1}});
+  for (const cpkit::SolverEntry& entry : cpkit::lcp::solvers().entries()) {
+    if (!entry.solve_lcp) continue;
+    CAPTURE(entry.info.name);
+    const auto r = entry.solve_lcp(p, cpkit::CommonOptions{});
+    INFO(r.message);
+    CHECK_FALSE(cpkit::is_solution(r.status));
+  }
+}
