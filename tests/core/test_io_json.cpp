@@ -103,3 +103,14 @@ TEST_CASE("JSON that is not UTF-8 is refused, messages stay UTF-8", "[io][json]"
   // The origin (a file name) may hold any bytes; the message is valid UTF-8.
   CHECK_THROWS_WITH(cpkit::parse_lcp_json("[", "\xff.json"), Contains("\xEF\xBF\xBD.json"));
 }
+
+TEST_CASE("JSON: M is allocated only once its n rows of n numbers are in the file", "[io][json]") {
+  // q with 100000 entries and 100000 empty rows: allocating M first would take 80 GB.
+  const std::size_t n = 100000;
+  std::string text = R"({"q": [0)";
+  for (std::size_t i = 1; i < n; ++i) text += ",0";
+  text += R"(], "M": [[])";
+  for (std::size_t i = 1; i < n; ++i) text += ",[]";
+  text += "]}";
+  fails_with(text, "M row 0 must be an array of 100000 numbers");
+}
