@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
@@ -48,23 +49,26 @@ class DatReader {
     throw InputError(origin_ + ":" + std::to_string(line) + ": " + message);
   }
 
-  /// The next token as an integer in [lo, hi]; `what` names it.
-  std::int64_t integer(const std::string& what, std::int64_t lo, std::int64_t hi) {
+  /// The next token as an integer in [lo, hi]. `what` names it: a string, or a callable that
+  /// makes the string (only called for a message, so that loops over entries stay cheap).
+  template <class What>
+  std::int64_t integer(const What& what, std::int64_t lo, std::int64_t hi) {
     const Token& t = take(what);
     std::int64_t v = 0;
     if (!io_text::parse_integer(t.text, v))
-      fail(t.line, "expected " + what + " (an integer), got '" + io_text::quoted(t.text) + "'");
+      fail(t.line, "expected " + name(what) + " (an integer), got '" + io_text::quoted(t.text) + "'");
     if (v < lo || v > hi)
-      fail(t.line, what + " is " + std::to_string(v) + ", expected " + range(lo, hi));
+      fail(t.line, name(what) + " is " + std::to_string(v) + ", expected " + range(lo, hi));
     return v;
   }
 
-  /// The next token as a finite double; `what` names it.
-  double real(const std::string& what) {
+  /// The next token as a finite double; `what` names it (as for integer()).
+  template <class What>
+  double real(const What& what) {
     const Token& t = take(what);
     double v = 0;
     if (const auto r = io_text::parse_real(t.text, v); r != io_text::Number::kOk)
-      fail(t.line, what + ": " + io_text::describe(r, t.text));
+      fail(t.line, name(what) + ": " + io_text::describe(r, t.text));
     return v;
   }
 
@@ -76,8 +80,16 @@ class DatReader {
   }
 
  private:
-  const Token& take(const std::string& what) {
-    if (done()) fail(line(), "the file ends where " + what + " was expected");
+  template <class What>
+  static std::string name(const What& what) {
+    if constexpr (std::is_invocable_v<const What&>)
+      return what();
+    else
+      return std::string(what);
+  }
+  template <class What>
+  const Token& take(const What& what) {
+    if (done()) fail(line(), "the file ends where " + name(what) + " was expected");
     return tokens_[next_++];
   }
   static std::string range(std::int64_t lo, std::int64_t hi) {
@@ -102,7 +114,7 @@ Mat read_dense(DatReader& r, std::int64_t n) {
   Mat M(n, n);
   for (std::int64_t c = 0; c < n; ++c)  // column-major: Siconos' matrix0 storage order
     for (std::int64_t i = 0; i < n; ++i)
-      M(i, c) = r.real("M(" + std::to_string(i) + ", " + std::to_string(c) + ")");
+      M(i, c) = r.real([&] { return "M(" + std::to_string(i) + ", " + std::to_string(c) + ")"; });
   return M;
 }
 
@@ -115,7 +127,8 @@ std::vector<std::int64_t> read_cumulative_sizes(DatReader& r, std::int64_t block
   int line = r.line();
   for (std::int64_t b = 0; b < blocks; ++b) {
     line = r.line();
-    const std::int64_t s = r.integer("the cumulative " + what + " size " + std::to_string(b), 1, n);
+    const std::int64_t s = r.integer(
+        [&] { return "the cumulative " + what + " size " + std::to_string(b); }, 1, n);
     if (s <= previous)
       r.fail(line, "cumulative " + what + " sizes must increase: " + std::to_string(s) +
                        " follows " + std::to_string(previous));
@@ -149,7 +162,7 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
     const std::int64_t hi = k == 0 ? 0 : nbblocks;
     const int line = r.line();
     row_ptr[static_cast<std::size_t>(k)] =
-        r.integer("block-row pointer " + std::to_string(k) + " (index1_data)", lo, hi);
+        r.integer([&] { return "block-row pointer " + std::to_string(k) + " (index1_data)"; }, lo, hi);
     if (k == filled1 - 1 && row_ptr[static_cast<std::size_t>(k)] != nbblocks)
       r.fail(line, "the last block-row pointer is " + std::to_string(row_ptr.back()) +
                        ", but the header announces " + std::to_string(nbblocks) + " blocks");
@@ -157,7 +170,8 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
   std::vector<std::int64_t> block_col(static_cast<std::size_t>(nbblocks));
   for (std::int64_t b = 0; b < nbblocks; ++b)
     block_col[static_cast<std::size_t>(b)] =
-        r.integer("the block column of block " + std::to_string(b) + " (index2_data)", 0, cols - 1);
+        r.integer([&] { return "the block column of block " + std::to_string(b) + " (index2_data)"; },
+                  0, cols - 1);
 
   std::vector<Eigen::Triplet<double>> entries;
   std::vector<std::int64_t> seen_in_row(static_cast<std::size_t>(cols), -1);  // cols <= n
@@ -172,7 +186,7 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
         r.fail(line, "block " + std::to_string(b) + " repeats block (" + std::to_string(br) + ", " +
                          std::to_string(bc) + ")");
       seen_in_row[static_cast<std::size_t>(bc)] = br;
-      r.integer("the number of block " + std::to_string(b), b, b);
+      r.integer([&] { return "the number of block " + std::to_string(b); }, b, b);
       const std::int64_t c0 = bc == 0 ? 0 : col_end[static_cast<std::size_t>(bc - 1)];
       const std::int64_t nc = col_end[static_cast<std::size_t>(bc)] - c0;
       const auto count = static_cast<std::uint64_t>(nr) * static_cast<std::uint64_t>(nc);
@@ -180,9 +194,10 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
                         std::to_string(b));
       for (std::int64_t k = 0; k < nr * nc; ++k) {  // column-major within the block
         const std::int64_t i = r0 + k % nr, j = c0 + k / nr;
-        const double v =
-            r.real("M(" + std::to_string(i) + ", " + std::to_string(j) + ") in block " +
-                   std::to_string(b));
+        const double v = r.real([&] {
+          return "M(" + std::to_string(i) + ", " + std::to_string(j) + ") in block " +
+                 std::to_string(b);
+        });
         entries.emplace_back(static_cast<int>(i), static_cast<int>(j), v);
       }
     }
@@ -229,7 +244,8 @@ LcpProblem parse_lcp_dat(const std::string& text, const std::string& origin_in) 
     p.M_sparse = read_sparse_block(r, n);
   r.need(static_cast<std::uint64_t>(n), "the " + std::to_string(n) + " entries of q");
   p.q.resize(n);
-  for (std::int64_t i = 0; i < n; ++i) p.q[i] = r.real("q[" + std::to_string(i) + "]");
+  for (std::int64_t i = 0; i < n; ++i)
+    p.q[i] = r.real([&] { return "q[" + std::to_string(i) + "]"; });
   if (!r.done()) {
     // Free text after q is a comment. A number there means the header undercounts the data.
     if (starts_with_number(tokens, r.position()))

@@ -138,9 +138,11 @@ std::string shown(const json& v) {
   return io_text::quoted(v.dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
-double json_number(const json& v, const std::string& origin, const std::string& where) {
+/// v as a double; `where()` names it in the message (made only on failure: loops stay cheap).
+template <class Where>
+double json_number(const json& v, const std::string& origin, const Where& where) {
   if (!v.is_number())
-    throw InputError(origin + ": " + where + " is not a number (got " + shown(v) + ")");
+    throw InputError(origin + ": " + where() + " is not a number (got " + shown(v) + ")");
   return v.get<double>();  // finite: the builder refused overflow; JSON has no nan/inf
 }
 
@@ -198,8 +200,9 @@ LcpProblem from_dense_fields(const json& j, const std::string& origin) {
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = 0; k < n; ++k)
       p.M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = json_number(
-          jm[i][k], origin, "M[" + std::to_string(i) + "][" + std::to_string(k) + "]");
-    p.q[static_cast<Eigen::Index>(i)] = json_number(jq[i], origin, "q[" + std::to_string(i) + "]");
+          jm[i][k], origin, [&] { return "M[" + std::to_string(i) + "][" + std::to_string(k) + "]"; });
+    p.q[static_cast<Eigen::Index>(i)] =
+        json_number(jq[i], origin, [&] { return "q[" + std::to_string(i) + "]"; });
   }
   return p;
 }
