@@ -29,7 +29,10 @@ void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step` (issu
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate` (issue 8)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
 
-/// Prints a JSON object to stdout (one line per object, pretty with indent 1).
-inline void print_json(const nlohmann::json& j) { std::cout << j.dump(1) << std::endl; }
+/// Prints a JSON object to stdout (one line per object, pretty with indent 1). Text that is not
+/// UTF-8 (e.g. from a file name) is printed with U+FFFD instead of failing.
+inline void print_json(const nlohmann::json& j) {
+  std::cout << j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+}
 
 }  // namespace cpkit::cli

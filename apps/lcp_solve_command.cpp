@@ -1,6 +1,6 @@
-// `cpkit lcp solve FILE [--solver NAME] [--json] [--tol T] [--max-iter K] [--time-limit S]
-//                       [--trace]`
-// Reads an LCP (.json or .dat), runs one solver from cpkit::lcp::solvers() and prints the result
+// `cpkit lcp solve FILE [--q QFILE] [--solver NAME] [--json] [--tol T] [--max-iter K]
+//                       [--time-limit S] [--trace]`
+// Reads an LCP (.json, Siconos .dat, or a Matrix Market M with its q), runs one solver from cpkit::lcp::solvers() and prints the result
 // (JSON object with --json, a short text report otherwise). Exit codes: 0 solved (solved or
 // solved_inaccurate), 1 the solve ran but found no solution, 2 bad input or usage (message on
 // stderr, nothing on stdout).
@@ -27,6 +27,7 @@ namespace {
 /// Command-line arguments of `lcp solve` (owned by the callback, alive during parse()).
 struct LcpSolveArgs {
   std::string file;
+  std::string q_file;  ///< --q: the q of a Matrix Market M (default FILE.q.mtx beside it)
   std::string solver = "lemke";
   bool json = false;
   double tol = CommonOptions{}.tol;
@@ -156,7 +157,7 @@ int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
 
 /// The whole action. Everything that can be bad input is checked before anything is printed.
 int run_lcp_solve(const LcpSolveArgs& a) {
-  const LcpProblem problem = read_lcp_file(a.file);  // validates; InputError names file/line
+  const LcpProblem problem = read_lcp_file(a.file, a.q_file);  // validates; names file/line
   const CommonOptions options = common_options(a);
   if (a.all_solvers) return run_all_lcp_solvers(a, problem, options);
   const SolverEntry& entry = find_lcp_solver(a.solver, problem);
@@ -172,9 +173,13 @@ int run_lcp_solve(const LcpSolveArgs& a) {
 
 void add_lcp_solve(CLI::App& lcp, Context& ctx) {
   auto args = std::make_shared<LcpSolveArgs>();
-  auto* cmd = lcp.add_subcommand("solve", "Solve an LCP 0 <= z _|_ Mz + q >= 0 from a .json or "
-                                          ".dat file");
-  cmd->add_option("FILE", args->file, "problem file (.json or Siconos .dat)")->required();
+  auto* cmd = lcp.add_subcommand("solve", "Solve an LCP 0 <= z _|_ Mz + q >= 0 from a .json, "
+                                          "Siconos .dat or Matrix Market .mtx file");
+  cmd->add_option("FILE", args->file,
+                  "problem file: .json, Siconos .dat, or a Matrix Market M (.mtx) whose q is in "
+                  "FILE.q.mtx beside it or given by --q")
+      ->required();
+  cmd->add_option("--q", args->q_file, "Matrix Market file holding q, for a Matrix Market M");
   cmd->add_option("--solver", args->solver,
                   "solver name from the registry (default lemke; valid: " + lcp_solver_list() +
                       ")");

@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages cpkit needs, only those that are missing.
-# Usage: scripts/setup-deps.sh [--bench]
+# Usage: scripts/setup-deps.sh [--bench] [--tests]
 #   --bench  also the peers the benchmarks compare against (Siconos numerics, lrslib).
+#   --tests  also the peers the test suite compares against: Siconos' own .dat reader and writer
+#            (python3-siconos, with python3-scipy for its sparse matrices). Without them the
+#            test core.test_io_siconos_peer is skipped, saying why.
 # Runs `apt-get update` once, and only when something is missing. Needs root (or sudo).
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
           catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy)
-if [[ "${1:-}" == "--bench" ]]; then
-  packages+=(libsiconos-numerics-dev lrslib)
-fi
+for arg in "$@"; do
+  case "$arg" in
+    --bench) packages+=(libsiconos-numerics-dev lrslib) ;;
+    --tests) packages+=(python3-siconos python3-scipy) ;;
+    *) echo "cpkit setup: unknown option $arg (valid: --bench, --tests)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

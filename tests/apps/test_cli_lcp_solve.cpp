@@ -85,9 +85,9 @@ TEST_CASE("cli: text report, trace, .dat input", "[cli]") {
   r = run_cli("lcp solve " + data("deudeu.json") + " --trace --json");
   REQUIRE(r.code == 0);
   CHECK(nlohmann::json::parse(r.out).at("trace").size() == 3);
-  // Siconos .dat, column-major: M = [[2, 1], [0, 3]] is stored as columns (2, 0), (1, 3).
-  // q = (-2, -3): z2 = 1 (w2 = 0), w1 = 2 z1 + 1 - 2 = 0 -> z1 = 1/2.
-  r = run_cli("lcp solve " + write("p.dat", "2\n2 0\n1 3\n-2 -3\n") + " --json");
+  // Siconos .dat (n, dense storage 0, sizes), column-major: M = [[2, 1], [0, 3]] is stored as
+  // columns (2, 0), (1, 3). q = (-2, -3): z2 = 1 (w2 = 0), w1 = 2 z1 + 1 - 2 = 0 -> z1 = 1/2.
+  r = run_cli("lcp solve " + write("p.dat", "2\n0\n2\n2\n2\t2\n2 0\n1 3\n-2 -3\n") + " --json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["z"][0].get<double>() == Approx(0.5));
@@ -130,8 +130,8 @@ TEST_CASE("cli: bad input and usage exit 2 with nothing on stdout", "[cli]") {
   // Messages name the problem.
   CHECK(run_cli("lcp solve " + data("deudeu.json") + " --solver nope").err.find("valid: lemke") !=
         std::string::npos);
-  CHECK(run_cli("lcp solve " + write("bad2.dat", "2\n1 2\n3 oops\n5 6\n")).err.find(":3:") !=
-        std::string::npos);
+  CHECK(run_cli("lcp solve " + write("bad2.dat", "2\n0\n2\n2\n2\t2\n1 2\n3 oops\n5 6\n"))
+            .err.find(":7:") != std::string::npos);
   CHECK(run_cli("lcp solve " + write("bad2.json", R"({"M": [[1, 2], [3]], "q": [1, 2]})"))
             .err.find("M row 1") != std::string::npos);
 }

@@ -1,0 +1,247 @@
+// JSON problem files: {"M": [[...], ...], "q": [...]} or {"M_mtx": ..., "q_mtx": ...}.
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/io.hpp"
+#include "io_text.hpp"
+
+namespace cpkit {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+/// 1-based line of byte `position` in `text`.
+int line_at(const std::string& text, std::size_t position) {
+  const auto end = text.begin() + static_cast<std::ptrdiff_t>(std::min(position, text.size()));
+  return 1 + static_cast<int>(std::count(text.begin(), end, '\n'));
+}
+
+/// Builds the document as nlohmann's own DOM parser does, with three refusals: nesting deeper
+/// than kMaxJsonDepth (the DOM's destructor and dump() recurse, so depth is bounded here, before
+/// the stack is), numbers that overflow or underflow to 0, and duplicate keys (which value
+/// would be meant?). Every refusal is an InputError naming the line.
+class BoundedDomBuilder final : public json::json_sax_t {
+ public:
+  BoundedDomBuilder(json& root, const std::string& text, const std::string& origin)
+      : root_(root), text_(text), origin_(origin) {}
+
+  bool null() override { return put(json(nullptr)) != nullptr; }
+  bool boolean(bool b) override { return put(json(b)) != nullptr; }
+  bool number_integer(number_integer_t v) override { return put(json(v)) != nullptr; }
+  bool number_unsigned(number_unsigned_t v) override { return put(json(v)) != nullptr; }
+  bool number_float(number_float_t v, const string_t& raw) override {
+    double parsed = 0;
+    if (const auto r = io_text::parse_real(raw, parsed); r == io_text::Number::kUnderflow)
+      fail(io_text::describe(r, raw));
+    return put(json(v)) != nullptr;
+  }
+  bool string(string_t& s) override { return put(json(std::move(s))) != nullptr; }
+  bool binary(binary_t&) override { fail("binary values are not JSON text"); }
+  bool start_object(std::size_t) override { return open(json::object()); }
+  bool key(string_t& k) override {
+    if (stack_.back()->contains(k)) fail("duplicate field \"" + io_text::quoted(k) + "\"");
+    key_ = std::move(k);
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(json::array()); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& ex) override {
+    position_ = position;
+    if (ex.id == 406)  // out_of_range.406: a number beyond the range of double
+      fail(io_text::describe(io_text::Number::kOverflow, last_token));
+    fail("malformed JSON: " + io_text::valid_utf8(ex.what()));
+  }
+  /// Bytes the lexer has read so far (updated by CountingIterator): the position of messages.
+  std::size_t position_ = 0;
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(origin_ + ":" + std::to_string(line_at(text_, position_)) + ": " + what);
+  }
+  /// Stores v where the parser is (root, next array element, or the current key).
+  json* put(json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      top.push_back(std::move(v));
+      return &top.back();
+    }
+    json& slot = top[key_];
+    slot = std::move(v);
+    return &slot;
+  }
+  bool open(json&& container) {
+    if (static_cast<int>(stack_.size()) >= kMaxJsonDepth)
+      fail("nesting deeper than " + std::to_string(kMaxJsonDepth) +
+           " levels (an LCP file needs 3: {\"M\": [[...]]})");
+    stack_.push_back(put(std::move(container)));
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  json& root_;
+  const std::string& text_;
+  const std::string& origin_;
+  std::vector<json*> stack_;  // open containers; a parent never grows while its child is open
+  string_t key_;
+};
+
+/// A character iterator that records how far the lexer has read, so that the builder's
+/// messages can name the line.
+struct CountingIterator {
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+  const char* at = nullptr;
+  const char* begin = nullptr;
+  std::size_t* consumed = nullptr;
+  reference operator*() const { return *at; }
+  CountingIterator& operator++() {
+    ++at;
+    *consumed = static_cast<std::size_t>(at - begin);
+    return *this;
+  }
+  bool operator==(const CountingIterator& o) const { return at == o.at; }
+  bool operator!=(const CountingIterator& o) const { return at != o.at; }
+};
+
+json parse_bounded(const std::string& text, const std::string& origin) {
+  json root;
+  BoundedDomBuilder builder(root, text, origin);
+  const char* b = text.data();
+  const CountingIterator first{b, b, &builder.position_};
+  const CountingIterator last{b + text.size(), b, &builder.position_};
+  json::sax_parse(first, last, &builder);
+  return root;
+}
+
+/// A JSON value for a message: its dump, shortened.
+std::string shown(const json& v) {
+  return io_text::quoted(v.dump(-1, ' ', false, json::error_handler_t::replace));
+}
+
+/// v as a double; `where()` names it in the message (made only on failure: loops stay cheap).
+template <class Where>
+double json_number(const json& v, const std::string& origin, const Where& where) {
+  if (!v.is_number())
+    throw InputError(origin + ": " + where() + " is not a number (got " + shown(v) + ")");
+  return v.get<double>();  // finite: the builder refused overflow; JSON has no nan/inf
+}
+
+const std::array<const char*, 8> kKnownFields = {"M", "q", "M_mtx", "q_mtx", "name",
+                                                 "note", "source", "expected"};
+
+void check_fields(const json& j, const std::string& origin) {
+  for (const auto& item : j.items()) {
+    const bool known = std::any_of(kKnownFields.begin(), kKnownFields.end(),
+                                   [&](const char* k) { return item.key() == k; });
+    if (!known)
+      throw InputError(origin + ": unknown field \"" + io_text::quoted(item.key()) +
+                       "\" (an LCP file has \"M\" and \"q\", or \"M_mtx\" and \"q_mtx\"; optional "
+                       "\"name\", \"note\", \"source\", \"expected\")");
+  }
+  for (const char* k : {"name", "note"})
+    if (j.contains(k) && !j[k].is_string())
+      throw InputError(origin + ": field \"" + k + "\" must be a string (got " + shown(j[k]) + ")");
+  const bool dense = j.contains("M") || j.contains("q");
+  const bool files = j.contains("M_mtx") || j.contains("q_mtx");
+  if (dense && files)
+    throw InputError(origin + ": give either \"M\" and \"q\" or \"M_mtx\" and \"q_mtx\", not both");
+}
+
+LcpProblem from_matrix_market_fields(const json& j, const std::string& origin) {
+  if (!j.contains("M_mtx") || !j.contains("q_mtx") || !j["M_mtx"].is_string() ||
+      !j["q_mtx"].is_string())
+    throw InputError(origin + ": \"M_mtx\" and \"q_mtx\" must both be file names");
+  const auto base = fs::path(origin).parent_path();
+  return read_lcp_matrix_market((base / j["M_mtx"].get<std::string>()).string(),
+                                (base / j["q_mtx"].get<std::string>()).string());
+}
+
+LcpProblem from_dense_fields(const json& j, const std::string& origin) {
+  if (!j.contains("M")) throw InputError(origin + ": missing field \"M\"");
+  if (!j.contains("q")) throw InputError(origin + ": missing field \"q\"");
+  const json& jm = j["M"];
+  const json& jq = j["q"];
+  if (!jq.is_array()) throw InputError(origin + ": field \"q\" must be an array of numbers");
+  if (!jm.is_array()) throw InputError(origin + ": field \"M\" must be an array of rows");
+  const std::size_t n = jq.size();
+  if (n == 0) throw InputError(origin + ": field \"q\" is empty");
+  if (jm.size() != n)
+    throw InputError(origin + ": field \"M\" has " + std::to_string(jm.size()) +
+                     " rows but \"q\" has " + std::to_string(n) + " entries");
+  // Every row is checked before M is allocated: the n x n entries must be in the file.
+  for (std::size_t i = 0; i < n; ++i)
+    if (!jm[i].is_array() || jm[i].size() != n)
+      throw InputError(origin + ": M row " + std::to_string(i) + " must be an array of " +
+                       std::to_string(n) + " numbers");
+  LcpProblem p;
+  const auto ni = static_cast<Eigen::Index>(n);
+  p.M.resize(ni, ni);
+  p.q.resize(ni);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < n; ++k)
+      p.M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = json_number(
+          jm[i][k], origin, [&] { return "M[" + std::to_string(i) + "][" + std::to_string(k) + "]"; });
+    p.q[static_cast<Eigen::Index>(i)] =
+        json_number(jq[i], origin, [&] { return "q[" + std::to_string(i) + "]"; });
+  }
+  return p;
+}
+
+}  // namespace
+
+LcpProblem parse_lcp_json(const std::string& text, const std::string& origin_in) {
+  const std::string origin = io_text::valid_utf8(origin_in);
+  const json j = parse_bounded(text, origin);
+  if (!j.is_object()) throw InputError(origin + ": top level must be an object with \"M\" and \"q\"");
+  check_fields(j, origin);
+  LcpProblem p = (j.contains("M_mtx") || j.contains("q_mtx")) ? from_matrix_market_fields(j, origin)
+                                                              : from_dense_fields(j, origin);
+  p.name = j.contains("name") ? j["name"].get<std::string>() : std::string();
+  p.note = j.contains("note") ? j["note"].get<std::string>() : std::string();
+  throw_if_invalid(p.validate(), origin);
+  return p;
+}
+
+LcpProblem read_lcp_json(const std::string& path) {
+  return parse_lcp_json(io_text::read_text(path), path);
+}
+
+void write_lcp_json(const LcpProblem& p, const std::string& path) {
+  json j;
+  if (!p.name.empty()) j["name"] = p.name;
+  if (!p.note.empty()) j["note"] = p.note;
+  const Mat m = p.dense_M();
+  j["M"] = json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index k = 0; k < m.cols(); ++k) row.push_back(m(i, k));
+    j["M"].push_back(row);
+  }
+  j["q"] = std::vector<double>(p.q.data(), p.q.data() + p.q.size());
+  std::ofstream out(path);
+  if (!out) throw InputError(io_text::valid_utf8(path) + ": cannot write file");
+  // Names and notes set in code may hold any bytes: write them as valid UTF-8.
+  out << j.dump(1, ' ', false, json::error_handler_t::replace) << '\n';
+}
+
+}  // namespace cpkit
