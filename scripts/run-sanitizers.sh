@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
+# scripts/run-tests.sh). Any sanitizer report fails the run: UBSan does not recover, ASan aborts.
+# LeakSanitizer is off: Ipopt and MUMPS keep static allocations alive until exit.
+# Build dir: ${CPKIT_SANITIZER_BUILD_DIR:-build-sanitize}.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/setup-deps.sh" --tests
+build="${CPKIT_SANITIZER_BUILD_DIR:-$root/build-sanitize}"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCPKIT_BUILD_BENCH=OFF \
+  "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" \
+  "${launcher[@]}" "$@" >/dev/null
+cmake --build "$build" -j "$(nproc)"
+cd "$build"
+export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The consumer test installs and rebuilds the package without sanitizers: run in the main suite.
+ctest --output-on-failure -j "$(nproc)" --timeout 1200 -E '^install\.'
