@@ -36,8 +36,10 @@ namespace {
 
 double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
+// Relative to the points' own size (no absolute floor: the same in any units; two zero vectors
+// are the same).
 bool same(const Vec& a, const Vec& b, double tol) {
-  const double s = 1 + std::max(a.lpNorm<Eigen::Infinity>(), b.lpNorm<Eigen::Infinity>());
+  const double s = std::max(a.lpNorm<Eigen::Infinity>(), b.lpNorm<Eigen::Infinity>());
   return (a - b).lpNorm<Eigen::Infinity>() <= tol * s;
 }
 

@@ -19,8 +19,8 @@
 ///      (locally), which reaches the ends and corners of solution continua that plain local
 ///      solvers rarely land on.
 /// Every answer goes through finalize() (inside each solver); only kSolved points are kept.
-/// Two points are the same solution when ||a - b||_inf <= dedup_tol (1 + max(||a||_inf,
-/// ||b||_inf)); the first one found is kept and its `hits` counted.
+/// Two points are the same solution when ||a - b||_inf <= dedup_tol max(||a||_inf, ||b||_inf)
+/// (relative: the same in any units); the first one found is kept and its `hits` counted.
 #include <cstdint>
 #include <string>
 #include <vector>
