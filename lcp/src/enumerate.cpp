@@ -576,9 +576,8 @@ class Engine {
         zz |= Mask(1) << j;
         continue;
       }
-      if (z(j) < -kGray * tol_ * zs) return;
-      if (z(j) < -tol_ * zs) verdict = 1;
-      if (std::abs(z(j)) <= tol_ * zs) tiny |= Mask(1) << j;
+      if (z(j) < -kGray * tol_ * zs) return;         // clearly negative against ||z||
+      if (z(j) <= tol_ * zs) tiny |= Mask(1) << j;  // tiny, or in the gray band
     }
     if (tiny && !settle_tiny(S, tiny, z, zz)) return;
     Vec w(n_);
@@ -629,11 +628,13 @@ class Engine {
     zero_w_.push_back(zw);
   }
 
-  /// Entries tiny against ||z||_inf (mask `tiny`) are zero when setting them all to zero keeps
-  /// every equation w_i = 0 (i in S, to 1e4 tol W_i) and the feasibility of every other w_i; else
-  /// each one is zero only when negligible in every row (|M_ij z_j| <= tol W_i), and one that
-  /// is not negligible keeps its value, its sign deciding (e.g. M = diag(1e200, 1): z_0 = -1e-200
-  /// moves w_0 by 1, so the candidate is infeasible). False when the candidate is infeasible.
+  /// Entries tiny against ||z||_inf or in the gray band below zero (mask `tiny`; a unit-free
+  /// backward-error decision rather than a comparison with ||z|| alone) are zero when setting
+  /// them all to zero keeps every equation w_i = 0 (i in S, to 1e4 tol W_i) and the
+  /// feasibility of every other w_i; else each one is zero only when negligible in every row
+  /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
+  /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
+  /// False when the candidate is infeasible.
   /// The same rule as SmallEnumerator::settle_tiny (enumerate_small.hpp).
   bool settle_tiny(Mask S, Mask tiny, Vec& z, Mask& zz) const {
     const Vec W = row_scales(z);

@@ -316,10 +316,8 @@ struct SmallEnumerator {
     unsigned zz = ~S & kAll, zw = S, tiny = 0;
     for (int j = 0; j < N; ++j) {
       if (!(S & (1u << j))) continue;
-      const int sgn = small_sign(z[j], zs, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(z[j]) <= tol * zs) tiny |= 1u << j;
+      if (small_sign(z[j], zs, tol) == 2) return;       // clearly negative against ||z||
+      if (z[j] <= tol * zs) tiny |= 1u << j;              // tiny, or in the gray band
     }
     if (tiny && !settle_tiny(S, tiny, z, zz)) return;
     double w[N];
@@ -366,11 +364,13 @@ struct SmallEnumerator {
     zero_w[p] = zw;
   }
 
-  /// Entries tiny against ||z||_inf (mask `tiny`) are zero when setting them all to zero keeps
-  /// every equation w_i = 0 (i in S, to 1e4 tol W_i) and the feasibility of every other w_i; else
-  /// each one is zero only when negligible in every row (|M_ij z_j| <= tol W_i), and one that
-  /// is not negligible keeps its value, its sign deciding (e.g. M = diag(1e200, 1): z_0 = -1e-200
-  /// moves w_0 by 1, so the candidate is infeasible). False when the candidate is infeasible.
+  /// Entries tiny against ||z||_inf or in the gray band below zero (mask `tiny`; a unit-free
+  /// backward-error decision rather than a comparison with ||z|| alone) are zero when setting
+  /// them all to zero keeps every equation w_i = 0 (i in S, to 1e4 tol W_i) and the
+  /// feasibility of every other w_i; else each one is zero only when negligible in every row
+  /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
+  /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
+  /// False when the candidate is infeasible.
   bool settle_tiny(unsigned S, unsigned tiny, double (&z)[N], unsigned& zz) const {
     double W[N];
     for (int i = 0; i < N; ++i) {
