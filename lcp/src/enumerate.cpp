@@ -56,7 +56,11 @@ class Deadline {
   bool hit_ = false;
 };
 constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its row/column
-constexpr double kPruneTol = 1e-9;   // a tableau row proves infeasibility below -kPruneTol * scale
+// A tableau row proves infeasibility when q'_r < -kPruneTol * |q'_r|-magnitude (the sum of the
+// absolute values of the q-terms that make up q'_r, a bound of its round-off scale) and no free
+// column can raise it (T(r, c) > tol * max_c |T(r, c)|). The q part and the T part are measured
+// separately: they have different units, and a tiny T(r, c) > 0 can raise any q'_r < 0.
+constexpr double kPruneTol = 1e-9;
 constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
 
 std::vector<int> basis_of(Mask S, int n) {
@@ -144,6 +148,7 @@ class Engine {
       L.row_of.resize(2 * n_);
       L.col_of.resize(2 * n_);
       L.row_scale.resize(n_);
+      L.qmag.resize(n_);
     }
     Level& L = levels_[0];
     for (int i = 0; i < n_; ++i) {
@@ -160,9 +165,10 @@ class Engine {
     L.unsafe = !reliable_data;
     make_order();
     for (int i = 0; i < n_; ++i) {
-      double sc = std::abs(q_(i));
+      double sc = 0;
       for (int j = 0; j < n_; ++j) sc = std::max(sc, std::abs(M_(i, j)));
       L.row_scale[i] = sc;
+      L.qmag[i] = std::abs(q_(i));
     }
   }
 
@@ -182,7 +188,8 @@ class Engine {
     std::vector<double> qv;
     std::vector<int> row_label, col_label;  // variable ids: z_j = j, w_j = n + j
     std::vector<int> row_of, col_of;        // inverse maps (-1: not there)
-    std::vector<double> row_scale;          // max(|qv_r|, max_c |T(r,c)|), kept by pivot()
+    std::vector<double> row_scale;          // max_c |T(r,c)|, kept by pivot()
+    std::vector<double> qmag;               // sum of |q-terms| of qv_r (its round-off scale)
     Mask pending = 0;  // decided in S, z_j still nonbasic (diagonal pivot vanished)
     bool unsafe = false;  // some entry overflowed (or the data are extreme): no pruning below
   };
@@ -222,6 +229,7 @@ class Engine {
     b.row_of = a.row_of;
     b.col_of = a.col_of;
     b.row_scale = a.row_scale;
+    b.qmag = a.qmag;
     b.pending = a.pending;
     b.unsafe = a.unsafe;
   }
@@ -232,7 +240,8 @@ class Engine {
     const double p = row[c];
     const double ip = 1.0 / p;
     L.qv[r] = -L.qv[r] * ip;
-    double sr = std::abs(L.qv[r]);
+    L.qmag[r] *= std::abs(ip);
+    double sr = 0;
     for (int k = 0; k < n_; ++k) {
       row[k] = -row[k] * ip;
       sr = std::max(sr, std::abs(row[k]));
@@ -245,7 +254,8 @@ class Engine {
       const double f = ri[c];
       if (f == 0) continue;
       L.qv[i] += f * L.qv[r];
-      double si = std::abs(L.qv[i]);
+      L.qmag[i] += std::abs(f) * L.qmag[r];
+      double si = 0;
       for (int k = 0; k < n_; ++k) {
         ri[k] += f * row[k];
         si = std::max(si, std::abs(ri[k]));
@@ -253,7 +263,8 @@ class Engine {
       ri[c] = f * ip;
       L.row_scale[i] = std::max(si, std::abs(ri[c]));
     }
-    for (int i = 0; i < n_; ++i) L.unsafe = L.unsafe || !(L.row_scale[i] <= kHuge);
+    for (int i = 0; i < n_; ++i)
+      L.unsafe = L.unsafe || !(L.row_scale[i] <= kHuge) || !(L.qmag[i] <= kHuge) || !finite(L.qv[i]);
     const int br = L.row_label[r], nc = L.col_label[c];
     L.row_label[r] = nc;
     L.col_label[c] = br;
@@ -320,19 +331,19 @@ class Engine {
     for (int r = 0; r < n_; ++r) {
       const double qr = L.qv[r];
       const double* row = &L.T[size_t(r) * n_];
-      const double s = L.row_scale[r];
+      const double s = L.row_scale[r], sq = L.qmag[r];
       if (only_col >= 0) {
         const double v = row[only_col];
-        if (!(qr < -kPruneTol * s && v > tol_ * s) && !(qr > kPruneTol * s && v < -tol_ * s))
+        if (!(qr < -kPruneTol * sq && v > tol_ * s) && !(qr > kPruneTol * sq && v < -tol_ * s))
           continue;
       }
       const int lab = L.row_label[r];
       const bool must_vanish = lab >= n_ && ((L.pending >> (lab - n_)) & 1u);
-      if (qr < -kPruneTol * s) {
+      if (qr < -kPruneTol * sq) {
         bool can_rise = false;
         for (int f = 0; f < nf && !can_rise; ++f) can_rise = row[free_[f]] > tol_ * s;
         if (!can_rise) return true;
-      } else if (must_vanish && qr > kPruneTol * s) {
+      } else if (must_vanish && qr > kPruneTol * sq) {
         bool can_fall = false;
         for (int f = 0; f < nf && !can_fall; ++f) can_fall = row[free_[f]] < -tol_ * s;
         if (!can_fall) return true;
@@ -377,11 +388,8 @@ class Engine {
       piece(S);
       return;
     }
-    for (int r = 0; r < n_; ++r) {
-      double s = std::abs(L.qv[r]);
-      for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(t(L, r, c)));
-      if (L.qv[r] < -kLeafTol * std::max(s, L.row_scale[r])) return;
-    }
+    for (int r = 0; r < n_; ++r)
+      if (L.qv[r] < -kLeafTol * L.qmag[r]) return;
     piece(S);
   }
 
@@ -399,11 +407,16 @@ class Engine {
       add_point(S, z);
       return;
     }
+    // rows equilibrated: each equation w_i = 0 has its own scale, so the rank decision must
+    // not compare the rows with each other (diag(1e-320, 1) is regular); x is unchanged
     Mat A(k, k);
     Vec b(k);
     for (int r = 0; r < k; ++r) {
-      for (int c = 0; c < k; ++c) A(r, c) = M_(idx[r], idx[c]);
-      b(r) = -q_(idx[r]);
+      double rm = 0;
+      for (int c = 0; c < k; ++c) rm = std::max(rm, std::abs(M_(idx[r], idx[c])));
+      if (!(rm > 0)) rm = 1;
+      for (int c = 0; c < k; ++c) A(r, c) = M_(idx[r], idx[c]) / rm;
+      b(r) = -q_(idx[r]) / rm;
     }
     Eigen::FullPivLU<Mat> lu(A);
     lu.setThreshold(tol_);
