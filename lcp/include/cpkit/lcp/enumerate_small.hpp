@@ -76,12 +76,22 @@ namespace detail {
 
 inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tests
 
+// Rare paths (degenerate or extreme candidates) are kept out of line so that the hot
+// add_point stays small enough to be inlined (bench/bench_enumerate.cpp, section 1).
+#if defined(__GNUC__) || defined(__clang__)
+#define CPKIT_SMALL_COLD __attribute__((noinline, cold))
+#define CPKIT_SMALL_HOT __attribute__((always_inline))
+#else
+#define CPKIT_SMALL_COLD
+#define CPKIT_SMALL_HOT
+#endif
+
 constexpr int small_popcount(unsigned x) noexcept {
   int c = 0;
   for (; x; x &= x - 1) ++c;
   return c;
 }
-inline double small_abs(double x) noexcept { return x < 0 ? -x : x; }
+inline double small_abs(double x) noexcept { return std::fabs(x); }
 inline double small_max(double a, double b) noexcept { return a < b ? b : a; }
 
 /// Outcome of a sign test v >= 0 at scale s: 0 pass, 1 ambiguous, 2 fail.
@@ -291,27 +301,30 @@ struct SmallEnumerator {
       : M(m), q(qq), out(o), tol(t) {}
 
   /// A candidate that double precision cannot represent or verify (never listed).
-  void unrepresentable() noexcept {
+  CPKIT_SMALL_COLD void unrepresentable() noexcept {
     ++out.unrepresentable;
     ++out.dropped;
+  }
+
+  /// A candidate with a non-finite entry: -inf is clearly negative (infeasible); +inf or NaN
+  /// is a value double cannot represent.
+  CPKIT_SMALL_COLD void non_finite_point(const double (&z)[N]) noexcept {
+    for (int j = 0; j < N; ++j)
+      if (z[j] < 0 && !small_finite(z[j])) return;
+    unrepresentable();
   }
 
   /// Judges the candidate z (z_i = 0 off S, w_i = 0 on S by construction) of piece S and
   /// stores it when feasible and new. Every test is relative to the scale of its own terms
   /// (||z||_inf for z, W_i = |q_i| + sum_j |M_ij z_j| for w_i), hence invariant under
   /// q -> a q and (M, q) -> b (M, q).
-  void add_point(unsigned S, double (&z)[N]) {
-    double zs = 0;
-    bool finite = true;
-    for (int j = 0; j < N; ++j) {
-      if (!(S & (1u << j))) { z[j] = 0; continue; }
-      if (!small_finite(z[j])) {
-        if (z[j] < 0) return;  // -inf: clearly negative
-        finite = false;        // +inf or NaN: z is not representable
-      }
+  CPKIT_SMALL_HOT void add_point(unsigned S, double (&z)[N]) {
+    double zs = 0, nf = 0;  // nf stays 0 when every z_j is finite (z_j - z_j is NaN otherwise)
+    for (int j = 0; j < N; ++j) {  // (z_j = 0 off S by construction)
       zs = small_max(zs, small_abs(z[j]));
+      nf += z[j] - z[j];
     }
-    if (!finite) { unrepresentable(); return; }
+    if (nf != 0) { non_finite_point(z); return; }
     int verdict = 0;
     unsigned zz = ~S & kAll, zw = S, tiny = 0;
     for (int j = 0; j < N; ++j) {
@@ -326,7 +339,8 @@ struct SmallEnumerator {
       double v = q(i), sc = small_abs(q(i));
       for (int j = 0; j < N; ++j)
         if (z[j] != 0) { v += M(i, j) * z[j]; sc += small_abs(M(i, j) * z[j]); }
-      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
+      // sc >= |every term of v|: a finite sc means a finite v (M and z are finite)
+      if (!(sc <= 1.7976931348623157e308)) { unrepresentable(); return; }
       const int sgn = small_sign(v, sc, tol);
       if (sgn == 2) return;
       verdict = sgn > verdict ? sgn : verdict;
@@ -352,10 +366,15 @@ struct SmallEnumerator {
     for (int i = 0; i < N; ++i) {
       if (!(S & (1u << i))) continue;
       double v = q(i), sc = small_abs(q(i));
-      for (int j = 0; j < N; ++j)
-        if (z[j] != 0) { v += M(i, j) * z[j]; sc += small_abs(M(i, j) * z[j]); }
-      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
-      if (!(small_abs(v) <= kSmallGray * tol * sc)) { ++out.ambiguous; return; }
+      for (int j = 0; j < N; ++j) {
+        const double t = M(i, j) * z[j];
+        v += t;
+        sc += small_abs(t);
+      }
+      if (!(small_abs(v) <= kSmallGray * tol * sc)) {  // (fails for inf and NaN too)
+        if (small_finite(sc) && small_finite(v)) ++out.ambiguous; else unrepresentable();
+        return;
+      }
     }
     if (out.num_points == kMax) { ++out.dropped; return; }
     const int p = out.num_points++;
@@ -371,22 +390,28 @@ struct SmallEnumerator {
   /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
   /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
   /// False when the candidate is infeasible.
-  bool settle_tiny(unsigned S, unsigned tiny, double (&z)[N], unsigned& zz) const {
-    double W[N];
-    for (int i = 0; i < N; ++i) {
-      double sc = small_abs(q(i));
-      for (int j = 0; j < N; ++j) sc += small_abs(M(i, j) * z[j]);
-      W[i] = sc;
+  CPKIT_SMALL_COLD bool settle_tiny(unsigned S, unsigned tiny, double (&z)[N], unsigned& zz) const {
+    unsigned nonzero = 0;
+    for (int j = 0; j < N; ++j)
+      if ((tiny & (1u << j)) && z[j] != 0) nonzero |= 1u << j;
+    if (!nonzero) {  // exact zeros: nothing changes
+      zz |= tiny;
+      return true;
     }
+    double W[N];
     bool consistent = true;
-    for (int i = 0; i < N && consistent; ++i) {
-      double v = q(i), vt = q(i);
+    for (int i = 0; i < N; ++i) {  // one pass: W_i, w_i at z, and w_i with the tiny entries zeroed
+      double sc = small_abs(q(i)), v = q(i), dv = 0;
       for (int j = 0; j < N; ++j) {
-        v += M(i, j) * z[j];
-        if (!(tiny & (1u << j))) vt += M(i, j) * z[j];
+        const double t = M(i, j) * z[j];
+        sc += small_abs(t);
+        v += t;
+        if (nonzero & (1u << j)) dv += t;
       }
-      consistent = (S & (1u << i)) ? small_abs(vt) <= kSmallGray * tol * W[i]
-                                   : (vt >= -tol * W[i]) == (v >= -tol * W[i]);
+      W[i] = sc;
+      const double vt = v - dv;
+      consistent = consistent && ((S & (1u << i)) ? small_abs(vt) <= kSmallGray * tol * sc
+                                                  : (vt >= -tol * sc) == (v >= -tol * sc));
     }
     if (consistent) {
       for (int j = 0; j < N; ++j)
@@ -411,7 +436,7 @@ struct SmallEnumerator {
 
   /// True when stored point p satisfies the zero claims zz (z_j = 0) and zw (w_i = 0) of a
   /// candidate found equal to it: the new claims hold at p within tol of their row scales.
-  bool merge_ok(int p, unsigned zz, unsigned zw) const {
+  CPKIT_SMALL_COLD bool merge_ok(int p, unsigned zz, unsigned zw) const {
     const unsigned nz = zz & ~zero_z[p], nw = zw & ~zero_w[p];
     if (!nz && !nw) return true;
     double W[N];
@@ -662,10 +687,16 @@ struct SmallEnumerator {
     }
   }
 
+  /// True when every entry is finite (z_j - z_j is 0 for finite z_j, NaN otherwise).
   static bool all_finite(const double (&z)[N]) noexcept {
-    bool ok = true;
-    for (int j = 0; j < N; ++j) ok = ok && small_finite(z[j]);
-    return ok;
+    double s = 0;
+    for (int j = 0; j < N; ++j) s += z[j] - z[j];
+    return s == 0;
+  }
+
+  /// singular_piece, kept out of line for the callers' hot paths (SmallPreparedLcp).
+  CPKIT_SMALL_COLD void singular_piece_cold(unsigned S, const int* idx, int k) {
+    singular_piece(S, idx, k);
   }
 
   void run() {

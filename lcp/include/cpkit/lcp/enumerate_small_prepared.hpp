@@ -153,14 +153,14 @@ class SmallPreparedLcp {
         continue;
       }
       if (s.kind == 3) {
-        en.singular_piece(S, s.idx, s.k);
+        en.singular_piece_cold(S, s.idx, s.k);
         continue;
       }
       double z[N] = {};
       if (s.kind == 1) {
         cramer(s, q, z);
         if (!en.all_finite(z)) {  // as enumerate_small: overflow in Cramer's products
-          en.singular_piece(S, s.idx, s.k);
+          en.singular_piece_cold(S, s.idx, s.k);
           continue;
         }
       }
@@ -446,7 +446,7 @@ class SmallPreparedLcp {
       z0[j] = v;
     }
     if (!en.all_finite(z0)) {  // overflow of P q: decide from the data as enumerate_small does
-      en.singular_piece(S, idx, k);
+      en.singular_piece_cold(S, idx, k);
       return;
     }
     out.ambiguous += s.pre_ambiguous;
