@@ -24,12 +24,22 @@
 ///   positive dimension iff it has two vertices or a ray; only inclusion-maximal pieces of
 ///   positive dimension are listed.
 ///
-/// Tolerance (scale-aware, `tol` relative): a value v of z_i is zero when |v| <= tol ||z||_inf,
-/// a value of w_i when |v| <= tol (|q_i| + sum_j |M_ij| |z_j|) (the size of the terms that make
-/// up w_i); a sign test fails clearly below -1e4 tol * scale, and values in the band between are
-/// counted in `ambiguous` (and rejected). A square block is singular when a complete-pivoting
-/// elimination meets a pivot <= tol * max|block|; pivots within 1e4 x of that are also counted
-/// as ambiguous. Two vertices are the same when they differ by <= 1e4 tol ||z||_inf.
+/// Tolerance (unit-free, `tol` relative; docs/enumeration.md, "Tolerance"): a value v of z_i is
+/// judged against ||z||_inf, a value of w_i against W_i = |q_i| + sum_j |M_ij| |z_j| (the size of
+/// the terms that make up w_i); a sign test fails clearly below -1e4 tol * scale, and w values in
+/// the band between are counted in `ambiguous` (and rejected). Entries of z tiny against ||z||
+/// (or in that band) are zero only when the data allow it: setting them to zero must keep the
+/// piece's equations w_i = 0 (to 1e4 tol W_i) and the feasibility of the other w_i, else each one
+/// is zero only when |M_ij z_j| <= tol W_i in every row, and a negative one that is not makes the
+/// candidate infeasible (M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1). A square block is
+/// singular when a complete-pivoting elimination meets a pivot <= tol * max|block| (or
+/// |det| <= 1e4 tol * sum |terms of det|); the vertex and ray systems of a singular piece are
+/// row-equilibrated first (their rows have the units of z_i or of w_i); pivots within 1e4 x of
+/// the threshold are counted as ambiguous. Two vertices are the same when they differ by
+/// <= 1e4 tol ||z||_inf and the stored one satisfies the other's zero claims. All these tests are
+/// invariant under q -> a q and (M, q) -> b (M, q).
+/// Values double cannot represent (a non-finite z, w or scale, e.g. z = 1e320 for M = [[1e-320]],
+/// q = [-1]) are never stored: they are counted in `unrepresentable` and `dropped`.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>

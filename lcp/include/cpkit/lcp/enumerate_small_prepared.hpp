@@ -28,6 +28,9 @@
 /// by round-off. tests/lcp/test_enumerate_small_prepared.cpp checks counts, supports, masks,
 /// flags and the ambiguous count for equality and values to 1e-12 relative, on random integer
 /// matrices (frequent singular blocks) and on the state-b rate LCP incl. a11 = mu |a12|.
+/// Supports whose M-only values overflow, a Cramer solve or a z0 = P q that overflows, are
+/// decided per call from the data by SmallEnumerator::singular_piece, exactly as
+/// enumerate_small decides them (values double cannot represent: `unrepresentable`).
 /// Allocation-free, fixed-size; enumerate() is const and thread-safe.
 #include <Eigen/Core>
 #include <array>
