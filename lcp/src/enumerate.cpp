@@ -36,6 +36,14 @@ constexpr double kHuge = std::numeric_limits<double>::max();
 
 bool finite(double x) { return std::abs(x) <= kHuge; }
 
+constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its row/column
+// A tableau row proves infeasibility when q'_r < -kPruneTol * |q'_r|-magnitude (the sum of the
+// absolute values of the q-terms that make up q'_r, a bound of its round-off scale) and no free
+// column can raise it (T(r, c) > tol * max_c |T(r, c)|). The q part and the T part are measured
+// separately: they have different units, and a tiny T(r, c) > 0 can raise any q'_r < 0.
+constexpr double kPruneTol = 1e-9;
+constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
+
 /// The wall-clock limit shared by every phase (search, pieces, post-processing).
 class Deadline {
  public:
@@ -55,13 +63,6 @@ class Deadline {
   long long calls_ = 0;
   bool hit_ = false;
 };
-constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its row/column
-// A tableau row proves infeasibility when q'_r < -kPruneTol * |q'_r|-magnitude (the sum of the
-// absolute values of the q-terms that make up q'_r, a bound of its round-off scale) and no free
-// column can raise it (T(r, c) > tol * max_c |T(r, c)|). The q part and the T part are measured
-// separately: they have different units, and a tiny T(r, c) > 0 can raise any q'_r < 0.
-constexpr double kPruneTol = 1e-9;
-constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
 
 std::vector<int> basis_of(Mask S, int n) {
   std::vector<int> b(n);
