@@ -27,7 +27,7 @@ struct LcpEnumerateArgs {
   std::string file;
   bool json = false;
   double tol = lcp::EnumerationOptions{}.tol;
-  double time_limit_s = 1e300;
+  double time_limit_s = lcp::EnumerationOptions{}.time_limit_s;
   int max_size = lcp::EnumerationOptions{}.max_size;
 };
 
@@ -128,7 +128,7 @@ void add_lcp_enumerate(CLI::App& lcp, Context& ctx) {
   cmd->add_flag("--json", args->json, "print one JSON object on stdout");
   cmd->add_option("--tol", args->tol, "relative tolerance of the sign tests (default 1e-12)");
   cmd->add_option("--time-limit", args->time_limit_s,
-                  "wall-clock limit in seconds (then complete = false)");
+                  "wall-clock limit in seconds, every phase (default 60; then complete = false)");
   cmd->add_option("--max-size", args->max_size,
                   "largest n accepted (default 24, at most 30; larger n is bad input)");
   cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_enumerate(*args); });

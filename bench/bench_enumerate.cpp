@@ -10,7 +10,8 @@
 // Times are CPU times (CLOCK_THREAD_CPUTIME_ID for in-process work, getrusage(RUSAGE_CHILDREN)
 // user+sys for lrsnash, which includes its process start), best of the repetitions, so that
 // other jobs on the shared machine disturb them less than wall-clock times.
-// Usage: bench_enumerate [--quick]. Output: Markdown (docs/benchmarks/enumeration.md).
+// Usage: bench_enumerate [--quick] [--tiny] (--tiny: section (1) only). Output: Markdown
+// (docs/benchmarks/enumeration.md).
 #include <sys/resource.h>
 #include <sys/wait.h>
 
@@ -327,12 +328,15 @@ void bench_games(bool quick) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
-  for (int a = 1; a < argc; ++a)
+  bool quick = false, tiny_only = false;
+  for (int a = 1; a < argc; ++a) {
     if (std::strcmp(argv[a], "--quick") == 0) quick = true;
+    if (std::strcmp(argv[a], "--tiny") == 0) tiny_only = true;
+  }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   std::printf("# LCP enumeration benchmark%s\n\n", quick ? " (--quick)" : "");
   bench_tiny(quick);
+  if (tiny_only) return 0;
   bench_random(quick);
   bench_games(quick);
   return 0;

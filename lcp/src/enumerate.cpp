@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_set>
 
@@ -32,9 +33,37 @@ namespace {
 
 using Mask = std::uint32_t;
 constexpr double kGray = 1e4;        // gray band of the sign tests (as enumerate_small)
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+bool finite(double x) { return std::abs(x) <= kHuge; }
+
 constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its row/column
-constexpr double kPruneTol = 1e-9;   // a tableau row proves infeasibility below -kPruneTol * scale
+// A tableau row proves infeasibility when q'_r < -kPruneTol * |q'_r|-magnitude (the sum of the
+// absolute values of the q-terms that make up q'_r, a bound of its round-off scale) and no free
+// column can raise it (T(r, c) > tol * max_c |T(r, c)|). The q part and the T part are measured
+// separately: they have different units, and a tiny T(r, c) > 0 can raise any q'_r < 0.
+constexpr double kPruneTol = 1e-9;
 constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
+
+/// The wall-clock limit shared by every phase (search, pieces, post-processing).
+class Deadline {
+ public:
+  explicit Deadline(double limit_s) : limit_(limit_s) {}
+  /// True once the limit has passed (checks the clock every `every` calls).
+  bool passed(int every = 1) {
+    if (hit_) return true;
+    if (++calls_ % every != 0) return false;
+    hit_ = clock_.seconds() > limit_;
+    return hit_;
+  }
+  bool hit() const { return hit_; }
+
+ private:
+  Stopwatch clock_;
+  double limit_;
+  long long calls_ = 0;
+  bool hit_ = false;
+};
 
 std::vector<int> basis_of(Mask S, int n) {
   std::vector<int> b(n);
@@ -49,22 +78,28 @@ std::vector<int> indices_of(Mask S, int n) {
   return idx;
 }
 
-/// Directions of the pieces: rays, and vertex-pair differences (deduplicated, ||d||_inf = 1).
-void fill_directions(SolutionSet& out) {
+/// Directions of the pieces: rays, and vertex-pair differences (deduplicated, ||d||_inf = 1;
+/// two directions are the same when they differ by <= 1e4 tol, relative to ||d|| = 1).
+/// False when the deadline stopped it (the list is then partial).
+bool fill_directions(SolutionSet& out, Deadline& deadline) {
+  const double same = kGray * out.tol;
   auto add = [&](Vec d) {
     const double big = d.cwiseAbs().maxCoeff();
-    if (!(big > 0)) return;
+    if (!(big > 0) || !finite(big)) return;
     d /= big;
     for (const Vec& e : out.directions)
-      if ((e - d).cwiseAbs().maxCoeff() <= 1e-9 || (e + d).cwiseAbs().maxCoeff() <= 1e-9) return;
+      if ((e - d).cwiseAbs().maxCoeff() <= same || (e + d).cwiseAbs().maxCoeff() <= same) return;
     out.directions.push_back(d);
   };
   for (const SolutionPiece& p : out.pieces) {
     for (const Vec& r : p.rays) add(r);
-    for (size_t a = 0; a < p.vertices.size(); ++a)
+    for (size_t a = 0; a < p.vertices.size(); ++a) {
+      if (deadline.passed()) return false;
       for (size_t b = a + 1; b < p.vertices.size(); ++b)
         add(out.solutions[p.vertices[b]].z - out.solutions[p.vertices[a]].z);
+    }
   }
+  return true;
 }
 
 template <int N>
@@ -90,16 +125,22 @@ void run_small(SolutionSet& out) {
   }
   out.infinite = s.infinite;
   out.ambiguous = s.ambiguous;
+  out.unrepresentable = s.unrepresentable;
   out.complete = s.dropped == 0;
-  if (!out.complete) out.message = "fixed-size capacity exceeded (" + std::to_string(s.dropped) + " dropped)";
+  if (s.dropped > s.unrepresentable)
+    out.message = "fixed-size capacity exceeded (" + std::to_string(s.dropped - s.unrepresentable) +
+                  " dropped)";
 }
 
 /// Depth-first search over complementary bases with principal pivot updates.
 class Engine {
  public:
-  Engine(const EnumerationOptions& opt, SolutionSet& out)
+  /// `reliable_data`: false when (M, q) span more than double's exponent range (then the
+  /// tableau, which is only used for pruning, is not trusted and every leaf is decided from
+  /// the data).
+  Engine(const EnumerationOptions& opt, SolutionSet& out, Deadline& deadline, bool reliable_data)
       : n_(static_cast<int>(out.q.size())), M_(out.M), q_(out.q), opt_(opt), tol_(opt.tol),
-        out_(out), decided_(n_, 0) {
+        out_(out), deadline_(deadline), decided_(n_, 0) {
     levels_.resize(n_ + 1);
     for (Level& L : levels_) {
       L.T.resize(size_t(n_) * n_);
@@ -109,6 +150,7 @@ class Engine {
       L.row_of.resize(2 * n_);
       L.col_of.resize(2 * n_);
       L.row_scale.resize(n_);
+      L.qmag.resize(n_);
     }
     Level& L = levels_[0];
     for (int i = 0; i < n_; ++i) {
@@ -122,11 +164,13 @@ class Engine {
       L.col_of[n_ + i] = -1;
     }
     L.pending = 0;
+    L.unsafe = !reliable_data;
     make_order();
     for (int i = 0; i < n_; ++i) {
-      double sc = std::abs(q_(i));
+      double sc = 0;
       for (int j = 0; j < n_; ++j) sc = std::max(sc, std::abs(M_(i, j)));
       L.row_scale[i] = sc;
+      L.qmag[i] = std::abs(q_(i));
     }
   }
 
@@ -135,6 +179,9 @@ class Engine {
     out_.nodes = nodes_;
     out_.leaves = leaves_;
     finish();
+    if (deadline_.hit() && out_.message.empty())
+      out_.message = "time limit reached after " + std::to_string(nodes_) + " nodes";
+    if (unrepresentable_ > 0) out_.unrepresentable += unrepresentable_;
   }
 
  private:
@@ -143,8 +190,10 @@ class Engine {
     std::vector<double> qv;
     std::vector<int> row_label, col_label;  // variable ids: z_j = j, w_j = n + j
     std::vector<int> row_of, col_of;        // inverse maps (-1: not there)
-    std::vector<double> row_scale;          // max(|qv_r|, max_c |T(r,c)|), kept by pivot()
+    std::vector<double> row_scale;          // max_c |T(r,c)|, kept by pivot()
+    std::vector<double> qmag;               // sum of |q-terms| of qv_r (its round-off scale)
     Mask pending = 0;  // decided in S, z_j still nonbasic (diagonal pivot vanished)
+    bool unsafe = false;  // some entry overflowed (or the data are extreme): no pruning below
   };
 
   double& t(Level& L, int r, int c) { return L.T[size_t(r) * n_ + c]; }
@@ -182,7 +231,9 @@ class Engine {
     b.row_of = a.row_of;
     b.col_of = a.col_of;
     b.row_scale = a.row_scale;
+    b.qmag = a.qmag;
     b.pending = a.pending;
+    b.unsafe = a.unsafe;
   }
 
   /// Exchanges the basic variable of row r with the nonbasic variable of column c.
@@ -191,7 +242,8 @@ class Engine {
     const double p = row[c];
     const double ip = 1.0 / p;
     L.qv[r] = -L.qv[r] * ip;
-    double sr = std::abs(L.qv[r]);
+    L.qmag[r] *= std::abs(ip);
+    double sr = 0;
     for (int k = 0; k < n_; ++k) {
       row[k] = -row[k] * ip;
       sr = std::max(sr, std::abs(row[k]));
@@ -204,7 +256,8 @@ class Engine {
       const double f = ri[c];
       if (f == 0) continue;
       L.qv[i] += f * L.qv[r];
-      double si = std::abs(L.qv[i]);
+      L.qmag[i] += std::abs(f) * L.qmag[r];
+      double si = 0;
       for (int k = 0; k < n_; ++k) {
         ri[k] += f * row[k];
         si = std::max(si, std::abs(ri[k]));
@@ -212,6 +265,8 @@ class Engine {
       ri[c] = f * ip;
       L.row_scale[i] = std::max(si, std::abs(ri[c]));
     }
+    for (int i = 0; i < n_; ++i)
+      L.unsafe = L.unsafe || !(L.row_scale[i] <= kHuge) || !(L.qmag[i] <= kHuge) || !finite(L.qv[i]);
     const int br = L.row_label[r], nc = L.col_label[c];
     L.row_label[r] = nc;
     L.col_label[c] = br;
@@ -271,25 +326,26 @@ class Engine {
   /// With only_col >= 0, only the rows in which that column could raise the basic variable
   /// are examined (the column has just stopped being free).
   bool prune(Level& L, int only_col = -1) {
+    if (L.unsafe) return false;  // overflowed tableau: prove nothing from it
     int nf = 0;
     for (int c = 0; c < n_; ++c)
       if (free_col(L, c)) free_[nf++] = c;
     for (int r = 0; r < n_; ++r) {
       const double qr = L.qv[r];
       const double* row = &L.T[size_t(r) * n_];
-      const double s = L.row_scale[r];
+      const double s = L.row_scale[r], sq = L.qmag[r];
       if (only_col >= 0) {
         const double v = row[only_col];
-        if (!(qr < -kPruneTol * s && v > tol_ * s) && !(qr > kPruneTol * s && v < -tol_ * s))
+        if (!(qr < -kPruneTol * sq && v > tol_ * s) && !(qr > kPruneTol * sq && v < -tol_ * s))
           continue;
       }
       const int lab = L.row_label[r];
       const bool must_vanish = lab >= n_ && ((L.pending >> (lab - n_)) & 1u);
-      if (qr < -kPruneTol * s) {
+      if (qr < -kPruneTol * sq) {
         bool can_rise = false;
         for (int f = 0; f < nf && !can_rise; ++f) can_rise = row[free_[f]] > tol_ * s;
         if (!can_rise) return true;
-      } else if (must_vanish && qr > kPruneTol * s) {
+      } else if (must_vanish && qr > kPruneTol * sq) {
         bool can_fall = false;
         for (int f = 0; f < nf && !can_fall; ++f) can_fall = row[free_[f]] < -tol_ * s;
         if (!can_fall) return true;
@@ -301,9 +357,8 @@ class Engine {
   void visit(int d, int cur, Mask S) {
     if (stopped_) return;
     ++nodes_;
-    if ((nodes_ & 1023) == 0 && clock_.exceeded(opt_.time_limit_s)) {
+    if (deadline_.passed(1024)) {
       stopped_ = true;
-      out_.message = "time limit reached after " + std::to_string(nodes_) + " nodes";
       return;
     }
     if (d == n_) {
@@ -331,21 +386,22 @@ class Engine {
 
   void leaf(Level& L, Mask S) {
     ++leaves_;
-    if (L.pending) {  // a block the 1x1 / 2x2 pivots could not resolve: decide from the data
+    if (L.pending || L.unsafe) {  // a block the 1x1 / 2x2 pivots could not resolve: decide from the data
       piece(S);
       return;
     }
-    for (int r = 0; r < n_; ++r) {
-      double s = std::abs(L.qv[r]);
-      for (int c = 0; c < n_; ++c) s = std::max(s, std::abs(t(L, r, c)));
-      if (L.qv[r] < -kLeafTol * std::max(s, L.row_scale[r])) return;
-    }
+    for (int r = 0; r < n_; ++r)
+      if (L.qv[r] < -kLeafTol * L.qmag[r]) return;
     piece(S);
   }
 
   /// Solutions of piece S decided from the original data: a point when M_SS is nonsingular,
   /// otherwise vertices and rays in the null space of M_SS.
   void piece(Mask S) {
+    if (deadline_.passed(16)) {  // a leaf may cost C(n, m) solves: the limit holds here too
+      stopped_ = true;
+      return;
+    }
     const std::vector<int> idx = indices_of(S, n_);
     const int k = static_cast<int>(idx.size());
     Vec z = Vec::Zero(n_);
@@ -353,11 +409,16 @@ class Engine {
       add_point(S, z);
       return;
     }
+    // rows equilibrated: each equation w_i = 0 has its own scale, so the rank decision must
+    // not compare the rows with each other (diag(1e-320, 1) is regular); x is unchanged
     Mat A(k, k);
     Vec b(k);
     for (int r = 0; r < k; ++r) {
-      for (int c = 0; c < k; ++c) A(r, c) = M_(idx[r], idx[c]);
-      b(r) = -q_(idx[r]);
+      double rm = 0;
+      for (int c = 0; c < k; ++c) rm = std::max(rm, std::abs(M_(idx[r], idx[c])));
+      if (!(rm > 0)) rm = 1;
+      for (int c = 0; c < k; ++c) A(r, c) = M_(idx[r], idx[c]) / rm;
+      b(r) = -q_(idx[r]) / rm;
     }
     Eigen::FullPivLU<Mat> lu(A);
     lu.setThreshold(tol_);
@@ -366,6 +427,10 @@ class Engine {
     const int m = k - static_cast<int>(lu.rank());
     if (m == 0) {
       add_point(S, z);
+      return;
+    }
+    if (!z.allFinite()) {  // overflow: nothing below can be decided
+      ++unrepresentable_;
       return;
     }
     // consistency: -q_S in the range of M_SS (backward-error scale |q_i| + ||M_i.||_1 ||z0||_inf:
@@ -377,6 +442,10 @@ class Engine {
       for (int j = 0; j < n_; ++j) {
         v += M_(i, j) * z(j);
         sc += std::abs(M_(i, j)) * z0n;
+      }
+      if (!finite(sc) || !finite(v)) {
+        ++unrepresentable_;
+        return;
       }
       if (std::abs(v) > kGray * tol_ * sc) return;  // empty piece
       if (std::abs(v) > tol_ * sc) {
@@ -394,6 +463,10 @@ class Engine {
     }
     singular_.push_back(S);
     const Mat K = lu.kernel();  // k x m
+    if (!K.allFinite()) {
+      ++unrepresentable_;
+      return;
+    }
     Mat N = Mat::Zero(n_, m);
     for (int c = 0; c < k; ++c) N.row(idx[c]) = K.row(c);
     // constraints g_i(t) = b_i + G_i t >= 0: z_i on S, w_i off S
@@ -424,12 +497,24 @@ class Engine {
         if (std::abs(g0(i)) <= tol_ * sz) g0(i) = 0;
       }
     }
+    if (!G.allFinite() || !g0.allFinite()) {
+      ++unrepresentable_;
+      return;
+    }
+    // each row of G has the units of its own z_i or w_i: the systems below are row-equilibrated
+    // so that their rank decisions are invariant under (M, q) -> b (M, q)
+    Vec gmax(n_);
+    for (int i = 0; i < n_; ++i) gmax(i) = G.row(i).cwiseAbs().maxCoeff();
     // vertices: m active constraints; rays: m - 1
     std::vector<int> comb;
     auto for_each_subset = [&](int size, auto&& fn) {
       comb.resize(size);
       for (int j = 0; j < size; ++j) comb[j] = j;
       while (true) {
+        if (deadline_.passed(64)) {
+          stopped_ = true;
+          return;
+        }
         fn();
         int j = size - 1;
         while (j >= 0 && comb[j] == n_ - size + j) --j;
@@ -442,11 +527,11 @@ class Engine {
       Mat E(m, m);
       Vec e(m);
       for (int r = 0; r < m; ++r) {
-        E.row(r) = G.row(comb[r]);
-        e(r) = -g0(comb[r]);
+        const double gm = gmax(comb[r]);
+        if (gm == 0) return;  // constant on the piece
+        E.row(r) = G.row(comb[r]) / gm;
+        e(r) = -g0(comb[r]) / gm;
       }
-      for (int r = 0; r < m; ++r)
-        if (E.row(r).cwiseAbs().maxCoeff() == 0) return;  // constant on the piece
       Eigen::FullPivLU<Mat> l2(E);
       l2.setThreshold(tol_);
       if (l2.rank() < m) return;
@@ -462,7 +547,11 @@ class Engine {
     }
     for_each_subset(m - 1, [&] {
       Mat E(m - 1, m);
-      for (int r = 0; r < m - 1; ++r) E.row(r) = G.row(comb[r]);
+      for (int r = 0; r < m - 1; ++r) {
+        const double gm = gmax(comb[r]);
+        if (gm == 0) return;  // a zero row: rank < m - 1
+        E.row(r) = G.row(comb[r]) / gm;
+      }
       Eigen::FullPivLU<Mat> l2(E);
       l2.setThreshold(tol_);
       if (l2.rank() < m - 1) return;
@@ -474,36 +563,56 @@ class Engine {
     });
   }
 
+  /// Judges the candidate z of piece S (z_i = 0 off S, w_i = 0 on S by construction) from the
+  /// data and stores it when feasible and new; the same tests as SmallEnumerator::add_point
+  /// (enumerate_small.hpp): relative to ||z||_inf and W_i = |q_i| + sum_j |M_ij z_j|.
   void add_point(Mask S, Vec& z) {
-    const double zs = z.cwiseAbs().maxCoeff();
-    int verdict = 0;
-    Mask zz = 0, zw = 0;
+    double zs = 0;
+    bool ok = true;
     for (int j = 0; j < n_; ++j) {
       if (!((S >> j) & 1u)) {
         z(j) = 0;
+        continue;
+      }
+      if (!finite(z(j))) {
+        if (z(j) < 0) return;  // -inf: clearly negative
+        ok = false;            // +inf or NaN: not representable
+      }
+      zs = std::max(zs, std::abs(z(j)));
+    }
+    if (!ok) {
+      ++unrepresentable_;
+      return;
+    }
+    int verdict = 0;
+    Mask zz = 0, zw = 0, tiny = 0;
+    for (int j = 0; j < n_; ++j) {
+      if (!((S >> j) & 1u)) {
         zz |= Mask(1) << j;
         continue;
       }
-      if (z(j) < -kGray * tol_ * zs) return;
-      if (z(j) < -tol_ * zs) verdict = 1;
-      if (std::abs(z(j)) <= tol_ * zs) {
-        z(j) = 0;
-        zz |= Mask(1) << j;
-      }
+      if (z(j) < -kGray * tol_ * zs) return;         // clearly negative against ||z||
+      if (z(j) <= tol_ * zs) tiny |= Mask(1) << j;  // tiny, or in the gray band
     }
+    if (tiny && !settle_tiny(S, tiny, z, zz)) return;
     Vec w(n_);
     for (int i = 0; i < n_; ++i) {
-      if ((S >> i) & 1u) {
-        w(i) = 0;
-        zw |= Mask(1) << i;
-        continue;
-      }
       double v = q_(i), sc = std::abs(q_(i));
       for (int j = 0; j < n_; ++j)
         if (z(j) != 0) {
           v += M_(i, j) * z(j);
           sc += std::abs(M_(i, j) * z(j));
         }
+      if (!finite(sc) || !finite(v)) {
+        ++unrepresentable_;
+        return;
+      }
+      if ((S >> i) & 1u) {  // w_i = 0 by construction; a solve that missed it cannot be trusted
+        if (!(std::abs(v) <= kGray * tol_ * sc)) verdict = 1;
+        w(i) = 0;
+        zw |= Mask(1) << i;
+        continue;
+      }
       if (v < -kGray * tol_ * sc) return;
       if (v < -tol_ * sc) verdict = 1;
       if (std::abs(v) <= tol_ * sc) {
@@ -520,7 +629,7 @@ class Engine {
     for (size_t p = 0; p < out_.solutions.size(); ++p) {
       const Vec& y = out_.solutions[p].z;
       const double s2 = std::max(zs, y.cwiseAbs().maxCoeff());
-      if ((y - z).cwiseAbs().maxCoeff() <= kGray * tol_ * s2) {
+      if ((y - z).cwiseAbs().maxCoeff() <= kGray * tol_ * s2 && merge_ok(p, zz, zw)) {
         zero_z_[p] |= zz;
         zero_w_[p] |= zw;
         return;
@@ -534,7 +643,81 @@ class Engine {
     zero_w_.push_back(zw);
   }
 
+  /// Entries tiny against ||z||_inf or in the gray band below zero (mask `tiny`; a unit-free
+  /// backward-error decision rather than a comparison with ||z|| alone) are zero when setting
+  /// them all to zero keeps every equation w_i = 0 (i in S, to 1e4 tol W_i) and the
+  /// feasibility of every other w_i; else each one is zero only when negligible in every row
+  /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
+  /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
+  /// False when the candidate is infeasible.
+  /// The same rule as SmallEnumerator::settle_tiny (enumerate_small.hpp).
+  bool settle_tiny(Mask S, Mask tiny, Vec& z, Mask& zz) const {
+    const Vec W = row_scales(z);
+    Vec zt = z;
+    for (int j = 0; j < n_; ++j)
+      if ((tiny >> j) & 1u) zt(j) = 0;
+    bool consistent = true;
+    for (int i = 0; i < n_ && consistent; ++i) {
+      const double vt = q_(i) + M_.row(i).dot(zt);
+      if ((S >> i) & 1u) {
+        consistent = std::abs(vt) <= kGray * tol_ * W(i);
+      } else {
+        consistent = (vt >= -tol_ * W(i)) == (q_(i) + M_.row(i).dot(z) >= -tol_ * W(i));
+      }
+    }
+    if (consistent) {
+      z = zt;
+      zz |= tiny;
+      return true;
+    }
+    for (int j = 0; j < n_; ++j) {
+      if (!((tiny >> j) & 1u)) continue;
+      bool negligible = true;
+      for (int i = 0; i < n_ && negligible; ++i)
+        negligible = std::abs(M_(i, j) * z(j)) <= tol_ * W(i);
+      if (negligible) {
+        z(j) = 0;
+        zz |= Mask(1) << j;
+      } else if (z(j) < 0) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// W_i = |q_i| + sum_j |M_ij z_j|: the size of the terms of w_i.
+  Vec row_scales(const Vec& z) const {
+    Vec W(n_);
+    for (int i = 0; i < n_; ++i) {
+      double sc = std::abs(q_(i));
+      for (int j = 0; j < n_; ++j) sc += std::abs(M_(i, j) * z(j));
+      W(i) = sc;
+    }
+    return W;
+  }
+
+  /// True when stored solution p satisfies the new zero claims zz, zw of a candidate found
+  /// equal to it (close in z is not close in w when M has large entries).
+  bool merge_ok(size_t p, Mask zz, Mask zw) const {
+    const Mask nz = zz & ~zero_z_[p], nw = zw & ~zero_w_[p];
+    if (!nz && !nw) return true;
+    const ExtremeSolution& e = out_.solutions[p];
+    const Vec W = row_scales(e.z);
+    for (int j = 0; j < n_; ++j) {
+      if (!((nz >> j) & 1u)) continue;
+      for (int i = 0; i < n_; ++i)
+        if (!(std::abs(M_(i, j) * e.z(j)) <= tol_ * W(i))) return false;
+    }
+    for (int i = 0; i < n_; ++i)
+      if (((nw >> i) & 1u) && !(std::abs(e.w(i)) <= tol_ * W(i))) return false;
+    return true;
+  }
+
   void add_ray(Mask S, Vec& d) {
+    if (!d.allFinite()) {
+      ++unrepresentable_;
+      return;
+    }
     Eigen::Index arg = 0;
     const double big = d.cwiseAbs().maxCoeff(&arg);
     if (!(big > 0) || d(arg) < 0) return;
@@ -565,6 +748,10 @@ class Engine {
           v += M_(i, j) * d(j);
           sc += std::abs(M_(i, j) * d(j));
         }
+      if (!finite(sc) || !finite(v)) {
+        ++unrepresentable_;
+        return;
+      }
       if (v < -kGray * tol_ * sc) return;
       if (v < -tol_ * sc) verdict = 1;
       if (std::abs(v) <= tol_ * sc) zmd |= Mask(1) << i;
@@ -603,6 +790,7 @@ class Engine {
     };
     std::vector<Cand> cands;
     for (Mask S : singular_) {
+      if (deadline_.passed()) break;
       const Mask off = ~S & all;
       Cand c;
       c.S = S;
@@ -621,6 +809,7 @@ class Engine {
       return true;
     };
     for (size_t a = 0; a < cands.size(); ++a) {
+      if (deadline_.passed()) break;
       bool maximal = true;
       for (size_t b = 0; b < cands.size() && maximal; ++b) {
         if (a == b) continue;
@@ -638,7 +827,7 @@ class Engine {
       out_.pieces.push_back(std::move(pc));
     }
     out_.infinite = !out_.pieces.empty();
-    out_.complete = !stopped_ && !incomplete_piece_;
+    out_.complete = !stopped_ && !incomplete_piece_ && !deadline_.hit();
   }
 
   int n_;
@@ -647,6 +836,7 @@ class Engine {
   const EnumerationOptions& opt_;
   double tol_;
   SolutionSet& out_;
+  Deadline& deadline_;
   std::vector<char> decided_;
   std::vector<int> order_;
   std::vector<int> free_ = std::vector<int>(kMaxEnumerationSize);
@@ -655,9 +845,9 @@ class Engine {
   std::vector<Vec> rays_;
   std::vector<Mask> ray_zero_d_, ray_zero_md_;
   std::vector<Mask> singular_;
-  Stopwatch clock_;
   bool stopped_ = false;
   bool incomplete_piece_ = false;
+  int unrepresentable_ = 0;
   long long nodes_ = 0, leaves_ = 0;
 };
 
@@ -682,7 +872,8 @@ class Engine {
 /// (caller falls back to the general engine) on an unbounded edge, a tie or a value in the gray
 /// band of the zero test, or more than `cap` bases.
 bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
-                       const std::vector<int>& row_label, std::vector<Mask>& masks) {
+                       const std::vector<int>& row_label, std::vector<Mask>& masks,
+                       Deadline& deadline) {
   const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
   const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
   struct State {
@@ -718,6 +909,7 @@ bool polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_l
     return a < bb ? -1 : 1;
   };
   while (!stack.empty()) {
+    if (deadline.passed(64)) return false;
     State s = std::move(stack.back());
     stack.pop_back();
     double bmax = 0;
@@ -812,7 +1004,7 @@ bool solve_face(const Mat& M, const Vec& q, const std::vector<int>& rows,
 
 /// The structured path; true when it produced the complete answer in `out` (else `out` is
 /// untouched and the general engine must run).
-bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
+bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out, Deadline& deadline) {
   const Mat& M = out.M;
   const Vec& q = out.q;
   const int n = static_cast<int>(q.size());
@@ -831,8 +1023,8 @@ bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
   for (int i = 0; i < k; ++i) xl[i] = i;
   for (int j = 0; j < l; ++j) yl[j] = k + j;
   std::vector<Mask> pm, qm;
-  if (!polytope_vertices(M21, q.tail(l), xl, yl, pm)) return false;
-  if (!polytope_vertices(M12, q.head(k), yl, xl, qm)) return false;
+  if (!polytope_vertices(M21, q.tail(l), xl, yl, pm, deadline)) return false;
+  if (!polytope_vertices(M12, q.head(k), yl, xl, qm, deadline)) return false;
   const Mask all = (Mask(1) << n) - 1, xs = (Mask(1) << k) - 1;
   // completely labelled pairs; a vertex in two pairs may lie on a continuum (maximal Nash
   // subsets are products of faces): then the general engine (which lists pieces) answers
@@ -854,10 +1046,12 @@ bool try_bipartite(const EnumerationOptions& opt, SolutionSet& out) {
     Vec z = Vec::Zero(n);
     if (!solve_face(M, q, indices_of(zero_w & ~xs, n), indices_of(S & xs, n), z)) return false;
     if (!solve_face(M, q, indices_of(zero_w & xs, n), indices_of(S & ~xs, n), z)) return false;
+    if (!z.allFinite()) return false;
     const double zs = z.cwiseAbs().maxCoeff();
     Vec wv = M * z + q;
     for (int i = 0; i < n; ++i) {
       const double sc = std::abs(q(i)) + (M.row(i).cwiseAbs() * z.cwiseAbs())(0);
+      if (!finite(sc) || !finite(wv(i))) return false;  // the engine decides (and reports)
       if ((S >> i) & 1u) {
         if (!(z(i) > tol * zs)) return false;  // a support entry at zero: let the engine judge
       }
@@ -923,6 +1117,77 @@ bool SolutionSet::contains(const Vec& z, double ctol) const {
   return false;
 }
 
+namespace {
+
+/// Power-of-two scale 2^e with x / 2^e in [0.5, 1) (e = 0 for x = 0).
+int scale_exponent(double x) {
+  if (!(x > 0)) return 0;
+  int e = 0;
+  std::frexp(x, &e);
+  return e;
+}
+
+/// (M, q) / (2^eM, 2^eq) when that is exact (no entry loses bits by underflow).
+bool normalize(const Mat& M, const Vec& q, int eM, int eq, Mat& Mn, Vec& qn) {
+  Mn = M;
+  qn = q;
+  bool exact = true;
+  for (Eigen::Index k = 0; k < Mn.size(); ++k) {
+    Mn.data()[k] = std::ldexp(M.data()[k], -eM);
+    exact = exact && std::ldexp(Mn.data()[k], eM) == M.data()[k];
+  }
+  for (Eigen::Index k = 0; k < qn.size(); ++k) {
+    qn(k) = std::ldexp(q(k), -eq);
+    exact = exact && std::ldexp(qn(k), eq) == q(k);
+  }
+  return exact;
+}
+
+/// The final check of every listed solution against the original data (M, q), with the
+/// unit-free componentwise test: z finite and >= 0, w = M z + q finite; with
+/// W_i = |q_i| + sum_j |M_ij z_j|, every listed w_i = 0 has |w_i| <= 1e4 tol W_i and every
+/// other w_i > 0 agrees with the data to 1e4 tol W_i, and z_i w_i = 0 as listed. Solutions
+/// that fail (values double cannot represent, e.g. z = 1e320 after scaling back) are removed.
+/// Returns the number removed.
+int recheck(SolutionSet& out) {
+  const Mat& M = out.M;
+  const Vec& q = out.q;
+  const int n = static_cast<int>(q.size());
+  const double band = kGray * out.tol;
+  std::vector<int> new_index(out.solutions.size(), -1);
+  std::vector<ExtremeSolution> kept;
+  for (size_t p = 0; p < out.solutions.size(); ++p) {
+    const ExtremeSolution& e = out.solutions[p];
+    bool ok = e.z.allFinite() && e.w.allFinite() && (n == 0 || e.z.minCoeff() >= 0);
+    for (int i = 0; i < n && ok; ++i) {
+      double v = q(i), sc = std::abs(q(i));
+      for (int j = 0; j < n; ++j) {
+        v += M(i, j) * e.z(j);
+        sc += std::abs(M(i, j) * e.z(j));
+      }
+      ok = finite(v) && finite(sc) && (e.z(i) == 0 || e.w(i) == 0);
+      if (!ok) break;
+      ok = e.w(i) == 0 ? std::abs(v) <= band * sc
+                       : e.w(i) > 0 && std::abs(v - e.w(i)) <= band * sc;
+    }
+    if (!ok) continue;
+    new_index[p] = static_cast<int>(kept.size());
+    kept.push_back(e);
+  }
+  const int removed = static_cast<int>(out.solutions.size() - kept.size());
+  if (removed == 0) return 0;
+  out.solutions = std::move(kept);
+  for (SolutionPiece& pc : out.pieces) {
+    std::vector<int> v;
+    for (int k : pc.vertices)
+      if (new_index[k] >= 0) v.push_back(new_index[k]);
+    pc.vertices = std::move(v);
+  }
+  return removed;
+}
+
+}  // namespace
+
 SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& options) {
   throw_if_invalid(problem.validate(), "enumerate_all");
   throw_if_invalid(options.validate(), "enumerate_all");
@@ -932,26 +1197,75 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
                      std::to_string(options.max_size) + " (EnumerationOptions::max_size, at most " +
                      std::to_string(kMaxEnumerationSize) + ")");
   Stopwatch clock;
+  Deadline deadline(options.time_limit_s);
   SolutionSet out;
   out.M = problem.dense_M();
   out.q = problem.q;
   out.tol = options.tol;
+  if (n == 0) {
+    out.complete = true;
+    out.solutions.push_back({Vec(), Vec(), {}});
+    out.seconds = clock.seconds();
+    return out;
+  }
+  // Every decision is made on (M / 2^eM, q / 2^eq), max entries in [0.5, 1): the same problem
+  // in other units (q -> a q, (M, q) -> b (M, q)) then takes the same decisions, bit for bit
+  // when a and b are powers of two. z = 2^(eq - eM) z~, w = 2^eq w~ are exact unless they
+  // overflow or underflow, which the final check from the data catches.
+  const int eM = scale_exponent(out.M.cwiseAbs().maxCoeff());
+  const int eq = scale_exponent(out.q.cwiseAbs().maxCoeff());
+  SolutionSet work;
+  work.tol = options.tol;
+  const bool exact = normalize(out.M, out.q, eM, eq, work.M, work.q);
+  if (!exact) {  // entries beyond double's exponent range of each other: use the data as given
+    work.M = out.M;
+    work.q = out.q;
+  }
+  const int ez = exact ? eq - eM : 0, ew = exact ? eq : 0;
   switch (n) {
-    case 0:
-      out.complete = true;
-      out.solutions.push_back({Vec(), Vec(), {}});
-      break;
-    case 1: run_small<1>(out); break;
-    case 2: run_small<2>(out); break;
-    case 3: run_small<3>(out); break;
-    case 4: run_small<4>(out); break;
+    case 1: run_small<1>(work); break;
+    case 2: run_small<2>(work); break;
+    case 3: run_small<3>(work); break;
+    case 4: run_small<4>(work); break;
     default: {
-      if (options.use_structure && try_bipartite(options, out)) break;
-      Engine engine(options, out);
+      if (options.use_structure && try_bipartite(options, work, deadline)) break;
+      Engine engine(options, work, deadline, exact);
       engine.run();
     }
   }
-  fill_directions(out);
+  out.solutions = std::move(work.solutions);
+  out.pieces = std::move(work.pieces);
+  out.complete = work.complete;
+  out.infinite = work.infinite;
+  out.ambiguous = work.ambiguous;
+  out.unrepresentable = work.unrepresentable;
+  out.nodes = work.nodes;
+  out.leaves = work.leaves;
+  out.structured = work.structured;
+  out.message = work.message;
+  for (ExtremeSolution& e : out.solutions) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      e.z(j) = std::ldexp(e.z(j), ez);
+      e.w(j) = std::ldexp(e.w(j), ew);
+    }
+  }
+  out.unrepresentable += recheck(out);
+  if (out.unrepresentable > 0) {
+    out.complete = false;
+    const std::string msg = std::to_string(out.unrepresentable) +
+                            " candidate(s) not representable in double precision (a value of z or "
+                            "w = M z + q overflows or underflows, e.g. z = 1e320): not listed";
+    out.message = out.message.empty() ? msg : out.message + "; " + msg;
+  }
+  if (!fill_directions(out, deadline)) out.complete = false;
+  if (deadline.hit()) {
+    out.complete = false;
+    if (out.message.find("time limit") == std::string::npos) {
+      const std::string msg = "time limit of " + std::to_string(options.time_limit_s) +
+                              " s reached (the lists may be partial)";
+      out.message = out.message.empty() ? msg : out.message + "; " + msg;
+    }
+  }
   out.seconds = clock.seconds();
   return out;
 }

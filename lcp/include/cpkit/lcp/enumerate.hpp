@@ -10,8 +10,17 @@
 /// complete. Singular principal blocks are normal input (docs/enumeration.md).
 ///
 /// Size limit: n <= EnumerationOptions::max_size (default 24, at most kMaxEnumerationSize = 30);
-/// beyond it InputError, never a silent partial answer. A time or node limit that stops the
-/// search early leaves complete = false with a message saying so.
+/// beyond it InputError, never a silent partial answer. The time limit (default 60 s) holds in
+/// every phase (search, singular pieces, piece collection, directions); when it stops any of
+/// them the result has complete = false with a message saying so.
+///
+/// Units: every sign and zero test is relative to the size of the terms it compares (unit-free);
+/// the decisions are made on (M, q) scaled by powers of two to max entries in [0.5, 1), so the
+/// same problem in other units (q -> a q, (M, q) -> b (M, q)) gives the same sets, scaled.
+/// Every listed solution is finite and re-checked from the original data; a solution double
+/// precision cannot represent (e.g. z = 1e320 for M = [[1e-320]], q = [-1]) is never listed:
+/// it is counted in SolutionSet::unrepresentable and leaves complete = false
+/// (docs/enumeration.md, "Tolerance" and "Values double cannot represent").
 ///
 /// Algorithm: n <= 4 uses the fixed-size path enumerate_small(); larger n a depth-first search
 /// over the complementary bases with principal pivot updates of one tableau per depth (no
@@ -38,8 +47,10 @@ struct EnumerationOptions {
   double tol = 1e-12;
   /// Problems with n > max_size throw InputError (1 <= max_size <= kMaxEnumerationSize).
   int max_size = 24;
-  /// Wall-clock limit; when hit the result has complete = false.
-  double time_limit_s = 1e300;
+  /// Wall-clock limit in seconds, honoured by every phase; when hit the result has
+  /// complete = false and a message. The default bounds a run on a hostile input (a complete
+  /// enumeration may need all 2^n bases).
+  double time_limit_s = 60;
   /// Largest null-space dimension of a singular piece that is enumerated; a larger one leaves
   /// complete = false (its vertices need C(n, m) subsystems).
   int max_piece_dim = 3;
@@ -79,6 +90,10 @@ struct SolutionSet {
   bool complete = false;   ///< every complementary basis was accounted for
   bool infinite = false;   ///< some piece has positive dimension
   int ambiguous = 0;       ///< sign or rank tests too close to call (docs/enumeration.md)
+  /// Candidates double precision cannot represent or verify (a non-finite z, w = M z + q or
+  /// scale, or a solution that fails the final check from the data after scaling back, e.g.
+  /// z = 1e320): never listed; nonzero implies complete = false with a message.
+  int unrepresentable = 0;
   long long nodes = 0;     ///< search-tree nodes visited (0 on the small path; polytope
                            ///< vertices visited on the block-bipartite path)
   bool structured = false; ///< answered by the block-bipartite (bimatrix-game) path

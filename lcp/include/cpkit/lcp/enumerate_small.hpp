@@ -24,12 +24,22 @@
 ///   positive dimension iff it has two vertices or a ray; only inclusion-maximal pieces of
 ///   positive dimension are listed.
 ///
-/// Tolerance (scale-aware, `tol` relative): a value v of z_i is zero when |v| <= tol ||z||_inf,
-/// a value of w_i when |v| <= tol (|q_i| + sum_j |M_ij| |z_j|) (the size of the terms that make
-/// up w_i); a sign test fails clearly below -1e4 tol * scale, and values in the band between are
-/// counted in `ambiguous` (and rejected). A square block is singular when a complete-pivoting
-/// elimination meets a pivot <= tol * max|block|; pivots within 1e4 x of that are also counted
-/// as ambiguous. Two vertices are the same when they differ by <= 1e4 tol ||z||_inf.
+/// Tolerance (unit-free, `tol` relative; docs/enumeration.md, "Tolerance"): a value v of z_i is
+/// judged against ||z||_inf, a value of w_i against W_i = |q_i| + sum_j |M_ij| |z_j| (the size of
+/// the terms that make up w_i); a sign test fails clearly below -1e4 tol * scale, and w values in
+/// the band between are counted in `ambiguous` (and rejected). Entries of z tiny against ||z||
+/// (or in that band) are zero only when the data allow it: setting them to zero must keep the
+/// piece's equations w_i = 0 (to 1e4 tol W_i) and the feasibility of the other w_i, else each one
+/// is zero only when |M_ij z_j| <= tol W_i in every row, and a negative one that is not makes the
+/// candidate infeasible (M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1). A square block is
+/// singular when a complete-pivoting elimination meets a pivot <= tol * max|block| (or
+/// |det| <= 1e4 tol * sum |terms of det|); the vertex and ray systems of a singular piece are
+/// row-equilibrated first (their rows have the units of z_i or of w_i); pivots within 1e4 x of
+/// the threshold are counted as ambiguous. Two vertices are the same when they differ by
+/// <= 1e4 tol ||z||_inf and the stored one satisfies the other's zero claims. All these tests are
+/// invariant under q -> a q and (M, q) -> b (M, q).
+/// Values double cannot represent (a non-finite z, w or scale, e.g. z = 1e320 for M = [[1e-320]],
+/// q = [-1]) are never stored: they are counted in `unrepresentable` and `dropped`.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
@@ -61,8 +71,14 @@ struct SmallSolutionSet {
   std::array<Piece, kMax> pieces;
   bool infinite = false;         ///< some piece has positive dimension
   int ambiguous = 0;             ///< sign tests too close to call (see docs/enumeration.md)
-  /// Vertices or rays beyond the fixed capacity kMax (never observed; nonzero means the lists
-  /// are incomplete and the caller must not rely on them).
+  /// Candidates (vertices, rays, pieces) that double precision cannot represent or verify: a
+  /// non-finite value of z, of w = M z + q or of their scales, e.g. the solution z = 1e320 of
+  /// M = [[1e-320]], q = [-1]. Such a candidate is never listed; each one is also counted in
+  /// `dropped`.
+  int unrepresentable = 0;
+  /// Vertices or rays the lists lack: beyond the fixed capacity kMax (never observed) or not
+  /// representable (see `unrepresentable`). Nonzero means the lists are incomplete and the
+  /// caller must not rely on them.
   int dropped = 0;
 };
 
@@ -70,12 +86,22 @@ namespace detail {
 
 inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tests
 
+// Rare paths (degenerate or extreme candidates) are kept out of line so that the hot
+// add_point stays small enough to be inlined (bench/bench_enumerate.cpp, section 1).
+#if defined(__GNUC__) || defined(__clang__)
+#define CPKIT_SMALL_COLD __attribute__((noinline, cold))
+#define CPKIT_SMALL_HOT __attribute__((always_inline))
+#else
+#define CPKIT_SMALL_COLD
+#define CPKIT_SMALL_HOT
+#endif
+
 constexpr int small_popcount(unsigned x) noexcept {
   int c = 0;
   for (; x; x &= x - 1) ++c;
   return c;
 }
-inline double small_abs(double x) noexcept { return x < 0 ? -x : x; }
+inline double small_abs(double x) noexcept { return std::fabs(x); }
 inline double small_max(double a, double b) noexcept { return a < b ? b : a; }
 
 /// Outcome of a sign test v >= 0 at scale s: 0 pass, 1 ambiguous, 2 fail.
@@ -83,6 +109,18 @@ inline int small_sign(double v, double s, double tol) noexcept {
   if (v >= -tol * s) return 0;
   if (v >= -kSmallGray * tol * s) return 1;
   return 2;
+}
+
+/// True when x is finite (not inf, not NaN).
+inline bool small_finite(double x) noexcept { return small_abs(x) <= 1.7976931348623157e308; }
+
+/// The Cramer path may be used for a principal block with determinant det and "permanent" perm
+/// (small_det): the block is clearly nonsingular (|det| > 1e4 tol perm, a test invariant under
+/// any scaling of M) and perm is a normal finite number (no overflow or underflow in the products
+/// of the determinant). Otherwise the block goes to the elimination path (singular_piece).
+inline bool small_det_ok(double det, double perm, double tol) noexcept {
+  return small_abs(det) > kSmallGray * tol * perm && perm >= 2.2250738585072014e-308 &&
+         perm <= 1.7976931348623157e308;
 }
 
 /// det and "permanent" (sum of the absolute values of the determinant's terms) of a k x k
@@ -272,26 +310,47 @@ struct SmallEnumerator {
                   SmallSolutionSet<N>& o, double t)
       : M(m), q(qq), out(o), tol(t) {}
 
+  /// A candidate that double precision cannot represent or verify (never listed).
+  CPKIT_SMALL_COLD void unrepresentable() noexcept {
+    ++out.unrepresentable;
+    ++out.dropped;
+  }
+
+  /// A candidate with a non-finite entry: -inf is clearly negative (infeasible); +inf or NaN
+  /// is a value double cannot represent.
+  CPKIT_SMALL_COLD void non_finite_point(const double (&z)[N]) noexcept {
+    for (int j = 0; j < N; ++j)
+      if (z[j] < 0 && !small_finite(z[j])) return;
+    unrepresentable();
+  }
+
   /// Judges the candidate z (z_i = 0 off S, w_i = 0 on S by construction) of piece S and
-  /// stores it when feasible and new.
-  void add_point(unsigned S, double (&z)[N]) {
-    double zs = 0;
-    for (int j = 0; j < N; ++j) zs = small_max(zs, small_abs(z[j]));
-    int verdict = 0;
-    unsigned zz = ~S & kAll, zw = S;
-    for (int j = 0; j < N; ++j) {
-      if (!(S & (1u << j))) { z[j] = 0; continue; }
-      const int sgn = small_sign(z[j], zs, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(z[j]) <= tol * zs) { z[j] = 0; zz |= 1u << j; }
+  /// stores it when feasible and new. Every test is relative to the scale of its own terms
+  /// (||z||_inf for z, W_i = |q_i| + sum_j |M_ij z_j| for w_i), hence invariant under
+  /// q -> a q and (M, q) -> b (M, q).
+  CPKIT_SMALL_HOT void add_point(unsigned S, double (&z)[N]) {
+    double zs = 0, nf = 0;  // nf stays 0 when every z_j is finite (z_j - z_j is NaN otherwise)
+    for (int j = 0; j < N; ++j) {  // (z_j = 0 off S by construction)
+      zs = small_max(zs, small_abs(z[j]));
+      nf += z[j] - z[j];
     }
+    if (nf != 0) { non_finite_point(z); return; }
+    int verdict = 0;
+    unsigned zz = ~S & kAll, zw = S, tiny = 0;
+    for (int j = 0; j < N; ++j) {
+      if (!(S & (1u << j))) continue;
+      if (small_sign(z[j], zs, tol) == 2) return;       // clearly negative against ||z||
+      if (z[j] <= tol * zs) tiny |= 1u << j;              // tiny, or in the gray band
+    }
+    if (tiny && !settle_tiny(S, tiny, z, zz)) return;
     double w[N];
     for (int i = 0; i < N; ++i) {
       if (S & (1u << i)) { w[i] = 0; continue; }
       double v = q(i), sc = small_abs(q(i));
       for (int j = 0; j < N; ++j)
         if (z[j] != 0) { v += M(i, j) * z[j]; sc += small_abs(M(i, j) * z[j]); }
+      // sc >= |every term of v|: a finite sc means a finite v (M and z are finite)
+      if (!(sc <= 1.7976931348623157e308)) { unrepresentable(); return; }
       const int sgn = small_sign(v, sc, tol);
       if (sgn == 2) return;
       verdict = sgn > verdict ? sgn : verdict;
@@ -304,9 +363,26 @@ struct SmallEnumerator {
         d = small_max(d, small_abs(out.z[p](j) - z[j]));
         s2 = small_max(s2, small_abs(out.z[p](j)));
       }
-      if (d <= kSmallGray * tol * s2) {  // the same point from another piece or basis
+      // the same point from another piece or basis; its zero pattern is merged only when the
+      // stored point satisfies it too (close in z does not mean close in w when M is large)
+      if (d <= kSmallGray * tol * s2 && merge_ok(p, zz, zw)) {
         zero_z[p] |= zz;
         zero_w[p] |= zw;
+        return;
+      }
+    }
+    // a new point: its own equations w_i = 0 (i in S) re-checked from the data (the solve of
+    // an ill-conditioned block may miss them; such a candidate is too close to call)
+    for (int i = 0; i < N; ++i) {
+      if (!(S & (1u << i))) continue;
+      double v = q(i), sc = small_abs(q(i));
+      for (int j = 0; j < N; ++j) {
+        const double t = M(i, j) * z[j];
+        v += t;
+        sc += small_abs(t);
+      }
+      if (!(small_abs(v) <= kSmallGray * tol * sc)) {  // (fails for inf and NaN too)
+        if (small_finite(sc) && small_finite(v)) ++out.ambiguous; else unrepresentable();
         return;
       }
     }
@@ -317,13 +393,87 @@ struct SmallEnumerator {
     zero_w[p] = zw;
   }
 
+  /// Entries tiny against ||z||_inf or in the gray band below zero (mask `tiny`; a unit-free
+  /// backward-error decision rather than a comparison with ||z|| alone) are zero when setting
+  /// them all to zero keeps every equation w_i = 0 (i in S, to 1e4 tol W_i) and the
+  /// feasibility of every other w_i; else each one is zero only when negligible in every row
+  /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
+  /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
+  /// False when the candidate is infeasible.
+  CPKIT_SMALL_COLD bool settle_tiny(unsigned S, unsigned tiny, double (&z)[N], unsigned& zz) const {
+    unsigned nonzero = 0;
+    for (int j = 0; j < N; ++j)
+      if ((tiny & (1u << j)) && z[j] != 0) nonzero |= 1u << j;
+    if (!nonzero) {  // exact zeros: nothing changes
+      zz |= tiny;
+      return true;
+    }
+    double W[N];
+    bool consistent = true;
+    for (int i = 0; i < N; ++i) {  // one pass: W_i, w_i at z, and w_i with the tiny entries zeroed
+      double sc = small_abs(q(i)), v = q(i), dv = 0;
+      for (int j = 0; j < N; ++j) {
+        const double t = M(i, j) * z[j];
+        sc += small_abs(t);
+        v += t;
+        if (nonzero & (1u << j)) dv += t;
+      }
+      W[i] = sc;
+      const double vt = v - dv;
+      consistent = consistent && ((S & (1u << i)) ? small_abs(vt) <= kSmallGray * tol * sc
+                                                  : (vt >= -tol * sc) == (v >= -tol * sc));
+    }
+    if (consistent) {
+      for (int j = 0; j < N; ++j)
+        if (tiny & (1u << j)) z[j] = 0;
+      zz |= tiny;
+      return true;
+    }
+    for (int j = 0; j < N; ++j) {
+      if (!(tiny & (1u << j))) continue;
+      bool negligible = true;
+      for (int i = 0; i < N && negligible; ++i)
+        negligible = small_abs(M(i, j) * z[j]) <= tol * W[i];
+      if (negligible) {
+        z[j] = 0;
+        zz |= 1u << j;
+      } else if (z[j] < 0) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// True when stored point p satisfies the zero claims zz (z_j = 0) and zw (w_i = 0) of a
+  /// candidate found equal to it: the new claims hold at p within tol of their row scales.
+  CPKIT_SMALL_COLD bool merge_ok(int p, unsigned zz, unsigned zw) const {
+    const unsigned nz = zz & ~zero_z[p], nw = zw & ~zero_w[p];
+    if (!nz && !nw) return true;
+    double W[N];
+    for (int i = 0; i < N; ++i) {
+      double sc = small_abs(q(i));
+      for (int j = 0; j < N; ++j) sc += small_abs(M(i, j) * out.z[p](j));
+      W[i] = sc;
+    }
+    for (int j = 0; j < N; ++j) {
+      if (!(nz & (1u << j))) continue;
+      for (int i = 0; i < N; ++i)
+        if (!(small_abs(M(i, j) * out.z[p](j)) <= tol * W[i])) return false;
+    }
+    for (int i = 0; i < N; ++i)
+      if ((nw & (1u << i)) && !(small_abs(out.w[p](i)) <= tol * W[i])) return false;
+    return true;
+  }
+
   /// Judges the direction d (d_i = 0 off S, (M d)_i = 0 on S by construction) of the
   /// recession cone of piece S; stores it (scaled to ||d||_inf = 1) when it is a new ray.
   void add_ray(unsigned S, double (&d)[N]) {
     double big = 0;
     int arg = 0;
-    for (int j = 0; j < N; ++j)
+    for (int j = 0; j < N; ++j) {
+      if (!small_finite(d[j])) { unrepresentable(); return; }
       if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
+    }
     if (!(big > 0) || d[arg] < 0) return;  // a ray is >= 0: its largest entry is positive
     const double f = 1.0 / big;
     int verdict = 0;
@@ -341,6 +491,7 @@ struct SmallEnumerator {
       double v = 0, sc = 0;
       for (int j = 0; j < N; ++j)
         if (d[j] != 0) { v += M(i, j) * d[j]; sc += small_abs(M(i, j) * d[j]); }
+      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
       const int sgn = small_sign(v, sc, tol);
       if (sgn == 2) return;
       verdict = sgn > verdict ? sgn : verdict;
@@ -402,6 +553,12 @@ struct SmallEnumerator {
         for (int c = 0; c < k; ++c) nb[f][idx[c]] = y[c];
       }
     }
+    // overflow (e.g. a pivot 1e-320 against q = 1): values double cannot hold
+    for (int j = 0; j < N; ++j) {
+      bool ok = small_finite(z0[j]);
+      for (int f = 0; f < m; ++f) ok = ok && small_finite(nb[f][j]);
+      if (!ok) { unrepresentable(); return; }
+    }
     // consistency: -q_S must lie in the range of M_SS (backward-error scale
     // |q_i| + ||M_i.||_1 ||z0||_inf: entries of z0 that should vanish carry round-off of the
     // size of the whole z0)
@@ -414,6 +571,7 @@ struct SmallEnumerator {
         v += M(i, j) * z0[j];
         sc += small_abs(M(i, j)) * z0n;
       }
+      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
       if (small_abs(v) > kSmallGray * tol * sc) return;  // empty piece
       if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
     }
@@ -432,10 +590,12 @@ struct SmallEnumerator {
       } else {
         double v = q(i), sv = small_abs(q(i));
         for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
+        if (!small_finite(sv) || !small_finite(v)) { unrepresentable(); return; }
         b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
         for (int f = 0; f < m; ++f) {
           double u = 0, su = 0;
           for (int j = 0; j < N; ++j) { u += M(i, j) * nb[f][j]; su += small_abs(M(i, j) * nb[f][j]); }
+          if (!small_finite(su)) { unrepresentable(); return; }
           A[i][f] = small_abs(u) <= tol * su ? 0.0 : u;
         }
       }
@@ -467,23 +627,25 @@ struct SmallEnumerator {
       double z[N];
       for (int j = 0; j < N; ++j) z[j] = z0[j];
       if (m > 0) {
+        // rows equilibrated (each row of A has the units of its own z_i or w_i): the rank
+        // decision is then invariant under (M, q) -> b (M, q)
         double e[4][5] = {};
-        double emax = 0;
         int t = 0;
         bool constant_row = false;
         for (int i = 0; i < N; ++i) {
           if (!(act & (1u << i))) continue;
           double rmax = 0;
-          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; rmax = small_max(rmax, small_abs(A[i][f])); }
-          emax = small_max(emax, rmax);
+          for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
           constant_row = constant_row || rmax == 0;
-          e[t][4] = -b[i];
+          if (constant_row) break;
+          for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;
+          e[t][4] = -b[i] / rmax;
           ++t;
         }
         if (constant_row) continue;
         int pm[5] = {};
         bool g2 = false;
-        if (small_eliminate(e, m, m, pm, tol * emax, g2) < m) continue;
+        if (small_eliminate(e, m, m, pm, tol, g2) < m) continue;
         if (g2) ++out.ambiguous;
         double x[4];
         for (int p = m - 1; p >= 0; --p) {
@@ -507,17 +669,22 @@ struct SmallEnumerator {
         continue;  // m <= N: unreachable for N = 1
       } else {
         double e[4][5] = {};
-        double emax = 0;
         int t = 0;
+        bool constant_row = false;
         for (int i = 0; i < N; ++i) {
           if (!(act & (1u << i))) continue;
-          for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; emax = small_max(emax, small_abs(A[i][f])); }
+          double rmax = 0;
+          for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
+          constant_row = constant_row || rmax == 0;
+          if (constant_row) break;
+          for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;  // equilibrated, as above
           e[t][4] = 0;
           ++t;
         }
+        if (constant_row) continue;  // a zero row: rank < m - 1
         int pm[5] = {};
         bool g2 = false;
-        if (small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
+        if (small_eliminate(e, m - 1, m, pm, tol, g2) < m - 1) continue;
         if (g2) ++out.ambiguous;
         small_null_vector(e, m, pm, x);
       }
@@ -530,6 +697,18 @@ struct SmallEnumerator {
     }
   }
 
+  /// True when every entry is finite (z_j - z_j is 0 for finite z_j, NaN otherwise).
+  static bool all_finite(const double (&z)[N]) noexcept {
+    double s = 0;
+    for (int j = 0; j < N; ++j) s += z[j] - z[j];
+    return s == 0;
+  }
+
+  /// singular_piece, kept out of line for the callers' hot paths (SmallPreparedLcp).
+  CPKIT_SMALL_COLD void singular_piece_cold(unsigned S, const int* idx, int k) {
+    singular_piece(S, idx, k);
+  }
+
   void run() {
     for (unsigned S = 0; S <= kAll; ++S) {
       int idx[4], k = 0;
@@ -540,11 +719,15 @@ struct SmallEnumerator {
         if (k > 0) {
           double det, perm;
           small_det(M, idx, idx, k, det, perm);
-          if (small_abs(det) <= kSmallGray * tol * perm) {  // singular or close: the general path
+          if (!small_det_ok(det, perm, tol)) {  // singular, close, or extreme: the general path
             singular_piece(S, idx, k);
             continue;
           }
           small_cramer(M, q, idx, k, det, z);
+          if (!all_finite(z)) {  // overflow in Cramer's products: elimination instead
+            singular_piece(S, idx, k);
+            continue;
+          }
         }
         add_point(S, z);
       } else {
@@ -636,6 +819,7 @@ void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<d
   out.num_pieces = 0;
   out.infinite = false;
   out.ambiguous = 0;
+  out.unrepresentable = 0;
   out.dropped = 0;
   detail::SmallEnumerator<N> en(M, q, out, tol);
   en.run();

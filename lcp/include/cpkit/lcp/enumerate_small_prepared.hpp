@@ -28,6 +28,9 @@
 /// by round-off. tests/lcp/test_enumerate_small_prepared.cpp checks counts, supports, masks,
 /// flags and the ambiguous count for equality and values to 1e-12 relative, on random integer
 /// matrices (frequent singular blocks) and on the state-b rate LCP incl. a11 = mu |a12|.
+/// Supports whose M-only values overflow, a Cramer solve or a z0 = P q that overflows, are
+/// decided per call from the data by SmallEnumerator::singular_piece, exactly as
+/// enumerate_small decides them (values double cannot represent: `unrepresentable`).
 /// Allocation-free, fixed-size; enumerate() is const and thread-safe.
 #include <Eigen/Core>
 #include <array>
@@ -67,7 +70,9 @@ struct SmallPreparedSupport {
   static constexpr int kRays = 12;  ///< max candidate directions 2 C(N, m - 1)
   int k = 0;                        ///< |S|
   int idx[4] = {};                  ///< the members of S, ascending
-  int kind = 0;                     ///< 0: S empty, 1: nonsingular block (Cramer), 2: singular path
+  /// 0: S empty, 1: nonsingular block (Cramer), 2: singular path, 3: M-only values that double
+  /// cannot hold (overflow): enumerate() runs SmallEnumerator::singular_piece from the data
+  int kind = 0;
   double det = 0;                   ///< det M_SS (kind 1)
   double inv = 0;                   ///< 1 / det, as small_cramer computes it
   // ---- kind 2 ----
@@ -83,6 +88,8 @@ struct SmallPreparedSupport {
   int num_acts = 0;                 ///< m != 1: active sets whose system is regular
   unsigned acts[kActs] = {};
   SmallElimRecord act_el[kActs];
+  double act_rmax[kActs][4] = {};   ///< row scales of the equilibrated vertex systems
+  bool overflow = false;            ///< an M-only value is not finite (then kind becomes 3)
   int num_rays = 0;                 ///< candidate rays that pass add_ray's (M-only) tests
   double rays[kRays][N] = {};       ///< normalised as add_ray stores them
   unsigned ray_zero_d[kRays] = {};  ///< their zero patterns (as add_ray records them)
@@ -108,7 +115,17 @@ class SmallPreparedLcp {
     if (!M.allFinite()) throw InputError("SmallPreparedLcp: M has a non-finite entry");
     if (!(tol > 0 && tol <= 1e-3))
       throw InputError("SmallPreparedLcp: tol must lie in (0, 1e-3], got " + std::to_string(tol));
-    for (unsigned S = 0; S <= kAll; ++S) prepare(S, sup_[S]);
+    for (unsigned S = 0; S <= kAll; ++S) {
+      Sup& s = sup_[S];
+      prepare(S, s);
+      if (s.overflow) {  // decided per call from the data, exactly as enumerate_small does
+        Sup t;
+        t.k = s.k;
+        for (int c = 0; c < 4; ++c) t.idx[c] = s.idx[c];
+        t.kind = 3;
+        s = t;
+      }
+    }
   }
 
   const Mat& matrix() const noexcept { return M_; }
@@ -129,6 +146,7 @@ class SmallPreparedLcp {
     out.num_pieces = 0;
     out.infinite = false;
     out.ambiguous = 0;
+    out.unrepresentable = 0;
     out.dropped = 0;
     detail::SmallEnumerator<N> en(M_, q, out, tol);
     for (unsigned S = 0; S <= kAll; ++S) {
@@ -137,8 +155,18 @@ class SmallPreparedLcp {
         singular_piece(en, S, s, q, out);
         continue;
       }
+      if (s.kind == 3) {
+        en.singular_piece_cold(S, s.idx, s.k);
+        continue;
+      }
       double z[N] = {};
-      if (s.kind == 1) cramer(s, q, z);
+      if (s.kind == 1) {
+        cramer(s, q, z);
+        if (!en.all_finite(z)) {  // as enumerate_small: overflow in Cramer's products
+          en.singular_piece_cold(S, s.idx, s.k);
+          continue;
+        }
+      }
       en.add_point(S, z);
     }
     detail::small_finish<N>(en, out);
@@ -160,7 +188,7 @@ class SmallPreparedLcp {
     if (k <= 3) {
       double det, perm;
       detail::small_det(M, s.idx, s.idx, k, det, perm);
-      if (!(small_abs(det) <= detail::kSmallGray * tol * perm)) {
+      if (detail::small_det_ok(det, perm, tol)) {
         s.kind = 1;
         s.det = det;
         s.inv = 1.0 / det;
@@ -207,6 +235,11 @@ class SmallPreparedLcp {
       }
       for (int c = 0; c < k; ++c) s.P[idx[c]][ii] = x[c];
     }
+    for (int j = 0; j < N; ++j) {
+      for (int f = 0; f < m; ++f) s.overflow = s.overflow || !detail::small_finite(s.nb[f][j]);
+      for (int i = 0; i < N; ++i) s.overflow = s.overflow || !detail::small_finite(s.P[j][i]);
+    }
+    if (s.overflow) return;
     const auto& nb = s.nb;
     for (int i = 0; i < N; ++i) {
       if (S & (1u << i)) {
@@ -219,6 +252,7 @@ class SmallPreparedLcp {
         for (int f = 0; f < m; ++f) {
           double u = 0, su = 0;
           for (int j = 0; j < N; ++j) { u += M(i, j) * nb[f][j]; su += small_abs(M(i, j) * nb[f][j]); }
+          if (!detail::small_finite(su)) { s.overflow = true; return; }
           s.A[i][f] = small_abs(u) <= tol * su ? 0.0 : u;
         }
       }
@@ -252,24 +286,27 @@ class SmallPreparedLcp {
         continue;
       }
       double e[4][5] = {};
-      double emax = 0;
+      double rm[4] = {};
       int t = 0;
       bool constant_row = false;
       for (int i = 0; i < N; ++i) {
         if (!(act & (1u << i))) continue;
         double rmax = 0;
-        for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; rmax = small_max(rmax, small_abs(A[i][f])); }
-        emax = small_max(emax, rmax);
+        for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
         constant_row = constant_row || rmax == 0;
+        if (constant_row) break;
+        for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;  // equilibrated (enumerate_small)
+        rm[t] = rmax;
         ++t;
       }
       if (constant_row) continue;
       bool g2 = false;
       detail::SmallElimRecord& rec = s.act_el[s.num_acts];
-      if (detail::small_eliminate_recorded(e, m, m, rec, tol * emax, g2) < m) {
+      if (detail::small_eliminate_recorded(e, m, m, rec, tol, g2) < m) {
         rec = detail::SmallElimRecord{};
         continue;
       }
+      for (int r2 = 0; r2 < m; ++r2) s.act_rmax[s.num_acts][r2] = rm[r2];
       if (g2) ++s.post_ambiguous;
       s.acts[s.num_acts++] = act;
     }
@@ -279,17 +316,22 @@ class SmallPreparedLcp {
       if (detail::small_popcount(act) != m - 1) continue;
       double x[5] = {};
       double e[4][5] = {};
-      double emax = 0;
       int t = 0;
+      bool constant_row = false;
       for (int i = 0; i < N; ++i) {
         if (!(act & (1u << i))) continue;
-        for (int f = 0; f < m; ++f) { e[t][f] = A[i][f]; emax = small_max(emax, small_abs(A[i][f])); }
+        double rmax = 0;
+        for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
+        constant_row = constant_row || rmax == 0;
+        if (constant_row) break;
+        for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;
         e[t][4] = 0;
         ++t;
       }
+      if (constant_row) continue;
       int pm[5] = {};
       bool g2 = false;
-      if (detail::small_eliminate(e, m - 1, m, pm, tol * emax, g2) < m - 1) continue;
+      if (detail::small_eliminate(e, m - 1, m, pm, tol, g2) < m - 1) continue;
       if (g2) ++s.post_ambiguous;
       detail::small_null_vector(e, m, pm, x);
       for (double sign : {1.0, -1.0}) {
@@ -337,8 +379,10 @@ class SmallPreparedLcp {
     const auto& M = M_;
     double big = 0;
     int arg = 0;
-    for (int j = 0; j < N; ++j)
+    for (int j = 0; j < N; ++j) {
+      if (!detail::small_finite(d[j])) { s.overflow = true; return; }
       if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
+    }
     if (!(big > 0) || d[arg] < 0) return;
     const double f = 1.0 / big;
     int verdict = 0;
@@ -356,6 +400,7 @@ class SmallPreparedLcp {
       double v = 0, sc = 0;
       for (int j = 0; j < N; ++j)
         if (d[j] != 0) { v += M(i, j) * d[j]; sc += small_abs(M(i, j) * d[j]); }
+      if (!detail::small_finite(sc) || !detail::small_finite(v)) { s.overflow = true; return; }
       const int sgn = detail::small_sign(v, sc, tol);
       if (sgn == 2) return;
       verdict = sgn > verdict ? sgn : verdict;
@@ -397,13 +442,17 @@ class SmallPreparedLcp {
     const auto& M = M_;
     const int k = s.k, m = s.m;
     const int* idx = s.idx;
-    out.ambiguous += s.pre_ambiguous;
     double z0[N];
     for (int j = 0; j < N; ++j) {
       double v = 0;
       for (int i = 0; i < N; ++i) v += s.P[j][i] * q(i);
       z0[j] = v;
     }
+    if (!en.all_finite(z0)) {  // overflow of P q: decide from the data as enumerate_small does
+      en.singular_piece_cold(S, idx, k);
+      return;
+    }
+    out.ambiguous += s.pre_ambiguous;
     double z0n = 0;
     for (int j = 0; j < N; ++j) z0n = small_max(z0n, small_abs(z0[j]));
     for (int c = 0; c < k; ++c) {
@@ -413,6 +462,7 @@ class SmallPreparedLcp {
         v += M(i, j) * z0[j];
         sc += small_abs(M(i, j)) * z0n;
       }
+      if (!detail::small_finite(sc) || !detail::small_finite(v)) { en.unrepresentable(); return; }
       if (small_abs(v) > detail::kSmallGray * tol * sc) return;  // empty piece
       if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
     }
@@ -424,6 +474,7 @@ class SmallPreparedLcp {
       } else {
         double v = q(i), sv = small_abs(q(i));
         for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
+        if (!detail::small_finite(sv) || !detail::small_finite(v)) { en.unrepresentable(); return; }
         b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
       }
     }
@@ -446,7 +497,7 @@ class SmallPreparedLcp {
           double e4[4] = {};
           int t = 0;
           for (int i = 0; i < N; ++i)
-            if (act & (1u << i)) e4[t++] = -b[i];
+            if (act & (1u << i)) { e4[t] = -b[i] / s.act_rmax[a][t]; ++t; }
           detail::small_replay_rhs(rec, m, e4);
           double x[4] = {};
           const int* pm = rec.perm;
