@@ -49,6 +49,10 @@ struct LemkeOptions {
   /// > 0: recompute the basis inverse from the data every that many pivots (in addition to
   /// the automatic accuracy check); 0: only when the automatic check fails.
   int refactor_every = 0;
+  /// true: the lexicographic ratio test (never cycles). false: ties broken by the smallest
+  /// variable id ("plain" Lemke, which can cycle): for tests and demonstrations of the cycle
+  /// guard only.
+  bool lexicographic = true;
   /// Empty when usable for a problem of size n; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
