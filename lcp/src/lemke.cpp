@@ -57,6 +57,7 @@ class LemkeRun {
     tied_.reserve(static_cast<size_t>(n_ + 1));
     tied_scale_.reserve(static_cast<size_t>(n_ + 1));
     excluded_.assign(static_cast<size_t>(2 * n_ + 1), 0);
+    tied_pos_.assign(static_cast<size_t>(2 * n_ + 1), kNone);
   }
 
   SolveResult run();
@@ -77,6 +78,8 @@ class LemkeRun {
   };
   // Lexicographic minimum of (value, B^{-1} row) / a over tied_ (>= 2 candidates).
   int lexmin_of_tied();
+  // The pivot entry a of `c` is above kPivotTol times the size of its terms (not noise).
+  bool admissible(const Candidate& c) const;
   // Minimum-ratio test with the lexicographic tie-break for the current direction. `initial`:
   // the z0 pivot (basic variables grow; the most negative ratio leaves). -1: no blocking
   // variable (ray); -2: no finite ratio (numerical failure).
@@ -101,6 +104,10 @@ class LemkeRun {
   Vec dxz_, dw_, row_best_, row_cand_;
   std::vector<Candidate> cands_, tied_;
   std::vector<double> tied_scale_;
+  static constexpr size_t kNone = static_cast<size_t>(-1);
+  std::vector<size_t> tied_pos_;     // per variable id: position in tied_ (kNone: not tied)
+  Vec g_rowmax_;                     // max_j |G(i, j)| per row (G = [M | c])
+  double dxz_l1_ = 0;                // ||dxz||_1 of the current direction
   std::vector<char> excluded_;       // per variable id, reset after each ratio test
   std::vector<uint64_t> seen_;       // open-addressing set of basis hashes (0 = empty)
   size_t seen_count_ = 0;
@@ -135,66 +142,72 @@ int LemkeRun::lexmin_of_tied() {
   // (value, B^{-1}(v, :)) / a_v; the values are tied already, so the columns of B^{-1} decide,
   // in the fixed order of the equations 0..n-1. The rows of B^{-1} are linearly independent,
   // so in exact arithmetic exactly one row is minimal: the basis path is that of the
-  // perturbed problem q + (eps, eps^2, ...) and never revisits a basis. Column by column, the
-  // candidates above the column's minimum (beyond kLexTol times the rows' scales
-  // max_j |B^{-1}(v, j)| / a_v, the rounding level) are dropped. Work: O(k) per candidate for
-  // the scales, then O(1) per candidate and column reached (columns of W are unit columns:
-  // only the row of w_j has an entry, 1 / a > 0, so it alone is dropped).
-  basis_.enable_lexico_rows();
+  // perturbed problem q + (eps, eps^2, ...) and never revisits a basis.
+  // Column j of W (w_j basic) is a unit column: only the row of w_j has an entry, exactly
+  // 1 / a > 0 (no rounding), so w_j alone is dropped, in O(1). A column of R holds computed
+  // entries: the candidates above the column's minimum by more than kLexTol times the rows'
+  // scales max_j |B^{-1}(v, j)| / a_v (the rounding level) are dropped. Work: O(1) per column
+  // of W, O(k) per candidate for the scales (computed at the first column of R), O(1) per
+  // candidate and column of R: at most O(n) per candidate, never O(n^2) per pivot.
+  for (size_t c = 0; c < tied_.size(); ++c) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
+  auto drop = [&](size_t c) {
+    tied_pos_[static_cast<size_t>(tied_[c].var)] = kNone;
+    tied_[c] = tied_.back();
+    if (!tied_scale_.empty()) tied_scale_[c] = tied_scale_.back();
+    tied_.pop_back();
+    if (!tied_scale_.empty()) tied_scale_.pop_back();
+    if (c < tied_.size()) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
+  };
   tied_scale_.clear();
-  for (const Candidate& c : tied_) {
-    double row_max = 0, terms = 0;
-    basis_.inverse_row_scales(c.var, row_max, terms);
-    tied_scale_.push_back(row_max / c.a);
-  }
   for (Eigen::Index j = 0; j < n_ && tied_.size() > 1; ++j) {
     if (basis_.rpos(j) < 0) {
-      const int wj = static_cast<int>(n_ + 1 + j);
-      for (size_t c = 0; c < tied_.size(); ++c) {
-        if (tied_[c].var != wj) continue;
-        // Entry 1 / a of w_j against 0 for every other candidate.
-        double others = 0;
-        for (size_t o = 0; o < tied_.size(); ++o)
-          if (o != c) others = std::max(others, tied_scale_[o]);
-        if (1.0 / tied_[c].a > kLexTol * (tied_scale_[c] + others)) {
-          tied_[c] = tied_.back();
-          tied_scale_[c] = tied_scale_.back();
-          tied_.pop_back();
-          tied_scale_.pop_back();
-        }
-        break;
-      }
+      const size_t c = tied_pos_[static_cast<size_t>(n_ + 1 + j)];
+      if (c != kNone) drop(c);
       continue;
+    }
+    if (tied_scale_.empty()) {
+      basis_.enable_lexico_rows();
+      for (const Candidate& t : tied_) {
+        double row_max = 0, terms = 0;
+        basis_.inverse_row_scales(t.var, row_max, terms);
+        tied_scale_.push_back(row_max / t.a);
+      }
     }
     double lo = INFINITY, lo_scale = 0;
     for (size_t c = 0; c < tied_.size(); ++c) {
       const double e = basis_.inverse_entry(tied_[c].var, j) / tied_[c].a;
       if (e < lo) lo = e, lo_scale = tied_scale_[c];
     }
-    size_t keep = 0;
-    for (size_t c = 0; c < tied_.size(); ++c) {
+    for (size_t c = tied_.size(); c-- > 0;) {
       const double e = basis_.inverse_entry(tied_[c].var, j) / tied_[c].a;
-      if (e - lo <= kLexTol * (tied_scale_[c] + lo_scale)) {
-        tied_[keep] = tied_[c];
-        tied_scale_[keep] = tied_scale_[c];
-        ++keep;
-      }
+      if (e - lo > kLexTol * (tied_scale_[c] + lo_scale)) drop(c);
     }
-    tied_.resize(keep);
-    tied_scale_.resize(keep);
   }
   // Rows equal to rounding level in every column (not expected: they are independent): the
   // most stable pivot, deterministically.
   size_t best = 0;
   for (size_t c = 1; c < tied_.size(); ++c)
     if (tied_[c].a > tied_[best].a) best = c;
-  return tied_[best].var;
+  const int var = tied_[best].var;
+  for (const Candidate& t : tied_) tied_pos_[static_cast<size_t>(t.var)] = kNone;
+  return var;
+}
+
+bool LemkeRun::admissible(const Candidate& c) const {
+  // Cheap bound first: for a w row, |G(i, entering)| + rowmax_G(i) ||dxz||_1 bounds its terms.
+  if (c.var > n_ && c.a > kPivotTol * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
+                                                                            entering_)
+                                                                : 0.0) +
+                                       g_rowmax_[c.var - n_ - 1] * dxz_l1_))
+    return true;
+  return c.a > kPivotTol * basis_.rate_terms(c.var, entering_, dxz_);
 }
 
 int LemkeRun::ratio_test(bool initial, double& step) {
   // Candidates: basic variables that move towards their bound 0 (the z0 pivot: every basic
   // variable grows, and the most negative value / rate leaves).
   cands_.clear();
+  dxz_l1_ = basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<1>() : 0.0;
   auto consider = [&](int var, double rate, double x) {
     const double a = initial ? rate : -rate;
     if (!(a > 0)) return;
@@ -220,7 +233,7 @@ int LemkeRun::ratio_test(bool initial, double& step) {
     }
     // A pivot entry that is rounding noise (below kPivotTol times the size of its terms) is
     // not a pivot: drop the candidate and look again.
-    if (!(best->a > kPivotTol * basis_.rate_terms(best->var, entering_, dxz_))) {
+    if (!admissible(*best)) {
       excluded_[static_cast<size_t>(best->var)] = 1;
       dropped.push_back(best->var);
       continue;
@@ -243,7 +256,7 @@ int LemkeRun::ratio_test(bool initial, double& step) {
     tied_.clear();
     for (const Candidate& c : cands_) {
       if (excluded_[static_cast<size_t>(c.var)] || c.theta > limit) continue;
-      if (&c != best && !(c.a > kPivotTol * basis_.rate_terms(c.var, entering_, dxz_))) {
+      if (&c != best && !admissible(c)) {
         excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
         dropped.push_back(c.var);
         continue;
@@ -408,6 +421,7 @@ SolveResult LemkeRun::run() {
   }
   for (int j : zset) c.noalias() -= rate0[j] * Eigen::Map<const Vec>(basis_.gcol(j), n_);
   basis_.set_artificial_column(c);
+  g_rowmax_ = basis_.matrix().rowwise().lpNorm<Eigen::Infinity>().cwiseMax(c.cwiseAbs());
   gmax_ = std::max({mmax_, c.lpNorm<Eigen::Infinity>(), 1e-300});
 
   const int limit =
