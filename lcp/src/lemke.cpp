@@ -239,17 +239,26 @@ int LemkeRun::ratio_test(bool initial, double& step) {
       continue;
     }
     // Ties: ratios within kTieTol of the minimum, relative to its size and to the size of
-    // the terms of its value (a degenerate zero is "0 up to rounding of those terms").
+    // the terms of its value (a degenerate zero is "0 up to rounding of those terms"). For a
+    // basic w_i (value q_i + G(i, Z) x_Z) the terms are first bounded cheaply by
+    // |q_i| + max_j |G(i, j)| ||x_Z||_1, and computed exactly only when some other ratio lies
+    // within that bound (without ties the test stays O(n), with no strided access to M).
     double row_max = 0, terms = 0;
     if (best->var <= n_ || basis_.lexico_rows_enabled()) {
       basis_.inverse_row_scales(best->var, row_max, terms);
     } else {
-      // w value = q_i + G(i, Z) x_Z: the size of those terms (no X needed).
       const Eigen::Index i = best->var - n_ - 1;
-      terms = std::abs(problem_.q[i]) + std::abs(basis_.w()[i]);
-      for (int p = 0; p < k; ++p) {
-        const int col = basis_.zcols()[static_cast<size_t>(p)];
-        terms += std::abs(basis_.g(i, col)) * std::abs(basis_.xz()[p]);
+      const double xz_l1 = k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0;
+      const double bound = std::abs(problem_.q[i]) + g_rowmax_[i] * xz_l1;
+      const double hi = best->theta + kTieTol * (std::abs(best->theta) + bound / best->a);
+      bool near = false;
+      for (const Candidate& c : cands_)
+        near = near || (&c != best && !excluded_[static_cast<size_t>(c.var)] && c.theta <= hi);
+      if (near) {
+        terms = std::abs(problem_.q[i]);
+        for (int p = 0; p < k; ++p)
+          terms += std::abs(basis_.g(i, basis_.zcols()[static_cast<size_t>(p)])) *
+                   std::abs(basis_.xz()[p]);
       }
     }
     const double limit = best->theta + kTieTol * (std::abs(best->theta) + terms / best->a);
