@@ -26,6 +26,15 @@ constexpr double kLexTol = 1e-9;     // lexico entries within this times the row
 constexpr int kCheckEvery = 16;       // pivots between accuracy checks of the basis inverse
 constexpr double kRefactorTol = 1e-10;  // relative residual that triggers a refactorization
 
+// A range [first, last) of a preallocated array, for range-for.
+template <class T>
+struct Span {
+  T* first;
+  T* last;
+  T* begin() const { return first; }
+  T* end() const { return last; }
+};
+
 void add_message(SolveResult& r, const std::string& text) {
   r.message += (r.message.empty() ? "" : "; ") + text;
 }
@@ -53,7 +62,7 @@ class LemkeRun {
         row_cand_(n_) {
     mmax_ = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
     qmax_ = problem.q.lpNorm<Eigen::Infinity>();
-    cands_.reserve(static_cast<size_t>(n_ + 1));
+    cands_.resize(static_cast<size_t>(n_ + 1));
     tied_.reserve(static_cast<size_t>(n_ + 1));
     tied_scale_.reserve(static_cast<size_t>(n_ + 1));
     excluded_.assign(static_cast<size_t>(2 * n_ + 1), 0);
@@ -206,24 +215,28 @@ bool LemkeRun::admissible(const Candidate& c) const {
 int LemkeRun::ratio_test(bool initial, double& step) {
   // Candidates: basic variables that move towards their bound 0 (the z0 pivot: every basic
   // variable grows, and the most negative value / rate leaves).
-  cands_.clear();
   dxz_l1_ = basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<1>() : 0.0;
-  auto consider = [&](int var, double rate, double x) {
-    const double a = initial ? rate : -rate;
-    if (!(a > 0)) return;
-    cands_.push_back({var, a, (initial ? x : std::max(x, 0.0)) / a});
-  };
+  // Collected into the preallocated cands_ (no push_back in this hot loop).
+  Candidate* const first = cands_.data();
+  Candidate* last = first;
+  const double sign = initial ? 1.0 : -1.0;
   const int k = basis_.k();
-  for (int p = 0; p < k; ++p)
-    consider(basis_.zcols()[static_cast<size_t>(p)], dxz_[p], basis_.xz()[p]);
-  for (Eigen::Index i = 0; i < n_; ++i)
-    if (basis_.rpos(i) < 0) consider(static_cast<int>(n_ + 1 + i), dw_[i], basis_.w()[i]);
+  for (int p = 0; p < k; ++p) {
+    const double a = sign * dxz_[p], x = basis_.xz()[p];
+    if (a > 0) *last++ = {basis_.zcols()[static_cast<size_t>(p)], a, (initial ? x : std::max(x, 0.0)) / a};
+  }
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    const double a = sign * dw_[i], x = basis_.w()[i];
+    if (a > 0 && basis_.rpos(i) < 0)
+      *last++ = {static_cast<int>(n_ + 1 + i), a, (initial ? x : std::max(x, 0.0)) / a};
+  }
+  const Span<Candidate> cands{first, last};
   int leaving = -1;
   std::vector<int> dropped;  // excluded_ marks to clear (rare: pivots that are noise)
   while (true) {
     // The minimum ratio among the candidates not excluded.
     const Candidate* best = nullptr;
-    for (const Candidate& c : cands_)
+    for (const Candidate& c : cands)
       if (!excluded_[static_cast<size_t>(c.var)] && (best == nullptr || c.theta < best->theta))
         best = &c;
     if (best == nullptr) break;  // ray
@@ -252,7 +265,7 @@ int LemkeRun::ratio_test(bool initial, double& step) {
       const double bound = std::abs(problem_.q[i]) + g_rowmax_[i] * xz_l1;
       const double hi = best->theta + kTieTol * (std::abs(best->theta) + bound / best->a);
       bool near = false;
-      for (const Candidate& c : cands_)
+      for (const Candidate& c : cands)
         near = near || (&c != best && !excluded_[static_cast<size_t>(c.var)] && c.theta <= hi);
       if (near) {
         terms = std::abs(problem_.q[i]);
@@ -263,7 +276,7 @@ int LemkeRun::ratio_test(bool initial, double& step) {
     }
     const double limit = best->theta + kTieTol * (std::abs(best->theta) + terms / best->a);
     tied_.clear();
-    for (const Candidate& c : cands_) {
+    for (const Candidate& c : cands) {
       if (excluded_[static_cast<size_t>(c.var)] || c.theta > limit) continue;
       if (&c != best && !admissible(c)) {
         excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
