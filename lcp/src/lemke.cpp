@@ -232,8 +232,36 @@ int LemkeRun::ratio_test(bool initial, double& step) {
   }
   const Span<Candidate> cands{first, last};
   int leaving = -1;
+  // Fast path (no ties, the usual case): the smallest ratio is an admissible pivot and the
+  // second smallest lies beyond any tie tolerance (bounded from above without O(k) work for a
+  // w; exact for a z).
+  if (last - first >= 1) {
+    const Candidate* c1 = first;
+    double theta2 = INFINITY;
+    for (const Candidate* c = first + 1; c != last; ++c) {
+      if (c->theta < c1->theta) {
+        theta2 = c1->theta;
+        c1 = c;
+      } else {
+        theta2 = std::min(theta2, c->theta);
+      }
+    }
+    if (std::isfinite(c1->theta) && admissible(*c1)) {
+      double bound = 0;
+      if (c1->var <= n_) {
+        double row_max = 0;
+        basis_.inverse_row_scales(c1->var, row_max, bound);
+      } else {
+        const Eigen::Index i = c1->var - n_ - 1;
+        bound = std::abs(problem_.q[i]) +
+                g_rowmax_[i] * (k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0);
+      }
+      if (theta2 > c1->theta + kTieTol * (std::abs(c1->theta) + bound / c1->a))
+        leaving = c1->var;
+    }
+  }
   std::vector<int> dropped;  // excluded_ marks to clear (rare: pivots that are noise)
-  while (true) {
+  while (leaving < 0) {
     // The minimum ratio among the candidates not excluded.
     const Candidate* best = nullptr;
     for (const Candidate& c : cands)
@@ -443,7 +471,9 @@ SolveResult LemkeRun::run() {
   }
   for (int j : zset) c.noalias() -= rate0[j] * Eigen::Map<const Vec>(basis_.gcol(j), n_);
   basis_.set_artificial_column(c);
-  g_rowmax_ = basis_.matrix().rowwise().lpNorm<Eigen::Infinity>().cwiseMax(c.cwiseAbs());
+  g_rowmax_ = c.cwiseAbs();  // row maxima of [M | c], column by column (contiguous)
+  for (Eigen::Index j = 0; j < n_; ++j)
+    g_rowmax_ = g_rowmax_.cwiseMax(basis_.matrix().col(j).cwiseAbs());
   gmax_ = std::max({mmax_, c.lpNorm<Eigen::Infinity>(), 1e-300});
 
   const int limit =
