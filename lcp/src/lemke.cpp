@@ -223,7 +223,8 @@ int LemkeRun::ratio_test(bool initial, double& step) {
   const int k = basis_.k();
   for (int p = 0; p < k; ++p) {
     const double a = sign * dxz_[p], x = basis_.xz()[p];
-    if (a > 0) *last++ = {basis_.zcols()[static_cast<size_t>(p)], a, (initial ? x : std::max(x, 0.0)) / a};
+    if (a > 0)
+      *last++ = {basis_.zcols()[static_cast<size_t>(p)], a, (initial ? x : std::max(x, 0.0)) / a};
   }
   for (Eigen::Index i = 0; i < n_; ++i) {
     const double a = sign * dw_[i], x = basis_.w()[i];
