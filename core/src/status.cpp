@@ -17,6 +17,7 @@ std::string_view to_string(Status s) noexcept {
     case Status::kNumericalFailure: return "numerical_failure";
     case Status::kInterrupted: return "interrupted";
     case Status::kUnsupported: return "unsupported";
+    case Status::kCycleDetected: return "cycle_detected";
   }
   return "unknown";
 }
@@ -27,7 +28,7 @@ std::optional<Status> status_from_string(std::string_view name) noexcept {
                               Status::kRayTermination, Status::kIterationLimit,
                               Status::kTimeLimit,      Status::kStalled,
                               Status::kNumericalFailure, Status::kInterrupted,
-                              Status::kUnsupported};
+                              Status::kUnsupported,    Status::kCycleDetected};
   for (Status s : all)
     if (to_string(s) == name) return s;
   return std::nullopt;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -17,11 +18,22 @@ namespace {
 
 using detail::LemkeBasis;
 
-constexpr double kPivotTol = 1e-11;   // relative size of an admissible pivot
-constexpr double kDegenTol = 1e-12;   // relative size below which a basic value counts as 0
-constexpr double kTieTol = 1e-9;      // relative tie in the minimum ratio
+// Tolerances, all relative to the size of the terms that produced the number being tested
+// (so invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings of the data):
+constexpr double kPivotTol = 1e-11;  // a pivot entry below this times its terms is noise
+constexpr double kTieTol = 1e-9;     // ratios within this (times ratio + value terms) tie
+constexpr double kLexTol = 1e-9;     // lexico entries within this times the rows' scale tie
 constexpr int kCheckEvery = 16;       // pivots between accuracy checks of the basis inverse
 constexpr double kRefactorTol = 1e-10;  // relative residual that triggers a refactorization
+
+// A range [first, last) of a preallocated array, for range-for.
+template <class T>
+struct Span {
+  T* first;
+  T* last;
+  T* begin() const { return first; }
+  T* end() const { return last; }
+};
 
 void add_message(SolveResult& r, const std::string& text) {
   r.message += (r.message.empty() ? "" : "; ") + text;
@@ -50,8 +62,11 @@ class LemkeRun {
         row_cand_(n_) {
     mmax_ = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
     qmax_ = problem.q.lpNorm<Eigen::Infinity>();
+    cands_.resize(static_cast<size_t>(n_ + 1));
     tied_.reserve(static_cast<size_t>(n_ + 1));
-    tied_div_.reserve(static_cast<size_t>(n_ + 1));
+    tied_scale_.reserve(static_cast<size_t>(n_ + 1));
+    excluded_.assign(static_cast<size_t>(2 * n_ + 1), 0);
+    tied_pos_.assign(static_cast<size_t>(2 * n_ + 1), kNone);
   }
 
   SolveResult run();
@@ -64,12 +79,24 @@ class LemkeRun {
   double value(int var) const {
     return var <= n_ ? basis_.xz()[basis_.zpos(var)] : basis_.w()[var - n_ - 1];
   }
-  // Lexicographic minimum of (value, B^{-1} row) / divisor over the tied candidates.
+  // A blocking candidate of the ratio test: basic `var` changes at rate -a (a > 0; the
+  // initial z0 pivot: +a), ratio theta = value / a.
+  struct Candidate {
+    int var;
+    double a, theta;
+  };
+  // Lexicographic minimum of (value, B^{-1} row) / a over tied_ (>= 2 candidates).
   int lexmin_of_tied();
-  // Minimum-ratio test for the current direction; -1: no blocking variable (ray).
-  int ratio_test(double& step);
-  // Leaving variable of the initial z0 pivot (lexmin of (x_i, B^{-1}_i) / d_i).
-  int initial_leaving(const Vec& dtilde);
+  // The pivot entry a of `c` is above kPivotTol times the size of its terms (not noise).
+  bool admissible(const Candidate& c) const;
+  // Minimum-ratio test with the lexicographic tie-break for the current direction. `initial`:
+  // the z0 pivot (basic variables grow; the most negative ratio leaves). -1: no blocking
+  // variable (ray); -2: no finite ratio (numerical failure).
+  int ratio_test(bool initial, double& step);
+  // Cycle guard: records the current basis; false when it was visited before.
+  bool remember_basis(int entering, int leaving);
+  // Candidate certificates at a secondary ray; true when one passes check_certificate.
+  bool find_certificate(const Vec& ray, Certificate& cert);
   void record(int iteration, const char* kind, int entering, int leaving, double step);
   SolveResult finish(SolveResult claim);
   bool check_accuracy(int pivots);
@@ -84,8 +111,16 @@ class LemkeRun {
   Eigen::Index n_;
   LemkeBasis basis_;
   Vec dxz_, dw_, row_best_, row_cand_;
-  std::vector<int> tied_;
-  std::vector<double> tied_div_;
+  std::vector<Candidate> cands_, tied_;
+  std::vector<double> tied_scale_;
+  static constexpr size_t kNone = static_cast<size_t>(-1);
+  std::vector<size_t> tied_pos_;     // per variable id: position in tied_ (kNone: not tied)
+  Vec g_rowmax_;                     // max_j |G(i, j)| per row (G = [M | c])
+  double dxz_l1_ = 0;                // ||dxz||_1 of the current direction
+  std::vector<char> excluded_;       // per variable id, reset after each ratio test
+  std::vector<uint64_t> seen_;       // open-addressing set of basis hashes (0 = empty)
+  size_t seen_count_ = 0;
+  uint64_t hash_ = 0;                // Zobrist hash of the current basis
   std::vector<TraceEntry> trace_;
   double mmax_ = 0;            // max |M_ij|
   double gmax_ = 1;            // max |[M | c]_ij| (set with the artificial column c)
@@ -112,107 +147,261 @@ void LemkeRun::record(int iteration, const char* kind, int entering, int leaving
 }
 
 int LemkeRun::lexmin_of_tied() {
-  // (value_i, B^{-1}_i) / div_i compared component by component; the values are tied already.
-  size_t best = 0;
-  basis_.inverse_row(tied_[0], row_best_);
-  row_best_ /= tied_div_[0];
-  for (size_t c = 1; c < tied_.size(); ++c) {
-    basis_.inverse_row(tied_[c], row_cand_);
-    row_cand_ /= tied_div_[c];
-    const double scale = std::max(row_best_.lpNorm<Eigen::Infinity>(),
-                                  row_cand_.lpNorm<Eigen::Infinity>());
-    for (Eigen::Index i = 0; i < n_; ++i) {
-      const double a = row_cand_[i], b = row_best_[i];
-      if (std::abs(a - b) <= kTieTol * std::max(std::abs(a), std::abs(b)) + 1e-13 * scale)
-        continue;
-      if (a < b) {
-        best = c;
-        row_best_.swap(row_cand_);
+  // Lexicographic rule [CPS 1992, Sec. 4.9]: the leaving variable minimizes the row
+  // (value, B^{-1}(v, :)) / a_v; the values are tied already, so the columns of B^{-1} decide,
+  // in the fixed order of the equations 0..n-1. The rows of B^{-1} are linearly independent,
+  // so in exact arithmetic exactly one row is minimal: the basis path is that of the
+  // perturbed problem q + (eps, eps^2, ...) and never revisits a basis.
+  // Column j of W (w_j basic) is a unit column: only the row of w_j has an entry, exactly
+  // 1 / a > 0 (no rounding), so w_j alone is dropped, in O(1). A column of R holds computed
+  // entries: the candidates above the column's minimum by more than kLexTol times the rows'
+  // scales max_j |B^{-1}(v, j)| / a_v (the rounding level) are dropped. Work: O(1) per column
+  // of W, O(k) per candidate for the scales (computed at the first column of R), O(1) per
+  // candidate and column of R: at most O(n) per candidate, never O(n^2) per pivot.
+  for (size_t c = 0; c < tied_.size(); ++c) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
+  auto drop = [&](size_t c) {
+    tied_pos_[static_cast<size_t>(tied_[c].var)] = kNone;
+    tied_[c] = tied_.back();
+    if (!tied_scale_.empty()) tied_scale_[c] = tied_scale_.back();
+    tied_.pop_back();
+    if (!tied_scale_.empty()) tied_scale_.pop_back();
+    if (c < tied_.size()) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
+  };
+  tied_scale_.clear();
+  for (Eigen::Index j = 0; j < n_ && tied_.size() > 1; ++j) {
+    if (basis_.rpos(j) < 0) {
+      const size_t c = tied_pos_[static_cast<size_t>(n_ + 1 + j)];
+      if (c != kNone) drop(c);
+      continue;
+    }
+    if (tied_scale_.empty()) {
+      basis_.enable_lexico_rows();
+      for (const Candidate& t : tied_) {
+        double row_max = 0, terms = 0;
+        basis_.inverse_row_scales(t.var, row_max, terms);
+        tied_scale_.push_back(row_max / t.a);
       }
+    }
+    double lo = INFINITY, lo_scale = 0;
+    for (size_t c = 0; c < tied_.size(); ++c) {
+      const double e = basis_.inverse_entry(tied_[c].var, j) / tied_[c].a;
+      if (e < lo) lo = e, lo_scale = tied_scale_[c];
+    }
+    for (size_t c = tied_.size(); c-- > 0;) {
+      const double e = basis_.inverse_entry(tied_[c].var, j) / tied_[c].a;
+      if (e - lo > kLexTol * (tied_scale_[c] + lo_scale)) drop(c);
+    }
+  }
+  // Rows equal to rounding level in every column (not expected: they are independent): the
+  // most stable pivot, deterministically.
+  size_t best = 0;
+  for (size_t c = 1; c < tied_.size(); ++c)
+    if (tied_[c].a > tied_[best].a) best = c;
+  const int var = tied_[best].var;
+  for (const Candidate& t : tied_) tied_pos_[static_cast<size_t>(t.var)] = kNone;
+  return var;
+}
+
+bool LemkeRun::admissible(const Candidate& c) const {
+  // Cheap bound first: for a w row, |G(i, entering)| + rowmax_G(i) ||dxz||_1 bounds its terms.
+  if (c.var > n_ && c.a > kPivotTol * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
+                                                                            entering_)
+                                                                : 0.0) +
+                                       g_rowmax_[c.var - n_ - 1] * dxz_l1_))
+    return true;
+  return c.a > kPivotTol * basis_.rate_terms(c.var, entering_, dxz_);
+}
+
+int LemkeRun::ratio_test(bool initial, double& step) {
+  // Candidates: basic variables that move towards their bound 0 (the z0 pivot: every basic
+  // variable grows, and the most negative value / rate leaves).
+  dxz_l1_ = basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<1>() : 0.0;
+  // Collected into the preallocated cands_ (no push_back in this hot loop).
+  Candidate* const first = cands_.data();
+  Candidate* last = first;
+  const double sign = initial ? 1.0 : -1.0;
+  const int k = basis_.k();
+  for (int p = 0; p < k; ++p) {
+    const double a = sign * dxz_[p], x = basis_.xz()[p];
+    if (a > 0)
+      *last++ = {basis_.zcols()[static_cast<size_t>(p)], a, (initial ? x : std::max(x, 0.0)) / a};
+  }
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    const double a = sign * dw_[i], x = basis_.w()[i];
+    if (a > 0 && basis_.rpos(i) < 0)
+      *last++ = {static_cast<int>(n_ + 1 + i), a, (initial ? x : std::max(x, 0.0)) / a};
+  }
+  const Span<Candidate> cands{first, last};
+  int leaving = -1;
+  // Fast path (no ties, the usual case): the smallest ratio is an admissible pivot and the
+  // second smallest lies beyond any tie tolerance (bounded from above without O(k) work for a
+  // w; exact for a z).
+  if (last - first >= 1) {
+    const Candidate* c1 = first;
+    double theta2 = INFINITY;
+    for (const Candidate* c = first + 1; c != last; ++c) {
+      if (c->theta < c1->theta) {
+        theta2 = c1->theta;
+        c1 = c;
+      } else {
+        theta2 = std::min(theta2, c->theta);
+      }
+    }
+    if (std::isfinite(c1->theta) && admissible(*c1)) {
+      double bound = 0;
+      if (c1->var <= n_) {
+        double row_max = 0;
+        basis_.inverse_row_scales(c1->var, row_max, bound);
+      } else {
+        const Eigen::Index i = c1->var - n_ - 1;
+        bound = std::abs(problem_.q[i]) +
+                g_rowmax_[i] * (k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0);
+      }
+      if (theta2 > c1->theta + kTieTol * (std::abs(c1->theta) + bound / c1->a))
+        leaving = c1->var;
+    }
+  }
+  std::vector<int> dropped;  // excluded_ marks to clear (rare: pivots that are noise)
+  while (leaving < 0) {
+    // The minimum ratio among the candidates not excluded.
+    const Candidate* best = nullptr;
+    for (const Candidate& c : cands)
+      if (!excluded_[static_cast<size_t>(c.var)] && (best == nullptr || c.theta < best->theta))
+        best = &c;
+    if (best == nullptr) break;  // ray
+    if (!std::isfinite(best->theta)) {
+      leaving = -2;
       break;
     }
-  }
-  return tied_[best];
-}
-
-int LemkeRun::initial_leaving(const Vec& dtilde) {
-  // Every basic variable x_i grows at rate dtilde_i > 0 with z0; the one that must grow most,
-  // argmin x_i / dtilde_i, leaves (lexicographically, for degenerate starts).
-  double best = INFINITY;
-  for (Eigen::Index i = 0; i < n_; ++i) {
-    const int var = static_cast<int>(basis_.rpos(i) < 0 ? n_ + 1 + i : i);
-    best = std::min(best, value(var) / dtilde[i]);
-  }
-  tied_.clear();
-  tied_div_.clear();
-  for (Eigen::Index i = 0; i < n_; ++i) {
-    const int var = static_cast<int>(basis_.rpos(i) < 0 ? n_ + 1 + i : i);
-    const double r = value(var) / dtilde[i];
-    if (r <= best + kTieTol * std::abs(best)) {
-      tied_.push_back(var);
-      tied_div_.push_back(dtilde[i]);
+    // A pivot entry that is rounding noise (below kPivotTol times the size of its terms) is
+    // not a pivot: drop the candidate and look again.
+    if (!admissible(*best)) {
+      excluded_[static_cast<size_t>(best->var)] = 1;
+      dropped.push_back(best->var);
+      continue;
     }
-  }
-  return tied_.size() == 1 ? tied_[0] : lexmin_of_tied();
-}
-
-int LemkeRun::ratio_test(double& step) {
-  // Scale-aware tolerances (invariant under scaling M, q and the units of z): a pivot entry
-  // must exceed kPivotTol relative to the size of the pivot column's terms; a basic value below
-  // kDegenTol relative to the size of its kind of values counts as a degenerate zero.
-  const int k = basis_.k();
-  const double dz_norm = k > 0 ? dxz_.head(k).lpNorm<Eigen::Infinity>() : 0.0;
-  const double dz_scale = entering_ <= n_ ? std::max(1.0, dz_norm) : dz_norm;  // z enters at rate 1
-  const double tol_z = kPivotTol * dz_scale;
-  const double tol_w = kPivotTol * gmax_ * dz_scale;
-  const double xz_tol = kDegenTol * (k > 0 ? basis_.xz().head(k).lpNorm<Eigen::Infinity>() : 0.0);
-  const double w_tol = kDegenTol * std::max(basis_.w().lpNorm<Eigen::Infinity>(), qmax_);
-  // Pass 1: the minimum ratio.
-  double best = INFINITY;
-  for (int p = 0; p < k; ++p) {
-    const double a = -dxz_[p];
-    if (a > tol_z) {
-      const double x = basis_.xz()[p];
-      best = std::min(best, (x > xz_tol ? x : 0.0) / a);
-    }
-  }
-  for (Eigen::Index i = 0; i < n_; ++i) {
-    if (basis_.rpos(i) >= 0) continue;
-    const double a = -dw_[i];
-    if (a > tol_w) {
-      const double x = basis_.w()[i];
-      best = std::min(best, (x > w_tol ? x : 0.0) / a);
-    }
-  }
-  if (!(best < INFINITY)) return -1;
-  // Pass 2: the tied rows.
-  tied_.clear();
-  tied_div_.clear();
-  const double limit = best * (1.0 + kTieTol);
-  for (int p = 0; p < k; ++p) {
-    const double a = -dxz_[p];
-    if (a > tol_z) {
-      const double x = basis_.xz()[p];
-      if ((x > xz_tol ? x : 0.0) / a <= limit) {
-        tied_.push_back(basis_.zcols()[static_cast<size_t>(p)]);
-        tied_div_.push_back(a);
+    // Ties: ratios within kTieTol of the minimum, relative to its size and to the size of
+    // the terms of its value (a degenerate zero is "0 up to rounding of those terms"). For a
+    // basic w_i (value q_i + G(i, Z) x_Z) the terms are first bounded cheaply by
+    // |q_i| + max_j |G(i, j)| ||x_Z||_1, and computed exactly only when some other ratio lies
+    // within that bound (without ties the test stays O(n), with no strided access to M).
+    double row_max = 0, terms = 0;
+    if (best->var <= n_ || basis_.lexico_rows_enabled()) {
+      basis_.inverse_row_scales(best->var, row_max, terms);
+    } else {
+      const Eigen::Index i = best->var - n_ - 1;
+      const double xz_l1 = k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0;
+      const double bound = std::abs(problem_.q[i]) + g_rowmax_[i] * xz_l1;
+      const double hi = best->theta + kTieTol * (std::abs(best->theta) + bound / best->a);
+      bool near = false;
+      for (const Candidate& c : cands)
+        near = near || (&c != best && !excluded_[static_cast<size_t>(c.var)] && c.theta <= hi);
+      if (near) {
+        terms = std::abs(problem_.q[i]);
+        for (int p = 0; p < k; ++p)
+          terms += std::abs(basis_.g(i, basis_.zcols()[static_cast<size_t>(p)])) *
+                   std::abs(basis_.xz()[p]);
       }
     }
-  }
-  for (Eigen::Index i = 0; i < n_; ++i) {
-    if (basis_.rpos(i) >= 0) continue;
-    const double a = -dw_[i];
-    if (a > tol_w) {
-      const double x = basis_.w()[i];
-      if ((x > w_tol ? x : 0.0) / a <= limit) {
-        tied_.push_back(static_cast<int>(n_ + 1 + i));
-        tied_div_.push_back(a);
+    const double limit = best->theta + kTieTol * (std::abs(best->theta) + terms / best->a);
+    tied_.clear();
+    for (const Candidate& c : cands) {
+      if (excluded_[static_cast<size_t>(c.var)] || c.theta > limit) continue;
+      if (&c != best && !admissible(c)) {
+        excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
+        dropped.push_back(c.var);
+        continue;
       }
+      tied_.push_back(c);
     }
+    // z0 among the tied leaves (the solution is reached), as in every Lemke variant.
+    for (const Candidate& c : tied_)
+      if (c.var == n_) leaving = c.var;
+    if (leaving >= 0) break;
+    if (tied_.size() == 1) {
+      leaving = tied_[0].var;
+    } else if (o_.lexicographic) {
+      leaving = lexmin_of_tied();
+    } else {
+      // Plain rule (tests and demonstrations only): the smallest variable id.
+      leaving = tied_[0].var;
+      for (const Candidate& c : tied_) leaving = std::min(leaving, c.var);
+    }
+    break;
   }
-  const int leaving = tied_.size() == 1 ? tied_[0] : lexmin_of_tied();
-  step = std::max(0.0, value(leaving)) / -rate(leaving);
+  for (int v : dropped) excluded_[static_cast<size_t>(v)] = 0;
+  if (leaving < 0) return leaving;
+  const double x = value(leaving), r = rate(leaving);
+  step = initial ? -x / r : std::max(0.0, x) / -r;
   return leaving;
+}
+
+bool LemkeRun::remember_basis(int entering, int leaving) {
+  // Zobrist hash of the set of basic variables: XOR of one random key per basic variable,
+  // updated in O(1) per pivot. A repeat means the lexicographic rule was violated (a bug or
+  // a tie decided by rounding): it is reported instead of cycling to the pivot limit.
+  auto key = [](int var) {
+    uint64_t x = static_cast<uint64_t>(var) + 0x9E3779B97F4A7C15ull;  // splitmix64
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+  };
+  if (entering >= 0) hash_ ^= key(entering);
+  if (leaving >= 0) hash_ ^= key(leaving);
+  const uint64_t h = hash_ == 0 ? 1 : hash_;
+  if (2 * (seen_count_ + 1) > seen_.size()) {  // keep the load below 1/2
+    std::vector<uint64_t> old(std::max<size_t>(64, 2 * seen_.size()), 0);
+    old.swap(seen_);
+    seen_count_ = 0;
+    for (uint64_t v : old)
+      if (v != 0) {
+        size_t i = v & (seen_.size() - 1);
+        while (seen_[i] != 0) i = (i + 1) & (seen_.size() - 1);
+        seen_[i] = v;
+        ++seen_count_;
+      }
+  }
+  size_t i = h & (seen_.size() - 1);
+  while (seen_[i] != 0) {
+    if (seen_[i] == h) return false;
+    i = (i + 1) & (seen_.size() - 1);
+  }
+  seen_[i] = h;
+  ++seen_count_;
+  return true;
+}
+
+bool LemkeRun::find_certificate(const Vec& ray, Certificate& cert) {
+  // Cheap candidates y for y >= 0, M^T y <= 0, q^T y < 0, each re-checked from the data by
+  // check_certificate (finalize() checks the kept one again). For a copositive-plus M the
+  // z-part of the ray is one [CPS 1992, Thm 4.4.13]; for other M the others often are:
+  //  - minus the z0 row of B^{-1} (z0 = -row . q + ... must stay >= 0),
+  //  - the w-part of the ray (M z_r + d z0_r), the covering vector d and the all-ones vector,
+  //  - the unit vectors e_i (row i of M <= 0 with q_i < 0), O(n^2) in all.
+  auto accept = [&](const Vec& y) {
+    if (!y.allFinite() || !(y.minCoeff() >= 0) || !(y.maxCoeff() > 0)) return false;
+    cert = Certificate{};
+    cert.y = y;
+    return check_certificate(problem_, cert);
+  };
+  if (accept(ray.head(n_))) return true;
+  if (basis_.zpos(static_cast<int>(n_)) >= 0) {
+    basis_.inverse_row(static_cast<int>(n_), row_cand_);
+    if (accept(-row_cand_)) return true;
+  }
+  const Vec& c = basis_.artificial_column();  // internal units of z0: ray[n_] / beta_
+  Vec wray = ray[n_] / beta_ * c;
+  for (Eigen::Index j = 0; j < n_; ++j)
+    if (ray[j] != 0) wray += ray[j] * Eigen::Map<const Vec>(basis_.gcol(static_cast<int>(j)), n_);
+  if (accept(wray)) return true;
+  if (o_.covering.size() == n_ && accept(o_.covering)) return true;
+  if (accept(Vec::Ones(n_))) return true;
+  const Mat& M = basis_.matrix();
+  for (Eigen::Index i = 0; i < n_; ++i) {
+    if (!(problem_.q[i] < 0) || !(M.row(i).maxCoeff() <= 0)) continue;
+    if (accept(Vec::Unit(n_, i))) return true;
+  }
+  return false;
 }
 
 bool LemkeRun::check_accuracy(int pivots) {
@@ -283,6 +472,9 @@ SolveResult LemkeRun::run() {
   }
   for (int j : zset) c.noalias() -= rate0[j] * Eigen::Map<const Vec>(basis_.gcol(j), n_);
   basis_.set_artificial_column(c);
+  g_rowmax_ = c.cwiseAbs();  // row maxima of [M | c], column by column (contiguous)
+  for (Eigen::Index j = 0; j < n_; ++j)
+    g_rowmax_ = g_rowmax_.cwiseMax(basis_.matrix().col(j).cwiseAbs());
   gmax_ = std::max({mmax_, c.lpNorm<Eigen::Infinity>(), 1e-300});
 
   const int limit =
@@ -295,12 +487,25 @@ SolveResult LemkeRun::run() {
     return finish(std::move(claim));
   }
   // Initial pivot: z0 enters.
+  remember_basis(-1, -1);
   {
+    entering_ = z0var;
     basis_.direction(z0var, dxz_, dw_);
-    const int leaving = initial_leaving(rate0);
-    const double step = -value(leaving) / rate(leaving);
+    double step = 0;
+    const int leaving = ratio_test(true, step);
+    if (leaving < 0 || !std::isfinite(step)) {
+      // A finite basis cannot have a z0 that overflows unless the data span more than the
+      // double range (e.g. M = 1e-320, q = -1: z = 1e320).
+      claim.status = Status::kNumericalFailure;
+      add_message(claim, "the initial z0 pivot overflows: the solution is not representable "
+                         "in double precision (|M| and |q| too far apart)");
+      claim.iterations = 0;
+      basis_.current_point(claim.z, z0);
+      return finish(std::move(claim));
+    }
     basis_.pivot(z0var, leaving, step, dxz_, dw_);
     ++pivots;
+    remember_basis(z0var, leaving);
     record(pivots, "z0-enters", z0var, leaving, step * beta_);
     // The complement of the leaving variable enters next.
     entering = leaving < n_ ? leaving + static_cast<int>(n_) + 1 : leaving - static_cast<int>(n_) - 1;
@@ -324,7 +529,13 @@ SolveResult LemkeRun::run() {
       break;
     }
     double step = 0;
-    const int leaving = ratio_test(step);
+    const int leaving = ratio_test(false, step);
+    if (leaving == -2 || (leaving >= 0 && !std::isfinite(step))) {
+      claim.status = Status::kNumericalFailure;
+      add_message(claim, "the step overflows after " + std::to_string(pivots) +
+                             " pivots: the solution is not representable in double precision");
+      break;
+    }
     if (leaving < 0) {
       // Secondary ray: the entering variable grows without bound.
       Vec ray = Vec::Zero(n_ + 1);
@@ -335,16 +546,8 @@ SolveResult LemkeRun::run() {
       claim.status = Status::kRayTermination;
       add_message(claim, "secondary ray after " + std::to_string(pivots) + " pivots (" +
                              var_name(entering, n_) + " unblocked)");
-      // Candidate certificates, kept only when the data confirm them.
       Certificate cand;
-      cand.y = ray.head(n_);
-      bool ok = check_certificate(problem_, cand);
-      if (!ok && basis_.zpos(z0var) >= 0) {
-        basis_.inverse_row(z0var, row_cand_);
-        cand.y = -row_cand_;
-        ok = check_certificate(problem_, cand);
-      }
-      if (ok) {
+      if (find_certificate(ray, cand)) {
         claim.status = Status::kInfeasible;
         claim.certificate = cand;
         claim.message += "; infeasibility certificate y >= 0, M^T y <= 0, q^T y < 0 found";
@@ -355,6 +558,16 @@ SolveResult LemkeRun::run() {
     }
     basis_.pivot(entering, leaving, step, dxz_, dw_);
     ++pivots;
+    if (!remember_basis(entering, leaving)) {
+      record(pivots, "pivot", entering, leaving, step);
+      claim.status = Status::kCycleDetected;
+      add_message(claim, "basis repeated at pivot " + std::to_string(pivots) +
+                             (o_.lexicographic
+                                  ? " (the lexicographic rule never revisits a basis: a bug, "
+                                    "please report this problem)"
+                                  : " (plain tie-breaking cycles; use the lexicographic rule)"));
+      break;
+    }
     if (leaving == z0var) {
       record(pivots, "z0-leaves", entering, leaving, step);
       claim.status = Status::kSolved;

@@ -46,7 +46,72 @@ bool LemkeBasis::refactor() {
   const double rc = lu.rcond();
   if (!(rc > 1e-14) || !std::isfinite(rc)) return false;
   hinv_.topLeftCorner(k_, k_) = lu.inverse();
-  return hinv_.topLeftCorner(k_, k_).allFinite();
+  if (!hinv_.topLeftCorner(k_, k_).allFinite()) return false;
+  if (x_on_) compute_x();
+  return true;
+}
+
+void LemkeBasis::compute_x() {
+  const Eigen::Index k = k_;
+  if (k == 0) return;
+  x_.leftCols(k).noalias() = gz_.leftCols(k) * hinv_.topLeftCorner(k, k);
+  // Rows of R are exactly unit rows (H H^{-1} = I); the updates keep them so.
+  for (int t = 0; t < k_; ++t) {
+    x_.row(rrows_[static_cast<size_t>(t)]).head(k).setZero();
+    x_(rrows_[static_cast<size_t>(t)], t) = 1.0;
+  }
+}
+
+void LemkeBasis::enable_lexico_rows() {
+  if (x_on_) return;
+  x_.resize(n_, n_ + 1);
+  x_on_ = true;
+  compute_x();
+}
+
+double LemkeBasis::inverse_entry(int var, Eigen::Index j) const {
+  const int t = rpos(j);
+  if (t < 0) return var == n_ + 1 + j ? 1.0 : 0.0;
+  if (var <= n_) return -hinv_(zpos(var), t);
+  return -x_(var - n_ - 1, t);
+}
+
+void LemkeBasis::inverse_row_scales(int var, double& row_max, double& value_terms) const {
+  row_max = 0.0;
+  value_terms = 0.0;
+  if (var <= n_) {
+    const int p = zpos(var);
+    for (int t = 0; t < k_; ++t) {
+      const double h = std::abs(hinv_(p, t));
+      row_max = std::max(row_max, h);
+      value_terms += h * std::abs(q_[rrows_[static_cast<size_t>(t)]]);
+    }
+  } else {
+    const Eigen::Index i = var - n_ - 1;
+    row_max = 1.0;
+    value_terms = std::abs(q_[i]);
+    for (int t = 0; t < k_; ++t) {
+      const double x = std::abs(x_(i, t));
+      row_max = std::max(row_max, x);
+      value_terms += x * std::abs(q_[rrows_[static_cast<size_t>(t)]]);
+    }
+  }
+}
+
+double LemkeBasis::rate_terms(int var, int entering, const Vec& dxz) const {
+  double s = 0.0;
+  if (var <= n_) {
+    const int p = zpos(var);
+    if (entering > n_) return std::abs(dxz[p]);  // a column of H^{-1}: no cancellation
+    const double* col = gcol(entering);
+    for (int t = 0; t < k_; ++t)
+      s += std::abs(hinv_(p, t)) * std::abs(col[rrows_[static_cast<size_t>(t)]]);
+    return s;
+  }
+  const Eigen::Index i = var - n_ - 1;
+  if (entering <= n_) s = std::abs(gcol(entering)[i]);
+  for (int p = 0; p < k_; ++p) s += std::abs(gz_(i, p)) * std::abs(dxz[p]);
+  return s;
 }
 
 void LemkeBasis::recompute_values() {
@@ -96,6 +161,8 @@ void LemkeBasis::direction(int var, Vec& dxz, Vec& dw) {
     dw.setZero();
   }
   dw.noalias() += gz_.leftCols(k) * dxz.head(k);
+  // Rows of R: w stays nonbasic (0 in exact arithmetic; the X update relies on exact zeros).
+  for (int t = 0; t < k_; ++t) dw[rrows_[static_cast<size_t>(t)]] = 0.0;
 }
 
 void LemkeBasis::inverse_row(int var, Vec& out) {
@@ -104,6 +171,10 @@ void LemkeBasis::inverse_row(int var, Vec& out) {
   if (var <= n_) {
     const int p = zpos(var);
     for (int t = 0; t < k_; ++t) out[rrows_[static_cast<size_t>(t)]] = -hinv_(p, t);
+  } else if (x_on_) {
+    const Eigen::Index i = var - n_ - 1;
+    out[i] = 1.0;
+    for (int t = 0; t < k_; ++t) out[rrows_[static_cast<size_t>(t)]] = -x_(i, t);
   } else {
     const Eigen::Index i = var - n_ - 1;
     tmp_.head(k) = gz_.row(i).head(k).transpose();
@@ -122,9 +193,20 @@ void LemkeBasis::pivot(int entering, int leaving, double t, const Vec& dxz, cons
     // z_j enters, w_r leaves: H grows by row r and column j (bordering).
     const Eigen::Index r = leaving - n_ - 1;
     const double s = dw[r];  // = G(r, j) + G(r, Z) dxz, the Schur complement
-    tmp_.head(k) = gz_.row(r).head(k).transpose();
-    tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);  // v = H^{-T} g
+    if (x_on_) {
+      tmp2_.head(k) = x_.row(r).head(k).transpose();  // X(r, :) = (H^{-T} g)^T
+    } else {
+      tmp_.head(k) = gz_.row(r).head(k).transpose();
+      tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);  // v = H^{-T} g
+    }
     tmp2_.head(k) /= s;
+    if (x_on_) {
+      // X' = [X - dw v^T, dw / s]; row r becomes the unit row of the new position k.
+      x_.leftCols(k).noalias() -= dw * tmp2_.head(k).transpose();
+      x_.col(k) = dw / s;
+      x_.row(r).head(k + 1).setZero();
+      x_(r, k) = 1.0;
+    }
     H.noalias() -= dxz.head(k) * tmp2_.head(k).transpose();
     hinv_.col(k).head(k) = dxz.head(k) / s;
     hinv_.row(k).head(k) = -tmp2_.head(k).transpose();
@@ -143,6 +225,7 @@ void LemkeBasis::pivot(int entering, int leaving, double t, const Vec& dxz, cons
     const double up = -dxz[p];
     tmp_.head(k) = hinv_.row(p).head(k).transpose() / up;
     H.noalias() += dxz.head(k) * tmp_.head(k).transpose();
+    if (x_on_) x_.leftCols(k).noalias() += dw * tmp_.head(k).transpose();
     hinv_.row(p).head(k) = tmp_.head(k).transpose();
     zcols_[static_cast<size_t>(p)] = entering;
     zpos_[static_cast<size_t>(entering)] = p;
@@ -154,8 +237,22 @@ void LemkeBasis::pivot(int entering, int leaving, double t, const Vec& dxz, cons
     const Eigen::Index j = entering - n_ - 1;
     const Eigen::Index r = leaving - n_ - 1;
     const int pj = rpos(j);
-    tmp_.head(k) = gz_.row(r).head(k).transpose();
-    tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);
+    if (x_on_) {
+      tmp2_.head(k) = x_.row(r).head(k).transpose();  // X(r, :) = (H^{-T} g)^T
+      // u = X(r, :) / s with s = X(r, pj) = dw_r: X' = X - dw u^T on the rows of W, column pj
+      // (now equation r) = dw / s; row j (w_j now basic) = -u with 1 / s at pj; row r = unit.
+      const double s = tmp2_[pj];
+      tmp_.head(k) = tmp2_.head(k) / s;
+      x_.leftCols(k).noalias() -= dw * tmp_.head(k).transpose();
+      x_.col(pj) = dw / s;
+      x_.row(j).head(k) = -tmp_.head(k).transpose();
+      x_(j, pj) = 1.0 / s;
+      x_.row(r).head(k).setZero();
+      x_(r, pj) = 1.0;
+    } else {
+      tmp_.head(k) = gz_.row(r).head(k).transpose();
+      tmp2_.head(k).noalias() = H.transpose() * tmp_.head(k);
+    }
     const double den = tmp2_[pj];
     tmp2_[pj] -= 1.0;
     tmp2_.head(k) /= den;
@@ -173,6 +270,12 @@ void LemkeBasis::pivot(int entering, int leaving, double t, const Vec& dxz, cons
     const double piv = hinv_(p, pj);
     tmp_.head(k) = hinv_.row(p).head(k).transpose() / piv;
     H.noalias() -= dxz.head(k) * tmp_.head(k).transpose();
+    if (x_on_) {
+      // X' = X - dw tmp^T on the rows of W; row j (w_j now basic) = -tmp; column pj removed.
+      x_.leftCols(k).noalias() -= dw * tmp_.head(k).transpose();
+      x_.row(j).head(k) = -tmp_.head(k).transpose();
+      if (pj != k_ - 1) x_.col(pj) = x_.col(k_ - 1);
+    }
     const int last = k_ - 1;
     zpos_[static_cast<size_t>(leaving)] = -1;
     rpos_[static_cast<size_t>(j)] = -1;

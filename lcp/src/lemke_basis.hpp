@@ -12,6 +12,13 @@
 /// recomputed from the data when a residual check fails). Work per pivot: O(n k + k^2) instead
 /// of the O(n^2) of a full basis inverse [Cottle-Pang-Stone 1992, Sec. 4.4 for the method].
 ///
+/// Basis inverse B^{-1} of the system I w - G x = q (rows: basic variables, columns: the
+/// equations 0..n-1): the row of the basic x at Z position p is -H^{-1}(p, :) on the columns R
+/// (0 on W); the row of a basic w_i is e_i - X(i, :) on R, with X = G(:, Z) H^{-1} (n x k).
+/// X is needed only by the lexicographic tie-break; it is built on the first tie
+/// (enable_lexico_rows(), O(n k^2)) and from then on updated at every pivot (O(n k)), so
+/// problems without ties never pay for it.
+///
 /// Variable ids: 0..n-1 = z_i, n = z0, n+1+i = w_i.
 #include <vector>
 
@@ -28,6 +35,7 @@ class LemkeBasis {
   LemkeBasis(const Mat& M, const Vec& q);
 
   Eigen::Index n() const { return n_; }
+  const Mat& matrix() const { return M_; }
   int k() const { return k_; }
 
   /// Sets the z0 column c (size n).
@@ -67,8 +75,21 @@ class LemkeBasis {
   void direction(int var, Vec& dxz, Vec& dw);
 
   /// Row of the basis inverse B^{-1} (system I w - G x = q, equation order 0..n-1) of the basic
-  /// variable `var`, into out (size n). O(n k). Used by the lexicographic ratio test.
+  /// variable `var`, into out (size n). O(n k) (O(n) once enable_lexico_rows() was called).
   void inverse_row(int var, Vec& out);
+
+  /// Builds X = G(:, Z) H^{-1} and keeps it updated from now on (see the file comment).
+  void enable_lexico_rows();
+  bool lexico_rows_enabled() const { return x_on_; }
+  /// B^{-1}(var, j) for a basic `var` (needs enable_lexico_rows() for a basic w). O(1).
+  double inverse_entry(int var, Eigen::Index j) const;
+  /// max_j |B^{-1}(var, j)| and sum_j |B^{-1}(var, j)| |q_j| (the size of the terms of the
+  /// value of `var` = B^{-1}(var, :) q). O(k); needs enable_lexico_rows() for a basic w.
+  void inverse_row_scales(int var, double& row_max, double& value_terms) const;
+  /// Size of the terms of the rate of basic `var` in the last direction(`entering`):
+  /// sum |H^{-1}(p, :)| |G(R, entering)| for an x, |G(i, entering)| + |G(i, Z)| |dxz| for a w.
+  /// O(k). Used to tell a pivot entry from rounding noise.
+  double rate_terms(int var, int entering, const Vec& dxz) const;
 
   /// Pivot: `entering` becomes basic at value t, `leaving` leaves; dxz/dw from direction().
   void pivot(int entering, int leaving, double t, const Vec& dxz, const Vec& dw);
@@ -77,6 +98,8 @@ class LemkeBasis {
   void current_point(Vec& z, double& z0) const;
 
  private:
+  void compute_x();  // X = G(:, Z) H^{-1} from the current H^{-1}
+
   const Mat& M_;
   const Vec& q_;
   Eigen::Index n_;
@@ -86,6 +109,8 @@ class LemkeBasis {
   Vec xz_, w_;            // basic values
   std::vector<int> zcols_, rrows_, zpos_, rpos_;
   Mat gz_;                // column p = G(:, zcols_[p]) (contiguous copy for gemv)
+  Mat x_;                 // X = G(:, Z) H^{-1} (n x k) when x_on_ (rows of R: unit rows)
+  bool x_on_ = false;
   Vec tmp_, tmp2_;        // workspaces (size n + 1)
 };
 

@@ -20,6 +20,7 @@ TEST_CASE("Status to_string / status_from_string round trip", "[status]") {
       {Status::kNumericalFailure, "numerical_failure"},
       {Status::kInterrupted, "interrupted"},
       {Status::kUnsupported, "unsupported"},
+      {Status::kCycleDetected, "cycle_detected"},
   };
   std::set<std::string> names;
   for (const auto& [s, name] : table) {
@@ -29,7 +30,7 @@ TEST_CASE("Status to_string / status_from_string round trip", "[status]") {
     CHECK(*cpkit::status_from_string(name) == s);
     names.insert(name);
   }
-  CHECK(names.size() == 11);
+  CHECK(names.size() == 12);
   CHECK_FALSE(cpkit::status_from_string("Solved").has_value());
   CHECK_FALSE(cpkit::status_from_string("").has_value());
   CHECK_FALSE(cpkit::status_from_string("unknown").has_value());
@@ -41,6 +42,7 @@ TEST_CASE("is_solution is true only for solved and solved_inaccurate", "[status]
   CHECK(cpkit::is_solution(Status::kSolvedInaccurate));
   for (Status s : {Status::kNotRun, Status::kInfeasible, Status::kRayTermination,
                    Status::kIterationLimit, Status::kTimeLimit, Status::kStalled,
-                   Status::kNumericalFailure, Status::kInterrupted, Status::kUnsupported})
+                   Status::kNumericalFailure, Status::kInterrupted, Status::kUnsupported,
+                   Status::kCycleDetected})
     CHECK_FALSE(cpkit::is_solution(s));
 }

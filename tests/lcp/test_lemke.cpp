@@ -145,8 +145,10 @@ bool plain_lemke_cycles(const Mat& M, const Vec& q, int max_pivots) {
     for (int i = 0; i < n; ++i) {
       if (T(i, entering) <= 1e-12) continue;
       const double ratio = T(i, 2 * n + 1) / T(i, entering);
-      const bool tie = std::abs(ratio - best) <= 1e-12 * (1 + std::abs(best));
-      if (ratio < best - 1e-12 * (1 + std::abs(best)) ||
+      // The first admissible row is taken as is (r = -1 has no basic variable to compare:
+      // reading basic[r] there was an out-of-bounds read caught by AddressSanitizer).
+      const bool tie = r >= 0 && std::abs(ratio - best) <= 1e-12 * (1 + std::abs(best));
+      if (r < 0 || ratio < best - 1e-12 * (1 + std::abs(best)) ||
           (tie && basic[i] == 2 * n && basic[r] != 2 * n)) {
         best = ratio;
         r = i;

@@ -20,6 +20,7 @@ enum class Status {
   kNumericalFailure,   ///< breakdown, non-finite values, or a claim the data refute
   kInterrupted,        ///< stopped by the caller
   kUnsupported,        ///< the solver does not accept this problem (e.g. storage or kind)
+  kCycleDetected,      ///< a pivoting method revisited a basis (a bug: reported, not looped)
 };
 
 /// Stable lower-case names used by the CLI and JSON ("solved", "ray_termination", ...).

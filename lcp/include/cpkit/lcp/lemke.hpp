@@ -8,11 +8,21 @@
 ///
 /// Guarantees: terminates (lexicographic rule, finite number of bases) with a solution, a
 /// secondary ray, or at the pivot/time limit. Lemke solves every LCP with a P-matrix, and for a
-/// copositive-plus M a secondary ray proves infeasibility [CPS 1992, Thm 4.4.13]. On a secondary
-/// ray the candidate certificates y (the z-part of the ray direction, then minus the z0-row of
-/// the basis inverse) are checked for y >= 0, M^T y <= 0, q^T y < 0 and finalize() re-checks the
-/// one kept before kInfeasible is reported; otherwise the result is kRayTermination with the ray
-/// (z-part then z0-part, size n + 1) in `result.ray`.
+/// copositive-plus M a secondary ray proves infeasibility [CPS 1992, Thm 4.4.13].
+/// Lexicographic rule [CPS 1992, Sec. 4.9]: ties in the minimum ratio (within 1e-9 of the
+/// ratio and of the size of the terms of its value) are broken by the rows of the basis
+/// inverse divided by the pivot entries, column by column, entries compared relative to the
+/// rows' scales; the rows are independent, so no basis repeats. Pivot entries below 1e-11
+/// times the size of their own terms are noise. All tolerances are relative to the terms of
+/// the number tested: invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings.
+/// Cycle guard: a repeated basis (hash of the set of basic variables per pivot) ends the run
+/// with Status::kCycleDetected (a bug-class outcome) instead of cycling to the pivot limit.
+/// On a secondary ray cheap candidate certificates y (the z-part of the ray, minus the z0 row
+/// of the basis inverse, the w-part of the ray, d, all ones, unit vectors) are checked for
+/// y >= 0, M^T y <= 0, q^T y < 0 and finalize() re-checks the one kept before kInfeasible is
+/// reported; otherwise the result is kRayTermination with the ray (z-part then z0-part, size
+/// n + 1) in `result.ray`. A step that overflows (a solution doubles cannot represent, e.g.
+/// M = 1e-320, q = -1) is kNumericalFailure with a message.
 /// On failure z holds the last basic solution (z0 dropped) and is not a solution.
 ///
 /// result.iterations counts the pivots, the initial z0 pivot included (q >= 0: no pivot).
@@ -21,8 +31,10 @@
 /// step = the value of the entering variable, residual = z0 after the pivot.
 ///
 /// Work per pivot: O(n k + k^2) with k the number of basic z's (the basis inverse is kept in
-/// block form: only the k x k inverse of M's basic block is updated); its accuracy is checked
-/// every 16 pivots from the data and it is recomputed when the check fails.
+/// block form: only the k x k inverse of M's basic block is updated, plus, once a tie has
+/// occurred, the n x k rows of the basic w's); tie-breaking costs at most O(n) per tied row.
+/// The inverse's accuracy is checked every 16 pivots from the data and it is recomputed when
+/// the check fails.
 /// Sparse input is densified when n <= kLemkeMaxDensify, else the result is kUnsupported.
 #include <vector>
 
@@ -49,6 +61,10 @@ struct LemkeOptions {
   /// > 0: recompute the basis inverse from the data every that many pivots (in addition to
   /// the automatic accuracy check); 0: only when the automatic check fails.
   int refactor_every = 0;
+  /// true: the lexicographic ratio test (never cycles). false: ties broken by the smallest
+  /// variable id ("plain" Lemke, which can cycle): for tests and demonstrations of the cycle
+  /// guard only.
+  bool lexicographic = true;
   /// Empty when usable for a problem of size n; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
