@@ -13,7 +13,9 @@ enum ExitCode : int {
   kExitOk = 0,            ///< solved / at least one solution
   kExitNoSolution = 1,    ///< the solve ran but found no solution
   kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
-  kExitDisagreement = 3,  ///< `lcp verify`: a solver disagrees with the enumeration
+  kExitDisagreement = 3,  ///< a disagreement between solvers or routes (`lcp verify`, `rate`, `map`)
+  kExitInternal = 4,      ///< internal error (a bug: please report it)
+  kExitInconclusive = 5,  ///< `lcp verify`: the enumeration is incomplete, nothing was disproved
 };
 
 /// Each subcommand registers itself and sets `exit_code` from its callback.
@@ -29,7 +31,13 @@ void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step` (issu
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate` (issue 8)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
 
-/// Prints a JSON object to stdout (one line per object, pretty with indent 1).
-inline void print_json(const nlohmann::json& j) { std::cout << j.dump(1) << std::endl; }
+/// JSON text (indent 1). Strings that are not valid UTF-8 (a file name in another encoding)
+/// get U+FFFD in place of the bad bytes instead of making dump() throw.
+inline std::string json_text(const nlohmann::json& j) {
+  return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// Prints a JSON object to stdout (pretty with indent 1).
+inline void print_json(const nlohmann::json& j) { std::cout << json_text(j) << std::endl; }
 
 }  // namespace cpkit::cli

@@ -59,6 +59,8 @@ std::string values_text(const rate::StepValues& v) {
   return o.str();
 }
 
+const char* end_text(bool closed) { return closed ? " (closed)" : " (open)"; }
+
 rate::StepProblem make_problem(const StepArgs& a) {
   rate::StepProblem p;
   p.params = model_parameters(a.model);
@@ -93,13 +95,13 @@ int run_all(const rate::StepProblem& p, bool json) {
           break;
         case rate::RateSolution::Kind::kSegment:
           e["start"] = values_json(sol.start);
-          e["start_closed"] = true;
+          e["start_closed"] = sol.start_closed;
           e["end"] = values_json(sol.end);
-          e["end_closed"] = true;
+          e["end_closed"] = sol.end_closed;
           break;
         case rate::RateSolution::Kind::kRay:
           e["start"] = values_json(sol.start);
-          e["start_closed"] = true;
+          e["start_closed"] = sol.start_closed;
           e["direction"] = values_json(sol.direction);
           break;
       }
@@ -122,10 +124,11 @@ int run_all(const rate::StepProblem& p, bool json) {
       if (sol.kind == rate::RateSolution::Kind::kPoint) {
         std::cout << values_text(sol.start) << "\n";
       } else if (sol.kind == rate::RateSolution::Kind::kSegment) {
-        std::cout << "from " << values_text(sol.start) << "\n      to " << values_text(sol.end)
-                  << "\n";
+        std::cout << "from " << values_text(sol.start) << end_text(sol.start_closed)
+                  << "\n      to " << values_text(sol.end) << end_text(sol.end_closed) << "\n";
       } else {
-        std::cout << "from " << values_text(sol.start) << "\n      direction "
+        std::cout << "from " << values_text(sol.start) << end_text(sol.start_closed)
+                  << "\n      direction "
                   << values_text(sol.direction) << "\n";
       }
     }
