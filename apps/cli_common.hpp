@@ -4,6 +4,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 namespace cpkit::cli {
@@ -30,6 +31,13 @@ void add_rate_command(CLI::App& app, Context& ctx);
 void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step` (issue 8)
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate` (issue 8)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
+
+/// A number for messages ("1e+300", "0.25"; std::to_string prints 300 digits or 0.000000).
+inline std::string num_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
 
 /// JSON text (indent 1). Strings that are not valid UTF-8 (a file name in another encoding)
 /// get U+FFFD in place of the bad bytes instead of making dump() throw.

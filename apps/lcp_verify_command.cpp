@@ -22,6 +22,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "lcp_actions.hpp"
 
 namespace cpkit::cli {
@@ -115,6 +116,16 @@ std::string report_text(const lcp::CrossVerifyReport& rep, const LcpProblem& p) 
 int run_lcp_verify(const LcpVerifyArgs& a) {
   const LcpProblem problem = read_lcp_file(a.file);
   lcp::CrossVerifyOptions opt;
+  for (const auto& name : a.skip) {
+    // A misspelt name would silently run the solver it meant to skip.
+    const SolverEntry* e = lcp::solvers().find(name);
+    if (e == nullptr || !e->accepts(ProblemKind::kLcp)) {
+      std::string valid;
+      for (const auto& n : lcp::solvers().names(ProblemKind::kLcp))
+        valid += (valid.empty() ? "" : ", ") + n;
+      throw InputError("--skip: unknown solver '" + name + "' (valid: " + valid + ")");
+    }
+  }
   opt.skip = a.skip;
   opt.solve.time_limit_s = a.time_limit_s;
   opt.enumeration.time_limit_s = a.time_limit_s;

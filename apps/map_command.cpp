@@ -363,6 +363,9 @@ int run_map(const MapArgs& a) {
   const auto method = rate_method_from_string(a.method);
   if (!method) throw InputError("--method must be enumerate or analytic, got '" + a.method + "'");
   options.method = *method;
+  if (a.threads > 1024)
+    throw InputError("--threads must be at most 1024 (0: all cores), got " +
+                     std::to_string(a.threads));
   options.threads = a.threads;
   throw_if_invalid(options.validate(), "map options");
   if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");

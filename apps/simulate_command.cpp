@@ -9,8 +9,9 @@
 //                  --conductance C1 C2] [--branch-rule closest|stop]
 //                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
 //
-// Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, or a branch point
-// with --branch-rule stop; the reason on stdout/in the summary), 2 bad input.
+// Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, a branch point
+// with --branch-rule stop, or numerical_failure: values beyond the range of double; the reason
+// on stdout/in the summary), 2 bad input (also an output file that cannot be written).
 #include <climits>
 #include <cmath>
 #include <filesystem>
@@ -90,7 +91,7 @@ void apply_args(const SimArgs& a, Settings& s) {
     if (!(d == std::floor(d)) || d < INT_MIN || d > INT_MAX)
       throw InputError(std::string("--") + key + " must be an integer in [" +
                        std::to_string(INT_MIN) + ", " + std::to_string(INT_MAX) + "], got " +
-                       std::to_string(d));
+                       num_text(d));
     dst = static_cast<int>(d);
   };
   count("cycles", s.fretting.cycles);
@@ -150,6 +151,8 @@ void write_csv(const std::string& path, const rate::SimulationResult& r) {
       << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
       << ',' << s.temperature << '\n';
   }
+  f.flush();
+  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
 }
 
 nlohmann::json sample_json(const rate::SimulationSample& s) {
@@ -219,6 +222,8 @@ int run(const SimArgs& a) {
   if (!summary.empty()) {
     std::ofstream f = open_output(summary);
     f << json_text(sum) << '\n';
+    f.flush();
+    if (!f) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
   }
   if (a.json) {
     print_json(sum);

@@ -18,6 +18,7 @@
 #include "cli_common.hpp"
 #include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "cpkit/rate_problem/incremental_step.hpp"
 #include "cpkit/rate_problem/step_enumeration.hpp"
 #include "cpkit/rate_problem/step_solve.hpp"
@@ -144,7 +145,17 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
   o.chain.clear();
   std::stringstream ss(chain);
   std::string name;
-  while (std::getline(ss, name, ',')) o.chain.push_back(name);
+  while (std::getline(ss, name, ',')) {
+    // A typo must not silently shorten the chain (the library skips names not registered,
+    // for builds without Ipopt): every name given here must exist.
+    if (!name.empty() && name != "active-set" && cpkit::lcp::solvers().find(name) == nullptr) {
+      std::string valid = "active-set";
+      for (const auto& n : cpkit::lcp::solvers().names(ProblemKind::kMcp)) valid += ", " + n;
+      if (cpkit::lcp::solvers().find("lemke") != nullptr) valid += ", lemke";
+      throw InputError("--chain: unknown solver '" + name + "' (valid: " + valid + ")");
+    }
+    o.chain.push_back(name);
+  }
   const rate::StepSolveResult r = rate::solve_step(p, o);
   const bool ok = is_solution(r.result.status);
   if (json) {

@@ -182,3 +182,30 @@ TEST_CASE("a file name that is not UTF-8 is no internal error", "[cli][hostile]"
   CHECK(r.code == 2);
   CHECK(r.out.empty());
 }
+
+TEST_CASE("siblings: typos, meaningless tolerances, unwritable outputs, overflowing runs",
+          "[cli][hostile]") {
+  const std::string lcp = std::string(CPKIT_TEST_DATA_DIR) + "/lcp/cps_4_qp.json";
+  // A misspelt solver name must not silently run (verify) or drop (step) a solver.
+  expect_bad_input("lcp verify '" + lcp + "' --skip ipopd", "--skip: unknown solver 'ipopd'");
+  expect_bad_input("step " + kModel + "--P_T0 0 --P_N0 0 --g0 0 --DF 1 1 --chain active-set,lemkee",
+                   "--chain: unknown solver 'lemkee'");
+  // A tolerance of 1e300 on the scaled residual would call any z solved.
+  expect_bad_input("lcp solve '" + lcp + "' --tol 1e300", "--tol must be at most 1e-3");
+  expect_bad_input("map --kind direction --state b " + kModel + "--threads 100000", "--threads");
+  // Output that cannot be written is an error, not a silent success.
+  if (fs::exists("/dev/full")) {
+    expect_bad_input("simulate " + kModel + "--cycles 1 --csv /dev/full", "error writing");
+    expect_bad_input("simulate " + kModel + "--cycles 1 --summary /dev/full", "error writing");
+  }
+  // Loads near 1e300: the energies overflow. The run stops honestly (exit 1,
+  // numerical_failure) instead of "completed" with inf/NaN (null in JSON) in its results.
+  const Run r = run_cpkit("simulate " + kModel + "--cycles 1 --amplitude 1e300 --F_N 1e300 --json");
+  INFO(r.err);
+  CHECK(r.code == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["outcome"] == "numerical_failure");
+  CHECK(r.out.find("null") == std::string::npos);
+  for (const char* k : {"external_work", "stored", "dissipation", "balance_error_rel"})
+    CHECK(j["energy"][k].is_number());
+}
