@@ -16,7 +16,8 @@ enum ExitCode : int {
   kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
   kExitDisagreement = 3,  ///< a disagreement between solvers or routes (`lcp verify`, `rate`, `map`)
   kExitInternal = 4,      ///< internal error (a bug: please report it)
-  kExitInconclusive = 5,  ///< `lcp verify`: the enumeration is incomplete, nothing was disproved
+  kExitInconclusive = 5,  ///< incomplete enumeration that proves nothing (`lcp verify`: no
+                          ///< disagreement; `lcp enumerate`: no solution found so far)
 };
 
 /// Each subcommand registers itself and sets `exit_code` from its callback.

@@ -5,7 +5,6 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "cpkit/core/errors.hpp"
 
@@ -247,14 +246,27 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
   }
 }
 
-void read_simulate_config(const std::string& path, SimulateSettings& s) {
+std::string read_bounded(const std::string& path, std::size_t max_bytes, const std::string& what) {
   std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot open config '" + path + "'");
-  std::ostringstream text;
-  text << f.rdbuf();
+  if (!f) throw InputError("cannot open " + what + " '" + path + "'");
+  std::string text;
+  char buf[1 << 16];
+  while (f) {
+    f.read(buf, sizeof buf);
+    text.append(buf, static_cast<std::size_t>(f.gcount()));
+    if (text.size() > max_bytes)
+      throw InputError(what + " '" + path + "' is larger than " +
+                       byte_text(static_cast<double>(max_bytes)));
+  }
+  if (f.bad()) throw InputError("error reading " + what + " '" + path + "'");
+  return text;
+}
+
+void read_simulate_config(const std::string& path, SimulateSettings& s) {
+  const std::string text = read_bounded(path, kMaxConfigBytes, "config");
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string(".") : path.substr(0, slash);
-  parse_simulate_config(text.str(), path, dir.empty() ? std::string("/") : dir, s);
+  parse_simulate_config(text, path, dir.empty() ? std::string("/") : dir, s);
 }
 
 void check_history_memory(std::int64_t steps, const SimulateSettings& s) {
@@ -304,7 +316,9 @@ rate::LoadHistory make_simulate_history(const SimulateSettings& s) {
   if (s.load_type == "fretting") return rate::fretting_history(s.fretting);
   if (s.load_type == "ramp") return rate::ramp_history(s.ramp);
   if (s.load_type == "csv") {
-    rate::LoadHistory h = rate::read_load_csv(s.load_csv);
+    // Read with a bound: a path such as /dev/zero must not grow a string without end.
+    rate::LoadHistory h =
+        rate::parse_load_csv(read_bounded(s.load_csv, kMaxLoadCsvBytes, "load history"), s.load_csv);
     check_history_memory(static_cast<std::int64_t>(h.points.size()), s);
     h.period = s.csv_period;
     h.cycle_start = 0;

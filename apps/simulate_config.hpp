@@ -3,6 +3,7 @@
 // config, overridden by the command line, and checked as a whole before anything is allocated.
 // A library of its own (cpkit_cli_config) so that tests/fuzz/fuzz_simulate_config.cpp can call
 // the parser directly.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -30,6 +31,15 @@ struct SimulateSettings {
 /// integers or do not fit their field ("load.cycles = 4294967297 is out of range [1, ...]").
 void parse_simulate_config(const std::string& text, const std::string& origin,
                            const std::string& dir, SimulateSettings& s);
+
+/// Largest config file and csv load history read (a bound, so that /dev/zero or a huge file
+/// is an error, not an unbounded allocation). A csv row is at least 6 bytes ("0,0,0\n").
+constexpr std::size_t kMaxConfigBytes = std::size_t{1} << 20;     // 1 MiB
+constexpr std::size_t kMaxLoadCsvBytes = std::size_t{64} << 20;   // 64 MiB
+
+/// Reads at most `max_bytes` of a file (any kind: regular, pipe, device); InputError naming
+/// `what` and the path when it cannot be opened or is larger.
+std::string read_bounded(const std::string& path, std::size_t max_bytes, const std::string& what);
 
 /// Reads and parses a config file (parse_simulate_config; the folder of `path` is `dir`).
 void read_simulate_config(const std::string& path, SimulateSettings& s);

@@ -4,6 +4,8 @@
 
 #include "cli_runner.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -61,4 +63,34 @@ TEST_CASE("lcp verify: a complete enumeration with agreeing solvers is consisten
   CHECK(o["enumeration"]["count"] == 8);
   CHECK(o["consistent"] == true);
   CHECK(o["verdict"] == "consistent");
+}
+
+TEST_CASE("lcp enumerate: incomplete with no solution found is inconclusive (exit 5)",
+          "[cli][enumerate]") {
+  // n = 24, M with entries in [-1, 1] (first column <= 0), q = -1: a search of 2^24 supports
+  // that a 0.1 s limit cuts short; none of the supports visited by then is a solution.
+  const int n = 24;
+  std::uint64_t state = 12345;
+  auto uniform = [&state] {  // 64-bit LCG (Knuth), deterministic
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / 9007199254740992.0 * 2 - 1;
+  };
+  nlohmann::json M = nlohmann::json::array(), q = nlohmann::json::array();
+  for (int i = 0; i < n; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int k = 0; k < n; ++k) row.push_back(k == 0 ? -std::abs(uniform()) : uniform());
+    M.push_back(row);
+    q.push_back(-1.0);
+  }
+  const auto path = scratch_dir() / "random_24.json";
+  std::ofstream(path) << nlohmann::json{{"M", M}, {"q", q}}.dump();
+  const Run r = run_cpkit("lcp enumerate '" + path.string() + "' --time-limit 0.1 --json");
+  INFO(r.err);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["complete"] == false);
+  REQUIRE(j["num_extreme"] == 0);
+  CHECK(r.code == 5);
+  const Run t = run_cpkit("lcp enumerate '" + path.string() + "' --time-limit 0.1");
+  CHECK(t.code == 5);
+  CHECK(t.out.find("at least 0 (the enumeration is INCOMPLETE") != std::string::npos);
 }
