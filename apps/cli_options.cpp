@@ -25,6 +25,8 @@ std::string finite_number(const std::string& v) {
   errno = 0;
   const double d = std::strtod(s, &end);
   if (end != s + v.size()) return "'" + v + "' is not a number";
+  if (v.find_first_of("xX") != std::string::npos)
+    return "'" + v + "' is not a decimal number";  // strtod also reads hexadecimal floats
   if (!std::isfinite(d)) return "'" + v + "' is not a finite number (or beyond the range of double)";
   if (errno == ERANGE && d == 0) return "'" + v + "' underflows to 0 in double precision";
   return {};
