@@ -120,6 +120,9 @@ void print_text(const rate::RateSolutionSet& s, const RateArgs& a,
   std::cout << "rate problem, state " << a.state << ", method " << a.method << "\n";
   if (s.complete) {
     std::cout << "count: " << count_text(s) << "   types:";
+  } else if (!single_solver(*rate::rate_method_from_string(a.method))) {
+    std::cout << "solutions found: " << s.solutions.size()
+              << " (the enumeration is INCOMPLETE: not a count)   types:";
   } else if (!s.solutions.empty()) {
     std::cout << "a solution (found by " << a.method
               << "; one solver finds one solution, the set may hold more: not a count)"
