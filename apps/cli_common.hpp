@@ -4,6 +4,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 namespace cpkit::cli {
@@ -13,7 +14,10 @@ enum ExitCode : int {
   kExitOk = 0,            ///< solved / at least one solution
   kExitNoSolution = 1,    ///< the solve ran but found no solution
   kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
-  kExitDisagreement = 3,  ///< `lcp verify`: a solver disagrees with the enumeration
+  kExitDisagreement = 3,  ///< a disagreement between solvers or routes (`lcp verify`, `rate`, `map`)
+  kExitInternal = 4,      ///< internal error (a bug: please report it)
+  kExitInconclusive = 5,  ///< incomplete enumeration that proves nothing (`lcp verify`: no
+                          ///< disagreement; `lcp enumerate`: no solution found so far)
 };
 
 /// Each subcommand registers itself and sets `exit_code` from its callback.
@@ -29,10 +33,20 @@ void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step` (issu
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate` (issue 8)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
 
-/// Prints a JSON object to stdout (one line per object, pretty with indent 1). Text that is not
-/// UTF-8 (e.g. from a file name) is printed with U+FFFD instead of failing.
-inline void print_json(const nlohmann::json& j) {
-  std::cout << j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+/// A number for messages ("1e+300", "0.25"; std::to_string prints 300 digits or 0.000000).
+inline std::string num_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
+
+/// JSON text (indent 1). Strings that are not valid UTF-8 (a file name in another encoding)
+/// get U+FFFD in place of the bad bytes instead of making dump() throw.
+inline std::string json_text(const nlohmann::json& j) {
+  return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// Prints a JSON object to stdout (pretty with indent 1).
+inline void print_json(const nlohmann::json& j) { std::cout << json_text(j) << std::endl; }
 
 }  // namespace cpkit::cli

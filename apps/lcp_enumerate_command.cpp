@@ -5,9 +5,10 @@
 //   [{"z": [...], "w": [...], "basis": [...]}] (the extreme solutions), continuum (bool),
 //   directions (when infinite: rays and vertex-pair directions, ||d||_inf = 1), pieces
 //   [{"support", "vertices", "rays"}], num_extreme, ambiguous, nodes, seconds, message.
-// Exit codes: 0 at least one solution; 1 no solution (the enumeration is complete, or
-// complete = false after a time limit: see "complete"); 2 bad input, including n above the size
-// limit (message on stderr, nothing on stdout).
+// Exit codes: 0 at least one solution; 1 no solution (the enumeration is complete); 5
+// inconclusive: complete = false (time limit) and no solution found so far, which proves
+// nothing; 2 bad input, including n above the size limit (message on stderr, nothing on
+// stdout). When complete = false, "count" counts the solutions found so far (a lower bound).
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -77,8 +78,12 @@ std::string set_text(const lcp::SolutionSet& s, const LcpProblem& p) {
   std::ostringstream o;
   if (!p.name.empty()) o << "problem:    " << p.name << " (n = " << p.size() << ")\n";
   o << "complete:   " << (s.complete ? "yes" : "NO") << '\n';
-  o << "count:      " << (s.infinite ? std::string("inf (a continuum)") : std::to_string(s.count()))
-    << '\n';
+  if (s.complete)
+    o << "count:      " << (s.infinite ? std::string("inf (a continuum)") : std::to_string(s.count()))
+      << '\n';
+  else
+    o << "count:      at least " << (s.infinite ? std::string("a continuum") : std::to_string(s.count()))
+      << " (the enumeration is INCOMPLETE: more solutions may exist)\n";
   o << "extreme solutions: " << s.count() << '\n';
   for (size_t k = 0; k < s.solutions.size(); ++k)
     o << "  " << k << ": z = " << vec_text(s.solutions[k].z) << "  w = " << vec_text(s.solutions[k].w)
@@ -115,7 +120,8 @@ int run_lcp_enumerate(const LcpEnumerateArgs& a) {
     print_json(set_json(s, problem));
   else
     std::cout << set_text(s, problem) << std::flush;
-  return s.solutions.empty() ? kExitNoSolution : kExitOk;
+  if (!s.solutions.empty()) return kExitOk;
+  return s.complete ? kExitNoSolution : kExitInconclusive;
 }
 
 }  // namespace

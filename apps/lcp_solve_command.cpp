@@ -60,6 +60,10 @@ const SolverEntry& find_lcp_solver(const std::string& name, const LcpProblem& pr
 /// Common options from the command line; InputError naming the bad option.
 CommonOptions common_options(const LcpSolveArgs& a) {
   CommonOptions o;
+  // A scaled residual near 1 accepts almost any z as "solved": keep --tol meaningful.
+  if (!(a.tol <= 1e-3))
+    throw InputError("--tol must be at most 1e-3 (a larger tolerance on the scaled residual "
+                     "would call almost any z solved), got " + num_text(a.tol));
   o.tol = a.tol;
   if (o.tol_acceptable < o.tol) o.tol_acceptable = o.tol;  // --tol above 1e-6 widens both
   o.max_iterations = a.max_iter;
@@ -185,7 +189,7 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
                       ")");
   cmd->add_flag("--json", args->json, "print one JSON object on stdout");
   cmd->add_option("--tol", args->tol,
-                  "tolerance on the scaled natural residual (default 1e-10)");
+                  "tolerance on the scaled natural residual (default 1e-10, at most 1e-3)");
   cmd->add_option("--max-iter", args->max_iter,
                   "iteration/pivot limit (0: the solver's documented default)");
   cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");

@@ -5,8 +5,11 @@
 //   enumeration {complete, count ("inf" or integer), continuum, num_extreme, ambiguous},
 //   solvers [{solver, status, residual, data_residual, in_set, solution_index, verdict,
 //   seconds, message}], disagreements [strings], consistent (bool).
-// Exit codes: 0 every solver is consistent with the enumeration; 3 a disagreement was found
-// (listed); 2 bad input (including n above the enumeration's size limit).
+//   verdict ("consistent", "disagreement" or "inconclusive").
+// Exit codes: 0 the enumeration is complete and every solver is consistent with it; 3 a
+// disagreement was found (listed); 5 inconclusive: the enumeration is incomplete (time limit)
+// and no disagreement was found, so nothing was verified; 2 bad input (including n above the
+// enumeration's size limit).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -19,6 +22,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "lcp_actions.hpp"
 
 namespace cpkit::cli {
@@ -33,6 +37,13 @@ struct LcpVerifyArgs {
 
 nlohmann::json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+/// consistent (complete and no disagreement), disagreement (any, even against an incomplete
+/// enumeration: those verdicts do not depend on completeness), inconclusive (otherwise).
+std::string verdict_name(const lcp::CrossVerifyReport& rep) {
+  if (!rep.consistent()) return "disagreement";
+  return rep.set.complete ? "consistent" : "inconclusive";
 }
 
 nlohmann::json report_json(const lcp::CrossVerifyReport& rep, const LcpProblem& p) {
@@ -58,7 +69,9 @@ nlohmann::json report_json(const lcp::CrossVerifyReport& rep, const LcpProblem& 
                     {"message", c.message}});
   j["solvers"] = rows;
   j["disagreements"] = rep.disagreements;
-  j["consistent"] = rep.consistent();
+  // "consistent" only when the check was conclusive: an incomplete enumeration verifies nothing.
+  j["consistent"] = rep.consistent() && s.complete;
+  j["verdict"] = verdict_name(rep);
   return j;
 }
 
@@ -86,8 +99,13 @@ std::string report_text(const lcp::CrossVerifyReport& rep, const LcpProblem& p) 
                   c.seconds);
     o << line;
   }
-  if (rep.consistent()) {
+  if (rep.consistent() && s.complete) {
     o << "consistent: every solver agrees with the enumeration\n";
+  } else if (rep.consistent()) {
+    o << "INCONCLUSIVE: the enumeration is incomplete"
+      << (s.message.empty() ? std::string() : " (" + s.message + ")")
+      << "; no solver contradicted the solutions found so far, but answers outside them could "
+         "not be checked (raise --time-limit)\n";
   } else {
     o << "DISAGREEMENTS (" << rep.disagreements.size() << "):\n";
     for (const auto& d : rep.disagreements) o << "  " << d << '\n';
@@ -98,6 +116,16 @@ std::string report_text(const lcp::CrossVerifyReport& rep, const LcpProblem& p) 
 int run_lcp_verify(const LcpVerifyArgs& a) {
   const LcpProblem problem = read_lcp_file(a.file);
   lcp::CrossVerifyOptions opt;
+  for (const auto& name : a.skip) {
+    // A misspelt name would silently run the solver it meant to skip.
+    const SolverEntry* e = lcp::solvers().find(name);
+    if (e == nullptr || !e->accepts(ProblemKind::kLcp)) {
+      std::string valid;
+      for (const auto& n : lcp::solvers().names(ProblemKind::kLcp))
+        valid += (valid.empty() ? "" : ", ") + n;
+      throw InputError("--skip: unknown solver '" + name + "' (valid: " + valid + ")");
+    }
+  }
   opt.skip = a.skip;
   opt.solve.time_limit_s = a.time_limit_s;
   opt.enumeration.time_limit_s = a.time_limit_s;
@@ -107,7 +135,8 @@ int run_lcp_verify(const LcpVerifyArgs& a) {
     print_json(report_json(rep, problem));
   else
     std::cout << report_text(rep, problem) << std::flush;
-  return rep.consistent() ? kExitOk : kExitDisagreement;
+  if (!rep.consistent()) return kExitDisagreement;
+  return rep.set.complete ? kExitOk : kExitInconclusive;
 }
 
 }  // namespace

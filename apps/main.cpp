@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 
 int main(int argc, char** argv) {
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   add_rate_command(app, ctx);
   add_step_command(app, ctx);
   add_simulate_command(app, ctx);
+  check_all_option_values(app);  // no empty, non-finite or malformed numbers (cli_options.hpp)
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "cpkit: internal error: " << e.what() << '\n';
-    return 4;
+    return kExitInternal;
   }
   return ctx.exit_code;
 }

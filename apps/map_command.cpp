@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -16,6 +17,8 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "run_program.hpp"
+#include "memory_limit.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/direction_map.hpp"
 #include "cpkit/rate_problem/grid_map.hpp"
@@ -73,6 +76,12 @@ std::string count_text(int count) {
 void require_finite(double v, const char* name) {
   if (!std::isfinite(v)) throw InputError(std::string("--") + name + " must be finite");
 }
+
+/// Refuses (before anything is allocated) a grid whose per-cell arrays would exceed the memory
+/// bound: a param-direction map keeps count, types and disagree (3 bytes) per cell, a
+/// param-param map cls, min_count, max_count, types and disagree (5 bytes).
+struct MapSetup;
+void check_map_memory(const MapSetup& s);
 
 /// The model, kind and axes from the preset (if any) and the explicit options.
 struct MapSetup {
@@ -183,7 +192,27 @@ MapSetup build_setup(const MapArgs& a) {
   if (s.kind == MapKind::kParamParam) throw_if_invalid(s.axis2.validate(), "--param2 axis");
   if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
     throw InputError("--theta-n must be in [1, 1000000]");
+  check_map_memory(s);
   return s;
+}
+
+void check_map_memory(const MapSetup& s) {
+  double cells = 0, per_cell = 0;
+  std::string what;
+  if (s.kind == MapKind::kParamDirection) {
+    cells = static_cast<double>(s.axis.n) * s.theta_n;
+    per_cell = 3;
+    what = std::to_string(s.axis.n) + " x " + std::to_string(s.theta_n) + " (--n x --theta-n)";
+  } else if (s.kind == MapKind::kParamParam) {
+    cells = static_cast<double>(s.axis.n) * s.axis2.n;
+    per_cell = 5;
+    what = std::to_string(s.axis.n) + " x " + std::to_string(s.axis2.n) + " (--n x --n2)";
+  }
+  const double bytes = cells * per_cell;
+  if (bytes > static_cast<double>(kMemoryLimitBytes))
+    throw InputError("the map has " + what + " cells and would need about " + byte_text(bytes) +
+                     " of memory; the limit is " +
+                     byte_text(static_cast<double>(kMemoryLimitBytes)) + ": use fewer cells");
 }
 
 /// The model in one line; quantities that vary along a map axis are shown as "(axis)".
@@ -243,24 +272,19 @@ std::string python() {
   return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 /// Runs the plotting script on PREFIX.json; never fails the command (the data is written).
+/// The script gets an argument vector (run_program): the prefix is data, never shell code.
 void run_plot(const std::string& prefix, nlohmann::json& files) {
   const fs::path script = plot_script();
-  const std::string cmd = python() + " " + shell_quote(script.string()) + " " +
-                          shell_quote(prefix + ".json");
+  const std::vector<std::string> argv = {python(), script.string(), prefix + ".json"};
+  const std::string cmd = command_text(argv);
   if (!fs::exists(script)) {
     std::cerr << "cpkit map: plotting script not found (" << script.string()
               << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
     return;
   }
-  const int rc = std::system((cmd + " 1>&2").c_str());
-  const int code = rc == -1 ? -1 : WEXITSTATUS(rc);
+  const ProgramRun pr = run_program(argv, true);
+  const int code = pr.started ? pr.exit_code : -1;
   if (code == 0) {
     files["png"] = fs::path(prefix + ".png").filename().string();
     files["svg"] = fs::path(prefix + ".svg").filename().string();
@@ -272,7 +296,8 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
                  "python3-matplotlib) and run:\n  "
               << cmd << '\n';
   } else {
-    std::cerr << "cpkit map: the plotting script failed (exit " << code
+    std::cerr << "cpkit map: the plotting script failed ("
+              << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
               << "); the data was written. Command:\n  " << cmd << '\n';
   }
 }
@@ -338,6 +363,9 @@ int run_map(const MapArgs& a) {
   const auto method = rate_method_from_string(a.method);
   if (!method) throw InputError("--method must be enumerate or analytic, got '" + a.method + "'");
   options.method = *method;
+  if (a.threads > 1024)
+    throw InputError("--threads must be at most 1024 (0: all cores), got " +
+                     std::to_string(a.threads));
   options.threads = a.threads;
   throw_if_invalid(options.validate(), "map options");
   if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
@@ -462,11 +490,11 @@ int run_map(const MapArgs& a) {
   if (!prefix.empty()) {
     files["json"] = name + ".json";
     j["files"] = files;
-    write_file(prefix + ".json", [&](std::ostream& o) { o << j.dump(1) << '\n'; });
+    write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     if (a.plot) {
       run_plot(prefix, files);
       j["files"] = files;
-      write_file(prefix + ".json", [&](std::ostream& o) { o << j.dump(1) << '\n'; });
+      write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
   }
   if (a.json) {

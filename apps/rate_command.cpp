@@ -6,7 +6,9 @@
 //              [--criterion 38|35] [--json]
 //
 // Default method: enumerate, cross-checked against analytic. Single solvers (lemke, fb-newton,
-// ipopt) are checked against the enumerated set. Exit codes: 0 at least one solution, 1 none
+// ipopt) find at most one solution: their output says "a solution" with complete = false and
+// no count (the set may hold more; the enumerated count is shown for reference, as
+// "enumerated_count" in JSON), and their point is checked against the enumerated set. Exit codes: 0 at least one solution, 1 none
 // (or the single solver found none), 2 bad input, 3 the routes disagree (reason on stderr).
 #include <algorithm>
 #include <iostream>
@@ -60,9 +62,29 @@ std::vector<std::string> sorted_types(const rate::RateSolutionSet& s) {
   return {t.begin(), t.end()};
 }
 
-nlohmann::json set_json(const rate::RateSolutionSet& s) {
+/// True for lemke, fb-newton and ipopt: one solver, at most one solution, never a count.
+bool single_solver(rate::RateMethod m) {
+  return m != rate::RateMethod::kEnumerate && m != rate::RateMethod::kAnalytic;
+}
+
+std::string count_text(const rate::RateSolutionSet& s) {
+  return s.count() < 0 ? std::string("inf") : std::to_string(s.count());
+}
+
+/// `reference`: the enumerated set a single solver's answer was checked against (or null).
+nlohmann::json set_json(const rate::RateSolutionSet& s, const rate::RateSolutionSet* reference) {
   nlohmann::json j;
-  if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
+  j["complete"] = s.complete;
+  // A count only when the set is complete: one solver's one solution is not "count 1".
+  if (s.complete) {
+    if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
+  } else {
+    j["found"] = s.solutions.size();
+  }
+  if (reference && reference->complete) {
+    if (reference->count() < 0) j["enumerated_count"] = "inf";
+    else j["enumerated_count"] = reference->count();
+  }
   j["types"] = sorted_types(s);
   nlohmann::json sols = nlohmann::json::array();
   for (const auto& p : s.solutions) {
@@ -93,10 +115,21 @@ nlohmann::json set_json(const rate::RateSolutionSet& s) {
   return j;
 }
 
-void print_text(const rate::RateSolutionSet& s, const RateArgs& a) {
+void print_text(const rate::RateSolutionSet& s, const RateArgs& a,
+                const rate::RateSolutionSet* reference) {
   std::cout << "rate problem, state " << a.state << ", method " << a.method << "\n";
-  std::cout << "count: " << (s.count() < 0 ? std::string("inf") : std::to_string(s.count()))
-            << "   types:";
+  if (s.complete) {
+    std::cout << "count: " << count_text(s) << "   types:";
+  } else if (!single_solver(*rate::rate_method_from_string(a.method))) {
+    std::cout << "solutions found: " << s.solutions.size()
+              << " (the enumeration is INCOMPLETE: not a count)   types:";
+  } else if (!s.solutions.empty()) {
+    std::cout << "a solution (found by " << a.method
+              << "; one solver finds one solution, the set may hold more: not a count)"
+              << "   type:";
+  } else {
+    std::cout << "no solution found by " << a.method << " (incomplete: not a proof)   types:";
+  }
   for (const auto& t : sorted_types(s)) std::cout << ' ' << t;
   std::cout << "\nLambda: " << s.Lambda << "   D_+: " << s.D_plus << "   D_-: " << s.D_minus
             << "   unique for all directions: " << (s.unique_for_all_directions ? "yes" : "no")
@@ -119,6 +152,9 @@ void print_text(const rate::RateSolutionSet& s, const RateArgs& a) {
     }
   }
   if (!s.message.empty()) std::cout << "note: " << s.message << "\n";
+  if (reference && reference->complete)
+    std::cout << "complete enumeration (--method enumerate): " << count_text(*reference)
+              << " solution(s)\n";
 }
 
 int run_rate(const RateArgs& a) {
@@ -139,16 +175,19 @@ int run_rate(const RateArgs& a) {
   const rate::RateSolutionSet s = rate::solve_rate_problem(p, st, f, *method);
   int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
   std::string problem;
+  rate::RateSolutionSet ref;
+  const bool single = single_solver(*method);
   if (*method == rate::RateMethod::kEnumerate) {
-    const rate::RateSolutionSet ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kAnalytic);
+    const rate::RateSolutionSet analytic =
+        rate::solve_rate_problem(p, st, f, rate::RateMethod::kAnalytic);
     std::string why;
     if (!s.complete) {
       problem = "the enumeration is not conclusive: " + s.message;
-    } else if (!rate::same_solution_sets(s, ref, 1e-7, &why)) {
+    } else if (!rate::same_solution_sets(s, analytic, 1e-7, &why)) {
       problem = "enumeration and analytic routes disagree: " + why;
     }
-  } else if (*method != rate::RateMethod::kAnalytic) {
-    const rate::RateSolutionSet ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
+  } else if (single) {
+    ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
     // the solver's point is accurate to its residual (solved_inaccurate allows up to 1e-6)
     const double tol = std::max(1e-6, 1e3 * s.residual);
     if (!s.solutions.empty() && !rate::contains(ref, s.solutions.front().start, tol)) {
@@ -164,7 +203,8 @@ int run_rate(const RateArgs& a) {
                 << " solution(s)\n";
     }
   }
-  if (a.json) print_json(set_json(s)); else print_text(s, a);
+  const rate::RateSolutionSet* reference = single ? &ref : nullptr;
+  if (a.json) print_json(set_json(s, reference)); else print_text(s, a, reference);
   if (!problem.empty()) {
     std::cerr << "cpkit rate: " << problem << '\n';
     code = kExitDisagreement;

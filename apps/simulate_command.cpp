@@ -9,10 +9,11 @@
 //                  --conductance C1 C2] [--branch-rule closest|stop]
 //                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
 //
-// Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, or a branch point
-// with --branch-rule stop; the reason on stdout/in the summary), 2 bad input.
+// Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, a branch point
+// with --branch-rule stop, or numerical_failure: values beyond the range of double; the reason
+// on stdout/in the summary), 2 bad input (also an output file that cannot be written).
+#include <climits>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -24,6 +25,8 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "run_program.hpp"
+#include "simulate_config.hpp"
 #include "cpkit/rate_problem/simulation.hpp"
 
 namespace cpkit::cli {
@@ -35,152 +38,28 @@ struct SimArgs {
   std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot;
   std::vector<double> T_body, conductance;
   bool heat = false, json = false;
-  int every = -1;
-};
-
-/// The settings, from the config file then the command line.
-struct Settings {
-  rate::SimulationOptions opt;
-  std::string load_type = "fretting";
-  rate::FrettingCycle fretting;
-  rate::LoadRamp ramp;
-  std::string load_csv;
-  double csv_period = 0;
-  std::string csv, summary, plot;
   int every = 1;
-  bool have[4] = {false, false, false, false};  // a11, a12, a22, mu
+  bool every_given = false;
 };
 
-double get_num(const nlohmann::json& j, const std::string& key, const std::string& where) {
-  if (!j.is_number()) throw InputError(where + "." + key + " must be a number");
-  return j.get<double>();
-}
-
-int get_int(const nlohmann::json& j, const std::string& key, const std::string& where) {
-  if (!j.is_number_integer()) throw InputError(where + "." + key + " must be an integer");
-  return j.get<int>();
-}
-
-std::string get_str(const nlohmann::json& j, const std::string& key, const std::string& where) {
-  if (!j.is_string()) throw InputError(where + "." + key + " must be a string");
-  return j.get<std::string>();
-}
+using Settings = SimulateSettings;
 
 void set_criterion(Settings& s, const std::string& c) {
   const auto crit = rate::criterion_from_string(c);
-  if (!crit) throw InputError("criterion must be 38 or 35, got '" + c + "'");
+  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + c + "'");
   s.opt.params.criterion = *crit;
 }
 
 void set_wear_law(Settings& s, const std::string& w) {
   const auto law = rate::wear_law_from_string(w);
-  if (!law) throw InputError("wear law must be archard or mroz, got '" + w + "'");
+  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + w + "'");
   s.opt.wear.law = *law;
 }
 
 void set_branch_rule(Settings& s, const std::string& r) {
   const auto rule = rate::branch_rule_from_string(r);
-  if (!rule) throw InputError("branch rule must be closest or stop, got '" + r + "'");
+  if (!rule) throw InputError("--branch-rule must be closest or stop, got '" + r + "'");
   s.opt.branch_rule = *rule;
-}
-
-void read_config(const std::string& path, Settings& s) {
-  std::ifstream f(path);
-  if (!f) throw InputError("cannot open config '" + path + "'");
-  nlohmann::json j;
-  try {
-    f >> j;
-  } catch (const std::exception& e) {
-    throw InputError("config '" + path + "' is not valid JSON: " + e.what());
-  }
-  if (!j.is_object()) throw InputError("config '" + path + "': the top level must be an object");
-  const std::string dir = path.find('/') == std::string::npos
-                              ? std::string(".")
-                              : path.substr(0, path.find_last_of('/'));
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string& k = it.key();
-    const nlohmann::json& v = it.value();
-    if (k == "parameters") {
-      if (!v.is_object()) throw InputError("parameters must be an object");
-      for (auto p = v.begin(); p != v.end(); ++p) {
-        const std::string& pk = p.key();
-        auto& P = s.opt.params;
-        if (pk == "a11") { P.a11 = get_num(*p, pk, k); s.have[0] = true; }
-        else if (pk == "a12") { P.a12 = get_num(*p, pk, k); s.have[1] = true; }
-        else if (pk == "a22") { P.a22 = get_num(*p, pk, k); s.have[2] = true; }
-        else if (pk == "mu") { P.mu = get_num(*p, pk, k); s.have[3] = true; }
-        else if (pk == "C_T") P.C_T = get_num(*p, pk, k);
-        else if (pk == "k_a") P.k_a = get_num(*p, pk, k);
-        else if (pk == "P_s") P.P_s = get_num(*p, pk, k);
-        else if (pk == "criterion") set_criterion(s, p->is_number() ? std::to_string(p->get<int>()) : get_str(*p, pk, k));
-        else throw InputError("unknown key parameters." + pk);
-      }
-    } else if (k == "wear") {
-      if (!v.is_object()) throw InputError("wear must be an object");
-      for (auto p = v.begin(); p != v.end(); ++p) {
-        if (p.key() == "law") set_wear_law(s, get_str(*p, p.key(), k));
-        else if (p.key() == "k_M") s.opt.wear.k_M = get_num(*p, p.key(), k);
-        else throw InputError("unknown key wear." + p.key());
-      }
-    } else if (k == "load") {
-      if (!v.is_object()) throw InputError("load must be an object");
-      for (auto p = v.begin(); p != v.end(); ++p) {
-        const std::string& pk = p.key();
-        if (pk == "type") s.load_type = get_str(*p, pk, k);
-        else if (pk == "F_N") s.fretting.F_N = get_num(*p, pk, k);
-        else if (pk == "amplitude") s.fretting.amplitude = get_num(*p, pk, k);
-        else if (pk == "period") { s.fretting.period = get_num(*p, pk, k); s.csv_period = s.fretting.period; }
-        else if (pk == "cycles") s.fretting.cycles = get_int(*p, pk, k);
-        else if (pk == "steps_per_cycle") s.fretting.steps_per_cycle = get_int(*p, pk, k);
-        else if (pk == "ramp_steps") s.fretting.ramp_steps = get_int(*p, pk, k);
-        else if (pk == "F_T0") s.ramp.F_T0 = get_num(*p, pk, k);
-        else if (pk == "F_N0") s.ramp.F_N0 = get_num(*p, pk, k);
-        else if (pk == "F_T1") s.ramp.F_T1 = get_num(*p, pk, k);
-        else if (pk == "F_N1") s.ramp.F_N1 = get_num(*p, pk, k);
-        else if (pk == "duration") s.ramp.duration = get_num(*p, pk, k);
-        else if (pk == "steps") s.ramp.steps = get_int(*p, pk, k);
-        else if (pk == "file") {
-          const std::string file = get_str(*p, pk, k);
-          s.load_csv = (!file.empty() && file[0] == '/') ? file : dir + "/" + file;
-        } else throw InputError("unknown key load." + pk);
-      }
-    } else if (k == "heat") {
-      if (!v.is_object()) throw InputError("heat must be an object");
-      auto& H = s.opt.heat;
-      for (auto p = v.begin(); p != v.end(); ++p) {
-        const std::string& pk = p.key();
-        if (pk == "enabled") {
-          if (!p->is_boolean()) throw InputError("heat.enabled must be true or false");
-          H.enabled = p->get<bool>();
-        } else if (pk == "heat_capacity") H.heat_capacity = get_num(*p, pk, k);
-        else if (pk == "T_ref") H.T_ref = get_num(*p, pk, k);
-        else if (pk == "T_initial") H.T_initial = get_num(*p, pk, k);
-        else if (pk == "T_body" || pk == "conductance") {
-          if (!p->is_array() || p->size() != 2 || !(*p)[0].is_number() || !(*p)[1].is_number())
-            throw InputError("heat." + pk + " must be an array of two numbers");
-          double* dst = pk == "T_body" ? H.T_body : H.conductance;
-          dst[0] = (*p)[0].get<double>();
-          dst[1] = (*p)[1].get<double>();
-        } else throw InputError("unknown key heat." + pk);
-      }
-    } else if (k == "branch_rule") {
-      set_branch_rule(s, get_str(v, k, "config"));
-    } else if (k == "output") {
-      if (!v.is_object()) throw InputError("output must be an object");
-      for (auto p = v.begin(); p != v.end(); ++p) {
-        const std::string& pk = p.key();
-        if (pk == "csv") s.csv = get_str(*p, pk, k);
-        else if (pk == "summary") s.summary = get_str(*p, pk, k);
-        else if (pk == "plot") s.plot = get_str(*p, pk, k);
-        else if (pk == "every") s.every = get_int(*p, pk, k);
-        else throw InputError("unknown key output." + pk);
-      }
-    } else if (k == "name" || k == "note") {
-      // free text
-    } else {
-      throw InputError("unknown config key '" + k + "'");
-    }
-  }
 }
 
 void apply_args(const SimArgs& a, Settings& s) {
@@ -204,11 +83,15 @@ void apply_args(const SimArgs& a, Settings& s) {
   num("F_N", s.fretting.F_N);
   num("amplitude", s.fretting.amplitude);
   if (num("period", s.fretting.period)) s.csv_period = s.fretting.period;
+  // Counts are read as numbers (1e6 is accepted) and must be integers that fit an int; their
+  // ranges and the run's total size are checked by validate_simulate_settings.
   auto count = [&](const char* key, int& dst) {
     double d;
     if (!num(key, d)) return;
-    if (!(d == std::floor(d)) || d < -1e9 || d > 1e9)
-      throw InputError(std::string("--") + key + " must be an integer");
+    if (!(d == std::floor(d)) || d < INT_MIN || d > INT_MAX)
+      throw InputError(std::string("--") + key + " must be an integer in [" +
+                       std::to_string(INT_MIN) + ", " + std::to_string(INT_MAX) + "], got " +
+                       num_text(d));
     dst = static_cast<int>(d);
   };
   count("cycles", s.fretting.cycles);
@@ -243,20 +126,7 @@ void apply_args(const SimArgs& a, Settings& s) {
   if (!a.csv.empty()) s.csv = a.csv;
   if (!a.summary.empty()) s.summary = a.summary;
   if (!a.plot.empty()) s.plot = a.plot;
-  if (a.every >= 0) s.every = a.every;
-}
-
-rate::LoadHistory make_history(const Settings& s) {
-  if (s.load_type == "fretting") return rate::fretting_history(s.fretting);
-  if (s.load_type == "ramp") return rate::ramp_history(s.ramp);
-  if (s.load_type == "csv") {
-    if (s.load_csv.empty()) throw InputError("load type csv needs a file (--load-csv or load.file)");
-    rate::LoadHistory h = rate::read_load_csv(s.load_csv);
-    h.period = s.csv_period;
-    h.cycle_start = 0;
-    return h;
-  }
-  throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
+  if (a.every_given) s.every = a.every;
 }
 
 // Opens an output file, creating its folder first (configs name paths like out/fretting.csv).
@@ -281,6 +151,8 @@ void write_csv(const std::string& path, const rate::SimulationResult& r) {
       << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
       << ',' << s.temperature << '\n';
   }
+  f.flush();
+  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
 }
 
 nlohmann::json sample_json(const rate::SimulationSample& s) {
@@ -334,18 +206,12 @@ std::string plot_script() {
 
 int run(const SimArgs& a) {
   Settings s;
-  if (!a.config.empty()) read_config(a.config, s);
+  if (!a.config.empty()) read_simulate_config(a.config, s);
   apply_args(a, s);
-  const char* names[] = {"a11", "a12", "a22", "mu"};
-  for (int i = 0; i < 4; ++i)
-    if (!s.have[i])
-      throw InputError(std::string(names[i]) + " is required (--" + names[i] +
-                       " or parameters." + names[i] + " in --config)");
-  if (s.every < 0) throw InputError("every must be >= 0");
+  // Everything is checked (model, load, sizes) before the history is allocated.
+  validate_simulate_settings(s);
   s.opt.record_every = s.every;
-  if ((!s.csv.empty() || !s.plot.empty()) && s.every == 0)
-    throw InputError("a CSV or plot needs every >= 1");
-  const rate::LoadHistory h = make_history(s);
+  const rate::LoadHistory h = make_simulate_history(s);
   const rate::SimulationResult r = rate::simulate(h, s.opt);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
@@ -355,7 +221,9 @@ int run(const SimArgs& a) {
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
   if (!summary.empty()) {
     std::ofstream f = open_output(summary);
-    f << sum.dump(1) << '\n';
+    f << json_text(sum) << '\n';
+    f.flush();
+    if (!f) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
   }
   if (a.json) {
     print_json(sum);
@@ -376,10 +244,14 @@ int run(const SimArgs& a) {
     if (script.empty()) {
       std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found; no figures\n";
     } else {
-      const std::string cmd = "/usr/bin/python3 '" + script + "' --csv '" + csv + "' --summary '" +
-                              summary + "' --out '" + s.plot + "'";
-      if (std::system(cmd.c_str()) != 0)
-        std::cerr << "cpkit simulate: the plot script failed (" << cmd << ")\n";
+      // An argument vector, never a shell: the paths come from the user or a config file.
+      const std::vector<std::string> argv = {"/usr/bin/python3", script, "--csv", csv,
+                                             "--summary", summary, "--out", s.plot};
+      const ProgramRun pr = run_program(argv, true);
+      if (!pr.started || pr.exit_code != 0)
+        std::cerr << "cpkit simulate: the plot script failed ("
+                  << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
+                  << "): " << command_text(argv) << "\n";
     }
   }
   return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
@@ -425,7 +297,9 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--csv", a->csv, "write the time series here");
   cmd->add_option("--summary", a->summary, "write the JSON summary here");
   cmd->add_option("--plot", a->plot, "figures PREFIX_loop/_wear/_state .png/.svg");
-  cmd->add_option("--every", a->every, "keep every n-th step in the series (default 1)");
+  cmd->add_option_function<int>(
+      "--every", [a](const int& v) { a->every = v; a->every_given = true; },
+      "keep every n-th step in the series (default 1; 0: none)");
   cmd->add_flag("--json", a->json, "print the JSON summary");
   cmd->callback([a, &ctx]() { ctx.exit_code = run(*a); });
 }

@@ -18,6 +18,7 @@
 #include "cli_common.hpp"
 #include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "cpkit/rate_problem/incremental_step.hpp"
 #include "cpkit/rate_problem/step_enumeration.hpp"
 #include "cpkit/rate_problem/step_solve.hpp"
@@ -59,6 +60,8 @@ std::string values_text(const rate::StepValues& v) {
   return o.str();
 }
 
+const char* end_text(bool closed) { return closed ? " (closed)" : " (open)"; }
+
 rate::StepProblem make_problem(const StepArgs& a) {
   rate::StepProblem p;
   p.params = model_parameters(a.model);
@@ -93,13 +96,13 @@ int run_all(const rate::StepProblem& p, bool json) {
           break;
         case rate::RateSolution::Kind::kSegment:
           e["start"] = values_json(sol.start);
-          e["start_closed"] = true;
+          e["start_closed"] = sol.start_closed;
           e["end"] = values_json(sol.end);
-          e["end_closed"] = true;
+          e["end_closed"] = sol.end_closed;
           break;
         case rate::RateSolution::Kind::kRay:
           e["start"] = values_json(sol.start);
-          e["start_closed"] = true;
+          e["start_closed"] = sol.start_closed;
           e["direction"] = values_json(sol.direction);
           break;
       }
@@ -122,10 +125,11 @@ int run_all(const rate::StepProblem& p, bool json) {
       if (sol.kind == rate::RateSolution::Kind::kPoint) {
         std::cout << values_text(sol.start) << "\n";
       } else if (sol.kind == rate::RateSolution::Kind::kSegment) {
-        std::cout << "from " << values_text(sol.start) << "\n      to " << values_text(sol.end)
-                  << "\n";
+        std::cout << "from " << values_text(sol.start) << end_text(sol.start_closed)
+                  << "\n      to " << values_text(sol.end) << end_text(sol.end_closed) << "\n";
       } else {
-        std::cout << "from " << values_text(sol.start) << "\n      direction "
+        std::cout << "from " << values_text(sol.start) << end_text(sol.start_closed)
+                  << "\n      direction "
                   << values_text(sol.direction) << "\n";
       }
     }
@@ -141,7 +145,17 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
   o.chain.clear();
   std::stringstream ss(chain);
   std::string name;
-  while (std::getline(ss, name, ',')) o.chain.push_back(name);
+  while (std::getline(ss, name, ',')) {
+    // A typo must not silently shorten the chain (the library skips names not registered,
+    // for builds without Ipopt): every name given here must exist.
+    if (!name.empty() && name != "active-set" && cpkit::lcp::solvers().find(name) == nullptr) {
+      std::string valid = "active-set";
+      for (const auto& n : cpkit::lcp::solvers().names(ProblemKind::kMcp)) valid += ", " + n;
+      if (cpkit::lcp::solvers().find("lemke") != nullptr) valid += ", lemke";
+      throw InputError("--chain: unknown solver '" + name + "' (valid: " + valid + ")");
+    }
+    o.chain.push_back(name);
+  }
   const rate::StepSolveResult r = rate::solve_step(p, o);
   const bool ok = is_solution(r.result.status);
   if (json) {

@@ -32,6 +32,10 @@ const McpSolveFn* pick(const SolverEntry& e, const McpProblem&) {
   return e.solve_mcp ? &e.solve_mcp : nullptr;
 }
 
+/// Lemke and FB Newton: microseconds to milliseconds; the Farkas LP and the MPCC solvers
+/// (Ipopt, NLopt) come after them.
+bool is_cheap(const std::string& name) { return name == "lemke" || name == "fb-newton"; }
+
 ProblemKind kind_of(const LcpProblem&) { return ProblemKind::kLcp; }
 ProblemKind kind_of(const BoxLcpProblem&) { return ProblemKind::kBoxLcp; }
 ProblemKind kind_of(const McpProblem&) { return ProblemKind::kMcp; }
@@ -106,7 +110,37 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
   std::vector<Attempt> attempts;
   std::optional<SolveResult> chosen, inaccurate, last;
   bool farkas_done = false;
+  // The Farkas LP (LCPs only) runs once, after the cheap solvers have failed and before the
+  // first expensive one (Ipopt/NLopt MPCC), or at the end: an Ipopt LP costs ~0.1-1 s where
+  // Lemke and FB Newton decide most problems in microseconds (issue 11, sec. 4).
+  auto try_farkas = [&](const std::string& after) -> bool {
+    if constexpr (std::is_same_v<Problem, LcpProblem>) {
+      if (farkas_done || inaccurate || attempts.empty() || solvers().find("ipopt") == nullptr)
+        return false;
+      farkas_done = true;
+      const double left = options.time_limit_s - timer.seconds();
+      if (!(left > 0)) return false;
+      Stopwatch t;
+      auto cert = farkas_search(problem, options, left);
+      attempts.push_back({"farkas-search", cert ? Status::kInfeasible : Status::kStalled, 0,
+                          t.seconds(),
+                          cert ? "certificate y >= 0, M^T y <= 0, q^T y < 0 found (LP by Ipopt)"
+                               : "no Farkas certificate found"});
+      if (!cert) return false;
+      SolveResult proof;
+      proof.status = Status::kInfeasible;
+      proof.solver = "farkas-search";
+      proof.certificate = std::move(*cert);
+      proof.message = "infeasible: Farkas certificate found by the LP after " + after;
+      chosen = std::move(proof);
+      return true;
+    } else {
+      (void)after;
+      return false;
+    }
+  };
   for (const std::string& name : auto_chain_names(kind_of(problem))) {
+    if (!is_cheap(name) && !attempts.empty() && try_farkas(attempts.back().solver)) break;
     const SolverEntry* entry = solvers().find(name);
     const auto* fn = entry ? pick(*entry, problem) : nullptr;
     if (fn == nullptr) {
@@ -146,31 +180,9 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
     }
     if (r.status == Status::kSolvedInaccurate && !inaccurate) inaccurate = r;
     last = std::move(r);
-    if constexpr (std::is_same_v<Problem, LcpProblem>) {
-      // After the first failure (normally Lemke's ray): look for a Farkas certificate once.
-      if (!farkas_done && !inaccurate && solvers().find("ipopt") != nullptr) {
-        farkas_done = true;
-        const double left = options.time_limit_s - timer.seconds();
-        Stopwatch t;
-        if (left > 0) {
-          auto cert = farkas_search(problem, options, left);
-          attempts.push_back({"farkas-search", cert ? Status::kInfeasible : Status::kStalled, 0,
-                              t.seconds(),
-                              cert ? "certificate y >= 0, M^T y <= 0, q^T y < 0 found (LP by Ipopt)"
-                                   : "no Farkas certificate found"});
-          if (cert) {
-            SolveResult proof;
-            proof.status = Status::kInfeasible;
-            proof.solver = "farkas-search";
-            proof.certificate = std::move(*cert);
-            proof.message = "infeasible: Farkas certificate found by the LP after " + name;
-            chosen = std::move(proof);
-            break;
-          }
-        }
-      }
-    }
   }
+  if (!chosen && !attempts.empty() && attempts.back().solver != "farkas-search")
+    try_farkas(attempts.back().solver);
   SolveResult result;
   if (chosen) result = std::move(*chosen);
   else if (inaccurate) result = std::move(*inaccurate);

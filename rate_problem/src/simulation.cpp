@@ -35,6 +35,8 @@ std::string_view to_string(SimulationResult::Outcome o) noexcept {
       return "continuum";
     case SimulationResult::Outcome::kBranchStop:
       return "branch_stop";
+    case SimulationResult::Outcome::kNumericalFailure:
+      return "numerical_failure";
   }
   return "unknown";
 }
@@ -62,6 +64,28 @@ StateLabel step_state_label(const ContactParameters& params, double P_T, double 
 }
 
 namespace {
+
+/// Running sums of the march (copied into the result at the end).
+struct Sums {
+  double work_abs = 0, wear_integral = 0, total_slip = 0, thermal = 0;
+};
+
+/// The name of the first non-finite quantity of a new state or of the running sums, or null.
+const char* first_non_finite(const SimulationSample& s, const Sums& r) noexcept {
+  struct {
+    const char* name;
+    double v;
+  } const q[] = {{"P_T", s.P_T}, {"P_N", s.P_N}, {"w_T", s.w_T}, {"w_N", s.w_N},
+                 {"w_w", s.w_w}, {"w_Ti", s.w_Ti}, {"g", s.g}, {"the dissipation", s.dissipation},
+                 {"the dissipated energy", s.dissipation_total},
+                 {"the external work", s.work_total}, {"the stored energy", s.stored},
+                 {"the temperature", s.temperature}, {"the work scale", r.work_abs},
+                 {"the wear integral", r.wear_integral}, {"the total slip", r.total_slip},
+                 {"the thermal dissipation", r.thermal}};
+  for (const auto& x : q)
+    if (!std::isfinite(x.v)) return x.name;
+  return nullptr;
+}
 
 std::string describe(const SimulationSample& s) {
   std::ostringstream o;
@@ -113,6 +137,7 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
     first = 1;
   }
   double min_D = 0;
+  Sums sums;
   StepPoints pts;
   for (std::size_t k = first; k < n; ++k) {
     const LoadPoint& lp = history.points[k];
@@ -210,14 +235,38 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
     if (D < 0) min_D = std::min(min_D, D / std::max(D_scale, 1e-300));
     nx.dissipation = D;
     const double dW = 0.5 * (cur.F_T + lp.F_T) * v.Dw_T + 0.5 * (cur.F_N + lp.F_N) * v.Dw_N;
-    res.work_abs += std::abs(dW);
     nx.work_total = cur.work_total + dW;
     nx.dissipation_total = cur.dissipation_total + D;
     nx.stored = 0.5 * (a.a11 * nx.w_T * nx.w_T + 2 * a.a12 * nx.w_T * nx.w_N +
                        a.a22 * nx.w_N * nx.w_N) +
                 0.5 * a.C_T * nx.P_T * nx.P_T;
-    res.wear_integral += cw * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
-    res.total_slip += std::abs(v.Dw_Ti);
+    // The running sums after this step (committed below once everything is finite).
+    Sums next = sums;
+    next.work_abs += std::abs(dW);
+    next.wear_integral += cw * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
+    next.total_slip += std::abs(v.Dw_Ti);
+    double T_next = T;
+    if (opt.heat.enabled) {
+      const double dt = lp.t - t_prev;
+      next.thermal += thermal_dissipation(opt.heat, T, dt);
+      T_next = heat_step(opt.heat, T, std::max(D, 0.0), dt);
+    }
+    nx.temperature = T_next;
+    if (const char* bad = first_non_finite(nx, next)) {
+      // Data beyond the range of double (e.g. loads near 1e300, whose energies overflow): an
+      // honest stop before this step, never a "completed" run with inf/NaN in its results.
+      res.outcome = SimulationResult::Outcome::kNumericalFailure;
+      std::ostringstream m;
+      m << "stopped before t = " << lp.t << ": " << bad
+        << " would not be finite (the values exceed the range of double; rescale the data). "
+           "Last state: "
+        << describe(cur);
+      res.message = m.str();
+      break;
+    }
+    sums = next;
+    T = T_next;
+    res.max_temperature = std::max(res.max_temperature, T);
     if (cycles && lp.t > history.cycle_start) {
       const double tc = 0.5 * (t_prev + lp.t) - history.cycle_start;
       if (tc >= 0) {
@@ -226,23 +275,20 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
           res.slip_per_cycle.resize(c + 1, 0.0);
           res.wear_per_cycle.resize(c + 1, 0.0);
         }
-        res.slip_per_cycle[c] += std::abs(v.Dw_Ti);
-        res.wear_per_cycle[c] += v.Dw_w;
+        res.slip_per_cycle[c] += std::abs(v.Dw_Ti);  // <= total_slip: finite
+        res.wear_per_cycle[c] += v.Dw_w;              // <= w_w - w_w(0): finite
       }
     }
-    if (opt.heat.enabled) {
-      const double dt = lp.t - t_prev;
-      res.thermal_dissipation += thermal_dissipation(opt.heat, T, dt);
-      T = heat_step(opt.heat, T, std::max(D, 0.0), dt);
-      res.max_temperature = std::max(res.max_temperature, T);
-    }
-    nx.temperature = T;
     t_prev = lp.t;
     cur = nx;
     ++res.steps;
     if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == n))
       res.series.push_back(cur);
   }
+  res.work_abs = sums.work_abs;
+  res.wear_integral = sums.wear_integral;
+  res.total_slip = sums.total_slip;
+  res.thermal_dissipation = sums.thermal;
   res.final_state = cur;
   res.wear_depth = cur.w_w;
   res.external_work = cur.work_total;

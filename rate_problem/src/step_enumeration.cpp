@@ -288,8 +288,11 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
   enumerate_core(problem, ncp, opt.tol, w);
   StepSolutionSet set;
   set.infinite = w.pts.infinite;
-  // Continua first (their points are not repeated as points).
+  // Continua first. A continuum's interior has its slip type; an end of another type
+  // (classify_step: stick where xi = 0, open where P_N1 = 0 after an open start) is open and
+  // listed as a point of its own type (the partition of piece_geometry.hpp).
   std::vector<StepSolution> conts;
+  std::vector<StepValues> open_ends;
   const Setup st = make_setup(problem);
   for (int i = 0; i < w.ncont; ++i) {
     const Continuum& c = w.cont[i];
@@ -298,10 +301,14 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     sol.type = c.type;
     sol.start = at(c.x_lo);
     sol.residual = ncp.residual(step_unknowns(sol.start));
+    sol.start_closed = classify_step(problem, sol.start) == c.type;
+    if (!sol.start_closed) open_ends.push_back(sol.start);
     if (std::isfinite(c.x_hi)) {
       sol.kind = RateSolution::Kind::kSegment;
       sol.end = at(c.x_hi);
       sol.residual = std::max(sol.residual, ncp.residual(step_unknowns(sol.end)));
+      sol.end_closed = classify_step(problem, sol.end) == c.type;
+      if (!sol.end_closed) open_ends.push_back(sol.end);
     } else {
       sol.kind = RateSolution::Kind::kRay;
       const StepValues v1 = at(c.x_lo + 1.0);
@@ -317,6 +324,14 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     }
     conts.push_back(sol);
   }
+  auto same_point = [&](double DP_N, double xi, const StepValues& v) {
+    return std::abs(v.DP_N - DP_N) <= 1e-9 * st.fscale && std::abs(v.Dw_Ti - xi) <= 1e-9 * st.dscale;
+  };
+  auto at_open_end = [&](double DP_N, double xi) {
+    for (const auto& v : open_ends)
+      if (same_point(DP_N, xi, v)) return true;
+    return false;
+  };
   auto on_continuum = [&](const StepPoint& pt) {
     for (int i = 0; i < w.ncont; ++i) {
       const Continuum& c = w.cont[i];
@@ -326,14 +341,24 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     }
     return false;
   };
+  auto add_point = [&](const StepValues& v) {
+    StepSolution sol;
+    sol.start = v;
+    sol.type = classify_step(problem, v);
+    sol.residual = ncp.residual(step_unknowns(v));
+    set.solutions.push_back(sol);
+  };
   for (int i = 0; i < w.pts.n; ++i) {
     const StepPoint& pt = w.pts.points[i];
-    if (on_continuum(pt)) continue;
-    StepSolution sol;
-    sol.type = pt.type;
-    sol.start = step_values(problem, pt.DP_N, pt.xi);
-    sol.residual = ncp.residual(step_unknowns(sol.start));
-    set.solutions.push_back(sol);
+    // Points on the closed part of a continuum belong to it; an open end is a point of its own.
+    if (on_continuum(pt) && !at_open_end(pt.DP_N, pt.xi)) continue;
+    add_point(step_values(problem, pt.DP_N, pt.xi));
+  }
+  for (const auto& v : open_ends) {
+    bool listed = false;
+    for (const auto& sol : set.solutions)
+      listed = listed || same_point(v.DP_N, v.Dw_Ti, sol.start);
+    if (!listed) add_point(v);
   }
   for (auto& c : conts) set.solutions.push_back(c);
   std::stable_sort(set.solutions.begin(), set.solutions.end(),

@@ -72,6 +72,35 @@ TEST_CASE("CliStepOneSolutionByTheChain", "[cli][step]") {
   CHECK(j["values"]["DP_T"].get<double>() == Approx(0.5 * 0.4 / 0.85));
 }
 
+TEST_CASE("CliStepSegmentIsOpenAtItsStickEnd", "[cli][step]") {
+  // Issue 11, sec. 4 (hand calculation in tests/rate_problem/test_step_enumeration.cpp,
+  // StickEndOfAStickSlipSegmentIsStick): a11 = a12 = mu = 1, a22 = 2, DF = (0.5, 0.5) from
+  // state b. slip+ segment from zero-force slip (Dw_Ti = 0.5, closed) to the stick point
+  // (DP = (0.5, 0.5), Dw_Ti = 0; open), and the stick point listed on its own.
+  const Run r = run_cli("step --a11 1 --a12 1 --a22 2 --mu 1 --P_T0 0 --P_N0 0 --g0 0 "
+                        "--DF 0.5 0.5 --all --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == "inf");
+  REQUIRE(j["solutions"].size() == 2);
+  const auto& stick = j["solutions"][0];
+  CHECK(stick["type"] == "stick");
+  CHECK(stick["kind"] == "point");
+  CHECK(stick["values"]["DP_N"].get<double>() == Approx(0.5));
+  CHECK(stick["values"]["DP_T"].get<double>() == Approx(0.5));
+  const auto& seg = j["solutions"][1];
+  CHECK(seg["type"] == "slip+");
+  REQUIRE(seg["kind"] == "segment");
+  for (const char* end : {"start", "end"}) {
+    const bool at_stick = std::abs(seg[end]["Dw_Ti"].get<double>()) < 1e-12;
+    CHECK(seg[std::string(end) + "_closed"] == !at_stick);
+    CHECK(seg[end]["DP_N"].get<double>() == Approx(at_stick ? 0.5 : 0.0).margin(1e-12));
+  }
+  const Run t = run_cli("step --a11 1 --a12 1 --a22 2 --mu 1 --P_T0 0 --P_N0 0 --g0 0 "
+                        "--DF 0.5 0.5 --all");
+  CHECK(t.out.find("(open)") != std::string::npos);
+}
+
 TEST_CASE("CliStepExitCodes", "[cli][step]") {
   // Criterion (35) with mu/k = 5: no solution above P_N = 5.
   const Run none = run_cli("step --a11 1 --a12 0 --a22 1 --mu 0.5 --k_a 0.3 --criterion 35 "

@@ -417,23 +417,70 @@ TEST_CASE("SofteningCriterionEnforcesCondition46", "[step]") {
 TEST_CASE("DegenerateDataGiveASegmentNotSampledPoints", "[step]") {
   // a11 = mu a12 (D_+ = 0) and N = a11 dF_N - a12 dF_T = 0 with dF_N > 0 from state b, no wear:
   // the rate solutions form a segment from stick to zero-force slip (model.md); so do the steps.
+  // As in the rate problem the stick end is not slip: the segment is open there and the stick
+  // point is listed on its own.
   StepProblem p = base(1.0, 2.0, 5.0, 0.5);
   p.load = {1.0, 2.0};
   const StepSolutionSet set = enumerate_step(p);
   CHECK(set.infinite);
   CHECK(set.count() == -1);
-  REQUIRE(set.solutions.size() == 1);
-  const StepSolution& s = set.solutions[0];
+  REQUIRE(set.solutions.size() == 2);
+  CHECK(set.solutions[0].type == SolutionType::kStick);
+  CHECK(set.solutions[0].kind == RateSolution::Kind::kPoint);
+  const StepSolution& s = set.solutions[1];
   CHECK(s.kind == RateSolution::Kind::kSegment);
   CHECK(s.type == SolutionType::kSlipPlus);
   // Ends: zero-force slip (P = 0) and stick (xi = 0, dP = dF / (1 + a11 C_T)).
-  const StepValues lo = s.start.P_N1 < s.end.P_N1 ? s.start : s.end;
-  const StepValues hi = s.start.P_N1 < s.end.P_N1 ? s.end : s.start;
+  const bool lo_first = s.start.P_N1 < s.end.P_N1;
+  const StepValues lo = lo_first ? s.start : s.end;
+  const StepValues hi = lo_first ? s.end : s.start;
   CHECK(lo.P_N1 == Approx(0).margin(1e-12));
   CHECK(hi.P_N1 == Approx(2.0));
   CHECK(hi.Dw_Ti == Approx(0).margin(1e-12));
+  CHECK((lo_first ? s.start_closed : s.end_closed));
+  CHECK_FALSE((lo_first ? s.end_closed : s.start_closed));
+  CHECK(set.solutions[0].start.P_N1 == Approx(2.0));
+  CHECK(set.solutions[0].start.DP_T == Approx(1.0));
   CHECK(physical_residual(p, lo) < 1e-12);
   CHECK(physical_residual(p, hi) < 1e-12);
+}
+
+TEST_CASE("StickEndOfAStickSlipSegmentIsStick", "[step]") {
+  // Issue 11, sec. 4: from state b (P = 0, g0 = 0) with k_a = 0, a11 = mu |a12| and
+  // DF = (0.5, 0.5). Hand calculation with a11 = a12 = mu = 1, a22 = 2, C_T = 0 (det A = 1,
+  // D0 = a22 = 2, N = a11 DF_N - a12 DF_T = 0): the gap row and the friction row P_T1 = P_N1
+  // coincide, DP_T = (a22 DF_T - a12 DF_N + a12 DP_N - det A xi) / D0 = (0.5 + x - xi) / 2 = x
+  // along xi = 0.5 - x, x = DP_N in [0, 0.5]:
+  //   x = 0:   P = 0, Dw_Ti = 0.5, g1 = 0   (zero-force slip: slip+, closed end)
+  //   x = 0.5: P = (0.5, 0.5), Dw_Ti = 0   (stick: open end of the slip+ segment, a point)
+  StepProblem p = base(1.0, 1.0, 2.0, 1.0);
+  p.load = {0.5, 0.5};
+  const StepSolutionSet set = enumerate_step(p);
+  CHECK(set.infinite);
+  REQUIRE(set.solutions.size() == 2);
+  const StepSolution& stick = set.solutions[0];
+  CHECK(stick.type == SolutionType::kStick);
+  CHECK(stick.kind == RateSolution::Kind::kPoint);
+  CHECK(stick.start.DP_N == Approx(0.5));
+  CHECK(stick.start.DP_T == Approx(0.5));
+  CHECK(stick.start.Dw_Ti == Approx(0).margin(1e-12));
+  CHECK(physical_residual(p, stick.start) < 1e-12);
+  const StepSolution& seg = set.solutions[1];
+  CHECK(seg.type == SolutionType::kSlipPlus);
+  REQUIRE(seg.kind == RateSolution::Kind::kSegment);
+  const bool slip_first = seg.start.Dw_Ti > seg.end.Dw_Ti;
+  const StepValues& slip_end = slip_first ? seg.start : seg.end;
+  const StepValues& stick_end = slip_first ? seg.end : seg.start;
+  CHECK((slip_first ? seg.start_closed : seg.end_closed));
+  CHECK_FALSE((slip_first ? seg.end_closed : seg.start_closed));
+  CHECK(slip_end.DP_N == Approx(0).margin(1e-12));
+  CHECK(slip_end.DP_T == Approx(0).margin(1e-12));
+  CHECK(slip_end.Dw_Ti == Approx(0.5));
+  CHECK(slip_end.g1 == Approx(0).margin(1e-12));
+  CHECK(stick_end.DP_N == Approx(0.5));
+  CHECK(stick_end.Dw_Ti == Approx(0).margin(1e-12));
+  // The midpoint is slip+: P_T1 = mu P_N1 = 0.25 with Dw_Ti = 0.25 > 0.
+  CHECK(classify_step(p, step_values(p, 0.25, 0.25)) == SolutionType::kSlipPlus);
 }
 
 TEST_CASE("MrozStupkiewiczWithCoulombIsArchardWithKmMu", "[step]") {

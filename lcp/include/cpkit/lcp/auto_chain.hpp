@@ -3,18 +3,20 @@
 /// The automatic solver chain "auto": try solvers in a fixed order until one returns a
 /// verified solution, with an honest account of every attempt.
 ///
-/// Order (looked up by name in cpkit::lcp::solvers() at call time; a name that is not
+/// Order, by cost (looked up by name in cpkit::lcp::solvers() at call time; a name that is not
 /// registered, or whose entry does not accept the problem, is recorded as skipped):
-///   LCP:            lemke, fb-newton, ipopt, nlopt
+///   LCP:            lemke, fb-newton, [farkas-search], ipopt, nlopt
 ///   box LCP, MCP:   fb-newton, ipopt, nlopt
 /// (nlopt, the same MPCC solved by SLSQP, is a last resort beyond the chain: on the
 /// robustness benchmark it solves indefinite LCPs on which the Ipopt MPCC stalls.)
 /// The chain stops at the first kSolved answer, or at a kInfeasible one (whose certificate
 /// finalize() re-checked). A kSolvedInaccurate answer is kept while later solvers try for
-/// kSolved. For LCPs, after the first failed attempt (normally Lemke's secondary ray without a
-/// proof) a Farkas certificate y >= 0, M^T y <= 0, q^T y < 0 is searched once with Ipopt (the LP
-/// min q^T y, M^T y <= 0, sum y = 1, y >= 0); kInfeasible is reported only when
-/// check_certificate() accepts it [CPS 1992, Sec. 3.8] (attempt "farkas-search").
+/// kSolved. For LCPs, once the cheap solvers (Lemke, FB Newton: microseconds) have failed and
+/// before the first expensive one (the Ipopt/NLopt MPCC: ~0.1-1 s), a Farkas certificate
+/// y >= 0, M^T y <= 0, q^T y < 0 is searched once with Ipopt (the LP min q^T y, M^T y <= 0,
+/// sum y = 1, y >= 0); kInfeasible is reported only when check_certificate() accepts it
+/// [CPS 1992, Sec. 3.8] (attempt "farkas-search"). It is skipped when a kSolvedInaccurate answer
+/// is at hand, and run at the end when every solver was cheap or skipped.
 /// Otherwise the status is that of the last attempt (never "infeasible" without a proof).
 ///
 /// result.solver names the solver that produced the answer (e.g. "fb-newton"), or the last
@@ -33,7 +35,8 @@
 
 namespace cpkit::lcp {
 
-/// The chain's solver names for a problem kind (in order).
+/// The chain's solver names for a problem kind (in order; the farkas-search step is not a
+/// registered solver and is not listed).
 std::vector<std::string> auto_chain_names(ProblemKind kind);
 
 /// Each throws InputError for an invalid problem or options.

@@ -9,7 +9,8 @@
 ///   the previous state in |DP_T| + |DP_N| + (det A / D0)|Dw_T^i|; kStop: stop there). Every
 ///   such step is a branch point (counted; the first `max_branch_records` are recorded).
 /// - No solution (or a continuum, which no rule can choose from): the march stops and the
-///   result says when, in which state and why. It never continues silently.
+///   result says when, in which state and why. It never continues silently. Likewise when a
+///   state or an energy is no longer finite (Outcome::kNumericalFailure).
 /// - After a step the state is put exactly on its active constraints (g = 0 when P_N > 0,
 ///   P_T = s Y(P_N) after slip, P = 0 after separation) so that no drift accumulates.
 /// - Thermodynamic checks every step: the mechanical dissipation (42)
@@ -65,7 +66,9 @@ struct BranchPoint {
 };
 
 struct SimulationResult {
-  enum class Outcome { kCompleted, kNoSolution, kContinuum, kBranchStop };
+  /// kNumericalFailure: a state or an energy left the range of double (data near 1e300); the
+  /// run stops before that step, never "completed" with inf/NaN in its results.
+  enum class Outcome { kCompleted, kNoSolution, kContinuum, kBranchStop, kNumericalFailure };
   Outcome outcome = Outcome::kCompleted;
   std::string message;           ///< for a stop: time, state and why
   long steps = 0;                ///< steps completed

@@ -13,8 +13,11 @@
 ///   q = -(b + sgn(b) sqrt(disc))/2 form) and a cubic for (35) (real roots in [0, mu/k] by
 ///   monotone bracketing between the critical points).
 /// When the reduced polynomial vanishes identically (degenerate data, e.g. a11 = mu |a12| on
-/// N = 0) the piece is a segment or a ray, reported as such; it contains its end points, and
-/// point solutions lying on it are not listed again. Every candidate is verified by the
+/// N = 0) the piece is a segment or a ray, reported as such. Types are partitioned as in the
+/// rate problem (rate_problem/src/piece_geometry.hpp): a piece holds the points of its own
+/// type only, so an end of another type (the stick end xi = 0 of a slip segment, or an open
+/// end P_N1 = 0 of a step that started open) is an open end of the piece and is listed as a
+/// point of its own type; point solutions on the closed part of a piece are not listed again. Every candidate is verified by the
 /// NCP residual (StepNcp::residual) and duplicates (the same physical point found by two
 /// pieces) are merged; the first piece in the order above names its type.
 ///
@@ -40,6 +43,8 @@ struct StepSolution {
   StepValues start;          ///< the point; a segment's first end; a ray's origin
   StepValues end;            ///< segment: second end
   StepValues direction;      ///< ray: direction (unit length in DP_N)
+  bool start_closed = true;  ///< segment/ray: `start` belongs to the piece (same type)
+  bool end_closed = true;    ///< segment: `end` belongs to the piece (same type)
   double residual = 0;       ///< StepNcp::residual at `start` (worst over the ends)
   bool jump = false;         ///< not on a branch from the start state (see the file comment)
 };

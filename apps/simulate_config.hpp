@@ -1,0 +1,60 @@
+#pragma once
+// The settings of `cpkit simulate` (docs/simulation.md, "Config file"): parsed from a JSON
+// config, overridden by the command line, and checked as a whole before anything is allocated.
+// A library of its own (cpkit_cli_config) so that tests/fuzz/fuzz_simulate_config.cpp can call
+// the parser directly.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "cpkit/rate_problem/load_history.hpp"
+#include "memory_limit.hpp"
+#include "cpkit/rate_problem/simulation.hpp"
+
+namespace cpkit::cli {
+
+struct SimulateSettings {
+  rate::SimulationOptions opt;
+  std::string load_type = "fretting";  ///< fretting | ramp | csv
+  rate::FrettingCycle fretting;
+  rate::LoadRamp ramp;
+  std::string load_csv;  ///< csv load history (relative paths resolved against the config)
+  double csv_period = 0;
+  std::string csv, summary, plot;
+  int every = 1;
+  bool have[4] = {false, false, false, false};  ///< a11, a12, a22, mu given
+};
+
+/// Parses a config (JSON text; `origin` names it in messages, `dir` is the folder relative
+/// load files are resolved against) into `s`. Throws cpkit::InputError naming the key for
+/// invalid JSON, unknown keys, wrong types, non-finite numbers and integers that are not
+/// integers or do not fit their field ("load.cycles = 4294967297 is out of range [1, ...]").
+void parse_simulate_config(const std::string& text, const std::string& origin,
+                           const std::string& dir, SimulateSettings& s);
+
+/// Largest config file and csv load history read (a bound, so that /dev/zero or a huge file
+/// is an error, not an unbounded allocation). A csv row is at least 6 bytes ("0,0,0\n").
+constexpr std::size_t kMaxConfigBytes = std::size_t{1} << 20;     // 1 MiB
+constexpr std::size_t kMaxLoadCsvBytes = std::size_t{64} << 20;   // 64 MiB
+
+/// Reads at most `max_bytes` of a file (any kind: regular, pipe, device); InputError naming
+/// `what` and the path when it cannot be opened or is larger.
+std::string read_bounded(const std::string& path, std::size_t max_bytes, const std::string& what);
+
+/// Reads and parses a config file (parse_simulate_config; the folder of `path` is `dir`).
+void read_simulate_config(const std::string& path, SimulateSettings& s);
+
+/// Checks the settings as a whole, before any allocation: the required parameters, the model
+/// (SimulationOptions::validate), the load (FrettingCycle/LoadRamp::validate) and the memory the
+/// run would need (load history + recorded series) against kMemoryLimitBytes. Throws
+/// cpkit::InputError; the memory message names the size needed. A csv load is checked by
+/// check_history once read.
+void validate_simulate_settings(const SimulateSettings& s);
+
+/// The memory check for a history of `steps` points (csv loads: after reading).
+void check_history_memory(std::int64_t steps, const SimulateSettings& s);
+
+/// The load history of the settings (validate first).
+rate::LoadHistory make_simulate_history(const SimulateSettings& s);
+
+}  // namespace cpkit::cli
