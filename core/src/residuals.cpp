@@ -104,8 +104,19 @@ CandidateUnits candidate_units(const LcpProblem& p, const Vec& z) {
   return c;
 }
 
-UnitFreePoint make_point(const Vec& z, const Vec& w, const CandidateUnits& c, const Vec* lower,
-                         const Vec* upper) {
+// The candidate projected onto its bounds (the point whose w is judged; residuals.hpp).
+Vec projected(const Vec& z, const Vec* lower, const Vec* upper) {
+  Vec zp = z;
+  for (Eigen::Index i = 0; i < z.size(); ++i) {
+    const double l = lower ? (*lower)[i] : 0.0, h = upper ? (*upper)[i] : kInf;
+    zp[i] = std::min(std::max(z[i], l), h);
+  }
+  return zp;
+}
+
+// z: the candidate; zp, wp: its projection and w there (units c from zp).
+UnitFreePoint make_point(const Vec& z, const Vec& zp, const Vec& wp, const CandidateUnits& c,
+                         const Vec* lower, const Vec* upper) {
   const Eigen::Index n = z.size();
   UnitFreePoint u;
   u.z.resize(n);
@@ -113,15 +124,16 @@ UnitFreePoint make_point(const Vec& z, const Vec& w, const CandidateUnits& c, co
   u.to_lower.resize(n);
   u.to_upper.resize(n);
   const double g = gamma_bound(n);
-  u.finite = z.allFinite() && w.allFinite() && c.R.allFinite() && c.s.allFinite();
+  u.finite = z.allFinite() && wp.allFinite() && c.R.allFinite() && c.s.allFinite();
   for (Eigen::Index i = 0; i < n; ++i) {
-    const RowValues v = row_values(z[i], w[i], c.R[i], c.s[i], lower ? (*lower)[i] : 0.0,
+    const RowValues v = row_values(z[i], wp[i], c.R[i], c.s[i], lower ? (*lower)[i] : 0.0,
                                    upper ? (*upper)[i] : kInf, c.Z, g);
     u.z[i] = v.zn;
     u.w[i] = v.wn;
-    u.to_lower[i] = v.to_lower;
+    u.to_lower[i] = v.to_lower;  // from z itself: negative when z is outside its bounds
     u.to_upper[i] = v.to_upper;
   }
+  (void)zp;
   return u;
 }
 
@@ -153,20 +165,42 @@ double unit_free_residual(const Vec& z, const Vec& w, const Vec& R, const Vec& s
   return worst_value;
 }
 
+double bound_violation(const Vec& z, double Z, const Vec* lower, const Vec* upper,
+                       Eigen::Index* worst) {
+  double m = 0;
+  if (worst) *worst = -1;
+  for (Eigen::Index i = 0; i < z.size(); ++i) {
+    const double l = lower ? (*lower)[i] : 0.0, h = upper ? (*upper)[i] : kInf;
+    double v = std::max({0.0, ratio(l - z[i], Z), ratio(z[i] - h, Z)});
+    if (std::isnan(v)) v = kInf;
+    if (v > m) {
+      m = v;
+      if (worst) *worst = i;
+    }
+  }
+  return m;
+}
+
 namespace {
 
-void fill_common(Residuals& r, const Vec& z, const Vec& w, const CandidateUnits& c,
+// zp, wp: the projected candidate and its w; z the candidate itself (bound violations).
+void fill_common(Residuals& r, const Vec& z, const Vec& zp, const Vec& wp, const CandidateUnits& c,
                  const Vec* lower, const Vec* upper) {
   const Eigen::Index n = z.size();
-  r.finite = z.allFinite() && w.allFinite() && c.R.allFinite() && c.s.allFinite();
+  r.finite = z.allFinite() && wp.allFinite() && c.R.allFinite() && c.s.allFinite();
   r.z_scale = c.Z;
   r.scale = n ? c.s.maxCoeff() : 0.0;
-  r.natural = unit_free_residual(z, w, c.R, c.s, c.Z, lower, upper, &r.worst_index);
+  r.natural = unit_free_residual(zp, wp, c.R, c.s, c.Z, lower, upper, &r.worst_index);
+  Eigen::Index bi = -1;
+  const double b = bound_violation(z, c.Z, lower, upper, &bi);
+  if (b > r.natural) {
+    r.natural = b;
+    r.worst_index = bi;
+  }
   if (!r.finite) r.natural = kInf;
   const double g = gamma_bound(n);
   for (Eigen::Index i = 0; i < n; ++i) r.rounding = std::max(r.rounding, ratio(g * c.R[i], c.s[i]));
   r.min_z = n ? z.minCoeff() : 0.0;
-  r.min_w = n ? w.minCoeff() : 0.0;
 }
 
 // min over i of the distance of x_i inside [l_i, u_i] (negative when outside).
@@ -224,18 +258,25 @@ double row_violation(double wn, double dlo, double dhi) noexcept {
 
 UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w) {
   w = p.w(z);
-  return make_point(z, w, candidate_units(p, z), nullptr, nullptr);
+  const Vec zp = projected(z, nullptr, nullptr);
+  const Vec wp = zp == z ? w : p.w(zp);
+  return make_point(z, zp, wp, candidate_units(p, zp), nullptr, nullptr);
 }
 
 UnitFreePoint unit_free_point(const BoxLcpProblem& p, const Vec& z, Vec& w) {
   w = p.lcp.w(z);
-  return make_point(z, w, candidate_units(p.lcp, z), &p.lower, &p.upper);
+  const Vec zp = projected(z, &p.lower, &p.upper);
+  const Vec wp = zp == z ? w : p.lcp.w(zp);
+  return make_point(z, zp, wp, candidate_units(p.lcp, zp), &p.lower, &p.upper);
 }
 
 Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w) {
   w = p.w(z);
+  const Vec zp = projected(z, nullptr, nullptr);
+  const Vec wp = zp == z ? w : p.w(zp);
   Residuals r;
-  fill_common(r, z, w, candidate_units(p, z), nullptr, nullptr);
+  fill_common(r, z, zp, wp, candidate_units(p, zp), nullptr, nullptr);
+  r.min_w = w.size() ? w.minCoeff() : 0.0;
   const Eigen::Index n = z.size();
   r.natural_abs = n ? z.cwiseMin(w).cwiseAbs().maxCoeff() : 0.0;
   if (n && z.cwiseMin(w).hasNaN()) r.natural_abs = std::numeric_limits<double>::quiet_NaN();
@@ -245,8 +286,10 @@ Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w) {
 
 Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w) {
   w = p.lcp.w(z);
+  const Vec zp = projected(z, &p.lower, &p.upper);
+  const Vec wp = zp == z ? w : p.lcp.w(zp);
   Residuals r;
-  fill_common(r, z, w, candidate_units(p.lcp, z), &p.lower, &p.upper);
+  fill_common(r, z, zp, wp, candidate_units(p.lcp, zp), &p.lower, &p.upper);
   r.natural_abs = box_natural_abs(z, w, p.lower, p.upper);
   r.complementarity = box_complementarity(z, w, p.lower, p.upper);
   r.min_z = box_margin(z, p.lower, p.upper);
@@ -290,19 +333,25 @@ bool mcp_jacobian(const McpProblem& p, const Vec& x, const Vec& F, LcpProblem& l
 
 Residuals mcp_residuals(const McpProblem& p, const Vec& x, const Vec& F) {
   const Eigen::Index n = x.size();
+  // Judge F at the projection of x onto its box (F evaluated again there when x is outside).
+  const Vec xp = projected(x, &p.lower, &p.upper);
+  Vec Fp = F;
+  bool have_Fp = true;
+  if (!(xp == x)) have_Fp = p.F(xp, Fp) && Fp.size() == n && Fp.allFinite();
+  if (!have_Fp) Fp = Vec::Constant(n, kInf);
   LcpProblem lin;
   CandidateUnits c;
-  if (mcp_jacobian(p, x, F, lin) && (lin.is_sparse() || lin.M.allFinite())) {
-    lin.q = F - (lin.is_sparse() ? Vec(lin.M_sparse * x) : Vec(lin.M * x));
-    c = candidate_units(lin, x);
+  if (have_Fp && mcp_jacobian(p, xp, Fp, lin) && (lin.is_sparse() || lin.M.allFinite())) {
+    lin.q = Fp - (lin.is_sparse() ? Vec(lin.M_sparse * xp) : Vec(lin.M * xp));
+    c = candidate_units(lin, xp);
   } else {
-    // No usable Jacobian: F's own size, row by row and as a whole, and z's own size.
-    c.R = F.cwiseAbs();
-    c.s = F.cwiseAbs().array() + (n ? F.lpNorm<Eigen::Infinity>() : 0.0);
-    c.Z = n ? x.lpNorm<Eigen::Infinity>() : 0.0;
+    // No usable Jacobian: F's own size, row by row and as a whole, and x's own size.
+    c.R = Fp.cwiseAbs();
+    c.s = Fp.cwiseAbs().array() + (n ? Fp.lpNorm<Eigen::Infinity>() : 0.0);
+    c.Z = n ? xp.lpNorm<Eigen::Infinity>() : 0.0;
   }
   Residuals r;
-  fill_common(r, x, F, c, &p.lower, &p.upper);
+  fill_common(r, x, xp, Fp, c, &p.lower, &p.upper);
   r.natural_abs = box_natural_abs(x, F, p.lower, p.upper);
   r.complementarity = box_complementarity(x, F, p.lower, p.upper);
   r.min_z = box_margin(x, p.lower, p.upper);

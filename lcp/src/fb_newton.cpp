@@ -162,7 +162,7 @@ struct AffineSource {
   DataSizes sizes;    // the data's part of the acceptance test's units (residuals.hpp)
   Mat absM;
   SparseMat absMs;
-  mutable Vec R, s;   // workspaces: |M||x| + |q| and the w-units
+  mutable Vec R, s, xp, Fp;  // workspaces: |M||x| + |q|, the w-units, the projected point
 
   explicit AffineSource(const LcpProblem& p) : lcp(&p), sizes(data_sizes(p)) {
     if (p.is_sparse())
@@ -171,6 +171,8 @@ struct AffineSource {
       absM = p.M.cwiseAbs();
     R.resize(p.size());
     s.resize(p.size());
+    xp.resize(p.size());
+    Fp.resize(p.size());
   }
   bool eval(const Vec& x, Vec& F) const {
     if (lcp->is_sparse())
@@ -184,15 +186,20 @@ struct AffineSource {
   /// when the answer will verify: unit-free, per row, never growing with |x| (a diverging
   /// sequence of an infeasible problem is never "converged").
   double residual(const Vec& x, const Vec& F, const Vec& l, const Vec& u) const {
+    // As finalize(): w is judged at the projection xp of x onto [l, u].
+    xp.noalias() = x.cwiseMax(l).cwiseMin(u);
+    const bool inside = xp == x;
+    if (!inside) eval(xp, Fp);
     if (lcp->is_sparse())
-      R.noalias() = absMs * x.cwiseAbs();
+      R.noalias() = absMs * xp.cwiseAbs();
     else
-      R.noalias() = absM * x.cwiseAbs();
+      R.noalias() = absM * xp.cwiseAbs();
     R += lcp->q.cwiseAbs();
-    const double x_norm = x.lpNorm<Eigen::Infinity>();
+    const double x_norm = xp.lpNorm<Eigen::Infinity>();
     w_units(sizes, lcp->q, x_norm, s);
     const double Z = z_unit(sizes, x_norm);
-    return unit_free_residual(x, F, R, s, Z, &l, &u);
+    const double r = unit_free_residual(xp, inside ? F : Fp, R, s, Z, &l, &u);
+    return inside ? r : std::max(r, bound_violation(x, Z, &l, &u));
   }
 };
 

@@ -13,7 +13,9 @@
 ///   a_i   = gamma_{n+1} ((|M| |z|)_i + |q_i|)   the worst-case rounding error of computing w_i
 ///           in double precision [Higham 2002, Sec. 3.1]; |w_i| <= a_i counts as 0, and a
 ///           larger |w_i| is reduced by a_i before it is divided by s_i
-///   zn_i = z_i / Z,  wn_i = (w_i reduced by a_i) / s_i
+///   z+   = z projected onto its bounds (z+ = max(z, 0) for an LCP); w is judged at z+, and
+///          the distance of z from z+ counts as a violation of its own, ||z - z+||_inf / Z
+///   zn_i = z_i / Z,  wn_i = (w_i(z+) reduced by a_i) / s_i   (units taken at z+)
 ///   r_i  = violation of the complementarity rule by (zn_i, wn_i): |min(zn_i, wn_i)| for an LCP
 ///   natural = max_i r_i                 the one acceptance number
 /// Every quantity is invariant under q -> a q (z -> a z) and (M, q) -> b (M, q) (z unchanged),
@@ -42,7 +44,8 @@ struct Residuals {
 };
 
 /// A candidate in the units of the acceptance test, row by row: zn_i = z_i / Z, wn_i = w_i / s_i
-/// (rounding allowance deducted), and the distances to the bounds (z_i - l_i) / Z and
+/// with w taken at the projection z+ (rounding allowance deducted), and the distances of z
+/// itself to the bounds (z_i - l_i) / Z and
 /// (u_i - z_i) / Z (+inf for infinite bounds; an LCP has l = 0, u = +inf).
 struct UnitFreePoint {
   Vec z, w, to_lower, to_upper;
@@ -73,6 +76,10 @@ Vec abs_product(const LcpProblem& p, const Vec& z);
 /// stopping tests. Non-finite inputs give +inf. `worst` receives the index of the maximum.
 double unit_free_residual(const Vec& z, const Vec& w, const Vec& R, const Vec& s, double Z,
                           const Vec* lower, const Vec* upper, Eigen::Index* worst = nullptr);
+
+/// max_i of the distance of z_i outside [l_i, u_i], divided by Z (nullptr bounds: 0, +inf).
+double bound_violation(const Vec& z, double Z, const Vec* lower, const Vec* upper,
+                       Eigen::Index* worst = nullptr);
 
 /// z, w of an LCP candidate in unit-free form; w = M z + q is returned in `w`.
 UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w);
