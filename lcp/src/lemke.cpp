@@ -381,7 +381,7 @@ bool LemkeRun::find_certificate(const Vec& ray, Certificate& cert) {
   auto accept = [&](const Vec& y) {
     if (!y.allFinite() || !(y.minCoeff() >= 0) || !(y.maxCoeff() > 0)) return false;
     cert = Certificate{};
-    cert.y = y;
+    cert.y = y.array() + 0.0;  // -0 entries (negated zeros) print as 0
     return check_certificate(problem_, cert);
   };
   if (accept(ray.head(n_))) return true;
