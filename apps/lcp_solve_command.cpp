@@ -189,7 +189,7 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
                       ")");
   cmd->add_flag("--json", args->json, "print one JSON object on stdout");
   cmd->add_option("--tol", args->tol,
-                  "tolerance on the scaled natural residual (default 1e-10, at most 1e-3)");
+                  "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");
   cmd->add_option("--max-iter", args->max_iter,
                   "iteration/pivot limit (0: the solver's documented default)");
   cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");

@@ -8,7 +8,7 @@
 //   infeasible M ~ N(0, 1) with row k <= 0 and q_k < 0 (w_k < 0 for every z >= 0)
 // "Planted": z* >= 0 and w* >= 0 complementary with random supports, q = w* - M z*, so z*
 // solves the LCP. Every answer is judged by cpkit: finalize() on the returned z (Siconos' own
-// "info" is ignored) plus a divergence guard (||z||_inf > 1e10 (1 + ||q||_inf) is a failure).
+// "info" is ignored) plus a divergence guard (||z||_inf > 1e10 ||q||_inf / ||M||_max is a failure).
 //
 // Output (directory argument, default ./robustness-out): results.csv (one row per solve),
 // profile.csv (Dolan-More performance profile over the solvable problems: the fraction of
@@ -155,8 +155,9 @@ struct Outcome {
 };
 
 bool diverged(const LcpProblem& p, const Vec& z) {
-  return z.size() == 0 || !z.allFinite() ||
-         z.lpNorm<Eigen::Infinity>() > 1e10 * (1 + p.q.lpNorm<Eigen::Infinity>());
+  if (z.size() == 0 || !z.allFinite()) return true;
+  const double qn = p.q.lpNorm<Eigen::Infinity>(), mn = p.dense_M().cwiseAbs().maxCoeff();
+  return qn > 0 && mn > 0 && z.lpNorm<Eigen::Infinity>() / 1e10 > qn / mn;  // unit-free
 }
 
 Outcome run_cpkit(const cpkit::SolverEntry& e, const LcpProblem& p) {

@@ -73,8 +73,7 @@ std::string to_text(const SolveResult& r) {
   s << "status:     " << to_string(r.status) << '\n';
   s << "solver:     " << r.solver << '\n';
   s << "iterations: " << r.iterations << '\n';
-  s << "residual:   " << r.residuals.natural << " (scaled natural residual; scale "
-    << r.residuals.scale << ")\n";
+  s << "residual:   " << r.residuals.natural << " (unit-free residual, docs/conventions.md)\n";
   s << "time:       " << r.seconds * 1e3 << " ms\n";
   auto vec = [&](const char* label, const Vec& v) {
     s << label;

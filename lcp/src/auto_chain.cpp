@@ -10,6 +10,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
@@ -35,6 +36,9 @@ const McpSolveFn* pick(const SolverEntry& e, const McpProblem&) {
 /// Lemke and FB Newton: microseconds to milliseconds; the Farkas LP and the MPCC solvers
 /// (Ipopt, NLopt) come after them.
 bool is_cheap(const std::string& name) { return name == "lemke" || name == "fb-newton"; }
+
+/// Largest LCP the chain enumerates completely before the expensive solvers.
+constexpr Eigen::Index kAutoEnumerationSize = 12;
 
 ProblemKind kind_of(const LcpProblem&) { return ProblemKind::kLcp; }
 ProblemKind kind_of(const BoxLcpProblem&) { return ProblemKind::kBoxLcp; }
@@ -87,10 +91,20 @@ std::optional<Certificate> farkas_search(const LcpProblem& p, const CommonOption
   return cert;
 }
 
-/// A runaway point: ||z||_inf > 1e10 (1 + ||q||_inf) for LCPs, 1e10 (1 + ||finite bounds||)
-/// for MCPs.
+/// A runaway point: ||z||_inf > 1e10 z_ref for LCPs, with z_ref = ||q||_inf / ||M||_max the
+/// data's own size of z (unit-free; residuals.hpp), and 1e10 (1 + ||finite bounds||) for MCPs.
+/// Defence in depth only: finalize()'s test already rejects diverging iterates.
 bool diverged(const LcpProblem& p, const Vec& z) {
-  return z.lpNorm<Eigen::Infinity>() > 1e10 * (1 + p.q.lpNorm<Eigen::Infinity>());
+  const double qn = p.q.lpNorm<Eigen::Infinity>();
+  double mn = 0;
+  if (p.is_sparse()) {
+    for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
+      for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) mn = std::max(mn, std::abs(it.value()));
+  } else if (p.M.size()) {
+    mn = p.M.cwiseAbs().maxCoeff();
+  }
+  if (!(qn > 0 && mn > 0)) return false;  // no data size of z (q = 0 or M = 0)
+  return z.lpNorm<Eigen::Infinity>() / 1e10 > qn / mn;
 }
 bool diverged(const BoxLcpProblem& p, const Vec& z) { return diverged(p.lcp, z); }
 bool diverged(const McpProblem& p, const Vec& z) {
@@ -139,7 +153,41 @@ SolveResult run_chain(const Problem& problem, const CommonOptions& options) {
       return false;
     }
   };
+  // Small LCPs (n <= kAutoEnumerationSize): after the cheap solvers and before the expensive
+  // ones, the complete enumeration (microseconds to milliseconds there) finds a solution that
+  // local methods miss, e.g. on bimatrix games where Lemke with covering vector e ends on a ray.
+  bool enumeration_done = false;
+  auto try_enumeration = [&]() -> bool {
+    if constexpr (std::is_same_v<Problem, LcpProblem>) {
+      if (enumeration_done || inaccurate || problem.size() > kAutoEnumerationSize) return false;
+      enumeration_done = true;
+      EnumerationOptions eo;
+      eo.time_limit_s = std::min(1.0, options.time_limit_s - timer.seconds());
+      if (!(eo.time_limit_s > 0)) return false;
+      Stopwatch t;
+      const SolutionSet set = enumerate_all(problem, eo);
+      SolveResult r;
+      r.solver = "enumeration";
+      r.status = Status::kStalled;
+      r.message = set.solutions.empty()
+                      ? (set.complete ? "complete enumeration: no solution" : "no solution found")
+                      : "an extreme solution of the complete enumeration";
+      if (!set.solutions.empty()) {
+        r.z = set.solutions.front().z;
+        r.status = Status::kSolved;  // a claim: finalize() decides
+        r = finalize(problem, std::move(r), options);
+      }
+      r.seconds = t.seconds();
+      attempts.push_back({"enumeration", r.status, r.residuals.natural, r.seconds, r.message});
+      if (r.status != Status::kSolved) return false;
+      chosen = std::move(r);
+      return true;
+    } else {
+      return false;
+    }
+  };
   for (const std::string& name : auto_chain_names(kind_of(problem))) {
+    if (!is_cheap(name) && !attempts.empty() && try_enumeration()) break;
     if (!is_cheap(name) && !attempts.empty() && try_farkas(attempts.back().solver)) break;
     const SolverEntry* entry = solvers().find(name);
     const auto* fn = entry ? pick(*entry, problem) : nullptr;

@@ -28,15 +28,16 @@ SolveResult claim(Status s, Vec z) {
 }  // namespace
 
 TEST_CASE("Siconos 1x1 trap: M = -1, q = -1, z = -1 claimed solved is refuted", "[finalize]") {
-  // w = -z - 1 = 0 at z = -1, but z < 0. Units (residuals.hpp): z_ref = |q| / |M| = 1,
-  // Z = max(|z|, z_ref) = 1, s = |q| + |M| min(|z|, z_ref) = 2; zn = -1, wn = 0: violation 1.
+  // w = -z - 1 = 0 at z = -1, but z < 0. Units (residuals.hpp): w is judged at the projection
+  // z+ = 0 (w = -1 there); z_ref = |q| / |M| = 1, Z = max(|z+|, z_ref) = 1,
+  // s = |q| + |M| min(|z+|, z_ref) = 1; the bound violation |z - z+| / Z = 1: residual 1.
   const LcpProblem p(Mat{{-1}}, Vec{{-1}});
   const auto r = cpkit::finalize(p, claim(Status::kSolved, Vec{{-1}}), {});
   CHECK(r.status == Status::kNumericalFailure);
   CHECK(r.message.find("refuted") != std::string::npos);
   CHECK(r.w[0] == 0.0);
   CHECK(r.residuals.natural_abs == 1.0);
-  CHECK(r.residuals.scale == 2.0);
+  CHECK(r.residuals.scale == 1.0);
   CHECK(r.residuals.z_scale == 1.0);
   CHECK(r.residuals.natural == 1.0);
   CHECK(r.residuals.min_z == -1.0);

@@ -42,13 +42,21 @@ double natural_residual(const Mat& M, const Vec& q, const Vec& z) {
 }
 
 // Checks y >= 0, M^T y <= 0, q^T y < 0 here, with a small absolute slack.
+// y >= 0, M^T y <= 0, q^T y < 0 for integer M, q, checked in long double (64-bit significand):
+// the products of small integers with the doubles of y are exact there, and so are the short
+// sums of the tests below, so a certificate that holds only by one unit in the last place of a
+// double (Lemke may return one, and finalize() proves it exactly) is judged correctly.
 bool is_farkas_certificate(const Mat& M, const Vec& q, const Vec& y) {
-  const double s = y.cwiseAbs().maxCoeff();
-  if (!(s > 0)) return false;
-  const Vec yn = y / s;
-  if (yn.minCoeff() < -1e-12) return false;
-  const Vec mty = M.transpose() * yn;
-  return mty.maxCoeff() <= 1e-9 * (1 + M.cwiseAbs().maxCoeff()) && q.dot(yn) < -1e-12;
+  if (!(y.cwiseAbs().maxCoeff() > 0) || y.minCoeff() < 0) return false;
+  long double qy = 0;
+  for (Eigen::Index i = 0; i < q.size(); ++i) qy += static_cast<long double>(q[i]) * y[i];
+  if (!(qy < 0)) return false;
+  for (Eigen::Index j = 0; j < M.cols(); ++j) {
+    long double c = 0;
+    for (Eigen::Index i = 0; i < M.rows(); ++i) c += static_cast<long double>(M(i, j)) * y[i];
+    if (c > 0) return false;
+  }
+  return true;
 }
 
 // All solutions of a nondegenerate LCP by enumerating the 2^n complementary bases (z_i basic

@@ -9,8 +9,8 @@ namespace cpkit {
 class LogSink;
 
 struct CommonOptions {
-  /// Acceptance tolerance on the scaled natural residual (see residuals.hpp):
-  /// ||min(z, w)||_inf / scale <= tol  =>  Status::kSolved.
+  /// Acceptance tolerance on the unit-free residual (residuals.hpp, docs/conventions.md):
+  /// natural <= tol  =>  Status::kSolved.
   double tol = 1e-10;
   /// Residual in (tol, tol_acceptable]  =>  Status::kSolvedInaccurate.
   double tol_acceptable = 1e-6;
