@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/io.hpp"
 #include "cpkit/core/registry.hpp"
+#include "cpkit/lcp/cross_verify.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "lcp/enumerate_brute_force.hpp"
 
@@ -106,5 +108,29 @@ TEST_CASE("No solver claims a solution of M = [[1e16, 0], [0, -1]], q = (1, -1)"
     const auto r = entry.solve_lcp(p, cpkit::CommonOptions{});
     INFO(r.message);
     CHECK_FALSE(cpkit::is_solution(r.status));
+  }
+}
+
+TEST_CASE("Contact LCPs with q ~ 1e-10: every solver agrees with the enumeration in any units",
+          "[units][cross_verify]") {
+  // 12-variable polyhedral-friction contact LCPs (tests/data/lemke/contact_lcp.py; M ~ 1,
+  // q ~ 1e-10, degenerate): the case where Ipopt's answer was refuted by exact
+  // arithmetic and `lcp verify` blamed a correct enumeration. No disagreement may occur, in the
+  // given units or rescaled.
+  for (const char* name : {"contact_2c_seed1", "contact_2c_seed2_sym", "contact_2c_seed3_mixed",
+                           "contact_2c_seed5_mixed"}) {
+    const LcpProblem base =
+        cpkit::read_lcp_file(std::string(CPKIT_TEST_DATA_DIR) + "/lemke/" + name + ".json");
+    for (double a : {1.0, 1e10, 1e-6}) {
+      CAPTURE(name, a);
+      LcpProblem p = base;
+      p.q *= a;
+      const auto rep = cpkit::lcp::cross_verify(p);
+      for (const auto& d : rep.disagreements) INFO(d);
+      CHECK(rep.consistent());
+      int answered = 0;
+      for (const auto& c : rep.checks) answered += c.verdict == cpkit::lcp::Verdict::kConsistent;
+      CHECK(answered >= 3);  // lemke, fb-newton, auto at least, each verified in the set
+    }
   }
 }
