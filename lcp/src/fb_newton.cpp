@@ -801,7 +801,7 @@ SolveResult solve_fb_newton(const LcpProblem& problem, const FbNewtonOptions& op
   const Eigen::Index n = problem.size();
   const Vec l = Vec::Zero(n), u = Vec::Constant(n, kInf);
   // Iterate on the problem in its natural units (units.hpp), answer in the caller's.
-  const LcpUnits units = natural_units(problem);
+  const LcpUnits units = equilibrated_units(problem);
   FbNewtonOptions o = options;
   if (o.x0.size()) o.x0 = z_to_units(o.x0, units);
   SolveResult r = solve_affine(to_units(problem, units), l, u, o);
@@ -814,7 +814,7 @@ SolveResult solve_fb_newton(const BoxLcpProblem& problem, const FbNewtonOptions&
       "fb-newton: box LCP" + (problem.lcp.name.empty() ? "" : " '" + problem.lcp.name + "'");
   throw_if_invalid(problem.validate(), what);
   throw_if_invalid(options.validate(problem.size()), what + " options");
-  const LcpUnits units = natural_units(problem.lcp);
+  const LcpUnits units = equilibrated_units(problem.lcp);
   const BoxLcpProblem scaled = to_units(problem, units);
   FbNewtonOptions o = options;
   if (o.x0.size()) o.x0 = z_to_units(o.x0, units);

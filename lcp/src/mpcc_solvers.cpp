@@ -393,10 +393,10 @@ SolveResult solve_lcp_mpcc(const LcpProblem& problem, const ComplementarityMpccO
                            MpccResult* details) {
   throw_if_invalid(problem.validate(), "LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  // The NLP is posed in the problem's natural units (units.hpp): its feasibility tolerances,
+  // The NLP is posed in equilibrated natural units (units.hpp): its feasibility tolerances,
   // relaxation parameters and divergence bound are then meaningful whatever units the caller
   // used. The answer is mapped back and decided again on the caller's data.
-  const LcpUnits units = natural_units(problem);
+  const LcpUnits units = equilibrated_units(problem);
   const LcpProblem scaled = to_units(problem, units);
   ComplementarityMpccOptions o = options;
   if (o.reference.size()) o.reference = z_to_units(o.reference, units);
@@ -409,7 +409,7 @@ SolveResult solve_box_lcp_mpcc(const BoxLcpProblem& problem,
                                const ComplementarityMpccOptions& options, MpccResult* details) {
   throw_if_invalid(problem.validate(), "box LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  const LcpUnits units = natural_units(problem.lcp);
+  const LcpUnits units = equilibrated_units(problem.lcp);
   const BoxLcpProblem scaled = to_units(problem, units);
   ComplementarityMpccOptions o = options;
   if (o.reference.size()) o.reference = z_to_units(o.reference, units);

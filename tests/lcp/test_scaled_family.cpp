@@ -6,6 +6,7 @@
 // equal a times the exact solution.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -131,6 +132,23 @@ TEST_CASE("Contact LCPs with q ~ 1e-10: every solver agrees with the enumeration
       int answered = 0;
       for (const auto& c : rep.checks) answered += c.verdict == cpkit::lcp::Verdict::kConsistent;
       CHECK(answered >= 3);  // lemke, fb-newton, auto at least, each verified in the set
+    }
+  }
+}
+
+TEST_CASE("Badly scaled data: every solver finds z = (0, 1) of diag(big, 1), q = (1, -1)",
+          "[units][solvers]") {
+  // w = (big z_1 + 1, z_2 - 1): z_1 = 0 (w_1 = 1 > 0), z_2 = 1 (w_2 = 0), by hand.
+  for (double big : {1e11, 1e200}) {
+    const LcpProblem p(Mat{{big, 0}, {0, 1}}, Vec{{1, -1}});
+    for (const cpkit::SolverEntry& entry : cpkit::lcp::solvers().entries()) {
+      if (!entry.solve_lcp) continue;
+      CAPTURE(big, entry.info.name);
+      const auto r = entry.solve_lcp(p, cpkit::CommonOptions{});
+      INFO(r.message);
+      REQUIRE(r.status == cpkit::Status::kSolved);
+      CHECK(std::abs(r.z[0]) <= 1e-10 / big);
+      CHECK(r.z[1] == Approx(1).epsilon(1e-10));
     }
   }
 }

@@ -18,11 +18,19 @@ namespace cpkit {
 struct LcpUnits {
   int z_exponent = 0;  ///< z_unit = 2^z_exponent
   int w_exponent = 0;  ///< w_unit = 2^w_exponent
+  /// Optional per-variable refinements (equilibrated_units): z_j's unit is
+  /// 2^(z_exponent + z_columns[j]), w_i's unit 2^(w_exponent + w_rows[i]). Empty: uniform.
+  Eigen::VectorXi z_columns, w_rows;
 };
 
 /// The units of the header comment. q = 0: w_unit from ||M||_max and z_unit = 1 (the solution
 /// set is a cone; its size is arbitrary). M = 0 or q and M both 0: unit 1.
 LcpUnits natural_units(const LcpProblem& p);
+/// natural_units() refined by one pass of power-of-two column and row equilibration
+/// [Ruiz 2001]: columns of M~ and then rows of [M~ q~] get largest entries in [1, 2). For badly
+/// scaled data (M = diag(1e11, 1)) it brings every solution entry near 1 where the uniform
+/// units cannot; still exact, and invariant under uniform power-of-two changes of units.
+LcpUnits equilibrated_units(const LcpProblem& p);
 /// LCP(M~, q~) in those units (dense or sparse as given; name and note kept).
 LcpProblem to_units(const LcpProblem& p, const LcpUnits& u);
 /// Box LCP in those units (bounds scale as z).
