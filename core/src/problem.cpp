@@ -1,5 +1,6 @@
 #include "cpkit/core/problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -38,6 +39,14 @@ std::string first_nonfinite(const SparseMat& m) {
 Vec LcpProblem::w(const Vec& z) const {
   if (is_sparse()) return M_sparse * z + q;
   return M * z + q;
+}
+
+double LcpProblem::max_abs_entry() const {
+  if (!is_sparse()) return M.size() ? M.cwiseAbs().maxCoeff() : 0.0;
+  double m = 0;
+  for (Eigen::Index k = 0; k < M_sparse.outerSize(); ++k)
+    for (SparseMat::InnerIterator it(M_sparse, k); it; ++it) m = std::max(m, std::abs(it.value()));
+  return m;
 }
 
 Mat LcpProblem::dense_M() const { return is_sparse() ? Mat(M_sparse) : M; }

@@ -24,14 +24,6 @@ double ratio(double a, double s) {
   return a > 0 ? kInf : -kInf;
 }
 
-double max_abs_entry(const LcpProblem& p) {
-  if (!p.is_sparse()) return p.M.size() ? p.M.cwiseAbs().maxCoeff() : 0.0;
-  double m = 0;
-  for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
-    for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) m = std::max(m, std::abs(it.value()));
-  return m;
-}
-
 Vec row_abs_sums(const LcpProblem& p) {
   if (!p.is_sparse()) return p.M.cwiseAbs().rowwise().sum();
   Vec r = Vec::Zero(p.size());
@@ -45,7 +37,7 @@ Vec row_abs_sums(const LcpProblem& p) {
 DataSizes data_sizes(const LcpProblem& p) {
   DataSizes d;
   d.q_norm = p.q.size() ? p.q.lpNorm<Eigen::Infinity>() : 0.0;
-  d.m_max = max_abs_entry(p);
+  d.m_max = p.max_abs_entry();
   d.row_sums = row_abs_sums(p);
   return d;
 }

@@ -8,19 +8,11 @@ namespace {
 // Exponent e with |x| in [2^e, 2^(e+1)), 0 for x = 0.
 int exponent_of(double x) { return x > 0 && std::isfinite(x) ? std::ilogb(x) : 0; }
 
-double max_abs_entry(const LcpProblem& p) {
-  if (!p.is_sparse()) return p.M.size() ? p.M.cwiseAbs().maxCoeff() : 0.0;
-  double m = 0;
-  for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
-    for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) m = std::max(m, std::abs(it.value()));
-  return m;
-}
-
 }  // namespace
 
 LcpUnits natural_units(const LcpProblem& p) {
   const double qn = p.q.size() ? p.q.lpNorm<Eigen::Infinity>() : 0.0;
-  const double mn = max_abs_entry(p);
+  const double mn = p.max_abs_entry();
   LcpUnits u;
   if (qn > 0) {
     u.w_exponent = exponent_of(qn);

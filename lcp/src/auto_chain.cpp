@@ -96,13 +96,7 @@ std::optional<Certificate> farkas_search(const LcpProblem& p, const CommonOption
 /// Defence in depth only: finalize()'s test already rejects diverging iterates.
 bool diverged(const LcpProblem& p, const Vec& z) {
   const double qn = p.q.lpNorm<Eigen::Infinity>();
-  double mn = 0;
-  if (p.is_sparse()) {
-    for (Eigen::Index k = 0; k < p.M_sparse.outerSize(); ++k)
-      for (SparseMat::InnerIterator it(p.M_sparse, k); it; ++it) mn = std::max(mn, std::abs(it.value()));
-  } else if (p.M.size()) {
-    mn = p.M.cwiseAbs().maxCoeff();
-  }
+  const double mn = p.max_abs_entry();
   if (!(qn > 0 && mn > 0)) return false;  // no data size of z (q = 0 or M = 0)
   return z.lpNorm<Eigen::Infinity>() / 1e10 > qn / mn;
 }

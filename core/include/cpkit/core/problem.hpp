@@ -32,6 +32,8 @@ struct LcpProblem {
   Vec w(const Vec& z) const;
   /// Dense copy of M whatever the storage.
   Mat dense_M() const;
+  /// ||M||_max = max |M_ij| over the stored entries (0 for an empty M); no densifying.
+  double max_abs_entry() const;
   /// Empty when usable; otherwise a message naming what is wrong (sizes, non-finite entries).
   std::string validate() const;
 };
