@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_files.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 
@@ -28,12 +29,7 @@ namespace fs = std::filesystem;
 const fs::path kSiconosData = fs::path(CPKIT_TEST_DATA_DIR) / "siconos";
 
 fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_io_dat_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
+  static const fs::path dir = cpkit::test::scratch_dir("cpkit_test_io_dat_");
   return dir;
 }
 

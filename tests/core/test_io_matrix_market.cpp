@@ -8,6 +8,7 @@
 #include <random>
 #include <string>
 
+#include "scratch_files.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 
@@ -20,19 +21,12 @@ using Catch::Contains;
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_io_mtx_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
+  static const fs::path dir = cpkit::test::scratch_dir("cpkit_test_io_mtx_");
   return dir;
 }
 
 std::string write(const std::string& name, const std::string& text) {
-  const auto path = (scratch() / name).string();
-  std::ofstream(path) << text;
-  return path;
+  return cpkit::test::write_file(scratch(), name, text);
 }
 
 Mat parse(const std::string& text) { return Mat(cpkit::parse_matrix_market(text, "m.mtx")); }

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_files.hpp"
 #include "cpkit/core/io.hpp"
 
 namespace {
@@ -25,12 +26,7 @@ using cpkit::Vec;
 namespace fs = std::filesystem;
 
 fs::path scratch() {
-  static const fs::path dir = [] {
-    std::random_device rd;
-    auto d = fs::temp_directory_path() / ("cpkit_test_io_peer_" + std::to_string(rd()));
-    fs::create_directories(d);
-    return d;
-  }();
+  static const fs::path dir = cpkit::test::scratch_dir("cpkit_test_io_peer_");
   return dir;
 }
 

@@ -16,6 +16,7 @@
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "lcp/enumerate_brute_force.hpp"
+#include "lcp/enumeration_checks.hpp"
 
 using cpkit::lcp::enumerate_all;
 using cpkit::lcp::EnumerationOptions;
@@ -23,22 +24,8 @@ using cpkit::lcp::SolutionSet;
 
 namespace {
 
-brute::Found to_found(const SolutionSet& s) {
-  brute::Found f;
-  for (const auto& e : s.solutions) {
-    f.z.emplace_back(e.z.data(), e.z.data() + e.z.size());
-    f.w.emplace_back(e.w.data(), e.w.data() + e.w.size());
-  }
-  for (const auto& p : s.pieces) {
-    brute::Found::Piece pc;
-    for (int i : p.support) pc.support |= 1u << i;
-    pc.vertices = p.vertices;
-    for (const auto& r : p.rays) pc.rays.emplace_back(r.data(), r.data() + r.size());
-    f.pieces.push_back(pc);
-  }
-  f.infinite = s.infinite;
-  return f;
-}
+using enumeration_checks::require_verified;
+using enumeration_checks::to_found;
 
 void integer_sweep(int n, unsigned seed, int count, int range, double zero_prob) {
   std::mt19937 rng(seed);

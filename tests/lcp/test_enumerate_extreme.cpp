@@ -13,6 +13,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "cpkit/lcp/enumerate_small_prepared.hpp"
+#include "lcp/enumeration_checks.hpp"
 
 using cpkit::lcp::enumerate_all;
 using cpkit::lcp::EnumerationOptions;
@@ -20,27 +21,8 @@ using cpkit::lcp::SolutionSet;
 
 namespace {
 
-/// Every listed solution, re-checked from the data with the unit-free componentwise test:
-/// finite, z >= 0, w >= 0, z_i w_i = 0 and w = M z + q to 1e-8 W_i, W_i = |q_i| + (|M||z|)_i.
-void require_verified(const SolutionSet& s, const cpkit::Mat& M, const cpkit::Vec& q) {
-  for (const auto& e : s.solutions) {
-    REQUIRE(e.z.allFinite());
-    REQUIRE(e.w.allFinite());
-    REQUIRE(e.z.minCoeff() >= 0);
-    REQUIRE(e.w.minCoeff() >= 0);
-    for (int i = 0; i < int(q.size()); ++i) {
-      double w = q(i), W = std::abs(q(i));
-      for (int j = 0; j < int(q.size()); ++j) {
-        w += M(i, j) * e.z(j);
-        W += std::abs(M(i, j) * e.z(j));
-      }
-      REQUIRE(std::isfinite(w));
-      REQUIRE(std::isfinite(W));
-      REQUIRE(e.z(i) * e.w(i) == 0);
-      REQUIRE(std::abs(w - e.w(i)) <= 1e-8 * W);
-    }
-  }
-}
+using enumeration_checks::require_verified;
+using enumeration_checks::to_found;
 
 SolutionSet run(const cpkit::Mat& M, const cpkit::Vec& q, const EnumerationOptions& opt = {}) {
   const SolutionSet s = enumerate_all(cpkit::LcpProblem(M, q), opt);

@@ -21,11 +21,15 @@
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "cpkit/lcp/enumerate_small_prepared.hpp"
 #include "lcp/enumerate_brute_force.hpp"
+#include "lcp/enumeration_checks.hpp"
 
 using cpkit::lcp::enumerate_all;
 using cpkit::lcp::SolutionSet;
 
 namespace {
+
+using enumeration_checks::require_verified;
+using enumeration_checks::to_found;
 
 const double kFactors[] = {1e-12, 1e-6, 1.0, 1e6, 1e12};
 
@@ -45,40 +49,6 @@ struct IntLcp {
     return v;
   }
 };
-
-brute::Found to_found(const SolutionSet& s) {
-  brute::Found f;
-  for (const auto& e : s.solutions) {
-    f.z.emplace_back(e.z.data(), e.z.data() + e.z.size());
-    f.w.emplace_back(e.w.data(), e.w.data() + e.w.size());
-  }
-  for (const auto& p : s.pieces) {
-    brute::Found::Piece pc;
-    for (int i : p.support) pc.support |= 1u << i;
-    pc.vertices = p.vertices;
-    for (const auto& r : p.rays) pc.rays.emplace_back(r.data(), r.data() + r.size());
-    f.pieces.push_back(pc);
-  }
-  f.infinite = s.infinite;
-  return f;
-}
-
-/// Every listed solution, re-checked from the data with the unit-free componentwise test:
-/// finite, z >= 0, w >= 0, z_i w_i = 0, and w = M z + q to 1e-8 W_i, W_i = |q_i| + (|M||z|)_i.
-void require_verified(const SolutionSet& s, const cpkit::Mat& M, const cpkit::Vec& q) {
-  for (const auto& e : s.solutions) {
-    REQUIRE(e.z.allFinite());
-    REQUIRE(e.w.allFinite());
-    REQUIRE(e.z.minCoeff() >= 0);
-    REQUIRE(e.w.minCoeff() >= 0);
-    const cpkit::Vec w = M * e.z + q;
-    const cpkit::Vec W = (M.cwiseAbs() * e.z.cwiseAbs()) + q.cwiseAbs();
-    for (int i = 0; i < int(q.size()); ++i) {
-      REQUIRE(e.z(i) * e.w(i) == 0);
-      REQUIRE(std::abs(w(i) - e.w(i)) <= 1e-8 * W(i));
-    }
-  }
-}
 
 /// s (the problem scaled by a, b) equals ref (a = b = 1) with z -> a z, w -> a b w.
 void require_scaled_equal(const SolutionSet& ref, const SolutionSet& s, double a, double b) {
