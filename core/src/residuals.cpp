@@ -106,9 +106,9 @@ Vec projected(const Vec& z, const Vec* lower, const Vec* upper) {
   return zp;
 }
 
-// z: the candidate; zp, wp: its projection and w there (units c from zp).
-UnitFreePoint make_point(const Vec& z, const Vec& zp, const Vec& wp, const CandidateUnits& c,
-                         const Vec* lower, const Vec* upper) {
+// z: the candidate; wp: w at its projection onto the bounds (units c taken there too).
+UnitFreePoint make_point(const Vec& z, const Vec& wp, const CandidateUnits& c, const Vec* lower,
+                         const Vec* upper) {
   const Eigen::Index n = z.size();
   UnitFreePoint u;
   u.z.resize(n);
@@ -125,7 +125,6 @@ UnitFreePoint make_point(const Vec& z, const Vec& zp, const Vec& wp, const Candi
     u.to_lower[i] = v.to_lower;  // from z itself: negative when z is outside its bounds
     u.to_upper[i] = v.to_upper;
   }
-  (void)zp;
   return u;
 }
 
@@ -252,14 +251,14 @@ UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w) {
   w = p.w(z);
   const Vec zp = projected(z, nullptr, nullptr);
   const Vec wp = zp == z ? w : p.w(zp);
-  return make_point(z, zp, wp, candidate_units(p, zp), nullptr, nullptr);
+  return make_point(z, wp, candidate_units(p, zp), nullptr, nullptr);
 }
 
 UnitFreePoint unit_free_point(const BoxLcpProblem& p, const Vec& z, Vec& w) {
   w = p.lcp.w(z);
   const Vec zp = projected(z, &p.lower, &p.upper);
   const Vec wp = zp == z ? w : p.lcp.w(zp);
-  return make_point(z, zp, wp, candidate_units(p.lcp, zp), &p.lower, &p.upper);
+  return make_point(z, wp, candidate_units(p.lcp, zp), &p.lower, &p.upper);
 }
 
 Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w) {
