@@ -20,10 +20,10 @@
 #include "run_program.hpp"
 #include "memory_limit.hpp"
 #include "cpkit/core/timer.hpp"
-#include "cpkit/rate_problem/direction_map.hpp"
-#include "cpkit/rate_problem/grid_map.hpp"
-#include "cpkit/rate_problem/map_output.hpp"
-#include "cpkit/rate_problem/map_presets.hpp"
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
+#include "cpkit/rate_problem/maps/map_presets.hpp"
 
 namespace cpkit::cli {
 

@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "cpkit/rate_problem/parameters.hpp"
+#include "cpkit/rate_problem/model/parameters.hpp"
 
 namespace cpkit::cli {
 

@@ -1,5 +1,5 @@
 // `cpkit simulate`: quasi-static fretting simulation with friction, wear and heat
-// (docs/simulation.md; library: cpkit/rate_problem/simulation.hpp).
+// (docs/simulation.md; library: cpkit/rate_problem/simulation/simulation.hpp).
 //
 //   cpkit simulate --config FILE.json [options overriding the file]
 //   cpkit simulate --a11 X --a12 X --a22 X --mu X [--C_T X --k_a X --P_s X --criterion 38|35]
@@ -27,7 +27,7 @@
 #include "cpkit/core/errors.hpp"
 #include "run_program.hpp"
 #include "simulate_config.hpp"
-#include "cpkit/rate_problem/simulation.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <string>
 
-#include "cpkit/rate_problem/load_history.hpp"
+#include "cpkit/rate_problem/simulation/load_history.hpp"
 #include "memory_limit.hpp"
-#include "cpkit/rate_problem/simulation.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::cli {
 

@@ -19,9 +19,9 @@
 #include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/incremental_step.hpp"
-#include "cpkit/rate_problem/step_enumeration.hpp"
-#include "cpkit/rate_problem/step_solve.hpp"
+#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/step_solve.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <thread>
 
-#include "cpkit/rate_problem/grid_map.hpp"
-#include "cpkit/rate_problem/map_presets.hpp"
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_presets.hpp"
 
 using namespace cpkit::rate;
 

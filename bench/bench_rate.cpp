@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/analytic.hpp"
-#include "cpkit/rate_problem/rate_lcp.hpp"
-#include "cpkit/rate_problem/rate_problem.hpp"
+#include "cpkit/rate_problem/one_point/analytic.hpp"
+#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
 
 using namespace cpkit::rate;
 

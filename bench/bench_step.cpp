@@ -20,10 +20,10 @@
 
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/load_history.hpp"
-#include "cpkit/rate_problem/simulation.hpp"
-#include "cpkit/rate_problem/step_enumeration.hpp"
-#include "cpkit/rate_problem/step_solve.hpp"
+#include "cpkit/rate_problem/simulation/load_history.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/step_solve.hpp"
 
 using namespace cpkit::rate;
 

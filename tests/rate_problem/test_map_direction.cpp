@@ -6,7 +6,7 @@
 #include <random>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/direction_map.hpp"
+#include "cpkit/rate_problem/maps/direction_map.hpp"
 
 using namespace cpkit::rate;
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/grid_map.hpp"
-#include "cpkit/rate_problem/map_output.hpp"
-#include "cpkit/rate_problem/map_presets.hpp"
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
+#include "cpkit/rate_problem/maps/map_presets.hpp"
 
 using namespace cpkit::rate;
 

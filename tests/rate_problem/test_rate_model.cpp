@@ -5,9 +5,9 @@
 #include <limits>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/contact_state.hpp"
-#include "cpkit/rate_problem/parameters.hpp"
-#include "cpkit/rate_problem/rate_problem.hpp"
+#include "cpkit/rate_problem/model/contact_state.hpp"
+#include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
 
 using namespace cpkit::rate;
 

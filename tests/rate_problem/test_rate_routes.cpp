@@ -6,9 +6,9 @@
 #include <random>
 
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/analytic.hpp"
-#include "cpkit/rate_problem/rate_lcp.hpp"
-#include "cpkit/rate_problem/rate_problem.hpp"
+#include "cpkit/rate_problem/one_point/analytic.hpp"
+#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
 #include "rate_problem/rate_test_util.hpp"
 
 using namespace cpkit::rate;

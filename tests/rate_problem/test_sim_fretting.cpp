@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/load_history.hpp"
-#include "cpkit/rate_problem/simulation.hpp"
+#include "cpkit/rate_problem/simulation/load_history.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
 
 using namespace cpkit::rate;
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/incremental_step.hpp"
-#include "cpkit/rate_problem/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
 
 using namespace cpkit::rate;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "cpkit/rate_problem/rate_problem.hpp"
-#include "cpkit/rate_problem/step_enumeration.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
 
 using namespace cpkit::rate;
 

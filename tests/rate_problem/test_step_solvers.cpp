@@ -9,8 +9,8 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/step_enumeration.hpp"
-#include "cpkit/rate_problem/step_solve.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/step_solve.hpp"
 
 using namespace cpkit::rate;
 

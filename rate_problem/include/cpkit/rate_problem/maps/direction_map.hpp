@@ -1,0 +1,70 @@
+#pragma once
+/// \file direction_map.hpp
+/// The direction map of the rate problem [Stromberg et al. 1996, Sec. 4.3, Fig. 5]: for one
+/// contact state and parameter set, the solution count and types for every load direction
+/// theta in [0, 2 pi), (dF_T, dF_N) = (cos theta, sin theta).
+///
+/// Method: the candidate critical directions (critical_directions.hpp) are exact; the rate
+/// problem is solved at every candidate direction itself and at the midpoint of every arc
+/// between consecutive candidates (plus the quarter points as a consistency check). A candidate
+/// is reported as critical only when its own solution set (count + types) differs from that of
+/// an adjacent arc; non-critical candidates are dropped and their arcs merged. The rate problem
+/// is positively homogeneous in the load, so each evaluation uses an unnormalised load on which
+/// the vanishing form is exactly zero in floating point.
+#include <vector>
+
+#include "cpkit/rate_problem/model/contact_state.hpp"
+#include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+
+namespace cpkit::rate {
+
+/// Options of the maps (direction and grid maps).
+struct MapOptions {
+  /// Route for the cells: kEnumerate (default) or kAnalytic. With any method other than
+  /// kEnumerate the enumeration route is run as well on every cell and disagreements are counted.
+  RateMethod method = RateMethod::kEnumerate;
+  int threads = 0;  ///< grid maps: worker threads, 0 = std::thread::hardware_concurrency()
+  std::string validate() const;  ///< empty when usable
+};
+
+/// Same count and same types (the `reliable` flag is not compared).
+inline bool same_solution_set(const RateSummary& a, const RateSummary& b) noexcept {
+  return a.count == b.count && a.types == b.types;
+}
+
+/// An open sector of directions: the counter-clockwise arc from theta_from to theta_to.
+/// theta_from is in [0, 2 pi) and theta_to in (theta_from, theta_from + 2 pi], so theta_to > 2 pi
+/// marks the sector that contains theta = 0; a map with no critical direction has the single
+/// sector (0, 2 pi] (covering the whole circle).
+struct DirectionSector {
+  double theta_from = 0, theta_to = 0;
+  RateSummary summary;        ///< at the midpoint, by options.method
+  RateSummary check;          ///< by the enumeration route when cross-checking (else = summary)
+  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
+};
+
+/// A critical direction (the solution set there differs from an adjacent sector).
+struct CriticalDirectionResult {
+  double theta = 0;
+  LoadRate load;                        ///< the exact load used (a form is exactly 0 on it)
+  std::vector<std::string> conditions;  ///< which forms vanish: "N=0", "L+=0", ...
+  RateSummary summary;
+  RateSummary check;
+};
+
+struct DirectionMap {
+  std::vector<DirectionSector> sectors;            ///< sorted by theta_from
+  std::vector<CriticalDirectionResult> critical;   ///< sorted by theta
+  int evaluations = 0;       ///< rate problems solved (per route)
+  int disagreements = 0;     ///< evaluations where the two routes disagree (cross-check only)
+  int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
+  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call (RateSummary)
+  bool cross_checked = false;
+};
+
+/// Computes the direction map. Throws InputError for invalid parameters, state or options.
+DirectionMap compute_direction_map(const ContactParameters& params, const ContactState& state,
+                                   const MapOptions& options = {});
+
+}  // namespace cpkit::rate

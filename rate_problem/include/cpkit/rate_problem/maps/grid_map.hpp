@@ -1,0 +1,139 @@
+#pragma once
+/// \file grid_map.hpp
+/// Grid maps of the rate problem [Stromberg et al. 1996, Sec. 4.3]:
+///  - parameter x direction: one parameter on one axis, the load direction theta on the other;
+///    every cell holds the solution count and types of the rate problem at
+///    (dF_T, dF_N) = (cos theta, sin theta), plus the analytic critical curves
+///    (state b: D_s = a11 - s mu a12 = 0, i.e. a11 = mu |a12|; state d: Lambda = 0, eqn (51))
+///    and, per parameter row, the exact critical directions (direction_map.hpp);
+///  - parameter x parameter: every cell is classified from its exact direction map as unique for
+///    every direction, non-unique for some (but solvable for all), or without solution for some.
+/// Cells are computed on several threads; results are stored by cell index, so the output is
+/// identical for any thread count.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+
+namespace cpkit::rate {
+
+/// A model quantity a map axis can vary.
+enum class MapParameter {
+  kMu,          ///< "mu": friction coefficient
+  kA11,         ///< "a11"
+  kA12,         ///< "a12"
+  kA22,         ///< "a22"
+  kA12OverA11,  ///< "a12/a11": a12 = value * a11 (a11 kept)
+  kCT,          ///< "C_T": tangential compliance
+  kKa,          ///< "k_a": Archard wear coefficient
+  kPs,          ///< "P_s": hardness
+  kPN,          ///< "P_N": normal contact force of state c/d
+  kKappa,       ///< "kappa" = k_a P_N / (3 P_s): sets k_a = 3 P_s kappa / P_N (needs P_N > 0)
+};
+std::string_view to_string(MapParameter p) noexcept;
+std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept;
+/// Comma-separated list of the accepted names (for messages).
+std::string map_parameter_names();
+
+/// Sets `p` to `value` in (params, state). Throws InputError when impossible (kappa with P_N = 0).
+void apply_map_parameter(MapParameter p, double value, ContactParameters& params,
+                         ContactState& state);
+
+/// An axis: n >= 1 values from `from` to `to` inclusive (n = 1: just `from`).
+struct MapAxis {
+  MapParameter param = MapParameter::kMu;
+  double from = 0, to = 1;
+  int n = 100;
+  double value(int i) const noexcept {
+    return n <= 1 ? from : from + (to - from) * static_cast<double>(i) / (n - 1);
+  }
+  std::string validate() const;  ///< empty when usable (finite ends, from < to unless n = 1, n >= 1)
+};
+
+/// A zero of an analytic criterion along a parameter (state b: D_+ / D_-, state d: Lambda).
+struct CriticalValue {
+  std::string name;  ///< "D+=0" (a11 = mu a12), "D-=0" (a11 = -mu a12), "Lambda=0"
+  double x = 0;      ///< value of the first axis parameter
+  double y = 0;      ///< param-param maps: value of the second axis parameter (else 0)
+};
+
+/// A point of a critical-direction curve theta_c(parameter) of a parameter x direction map.
+struct CriticalDirectionPoint {
+  double x = 0, theta = 0;
+  std::string conditions;  ///< "N=0", "L+=0|S=0", ...
+  RateSummary summary;     ///< solution set on the critical direction itself
+};
+
+/// The analytic criteria whose sign decides uniqueness for every direction: state b
+/// {"D+", D_+}, {"D-", D_-}; state d {"Lambda", Lambda(sgn P_T)} of eqn (51), with mu replaced
+/// by mu_eff = mu - 2 kappa for the softening criterion (35) (as in the rate problem); else none.
+struct UniquenessCriterion {
+  std::string name;
+  double value = 0;
+};
+std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& params,
+                                                     const ContactState& state);
+
+/// Progress callback: fraction done in [0, 1]; called from the calling thread only.
+using MapProgress = std::function<void(double fraction)>;
+
+struct ParamDirectionMap {
+  MapAxis axis;
+  int theta_n = 0;
+  std::vector<double> theta;     ///< cell centres (j + 1/2) 2 pi / theta_n
+  std::vector<int8_t> count;     ///< [i * theta_n + j], -1 = infinitely many
+  std::vector<uint8_t> types;    ///< type mask (bit = SolutionType)
+  std::vector<uint8_t> disagree; ///< cross-check: 1 where the routes disagree (empty otherwise)
+  int64_t disagreements = 0;
+  int64_t unreliable = 0;  ///< cells the enumeration flagged as too close to call
+  bool cross_checked = false;
+  std::vector<CriticalValue> critical_values;            ///< analytic curves x = const
+  std::vector<CriticalDirectionPoint> critical_directions;  ///< curves theta_c(x)
+  double seconds = 0;
+  int threads = 1;
+  int64_t cells() const noexcept { return static_cast<int64_t>(count.size()); }
+};
+
+/// Computes a parameter x direction map (rows: axis values; columns: theta_n directions).
+/// Throws InputError for invalid options/axis or a parameter row that is not a valid model.
+ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
+                                              const ContactState& state, const MapAxis& axis,
+                                              int theta_n, const MapOptions& options = {},
+                                              const MapProgress& progress = {});
+
+/// Classes of a parameter x parameter cell.
+enum class UniquenessClass : uint8_t {
+  kUniqueAll = 0,      ///< exactly one solution for every direction
+  kNonUniqueSome = 1,  ///< a solution for every direction, several (or a continuum) for some
+  kNoSolutionSome = 2, ///< some directions have no solution
+};
+std::string_view to_string(UniquenessClass c) noexcept;  ///< "unique", "non-unique", "no-solution"
+
+struct ParamParamMap {
+  MapAxis axis1, axis2;
+  std::vector<uint8_t> cls;       ///< [i * axis2.n + j]
+  std::vector<int8_t> min_count;  ///< over all directions (-1: infinite)
+  std::vector<int8_t> max_count;  ///< over all directions (-1: infinite)
+  std::vector<uint8_t> types;     ///< union of the type masks over all directions
+  std::vector<uint8_t> disagree;  ///< cross-check (empty otherwise)
+  int64_t disagreements = 0;
+  int64_t inconsistent_sectors = 0;
+  int64_t unreliable = 0;  ///< direction-map evaluations flagged as too close to call
+  bool cross_checked = false;
+  std::vector<CriticalValue> critical_curve;  ///< points (x, y) where a criterion is 0
+  double seconds = 0;
+  int threads = 1;
+  int64_t cells() const noexcept { return static_cast<int64_t>(cls.size()); }
+};
+
+/// Computes a parameter x parameter map, each cell from its exact direction map.
+ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
+                                      const MapAxis& axis1, const MapAxis& axis2,
+                                      const MapOptions& options = {},
+                                      const MapProgress& progress = {});
+
+}  // namespace cpkit::rate

@@ -1,0 +1,95 @@
+#pragma once
+/// \file step_enumeration.hpp
+/// All solutions of one incremental step (incremental_step.hpp) by complementary active sets
+/// [Stromberg et al. 1996, Sec. 4; docs/model.md Sec. 3; docs/simulation.md].
+///
+/// A physical solution is determined by (DP_N, xi = Dw_T^i), so the active sets are four pieces:
+/// - P_N1 = 0 (separation/open): P_T1 = 0 fixes xi; admissible when g1 <= 0.
+/// - stick, P_N1 > 0, xi = 0: g1 = 0 is linear in DP_N.
+/// - slip s = +-1, P_N1 > 0, xi = s l, l > 0: the friction row s P_T1 = Y(P_N1) gives
+///   l = (b0 + b1 x + b2 x^2) / det A (x = DP_N, written in increments so that no O(state)
+///   terms cancel), and substituting it into the bilinear gap row g1 = 0 leaves one scalar
+///   polynomial in x: a quadratic for criterion (38) (solved by the cancellation-free
+///   q = -(b + sgn(b) sqrt(disc))/2 form) and a cubic for (35) (real roots in [0, mu/k] by
+///   monotone bracketing between the critical points).
+/// When the reduced polynomial vanishes identically (degenerate data, e.g. a11 = mu |a12| on
+/// N = 0) the piece is a segment or a ray, reported as such. Types are partitioned as in the
+/// rate problem (rate_problem/src/one_point/piece_geometry.hpp): a piece holds the points of its own
+/// type only, so an end of another type (the stick end xi = 0 of a slip segment, or an open
+/// end P_N1 = 0 of a step that started open) is an open end of the piece and is listed as a
+/// point of its own type; point solutions on the closed part of a piece are not listed again. Every candidate is verified by the
+/// NCP residual (StepNcp::residual) and duplicates (the same physical point found by two
+/// pieces) are merged; the first piece in the order above names its type.
+///
+/// Jumps: a solution is continuous (rate-consistent) when it lies on a branch that starts at the
+/// start state as the increment is scaled from 0 to 1: the enumeration is repeated for t DF,
+/// t = 0, 1/128, ..., 1, and each solution is linked to its nearest neighbour at the previous t
+/// (distance |DP_N| + |DP_T| + (det A / D0)|xi|, links only below 0.1 times the force scale).
+/// The other solutions are flagged `jump`. From state d with Lambda < 0 a step can have a jump
+/// (e.g. to separation) where the rate problem has none (continuous_count == 0).
+#include <array>
+#include <string>
+#include <vector>
+
+#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
+
+namespace cpkit::rate {
+
+/// One connected piece of the step's solution set (a point, segment or ray).
+struct StepSolution {
+  SolutionType type = SolutionType::kStick;
+  RateSolution::Kind kind = RateSolution::Kind::kPoint;
+  StepValues start;          ///< the point; a segment's first end; a ray's origin
+  StepValues end;            ///< segment: second end
+  StepValues direction;      ///< ray: direction (unit length in DP_N)
+  bool start_closed = true;  ///< segment/ray: `start` belongs to the piece (same type)
+  bool end_closed = true;    ///< segment: `end` belongs to the piece (same type)
+  double residual = 0;       ///< StepNcp::residual at `start` (worst over the ends)
+  bool jump = false;         ///< not on a branch from the start state (see the file comment)
+};
+
+struct StepSolutionSet {
+  std::vector<StepSolution> solutions;  ///< pieces in the order: separation/open, stick, slip+, slip-
+  bool infinite = false;                ///< a segment or a ray is present
+  int continuous_count = 0;  ///< rate-consistent point solutions (-1 when not determined)
+  /// Number of solutions: -1 when infinite.
+  int count() const noexcept;
+  /// Bit mask of the types present (bit = static_cast<int>(SolutionType)).
+  unsigned type_mask() const noexcept;
+};
+
+struct StepEnumerationOptions {
+  double tol = 1e-9;        ///< acceptance on StepNcp::residual
+  bool detect_jumps = true; ///< follow the branches in t (129 enumerations) to flag jumps
+};
+
+/// All solutions. Throws InputError for an invalid problem (StepProblem::validate).
+StepSolutionSet enumerate_step(const StepProblem& problem,
+                               const StepEnumerationOptions& options = {});
+
+/// Allocation-free core for hot loops (the simulation, benchmarks): point solutions as
+/// (type, DP_N, xi), at most kMaxStepPoints. `infinite` is set when some piece is a continuum
+/// (its points are then not listed: call enumerate_step for the pieces). Inputs must be valid.
+struct StepPoint {
+  SolutionType type = SolutionType::kStick;
+  double DP_N = 0;
+  double xi = 0;
+};
+constexpr int kMaxStepPoints = 8;
+struct StepPoints {
+  std::array<StepPoint, kMaxStepPoints> points;
+  int n = 0;
+  bool infinite = false;
+};
+void enumerate_step_points(const StepProblem& problem, const StepNcp& ncp, StepPoints& out,
+                           double tol = 1e-9) noexcept;
+
+/// Real roots of c2 x^2 + c1 x + c0 without cancellation (q = -(c1 + sgn(c1) sqrt(disc))/2,
+/// roots q/c2 and c0/q); degree drops when |c2| <= deg_tol * scale2 (and likewise c1).
+/// Returns the number of roots (0-2) or -1 when the polynomial vanishes identically.
+/// Exposed for tests.
+int stable_quadratic_roots(double c2, double c1, double c0, double scale2, double scale1,
+                           double scale0, double deg_tol, double roots[2]) noexcept;
+
+}  // namespace cpkit::rate

@@ -1,0 +1,142 @@
+// Direction map: exact critical directions, sectors between them (docs/maps.md).
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/critical_directions.hpp"
+
+namespace cpkit::rate {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+LoadRate at_angle(double theta) noexcept { return {std::cos(theta), std::sin(theta)}; }
+
+/// Evaluates the rate problem by the map's route and, when cross-checking, by enumeration.
+struct Evaluator {
+  const RatePrecomputed& pre;  // once per direction map (validated by precompute_rate_problem)
+  RateMethod method;
+  bool cross;
+  int evaluations = 0;
+  int disagreements = 0;
+  int unreliable = 0;
+
+  RateSummary operator()(const LoadRate& load, RateSummary& check) {
+    const RateSummary s = summarize_rate_problem(pre, load, method);
+    check = cross ? summarize_rate_problem(pre, load, RateMethod::kEnumerate) : s;
+    ++evaluations;
+    if (!s.reliable || !check.reliable) ++unreliable;
+    if (!same_solution_set(s, check)) ++disagreements;
+    return s;
+  }
+};
+
+struct Arc {
+  double from = 0, to = 0;
+  RateSummary summary, check;
+  bool consistent = true;
+};
+}  // namespace
+
+std::string MapOptions::validate() const {
+  if (threads < 0) return "threads must be >= 0 (0: all cores), got " + std::to_string(threads);
+  if (method != RateMethod::kEnumerate && method != RateMethod::kAnalytic)
+    return "method must be 'enumerate' or 'analytic' (maps need every solution), got '" +
+           std::string(to_string(method)) + "'";
+  return {};
+}
+
+DirectionMap compute_direction_map(const ContactParameters& params, const ContactState& state,
+                                   const MapOptions& options) {
+  throw_if_invalid(params.validate(), "parameters");
+  throw_if_invalid(state.validate(params), "contact state");
+  throw_if_invalid(options.validate(), "map options");
+
+  DirectionMap map;
+  map.cross_checked = options.method != RateMethod::kEnumerate;
+  const RatePrecomputed pre = precompute_rate_problem(params, state);
+  Evaluator eval{pre, options.method, map.cross_checked};
+
+  const auto candidates = candidate_critical_directions(params, state);
+  const std::size_t m = candidates.size();
+
+  // Arcs between consecutive candidates (one full-circle arc when there is none).
+  std::vector<Arc> arcs(m == 0 ? 1 : m);
+  for (std::size_t i = 0; i < arcs.size(); ++i) {
+    Arc& a = arcs[i];
+    if (m == 0) {
+      a.from = 0;
+      a.to = kTwoPi;
+    } else {
+      a.from = candidates[i].theta;
+      a.to = i + 1 < m ? candidates[i + 1].theta : candidates[0].theta + kTwoPi;
+    }
+    const double w = a.to - a.from;
+    a.summary = eval(at_angle(a.from + 0.5 * w), a.check);
+    RateSummary c1, c2;
+    const RateSummary q1 = eval(at_angle(a.from + 0.25 * w), c1);
+    const RateSummary q3 = eval(at_angle(a.from + 0.75 * w), c2);
+    a.consistent = same_solution_set(q1, a.summary) && same_solution_set(q3, a.summary) &&
+                   same_solution_set(c1, a.check) && same_solution_set(c2, a.check);
+  }
+  for (const Arc& a : arcs)
+    if (!a.consistent) ++map.inconsistent_sectors;
+
+  // Candidates: critical when the solution set there or on either side differs.
+  std::vector<CriticalDirectionResult> cand(m);
+  std::vector<bool> is_critical(m, false);
+  for (std::size_t i = 0; i < m; ++i) {
+    cand[i].theta = candidates[i].theta;
+    cand[i].load = candidates[i].load;
+    cand[i].conditions = candidates[i].conditions;
+    cand[i].summary = eval(candidates[i].load, cand[i].check);
+    const Arc& before = arcs[(i + m - 1) % m];
+    const Arc& after = arcs[i];
+    is_critical[i] = !same_solution_set(cand[i].summary, before.summary) ||
+                     !same_solution_set(cand[i].summary, after.summary) ||
+                     !same_solution_set(before.summary, after.summary) ||
+                     !same_solution_set(cand[i].check, before.check) ||
+                     !same_solution_set(cand[i].check, after.check);
+  }
+
+  std::vector<std::size_t> crit;
+  for (std::size_t i = 0; i < m; ++i)
+    if (is_critical[i]) crit.push_back(i);
+
+  if (crit.empty()) {
+    DirectionSector s;
+    s.theta_from = 0;
+    s.theta_to = kTwoPi;
+    s.summary = arcs[0].summary;
+    s.check = arcs[0].check;
+    for (const Arc& a : arcs) s.consistent = s.consistent && a.consistent;
+    map.sectors.push_back(s);
+  } else {
+    for (std::size_t k = 0; k < crit.size(); ++k) {
+      const std::size_t i0 = crit[k];
+      const std::size_t i1 = crit[(k + 1) % crit.size()];
+      DirectionSector s;
+      s.theta_from = cand[i0].theta;
+      s.theta_to = cand[i1].theta;
+      if (s.theta_to <= s.theta_from) s.theta_to += kTwoPi;
+      s.summary = arcs[i0].summary;
+      s.check = arcs[i0].check;
+      // All arcs merged into this sector have the same summary (their candidates were not
+      // critical); carry their consistency flags.
+      for (std::size_t i = i0;; i = (i + 1) % m) {
+        s.consistent = s.consistent && arcs[i].consistent;
+        if ((i + 1) % m == i1) break;
+      }
+      map.sectors.push_back(s);
+      map.critical.push_back(cand[i0]);
+    }
+  }
+  map.evaluations = eval.evaluations;
+  map.disagreements = eval.disagreements;
+  map.unreliable = eval.unreliable;
+  return map;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,435 @@
+// Parameter x direction and parameter x parameter maps (docs/maps.md).
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
+
+namespace cpkit::rate {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+struct ParamName {
+  MapParameter p;
+  const char* name;
+};
+constexpr ParamName kParamNames[] = {
+    {MapParameter::kMu, "mu"},     {MapParameter::kA11, "a11"},
+    {MapParameter::kA12, "a12"},   {MapParameter::kA22, "a22"},
+    {MapParameter::kA12OverA11, "a12/a11"}, {MapParameter::kCT, "C_T"},
+    {MapParameter::kKa, "k_a"},    {MapParameter::kPs, "P_s"},
+    {MapParameter::kPN, "P_N"},    {MapParameter::kKappa, "kappa"},
+};
+
+int resolve_threads(int requested, int64_t work_items) {
+  int t = requested;
+  if (t <= 0) t = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (work_items < t) t = static_cast<int>(std::max<int64_t>(1, work_items));
+  return t;
+}
+
+/// Runs fn(row) for every row on `threads` workers (rows handed out one at a time). Results must
+/// be stored by row index by fn, so the outcome does not depend on the thread count. The calling
+/// thread reports progress about every 0.1 s. The first exception of a worker is rethrown.
+template <class RowFn>
+void run_rows(int rows, int threads, RowFn&& fn, const MapProgress& progress) {
+  std::atomic<int> next{0}, done{0};
+  std::mutex mutex;
+  std::condition_variable cv;
+  int active = threads;
+  std::exception_ptr error;
+  auto worker = [&] {
+    try {
+      for (;;) {
+        const int i = next.fetch_add(1);
+        if (i >= rows) break;
+        fn(i);
+        done.fetch_add(1);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+      next.store(rows);
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      --active;
+    }
+    cv.notify_all();
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    while (active > 0) {
+      cv.wait_for(lock, std::chrono::milliseconds(100));
+      if (progress && active > 0) {
+        lock.unlock();
+        progress(static_cast<double>(done.load()) / rows);
+        lock.lock();
+      }
+    }
+  }
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+  if (progress) progress(1.0);
+}
+
+/// (params, state) with the axis parameter set to `x`; validated (message names the value).
+void set_and_validate(const MapAxis& axis, double x, ContactParameters& p, ContactState& st) {
+  apply_map_parameter(axis.param, x, p, st);
+  const std::string where = std::string(to_string(axis.param)) + " = " + std::to_string(x);
+  throw_if_invalid(p.validate(), "map axis " + where + ": parameters");
+  throw_if_invalid(st.validate(p), "map axis " + where + ": contact state");
+}
+
+/// Zeros of the uniqueness criteria along one axis (the other quantities fixed), located by a
+/// sign scan of the closed forms on a fine grid and bisection to machine precision.
+std::vector<std::pair<std::string, double>> criterion_zeros(const ContactParameters& base,
+                                                           const ContactState& base_state,
+                                                           const MapAxis& axis) {
+  std::vector<std::pair<std::string, double>> zeros;
+  if (axis.n <= 1) return zeros;
+  const auto names = uniqueness_criteria(base, base_state);
+  const int scan = std::max(64, 8 * axis.n);
+  auto value = [&](std::size_t k, double x, bool& ok) {
+    ContactParameters p = base;
+    ContactState st = base_state;
+    ok = true;
+    try {
+      apply_map_parameter(axis.param, x, p, st);
+    } catch (const std::exception&) {
+      ok = false;
+      return 0.0;
+    }
+    if (!p.validate().empty() || !st.validate(p).empty()) ok = false;
+    return uniqueness_criteria(p, st)[k].value;
+  };
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    bool ok0 = false;
+    double x0 = axis.from;
+    double f0 = value(k, x0, ok0);
+    if (ok0 && f0 == 0) zeros.emplace_back(names[k].name + "=0", x0);
+    for (int i = 1; i <= scan; ++i) {
+      const double x1 = axis.from + (axis.to - axis.from) * static_cast<double>(i) / scan;
+      bool ok1 = false;
+      const double f1 = value(k, x1, ok1);
+      if (ok0 && ok1) {
+        if (f1 == 0) {
+          zeros.emplace_back(names[k].name + "=0", x1);
+        } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
+          double a = x0, b = x1, fa = f0;
+          for (int it = 0; it < 200; ++it) {
+            const double c = 0.5 * (a + b);
+            if (c <= std::min(a, b) || c >= std::max(a, b)) break;
+            bool okc = false;
+            const double fc = value(k, c, okc);
+            if (!okc || fc == 0) {
+              a = b = c;
+              break;
+            }
+            if ((fc < 0) == (fa < 0)) {
+              a = c;
+              fa = fc;
+            } else {
+              b = c;
+            }
+          }
+          zeros.emplace_back(names[k].name + "=0", 0.5 * (a + b));
+        }
+      }
+      x0 = x1;
+      f0 = f1;
+      ok0 = ok1;
+    }
+  }
+  return zeros;
+}
+
+std::string join_conditions(const std::vector<std::string>& c) {
+  std::string s;
+  for (const auto& x : c) s += (s.empty() ? "" : "|") + x;
+  return s;
+}
+}  // namespace
+
+std::string_view to_string(MapParameter p) noexcept {
+  for (const auto& n : kParamNames)
+    if (n.p == p) return n.name;
+  return "?";
+}
+
+std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept {
+  for (const auto& n : kParamNames)
+    if (s == n.name) return n.p;
+  if (s == "ratio" || s == "a12_a11") return MapParameter::kA12OverA11;
+  if (s == "CT" || s == "C_t") return MapParameter::kCT;
+  if (s == "ka") return MapParameter::kKa;
+  if (s == "Ps") return MapParameter::kPs;
+  if (s == "PN") return MapParameter::kPN;
+  return std::nullopt;
+}
+
+std::string map_parameter_names() {
+  std::string s;
+  for (const auto& n : kParamNames) s += (s.empty() ? "" : ", ") + std::string(n.name);
+  return s;
+}
+
+void apply_map_parameter(MapParameter p, double value, ContactParameters& params,
+                         ContactState& state) {
+  switch (p) {
+    case MapParameter::kMu: params.mu = value; return;
+    case MapParameter::kA11: params.a11 = value; return;
+    case MapParameter::kA12: params.a12 = value; return;
+    case MapParameter::kA22: params.a22 = value; return;
+    case MapParameter::kA12OverA11: params.a12 = value * params.a11; return;
+    case MapParameter::kCT: params.C_T = value; return;
+    case MapParameter::kKa: params.k_a = value; return;
+    case MapParameter::kPs: params.P_s = value; return;
+    case MapParameter::kPN: state.P_N = value; return;
+    case MapParameter::kKappa:
+      if (!(state.P_N > 0))
+        throw InputError("map parameter kappa = k_a P_N / (3 P_s) needs P_N > 0 (state c or d)");
+      params.k_a = 3.0 * params.P_s * value / state.P_N;
+      return;
+  }
+}
+
+std::string MapAxis::validate() const {
+  if (n < 1) return "n must be >= 1, got " + std::to_string(n);
+  if (n > 100000) return "n must be <= 100000, got " + std::to_string(n);
+  if (!std::isfinite(from) || !std::isfinite(to)) return "axis range must be finite";
+  if (n > 1 && !(from < to)) return "axis range needs from < to";
+  return {};
+}
+
+std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& p,
+                                                     const ContactState& state) {
+  std::vector<UniquenessCriterion> c;
+  if (state.label == StateLabel::kB) {
+    c.push_back({"D+", p.a11 - p.mu * p.a12});
+    c.push_back({"D-", p.a11 + p.mu * p.a12});
+  } else if (state.label == StateLabel::kD) {
+    const double s = state.sgn_PT >= 0 ? 1.0 : -1.0;
+    const double kappa = p.kappa(state.P_N);
+    // eqn (51): Lambda = a11 - m s a12 + kappa (s a12 - m a22) - m kappa C_T detA with m = mu
+    // for criterion (38) and m = mu_eff = mu - 2 kappa for the softening criterion (35)
+    // (docs/model.md; the same m as the rate problem's slip equations).
+    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
+    c.push_back({"Lambda", p.a11 - m * s * p.a12 + kappa * (s * p.a12 - m * p.a22) -
+                               m * kappa * p.C_T * p.detA()});
+  }
+  return c;
+}
+
+ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
+                                              const ContactState& state, const MapAxis& axis,
+                                              int theta_n, const MapOptions& options,
+                                              const MapProgress& progress) {
+  throw_if_invalid(options.validate(), "map options");
+  throw_if_invalid(axis.validate(), "map axis " + std::string(to_string(axis.param)));
+  if (theta_n < 1 || theta_n > 1000000)
+    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  const Stopwatch clock;
+
+  // Per-row model data, validated once.
+  std::vector<ContactParameters> row_params(static_cast<std::size_t>(axis.n), params);
+  std::vector<ContactState> row_state(static_cast<std::size_t>(axis.n), state);
+  for (int i = 0; i < axis.n; ++i) set_and_validate(axis, axis.value(i), row_params[i], row_state[i]);
+
+  ParamDirectionMap map;
+  map.axis = axis;
+  map.theta_n = theta_n;
+  map.cross_checked = options.method != RateMethod::kEnumerate;
+  map.theta.resize(static_cast<std::size_t>(theta_n));
+  std::vector<LoadRate> loads(static_cast<std::size_t>(theta_n));
+  for (int j = 0; j < theta_n; ++j) {
+    map.theta[j] = (j + 0.5) * kTwoPi / theta_n;
+    loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
+  }
+  const std::size_t cells = static_cast<std::size_t>(axis.n) * static_cast<std::size_t>(theta_n);
+  map.count.assign(cells, 0);
+  map.types.assign(cells, 0);
+  if (map.cross_checked) map.disagree.assign(cells, 0);
+  std::vector<int64_t> row_disagree(static_cast<std::size_t>(axis.n), 0);
+  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(axis.n), 0);
+  std::vector<std::vector<CriticalDirectionPoint>> row_crit(static_cast<std::size_t>(axis.n));
+
+  map.threads = resolve_threads(options.threads, axis.n);
+  const RateMethod method = options.method;
+  const bool cross = map.cross_checked;
+  auto row = [&](int i) {
+    const ContactParameters& p = row_params[i];
+    const ContactState& st = row_state[i];
+    // Once per row (the row's model is fixed): the state's LCP as a linear function of the load.
+    const RatePrecomputed pre = precompute_rate_problem(p, st);
+    const std::size_t base = static_cast<std::size_t>(i) * static_cast<std::size_t>(theta_n);
+    int8_t* count = map.count.data() + base;
+    uint8_t* types = map.types.data() + base;
+    const LoadRate* load = loads.data();
+    // The cell loop: allocation-free (summarize_rate_problem is).
+    int64_t n_unreliable = 0;
+    if (!cross) {
+      for (int j = 0; j < theta_n; ++j) {
+        const RateSummary s = summarize_rate_problem(pre, load[j], method);
+        count[j] = static_cast<int8_t>(s.count);
+        types[j] = static_cast<uint8_t>(s.types);
+        n_unreliable += !s.reliable;
+      }
+    } else {
+      uint8_t* dis = map.disagree.data() + base;
+      int64_t n_dis = 0;
+      for (int j = 0; j < theta_n; ++j) {
+        const RateSummary s = summarize_rate_problem(pre, load[j], method);
+        const RateSummary e = summarize_rate_problem(pre, load[j], RateMethod::kEnumerate);
+        count[j] = static_cast<int8_t>(s.count);
+        types[j] = static_cast<uint8_t>(s.types);
+        dis[j] = same_solution_set(s, e) ? 0 : 1;
+        n_dis += dis[j];
+        n_unreliable += !s.reliable || !e.reliable;
+      }
+      row_disagree[i] = n_dis;
+    }
+    row_unreliable[i] = n_unreliable;
+    // The exact critical directions of this row (curves theta_c(x) over the map).
+    MapOptions dopt;
+    dopt.method = method;
+    const DirectionMap dm = compute_direction_map(p, st, dopt);
+    for (const auto& c : dm.critical)
+      row_crit[i].push_back({axis.value(i), c.theta, join_conditions(c.conditions), c.summary});
+  };
+  run_rows(axis.n, map.threads, row, progress);
+
+  for (int i = 0; i < axis.n; ++i) {
+    map.disagreements += row_disagree[i];
+    map.unreliable += row_unreliable[i];
+    for (auto& c : row_crit[i]) map.critical_directions.push_back(std::move(c));
+  }
+  for (const auto& z : criterion_zeros(params, state, axis))
+    map.critical_values.push_back({z.first, z.second, 0});
+  map.seconds = clock.seconds();
+  return map;
+}
+
+std::string_view to_string(UniquenessClass c) noexcept {
+  switch (c) {
+    case UniquenessClass::kUniqueAll: return "unique";
+    case UniquenessClass::kNonUniqueSome: return "non-unique";
+    case UniquenessClass::kNoSolutionSome: return "no-solution";
+  }
+  return "?";
+}
+
+ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
+                                      const MapAxis& axis1, const MapAxis& axis2,
+                                      const MapOptions& options, const MapProgress& progress) {
+  throw_if_invalid(options.validate(), "map options");
+  throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
+  throw_if_invalid(axis2.validate(), "map axis " + std::string(to_string(axis2.param)));
+  if (axis1.param == axis2.param)
+    throw InputError("param-param map: the two axes vary the same parameter '" +
+                     std::string(to_string(axis1.param)) + "'");
+  const Stopwatch clock;
+  const int n1 = axis1.n, n2 = axis2.n;
+  // Validate every cell's model before any work (the message names both values).
+  for (int i = 0; i < n1; ++i)
+    for (int j = 0; j < n2; ++j) {
+      ContactParameters p = params;
+      ContactState st = state;
+      apply_map_parameter(axis1.param, axis1.value(i), p, st);
+      set_and_validate(axis2, axis2.value(j), p, st);
+      const std::string where = std::string(to_string(axis1.param)) + " = " +
+                                std::to_string(axis1.value(i)) + ", ";
+      throw_if_invalid(p.validate(), "map cell " + where + "parameters");
+    }
+
+  ParamParamMap map;
+  map.axis1 = axis1;
+  map.axis2 = axis2;
+  map.cross_checked = options.method != RateMethod::kEnumerate;
+  const std::size_t cells = static_cast<std::size_t>(n1) * static_cast<std::size_t>(n2);
+  map.cls.assign(cells, 0);
+  map.min_count.assign(cells, 0);
+  map.max_count.assign(cells, 0);
+  map.types.assign(cells, 0);
+  if (map.cross_checked) map.disagree.assign(cells, 0);
+  std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis),
+      row_unr(row_dis);
+  map.threads = resolve_threads(options.threads, n1);
+
+  auto row = [&](int i) {
+    for (int j = 0; j < n2; ++j) {
+      ContactParameters p = params;
+      ContactState st = state;
+      apply_map_parameter(axis1.param, axis1.value(i), p, st);
+      apply_map_parameter(axis2.param, axis2.value(j), p, st);
+      const DirectionMap dm = compute_direction_map(p, st, options);
+      // Counts over all sectors and critical directions; -1 (a continuum) ranks above all.
+      auto rank = [](int c) { return c < 0 ? 1000 : c; };
+      int lo = 0, hi = 0, lo_rank = 1001, hi_rank = -1;
+      unsigned types = 0;
+      bool none = false, multiple = false;
+      auto visit = [&](const RateSummary& s) {
+        const int r = rank(s.count);
+        if (r < lo_rank) { lo_rank = r; lo = s.count; }
+        if (r > hi_rank) { hi_rank = r; hi = s.count; }
+        types |= s.types;
+        if (s.count == 0) none = true;
+        if (s.count != 0 && s.count != 1) multiple = true;
+      };
+      for (const auto& s : dm.sectors) visit(s.summary);
+      for (const auto& c : dm.critical) visit(c.summary);
+      const std::size_t k = static_cast<std::size_t>(i) * static_cast<std::size_t>(n2) + j;
+      map.cls[k] = static_cast<uint8_t>(none       ? UniquenessClass::kNoSolutionSome
+                                        : multiple ? UniquenessClass::kNonUniqueSome
+                                                   : UniquenessClass::kUniqueAll);
+      map.min_count[k] = static_cast<int8_t>(lo);
+      map.max_count[k] = static_cast<int8_t>(hi);
+      map.types[k] = static_cast<uint8_t>(types);
+      if (map.cross_checked) {
+        map.disagree[k] = dm.disagreements > 0 ? 1 : 0;
+        row_dis[i] += map.disagree[k];
+      }
+      row_inc[i] += dm.inconsistent_sectors;
+      row_unr[i] += dm.unreliable;
+    }
+  };
+  run_rows(n1, map.threads, row, progress);
+  for (int i = 0; i < n1; ++i) {
+    map.disagreements += row_dis[i];
+    map.inconsistent_sectors += row_inc[i];
+    map.unreliable += row_unr[i];
+  }
+
+  // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed).
+  for (int i = 0; i < n1; ++i) {
+    ContactParameters p = params;
+    ContactState st = state;
+    apply_map_parameter(axis1.param, axis1.value(i), p, st);
+    for (const auto& z : criterion_zeros(p, st, axis2))
+      map.critical_curve.push_back({z.first, axis1.value(i), z.second});
+  }
+  for (int j = 0; j < n2; ++j) {
+    ContactParameters p = params;
+    ContactState st = state;
+    apply_map_parameter(axis2.param, axis2.value(j), p, st);
+    for (const auto& z : criterion_zeros(p, st, axis1))
+      map.critical_curve.push_back({z.first, z.second, axis2.value(j)});
+  }
+  map.seconds = clock.seconds();
+  return map;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,264 @@
+// CSV and JSON forms of the maps (docs/maps.md).
+#include "cpkit/rate_problem/maps/map_output.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace cpkit::rate {
+
+namespace {
+constexpr SolutionType kTypes[] = {SolutionType::kOpen, SolutionType::kSeparation,
+                                   SolutionType::kStick, SolutionType::kSlipPlus,
+                                   SolutionType::kSlipMinus};
+
+/// Grid cells: 12 significant digits (the grid values themselves are not exact anyway).
+std::string num(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.12g", x);
+  return buf;
+}
+/// Critical directions and values: round-trip precision.
+std::string num17(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+nlohmann::json axis_json(const MapAxis& a) {
+  return {{"param", std::string(to_string(a.param))}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
+}
+
+/// Per count class: number of cells and the bounding box of their axis values.
+struct ClassBox {
+  int64_t cells = 0;
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  void add(double x, double y) {
+    if (cells == 0) {
+      x_min = x_max = x;
+      y_min = y_max = y;
+    } else {
+      x_min = std::min(x_min, x);
+      x_max = std::max(x_max, x);
+      y_min = std::min(y_min, y);
+      y_max = std::max(y_max, y);
+    }
+    ++cells;
+  }
+};
+
+const std::array<std::string, 32>& type_strings() {
+  static const std::array<std::string, 32> t = [] {
+    std::array<std::string, 32> a;
+    for (unsigned m = 0; m < 32; ++m) a[m] = types_to_string(m);
+    return a;
+  }();
+  return t;
+}
+}  // namespace
+
+std::string count_to_string(int count) { return count < 0 ? "inf" : std::to_string(count); }
+
+nlohmann::json count_to_json(int count) {
+  return count < 0 ? nlohmann::json("inf") : nlohmann::json(count);
+}
+
+std::string types_to_string(unsigned mask) {
+  std::string s;
+  for (const auto t : kTypes)
+    if (mask & (1u << static_cast<unsigned>(t)))
+      s += (s.empty() ? "" : "|") + std::string(to_string(t));
+  return s.empty() ? "none" : s;
+}
+
+nlohmann::json types_to_json(unsigned mask) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto t : kTypes)
+    if (mask & (1u << static_cast<unsigned>(t))) j.push_back(std::string(to_string(t)));
+  return j;
+}
+
+nlohmann::json model_to_json(const ContactParameters& p, const ContactState& s) {
+  nlohmann::json j = {{"a11", p.a11}, {"a12", p.a12}, {"a22", p.a22}, {"mu", p.mu},
+                      {"C_T", p.C_T}, {"k_a", p.k_a}, {"P_s", p.P_s},
+                      {"criterion", std::string(to_string(p.criterion))},
+                      {"state", std::string(to_string(s.label))}, {"P_N", s.P_N},
+                      {"sgnPT", s.sgn_PT}, {"kappa", p.kappa(s.P_N)}};
+  nlohmann::json crit = nlohmann::json::object();
+  for (const auto& c : uniqueness_criteria(p, s)) crit[c.name] = c.value;
+  j["criteria"] = crit;
+  return j;
+}
+
+nlohmann::json to_json(const DirectionMap& map) {
+  nlohmann::json sectors = nlohmann::json::array(), critical = nlohmann::json::array();
+  std::map<int, double> measure;  // count -> total angle
+  for (const auto& s : map.sectors) {
+    nlohmann::json j = {{"theta_from", s.theta_from}, {"theta_to", s.theta_to},
+                        {"count", count_to_json(s.summary.count)},
+                        {"types", types_to_json(s.summary.types)}};
+    if (!s.consistent) j["consistent"] = false;
+    if (map.cross_checked && !same_solution_set(s.check, s.summary))
+      j["enumerate"] = {{"count", count_to_json(s.check.count)},
+                        {"types", types_to_json(s.check.types)}};
+    sectors.push_back(j);
+    measure[s.summary.count] += s.theta_to - s.theta_from;
+  }
+  for (const auto& c : map.critical) {
+    const double r = std::hypot(c.load.dF_T, c.load.dF_N);
+    nlohmann::json j = {{"theta", c.theta},
+                        {"dF_T", c.load.dF_T / r},
+                        {"dF_N", c.load.dF_N / r},
+                        {"conditions", c.conditions},
+                        {"count", count_to_json(c.summary.count)},
+                        {"types", types_to_json(c.summary.types)}};
+    if (map.cross_checked && !same_solution_set(c.check, c.summary))
+      j["enumerate"] = {{"count", count_to_json(c.check.count)},
+                        {"types", types_to_json(c.check.types)}};
+    critical.push_back(j);
+  }
+  nlohmann::json counts = nlohmann::json::object();
+  for (const auto& [c, w] : measure) counts[count_to_string(c)] = {{"radians", w}};
+  return {{"sectors", sectors},
+          {"critical", critical},
+          {"counts", counts},
+          {"evaluations", map.evaluations},
+          {"cross_checked", map.cross_checked},
+          {"disagreements", map.disagreements},
+          {"inconsistent_sectors", map.inconsistent_sectors},
+          {"unreliable", map.unreliable}};
+}
+
+void write_csv(const DirectionMap& map, std::ostream& out) {
+  out << "kind,theta_from,theta_to,count,types,conditions\n";
+  for (const auto& s : map.sectors)
+    out << "sector," << num17(s.theta_from) << ',' << num17(s.theta_to) << ','
+        << count_to_string(s.summary.count) << ',' << types_to_string(s.summary.types) << ",\n";
+  for (const auto& c : map.critical) {
+    std::string cond;
+    for (const auto& x : c.conditions) cond += (cond.empty() ? "" : "|") + x;
+    out << "critical," << num17(c.theta) << ',' << num17(c.theta) << ','
+        << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << ','
+        << cond << '\n';
+  }
+}
+
+nlohmann::json to_json(const ParamDirectionMap& map) {
+  std::map<int, ClassBox> classes;
+  std::map<unsigned, int64_t> combos;
+  for (int i = 0; i < map.axis.n; ++i)
+    for (int j = 0; j < map.theta_n; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i) * map.theta_n + j;
+      classes[map.count[k]].add(map.axis.value(i), map.theta[j]);
+      ++combos[map.types[k]];
+    }
+  nlohmann::json counts = nlohmann::json::object(), cls = nlohmann::json::array(),
+                 types = nlohmann::json::object();
+  for (const auto& [c, b] : classes) {
+    counts[count_to_string(c)] = b.cells;
+    cls.push_back({{"count", count_to_json(c)}, {"cells", b.cells}, {"x_min", b.x_min},
+                   {"x_max", b.x_max}, {"theta_min", b.y_min}, {"theta_max", b.y_max}});
+  }
+  for (const auto& [m, n] : combos) types[types_to_string(m)] = n;
+  nlohmann::json cv = nlohmann::json::array();
+  for (const auto& c : map.critical_values) cv.push_back({{"name", c.name}, {"x", c.x}});
+  return {{"axis", axis_json(map.axis)},
+          {"theta_n", map.theta_n},
+          {"cells", map.cells()},
+          {"counts", counts},
+          {"classes", cls},
+          {"types", types},
+          {"critical_values", cv},
+          {"critical_direction_points", map.critical_directions.size()},
+          {"cross_checked", map.cross_checked},
+          {"disagreements", map.disagreements},
+          {"unreliable", map.unreliable},
+          {"threads", map.threads},
+          {"seconds", map.seconds}};
+}
+
+void write_csv(const ParamDirectionMap& map, std::ostream& out) {
+  const auto& ts = type_strings();
+  out << to_string(map.axis.param) << ",theta,count,types" << (map.cross_checked ? ",disagree" : "")
+      << '\n';
+  std::vector<std::string> theta(map.theta.size());
+  for (std::size_t j = 0; j < theta.size(); ++j) theta[j] = num(map.theta[j]);
+  std::string line;
+  for (int i = 0; i < map.axis.n; ++i) {
+    const std::string x = num(map.axis.value(i));
+    for (int j = 0; j < map.theta_n; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i) * map.theta_n + j;
+      line.clear();
+      line += x;
+      line += ',';
+      line += theta[j];
+      line += ',';
+      line += count_to_string(map.count[k]);
+      line += ',';
+      line += ts[map.types[k] & 31u];
+      if (map.cross_checked) line += map.disagree[k] ? ",1" : ",0";
+      line += '\n';
+      out << line;
+    }
+  }
+}
+
+void write_critical_csv(const ParamDirectionMap& map, std::ostream& out) {
+  out << "curve,x,theta,conditions,count,types\n";
+  for (const auto& c : map.critical_values) out << c.name << ',' << num17(c.x) << ",,,,\n";
+  for (const auto& c : map.critical_directions)
+    out << "direction," << num17(c.x) << ',' << num17(c.theta) << ',' << c.conditions << ','
+        << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << '\n';
+}
+
+nlohmann::json to_json(const ParamParamMap& map) {
+  std::map<int, ClassBox> classes;
+  for (int i = 0; i < map.axis1.n; ++i)
+    for (int j = 0; j < map.axis2.n; ++j)
+      classes[map.cls[static_cast<std::size_t>(i) * map.axis2.n + j]].add(map.axis1.value(i),
+                                                                         map.axis2.value(j));
+  nlohmann::json counts = nlohmann::json::object(), cls = nlohmann::json::array();
+  for (const auto& [c, b] : classes) {
+    const std::string name(to_string(static_cast<UniquenessClass>(c)));
+    counts[name] = b.cells;
+    cls.push_back({{"class", name}, {"cells", b.cells}, {"x_min", b.x_min}, {"x_max", b.x_max},
+                   {"y_min", b.y_min}, {"y_max", b.y_max}});
+  }
+  return {{"axis", axis_json(map.axis1)},
+          {"axis2", axis_json(map.axis2)},
+          {"cells", map.cells()},
+          {"counts", counts},
+          {"classes", cls},
+          {"critical_curve_points", map.critical_curve.size()},
+          {"cross_checked", map.cross_checked},
+          {"disagreements", map.disagreements},
+          {"inconsistent_sectors", map.inconsistent_sectors},
+          {"unreliable", map.unreliable},
+          {"threads", map.threads},
+          {"seconds", map.seconds}};
+}
+
+void write_csv(const ParamParamMap& map, std::ostream& out) {
+  const auto& ts = type_strings();
+  out << to_string(map.axis1.param) << ',' << to_string(map.axis2.param)
+      << ",class,min_count,max_count,types" << (map.cross_checked ? ",disagree" : "") << '\n';
+  for (int i = 0; i < map.axis1.n; ++i)
+    for (int j = 0; j < map.axis2.n; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i) * map.axis2.n + j;
+      out << num(map.axis1.value(i)) << ',' << num(map.axis2.value(j)) << ','
+          << to_string(static_cast<UniquenessClass>(map.cls[k])) << ','
+          << count_to_string(map.min_count[k]) << ',' << count_to_string(map.max_count[k]) << ','
+          << ts[map.types[k] & 31u];
+      if (map.cross_checked) out << (map.disagree[k] ? ",1" : ",0");
+      out << '\n';
+    }
+}
+
+void write_critical_csv(const ParamParamMap& map, std::ostream& out) {
+  out << "curve,x,y\n";
+  for (const auto& c : map.critical_curve) out << c.name << ',' << num17(c.x) << ',' << num17(c.y) << '\n';
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,240 @@
+// The rate problem's entry points: validation, dispatch to the three routes, result assembly.
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/one_point/analytic.hpp"
+#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
+#include "rate_detail.hpp"
+
+namespace cpkit::rate {
+
+std::string_view to_string(RateMethod m) noexcept {
+  switch (m) {
+    case RateMethod::kEnumerate:
+      return "enumerate";
+    case RateMethod::kAnalytic:
+      return "analytic";
+    case RateMethod::kLemke:
+      return "lemke";
+    case RateMethod::kFbNewton:
+      return "fb-newton";
+    case RateMethod::kIpopt:
+      return "ipopt";
+  }
+  return "unknown";
+}
+
+std::optional<RateMethod> rate_method_from_string(std::string_view s) noexcept {
+  if (s == "enumerate") return RateMethod::kEnumerate;
+  if (s == "analytic") return RateMethod::kAnalytic;
+  if (s == "lemke") return RateMethod::kLemke;
+  if (s == "fb-newton") return RateMethod::kFbNewton;
+  if (s == "ipopt") return RateMethod::kIpopt;
+  return std::nullopt;
+}
+
+int RateSolutionSet::count() const noexcept {
+  return infinite ? -1 : static_cast<int>(solutions.size());
+}
+
+unsigned RateSolutionSet::type_mask() const noexcept {
+  unsigned m = 0;
+  for (const auto& s : solutions) m |= 1u << static_cast<unsigned>(s.type);
+  return m;
+}
+
+namespace detail {
+
+void validate_inputs(const ContactParameters& params, const ContactState& state,
+                     const LoadRate& load) {
+  throw_if_invalid(params.validate(), "contact parameters");
+  throw_if_invalid(state.validate(params), "contact state");
+  if (!std::isfinite(load.dF_T) || !std::isfinite(load.dF_N)) {
+    std::ostringstream msg;
+    msg << "load rate: (dF_T, dF_N) = (" << load.dF_T << ", " << load.dF_N << ") is not finite";
+    throw InputError(msg.str());
+  }
+}
+
+void canonicalize(std::vector<RateSolution>& sols) {
+  for (auto& s : sols) {
+    if (s.kind == RateSolution::Kind::kSegment && std::abs(s.end.dw_Ti) < std::abs(s.start.dw_Ti)) {
+      std::swap(s.start, s.end);
+      std::swap(s.start_closed, s.end_closed);
+    }
+  }
+  std::stable_sort(sols.begin(), sols.end(), [](const RateSolution& a, const RateSolution& b) {
+    if (a.type != b.type) return a.type < b.type;
+    if (a.kind != b.kind) return a.kind < b.kind;
+    return a.start.dP_N < b.start.dP_N;
+  });
+}
+
+RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
+                                  const LoadRate& load, const RateSolution* pieces, int n,
+                                  bool infinite, bool complete) {
+  RateSolutionSet out;
+  out.solutions.assign(pieces, pieces + n);
+  canonicalize(out.solutions);
+  out.infinite = infinite;
+  for (const auto& s : out.solutions)
+    if (s.kind != RateSolution::Kind::kPoint) out.infinite = true;
+  out.complete = complete;
+  const RateIndicators ind = rate_indicators(params, state);
+  out.Lambda = ind.Lambda;
+  out.D_plus = ind.D_plus;
+  out.D_minus = ind.D_minus;
+  out.unique_for_all_directions = ind.unique_for_all_directions;
+  out.scale = rate_scale(params, load);
+  return out;
+}
+
+}  // namespace detail
+
+namespace {
+
+const char* single_solver_name(RateMethod m) {
+  switch (m) {
+    case RateMethod::kLemke:
+      return "lemke";
+    case RateMethod::kFbNewton:
+      return "fb-newton";
+    case RateMethod::kIpopt:
+      return "ipopt";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
+RateSolutionSet solve_rate_problem(const ContactParameters& params, const ContactState& state,
+                                   const LoadRate& load, RateMethod method) {
+  RateSolutionSet out;
+  switch (method) {
+    case RateMethod::kEnumerate:
+      out = solve_rate_enumerate(params, state, load);
+      break;
+    case RateMethod::kAnalytic:
+      out = solve_rate_analytic(params, state, load);
+      break;
+    case RateMethod::kLemke:
+    case RateMethod::kFbNewton:
+    case RateMethod::kIpopt:
+      out = solve_rate_single(params, state, load, single_solver_name(method));
+      break;
+  }
+  return out;
+}
+
+RateSummary summarize_rate_problem(const ContactParameters& params, const ContactState& state,
+                                   const LoadRate& load, RateMethod method) noexcept {
+  switch (method) {
+    case RateMethod::kEnumerate:
+      return summarize_rate_enumerate(params, state, load);
+    case RateMethod::kAnalytic:
+      return summarize_rate_analytic(params, state, load);
+    case RateMethod::kLemke:
+    case RateMethod::kFbNewton:
+    case RateMethod::kIpopt:
+      break;
+  }
+  // Single solvers: at most one solution; not allocation-free (they build an LcpProblem).
+  RateSummary sum;
+  try {
+    const RateSolutionSet s = solve_rate_problem(params, state, load, method);
+    sum.count = s.count();
+    sum.types = s.type_mask();
+  } catch (...) {
+    sum.reliable = false;
+  }
+  return sum;
+}
+
+}  // namespace cpkit::rate
+
+namespace cpkit::rate {
+namespace {
+
+bool close_rates(const Rates& x, const Rates& y, const Rates& sc, double tol) noexcept {
+  const double xs[] = {x.dP_T, x.dP_N, x.dw_T, x.dw_N, x.dw_Ti, x.dw_w};
+  const double ys[] = {y.dP_T, y.dP_N, y.dw_T, y.dw_N, y.dw_Ti, y.dw_w};
+  const double ss[] = {sc.dP_T, sc.dP_N, sc.dw_T, sc.dw_N, sc.dw_Ti, sc.dw_w};
+  for (int c = 0; c < 6; ++c) {
+    const double n = std::max({ss[c] > 0 ? ss[c] : 1.0, std::abs(xs[c]), std::abs(ys[c])});
+    if (std::abs(xs[c] - ys[c]) > tol * n) return false;
+  }
+  return true;
+}
+
+bool same_piece(const RateSolution& a, const RateSolution& b, const Rates& sc, double tol) {
+  if (a.type != b.type || a.kind != b.kind) return false;
+  switch (a.kind) {
+    case RateSolution::Kind::kPoint:
+      return close_rates(a.start, b.start, sc, tol);
+    case RateSolution::Kind::kSegment:
+      return (close_rates(a.start, b.start, sc, tol) && close_rates(a.end, b.end, sc, tol) &&
+              a.start_closed == b.start_closed && a.end_closed == b.end_closed) ||
+             (close_rates(a.start, b.end, sc, tol) && close_rates(a.end, b.start, sc, tol) &&
+              a.start_closed == b.end_closed && a.end_closed == b.start_closed);
+    case RateSolution::Kind::kRay: {
+      if (!close_rates(a.start, b.start, sc, tol) || a.start_closed != b.start_closed) return false;
+      // directions agree up to a positive factor: compare normalised by dw_T^i or the largest
+      const double da[] = {a.direction.dP_T, a.direction.dP_N, a.direction.dw_T,
+                           a.direction.dw_N, a.direction.dw_Ti, a.direction.dw_w};
+      const double db[] = {b.direction.dP_T, b.direction.dP_N, b.direction.dw_T,
+                           b.direction.dw_N, b.direction.dw_Ti, b.direction.dw_w};
+      const double ss[] = {sc.dP_T, sc.dP_N, sc.dw_T, sc.dw_N, sc.dw_Ti, sc.dw_w};
+      double na = 0, nb = 0;
+      for (int c = 0; c < 6; ++c) {
+        const double s = ss[c] > 0 ? ss[c] : 1.0;
+        na = std::max(na, std::abs(da[c]) / s);
+        nb = std::max(nb, std::abs(db[c]) / s);
+      }
+      if (!(na > 0) || !(nb > 0)) return false;
+      for (int c = 0; c < 6; ++c) {
+        const double s = ss[c] > 0 ? ss[c] : 1.0;
+        if (std::abs(da[c] / (s * na) - db[c] / (s * nb)) > tol) return false;
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool same_solution_sets(const RateSolutionSet& a, const RateSolutionSet& b, double rel_tol,
+                        std::string* why) {
+  auto fail = [&](const std::string& m) {
+    if (why != nullptr) *why = m;
+    return false;
+  };
+  if (a.count() != b.count())
+    return fail("counts differ: " + std::to_string(a.count()) + " vs " + std::to_string(b.count()));
+  if (a.solutions.size() != b.solutions.size())
+    return fail("number of pieces differs: " + std::to_string(a.solutions.size()) + " vs " +
+                std::to_string(b.solutions.size()));
+  std::vector<bool> used(b.solutions.size(), false);
+  for (const auto& s : a.solutions) {
+    bool found = false;
+    for (std::size_t k = 0; k < b.solutions.size() && !found; ++k) {
+      if (used[k]) continue;
+      if (same_piece(s, b.solutions[k], a.scale, rel_tol)) {
+        used[k] = true;
+        found = true;
+      }
+    }
+    if (!found)
+      return fail(std::string("no match for the ") + std::string(to_string(s.type)) + " " +
+                  std::string(to_string(s.kind)) + " starting at dP_N = " +
+                  std::to_string(s.start.dP_N) + ", dw_T^i = " + std::to_string(s.start.dw_Ti));
+  }
+  return true;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,144 @@
+#include "cpkit/rate_problem/simulation/load_history.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::rate {
+
+std::string LoadHistory::validate() const {
+  if (points.empty()) return "the load history is empty";
+  std::ostringstream msg;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const LoadPoint& p = points[i];
+    if (!std::isfinite(p.t) || !std::isfinite(p.F_T) || !std::isfinite(p.F_N)) {
+      msg << "load point " << i << " (t = " << p.t << ") has a non-finite value";
+      return msg.str();
+    }
+    if (i > 0 && !(p.t > points[i - 1].t)) {
+      msg << "load point " << i << ": t = " << p.t << " does not increase (previous "
+          << points[i - 1].t << ")";
+      return msg.str();
+    }
+  }
+  if (!std::isfinite(period) || period < 0) return "period must be finite and >= 0";
+  if (!std::isfinite(cycle_start)) return "cycle_start must be finite";
+  return {};
+}
+
+LoadHistory parse_load_csv(const std::string& text, const std::string& origin) {
+  LoadHistory h;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  bool header_allowed = true;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    for (char& ch : line)
+      if (ch == ',' || ch == ';' || ch == '\t' || ch == '\r') ch = ' ';
+    std::istringstream ls(line);
+    std::string a, b, c, extra;
+    if (!(ls >> a)) continue;
+    if (!(ls >> b >> c) || (ls >> extra)) {
+      throw InputError(origin + ":" + std::to_string(lineno) +
+                       ": expected three columns t, F_T, F_N");
+    }
+    auto num = [&](const std::string& s, double& v) {
+      try {
+        std::size_t pos = 0;
+        v = std::stod(s, &pos);
+        return pos == s.size();
+      } catch (const std::exception&) {
+        return false;
+      }
+    };
+    LoadPoint p;
+    if (!num(a, p.t) || !num(b, p.F_T) || !num(c, p.F_N)) {
+      if (header_allowed) {
+        header_allowed = false;
+        continue;  // a header line
+      }
+      throw InputError(origin + ":" + std::to_string(lineno) + ": not a number in '" + a + " " +
+                       b + " " + c + "'");
+    }
+    header_allowed = false;
+    h.points.push_back(p);
+  }
+  const std::string m = h.validate();
+  if (!m.empty()) throw InputError(origin + ": " + m);
+  return h;
+}
+
+LoadHistory read_load_csv(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw InputError("cannot open load history '" + path + "'");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return parse_load_csv(ss.str(), path);
+}
+
+std::string FrettingCycle::validate() const {
+  std::ostringstream msg;
+  if (!std::isfinite(F_N) || F_N < 0) msg << "F_N = " << F_N << " must be finite and >= 0";
+  else if (!std::isfinite(amplitude) || amplitude < 0)
+    msg << "amplitude = " << amplitude << " must be finite and >= 0";
+  else if (!std::isfinite(period) || !(period > 0)) msg << "period = " << period << " must be > 0";
+  else if (cycles < 1) msg << "cycles = " << cycles << " must be >= 1";
+  else if (steps_per_cycle < 4) msg << "steps_per_cycle = " << steps_per_cycle << " must be >= 4";
+  else if (ramp_steps < 1) msg << "ramp_steps = " << ramp_steps << " must be >= 1";
+  return msg.str();
+}
+
+LoadHistory fretting_history(const FrettingCycle& c) {
+  throw_if_invalid(c.validate(), "fretting cycle");
+  LoadHistory h;
+  const double dt = c.period / c.steps_per_cycle;
+  h.points.reserve(static_cast<std::size_t>(c.ramp_steps) +
+                   static_cast<std::size_t>(c.cycles) * c.steps_per_cycle);
+  for (int i = 1; i <= c.ramp_steps; ++i)
+    h.points.push_back({i * dt, 0.0, c.F_N * i / c.ramp_steps});
+  const double t_ramp = c.ramp_steps * dt;
+  const double two_pi = 2 * std::acos(-1.0);
+  const long total = static_cast<long>(c.cycles) * c.steps_per_cycle;
+  for (long k = 1; k <= total; ++k) {
+    const double phase = static_cast<double>(k % c.steps_per_cycle) / c.steps_per_cycle;
+    h.points.push_back({t_ramp + k * dt, c.amplitude * std::sin(two_pi * phase), c.F_N});
+  }
+  h.period = c.period;
+  h.cycle_start = t_ramp;
+  return h;
+}
+
+std::string LoadRamp::validate() const {
+  std::ostringstream msg;
+  if (!std::isfinite(F_T0) || !std::isfinite(F_N0) || !std::isfinite(F_T1) ||
+      !std::isfinite(F_N1))
+    msg << "ramp loads must be finite";
+  else if (!std::isfinite(duration) || !(duration > 0))
+    msg << "duration = " << duration << " must be > 0";
+  else if (steps < 1)
+    msg << "steps = " << steps << " must be >= 1";
+  return msg.str();
+}
+
+LoadHistory ramp_history(const LoadRamp& r) {
+  throw_if_invalid(r.validate(), "ramp");
+  LoadHistory h;
+  const double dt = r.duration / r.steps;
+  double t0 = 0;
+  if (r.F_T0 != 0 || r.F_N0 != 0) {
+    h.points.push_back({dt, r.F_T0, r.F_N0});
+    t0 = dt;
+  }
+  for (int i = 1; i <= r.steps; ++i) {
+    const double s = static_cast<double>(i) / r.steps;
+    h.points.push_back({t0 + i * dt, r.F_T0 + s * (r.F_T1 - r.F_T0), r.F_N0 + s * (r.F_N1 - r.F_N0)});
+  }
+  return h;
+}
+
+}  // namespace cpkit::rate

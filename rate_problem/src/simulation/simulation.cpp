@@ -1,0 +1,308 @@
+#include "cpkit/rate_problem/simulation/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+
+namespace cpkit::rate {
+
+std::string_view to_string(BranchRule r) noexcept {
+  switch (r) {
+    case BranchRule::kClosest:
+      return "closest";
+    case BranchRule::kStop:
+      return "stop";
+  }
+  return "unknown";
+}
+
+std::optional<BranchRule> branch_rule_from_string(std::string_view s) noexcept {
+  if (s == "closest") return BranchRule::kClosest;
+  if (s == "stop") return BranchRule::kStop;
+  return std::nullopt;
+}
+
+std::string_view to_string(SimulationResult::Outcome o) noexcept {
+  switch (o) {
+    case SimulationResult::Outcome::kCompleted:
+      return "completed";
+    case SimulationResult::Outcome::kNoSolution:
+      return "no_solution";
+    case SimulationResult::Outcome::kContinuum:
+      return "continuum";
+    case SimulationResult::Outcome::kBranchStop:
+      return "branch_stop";
+    case SimulationResult::Outcome::kNumericalFailure:
+      return "numerical_failure";
+  }
+  return "unknown";
+}
+
+std::string SimulationOptions::validate() const {
+  StepProblem p;
+  p.params = params;
+  p.wear = wear;
+  std::string m = p.validate();
+  if (!m.empty()) return m;
+  m = heat.validate();
+  if (!m.empty()) return "heat: " + m;
+  if (!(tol > 0) || !std::isfinite(tol)) return "tol must be finite and > 0";
+  if (record_every < 0) return "record_every must be >= 0";
+  if (max_branch_records < 0) return "max_branch_records must be >= 0";
+  return {};
+}
+
+StateLabel step_state_label(const ContactParameters& params, double P_T, double P_N,
+                            double g) noexcept {
+  if (P_N <= 0) return g < 0 ? StateLabel::kA : StateLabel::kB;
+  const double kc = params.criterion == Criterion::kSoftening ? params.k() : 0.0;
+  const double Y = params.mu * P_N - kc * P_N * P_N;
+  return std::abs(P_T) >= Y ? StateLabel::kD : StateLabel::kC;
+}
+
+namespace {
+
+/// Running sums of the march (copied into the result at the end).
+struct Sums {
+  double work_abs = 0, wear_integral = 0, total_slip = 0, thermal = 0;
+};
+
+/// The name of the first non-finite quantity of a new state or of the running sums, or null.
+const char* first_non_finite(const SimulationSample& s, const Sums& r) noexcept {
+  struct {
+    const char* name;
+    double v;
+  } const q[] = {{"P_T", s.P_T}, {"P_N", s.P_N}, {"w_T", s.w_T}, {"w_N", s.w_N},
+                 {"w_w", s.w_w}, {"w_Ti", s.w_Ti}, {"g", s.g}, {"the dissipation", s.dissipation},
+                 {"the dissipated energy", s.dissipation_total},
+                 {"the external work", s.work_total}, {"the stored energy", s.stored},
+                 {"the temperature", s.temperature}, {"the work scale", r.work_abs},
+                 {"the wear integral", r.wear_integral}, {"the total slip", r.total_slip},
+                 {"the thermal dissipation", r.thermal}};
+  for (const auto& x : q)
+    if (!std::isfinite(x.v)) return x.name;
+  return nullptr;
+}
+
+std::string describe(const SimulationSample& s) {
+  std::ostringstream o;
+  o.precision(10);
+  o << "t = " << s.t << " (step " << s.step << "), state " << to_string(s.state)
+    << ": P_T = " << s.P_T << ", P_N = " << s.P_N << ", g = " << s.g << ", w_T = " << s.w_T
+    << ", w_N = " << s.w_N << ", w^w = " << s.w_w << ", F = (" << s.F_T << ", " << s.F_N << ")";
+  return o.str();
+}
+
+}  // namespace
+
+SimulationResult simulate(const LoadHistory& history, const SimulationOptions& opt) {
+  throw_if_invalid(opt.validate(), "simulation");
+  throw_if_invalid(history.validate(), "load history");
+  const ContactParameters& a = opt.params;
+  const double detA = a.detA(), D0 = a.D0();
+  const double xi_weight = detA / D0;
+  SimulationResult res;
+  StepProblem sp;
+  sp.params = a;
+  sp.wear = opt.wear;
+  const double cw = sp.wear_coefficient();
+  const double kc = sp.softening();
+
+  // The state: unloaded, grazing (state b), at t = 0.
+  SimulationSample cur;
+  cur.t = 0;
+  cur.temperature = opt.heat.T_initial;
+  cur.state = StateLabel::kB;
+  double T = opt.heat.T_initial;
+  res.max_temperature = T;
+  const std::size_t n = history.points.size();
+  if (opt.record_every > 0) res.series.reserve(n / opt.record_every + 2);
+  if (opt.record_every > 0) res.series.push_back(cur);
+  const bool cycles = history.period > 0;
+  double t_prev = 0;
+  std::size_t first = 0;
+  if (n > 0 && !(history.points.front().t > 0)) {
+    // A leading unloaded point at t <= 0 is the start of the run; any other load needs t > 0.
+    const LoadPoint& p0 = history.points.front();
+    if (p0.F_T != 0 || p0.F_N != 0)
+      throw InputError("load history: the run starts unloaded at t = 0, so the first point "
+                       "needs t > 0 unless it is the unloaded start (F = 0); got t = " +
+                       std::to_string(p0.t));
+    t_prev = p0.t;
+    cur.t = p0.t;
+    if (!res.series.empty()) res.series.front().t = p0.t;
+    first = 1;
+  }
+  double min_D = 0;
+  Sums sums;
+  StepPoints pts;
+  for (std::size_t k = first; k < n; ++k) {
+    const LoadPoint& lp = history.points[k];
+    sp.state.P_T0 = cur.P_T;
+    sp.state.P_N0 = cur.P_N;
+    sp.state.g0 = cur.g;
+    sp.load.dF_T = lp.F_T - cur.F_T;
+    sp.load.dF_N = lp.F_N - cur.F_N;
+    const StepNcp ncp = build_step_ncp_unchecked(sp);
+    enumerate_step_points(sp, ncp, pts, opt.tol);
+    if (pts.n == 0) {
+      std::ostringstream m;
+      m << "stopped before t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N
+        << ")): ";
+      if (pts.infinite) {
+        res.outcome = SimulationResult::Outcome::kContinuum;
+        m << "the step's solutions form a continuum (degenerate data); no rule can choose. ";
+      } else {
+        res.outcome = SimulationResult::Outcome::kNoSolution;
+        m << "the step has no solution (complete active-set enumeration: no separation, stick "
+             "or slip solution satisfies the step NCP). ";
+        if (a.criterion == Criterion::kSoftening && sp.params.k() > 0)
+          m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << a.mu / sp.params.k()
+            << " (condition (46)). ";
+      }
+      m << "Last state: " << describe(cur);
+      res.message = m.str();
+      break;
+    }
+    int best = 0;
+    if (pts.n > 1) {
+      double bd = INFINITY;
+      for (int i = 0; i < pts.n; ++i) {
+        const StepValues v = step_values(sp, pts.points[i].DP_N, pts.points[i].xi);
+        const double d = std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight * std::abs(v.Dw_Ti);
+        if (d < bd) {
+          bd = d;
+          best = i;
+        }
+      }
+      ++res.branch_steps;
+      if (static_cast<int>(res.branch_points.size()) < opt.max_branch_records) {
+        BranchPoint bp;
+        bp.step = res.steps + 1;
+        bp.t = lp.t;
+        bp.count = pts.n;
+        for (int i = 0; i < pts.n; ++i) bp.types |= 1u << static_cast<int>(pts.points[i].type);
+        bp.chosen = pts.points[best].type;
+        res.branch_points.push_back(bp);
+      }
+      if (opt.branch_rule == BranchRule::kStop) {
+        res.outcome = SimulationResult::Outcome::kBranchStop;
+        std::ostringstream m;
+        m << "stopped before t = " << lp.t << ": the step has " << pts.n
+          << " solutions and the branch rule is 'stop'. Last state: " << describe(cur);
+        res.message = m.str();
+        break;
+      }
+    }
+    const StepPoint& chosen = pts.points[best];
+    const StepValues v = step_values(sp, chosen.DP_N, chosen.xi);
+    res.max_residual = std::max(res.max_residual, ncp.residual(step_unknowns(v)));
+    SimulationSample nx = cur;
+    nx.step = res.steps + 1;
+    nx.t = lp.t;
+    nx.F_T = lp.F_T;
+    nx.F_N = lp.F_N;
+    nx.type = chosen.type;
+    nx.count = pts.n;
+    nx.w_T = cur.w_T + v.Dw_T;
+    nx.w_N = cur.w_N + v.Dw_N;
+    nx.w_w = cur.w_w + v.Dw_w;
+    nx.w_Ti = cur.w_Ti + v.Dw_Ti;
+    // Put the state exactly on its active constraints.
+    nx.P_N = v.P_N1;
+    nx.P_T = v.P_T1;
+    nx.g = v.g1;
+    if (nx.P_N <= 0 || chosen.type == SolutionType::kSeparation ||
+        chosen.type == SolutionType::kOpen) {
+      nx.P_N = 0;
+      nx.P_T = 0;
+      nx.g = std::min(v.g1, 0.0);
+    } else {
+      nx.g = 0;
+      const double Y = a.mu * nx.P_N - kc * nx.P_N * nx.P_N;
+      if (chosen.type == SolutionType::kSlipPlus) nx.P_T = Y;
+      if (chosen.type == SolutionType::kSlipMinus) nx.P_T = -Y;
+      nx.P_T = std::clamp(nx.P_T, -Y, Y);
+    }
+    nx.state = step_state_label(a, nx.P_T, nx.P_N, nx.g);
+    // Thermodynamics.
+    const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+    const double D_scale = (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) +
+                           std::abs(v.P_N1 * v.Dw_w);
+    if (D < 0) min_D = std::min(min_D, D / std::max(D_scale, 1e-300));
+    nx.dissipation = D;
+    const double dW = 0.5 * (cur.F_T + lp.F_T) * v.Dw_T + 0.5 * (cur.F_N + lp.F_N) * v.Dw_N;
+    nx.work_total = cur.work_total + dW;
+    nx.dissipation_total = cur.dissipation_total + D;
+    nx.stored = 0.5 * (a.a11 * nx.w_T * nx.w_T + 2 * a.a12 * nx.w_T * nx.w_N +
+                       a.a22 * nx.w_N * nx.w_N) +
+                0.5 * a.C_T * nx.P_T * nx.P_T;
+    // The running sums after this step (committed below once everything is finite).
+    Sums next = sums;
+    next.work_abs += std::abs(dW);
+    next.wear_integral += cw * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
+    next.total_slip += std::abs(v.Dw_Ti);
+    double T_next = T;
+    if (opt.heat.enabled) {
+      const double dt = lp.t - t_prev;
+      next.thermal += thermal_dissipation(opt.heat, T, dt);
+      T_next = heat_step(opt.heat, T, std::max(D, 0.0), dt);
+    }
+    nx.temperature = T_next;
+    if (const char* bad = first_non_finite(nx, next)) {
+      // Data beyond the range of double (e.g. loads near 1e300, whose energies overflow): an
+      // honest stop before this step, never a "completed" run with inf/NaN in its results.
+      res.outcome = SimulationResult::Outcome::kNumericalFailure;
+      std::ostringstream m;
+      m << "stopped before t = " << lp.t << ": " << bad
+        << " would not be finite (the values exceed the range of double; rescale the data). "
+           "Last state: "
+        << describe(cur);
+      res.message = m.str();
+      break;
+    }
+    sums = next;
+    T = T_next;
+    res.max_temperature = std::max(res.max_temperature, T);
+    if (cycles && lp.t > history.cycle_start) {
+      const double tc = 0.5 * (t_prev + lp.t) - history.cycle_start;
+      if (tc >= 0) {
+        const std::size_t c = static_cast<std::size_t>(std::floor(tc / history.period));
+        if (c >= res.slip_per_cycle.size()) {
+          res.slip_per_cycle.resize(c + 1, 0.0);
+          res.wear_per_cycle.resize(c + 1, 0.0);
+        }
+        res.slip_per_cycle[c] += std::abs(v.Dw_Ti);  // <= total_slip: finite
+        res.wear_per_cycle[c] += v.Dw_w;              // <= w_w - w_w(0): finite
+      }
+    }
+    t_prev = lp.t;
+    cur = nx;
+    ++res.steps;
+    if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == n))
+      res.series.push_back(cur);
+  }
+  res.work_abs = sums.work_abs;
+  res.wear_integral = sums.wear_integral;
+  res.total_slip = sums.total_slip;
+  res.thermal_dissipation = sums.thermal;
+  res.final_state = cur;
+  res.wear_depth = cur.w_w;
+  res.external_work = cur.work_total;
+  res.stored_energy = cur.stored;
+  res.dissipation = cur.dissipation_total;
+  res.min_step_dissipation = min_D;
+  res.energy_error = std::abs(res.external_work - res.stored_energy - res.dissipation) /
+                     std::max(res.work_abs, 1e-300);
+  if (res.outcome == SimulationResult::Outcome::kCompleted) {
+    std::ostringstream m;
+    m << "completed " << res.steps << " steps; final " << describe(cur);
+    res.message = m.str();
+  }
+  return res;
+}
+
+}  // namespace cpkit::rate
