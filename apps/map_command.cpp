@@ -17,6 +17,7 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "data_files.hpp"
 #include "run_program.hpp"
 #include "memory_limit.hpp"
 #include "cpkit/core/timer.hpp"
@@ -261,28 +262,18 @@ MapProgress make_progress() {
   };
 }
 
-fs::path plot_script() {
-  const fs::path src = fs::path(CPKIT_PLOT_SCRIPT_DIR) / "cpkit_plot.py";
-  if (fs::exists(src)) return src;
-  return fs::path(CPKIT_INSTALLED_PLOT_SCRIPT_DIR) / "cpkit_plot.py";
-}
-
-std::string python() {
-  if (const char* p = std::getenv("CPKIT_PYTHON")) return p;
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
 /// Runs the plotting script on PREFIX.json; never fails the command (the data is written).
 /// The script gets an argument vector (run_program): the prefix is data, never shell code.
 void run_plot(const std::string& prefix, nlohmann::json& files) {
-  const fs::path script = plot_script();
-  const std::vector<std::string> argv = {python(), script.string(), prefix + ".json"};
-  const std::string cmd = command_text(argv);
-  if (!fs::exists(script)) {
-    std::cerr << "cpkit map: plotting script not found (" << script.string()
+  std::string searched;
+  const std::string script = find_data_file("cpkit_plot.py", &searched);
+  if (script.empty()) {
+    std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
               << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
     return;
   }
+  const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
+  const std::string cmd = command_text(argv);
   const ProgramRun pr = run_program(argv, true);
   const int code = pr.started ? pr.exit_code : -1;
   if (code == 0) {
@@ -290,7 +281,7 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
     files["svg"] = fs::path(prefix + ".svg").filename().string();
     std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
   } else if (code == kPlotNoMatplotlib) {
-    std::cerr << "cpkit map: no picture: matplotlib is not available to " << python()
+    std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
               << ". The data was written (" << prefix << ".csv, " << prefix
               << ".json). To get the picture install matplotlib (Debian: apt-get install "
                  "python3-matplotlib) and run:\n  "

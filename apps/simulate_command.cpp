@@ -25,6 +25,7 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "data_files.hpp"
 #include "run_program.hpp"
 #include "simulate_config.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
@@ -196,14 +197,6 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
   return j;
 }
 
-std::string plot_script() {
-  for (const char* dir : {CPKIT_INSTALLED_PLOT_SCRIPT_DIR, CPKIT_PLOT_SCRIPT_DIR}) {
-    const std::string p = std::string(dir) + "/cpkit_plot_simulation.py";
-    if (std::ifstream(p)) return p;
-  }
-  return {};
-}
-
 int run(const SimArgs& a) {
   Settings s;
   if (!a.config.empty()) read_simulate_config(a.config, s);
@@ -240,12 +233,14 @@ int run(const SimArgs& a) {
                 << r.max_temperature << "\n";
   }
   if (!s.plot.empty()) {
-    const std::string script = plot_script();
+    std::string searched;
+    const std::string script = find_data_file("cpkit_plot_simulation.py", &searched);
     if (script.empty()) {
-      std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found; no figures\n";
+      std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found (looked in "
+                << searched << "); no figures\n";
     } else {
       // An argument vector, never a shell: the paths come from the user or a config file.
-      const std::vector<std::string> argv = {"/usr/bin/python3", script, "--csv", csv,
+      const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
                                              "--summary", summary, "--out", s.plot};
       const ProgramRun pr = run_program(argv, true);
       if (!pr.started || pr.exit_code != 0)
