@@ -208,7 +208,11 @@ int run(const SimArgs& a) {
   const rate::SimulationResult r = rate::simulate(h, s.opt);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
-  if (!csv.empty()) write_csv(csv, r);
+  std::vector<std::string> written;  // named at the end: the user sees what the run produced
+  if (!csv.empty()) {
+    write_csv(csv, r);
+    written.push_back(csv);
+  }
   const nlohmann::json sum = summary_json(r, s);
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
@@ -217,6 +221,7 @@ int run(const SimArgs& a) {
     f << json_text(sum) << '\n';
     f.flush();
     if (!f) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
+    written.push_back(summary);
   }
   if (a.json) {
     print_json(sum);
@@ -232,23 +237,37 @@ int run(const SimArgs& a) {
       std::cout << "  temperature: final " << r.final_state.temperature << ", max "
                 << r.max_temperature << "\n";
   }
+  bool plot_failed = false;
   if (!s.plot.empty()) {
     std::string searched;
     const std::string script = find_data_file("cpkit_plot_simulation.py", &searched);
     if (script.empty()) {
       std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found (looked in "
                 << searched << "); no figures\n";
+      plot_failed = true;
     } else {
+      // Outputs create their folders (the figures may go elsewhere than --csv/--summary).
+      const auto plot_dir = std::filesystem::path(s.plot).parent_path();
+      std::error_code ec;
+      if (!plot_dir.empty()) std::filesystem::create_directories(plot_dir, ec);
+      if (ec) throw InputError("cannot create the folder of --plot '" + s.plot + "': " + ec.message());
       // An argument vector, never a shell: the paths come from the user or a config file.
       const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
                                              "--summary", summary, "--out", s.plot};
       const ProgramRun pr = run_program(argv, true);
-      if (!pr.started || pr.exit_code != 0)
+      if (!pr.started || pr.exit_code != 0) {
         std::cerr << "cpkit simulate: the plot script failed ("
                   << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
                   << "): " << command_text(argv) << "\n";
+        plot_failed = true;
+      } else {
+        for (const char* fig : {"_loop", "_wear", "_state"})
+          for (const char* ext : {".png", ".svg"}) written.push_back(s.plot + fig + ext);
+      }
     }
   }
+  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
+  if (plot_failed) return kExitInternal;  // the figures were asked for and are missing
   return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
 }
 

@@ -134,7 +134,7 @@ void parse_load(const json& v, const std::string& dir, SimulateSettings& s) {
     else if (k == "file") {
       const std::string file = get_str(*p, f);
       if (file.empty()) throw InputError(f + " must not be empty");
-      s.load_csv = file[0] == '/' ? file : dir + "/" + file;
+      s.load_csv = file[0] == '/' ? file : dir + "/" + file;  // as config_path()
     } else {
       throw InputError("unknown key " + f);
     }
@@ -165,14 +165,22 @@ void parse_heat(const json& v, SimulateSettings& s) {
   }
 }
 
-void parse_output(const json& v, SimulateSettings& s) {
+/// A path from the config file: relative ones are relative to the config file's folder, like
+/// load.file (one base for every path in the file; command-line paths use the working directory).
+std::string config_path(const json& v, const std::string& field, const std::string& dir) {
+  const std::string file = get_str(v, field);
+  if (file.empty()) throw InputError(field + " must not be empty");
+  return file[0] == '/' ? file : dir + "/" + file;
+}
+
+void parse_output(const json& v, const std::string& dir, SimulateSettings& s) {
   need_object(v, "output");
   for (auto p = v.begin(); p != v.end(); ++p) {
     const std::string& k = p.key();
     const std::string f = "output." + k;
-    if (k == "csv") s.csv = get_str(*p, f);
-    else if (k == "summary") s.summary = get_str(*p, f);
-    else if (k == "plot") s.plot = get_str(*p, f);
+    if (k == "csv") s.csv = config_path(*p, f, dir);
+    else if (k == "summary") s.summary = config_path(*p, f, dir);
+    else if (k == "plot") s.plot = config_path(*p, f, dir);
     else if (k == "every") s.every = get_int(*p, f, 0, kIntMax);
     else throw InputError("unknown key " + f);
   }
@@ -234,7 +242,7 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
         const auto rule = rate::branch_rule_from_string(r);
         if (!rule) throw InputError("branch_rule must be closest or stop, got " + shown(v));
         s.opt.branch_rule = *rule;
-      } else if (k == "output") parse_output(v, s);
+      } else if (k == "output") parse_output(v, dir, s);
       else if (k == "name" || k == "note") {
         // free text
       } else {
