@@ -1,11 +1,15 @@
 #include "cli_options.hpp"
 
 #include <cerrno>
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
+
+#include "cpkit/core/errors.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -32,22 +36,35 @@ std::string finite_number(const std::string& v) {
   return {};
 }
 
-/// A plain decimal integer (optional sign, digits only) in [lo, hi]; rewritten without leading
-/// zeros so that CLI11's base-0 conversion cannot read it as octal.
+/// A decimal integer in [lo, hi]: plain digits (optional sign), or a decimal number with an
+/// integral value such as `1e7` or `10000000.0` (how scripts and Python's json write counts).
+/// Rewritten as plain digits without leading zeros so that CLI11's base-0 conversion cannot read
+/// it as octal.
 CLI::Validator decimal_integer(long long lo, long long hi) {
   return CLI::Validator(
       [lo, hi](std::string& v) -> std::string {
         if (v.empty()) return "an empty value is not allowed";
+        const std::string range =
+            "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
         std::size_t i = (v[0] == '+' || v[0] == '-') ? 1 : 0;
         if (i == v.size()) return "'" + v + "' is not an integer";
-        for (std::size_t k = i; k < v.size(); ++k)
-          if (v[k] < '0' || v[k] > '9') return "'" + v + "' is not an integer";
-        errno = 0;
-        const long long x = std::strtoll(v.c_str(), nullptr, 10);
-        if (errno == ERANGE || x < lo || x > hi)
-          return "'" + v + "' is out of range [" + std::to_string(lo) + ", " +
-                 std::to_string(hi) + "]";
-        v = std::to_string(x);
+        bool digits = true;
+        for (std::size_t k = i; k < v.size(); ++k) digits &= v[k] >= '0' && v[k] <= '9';
+        if (digits) {
+          errno = 0;
+          const long long x = std::strtoll(v.c_str(), nullptr, 10);
+          if (errno == ERANGE || x < lo || x > hi)
+            return "'" + v + "' is out of range " + range;
+          v = std::to_string(x);
+          return {};
+        }
+        if (!finite_number(v).empty()) return "'" + v + "' is not an integer";
+        const double d = std::strtod(v.c_str(), nullptr);
+        if (d != std::floor(d)) return "'" + v + "' is not an integer";
+        // Compared as doubles: lo and hi (int limits) are exact in double.
+        if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
+          return "'" + v + "' is out of range " + range;
+        v = std::to_string(static_cast<long long>(d));
         return {};
       },
       "", "decimal integer");
@@ -72,8 +89,86 @@ void check_options_of(CLI::App& app) {
     check_options_of(*sub);
 }
 
+bool is_long_option(const std::string& t) { return t.size() > 2 && t[0] == '-' && t[1] == '-'; }
+
+std::string subcommand_names(const CLI::App& app) {
+  std::string out;
+  for (const CLI::App* sub : app.get_subcommands({}))
+    out += (out.empty() ? "" : ", ") + sub->get_name();
+  return out;
+}
+
+std::string command_path(const CLI::App* app) {
+  std::string path;
+  for (; app->get_parent() != nullptr; app = app->get_parent()) path = " " + app->get_name() + path;
+  return "cpkit" + path;
+}
+
 }  // namespace
 
 void check_all_option_values(CLI::App& app) { check_options_of(app); }
+
+std::string in_option_words(std::string message,
+                            const std::vector<std::pair<std::string, std::string>>& field_to_option) {
+  auto table = field_to_option;
+  std::sort(table.begin(), table.end(),
+            [](const auto& x, const auto& y) { return x.first.size() > y.first.size(); });
+  auto word_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '-';
+  };
+  for (const auto& [field, option] : table) {
+    for (std::size_t at = message.find(field); at != std::string::npos;
+         at = message.find(field, at)) {
+      const std::size_t end = at + field.size();
+      const bool whole = (at == 0 || !word_char(message[at - 1])) &&
+                         (end == message.size() || !word_char(message[end]));
+      if (whole) {
+        message.replace(at, field.size(), option);
+        at += option.size();
+      } else {
+        at = end;
+      }
+    }
+  }
+  return message;
+}
+
+void throw_if_invalid_option(const std::string& message,
+                             const std::vector<std::pair<std::string, std::string>>& field_to_option) {
+  if (!message.empty()) throw InputError(in_option_words(message, field_to_option));
+}
+
+std::string check_command_words(const CLI::App& app, const std::vector<std::string>& args) {
+  const CLI::App* cur = &app;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string& t = args[k];
+    if (t == "--") break;  // the rest are values
+    if (is_long_option(t)) {
+      const std::string name = t.substr(0, t.find('='));
+      bool known = false;
+      for (const CLI::App* a = cur; a != nullptr && !known; a = a->get_parent())
+        known = a->get_option_no_throw(name) != nullptr || (a == cur && name == "--help");
+      if (!known)
+        return "unknown option " + name + " for '" + command_path(cur) + "' (see '" +
+               command_path(cur) + " --help')";
+      continue;
+    }
+    if (t.empty() || t[0] == '-') continue;  // a short option or a negative number
+    const bool has_subcommands = !cur->get_subcommands({}).empty();
+    if (!has_subcommands) continue;  // a value or a positional argument
+    const CLI::App* sub = nullptr;
+    for (const CLI::App* c : cur->get_subcommands({}))
+      if (c->check_name(t)) sub = c;
+    if (sub == nullptr) {
+      // A value of the previous option (cpkit --version takes none; subcommand-level options
+      // come after the subcommand), so a bare word here is a subcommand name.
+      if (k > 0 && is_long_option(args[k - 1])) continue;
+      return "unknown subcommand '" + t + "' for '" + command_path(cur) + "' (valid: " +
+             subcommand_names(*cur) + ")";
+    }
+    cur = sub;
+  }
+  return {};
+}
 
 }  // namespace cpkit::cli

@@ -3,6 +3,9 @@
 // line"). CLI11 on its own takes an empty value as 0, accepts "nan", "inf" and out-of-range
 // floating-point text (strtold gives +-inf), and reads integers with base prefixes ("010" is 8).
 #include <CLI/CLI.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace cpkit::cli {
 
@@ -12,5 +15,22 @@ namespace cpkit::cli {
 /// plain decimal integer that fits the option's type. A violation is a CLI11 ValidationError
 /// naming the option (exit 2).
 void check_all_option_values(CLI::App& app);
+
+/// Checks the words of a command line (argv without the program name) before CLI11 parses it,
+/// so that the first message is about what the user actually got wrong: an unknown subcommand
+/// (`cpkit foo`: "unknown subcommand 'foo' for 'cpkit' (valid: lcp, map, ...)") or an unknown
+/// long option (`cpkit step --bogus`: "unknown option --bogus for 'cpkit step'", not "--a11 is
+/// required"). Empty when fine.
+/// A library validation message in the user's words: every whole-word occurrence of a C++ field
+/// name (`EnumerationOptions::max_size`, `time_limit_s`) is replaced by its command-line option
+/// (`--max-size`, `--time-limit`); longer names are replaced first.
+std::string in_option_words(std::string message,
+                            const std::vector<std::pair<std::string, std::string>>& field_to_option);
+
+/// Throws cpkit::InputError with in_option_words(message) when `message` is not empty.
+void throw_if_invalid_option(const std::string& message,
+                             const std::vector<std::pair<std::string, std::string>>& field_to_option);
+
+std::string check_command_words(const CLI::App& app, const std::vector<std::string>& args);
 
 }  // namespace cpkit::cli

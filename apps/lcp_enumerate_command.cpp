@@ -15,6 +15,7 @@
 #include <string>
 
 #include "cli_common.hpp"
+#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/core/report.hpp"
@@ -114,7 +115,9 @@ int run_lcp_enumerate(const LcpEnumerateArgs& a) {
   opt.tol = a.tol;
   opt.time_limit_s = a.time_limit_s;
   opt.max_size = a.max_size;
-  throw_if_invalid(opt.validate(), "options");
+  throw_if_invalid_option(opt.validate(), {{"EnumerationOptions::max_size", "--max-size"},
+                                           {"EnumerationOptions::tol", "--tol"},
+                                           {"EnumerationOptions::time_limit_s", "--time-limit"}});
   const lcp::SolutionSet s = lcp::enumerate_all(problem, opt);  // InputError above the limit
   if (a.json)
     print_json(set_json(s, problem));

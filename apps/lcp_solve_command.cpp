@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/core/options.hpp"
@@ -69,7 +70,9 @@ CommonOptions common_options(const LcpSolveArgs& a) {
   o.max_iterations = a.max_iter;
   o.time_limit_s = a.time_limit_s;
   o.record_trace = a.trace;
-  throw_if_invalid(o.validate(), "options");
+  throw_if_invalid_option(o.validate(), {{"tol", "--tol"},
+                                         {"max_iterations", "--max-iter"},
+                                         {"time_limit_s", "--time-limit"}});
   return o;
 }
 
@@ -118,7 +121,8 @@ std::string result_text(const SolveResult& r, const LcpProblem& problem) {
 int exit_code_of(const SolveResult& r) { return is_solution(r.status) ? kExitOk : kExitNoSolution; }
 
 /// --all-solvers: runs every registered solver that accepts the problem and prints the
-/// outcomes side by side (a JSON array of result objects, or a text table). Exit code 0 when at
+/// outcomes side by side (JSON: one object whose `results` holds one result object per solver;
+/// or a text table). Exit code 0 when at
 /// least one solver returned a verified solution, else 1.
 int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
                         const CommonOptions& options) {
@@ -132,13 +136,19 @@ int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
   bool any = false;
   for (const auto& r : results) any |= is_solution(r.status);
   if (a.json) {
+    // One object, like every --json output: the problem, then one result per solver.
     nlohmann::json arr = nlohmann::json::array();
     for (std::size_t k = 0; k < results.size(); ++k) {
       nlohmann::json j = result_json(results[k], problem);
       j["entry"] = names[k];  // the registry entry run ("solver" is who produced z)
       arr.push_back(j);
     }
-    print_json(arr);
+    nlohmann::json out;
+    if (!problem.name.empty()) out["problem"] = problem.name;
+    out["n"] = problem.size();
+    out["solved_by_any"] = any;
+    out["results"] = arr;
+    print_json(out);
   } else {
     std::ostringstream s;
     if (!problem.name.empty()) s << "problem: " << problem.name << " (n = " << problem.size() << ")\n";
@@ -184,7 +194,7 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
                   "FILE.q.mtx beside it or given by --q")
       ->required();
   cmd->add_option("--q", args->q_file, "Matrix Market file holding q, for a Matrix Market M");
-  cmd->add_option("--solver", args->solver,
+  CLI::Option* solver_opt = cmd->add_option("--solver", args->solver,
                   "solver name from the registry (default lemke; valid: " + lcp_solver_list() +
                       ")");
   cmd->add_flag("--json", args->json, "print one JSON object on stdout");
@@ -195,8 +205,9 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
   cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");
   cmd->add_flag("--trace", args->trace, "record and print the per-iteration (pivot) trace");
   cmd->add_flag("--all-solvers", args->all_solvers,
-                "run every registered solver and print the outcomes side by side (JSON: an "
-                "array of result objects)");
+                "run every registered solver and print the outcomes side by side (JSON: one "
+                "object, its `results` one object per solver)")
+      ->excludes(solver_opt);  // --solver would have no effect: an error, not silence
   cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_solve(*args); });
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
@@ -129,7 +130,8 @@ int run_lcp_verify(const LcpVerifyArgs& a) {
   opt.skip = a.skip;
   opt.solve.time_limit_s = a.time_limit_s;
   opt.enumeration.time_limit_s = a.time_limit_s;
-  throw_if_invalid(opt.validate(), "options");
+  throw_if_invalid_option(opt.validate(), {{"EnumerationOptions::time_limit_s", "--time-limit"},
+                                           {"time_limit_s", "--time-limit"}});
   const lcp::CrossVerifyReport rep = lcp::cross_verify(problem, opt);
   if (a.json)
     print_json(report_json(rep, problem));

@@ -1,6 +1,8 @@
 // cpkit: the command-line program. Thin: parse, call the library, print.
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "cli_options.hpp"
@@ -19,6 +21,11 @@ int main(int argc, char** argv) {
   add_simulate_command(app, ctx);
   check_all_option_values(app);  // no empty, non-finite or malformed numbers (cli_options.hpp)
   try {
+    const std::string wrong = check_command_words(app, std::vector<std::string>(argv + 1, argv + argc));
+    if (!wrong.empty()) {
+      std::cerr << "cpkit: " << wrong << '\n';
+      return kExitBadInput;
+    }
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

@@ -201,6 +201,17 @@ int run(const SimArgs& a) {
   Settings s;
   if (!a.config.empty()) read_simulate_config(a.config, s);
   apply_args(a, s);
+  // Wear options that would have no effect are errors (from the command line or the config).
+  const bool mroz = s.opt.wear.law == rate::WearLaw::kMrozStupkiewicz;
+  if (!mroz && s.opt.wear.k_M != 0)
+    throw InputError("k_M (--k_M, wear.k_M) is the Mroz-Stupkiewicz wear constant: it needs the "
+                     "wear law mroz (--wear-law mroz, wear.law)");
+  if (mroz && s.opt.wear.k_M == 0)
+    throw InputError("the wear law mroz needs k_M > 0 (--k_M, wear.k_M); for no wear use the "
+                     "default law archard with k_a = 0");
+  if (mroz && s.opt.params.k_a != 0)
+    throw InputError("k_a (--k_a, parameters.k_a) has no effect with the wear law mroz: its wear "
+                     "constant is k_M");
   // Everything is checked (model, load, sizes) before the history is allocated.
   validate_simulate_settings(s);
   s.opt.record_every = s.every;

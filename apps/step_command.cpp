@@ -205,7 +205,18 @@ void add_step_command(CLI::App& app, Context& ctx) {
                   "solver chain for one solution (comma-separated; default "
                   "active-set,lemke,fb-newton,ipopt)");
   cmd->add_flag("--json", args->json, "print one JSON object");
-  cmd->callback([args, &ctx]() {
+  cmd->callback([args, &ctx, cmd]() {
+    // Options that would have no effect in this context are errors, never silence.
+    const bool mroz = args->wear_law == "mroz";
+    if (cmd->count("--k_M") > 0 && !mroz)
+      throw InputError("--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
+    if (mroz && cmd->count("--k_M") == 0)
+      throw InputError("--wear-law mroz needs --k_M (the Mroz-Stupkiewicz wear constant)");
+    if (mroz && cmd->count("--k_a") > 0)
+      throw InputError("--k_a (Archard) has no effect with --wear-law mroz: give --k_M instead");
+    if (args->all && cmd->count("--chain") > 0)
+      throw InputError("--chain has no effect with --all (every solution comes from the complete "
+                       "active-set enumeration)");
     const rate::StepProblem p = make_problem(*args);
     ctx.exit_code = args->all ? run_all(p, args->json) : run_one(p, args->chain, args->json);
   });

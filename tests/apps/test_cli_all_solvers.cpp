@@ -65,10 +65,14 @@ TEST_CASE("cpkit lcp solve --solver ipopt|nlopt|auto on battle_of_the_sexes", "[
 }
 
 TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli][mpcc]") {
-  SECTION("JSON array, one object per registered solver") {
+  SECTION("JSON: one object, its results one object per registered solver") {
     const Run r = run_cli("lcp solve '" + path("battle_of_the_sexes") + "' --all-solvers --json");
     CHECK(r.code == 0);
-    const auto arr = nlohmann::json::parse(r.out);
+    const auto out = nlohmann::json::parse(r.out);
+    REQUIRE(out.is_object());  // README: "With --json, stdout is one JSON object"
+    CHECK(out.at("n") == 4);
+    CHECK(out.at("solved_by_any") == true);
+    const auto& arr = out.at("results");
     REQUIRE(arr.is_array());
     std::vector<std::string> entries;
     for (const auto& o : arr) {
@@ -82,12 +86,20 @@ TEST_CASE("cpkit lcp solve --all-solvers lists every solver side by side", "[cli
     const Run r = run_cli("lcp solve '" + path("pang_isolated_perturbed") +
                         "' --all-solvers --json");
     CHECK(r.code == 1);
-    const auto arr = nlohmann::json::parse(r.out);
-    for (const auto& o : arr) {
+    const auto out = nlohmann::json::parse(r.out);
+    CHECK(out.at("solved_by_any") == false);
+    for (const auto& o : out.at("results")) {
       CAPTURE(o.at("entry"));
       CHECK(o.at("status") != "solved");
       CHECK(o.at("status") != "solved_inaccurate");
     }
+  }
+  SECTION("--solver with --all-solvers would have no effect: bad input naming both") {
+    const Run r = run_cli("lcp solve '" + path("deudeu") + "' --all-solvers --solver ipopt");
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("--all-solvers") != std::string::npos);
+    CHECK(r.err.find("--solver") != std::string::npos);
   }
   SECTION("text table") {
     const Run r = run_cli("lcp solve '" + path("deudeu") + "' --all-solvers");
