@@ -94,6 +94,39 @@ struct MapSetup {
   int theta_n = 360;
 };
 
+/// Options that would have no effect are errors (never hidden defaults, never silence).
+void check_options_have_effect(const MapArgs& a, const MapSetup& s) {
+  auto on_axis = [&](const std::string& name) {
+    return (a.given("--param") && (a.param == name || (name == "a12" && a.param == "a12/a11"))) ||
+           (a.given("--param2") && (a.param2 == name || (name == "a12" && a.param2 == "a12/a11")));
+  };
+  if (a.preset.empty()) {
+    std::string missing;
+    for (const char* o : {"--a11", "--a12", "--a22", "--mu"})
+      if (!a.given(o) && !on_axis(o + 2)) missing += (missing.empty() ? "" : " ") + std::string(o);
+    if (!missing.empty())
+      throw InputError("cpkit map needs a model: --preset NAME (--list-presets shows them) or "
+                       "--a11 --a12 --a22 --mu (missing: " + missing + ")");
+  }
+  auto none_of = [&](std::initializer_list<const char*> opts, const std::string& why) {
+    for (const char* o : opts)
+      if (a.given(o)) throw InputError(std::string(o) + " has no effect " + why);
+  };
+  if (s.kind == MapKind::kDirection)
+    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2"},
+            "in a direction map (it has no parameter axis; use --kind param-direction or "
+            "param-param)");
+  if (s.kind == MapKind::kParamDirection)
+    none_of({"--param2", "--from2", "--to2", "--n2"},
+            "in a param-direction map (one parameter axis; use --kind param-param)");
+  const StateLabel st = s.state.label;
+  if (st == StateLabel::kA || st == StateLabel::kB)
+    none_of({"--P_N", "--k_a", "--P_s"},
+            std::string("in state ") + std::string(to_string(st)) +
+                " (P_N = 0 there: the normal force and wear enter only states c and d)");
+  if (st != StateLabel::kD) none_of({"--sgnPT"}, "outside state d (the sliding state)");
+}
+
 MapSetup build_setup(const MapArgs& a) {
   MapSetup s;
   if (!a.preset.empty()) {
@@ -146,6 +179,7 @@ MapSetup build_setup(const MapArgs& a) {
     if (a.sgnPT != 1 && a.sgnPT != -1) throw InputError("--sgnPT must be +1 or -1");
     s.state.sgn_PT = a.sgnPT;
   }
+  check_options_have_effect(a, s);
   throw_if_invalid(s.params.validate(), "model parameters");
   throw_if_invalid(s.state.validate(s.params), "contact state");
 
@@ -316,8 +350,10 @@ void print_direction_text(const DirectionMap& m) {
   }
   for (const auto& s : m.sectors)
     if (s.summary.count != 1)
-      std::cout << "summary: " << count_text(s.summary.count) << " for theta in [" << std::fixed
-                << std::setprecision(2) << s.theta_from << ", " << s.theta_to << "]"
+      // An open interval: the sectors are open arcs, their end directions are critical and
+      // have their own counts (listed above).
+      std::cout << "summary: " << count_text(s.summary.count) << " for theta in (" << std::fixed
+                << std::setprecision(2) << s.theta_from << ", " << s.theta_to << ")"
                 << std::defaultfloat << '\n';
   for (const auto& c : m.critical)
     if (c.summary.count <= 0)

@@ -12,7 +12,7 @@ PREFIX.png and PREFIX.svg:
                    the combination of solution types (right), with the analytic critical values
                    (a11 = mu|a12| in state b, Lambda = 0 in state d) and the exact critical
                    directions drawn over it;
-  param-param      unique / non-unique / no-solution classes with the analytic critical curve.
+  param-param      unique / non-unique / no-solution / none-and-several classes with the analytic critical curve.
 Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
 Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
@@ -30,10 +30,12 @@ TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
                 "slip-": "#c44e52", "open": "#8172b3"}
 COUNT_COLOURS = {"0": "#d62728", "1": "#e8e8e8", "2": "#f2b134", "3": "#1f77b4",
                  "4": "#9467bd", "inf": "#000000"}
-CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": "#d62728"}
+CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": "#d62728",
+                 "none-and-several": "#8c2d8c"}
 CLASS_LABELS = {"unique": "unique for every direction",
                 "non-unique": "several solutions for some directions",
-                "no-solution": "no solution for some directions"}
+                "no-solution": "no solution for some directions, one for the others",
+                "none-and-several": "no solution for some directions, several for others"}
 
 
 def fail(msg, code=EXIT_BAD_INPUT):
@@ -230,7 +232,7 @@ def plot_param_param(summary, base, plt):
     n1, n2 = a1["n"], a2["n"]
     if len(rows) != n1 * n2:
         fail("CSV has %d cells, the summary says %d" % (len(rows), n1 * n2))
-    classes = ["unique", "non-unique", "no-solution"]
+    classes = ["unique", "non-unique", "no-solution", "none-and-several"]
     cls = np.array([classes.index(r[2]) for r in rows]).reshape(n1, n2).T
     xs = np.array([float(rows[i * n2][0]) for i in range(n1)])
     ys = np.array([float(rows[j][1]) for j in range(n2)])
@@ -242,7 +244,7 @@ def plot_param_param(summary, base, plt):
         return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
     fig, ax = plt.subplots(figsize=(7.5, 6))
     ax.pcolormesh(edges(xs), edges(ys), cls, cmap=ListedColormap([CLASS_COLOURS[c] for c in classes]),
-                  norm=BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3), shading="flat", rasterized=True)
+                  norm=BoundaryNorm([k - 0.5 for k in range(len(classes) + 1)], len(classes)), shading="flat", rasterized=True)
     handles = [Patch(facecolor=CLASS_COLOURS[c], edgecolor="#999999", label=CLASS_LABELS[c])
                for c in classes if (cls == classes.index(c)).any()]
     if "critical_csv" in summary.get("files", {}):

@@ -122,7 +122,8 @@ TEST_CASE("ParamParamClassesFollowTheSignOfLambda", "[map][grid]") {
       if (std::abs(L) < 1e-9) continue;
       CAPTURE(a1.value(i), a2.value(j), L);
       const auto c = static_cast<UniquenessClass>(m.cls[static_cast<std::size_t>(i) * a2.n + j]);
-      CHECK(c == (L > 0 ? UniquenessClass::kUniqueAll : UniquenessClass::kNoSolutionSome));
+      // Lambda < 0 (paper, after eqn (51)): two solutions for L_s < 0, none for L_s > 0.
+      CHECK(c == (L > 0 ? UniquenessClass::kUniqueAll : UniquenessClass::kNoneAndSeveral));
     }
   // Critical-curve points satisfy Lambda = 0.
   REQUIRE(!m.critical_curve.empty());

@@ -328,6 +328,7 @@ std::string_view to_string(UniquenessClass c) noexcept {
     case UniquenessClass::kUniqueAll: return "unique";
     case UniquenessClass::kNonUniqueSome: return "non-unique";
     case UniquenessClass::kNoSolutionSome: return "no-solution";
+    case UniquenessClass::kNoneAndSeveral: return "none-and-several";
   }
   return "?";
 }
@@ -392,9 +393,11 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
       for (const auto& s : dm.sectors) visit(s.summary);
       for (const auto& c : dm.critical) visit(c.summary);
       const std::size_t k = static_cast<std::size_t>(i) * static_cast<std::size_t>(n2) + j;
-      map.cls[k] = static_cast<uint8_t>(none       ? UniquenessClass::kNoSolutionSome
-                                        : multiple ? UniquenessClass::kNonUniqueSome
-                                                   : UniquenessClass::kUniqueAll);
+      // "no solution for some directions" must not hide that others have several.
+      map.cls[k] = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
+                                        : none           ? UniquenessClass::kNoSolutionSome
+                                        : multiple       ? UniquenessClass::kNonUniqueSome
+                                                         : UniquenessClass::kUniqueAll);
       map.min_count[k] = static_cast<int8_t>(lo);
       map.max_count[k] = static_cast<int8_t>(hi);
       map.types[k] = static_cast<uint8_t>(types);

@@ -109,9 +109,11 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
 enum class UniquenessClass : uint8_t {
   kUniqueAll = 0,      ///< exactly one solution for every direction
   kNonUniqueSome = 1,  ///< a solution for every direction, several (or a continuum) for some
-  kNoSolutionSome = 2, ///< some directions have no solution
+  kNoSolutionSome = 2, ///< some directions have no solution, every other direction exactly one
+  kNoneAndSeveral = 3, ///< some directions have no solution, others several (or a continuum)
 };
-std::string_view to_string(UniquenessClass c) noexcept;  ///< "unique", "non-unique", "no-solution"
+/// "unique", "non-unique", "no-solution", "none-and-several"
+std::string_view to_string(UniquenessClass c) noexcept;
 
 struct ParamParamMap {
   MapAxis axis1, axis2;
