@@ -46,7 +46,14 @@ inline std::string json_text(const nlohmann::json& j) {
   return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-/// Prints a JSON object to stdout (pretty with indent 1).
-inline void print_json(const nlohmann::json& j) { std::cout << json_text(j) << std::endl; }
+/// The "run" object of every JSON result: version, command, options used (run_echo.cpp).
+nlohmann::json run_echo();
+
+/// Prints a JSON object to stdout (pretty with indent 1), with the "run" object added
+/// (reproducibility: docs/conventions.md).
+inline void print_json(nlohmann::json j) {
+  if (j.is_object() && !j.contains("run")) j["run"] = run_echo();
+  std::cout << json_text(j) << std::endl;
+}
 
 }  // namespace cpkit::cli

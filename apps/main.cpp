@@ -6,11 +6,14 @@
 
 #include "cli_common.hpp"
 #include "cli_options.hpp"
+#include "run_echo.hpp"
 #include "cpkit/core/errors.hpp"
 
 int main(int argc, char** argv) {
   using namespace cpkit::cli;
   CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
+  // Defaults are recorded so that JSON results can echo every option used (run_echo.hpp).
+  app.option_defaults()->always_capture_default();
   app.set_version_flag("--version", std::string("cpkit ") + CPKIT_VERSION);
   app.require_subcommand(1);
   Context ctx;
@@ -26,6 +29,7 @@ int main(int argc, char** argv) {
       std::cerr << "cpkit: " << wrong << '\n';
       return kExitBadInput;
     }
+    remember_command_line(app, std::vector<std::string>(argv + 1, argv + argc));
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

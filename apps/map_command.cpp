@@ -100,6 +100,10 @@ void check_options_have_effect(const MapArgs& a, const MapSetup& s) {
     return (a.given("--param") && (a.param == name || (name == "a12" && a.param == "a12/a11"))) ||
            (a.given("--param2") && (a.param2 == name || (name == "a12" && a.param2 == "a12/a11")));
   };
+  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s", "--P_N"})
+    if (a.given(o) && on_axis(o + 2))
+      throw InputError(std::string(o) + " has no effect: " + (o + 2) +
+                       " varies along the map's parameter axis (--param/--param2)");
   if (a.preset.empty()) {
     std::string missing;
     for (const char* o : {"--a11", "--a12", "--a22", "--mu"})
@@ -412,6 +416,7 @@ int run_map(const MapArgs& a) {
   if (!a.preset.empty()) j["preset"] = a.preset;
   j["cpkit_version"] = CPKIT_VERSION;
   j["method"] = a.method;
+  j["run"] = run_echo();
   j["model"] = model_to_json(s.params, s.state);
   nlohmann::json files = nlohmann::json::object();
   const std::string prefix = a.out;

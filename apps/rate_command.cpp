@@ -111,6 +111,8 @@ nlohmann::json set_json(const rate::RateSolutionSet& s, const rate::RateSolution
   }
   j["solutions"] = sols;
   j["Lambda"] = s.Lambda;
+  j["D_plus"] = s.D_plus;  // D_s = a11 - s mu a12 (docs/model.md Sec. 2.2), as the text prints
+  j["D_minus"] = s.D_minus;
   j["unique_for_all_directions"] = s.unique_for_all_directions;
   return j;
 }

@@ -194,6 +194,34 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
   if (s.opt.heat.enabled) j["temperature"] = {{"final", r.final_state.temperature}, {"max", r.max_temperature}};
   j["wear_law"] = std::string(rate::to_string(s.opt.wear.law));
   j["criterion"] = std::string(rate::to_string(s.opt.params.criterion));
+  // The settings actually used (config file and command line merged): with them the summary
+  // alone reproduces the run, even when the config file has changed since.
+  const auto& pp = s.opt.params;
+  nlohmann::json set;
+  set["parameters"] = {{"a11", pp.a11}, {"a12", pp.a12}, {"a22", pp.a22}, {"mu", pp.mu},
+                       {"C_T", pp.C_T}, {"k_a", pp.k_a}, {"P_s", pp.P_s},
+                       {"criterion", std::string(rate::to_string(pp.criterion))}};
+  set["wear"] = {{"law", std::string(rate::to_string(s.opt.wear.law))}, {"k_M", s.opt.wear.k_M}};
+  nlohmann::json load = {{"type", s.load_type}};
+  if (s.load_type == "fretting")
+    load.update({{"F_N", s.fretting.F_N}, {"amplitude", s.fretting.amplitude},
+                 {"period", s.fretting.period}, {"cycles", s.fretting.cycles},
+                 {"steps_per_cycle", s.fretting.steps_per_cycle},
+                 {"ramp_steps", s.fretting.ramp_steps}});
+  else if (s.load_type == "ramp")
+    load.update({{"F_T0", s.ramp.F_T0}, {"F_N0", s.ramp.F_N0}, {"F_T1", s.ramp.F_T1},
+                 {"F_N1", s.ramp.F_N1}, {"duration", s.ramp.duration}, {"steps", s.ramp.steps}});
+  else
+    load.update({{"file", s.load_csv}, {"period", s.csv_period}});
+  set["load"] = load;
+  const auto& h = s.opt.heat;
+  set["heat"] = {{"enabled", h.enabled}, {"heat_capacity", h.heat_capacity}, {"T_ref", h.T_ref},
+                 {"T_initial", h.T_initial}, {"T_body", {h.T_body[0], h.T_body[1]}},
+                 {"conductance", {h.conductance[0], h.conductance[1]}}};
+  set["branch_rule"] = std::string(rate::to_string(s.opt.branch_rule));
+  set["every"] = s.every;
+  j["settings"] = set;
+  j["run"] = run_echo();  // version and command line
   return j;
 }
 

@@ -19,6 +19,8 @@ using cpkit::test::run_cpkit;
 using cpkit::test::scratch_dir;
 
 const std::string kModel = "--a11 1 --a12 0.3 --a22 1 --mu 0.5 ";
+// The model of a map whose axis is mu (--mu as well would have no effect: an error).
+const std::string kModelMuAxis = "--a11 1 --a12 0.3 --a22 1 ";
 
 void expect_bad_input(const std::string& args, const std::string& must_name) {
   const Run r = run_cpkit(args);
@@ -114,11 +116,11 @@ TEST_CASE("sizes that pass one by one but not together are refused before alloca
   expect_bad_input("simulate --a11 1 --a12 0.3 --a22 1 --mu -1 --cycles 1e9 --steps-per-cycle 1e9",
                    "mu");
   // 1e5 x 1e6 cells = 1e11 cells (3 bytes each).
-  expect_bad_input("map --kind param-direction --state b " + kModel +
+  expect_bad_input("map --kind param-direction --state b " + kModelMuAxis +
                        "--param mu --from 0.1 --to 1 --n 100000 --theta-n 1000000",
                    "would need about");
-  expect_bad_input("map --kind param-param --state b " + kModel +
-                       "--param mu --from 0.1 --to 1 --n 100000 --param2 a12 --from2 0 --to2 0.5 "
+  expect_bad_input("map --kind param-param --state b " + kModelMuAxis +
+                       "--param mu --from 0.1 --to 1 --n 100000 --param2 C_T --from2 0 --to2 0.5 "
                        "--n2 100000",
                    "would need about");
 }
@@ -141,7 +143,7 @@ TEST_CASE("empty, non-finite and malformed option values are refused by every su
       {"map --kind direction --state b --a11 1 --a12 \"\" --a22 1 --mu 0.5", "--a12"},
       {"map --kind param-direction --state b " + kModel + "--param mu --from 0.1 --to 1 --n \"\"",
        "--n"},
-      {"map --kind param-direction --state b " + kModel + "--param mu --from 0.1 --to 1 --n 1e3",
+      {"map --kind param-direction --state b " + kModel + "--param a11 --from 0.1 --to 1 --n 12.5",
        "--n"},
       {"map --kind direction --state b " + kModel + "--threads 99999999999", "--threads"},
       {"simulate --a11 1 --a12 \"\" --a22 1 --mu 0.5", "--a12"},
@@ -159,7 +161,7 @@ TEST_CASE("empty, non-finite and malformed option values are refused by every su
   };
   for (const auto& [args, name] : cases) expect_bad_input(args, name);
   // A leading zero is decimal, not octal: --n 010 is 10 values.
-  const Run r = run_cpkit("map --kind param-direction --state b " + kModel +
+  const Run r = run_cpkit("map --kind param-direction --state b " + kModelMuAxis +
                           "--param mu --from 0.1 --to 1 --n 010 --theta-n 8 --json");
   INFO(r.err);
   REQUIRE(r.code == 0);
