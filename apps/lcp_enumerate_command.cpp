@@ -63,7 +63,7 @@ nlohmann::json set_json(const lcp::SolutionSet& s, const LcpProblem& p) {
   j["ambiguous"] = s.ambiguous;
   j["nodes"] = s.nodes;
   j["seconds"] = s.seconds;
-  if (!s.message.empty()) j["message"] = s.message;
+  j["message"] = s.message;  // always present (documented field; empty when nothing to say)
   return j;
 }
 
