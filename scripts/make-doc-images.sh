@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Redraws every picture in docs/images/ with the commands the docs show (presets of
+# `cpkit map --list-presets`), so that each picture is exactly what its command draws.
+# Usage: scripts/make-doc-images.sh   (after scripts/build.sh or scripts/run-main.sh)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cpkit="${CPKIT_BUILD_DIR:-$root/build}/apps/cpkit"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$cpkit" map --preset fig5a --out "$tmp/fig5a" --plot
+"$cpkit" map --preset fig5b --out "$tmp/fig5b" --plot
+"$cpkit" map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 --n 400 \
+  --theta-n 720 --out "$tmp/mu_direction" --plot
+"$cpkit" map --preset state-d --out "$tmp/state_d" --plot
+"$cpkit" map --preset state-d-mu-kappa --out "$tmp/state_d_mu_kappa" --plot
+for name in fig5a fig5b mu_direction state_d state_d_mu_kappa; do
+  cp "$tmp/$name.png" "$root/docs/images/$name.png"
+done
+echo "docs/images/: fig5a fig5b mu_direction state_d state_d_mu_kappa redrawn"
