@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
 #include "run_program.hpp"
@@ -39,7 +40,7 @@ struct MapArgs {
   std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
   double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
   int sgnPT = 1;
-  double from = 0, to = 0, from2 = 0, to2 = 0;
+  double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
   int n = 0, n2 = 0, theta_n = 0, threads = 0;
   bool plot = false, json = false, list_presets = false;
   // Which options were given (CLI11 Option pointers).
@@ -398,7 +399,17 @@ int run_map(const MapArgs& a) {
     throw InputError("--threads must be at most 1024 (0: all cores), got " +
                      std::to_string(a.threads));
   options.threads = a.threads;
-  throw_if_invalid(options.validate(), "map options");
+  // Zoom on a thin band of directions (sampled directions of a param-direction map only).
+  for (const char* o : {"--theta-from", "--theta-to"})
+    if (a.given(o) && s.kind != MapKind::kParamDirection)
+      throw InputError(std::string(o) + " applies to --kind param-direction only (a " +
+                       std::string(to_string(s.kind)) +
+                       " map computes the critical directions exactly, without sampling)");
+  if (a.given("--theta-from")) options.theta_from = a.theta_from;
+  if (a.given("--theta-to")) options.theta_to = a.theta_to;
+  throw_if_invalid_option(options.validate(), {{"theta_from", "--theta-from"},
+                                               {"theta_to", "--theta-to"},
+                                               {"threads", "--threads"}});
   if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
   if (!a.out.empty() && fs::path(a.out).filename().empty())
     throw InputError("--out needs a file prefix such as out/map (got '" + a.out + "')");
@@ -467,12 +478,16 @@ int run_map(const MapArgs& a) {
       files["critical_csv"] = name + "_critical.csv";
     }
     const nlohmann::json summary = j;
-    print_text = [summary, &s] {
+    print_text = [summary, &s, &a] {
       const auto& ax = summary["axis"];
       std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
                 << "\n  "
                 << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
-                << ", " << fmt(ax["to"].get<double>()) << "] x theta in [0, 2 pi): "
+                << ", " << fmt(ax["to"].get<double>()) << "] x theta in "
+                << (a.given("--theta-from") || a.given("--theta-to")
+                        ? "[" + fmt(summary["theta_from"].get<double>()) + ", " +
+                              fmt(summary["theta_to"].get<double>()) + "]: "
+                        : std::string("[0, 2 pi): "))
                 << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
                 << " s, " << summary["threads"] << " threads\n";
       for (const auto& c : summary["classes"]) {
@@ -579,6 +594,11 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--theta-n"] = cmd->add_option("--theta-n", args->theta_n,
                                    "directions of a param-direction map (default 360; "
                                    "rejected for the other kinds)");
+  o["--theta-from"] = cmd->add_option("--theta-from", args->theta_from,
+                                      "param-direction: first direction sampled, rad (default 0)");
+  o["--theta-to"] = cmd->add_option("--theta-to", args->theta_to,
+                                    "param-direction: last direction sampled, rad (default 2 pi; "
+                                    "at most --theta-from + 2 pi)");
   o["--method"] = cmd->add_option("--method", args->method,
                                   "enumerate (default) | analytic (also cross-checks with enumerate)");
   o["--threads"] = cmd->add_option("--threads", args->threads, "worker threads (0: all cores)");

@@ -166,7 +166,8 @@ def plot_param_direction(summary, base, plt):
         if lo is not None:
             e[0], e[-1] = lo, hi
         return e
-    xe, te = edges(xs), edges(th, 0.0, 2 * math.pi)
+    t_lo, t_hi = summary.get("theta_from", 0.0), summary.get("theta_to", 2 * math.pi)
+    xe, te = edges(xs), edges(th, t_lo, t_hi)
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.6), sharey=True)
     cmap = ListedColormap([COUNT_COLOURS.get(k, "#777777") for k in keys])
     norm = BoundaryNorm(np.arange(len(keys) + 1) - 0.5, len(keys))
@@ -202,9 +203,10 @@ def plot_param_direction(summary, base, plt):
                       (ax_info["param"], cv["x"]) if k < 4 else None)
         a.set_xlabel(ax_info["param"])
         a.set_xlim(xe[0], xe[-1])
-        a.set_ylim(0, 2 * math.pi)
-        a.set_yticks([0, math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi])
-        a.set_yticklabels(["0", r"$\pi/2$", r"$\pi$", r"$3\pi/2$", r"$2\pi$"])
+        a.set_ylim(t_lo, t_hi)
+        if t_lo == 0 and abs(t_hi - 2 * math.pi) < 1e-12:
+            a.set_yticks([0, math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi])
+            a.set_yticklabels(["0", r"$\pi/2$", r"$\pi$", r"$3\pi/2$", r"$2\pi$"])
     axes[0].set_ylabel(r"load direction $\theta$ ($\dot F_T=\cos\theta$, $\dot F_N=\sin\theta$)")
     axes[0].set_title("number of solutions")
     axes[1].set_title("solution types")

@@ -4,7 +4,9 @@
 // rules of docs/conventions.md ("Command line") and hand-checked values.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdlib>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -182,4 +184,36 @@ TEST_CASE("simulate: paths in a config file are relative to the config file", "[
   CHECK(s["settings"]["load"]["type"] == "csv");
   CHECK(s["run"]["cpkit_version"].is_string());
   CHECK(s["run"]["command"][0] == "simulate");
+}
+
+TEST_CASE("--theta-from/--theta-to zoom a param-direction map on a thin band", "[cli][map]") {
+  // Fig. 5(b) model (a11 = 1, a12 = 0.5, C_T = 0.25, mu = 3): three solutions exactly between
+  // L_+ = 0, tan theta = (1 + mu a12 C_T) / (mu (1 + a11 C_T)) = 1.375 / 3.75, and N = 0,
+  // tan theta = a12 / a11 (docs/model.md Sec. 2.2): a wedge of 6.4 degrees.
+  const double lo = std::atan(1.375 / 3.75), hi = std::atan(0.5);
+  const double from = 0.3, to = 0.5;
+  const int n = 1000;
+  int expected = 0;  // cell centres strictly inside the wedge
+  for (int j = 0; j < n; ++j) {
+    const double t = from + (j + 0.5) * (to - from) / n;
+    expected += t > lo && t < hi;
+  }
+  const CliRun r = run_cpkit("map --preset fig5b --kind param-direction --param C_T --from 0.25 "
+                             "--to 0.25 --n 1 --theta-n 1000 --theta-from 0.3 --theta-to 0.5 --json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["theta_from"] == from);
+  CHECK(j["theta_to"] == to);
+  int three = 0;
+  for (const auto& c : j["classes"])
+    if (c["count"] == 3) {
+      three = c["cells"];
+      CHECK(c["theta_min"].get<double>() > lo);
+      CHECK(c["theta_max"].get<double>() < hi);
+    }
+  CHECK(three == expected);
+  bad("map --preset fig5b --theta-from 0.3", {"--theta-from", "param-direction"});
+  bad("map --preset fig5b --kind param-direction --param C_T --from 0 --to 1 --theta-from 1 "
+      "--theta-to 0.5",
+      {"--theta-from", "--theta-to"});
 }

@@ -45,6 +45,11 @@ std::string MapOptions::validate() const {
   if (method != RateMethod::kEnumerate && method != RateMethod::kAnalytic)
     return "method must be 'enumerate' or 'analytic' (maps need every solution), got '" +
            std::string(to_string(method)) + "'";
+  const double span = theta_to - theta_from;
+  if (!std::isfinite(theta_from) || !std::isfinite(theta_to) || !(span > 0) ||
+      span > 6.283185307179586476925286766559 * (1 + 1e-15))
+    return "theta_from < theta_to <= theta_from + 2 pi needed, got [" +
+           std::to_string(theta_from) + ", " + std::to_string(theta_to) + "]";
   return {};
 }
 

@@ -253,10 +253,13 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   map.axis = axis;
   map.theta_n = theta_n;
   map.cross_checked = options.method != RateMethod::kEnumerate;
+  map.theta_from = options.theta_from;
+  map.theta_to = options.theta_to;
   map.theta.resize(static_cast<std::size_t>(theta_n));
   std::vector<LoadRate> loads(static_cast<std::size_t>(theta_n));
+  const double span = options.theta_to - options.theta_from;
   for (int j = 0; j < theta_n; ++j) {
-    map.theta[j] = (j + 0.5) * kTwoPi / theta_n;
+    map.theta[j] = options.theta_from + (j + 0.5) * span / theta_n;
     loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
   }
   const std::size_t cells = static_cast<std::size_t>(axis.n) * static_cast<std::size_t>(theta_n);
@@ -307,8 +310,13 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     MapOptions dopt;
     dopt.method = method;
     const DirectionMap dm = compute_direction_map(p, st, dopt);
-    for (const auto& c : dm.critical)
-      row_crit[i].push_back({axis.value(i), c.theta, join_conditions(c.conditions), c.summary});
+    for (const auto& c : dm.critical) {
+      // Into the sampled range (directions are angles mod 2 pi); outside it: not drawn.
+      double t = options.theta_from + std::fmod(c.theta - options.theta_from, kTwoPi);
+      if (t < options.theta_from) t += kTwoPi;
+      if (t <= options.theta_to)
+        row_crit[i].push_back({axis.value(i), t, join_conditions(c.conditions), c.summary});
+    }
   };
   run_rows(axis.n, map.threads, row, progress);
 

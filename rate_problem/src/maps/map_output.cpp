@@ -166,6 +166,8 @@ nlohmann::json to_json(const ParamDirectionMap& map) {
   for (const auto& c : map.critical_values) cv.push_back({{"name", c.name}, {"x", c.x}});
   return {{"axis", axis_json(map.axis)},
           {"theta_n", map.theta_n},
+          {"theta_from", map.theta_from},
+          {"theta_to", map.theta_to},
           {"cells", map.cells()},
           {"counts", counts},
           {"classes", cls},

@@ -25,6 +25,10 @@ struct MapOptions {
   /// kEnumerate the enumeration route is run as well on every cell and disagreements are counted.
   RateMethod method = RateMethod::kEnumerate;
   int threads = 0;  ///< grid maps: worker threads, 0 = std::thread::hardware_concurrency()
+  /// Parameter x direction maps: the directions sampled, [theta_from, theta_to] in rad
+  /// (0 < theta_to - theta_from <= 2 pi; default the whole circle). Zooms on a thin sector.
+  double theta_from = 0;
+  double theta_to = 6.283185307179586476925286766559;
   std::string validate() const;  ///< empty when usable
 };
 

@@ -84,7 +84,9 @@ using MapProgress = std::function<void(double fraction)>;
 struct ParamDirectionMap {
   MapAxis axis;
   int theta_n = 0;
-  std::vector<double> theta;     ///< cell centres (j + 1/2) 2 pi / theta_n
+  double theta_from = 0, theta_to = 0;  ///< the sampled range (MapOptions)
+  /// cell centres theta_from + (j + 1/2) (theta_to - theta_from) / theta_n
+  std::vector<double> theta;
   std::vector<int8_t> count;     ///< [i * theta_n + j], -1 = infinitely many
   std::vector<uint8_t> types;    ///< type mask (bit = SolutionType)
   std::vector<uint8_t> disagree; ///< cross-check: 1 where the routes disagree (empty otherwise)
