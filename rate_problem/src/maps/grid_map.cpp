@@ -127,56 +127,59 @@ std::vector<std::pair<std::string, double>> criterion_zeros(const ContactParamet
   if (axis.n <= 1) return zeros;
   const auto names = uniqueness_criteria(base, base_state);
   const int scan = std::max(64, 8 * axis.n);
-  auto value = [&](std::size_t k, double x, bool& ok) {
-    ContactParameters p = base;
-    ContactState st = base_state;
-    ok = true;
-    if (axis.param == MapParameter::kKappa && !(st.P_N > 0)) {
-      ok = false;  // apply_map_parameter would throw
-      return 0.0;
-    }
+  if (axis.param == MapParameter::kKappa && !(base_state.P_N > 0)) return zeros;  // no kappa
+  auto model = [&](double x, ContactParameters& p, ContactState& st) {
+    p = base;
+    st = base_state;
     apply_map_parameter(axis.param, x, p, st);
-    if (!p.validate().empty() || !st.validate(p).empty()) ok = false;
+  };
+  // The scan evaluates the closed forms only; a model is validated (the costly part) only where
+  // a zero is bracketed: both ends of a bracket and every bisection point must be valid models.
+  auto value = [&](std::size_t k, double x) {
+    ContactParameters p;
+    ContactState st;
+    model(x, p, st);
     double v[2] = {0, 0};
     criterion_values(p, st, v);
     return v[k];
   };
+  auto valid = [&](double x) {
+    ContactParameters p;
+    ContactState st;
+    model(x, p, st);
+    return p.validate().empty() && st.validate(p).empty();
+  };
   for (std::size_t k = 0; k < names.size(); ++k) {
-    bool ok0 = false;
     double x0 = axis.from;
-    double f0 = value(k, x0, ok0);
-    if (ok0 && f0 == 0) zeros.emplace_back(names[k].name + "=0", x0);
+    double f0 = value(k, x0);
+    if (f0 == 0 && valid(x0)) zeros.emplace_back(names[k].name + "=0", x0);
     for (int i = 1; i <= scan; ++i) {
       const double x1 = axis.from + (axis.to - axis.from) * static_cast<double>(i) / scan;
-      bool ok1 = false;
-      const double f1 = value(k, x1, ok1);
-      if (ok0 && ok1) {
-        if (f1 == 0) {
-          zeros.emplace_back(names[k].name + "=0", x1);
-        } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
-          double a = x0, b = x1, fa = f0;
-          for (int it = 0; it < 200; ++it) {
-            const double c = 0.5 * (a + b);
-            if (c <= std::min(a, b) || c >= std::max(a, b)) break;
-            bool okc = false;
-            const double fc = value(k, c, okc);
-            if (!okc || fc == 0) {
-              a = b = c;
-              break;
-            }
-            if ((fc < 0) == (fa < 0)) {
-              a = c;
-              fa = fc;
-            } else {
-              b = c;
-            }
+      const double f1 = value(k, x1);
+      if (f1 == 0) {
+        if (valid(x0) && valid(x1)) zeros.emplace_back(names[k].name + "=0", x1);
+      } else if (f0 != 0 && (f0 < 0) != (f1 < 0) && valid(x0) && valid(x1)) {
+        double a = x0, b = x1, fa = f0;
+        for (int it = 0; it < 200; ++it) {
+          const double c = 0.5 * (a + b);
+          if (c <= std::min(a, b) || c >= std::max(a, b)) break;
+          const bool okc = valid(c);
+          const double fc = value(k, c);
+          if (!okc || fc == 0) {
+            a = b = c;
+            break;
           }
-          zeros.emplace_back(names[k].name + "=0", 0.5 * (a + b));
+          if ((fc < 0) == (fa < 0)) {
+            a = c;
+            fa = fc;
+          } else {
+            b = c;
+          }
         }
+        zeros.emplace_back(names[k].name + "=0", 0.5 * (a + b));
       }
       x0 = x1;
       f0 = f1;
-      ok0 = ok1;
     }
   }
   return zeros;
