@@ -268,7 +268,7 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
   const std::string cmd = command_text(argv);
   if (!fs::exists(script)) {
     std::cerr << "cpkit map: plotting script not found (" << script.string()
-              << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
+              << "); the data is in " << prefix << ".json and the files it lists\n";
     return;
   }
   const ProgramRun pr = run_program(argv, true);
@@ -279,9 +279,9 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
     std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
   } else if (code == kPlotNoMatplotlib) {
     std::cerr << "cpkit map: no picture: matplotlib is not available to " << python()
-              << ". The data was written (" << prefix << ".csv, " << prefix
-              << ".json). To get the picture install matplotlib (Debian: apt-get install "
-                 "python3-matplotlib) and run:\n  "
+              << ". The data was written (" << prefix
+              << ".json and the files it lists). To get the picture install matplotlib (Debian: "
+                 "apt-get install python3-matplotlib) and run:\n  "
               << cmd << '\n';
   } else {
     std::cerr << "cpkit map: the plotting script failed ("
