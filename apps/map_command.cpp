@@ -13,6 +13,7 @@
 #include <map>
 #include <vector>
 #include <memory>
+#include <thread>
 #include <sstream>
 
 #include "cli_common.hpp"
@@ -20,12 +21,14 @@
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
 #include "run_program.hpp"
+#include "machine_resources.hpp"
 #include "memory_limit.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
+#include "cpkit/rate_problem/maps/npy_writer.hpp"
 
 namespace cpkit::cli {
 
@@ -38,6 +41,7 @@ constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplot
 
 struct MapArgs {
   std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
+  std::string format = "npy";
   double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
   int sgnPT = 1;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
@@ -78,12 +82,6 @@ std::string count_text(int count) {
 void require_finite(double v, const char* name) {
   if (!std::isfinite(v)) throw InputError(std::string("--") + name + " must be finite");
 }
-
-/// Refuses (before anything is allocated) a grid whose per-cell arrays would exceed the memory
-/// bound: a param-direction map keeps count, types and disagree (3 bytes) per cell, a
-/// param-param map cls, min_count, max_count, types and disagree (5 bytes).
-struct MapSetup;
-void check_map_memory(const MapSetup& s);
 
 /// The model, kind and axes from the preset (if any) and the explicit options.
 struct MapSetup {
@@ -232,27 +230,7 @@ MapSetup build_setup(const MapArgs& a) {
   if (s.kind == MapKind::kParamParam) throw_if_invalid(s.axis2.validate(), "--param2 axis");
   if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
     throw InputError("--theta-n must be in [1, 1000000]");
-  check_map_memory(s);
   return s;
-}
-
-void check_map_memory(const MapSetup& s) {
-  double cells = 0, per_cell = 0;
-  std::string what;
-  if (s.kind == MapKind::kParamDirection) {
-    cells = static_cast<double>(s.axis.n) * s.theta_n;
-    per_cell = 3;
-    what = std::to_string(s.axis.n) + " x " + std::to_string(s.theta_n) + " (--n x --theta-n)";
-  } else if (s.kind == MapKind::kParamParam) {
-    cells = static_cast<double>(s.axis.n) * s.axis2.n;
-    per_cell = 5;
-    what = std::to_string(s.axis.n) + " x " + std::to_string(s.axis2.n) + " (--n x --n2)";
-  }
-  const double bytes = cells * per_cell;
-  if (bytes > static_cast<double>(kMemoryLimitBytes))
-    throw InputError("the map has " + what + " cells and would need about " + byte_text(bytes) +
-                     " of memory; the limit is " +
-                     byte_text(static_cast<double>(kMemoryLimitBytes)) + ": use fewer cells");
 }
 
 /// The model in one line; quantities that vary along a map axis are shown as "(axis)".
@@ -283,20 +261,30 @@ std::string model_text(const ContactParameters& p, const ContactState& s,
   return t;
 }
 
-/// Prints "\rcpkit map: 40% (1.2 s)" on stderr once the map has run for more than a second.
+/// Prints "\rcpkit map: cells 40% (1.2 s)" on stderr for every phase once the map has run for
+/// more than a second, and the phase's final line at 100 %.
 MapProgress make_progress() {
-  auto clock = std::make_shared<Stopwatch>();
-  auto printed = std::make_shared<bool>(false);
-  return [clock, printed](double f) {
-    const double t = clock->seconds();
+  struct State {
+    Stopwatch clock;
+    std::string phase;
+    bool printed = false;
+  };
+  auto st = std::make_shared<State>();
+  return [st](std::string_view phase, double f) {
+    if (phase != st->phase) {
+      st->phase = std::string(phase);
+      st->printed = false;
+    }
+    const double t = st->clock.seconds();
     if (f < 1.0 && t > 1.0) {
-      std::cerr << "\rcpkit map: " << std::setw(3) << static_cast<int>(100 * f) << "% ("
-                << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
+      std::cerr << "\rcpkit map: " << phase << ' ' << std::setw(3) << static_cast<int>(100 * f)
+                << "% (" << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
                 << std::flush;
-      *printed = true;
-    } else if (f >= 1.0 && *printed) {
-      std::cerr << "\rcpkit map: 100% (" << std::fixed << std::setprecision(1) << t << " s)"
-                << std::defaultfloat << '\n';
+      st->printed = true;
+    } else if (f >= 1.0 && st->printed) {
+      std::cerr << "\rcpkit map: " << phase << " 100% (" << std::fixed << std::setprecision(1)
+                << t << " s)" << std::defaultfloat << '\n';
+      st->printed = false;
     }
   };
 }
@@ -308,7 +296,7 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
   const std::string script = find_data_file("cpkit_plot.py", &searched);
   if (script.empty()) {
     std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
-              << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
+              << "); the data is in " << prefix << ".json and the files it lists\n";
     return;
   }
   const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
@@ -321,9 +309,9 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
     std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
   } else if (code == kPlotNoMatplotlib) {
     std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
-              << ". The data was written (" << prefix << ".csv, " << prefix
-              << ".json). To get the picture install matplotlib (Debian: apt-get install "
-                 "python3-matplotlib) and run:\n  "
+              << ". The data was written (" << prefix
+              << ".json and the files it lists). To get the picture install matplotlib (Debian: "
+                 "apt-get install python3-matplotlib) and run:\n  "
               << cmd << '\n';
   } else {
     std::cerr << "cpkit map: the plotting script failed ("
@@ -384,6 +372,109 @@ void report_disagreements(int64_t n, const std::string& what) {
                "CSV / 'enumerate' in the JSON)\n";
 }
 
+/// Up-front cost of a grid map: time of the cell phase extrapolated from a small timed sample
+/// of the same map (one thread), the memory it keeps, the size of what it writes.
+struct GridEstimate {
+  double cells = 0, seconds = 0, memory = 0, output = 0;
+  int threads = 1;
+};
+
+int worker_threads(int requested, int rows) {
+  int t = requested > 0 ? requested : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, std::min(t, rows));
+}
+
+GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool csv, bool writing) {
+  GridEstimate e;
+  MapOptions one = options;
+  one.threads = 1;
+  const bool cross = options.method != RateMethod::kEnumerate;
+  const double cross_bytes = cross ? 1 : 0;
+  if (s.kind == MapKind::kParamDirection) {
+    const double n = s.axis.n, tn = s.theta_n;
+    e.cells = n * tn;
+    e.threads = worker_threads(options.threads, s.axis.n);
+    MapAxis sa = s.axis;
+    sa.n = std::min(s.axis.n, 8);
+    const int ts = std::min(s.theta_n, 1024);
+    const std::vector<double> theta = map_theta_values(ts);
+    std::ostringstream text;
+    // Each sample is timed twice and the faster run kept (a busy machine inflates one run).
+    double t1 = 1e300, t0 = 1e300;
+    for (int rep = 0; rep < 2; ++rep) {
+      const Stopwatch c1;
+      compute_param_direction_map(s.params, s.state, sa, ts, one, {},
+                                  [&](const ParamDirectionRows& r) {
+                                    if (csv && rep == 0) write_csv_rows(sa, theta, r, text);
+                                  });
+      t1 = std::min(t1, c1.seconds());
+      // The per-row part (critical directions, set-up): one direction per row.
+      const Stopwatch c0;
+      compute_param_direction_map(s.params, s.state, sa, 1, one, {}, [](const ParamDirectionRows&) {});
+      t0 = std::min(t0, c0.seconds());
+    }
+    const double per_row = t0 / sa.n;
+    const double per_cell = std::max(0.0, t1 - t0) / (sa.n * std::max(1, ts - 1));
+    e.seconds = (n * per_row + e.cells * per_cell) / e.threads;
+    const double block = std::min(n, static_cast<double>(grid_block_rows(s.theta_n))) * tn;
+    e.memory = block * (3 + (csv ? 60 : 0)) + tn * (8 + 16 + (csv ? 40 : 0)) +
+               n * (sizeof(ContactParameters) + sizeof(ContactState) + 100 +
+                    8 * (sizeof(CriticalDirectionPoint) + 16));
+    if (writing)
+      e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (sa.n * ts)
+                     : e.cells * (2 + cross_bytes) + 8 * (n + tn) + 5 * 128;
+  } else {
+    const double n1 = s.axis.n, n2 = s.axis2.n;
+    e.cells = n1 * n2;
+    e.threads = worker_threads(options.threads, s.axis.n);
+    MapAxis a1 = s.axis, a2 = s.axis2;
+    a1.n = std::min(s.axis.n, 3);
+    a2.n = std::min(s.axis2.n, 6);
+    std::ostringstream text;
+    double t = 1e300;
+    for (int rep = 0; rep < 2; ++rep) {
+      const Stopwatch c1;
+      compute_param_param_map(s.params, s.state, a1, a2, one, {}, [&](const ParamParamRows& r) {
+        if (csv && rep == 0) write_csv_rows(a1, a2, r, text);
+      });
+      t = std::min(t, c1.seconds());
+    }
+    e.seconds = t / (a1.n * a2.n) * e.cells / e.threads;
+    const double block = std::min(n1, static_cast<double>(grid_block_rows(s.axis2.n))) * n2;
+    e.memory = block * (5 + (csv ? 80 : 0)) + (n1 + n2) * (100 + 4 * sizeof(CriticalValue));
+    if (writing)
+      e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (a1.n * a2.n)
+                     : e.cells * (4 + cross_bytes) + 8 * (n1 + n2) + 7 * 128;
+  }
+  return e;
+}
+
+/// Refuses (exit 2) a grid map that cannot fit this machine's memory or the output's disk.
+void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string& out_dir,
+                     bool csv) {
+  const std::string cells =
+      s.kind == MapKind::kParamDirection
+          ? std::to_string(s.axis.n) + " x " + std::to_string(s.theta_n) + " cells (--n x --theta-n)"
+          : std::to_string(s.axis.n) + " x " + std::to_string(s.axis2.n) + " cells (--n x --n2)";
+  const std::string fewer =
+      s.kind == MapKind::kParamDirection ? "use a smaller --n or --theta-n" : "use a smaller --n or --n2";
+  double limit = static_cast<double>(kMemoryLimitBytes);
+  const double avail = available_memory_bytes();
+  if (avail > 0) limit = std::min(limit, 0.8 * avail);
+  if (e.memory > limit)
+    throw InputError("the map has " + cells + " and would need about " + byte_text(e.memory) +
+                     " of memory; " + byte_text(limit) + " is available: " + fewer);
+  if (e.output > 0) {
+    const double free = free_disk_bytes(out_dir);
+    if (free >= 0 && e.output > 0.95 * free)
+      throw InputError("the map has " + cells + " and its output would take about " +
+                       byte_text(e.output) + " but only " + byte_text(free) + " is free in '" +
+                       (out_dir.empty() ? "." : out_dir) + "': " + fewer +
+                       (csv ? ", or drop --format csv (the .npy output takes 1-5 bytes per cell)"
+                            : ""));
+  }
+}
+
 int run_map(const MapArgs& a) {
   if (a.list_presets) {
     for (const auto& p : map_presets())
@@ -411,6 +502,14 @@ int run_map(const MapArgs& a) {
                                                {"theta_to", "--theta-to"},
                                                {"threads", "--threads"}});
   if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+  if (a.format != "npy" && a.format != "csv")
+    throw InputError("--format must be npy or csv, got '" + a.format + "'");
+  if (a.given("--format") && s.kind == MapKind::kDirection && a.format != "csv")
+    throw InputError("--format npy applies to the grid maps (param-direction, param-param); a "
+                     "direction map is written as CSV and JSON");
+  if (a.given("--format") && a.out.empty())
+    throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
+  const bool csv = a.format == "csv";
   if (!a.out.empty() && fs::path(a.out).filename().empty())
     throw InputError("--out needs a file prefix such as out/map (got '" + a.out + "')");
   if (!a.out.empty()) {
@@ -454,84 +553,171 @@ int run_map(const MapArgs& a) {
       std::cout << "direction map, " << model_text(s.params, s.state) << '\n';
       print_direction_text(m);
     };
-  } else if (s.kind == MapKind::kParamDirection) {
-    const ParamDirectionMap m =
-        compute_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, make_progress());
-    j.update(to_json(m));
-    disagreements = m.disagreements;
-    report_disagreements(m.disagreements, "cells");
-    report_unreliable(m.unreliable, "cells");
-    if (m.disagreements > 0) {
-      int shown = 0;
-      for (int i = 0; i < m.axis.n && shown < 10; ++i)
-        for (int k = 0; k < m.theta_n && shown < 10; ++k)
-          if (m.disagree[static_cast<std::size_t>(i) * m.theta_n + k]) {
-            std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
-                      << ", theta = " << m.theta[k] << '\n';
-            ++shown;
-          }
-    }
-    if (!prefix.empty()) {
-      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
-      write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
-      files["csv"] = name + ".csv";
-      files["critical_csv"] = name + "_critical.csv";
-    }
-    const nlohmann::json summary = j;
-    print_text = [summary, &s, &a] {
-      const auto& ax = summary["axis"];
-      std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
-                << "\n  "
-                << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
-                << ", " << fmt(ax["to"].get<double>()) << "] x theta in "
-                << (a.given("--theta-from") || a.given("--theta-to")
-                        ? "[" + fmt(summary["theta_from"].get<double>()) + ", " +
-                              fmt(summary["theta_to"].get<double>()) + "]: "
-                        : std::string("[0, 2 pi): "))
-                << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
-                << " s, " << summary["threads"] << " threads\n";
-      for (const auto& c : summary["classes"]) {
-        const int count = c["count"].is_string() ? -1 : c["count"].get<int>();
-        std::cout << "  " << count_text(count) << ": " << c["cells"] << " cells, "
-                  << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
-                  << ", " << fmt(c["x_max"].get<double>()) << "], theta in ["
-                  << fmt(c["theta_min"].get<double>(), 3) << ", "
-                  << fmt(c["theta_max"].get<double>(), 3) << "]\n";
-      }
-      for (const auto& c : summary["critical_values"])
-        std::cout << "  critical: " << c["name"].get<std::string>() << " at "
-                  << ax["param"].get<std::string>() << " = " << fmt(c["x"].get<double>(), 10)
-                  << '\n';
-    };
   } else {
-    const ParamParamMap m =
-        compute_param_param_map(s.params, s.state, s.axis, s.axis2, options, make_progress());
-    j.update(to_json(m));
-    disagreements = m.disagreements;
-    report_disagreements(m.disagreements, "cells");
-    report_unreliable(m.unreliable, "direction-map evaluations");
-    if (!prefix.empty()) {
-      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
-      write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
-      files["csv"] = name + ".csv";
-      files["critical_csv"] = name + "_critical.csv";
-    }
-    const nlohmann::json summary = j;
-    print_text = [summary, &s] {
-      const auto& ax = summary["axis"];
-      const auto& ay = summary["axis2"];
-      std::cout << "param-param map, "
-                << model_text(s.params, s.state, {s.axis.param, s.axis2.param}) << "\n  "
-                << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
-                << ": " << summary["cells"] << " cells, "
-                << fmt(summary["seconds"].get<double>(), 3) << " s\n";
-      for (const auto& c : summary["classes"])
-        std::cout << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, "
-                  << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
-                  << ", " << fmt(c["x_max"].get<double>()) << "], "
-                  << ay["param"].get<std::string>() << " in [" << fmt(c["y_min"].get<double>())
-                  << ", " << fmt(c["y_max"].get<double>()) << "]\n";
+    // Grid maps: estimate, refuse what cannot fit, then stream the cells to the files.
+    const GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
+    check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv);
+    j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
+                     {"output_bytes", est.output}, {"threads", est.threads}};
+    if (est.seconds > 1.0 || est.output > 1e9)
+      std::cerr << "cpkit map: " << fmt(est.cells, 3) << " cells: about " << fmt(est.seconds, 2)
+                << " s of cells on " << est.threads << " threads, " << byte_text(est.memory)
+                << " of memory"
+                << (prefix.empty() ? std::string()
+                                   : ", " + byte_text(est.output) + " of output (" + a.format + ")")
+                << '\n';
+    j["format"] = a.format;
+    nlohmann::json bits = nlohmann::json::object();
+    for (unsigned b = 0; b < 8; ++b)
+      if (types_to_string(1u << b) != "none") bits[types_to_string(1u << b)] = 1u << b;
+    j["type_bits"] = bits;
+    const bool cross = options.method != RateMethod::kEnumerate;
+    std::vector<std::unique_ptr<NpyWriter>> npy;  // in the order the sink appends
+    std::ofstream csv_file;
+    auto open_npy = [&](const std::string& key, const char* descr, int64_t rows, int64_t cols) {
+      const std::string file = name + "_" + key + ".npy";
+      npy.push_back(std::make_unique<NpyWriter>(prefix + "_" + key + ".npy", descr,
+                                                std::vector<int64_t>{rows, cols}, 1));
+      files[key] = file;
     };
+    auto open_csv = [&] {
+      csv_file.open(prefix + ".csv");
+      if (!csv_file) throw InputError("cannot write '" + prefix + ".csv'");
+      files["csv"] = name + ".csv";
+    };
+    auto append = [&](std::initializer_list<const void*> arrays, int64_t cells) {
+      std::size_t k = 0;
+      for (const void* p : arrays)
+        if (p && k < npy.size()) npy[k++]->append(p, cells);
+    };
+    auto finish_files = [&] {
+      for (auto& w : npy) w->finish();
+      if (csv_file.is_open()) {
+        csv_file.close();
+        if (!csv_file) throw InputError("error writing '" + prefix + ".csv' (disk full?)");
+      }
+    };
+    auto axis_values = [](const MapAxis& ax) {
+      std::vector<double> v(static_cast<std::size_t>(ax.n));
+      for (int i = 0; i < ax.n; ++i) v[i] = ax.value(i);
+      return v;
+    };
+
+    if (s.kind == MapKind::kParamDirection) {
+      const std::vector<double> theta =
+          map_theta_values(s.theta_n, options.theta_from, options.theta_to);
+      if (!prefix.empty() && !csv) {
+        open_npy("count", "|i1", s.axis.n, s.theta_n);
+        open_npy("types", "|u1", s.axis.n, s.theta_n);
+        if (cross) open_npy("disagree", "|u1", s.axis.n, s.theta_n);
+        write_npy_vector(prefix + "_x.npy", axis_values(s.axis));
+        write_npy_vector(prefix + "_theta.npy", theta);
+        files["x"] = name + "_x.npy";
+        files["theta"] = name + "_theta.npy";
+      } else if (!prefix.empty()) {
+        open_csv();
+        write_csv_header(s.axis, cross, csv_file);
+      }
+      std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
+      const ParamDirectionMap m = compute_param_direction_map(
+          s.params, s.state, s.axis, s.theta_n, options, make_progress(),
+          [&](const ParamDirectionRows& r) {
+            const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.theta_n;
+            append({r.count, r.types, r.disagree}, cells);
+            if (csv_file.is_open()) write_csv_rows(s.axis, theta, r, csv_file);
+            for (int64_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
+              if (r.disagree[k])
+                shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
+                                   static_cast<int>(k % s.theta_n));
+          });
+      finish_files();
+      j.update(to_json(m));
+      disagreements = m.disagreements;
+      report_disagreements(m.disagreements, "cells");
+      report_unreliable(m.unreliable, "cells");
+      for (const auto& [i, k] : shown)
+        std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
+                  << ", theta = " << m.theta[k] << '\n';
+      if (!prefix.empty()) {
+        write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+        files["critical_csv"] = name + "_critical.csv";
+      }
+      const nlohmann::json summary = j;
+      print_text = [summary, &s, &a] {
+        const auto& ax = summary["axis"];
+        std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
+                  << "\n  "
+                  << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
+                  << ", " << fmt(ax["to"].get<double>()) << "] x theta in "
+                  << (a.given("--theta-from") || a.given("--theta-to")
+                          ? "[" + fmt(summary["theta_from"].get<double>()) + ", " +
+                                fmt(summary["theta_to"].get<double>()) + "]: "
+                          : std::string("[0, 2 pi): "))
+                  << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
+                  << " s, " << summary["threads"] << " threads\n";
+        for (const auto& c : summary["classes"]) {
+          const int count = c["count"].is_string() ? -1 : c["count"].get<int>();
+          std::cout << "  " << count_text(count) << ": " << c["cells"] << " cells, "
+                    << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                    << ", " << fmt(c["x_max"].get<double>()) << "], theta in ["
+                    << fmt(c["theta_min"].get<double>(), 3) << ", "
+                    << fmt(c["theta_max"].get<double>(), 3) << "]\n";
+        }
+        for (const auto& c : summary["critical_values"])
+          std::cout << "  critical: " << c["name"].get<std::string>() << " at "
+                    << ax["param"].get<std::string>() << " = " << fmt(c["x"].get<double>(), 10)
+                    << '\n';
+      };
+    } else {
+      if (!prefix.empty() && !csv) {
+        open_npy("class", "|u1", s.axis.n, s.axis2.n);
+        open_npy("min_count", "|i1", s.axis.n, s.axis2.n);
+        open_npy("max_count", "|i1", s.axis.n, s.axis2.n);
+        open_npy("types", "|u1", s.axis.n, s.axis2.n);
+        if (cross) open_npy("disagree", "|u1", s.axis.n, s.axis2.n);
+        write_npy_vector(prefix + "_x.npy", axis_values(s.axis));
+        write_npy_vector(prefix + "_y.npy", axis_values(s.axis2));
+        files["x"] = name + "_x.npy";
+        files["y"] = name + "_y.npy";
+        j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
+                            {"none-and-several", 3}};
+      } else if (!prefix.empty()) {
+        open_csv();
+        write_csv_header(s.axis, s.axis2, cross, csv_file);
+      }
+      const ParamParamMap m = compute_param_param_map(
+          s.params, s.state, s.axis, s.axis2, options, make_progress(),
+          [&](const ParamParamRows& r) {
+            const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.axis2.n;
+            append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
+            if (csv_file.is_open()) write_csv_rows(s.axis, s.axis2, r, csv_file);
+          });
+      finish_files();
+      j.update(to_json(m));
+      disagreements = m.disagreements;
+      report_disagreements(m.disagreements, "cells");
+      report_unreliable(m.unreliable, "direction-map evaluations");
+      if (!prefix.empty()) {
+        write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+        files["critical_csv"] = name + "_critical.csv";
+      }
+      const nlohmann::json summary = j;
+      print_text = [summary, &s] {
+        const auto& ax = summary["axis"];
+        const auto& ay = summary["axis2"];
+        std::cout << "param-param map, "
+                  << model_text(s.params, s.state, {s.axis.param, s.axis2.param}) << "\n  "
+                  << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
+                  << ": " << summary["cells"] << " cells, "
+                  << fmt(summary["seconds"].get<double>(), 3) << " s\n";
+        for (const auto& c : summary["classes"])
+          std::cout << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, "
+                    << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                    << ", " << fmt(c["x_max"].get<double>()) << "], "
+                    << ay["param"].get<std::string>() << " in [" << fmt(c["y_min"].get<double>())
+                    << ", " << fmt(c["y_max"].get<double>()) << "]\n";
+      };
+    }
   }
 
   if (!prefix.empty()) {
@@ -602,7 +788,13 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--method"] = cmd->add_option("--method", args->method,
                                   "enumerate (default) | analytic (also cross-checks with enumerate)");
   o["--threads"] = cmd->add_option("--threads", args->threads, "worker threads (0: all cores)");
-  o["--out"] = cmd->add_option("--out", args->out, "write PREFIX.csv, PREFIX.json (+ PREFIX_critical.csv)");
+  o["--out"] = cmd->add_option("--out", args->out,
+                               "write PREFIX.json and the cells: grid maps PREFIX_<array>.npy "
+                               "(or PREFIX.csv with --format csv) + PREFIX_critical.csv; "
+                               "direction maps PREFIX.csv");
+  o["--format"] = cmd->add_option("--format", args->format,
+                                  "cells of a grid map: npy (default; numpy arrays of codes + axis "
+                                  "vectors) | csv (one line per cell)");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
   cmd->callback([args, &ctx] { ctx.exit_code = run_map(*args); });

@@ -1,12 +1,16 @@
 // Map throughput: cells per second of a 1000 x 1000 mu x direction map (state b: the Fig. 5
 // model; state d: the state-d preset, where Lambda changes sign), enumeration route, 1 thread and
-// all threads; plus the cost of one summarize_rate_problem call per route.
+// all threads; plus the cost of one summarize_rate_problem call per route; then the WHOLE
+// `cpkit map` process (start, estimate, cells, streamed .npy or CSV output, exit) for the
+// 1000 x 1000 mu x direction map and an 800 x 800 param-param map.
 // Results: docs/benchmarks/maps.md. Run: build/bench/bench_maps [n] [repeats]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <thread>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
@@ -48,6 +52,58 @@ double ns_per_summary(const MapPreset& p, RateMethod method, int calls, bool use
   if (sink == 42) std::printf(" ");
   return 1e9 * s / calls;
 }
+/// Best wall time of `command` (run through /bin/sh; its start, about 1 ms, is included).
+double best_process_seconds(const std::string& command, int repeats) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = std::system(command.c_str());
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (rc != 0) {
+      std::printf("  command failed (%d): %s\n", rc, command.c_str());
+      return -1;
+    }
+    best = std::min(best, s);
+  }
+  return best;
+}
+
+void whole_process(const char* argv0, int repeats) {
+  namespace fs = std::filesystem;
+  const fs::path cpkit = fs::absolute(fs::path(argv0)).parent_path().parent_path() / "apps" / "cpkit";
+  if (!fs::exists(cpkit)) {
+    std::printf("\nwhole process: skipped (%s not built)\n", cpkit.string().c_str());
+    return;
+  }
+  const fs::path dir = fs::temp_directory_path() / "cpkit_bench_maps";
+  fs::create_directories(dir);
+  const std::string map = cpkit.string() +
+                          " map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
+                          "--n 1000 --theta-n 1000";
+  std::printf("\nwhole process, 1000 x 1000 mu x direction (fig5b), all threads, best of %d:\n",
+              repeats);
+  struct Job {
+    const char* label;
+    std::string args;
+    double cells;
+  };
+  const Job jobs[] = {
+      {"--out, npy (default)", " --out " + (dir / "npy").string(), 1e6},
+      {"--out, --format csv", " --out " + (dir / "csv").string() + " --format csv", 1e6},
+      {"no --out (summary only)", "", 1e6},
+  };
+  for (const Job& j : jobs) {
+    const double s = best_process_seconds(map + j.args + " >/dev/null", repeats);
+    if (s > 0) std::printf("  %-26s %8.3f s %12.3e cells/s\n", j.label, s, j.cells / s);
+  }
+  const std::string pp = cpkit.string() + " map --preset state-d-mu-kappa --n 800 --n2 800 --out " +
+                         (dir / "pp").string() + " >/dev/null 2>&1";
+  const double s = best_process_seconds(pp, 1);
+  if (s > 0)
+    std::printf("  %-26s %8.3f s %12.3e cells/s (cells + threaded critical curves)\n",
+                "param-param 800 x 800", s, 640000.0 / s);
+  fs::remove_all(dir);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -87,6 +143,7 @@ int main(int argc, char** argv) {
                 ns_per_summary(p, RateMethod::kEnumerate, 1000000, true),
                 ns_per_summary(p, RateMethod::kAnalytic, 1000000, false));
   }
+  whole_process(argv[0], repeats);
   if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
     char buf[128] = {};
     if (std::fgets(buf, sizeof buf, f)) std::printf("load average (1/5/15 min, ...): %s", buf);

@@ -75,6 +75,70 @@ def read_csv(path):
         return list(csv.reader(f))
 
 
+MAX_PIXELS = 2000  # grids larger than this per axis are drawn from every k-th row/column
+
+
+def stride(n):
+    return max(1, (n + MAX_PIXELS - 1) // MAX_PIXELS)
+
+
+def type_names(summary):
+    """Type mask -> "stick|slip+" (the CSV spelling), from the summary's type_bits."""
+    bits = sorted(summary.get("type_bits", {}).items(), key=lambda kv: kv[1])
+
+    def name(mask):
+        s = "|".join(n for n, b in bits if int(mask) & b)
+        return s if s else "none"
+    return name
+
+
+def load_param_direction(summary, base, n, tn):
+    """(x, theta, counts (-1 = continuum), type names) of a param-direction map, [n, tn]."""
+    import numpy as np
+    files = summary["files"]
+    if "count" in files:
+        cnt = np.load(os.path.join(base, files["count"]), mmap_mode="r")
+        typ = np.load(os.path.join(base, files["types"]), mmap_mode="r")
+        xs = np.load(os.path.join(base, files["x"]))
+        th = np.load(os.path.join(base, files["theta"]))
+        if cnt.shape != (n, tn) or typ.shape != (n, tn):
+            fail("%s has shape %s, the summary says (%d, %d)" % (files["count"], cnt.shape, n, tn))
+        si, sj = stride(n), stride(tn)
+        typ = np.asarray(typ[::si, ::sj])
+        name = type_names(summary)
+        names = np.vectorize(name, otypes=[object])(typ)
+        return xs[::si], th[::sj], np.asarray(cnt[::si, ::sj]).astype(int), names
+    rows = read_csv(os.path.join(base, files["csv"]))[1:]
+    if len(rows) != n * tn:
+        fail("CSV has %d cells, the summary says %d" % (len(rows), n * tn))
+    xs = np.array([float(rows[i * tn][0]) for i in range(n)])
+    th = np.array([float(rows[j][1]) for j in range(tn)])
+    cnt = np.array([-1 if r[2] == "inf" else int(r[2]) for r in rows]).reshape(n, tn)
+    names = np.array([r[3] for r in rows], dtype=object).reshape(n, tn)
+    return xs, th, cnt, names
+
+
+def load_param_param(summary, base, n1, n2, classes):
+    """(x, y, class index) of a param-param map, [n1, n2]."""
+    import numpy as np
+    files = summary["files"]
+    if "class" in files:
+        cls = np.load(os.path.join(base, files["class"]), mmap_mode="r")
+        if cls.shape != (n1, n2):
+            fail("%s has shape %s, the summary says (%d, %d)" % (files["class"], cls.shape, n1, n2))
+        si, sj = stride(n1), stride(n2)
+        xs = np.load(os.path.join(base, files["x"]))[::si]
+        ys = np.load(os.path.join(base, files["y"]))[::sj]
+        return xs, ys, np.asarray(cls[::si, ::sj]).astype(int)
+    rows = read_csv(os.path.join(base, files["csv"]))[1:]
+    if len(rows) != n1 * n2:
+        fail("CSV has %d cells, the summary says %d" % (len(rows), n1 * n2))
+    cls = np.array([classes.index(r[2]) for r in rows]).reshape(n1, n2)
+    xs = np.array([float(rows[i * n2][0]) for i in range(n1)])
+    ys = np.array([float(rows[j][1]) for j in range(n2)])
+    return xs, ys, cls
+
+
 def count_key(c):
     return "inf" if c == "inf" or c == -1 else str(c)
 
@@ -143,21 +207,17 @@ def plot_param_direction(summary, base, plt):
     import numpy as np
     from matplotlib.colors import ListedColormap, BoundaryNorm
     from matplotlib.patches import Patch
-    rows = read_csv(os.path.join(base, summary["files"]["csv"]))
-    header, rows = rows[0], rows[1:]
     ax_info = summary["axis"]
     n, tn = ax_info["n"], summary["theta_n"]
-    if len(rows) != n * tn:
-        fail("CSV has %d cells, the summary says %d" % (len(rows), n * tn))
-    xs = np.array([float(rows[i * tn][0]) for i in range(n)])
-    th = np.array([float(rows[j][1]) for j in range(tn)])
-    keys = sorted({r[2] for r in rows}, key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
+    xs, th, cnt_raw, typ_raw = load_param_direction(summary, base, n, tn)
+    n, tn = len(xs), len(th)
+    keys = sorted({str(c) if c >= 0 else "inf" for c in np.unique(cnt_raw)},
+                  key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
     kidx = {k: i for i, k in enumerate(keys)}
-    cnt = np.array([kidx[r[2]] for r in rows]).reshape(n, tn).T
-    combos = sorted({r[3] for r in rows})
+    cnt = np.vectorize(lambda c: kidx[str(c) if c >= 0 else "inf"])(cnt_raw).T
+    combos = sorted({str(t) for t in np.unique(typ_raw)})
     cidx = {c: i for i, c in enumerate(combos)}
-    typ = np.array([cidx[r[3]] for r in rows]).reshape(n, tn).T
-
+    typ = np.vectorize(lambda t: cidx[str(t)])(typ_raw).T
     def edges(v, lo=None, hi=None):
         if len(v) == 1:
             return np.array([v[0] - 0.5, v[0] + 0.5])
@@ -229,16 +289,11 @@ def plot_param_param(summary, base, plt):
     import numpy as np
     from matplotlib.colors import ListedColormap, BoundaryNorm
     from matplotlib.patches import Patch
-    rows = read_csv(os.path.join(base, summary["files"]["csv"]))[1:]
     a1, a2 = summary["axis"], summary["axis2"]
-    n1, n2 = a1["n"], a2["n"]
-    if len(rows) != n1 * n2:
-        fail("CSV has %d cells, the summary says %d" % (len(rows), n1 * n2))
     classes = ["unique", "non-unique", "no-solution", "none-and-several"]
-    cls = np.array([classes.index(r[2]) for r in rows]).reshape(n1, n2).T
-    xs = np.array([float(rows[i * n2][0]) for i in range(n1)])
-    ys = np.array([float(rows[j][1]) for j in range(n2)])
-
+    xs, ys, cls = load_param_param(summary, base, a1["n"], a2["n"], classes)
+    n1, n2 = len(xs), len(ys)
+    cls = cls.T
     def edges(v):
         if len(v) == 1:
             return np.array([v[0] - 0.5, v[0] + 0.5])

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <sys/statvfs.h>
 
 namespace fs = std::filesystem;
 
@@ -69,7 +70,7 @@ TEST_CASE("CliGridMapWritesCsvAndJson", "[cli][map]") {
   const fs::path prefix = scratch_dir() / "mu_dir";
   fs::remove(prefix.string() + ".csv");
   const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.5 --to 3.5 "
-                    "--n 31 --theta-n 90 --threads 2 --out " + prefix.string());
+                    "--n 31 --theta-n 90 --threads 2 --format csv --out " + prefix.string());
   REQUIRE(r.code == 0);
   REQUIRE(fs::exists(prefix.string() + ".csv"));
   REQUIRE(fs::exists(prefix.string() + ".json"));
@@ -94,7 +95,7 @@ TEST_CASE("CliThreadCountDoesNotChangeTheCsv", "[cli][map]") {
   const fs::path a = scratch_dir() / "t1", b = scratch_dir() / "t3";
   const std::string common =
       "map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 --n 50 "
-      "--theta-n 73 --out ";
+      "--theta-n 73 --format csv --out ";
   REQUIRE(run(common + a.string() + " --threads 1").code == 0);
   REQUIRE(run(common + b.string() + " --threads 3").code == 0);
   CHECK(slurp(a.string() + ".csv") == slurp(b.string() + ".csv"));
@@ -104,7 +105,7 @@ TEST_CASE("CliThreadCountDoesNotChangeTheCsv", "[cli][map]") {
   auto json_of = [](const fs::path& p) {
     auto j = nlohmann::json::parse(slurp(p.string() + ".json"));
     REQUIRE(j.at("run").at("options").at("threads").is_number());
-    for (const char* k : {"seconds", "threads", "run", "files"}) j.erase(k);
+    for (const char* k : {"seconds", "threads", "run", "files", "estimate"}) j.erase(k);
     return j;
   };
   CHECK(json_of(a) == json_of(b));
@@ -127,7 +128,10 @@ TEST_CASE("CliMapRejectsBadInputWithExitCode2", "[cli][map]") {
         "map --preset fig5b --method lemke", "map --bogus-option",
         "map --preset fig5b --plot", "map --kind param-direction --param kappa --from 0 --to 1",
         "map --preset fig5b --theta-n 90", "map --preset state-d-mu-kappa --n 3 --n2 3 --theta-n 9",
-        "map --preset fig5b --criterion 37", "map --preset fig5b --criterion coulomb38"}) {
+        "map --preset fig5b --criterion 37", "map --preset fig5b --criterion coulomb38",
+        "map --preset state-d --n 4 --theta-n 8 --format png --out /tmp/x",
+        "map --preset fig5b --format npy --out /tmp/x",
+        "map --preset state-d --n 4 --theta-n 8 --format csv"}) {
     CAPTURE(args);
     const Run r = run(args);
     CHECK(r.code == 2);
@@ -231,4 +235,84 @@ TEST_CASE("CliMapJsonReportsUnreliableCells", "[cli][map]") {
     // test_map_direction / test_map_grid): no sign test may be reported too close to call.
     CHECK(j["unreliable"].get<int64_t>() == 0);
   }
+}
+
+// The default grid output: .npy arrays read back by numpy itself (an independent reader) equal
+// the CSV of the same map, cell by cell.
+TEST_CASE("CliGridMapNpyEqualsCsvReadByNumpy", "[cli][map][npy]") {
+  if (std::system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") != 0) {
+    WARN("skipped: /usr/bin/python3 has no numpy (Debian: apt-get install python3-numpy)");
+    return;
+  }
+  for (const std::string kind : {"param-direction", "param-param"}) {
+    CAPTURE(kind);
+    const fs::path a = scratch_dir() / ("npy_" + kind), b = scratch_dir() / ("csv_" + kind);
+    const std::string common =
+        kind == "param-direction"
+            ? "map --preset state-d --n 23 --theta-n 41 --method analytic --out "
+            : "map --preset state-d-mu-kappa --n 9 --n2 7 --out ";
+    const Run ra = run(common + a.string());
+    REQUIRE(ra.code == 0);
+    REQUIRE(run(common + b.string() + " --format csv").code == 0);
+    const auto j = nlohmann::json::parse(slurp(a.string() + ".json"));
+    CHECK(j["format"] == "npy");
+    CHECK(!j["files"].contains("csv"));
+    const fs::path script = scratch_dir() / "compare_npy.py";
+    {
+      std::ofstream f(script);
+      f << R"(import csv, json, sys, numpy as np
+pre_npy, pre_csv, kind = sys.argv[1], sys.argv[2], sys.argv[3]
+s = json.load(open(pre_npy + ".json"))
+rows = list(csv.reader(open(pre_csv + ".csv")))[1:]
+d = pre_npy.rsplit("/", 1)[0] + "/"
+load = lambda key: np.load(d + s["files"][key])
+bits = sorted(s["type_bits"].items(), key=lambda kv: kv[1])
+name = lambda m: "|".join(n for n, b in bits if int(m) & b) or "none"
+cnt = lambda c: "inf" if c < 0 else str(c)
+if kind == "param-direction":
+    c, t, x, th = load("count"), load("types"), load("x"), load("theta")
+    assert c.dtype == np.int8 and c.shape == (s["axis"]["n"], s["theta_n"]), c.shape
+    dis = load("disagree")
+    assert dis.shape == c.shape and int(dis.sum()) == s["disagreements"]
+    for k, r in enumerate(rows):
+        i, jj = divmod(k, c.shape[1])
+        assert abs(float(r[0]) - x[i]) <= 1e-11 * max(1, abs(x[i])), (r, x[i])
+        assert abs(float(r[1]) - th[jj]) <= 1e-11 * max(1, th[jj]), (r, th[jj])
+        assert r[2] == cnt(c[i, jj]) and r[3] == name(t[i, jj]) and r[4] == str(dis[i, jj]), r
+else:
+    cl, lo, hi, t = load("class"), load("min_count"), load("max_count"), load("types")
+    codes = {v: k for k, v in s["class_codes"].items()}
+    assert cl.shape == (s["axis"]["n"], s["axis2"]["n"])
+    for k, r in enumerate(rows):
+        i, jj = divmod(k, cl.shape[1])
+        assert r[2] == codes[int(cl[i, jj])] and r[3] == cnt(lo[i, jj]), r
+        assert r[4] == cnt(hi[i, jj]) and r[5] == name(t[i, jj]), r
+assert len(rows) == s["cells"]
+)";
+    }
+    const int rc = std::system(("/usr/bin/python3 " + script.string() + " " + a.string() + " " +
+                                b.string() + " " + kind)
+                                   .c_str());
+    CHECK(rc == 0);
+  }
+}
+
+// A grid whose output cannot fit the disk is refused before any cell is computed, naming the
+// options that make it fit.
+TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
+  const fs::path prefix = scratch_dir() / "huge";
+  struct statvfs st {};
+  REQUIRE(statvfs(scratch_dir().c_str(), &st) == 0);
+  const double free = static_cast<double>(st.f_bavail) * st.f_frsize;
+  // 100000 x 1000000 cells take 2e11 bytes as .npy (count + types).
+  if (free > 1.5e11) {
+    WARN("skipped: " << free << " bytes free, the 2e11-byte map would fit");
+    return;
+  }
+  const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
+                    "--n 100000 --theta-n 1000000 --out " + prefix.string());
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--theta-n") != std::string::npos);
+  CHECK(r.err.find("free") != std::string::npos);
+  CHECK_FALSE(fs::exists(prefix.string() + "_count.npy"));
 }

@@ -38,28 +38,30 @@ int resolve_threads(int requested, int64_t work_items) {
   return t;
 }
 
-/// Runs fn(row) for every row on `threads` workers (rows handed out one at a time). Results must
-/// be stored by row index by fn, so the outcome does not depend on the thread count. The calling
-/// thread reports progress about every 0.1 s. The first exception of a worker is rethrown.
-template <class RowFn>
-void run_rows(int rows, int threads, RowFn&& fn, const MapProgress& progress) {
-  std::atomic<int> next{0}, done{0};
+/// Runs fn(i) for every i in [begin, end) on `threads` workers (items handed out one at a time).
+/// Results must be stored by index by fn, so the outcome does not depend on the thread count.
+/// The calling thread calls report(items done) about every 0.1 s. The first exception of a
+/// worker is rethrown.
+template <class ItemFn, class Report>
+void run_items(int begin, int end, int threads, ItemFn&& fn, Report&& report) {
+  std::atomic<int> next{begin}, done{0};
   std::mutex mutex;
   std::condition_variable cv;
+  threads = std::max(1, std::min(threads, end - begin));
   int active = threads;
   std::exception_ptr error;
   auto worker = [&] {
     try {
       for (;;) {
         const int i = next.fetch_add(1);
-        if (i >= rows) break;
+        if (i >= end) break;
         fn(i);
         done.fetch_add(1);
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
       if (!error) error = std::current_exception();
-      next.store(rows);
+      next.store(end);
     }
     {
       std::lock_guard<std::mutex> lock(mutex);
@@ -74,24 +76,46 @@ void run_rows(int rows, int threads, RowFn&& fn, const MapProgress& progress) {
     std::unique_lock<std::mutex> lock(mutex);
     while (active > 0) {
       cv.wait_for(lock, std::chrono::milliseconds(100));
-      if (progress && active > 0) {
+      if (active > 0) {
         lock.unlock();
-        progress(static_cast<double>(done.load()) / rows);
+        report(done.load());
         lock.lock();
       }
     }
   }
   for (auto& th : pool) th.join();
   if (error) std::rethrow_exception(error);
-  if (progress) progress(1.0);
+}
+
+/// Values of the uniqueness criteria (as uniqueness_criteria, without names or allocation).
+int criterion_values(const ContactParameters& p, const ContactState& state, double out[2]) {
+  if (state.label == StateLabel::kB) {
+    out[0] = p.a11 - p.mu * p.a12;
+    out[1] = p.a11 + p.mu * p.a12;
+    return 2;
+  }
+  if (state.label == StateLabel::kD) {
+    const double s = state.sgn_PT >= 0 ? 1.0 : -1.0;
+    const double kappa = p.kappa(state.P_N);
+    // eqn (51): Lambda = a11 - m s a12 + kappa (s a12 - m a22) - m kappa C_T detA with m = mu
+    // for criterion (38) and m = mu_eff = mu - 2 kappa for the softening criterion (35)
+    // (docs/model.md; the same m as the rate problem's slip equations).
+    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
+    out[0] = p.a11 - m * s * p.a12 + kappa * (s * p.a12 - m * p.a22) -
+             m * kappa * p.C_T * p.detA();
+    return 1;
+  }
+  return 0;
 }
 
 /// (params, state) with the axis parameter set to `x`; validated (message names the value).
 void set_and_validate(const MapAxis& axis, double x, ContactParameters& p, ContactState& st) {
   apply_map_parameter(axis.param, x, p, st);
-  const std::string where = std::string(to_string(axis.param)) + " = " + std::to_string(x);
-  throw_if_invalid(p.validate(), "map axis " + where + ": parameters");
-  throw_if_invalid(st.validate(p), "map axis " + where + ": contact state");
+  auto where = [&] { return std::string(to_string(axis.param)) + " = " + std::to_string(x); };
+  if (std::string e = p.validate(); !e.empty())
+    throw_if_invalid(e, "map axis " + where() + ": parameters");
+  if (std::string e = st.validate(p); !e.empty())
+    throw_if_invalid(e, "map axis " + where() + ": contact state");
 }
 
 /// Zeros of the uniqueness criteria along one axis (the other quantities fixed), located by a
@@ -103,55 +127,59 @@ std::vector<std::pair<std::string, double>> criterion_zeros(const ContactParamet
   if (axis.n <= 1) return zeros;
   const auto names = uniqueness_criteria(base, base_state);
   const int scan = std::max(64, 8 * axis.n);
-  auto value = [&](std::size_t k, double x, bool& ok) {
-    ContactParameters p = base;
-    ContactState st = base_state;
-    ok = true;
-    try {
-      apply_map_parameter(axis.param, x, p, st);
-    } catch (const std::exception&) {
-      ok = false;
-      return 0.0;
-    }
-    if (!p.validate().empty() || !st.validate(p).empty()) ok = false;
-    return uniqueness_criteria(p, st)[k].value;
+  if (axis.param == MapParameter::kKappa && !(base_state.P_N > 0)) return zeros;  // no kappa
+  auto model = [&](double x, ContactParameters& p, ContactState& st) {
+    p = base;
+    st = base_state;
+    apply_map_parameter(axis.param, x, p, st);
+  };
+  // The scan evaluates the closed forms only; a model is validated (the costly part) only where
+  // a zero is bracketed: both ends of a bracket and every bisection point must be valid models.
+  auto value = [&](std::size_t k, double x) {
+    ContactParameters p;
+    ContactState st;
+    model(x, p, st);
+    double v[2] = {0, 0};
+    criterion_values(p, st, v);
+    return v[k];
+  };
+  auto valid = [&](double x) {
+    ContactParameters p;
+    ContactState st;
+    model(x, p, st);
+    return p.validate().empty() && st.validate(p).empty();
   };
   for (std::size_t k = 0; k < names.size(); ++k) {
-    bool ok0 = false;
     double x0 = axis.from;
-    double f0 = value(k, x0, ok0);
-    if (ok0 && f0 == 0) zeros.emplace_back(names[k].name + "=0", x0);
+    double f0 = value(k, x0);
+    if (f0 == 0 && valid(x0)) zeros.emplace_back(names[k].name + "=0", x0);
     for (int i = 1; i <= scan; ++i) {
       const double x1 = axis.from + (axis.to - axis.from) * static_cast<double>(i) / scan;
-      bool ok1 = false;
-      const double f1 = value(k, x1, ok1);
-      if (ok0 && ok1) {
-        if (f1 == 0) {
-          zeros.emplace_back(names[k].name + "=0", x1);
-        } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
-          double a = x0, b = x1, fa = f0;
-          for (int it = 0; it < 200; ++it) {
-            const double c = 0.5 * (a + b);
-            if (c <= std::min(a, b) || c >= std::max(a, b)) break;
-            bool okc = false;
-            const double fc = value(k, c, okc);
-            if (!okc || fc == 0) {
-              a = b = c;
-              break;
-            }
-            if ((fc < 0) == (fa < 0)) {
-              a = c;
-              fa = fc;
-            } else {
-              b = c;
-            }
+      const double f1 = value(k, x1);
+      if (f1 == 0) {
+        if (valid(x0) && valid(x1)) zeros.emplace_back(names[k].name + "=0", x1);
+      } else if (f0 != 0 && (f0 < 0) != (f1 < 0) && valid(x0) && valid(x1)) {
+        double a = x0, b = x1, fa = f0;
+        for (int it = 0; it < 200; ++it) {
+          const double c = 0.5 * (a + b);
+          if (c <= std::min(a, b) || c >= std::max(a, b)) break;
+          const bool okc = valid(c);
+          const double fc = value(k, c);
+          if (!okc || fc == 0) {
+            a = b = c;
+            break;
           }
-          zeros.emplace_back(names[k].name + "=0", 0.5 * (a + b));
+          if ((fc < 0) == (fa < 0)) {
+            a = c;
+            fa = fc;
+          } else {
+            b = c;
+          }
         }
+        zeros.emplace_back(names[k].name + "=0", 0.5 * (a + b));
       }
       x0 = x1;
       f0 = f1;
-      ok0 = ok1;
     }
   }
   return zeros;
@@ -217,27 +245,43 @@ std::string MapAxis::validate() const {
 
 std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& p,
                                                      const ContactState& state) {
-  std::vector<UniquenessCriterion> c;
-  if (state.label == StateLabel::kB) {
-    c.push_back({"D+", p.a11 - p.mu * p.a12});
-    c.push_back({"D-", p.a11 + p.mu * p.a12});
-  } else if (state.label == StateLabel::kD) {
-    const double s = state.sgn_PT >= 0 ? 1.0 : -1.0;
-    const double kappa = p.kappa(state.P_N);
-    // eqn (51): Lambda = a11 - m s a12 + kappa (s a12 - m a22) - m kappa C_T detA with m = mu
-    // for criterion (38) and m = mu_eff = mu - 2 kappa for the softening criterion (35)
-    // (docs/model.md; the same m as the rate problem's slip equations).
-    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
-    c.push_back({"Lambda", p.a11 - m * s * p.a12 + kappa * (s * p.a12 - m * p.a22) -
-                               m * kappa * p.C_T * p.detA()});
+  double v[2] = {0, 0};
+  const int k = criterion_values(p, state, v);
+  if (k == 2) return {{"D+", v[0]}, {"D-", v[1]}};
+  if (k == 1) return {{"Lambda", v[0]}};
+  return {};
+}
+
+void GridClassBox::add(double x, double y) noexcept {
+  if (cells == 0) {
+    x_min = x_max = x;
+    y_min = y_max = y;
+  } else {
+    x_min = std::min(x_min, x);
+    x_max = std::max(x_max, x);
+    y_min = std::min(y_min, y);
+    y_max = std::max(y_max, y);
   }
-  return c;
+  ++cells;
+}
+
+std::vector<double> map_theta_values(int theta_n, double theta_from, double theta_to) {
+  std::vector<double> theta(static_cast<std::size_t>(std::max(0, theta_n)));
+  const double span = theta_to - theta_from;
+  for (int j = 0; j < theta_n; ++j) theta[j] = theta_from + (j + 0.5) * span / theta_n;
+  return theta;
+}
+
+int grid_block_rows(int64_t columns) noexcept {
+  constexpr int64_t kBlockCells = int64_t{1} << 20;
+  return static_cast<int>(std::max<int64_t>(1, kBlockCells / std::max<int64_t>(1, columns)));
 }
 
 ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const ContactState& state, const MapAxis& axis,
                                               int theta_n, const MapOptions& options,
-                                              const MapProgress& progress) {
+                                              const MapProgress& progress,
+                                              const ParamDirectionSink& sink) {
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis.validate(), "map axis " + std::string(to_string(axis.param)));
   if (theta_n < 1 || theta_n > 1000000)
@@ -255,17 +299,16 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   map.cross_checked = options.method != RateMethod::kEnumerate;
   map.theta_from = options.theta_from;
   map.theta_to = options.theta_to;
-  map.theta.resize(static_cast<std::size_t>(theta_n));
+  map.theta = map_theta_values(theta_n, options.theta_from, options.theta_to);
   std::vector<LoadRate> loads(static_cast<std::size_t>(theta_n));
-  const double span = options.theta_to - options.theta_from;
-  for (int j = 0; j < theta_n; ++j) {
-    map.theta[j] = options.theta_from + (j + 0.5) * span / theta_n;
-    loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
-  }
-  const std::size_t cells = static_cast<std::size_t>(axis.n) * static_cast<std::size_t>(theta_n);
-  map.count.assign(cells, 0);
-  map.types.assign(cells, 0);
-  if (map.cross_checked) map.disagree.assign(cells, 0);
+  for (int j = 0; j < theta_n; ++j) loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
+  // Without a sink the whole grid is kept; with one, a buffer of one block of rows.
+  const int block_rows = sink ? std::min(axis.n, grid_block_rows(theta_n)) : axis.n;
+  const std::size_t buffer_cells =
+      static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
+  std::vector<int8_t> count(buffer_cells, 0);
+  std::vector<uint8_t> types(buffer_cells, 0);
+  std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
   std::vector<int64_t> row_disagree(static_cast<std::size_t>(axis.n), 0);
   std::vector<int64_t> row_unreliable(static_cast<std::size_t>(axis.n), 0);
   std::vector<std::vector<CriticalDirectionPoint>> row_crit(static_cast<std::size_t>(axis.n));
@@ -273,32 +316,34 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   map.threads = resolve_threads(options.threads, axis.n);
   const RateMethod method = options.method;
   const bool cross = map.cross_checked;
+  int block_begin = 0;
   auto row = [&](int i) {
     const ContactParameters& p = row_params[i];
     const ContactState& st = row_state[i];
     // Once per row (the row's model is fixed): the state's LCP as a linear function of the load.
     const RatePrecomputed pre = precompute_rate_problem(p, st);
-    const std::size_t base = static_cast<std::size_t>(i) * static_cast<std::size_t>(theta_n);
-    int8_t* count = map.count.data() + base;
-    uint8_t* types = map.types.data() + base;
+    const std::size_t base =
+        static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(theta_n);
+    int8_t* cnt = count.data() + base;
+    uint8_t* typ = types.data() + base;
     const LoadRate* load = loads.data();
     // The cell loop: allocation-free (summarize_rate_problem is).
     int64_t n_unreliable = 0;
     if (!cross) {
       for (int j = 0; j < theta_n; ++j) {
         const RateSummary s = summarize_rate_problem(pre, load[j], method);
-        count[j] = static_cast<int8_t>(s.count);
-        types[j] = static_cast<uint8_t>(s.types);
+        cnt[j] = static_cast<int8_t>(s.count);
+        typ[j] = static_cast<uint8_t>(s.types);
         n_unreliable += !s.reliable;
       }
     } else {
-      uint8_t* dis = map.disagree.data() + base;
+      uint8_t* dis = disagree.data() + base;
       int64_t n_dis = 0;
       for (int j = 0; j < theta_n; ++j) {
         const RateSummary s = summarize_rate_problem(pre, load[j], method);
         const RateSummary e = summarize_rate_problem(pre, load[j], RateMethod::kEnumerate);
-        count[j] = static_cast<int8_t>(s.count);
-        types[j] = static_cast<uint8_t>(s.types);
+        cnt[j] = static_cast<int8_t>(s.count);
+        typ[j] = static_cast<uint8_t>(s.types);
         dis[j] = same_solution_set(s, e) ? 0 : 1;
         n_dis += dis[j];
         n_unreliable += !s.reliable || !e.reliable;
@@ -318,8 +363,59 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
         row_crit[i].push_back({axis.value(i), t, join_conditions(c.conditions), c.summary});
     }
   };
-  run_rows(axis.n, map.threads, row, progress);
 
+  // Summary per count (index count + 1; counts are small, -1 = a continuum).
+  std::array<GridClassBox, 128> boxes{};
+  std::vector<int> first(boxes.size()), last(boxes.size());
+  auto summarize_rows = [&](int r0, int r1) {
+    for (int i = r0; i < r1; ++i) {
+      const std::size_t base = static_cast<std::size_t>(i - block_begin) * theta_n;
+      std::fill(first.begin(), first.end(), -1);
+      std::array<int64_t, 128> n_count{};
+      for (int j = 0; j < theta_n; ++j) {
+        const int c = (count[base + j] + 1) & 127;
+        if (first[c] < 0) first[c] = j;
+        last[c] = j;
+        ++n_count[c];
+        ++map.type_cells[types[base + j] & 31u];
+      }
+      for (std::size_t c = 0; c < boxes.size(); ++c)
+        if (n_count[c] > 0) {
+          // theta increases with j: the first and last cell bound the row's theta range.
+          boxes[c].add(axis.value(i), map.theta[first[c]]);
+          boxes[c].add(axis.value(i), map.theta[last[c]]);
+          boxes[c].cells += n_count[c] - 2;
+        }
+    }
+  };
+
+  for (block_begin = 0; block_begin < axis.n; block_begin += block_rows) {
+    const int block_end = std::min(axis.n, block_begin + block_rows);
+    run_items(block_begin, block_end, map.threads, row, [&](int done) {
+      if (progress) progress("cells", static_cast<double>(block_begin + done) / axis.n);
+    });
+    summarize_rows(block_begin, block_end);
+    if (sink) {
+      ParamDirectionRows rows;
+      rows.row_begin = block_begin;
+      rows.row_end = block_end;
+      rows.count = count.data();
+      rows.types = types.data();
+      rows.disagree = cross ? disagree.data() : nullptr;
+      sink(rows);
+    }
+  }
+  if (progress) progress("cells", 1.0);
+  if (!sink) {
+    map.count = std::move(count);
+    map.types = std::move(types);
+    map.disagree = std::move(disagree);
+  }
+  for (std::size_t c = 0; c < boxes.size(); ++c)
+    if (boxes[c].cells > 0) {
+      boxes[c].code = static_cast<int>(c) - 1;
+      map.classes.push_back(boxes[c]);
+    }
   for (int i = 0; i < axis.n; ++i) {
     map.disagreements += row_disagree[i];
     map.unreliable += row_unreliable[i];
@@ -343,7 +439,8 @@ std::string_view to_string(UniquenessClass c) noexcept {
 
 ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
                                       const MapAxis& axis1, const MapAxis& axis2,
-                                      const MapOptions& options, const MapProgress& progress) {
+                                      const MapOptions& options, const MapProgress& progress,
+                                      const ParamParamSink& sink) {
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
   throw_if_invalid(axis2.validate(), "map axis " + std::string(to_string(axis2.param)));
@@ -358,87 +455,134 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
       ContactParameters p = params;
       ContactState st = state;
       apply_map_parameter(axis1.param, axis1.value(i), p, st);
-      set_and_validate(axis2, axis2.value(j), p, st);
-      const std::string where = std::string(to_string(axis1.param)) + " = " +
-                                std::to_string(axis1.value(i)) + ", ";
-      throw_if_invalid(p.validate(), "map cell " + where + "parameters");
+      try {
+        set_and_validate(axis2, axis2.value(j), p, st);
+      } catch (const InputError& e) {
+        throw InputError("map cell " + std::string(to_string(axis1.param)) + " = " +
+                         std::to_string(axis1.value(i)) + ", " + e.what());
+      }
     }
 
   ParamParamMap map;
   map.axis1 = axis1;
   map.axis2 = axis2;
   map.cross_checked = options.method != RateMethod::kEnumerate;
-  const std::size_t cells = static_cast<std::size_t>(n1) * static_cast<std::size_t>(n2);
-  map.cls.assign(cells, 0);
-  map.min_count.assign(cells, 0);
-  map.max_count.assign(cells, 0);
-  map.types.assign(cells, 0);
-  if (map.cross_checked) map.disagree.assign(cells, 0);
+  const int block_rows = sink ? std::min(n1, grid_block_rows(n2)) : n1;
+  const std::size_t buffer_cells = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
+  std::vector<uint8_t> cls(buffer_cells, 0), types(buffer_cells, 0);
+  std::vector<int8_t> min_count(buffer_cells, 0), max_count(buffer_cells, 0);
+  std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
   std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis),
       row_unr(row_dis);
   map.threads = resolve_threads(options.threads, n1);
+  MapOptions cell_options = options;
+  cell_options.threads = 1;
 
+  int block_begin = 0;
   auto row = [&](int i) {
     for (int j = 0; j < n2; ++j) {
       ContactParameters p = params;
       ContactState st = state;
       apply_map_parameter(axis1.param, axis1.value(i), p, st);
       apply_map_parameter(axis2.param, axis2.value(j), p, st);
-      const DirectionMap dm = compute_direction_map(p, st, options);
+      const DirectionMap dm = compute_direction_map(p, st, cell_options);
       // Counts over all sectors and critical directions; -1 (a continuum) ranks above all.
       auto rank = [](int c) { return c < 0 ? 1000 : c; };
       int lo = 0, hi = 0, lo_rank = 1001, hi_rank = -1;
-      unsigned types = 0;
+      unsigned type_mask = 0;
       bool none = false, multiple = false;
       auto visit = [&](const RateSummary& s) {
         const int r = rank(s.count);
         if (r < lo_rank) { lo_rank = r; lo = s.count; }
         if (r > hi_rank) { hi_rank = r; hi = s.count; }
-        types |= s.types;
+        type_mask |= s.types;
         if (s.count == 0) none = true;
         if (s.count != 0 && s.count != 1) multiple = true;
       };
       for (const auto& s : dm.sectors) visit(s.summary);
       for (const auto& c : dm.critical) visit(c.summary);
-      const std::size_t k = static_cast<std::size_t>(i) * static_cast<std::size_t>(n2) + j;
+      const std::size_t k =
+          static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2) + j;
       // "no solution for some directions" must not hide that others have several.
-      map.cls[k] = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
-                                        : none           ? UniquenessClass::kNoSolutionSome
-                                        : multiple       ? UniquenessClass::kNonUniqueSome
-                                                         : UniquenessClass::kUniqueAll);
-      map.min_count[k] = static_cast<int8_t>(lo);
-      map.max_count[k] = static_cast<int8_t>(hi);
-      map.types[k] = static_cast<uint8_t>(types);
+      cls[k] = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
+                                    : none           ? UniquenessClass::kNoSolutionSome
+                                    : multiple       ? UniquenessClass::kNonUniqueSome
+                                                     : UniquenessClass::kUniqueAll);
+      min_count[k] = static_cast<int8_t>(lo);
+      max_count[k] = static_cast<int8_t>(hi);
+      types[k] = static_cast<uint8_t>(type_mask);
       if (map.cross_checked) {
-        map.disagree[k] = dm.disagreements > 0 ? 1 : 0;
-        row_dis[i] += map.disagree[k];
+        disagree[k] = dm.disagreements > 0 ? 1 : 0;
+        row_dis[i] += disagree[k];
       }
       row_inc[i] += dm.inconsistent_sectors;
       row_unr[i] += dm.unreliable;
     }
   };
-  run_rows(n1, map.threads, row, progress);
+  std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
+  for (block_begin = 0; block_begin < n1; block_begin += block_rows) {
+    const int block_end = std::min(n1, block_begin + block_rows);
+    run_items(block_begin, block_end, map.threads, row, [&](int done) {
+      if (progress) progress("cells", static_cast<double>(block_begin + done) / n1);
+    });
+    for (int i = block_begin; i < block_end; ++i)
+      for (int j = 0; j < n2; ++j)
+        boxes[cls[static_cast<std::size_t>(i - block_begin) * n2 + j]].add(axis1.value(i),
+                                                                         axis2.value(j));
+    if (sink) {
+      ParamParamRows rows;
+      rows.row_begin = block_begin;
+      rows.row_end = block_end;
+      rows.cls = cls.data();
+      rows.min_count = min_count.data();
+      rows.max_count = max_count.data();
+      rows.types = types.data();
+      rows.disagree = map.cross_checked ? disagree.data() : nullptr;
+      sink(rows);
+    }
+  }
+  if (progress) progress("cells", 1.0);
+  if (!sink) {
+    map.cls = std::move(cls);
+    map.min_count = std::move(min_count);
+    map.max_count = std::move(max_count);
+    map.types = std::move(types);
+    map.disagree = std::move(disagree);
+  }
+  for (std::size_t c = 0; c < boxes.size(); ++c)
+    if (boxes[c].cells > 0) {
+      boxes[c].code = static_cast<int>(c);
+      map.classes.push_back(boxes[c]);
+    }
   for (int i = 0; i < n1; ++i) {
     map.disagreements += row_dis[i];
     map.inconsistent_sectors += row_inc[i];
     map.unreliable += row_unr[i];
   }
 
-  // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed).
-  for (int i = 0; i < n1; ++i) {
+  // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed),
+  // one work item per row and per column; stored by item, so the order is thread-independent.
+  std::vector<std::vector<CriticalValue>> item_curve(static_cast<std::size_t>(n1 + n2));
+  auto curve_item = [&](int k) {
     ContactParameters p = params;
     ContactState st = state;
-    apply_map_parameter(axis1.param, axis1.value(i), p, st);
-    for (const auto& z : criterion_zeros(p, st, axis2))
-      map.critical_curve.push_back({z.first, axis1.value(i), z.second});
-  }
-  for (int j = 0; j < n2; ++j) {
-    ContactParameters p = params;
-    ContactState st = state;
-    apply_map_parameter(axis2.param, axis2.value(j), p, st);
-    for (const auto& z : criterion_zeros(p, st, axis1))
-      map.critical_curve.push_back({z.first, z.second, axis2.value(j)});
-  }
+    if (k < n1) {
+      apply_map_parameter(axis1.param, axis1.value(k), p, st);
+      for (const auto& z : criterion_zeros(p, st, axis2))
+        item_curve[k].push_back({z.first, axis1.value(k), z.second});
+    } else {
+      const int j = k - n1;
+      apply_map_parameter(axis2.param, axis2.value(j), p, st);
+      for (const auto& z : criterion_zeros(p, st, axis1))
+        item_curve[k].push_back({z.first, z.second, axis2.value(j)});
+    }
+  };
+  run_items(0, n1 + n2, resolve_threads(options.threads, n1 + n2), curve_item, [&](int done) {
+    if (progress) progress("critical curves", static_cast<double>(done) / (n1 + n2));
+  });
+  if (progress) progress("critical curves", 1.0);
+  for (auto& v : item_curve)
+    for (auto& c : v) map.critical_curve.push_back(std::move(c));
   map.seconds = clock.seconds();
   return map;
 }

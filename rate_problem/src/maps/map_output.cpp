@@ -31,24 +31,6 @@ nlohmann::json axis_json(const MapAxis& a) {
   return {{"param", std::string(to_string(a.param))}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
 }
 
-/// Per count class: number of cells and the bounding box of their axis values.
-struct ClassBox {
-  int64_t cells = 0;
-  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
-  void add(double x, double y) {
-    if (cells == 0) {
-      x_min = x_max = x;
-      y_min = y_max = y;
-    } else {
-      x_min = std::min(x_min, x);
-      x_max = std::max(x_max, x);
-      y_min = std::min(y_min, y);
-      y_max = std::max(y_max, y);
-    }
-    ++cells;
-  }
-};
-
 const std::array<std::string, 32>& type_strings() {
   static const std::array<std::string, 32> t = [] {
     std::array<std::string, 32> a;
@@ -146,22 +128,15 @@ void write_csv(const DirectionMap& map, std::ostream& out) {
 }
 
 nlohmann::json to_json(const ParamDirectionMap& map) {
-  std::map<int, ClassBox> classes;
-  std::map<unsigned, int64_t> combos;
-  for (int i = 0; i < map.axis.n; ++i)
-    for (int j = 0; j < map.theta_n; ++j) {
-      const std::size_t k = static_cast<std::size_t>(i) * map.theta_n + j;
-      classes[map.count[k]].add(map.axis.value(i), map.theta[j]);
-      ++combos[map.types[k]];
-    }
   nlohmann::json counts = nlohmann::json::object(), cls = nlohmann::json::array(),
                  types = nlohmann::json::object();
-  for (const auto& [c, b] : classes) {
-    counts[count_to_string(c)] = b.cells;
-    cls.push_back({{"count", count_to_json(c)}, {"cells", b.cells}, {"x_min", b.x_min},
+  for (const auto& b : map.classes) {
+    counts[count_to_string(b.code)] = b.cells;
+    cls.push_back({{"count", count_to_json(b.code)}, {"cells", b.cells}, {"x_min", b.x_min},
                    {"x_max", b.x_max}, {"theta_min", b.y_min}, {"theta_max", b.y_max}});
   }
-  for (const auto& [m, n] : combos) types[types_to_string(m)] = n;
+  for (unsigned m = 0; m < map.type_cells.size(); ++m)
+    if (map.type_cells[m] > 0) types[types_to_string(m)] = map.type_cells[m];
   nlohmann::json cv = nlohmann::json::array();
   for (const auto& c : map.critical_values) cv.push_back({{"name", c.name}, {"x", c.x}});
   return {{"axis", axis_json(map.axis)},
@@ -181,30 +156,46 @@ nlohmann::json to_json(const ParamDirectionMap& map) {
           {"seconds", map.seconds}};
 }
 
-void write_csv(const ParamDirectionMap& map, std::ostream& out) {
-  const auto& ts = type_strings();
-  out << to_string(map.axis.param) << ",theta,count,types" << (map.cross_checked ? ",disagree" : "")
+void write_csv_header(const MapAxis& axis, bool cross_checked, std::ostream& out) {
+  out << to_string(axis.param) << ",theta,count,types" << (cross_checked ? ",disagree" : "")
       << '\n';
-  std::vector<std::string> theta(map.theta.size());
-  for (std::size_t j = 0; j < theta.size(); ++j) theta[j] = num(map.theta[j]);
-  std::string line;
-  for (int i = 0; i < map.axis.n; ++i) {
-    const std::string x = num(map.axis.value(i));
-    for (int j = 0; j < map.theta_n; ++j) {
-      const std::size_t k = static_cast<std::size_t>(i) * map.theta_n + j;
-      line.clear();
-      line += x;
-      line += ',';
-      line += theta[j];
-      line += ',';
-      line += count_to_string(map.count[k]);
-      line += ',';
-      line += ts[map.types[k] & 31u];
-      if (map.cross_checked) line += map.disagree[k] ? ",1" : ",0";
-      line += '\n';
-      out << line;
+}
+
+void write_csv_rows(const MapAxis& axis, const std::vector<double>& theta_values,
+                    const ParamDirectionRows& rows, std::ostream& out) {
+  const auto& ts = type_strings();
+  const std::size_t theta_n = theta_values.size();
+  std::vector<std::string> theta(theta_n);
+  for (std::size_t j = 0; j < theta_n; ++j) theta[j] = num(theta_values[j]);
+  std::string text;
+  for (int i = rows.row_begin; i < rows.row_end; ++i) {
+    const std::string x = num(axis.value(i));
+    text.clear();
+    for (std::size_t j = 0; j < theta_n; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * theta_n + j;
+      text += x;
+      text += ',';
+      text += theta[j];
+      text += ',';
+      text += count_to_string(rows.count[k]);
+      text += ',';
+      text += ts[rows.types[k] & 31u];
+      if (rows.disagree) text += rows.disagree[k] ? ",1" : ",0";
+      text += '\n';
     }
+    out << text;
   }
+}
+
+void write_csv(const ParamDirectionMap& map, std::ostream& out) {
+  write_csv_header(map.axis, map.cross_checked, out);
+  ParamDirectionRows rows;
+  rows.row_begin = 0;
+  rows.row_end = map.axis.n;
+  rows.count = map.count.data();
+  rows.types = map.types.data();
+  rows.disagree = map.cross_checked ? map.disagree.data() : nullptr;
+  write_csv_rows(map.axis, map.theta, rows, out);
 }
 
 void write_critical_csv(const ParamDirectionMap& map, std::ostream& out) {
@@ -216,14 +207,9 @@ void write_critical_csv(const ParamDirectionMap& map, std::ostream& out) {
 }
 
 nlohmann::json to_json(const ParamParamMap& map) {
-  std::map<int, ClassBox> classes;
-  for (int i = 0; i < map.axis1.n; ++i)
-    for (int j = 0; j < map.axis2.n; ++j)
-      classes[map.cls[static_cast<std::size_t>(i) * map.axis2.n + j]].add(map.axis1.value(i),
-                                                                         map.axis2.value(j));
   nlohmann::json counts = nlohmann::json::object(), cls = nlohmann::json::array();
-  for (const auto& [c, b] : classes) {
-    const std::string name(to_string(static_cast<UniquenessClass>(c)));
+  for (const auto& b : map.classes) {
+    const std::string name(to_string(static_cast<UniquenessClass>(b.code)));
     counts[name] = b.cells;
     cls.push_back({{"class", name}, {"cells", b.cells}, {"x_min", b.x_min}, {"x_max", b.x_max},
                    {"y_min", b.y_min}, {"y_max", b.y_max}});
@@ -242,20 +228,51 @@ nlohmann::json to_json(const ParamParamMap& map) {
           {"seconds", map.seconds}};
 }
 
-void write_csv(const ParamParamMap& map, std::ostream& out) {
+void write_csv_header(const MapAxis& axis1, const MapAxis& axis2, bool cross_checked,
+                      std::ostream& out) {
+  out << to_string(axis1.param) << ',' << to_string(axis2.param)
+      << ",class,min_count,max_count,types" << (cross_checked ? ",disagree" : "") << '\n';
+}
+
+void write_csv_rows(const MapAxis& axis1, const MapAxis& axis2, const ParamParamRows& rows,
+                    std::ostream& out) {
   const auto& ts = type_strings();
-  out << to_string(map.axis1.param) << ',' << to_string(map.axis2.param)
-      << ",class,min_count,max_count,types" << (map.cross_checked ? ",disagree" : "") << '\n';
-  for (int i = 0; i < map.axis1.n; ++i)
-    for (int j = 0; j < map.axis2.n; ++j) {
-      const std::size_t k = static_cast<std::size_t>(i) * map.axis2.n + j;
-      out << num(map.axis1.value(i)) << ',' << num(map.axis2.value(j)) << ','
-          << to_string(static_cast<UniquenessClass>(map.cls[k])) << ','
-          << count_to_string(map.min_count[k]) << ',' << count_to_string(map.max_count[k]) << ','
-          << ts[map.types[k] & 31u];
-      if (map.cross_checked) out << (map.disagree[k] ? ",1" : ",0");
-      out << '\n';
+  const std::size_t n2 = static_cast<std::size_t>(axis2.n);
+  std::string text;
+  for (int i = rows.row_begin; i < rows.row_end; ++i) {
+    const std::string x = num(axis1.value(i));
+    text.clear();
+    for (std::size_t j = 0; j < n2; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * n2 + j;
+      text += x;
+      text += ',';
+      text += num(axis2.value(static_cast<int>(j)));
+      text += ',';
+      text += to_string(static_cast<UniquenessClass>(rows.cls[k]));
+      text += ',';
+      text += count_to_string(rows.min_count[k]);
+      text += ',';
+      text += count_to_string(rows.max_count[k]);
+      text += ',';
+      text += ts[rows.types[k] & 31u];
+      if (rows.disagree) text += rows.disagree[k] ? ",1" : ",0";
+      text += '\n';
     }
+    out << text;
+  }
+}
+
+void write_csv(const ParamParamMap& map, std::ostream& out) {
+  write_csv_header(map.axis1, map.axis2, map.cross_checked, out);
+  ParamParamRows rows;
+  rows.row_begin = 0;
+  rows.row_end = map.axis1.n;
+  rows.cls = map.cls.data();
+  rows.min_count = map.min_count.data();
+  rows.max_count = map.max_count.data();
+  rows.types = map.types.data();
+  rows.disagree = map.cross_checked ? map.disagree.data() : nullptr;
+  write_csv_rows(map.axis1, map.axis2, rows, out);
 }
 
 void write_critical_csv(const ParamParamMap& map, std::ostream& out) {

@@ -8,8 +8,11 @@
 ///    and, per parameter row, the exact critical directions (direction_map.hpp);
 ///  - parameter x parameter: every cell is classified from its exact direction map as unique for
 ///    every direction, non-unique for some (but solvable for all), or without solution for some.
-/// Cells are computed on several threads; results are stored by cell index, so the output is
-/// identical for any thread count.
+/// Cells are computed on several threads in blocks of consecutive rows; results are stored by
+/// cell index, so the output is identical for any thread count. With a sink, each block is handed
+/// over (in row order) as soon as it is done and the cells are not kept: memory is bounded by one
+/// block, whatever the grid size.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -78,8 +81,36 @@ struct UniquenessCriterion {
 std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& params,
                                                      const ContactState& state);
 
-/// Progress callback: fraction done in [0, 1]; called from the calling thread only.
-using MapProgress = std::function<void(double fraction)>;
+/// Progress callback: the phase ("cells", "critical curves") and the fraction of it done in
+/// [0, 1]; called from the calling thread only, about every 0.1 s and once with 1 at the end.
+using MapProgress = std::function<void(std::string_view phase, double fraction)>;
+
+/// Cells of one class of a grid map and the bounding box of their axis values (y: theta for a
+/// parameter x direction map, the second parameter for a parameter x parameter map).
+struct GridClassBox {
+  int code = 0;  ///< the count (-1: infinitely many) or the UniquenessClass
+  int64_t cells = 0;
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  void add(double x, double y) noexcept;
+};
+
+/// The directions of a parameter x direction map: cell centres
+/// theta_from + (j + 1/2) (theta_to - theta_from) / theta_n (default: the whole circle).
+std::vector<double> map_theta_values(int theta_n, double theta_from = 0,
+                                     double theta_to = 6.283185307179586);
+
+/// Rows per block of a streamed grid map with `columns` cells per row (about 2^20 cells).
+int grid_block_rows(int64_t columns) noexcept;
+
+/// Rows [row_begin, row_end) of a parameter x direction map; arrays are row-major with theta_n
+/// columns (disagree: nullptr unless cross-checked).
+struct ParamDirectionRows {
+  int row_begin = 0, row_end = 0;
+  const int8_t* count = nullptr;
+  const uint8_t* types = nullptr;
+  const uint8_t* disagree = nullptr;
+};
+using ParamDirectionSink = std::function<void(const ParamDirectionRows&)>;
 
 struct ParamDirectionMap {
   MapAxis axis;
@@ -95,17 +126,22 @@ struct ParamDirectionMap {
   bool cross_checked = false;
   std::vector<CriticalValue> critical_values;            ///< analytic curves x = const
   std::vector<CriticalDirectionPoint> critical_directions;  ///< curves theta_c(x)
+  std::vector<GridClassBox> classes;       ///< per count, sorted by count (-1 first)
+  std::array<int64_t, 32> type_cells{};    ///< cells per type mask
   double seconds = 0;
   int threads = 1;
-  int64_t cells() const noexcept { return static_cast<int64_t>(count.size()); }
+  int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
 };
 
 /// Computes a parameter x direction map (rows: axis values; columns: theta_n directions).
+/// Without a sink the cells are kept in count/types/disagree; with a sink they are handed to it
+/// block by block and count/types/disagree stay empty (the summary fields are always filled).
 /// Throws InputError for invalid options/axis or a parameter row that is not a valid model.
 ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const ContactState& state, const MapAxis& axis,
                                               int theta_n, const MapOptions& options = {},
-                                              const MapProgress& progress = {});
+                                              const MapProgress& progress = {},
+                                              const ParamDirectionSink& sink = {});
 
 /// Classes of a parameter x parameter cell.
 enum class UniquenessClass : uint8_t {
@@ -116,6 +152,17 @@ enum class UniquenessClass : uint8_t {
 };
 /// "unique", "non-unique", "no-solution", "none-and-several"
 std::string_view to_string(UniquenessClass c) noexcept;
+
+/// Rows [row_begin, row_end) of a parameter x parameter map, row-major with axis2.n columns.
+struct ParamParamRows {
+  int row_begin = 0, row_end = 0;
+  const uint8_t* cls = nullptr;
+  const int8_t* min_count = nullptr;
+  const int8_t* max_count = nullptr;
+  const uint8_t* types = nullptr;
+  const uint8_t* disagree = nullptr;  ///< nullptr unless cross-checked
+};
+using ParamParamSink = std::function<void(const ParamParamRows&)>;
 
 struct ParamParamMap {
   MapAxis axis1, axis2;
@@ -129,15 +176,18 @@ struct ParamParamMap {
   int64_t unreliable = 0;  ///< direction-map evaluations flagged as too close to call
   bool cross_checked = false;
   std::vector<CriticalValue> critical_curve;  ///< points (x, y) where a criterion is 0
+  std::vector<GridClassBox> classes;          ///< per UniquenessClass present, by code
   double seconds = 0;
   int threads = 1;
-  int64_t cells() const noexcept { return static_cast<int64_t>(cls.size()); }
+  int64_t cells() const noexcept { return static_cast<int64_t>(axis1.n) * axis2.n; }
 };
 
-/// Computes a parameter x parameter map, each cell from its exact direction map.
+/// Computes a parameter x parameter map, each cell from its exact direction map; then the
+/// critical curves (threaded too). Sink: as for compute_param_direction_map.
 ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
                                       const MapAxis& axis1, const MapAxis& axis2,
                                       const MapOptions& options = {},
-                                      const MapProgress& progress = {});
+                                      const MapProgress& progress = {},
+                                      const ParamParamSink& sink = {});
 
 }  // namespace cpkit::rate

@@ -28,6 +28,10 @@ void write_csv(const DirectionMap& map, std::ostream& out);
 nlohmann::json to_json(const ParamDirectionMap& map);
 /// CSV: <param>,theta,count,types[,disagree] (one row per cell).
 void write_csv(const ParamDirectionMap& map, std::ostream& out);
+/// The same CSV streamed: the header line, then the rows of each block as it is computed.
+void write_csv_header(const MapAxis& axis, bool cross_checked, std::ostream& out);
+void write_csv_rows(const MapAxis& axis, const std::vector<double>& theta,
+                    const ParamDirectionRows& rows, std::ostream& out);
 /// CSV: curve,x,theta,conditions,count,types (critical-direction points; critical values with
 /// theta empty).
 void write_critical_csv(const ParamDirectionMap& map, std::ostream& out);
@@ -35,6 +39,11 @@ void write_critical_csv(const ParamDirectionMap& map, std::ostream& out);
 nlohmann::json to_json(const ParamParamMap& map);
 /// CSV: <param1>,<param2>,class,min_count,max_count,types[,disagree].
 void write_csv(const ParamParamMap& map, std::ostream& out);
+/// The same CSV streamed: the header line, then the rows of each block as it is computed.
+void write_csv_header(const MapAxis& axis1, const MapAxis& axis2, bool cross_checked,
+                      std::ostream& out);
+void write_csv_rows(const MapAxis& axis1, const MapAxis& axis2, const ParamParamRows& rows,
+                    std::ostream& out);
 /// CSV: curve,x,y.
 void write_critical_csv(const ParamParamMap& map, std::ostream& out);
 
