@@ -347,12 +347,27 @@ struct GridEstimate {
   int threads = 1;
 };
 
+GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options, bool csv,
+                                   bool writing);
+
 int worker_threads(int requested, int rows) {
   int t = requested > 0 ? requested : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::max(1, std::min(t, rows));
 }
 
 GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool csv, bool writing) {
+  try {
+    return estimate_grid_sampled(s, options, csv, writing);
+  } catch (const InputError&) {
+    // A sampled row is not a valid model: the map itself reports the first invalid grid value.
+    GridEstimate e;
+    e.seconds = -1;
+    return e;
+  }
+}
+
+GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options, bool csv,
+                                   bool writing) {
   GridEstimate e;
   MapOptions one = options;
   one.threads = 1;
@@ -554,6 +569,15 @@ int run_map(const MapArgs& a) {
         if (!csv_file) throw InputError("error writing '" + prefix + ".csv' (disk full?)");
       }
     };
+    // A map that fails part-way (an invalid parameter row, a full disk) leaves no partial files.
+    auto discard_files = [&] {
+      npy.clear();
+      if (csv_file.is_open()) csv_file.close();
+      for (const auto& [key, file] : files.items()) {
+        std::error_code ec;
+        fs::remove(fs::path(prefix).parent_path() / file.get<std::string>(), ec);
+      }
+    };
     auto axis_values = [](const MapAxis& ax) {
       std::vector<double> v(static_cast<std::size_t>(ax.n));
       for (int i = 0; i < ax.n; ++i) v[i] = ax.value(i);
@@ -575,7 +599,9 @@ int run_map(const MapArgs& a) {
         write_csv_header(s.axis, cross, csv_file);
       }
       std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
-      const ParamDirectionMap m = compute_param_direction_map(
+      ParamDirectionMap m;
+      try {
+        m = compute_param_direction_map(
           s.params, s.state, s.axis, s.theta_n, options, make_progress(),
           [&](const ParamDirectionRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.theta_n;
@@ -586,7 +612,11 @@ int run_map(const MapArgs& a) {
                 shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
                                    static_cast<int>(k % s.theta_n));
           });
-      finish_files();
+        finish_files();
+      } catch (...) {
+        discard_files();
+        throw;
+      }
       j.update(to_json(m));
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
@@ -636,14 +666,20 @@ int run_map(const MapArgs& a) {
         open_csv();
         write_csv_header(s.axis, s.axis2, cross, csv_file);
       }
-      const ParamParamMap m = compute_param_param_map(
+      ParamParamMap m;
+      try {
+        m = compute_param_param_map(
           s.params, s.state, s.axis, s.axis2, options, make_progress(),
           [&](const ParamParamRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.axis2.n;
             append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
             if (csv_file.is_open()) write_csv_rows(s.axis, s.axis2, r, csv_file);
           });
-      finish_files();
+        finish_files();
+      } catch (...) {
+        discard_files();
+        throw;
+      }
       j.update(to_json(m));
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");

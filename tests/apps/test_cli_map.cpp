@@ -302,3 +302,16 @@ TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
   CHECK(r.err.find("free") != std::string::npos);
   CHECK_FALSE(fs::exists(prefix.string() + "_count.npy"));
 }
+
+// A grid with an invalid row (A not positive definite from a12 = 1.0102 on) is refused, the
+// message names the first invalid grid value, and no partial output is left behind.
+TEST_CASE("CliGridMapWithAnInvalidRowLeavesNoFiles", "[cli][map]") {
+  const fs::path prefix = scratch_dir() / "invalid_row";
+  const Run r = run("map --preset fig5b --kind param-direction --param a12 --from 0.5 --to 1.5 "
+                    "--n 50 --theta-n 10 --out " + prefix.string());
+  CHECK(r.code == 2);
+  // Grid values 0.5 + i / 49: the first with a12 >= 1 (det A <= 0) is i = 25, 1.0102...
+  CHECK(r.err.find("a12 = 1.010204") != std::string::npos);
+  for (const char* f : {"_count.npy", "_types.npy", "_x.npy", "_theta.npy", ".json"})
+    CHECK_FALSE(fs::exists(prefix.string() + f));
+}
