@@ -42,6 +42,7 @@ constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplot
 struct MapArgs {
   std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
   std::string format = "npy";
+  double time_limit = 600;  // seconds of cells the estimate may reach (--time-limit)
   double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
   int sgnPT = 1;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
@@ -268,15 +269,22 @@ MapProgress make_progress() {
     Stopwatch clock;
     std::string phase;
     bool printed = false;
+    int percent = -1;
+    double last = 0;
   };
   auto st = std::make_shared<State>();
   return [st](std::string_view phase, double f) {
     if (phase != st->phase) {
       st->phase = std::string(phase);
       st->printed = false;
+      st->percent = -1;
     }
     const double t = st->clock.seconds();
-    if (f < 1.0 && t > 1.0) {
+    const int percent = static_cast<int>(100 * f);
+    // A new line only when the percentage changed (or every 5 s): short logs when redirected.
+    if (f < 1.0 && t > 1.0 && (percent != st->percent || t > st->last + 5.0)) {
+      st->percent = percent;
+      st->last = t;
       std::cerr << "\rcpkit map: " << phase << ' ' << std::setw(3) << static_cast<int>(100 * f)
                 << "% (" << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
                 << std::flush;
@@ -379,12 +387,27 @@ struct GridEstimate {
   int threads = 1;
 };
 
+GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options, bool csv,
+                                   bool writing);
+
 int worker_threads(int requested, int rows) {
   int t = requested > 0 ? requested : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::max(1, std::min(t, rows));
 }
 
 GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool csv, bool writing) {
+  try {
+    return estimate_grid_sampled(s, options, csv, writing);
+  } catch (const InputError&) {
+    // A sampled row is not a valid model: the map itself reports the first invalid grid value.
+    GridEstimate e;
+    e.seconds = -1;
+    return e;
+  }
+}
+
+GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options, bool csv,
+                                   bool writing) {
   GridEstimate e;
   MapOptions one = options;
   one.threads = 1;
@@ -416,7 +439,8 @@ GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool cs
     const double per_row = t0 / sa.n;
     const double per_cell = std::max(0.0, t1 - t0) / (sa.n * std::max(1, ts - 1));
     e.seconds = (n * per_row + e.cells * per_cell) / e.threads;
-    const double block = std::min(n, static_cast<double>(grid_block_rows(s.theta_n))) * tn;
+    const double block =
+        std::min(n, std::max<double>(grid_block_rows(s.theta_n), 4 * e.threads)) * tn;
     e.memory = block * (3 + (csv ? 60 : 0)) + tn * (8 + 16 + (csv ? 40 : 0)) +
                n * (sizeof(ContactParameters) + sizeof(ContactState) + 100 +
                     8 * (sizeof(CriticalDirectionPoint) + 16));
@@ -440,7 +464,8 @@ GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool cs
       t = std::min(t, c1.seconds());
     }
     e.seconds = t / (a1.n * a2.n) * e.cells / e.threads;
-    const double block = std::min(n1, static_cast<double>(grid_block_rows(s.axis2.n))) * n2;
+    const double block =
+        std::min(n1, std::max<double>(grid_block_rows(s.axis2.n), 4 * e.threads)) * n2;
     e.memory = block * (5 + (csv ? 80 : 0)) + (n1 + n2) * (100 + 4 * sizeof(CriticalValue));
     if (writing)
       e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (a1.n * a2.n)
@@ -451,13 +476,18 @@ GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool cs
 
 /// Refuses (exit 2) a grid map that cannot fit this machine's memory or the output's disk.
 void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string& out_dir,
-                     bool csv) {
+                     bool csv, double time_limit) {
   const std::string cells =
       s.kind == MapKind::kParamDirection
           ? std::to_string(s.axis.n) + " x " + std::to_string(s.theta_n) + " cells (--n x --theta-n)"
           : std::to_string(s.axis.n) + " x " + std::to_string(s.axis2.n) + " cells (--n x --n2)";
   const std::string fewer =
       s.kind == MapKind::kParamDirection ? "use a smaller --n or --theta-n" : "use a smaller --n or --n2";
+  if (e.seconds > time_limit)
+    throw InputError("the map has " + cells + " and would need about " + fmt(e.seconds, 3) +
+                     " s of computing on " + std::to_string(e.threads) +
+                     " threads (estimated from a timed sample), more than --time-limit " +
+                     fmt(time_limit) + ": " + fewer + ", or raise --time-limit");
   double limit = static_cast<double>(kMemoryLimitBytes);
   const double avail = available_memory_bytes();
   if (avail > 0) limit = std::min(limit, 0.8 * avail);
@@ -510,6 +540,8 @@ int run_map(const MapArgs& a) {
   if (a.given("--format") && a.out.empty())
     throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
   const bool csv = a.format == "csv";
+  if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
+    throw InputError("--time-limit must be a positive number of seconds");
   if (!a.out.empty() && fs::path(a.out).filename().empty())
     throw InputError("--out needs a file prefix such as out/map (got '" + a.out + "')");
   if (!a.out.empty()) {
@@ -556,7 +588,8 @@ int run_map(const MapArgs& a) {
   } else {
     // Grid maps: estimate, refuse what cannot fit, then stream the cells to the files.
     const GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
-    check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv);
+    check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv,
+                    a.time_limit);
     j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
                      {"output_bytes", est.output}, {"threads", est.threads}};
     if (est.seconds > 1.0 || est.output > 1e9)
@@ -597,6 +630,15 @@ int run_map(const MapArgs& a) {
         if (!csv_file) throw InputError("error writing '" + prefix + ".csv' (disk full?)");
       }
     };
+    // A map that fails part-way (an invalid parameter row, a full disk) leaves no partial files.
+    auto discard_files = [&] {
+      npy.clear();
+      if (csv_file.is_open()) csv_file.close();
+      for (const auto& [key, file] : files.items()) {
+        std::error_code ec;
+        fs::remove(fs::path(prefix).parent_path() / file.get<std::string>(), ec);
+      }
+    };
     auto axis_values = [](const MapAxis& ax) {
       std::vector<double> v(static_cast<std::size_t>(ax.n));
       for (int i = 0; i < ax.n; ++i) v[i] = ax.value(i);
@@ -619,7 +661,9 @@ int run_map(const MapArgs& a) {
         write_csv_header(s.axis, cross, csv_file);
       }
       std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
-      const ParamDirectionMap m = compute_param_direction_map(
+      ParamDirectionMap m;
+      try {
+        m = compute_param_direction_map(
           s.params, s.state, s.axis, s.theta_n, options, make_progress(),
           [&](const ParamDirectionRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.theta_n;
@@ -630,7 +674,11 @@ int run_map(const MapArgs& a) {
                 shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
                                    static_cast<int>(k % s.theta_n));
           });
-      finish_files();
+        finish_files();
+      } catch (...) {
+        discard_files();
+        throw;
+      }
       j.update(to_json(m));
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
@@ -685,14 +733,20 @@ int run_map(const MapArgs& a) {
         open_csv();
         write_csv_header(s.axis, s.axis2, cross, csv_file);
       }
-      const ParamParamMap m = compute_param_param_map(
+      ParamParamMap m;
+      try {
+        m = compute_param_param_map(
           s.params, s.state, s.axis, s.axis2, options, make_progress(),
           [&](const ParamParamRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.axis2.n;
             append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
             if (csv_file.is_open()) write_csv_rows(s.axis, s.axis2, r, csv_file);
           });
-      finish_files();
+        finish_files();
+      } catch (...) {
+        discard_files();
+        throw;
+      }
       j.update(to_json(m));
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
@@ -792,6 +846,10 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                "write PREFIX.json and the cells: grid maps PREFIX_<array>.npy "
                                "(or PREFIX.csv with --format csv) + PREFIX_critical.csv; "
                                "direction maps PREFIX.csv");
+  o["--time-limit"] = cmd->add_option(
+      "--time-limit", args->time_limit,
+      "grid maps: refuse up front when the estimated time of the cells exceeds this many "
+      "seconds (default 600)");
   o["--format"] = cmd->add_option("--format", args->format,
                                   "cells of a grid map: npy (default; numpy arrays of codes + axis "
                                   "vectors) | csv (one line per cell)");

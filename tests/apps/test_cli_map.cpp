@@ -298,7 +298,8 @@ assert len(rows) == s["cells"]
 }
 
 // A grid whose output cannot fit the disk is refused before any cell is computed, naming the
-// options that make it fit.
+// options that make it fit (--time-limit raised: the time check would refuse it first). Without
+// --time-limit, the same map is refused by its time estimate.
 TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
   const fs::path prefix = scratch_dir() / "huge";
   struct statvfs st {};
@@ -310,9 +311,26 @@ TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
     return;
   }
   const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
-                    "--n 100000 --theta-n 1000000 --out " + prefix.string());
+                    "--n 100000 --theta-n 1000000 --time-limit 1e9 --out " + prefix.string());
   CHECK(r.code == 2);
   CHECK(r.err.find("--theta-n") != std::string::npos);
   CHECK(r.err.find("free") != std::string::npos);
   CHECK_FALSE(fs::exists(prefix.string() + "_count.npy"));
+  const Run t = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
+                    "--n 100000 --theta-n 1000000");
+  CHECK(t.code == 2);
+  CHECK(t.err.find("--time-limit") != std::string::npos);
+}
+
+// A grid with an invalid row (A not positive definite from a12 = 1.0102 on) is refused, the
+// message names the first invalid grid value, and no partial output is left behind.
+TEST_CASE("CliGridMapWithAnInvalidRowLeavesNoFiles", "[cli][map]") {
+  const fs::path prefix = scratch_dir() / "invalid_row";
+  const Run r = run("map --preset fig5b --kind param-direction --param a12 --from 0.5 --to 1.5 "
+                    "--n 50 --theta-n 10 --out " + prefix.string());
+  CHECK(r.code == 2);
+  // Grid values 0.5 + i / 49: the first with a12 >= 1 (det A <= 0) is i = 25, 1.0102...
+  CHECK(r.err.find("a12 = 1.010204") != std::string::npos);
+  for (const char* f : {"_count.npy", "_types.npy", "_x.npy", "_theta.npy", ".json"})
+    CHECK_FALSE(fs::exists(prefix.string() + f));
 }

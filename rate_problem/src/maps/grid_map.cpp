@@ -303,7 +303,10 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   std::vector<LoadRate> loads(static_cast<std::size_t>(theta_n));
   for (int j = 0; j < theta_n; ++j) loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
   // Without a sink the whole grid is kept; with one, a buffer of one block of rows.
-  const int block_rows = sink ? std::min(axis.n, grid_block_rows(theta_n)) : axis.n;
+  map.threads = resolve_threads(options.threads, axis.n);
+  // At least a few rows per worker in a block, or long rows would run on one thread.
+  const int block_rows =
+      sink ? std::min(axis.n, std::max(grid_block_rows(theta_n), 4 * map.threads)) : axis.n;
   const std::size_t buffer_cells =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer_cells, 0);
@@ -313,7 +316,6 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   std::vector<int64_t> row_unreliable(static_cast<std::size_t>(axis.n), 0);
   std::vector<std::vector<CriticalDirectionPoint>> row_crit(static_cast<std::size_t>(axis.n));
 
-  map.threads = resolve_threads(options.threads, axis.n);
   const RateMethod method = options.method;
   const bool cross = map.cross_checked;
   int block_begin = 0;
@@ -467,14 +469,14 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   map.axis1 = axis1;
   map.axis2 = axis2;
   map.cross_checked = options.method != RateMethod::kEnumerate;
-  const int block_rows = sink ? std::min(n1, grid_block_rows(n2)) : n1;
+  map.threads = resolve_threads(options.threads, n1);
+  const int block_rows = sink ? std::min(n1, std::max(grid_block_rows(n2), 4 * map.threads)) : n1;
   const std::size_t buffer_cells = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer_cells, 0), types(buffer_cells, 0);
   std::vector<int8_t> min_count(buffer_cells, 0), max_count(buffer_cells, 0);
   std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
   std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis),
       row_unr(row_dis);
-  map.threads = resolve_threads(options.threads, n1);
   MapOptions cell_options = options;
   cell_options.threads = 1;
 
