@@ -110,6 +110,15 @@ TEST_CASE("options without effect in their context are errors", "[cli][options]"
   bad("map --preset fig5b --kind param-direction --param mu --from 0.5 --to 2 --mu 3",
       {"--mu", "axis"});
   bad("map --preset fig5b --out ''", {"--out"});
+  bad("lcp solve '" + kLcp + "' --all-solvers --trace", {"--trace", "--json"});
+  // simulate: options of another load type, heat options without --heat.
+  const std::string base = "simulate --a11 1 --a12 0 --a22 1 --mu 0.5 ";
+  bad(base + "--steps 10", {"--steps", "--load ramp", "fretting"});
+  bad(base + "--load ramp --cycles 3", {"--cycles", "--load fretting"});
+  bad(base + "--load ramp --period 2", {"--period"});
+  bad(base + "--T-body 300 300", {"--T-body", "--heat"});
+  bad(base + "--T-ref 300", {"--T-ref", "--heat"});
+  CHECK(run_cpkit(base + "--heat --T-body 300 300 --conductance 0.1 0.1 --cycles 1").code == 0);
 }
 
 TEST_CASE("map summary: an open interval, as the sectors", "[cli][map]") {
