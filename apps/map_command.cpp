@@ -301,15 +301,16 @@ MapProgress make_progress() {
   };
 }
 
-/// Runs the plotting script on PREFIX.json; never fails the command (the data is written).
+/// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
+/// written either way; the caller then exits 4: a requested plot that fails is a failure).
 /// The script gets an argument vector (run_program): the prefix is data, never shell code.
-void run_plot(const std::string& prefix, nlohmann::json& files) {
+bool run_plot(const std::string& prefix, nlohmann::json& files) {
   std::string searched;
   const std::string script = find_data_file("cpkit_plot.py", &searched);
   if (script.empty()) {
     std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
               << "); the data is in " << prefix << ".csv and " << prefix << ".json\n";
-    return;
+    return false;
   }
   const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
   const std::string cmd = command_text(argv);
@@ -319,7 +320,9 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
     files["png"] = fs::path(prefix + ".png").filename().string();
     files["svg"] = fs::path(prefix + ".svg").filename().string();
     std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
-  } else if (code == kPlotNoMatplotlib) {
+    return true;
+  }
+  if (code == kPlotNoMatplotlib) {
     std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
               << ". The data was written (" << prefix << ".csv, " << prefix
               << ".json). To get the picture install matplotlib (Debian: apt-get install "
@@ -330,6 +333,7 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
               << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
               << "); the data was written. Command:\n  " << cmd << '\n';
   }
+  return false;
 }
 
 void write_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
@@ -534,12 +538,13 @@ int run_map(const MapArgs& a) {
     };
   }
 
+  bool plot_failed = false;
   if (!prefix.empty()) {
     files["json"] = name + ".json";
     j["files"] = files;
     write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     if (a.plot) {
-      run_plot(prefix, files);
+      plot_failed = !run_plot(prefix, files);
       j["files"] = files;
       write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
@@ -554,7 +559,8 @@ int run_map(const MapArgs& a) {
       std::cout << '\n';
     }
   }
-  return disagreements > 0 ? kExitDisagreement : kExitOk;
+  if (disagreements > 0) return kExitDisagreement;
+  return plot_failed ? kExitInternal : kExitOk;  // the picture was asked for and is missing
 }
 
 }  // namespace
