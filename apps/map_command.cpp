@@ -118,7 +118,8 @@ void check_options_have_effect(const MapArgs& a, const MapSetup& s) {
       if (a.given(o)) throw InputError(std::string(o) + " has no effect " + why);
   };
   if (s.kind == MapKind::kDirection)
-    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2"},
+    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2",
+             "--threads"},
             "in a direction map (it has no parameter axis; use --kind param-direction or "
             "param-param)");
   if (s.kind == MapKind::kParamDirection)

@@ -110,6 +110,11 @@ TEST_CASE("options without effect in their context are errors", "[cli][options]"
   bad("map --preset fig5b --kind param-direction --param mu --from 0.5 --to 2 --mu 3",
       {"--mu", "axis"});
   bad("map --preset fig5b --out ''", {"--out"});
+  bad("map --preset fig5b --threads 4", {"--threads", "direction"});
+  const std::string rate = "rate --a11 1 --a12 0.5 --a22 1 --mu 3 --dF 1 1 ";
+  bad(rate + "--state b --sgnPT -1", {"--sgnPT", "state b"});
+  bad(rate + "--state b --k_a 1", {"--k_a", "state b"});
+  CHECK(run_cpkit(rate + "--state d --P_N 1 --sgnPT -1 --k_a 0.1").code == 0);
   bad("lcp solve '" + kLcp + "' --all-solvers --trace", {"--trace", "--json"});
   // simulate: options of another load type, heat options without --heat.
   const std::string base = "simulate --a11 1 --a12 0 --a22 1 --mu 0.5 ";
