@@ -47,6 +47,11 @@ bool have_matplotlib() {
 TEST_CASE("unknown subcommands and options are named, before any 'required' complaint",
           "[cli][options]") {
   bad("foo", {"unknown subcommand 'foo'", "lcp", "simulate"});
+  bad("", {"'cpkit' needs a subcommand: lcp, map, rate, step, simulate"});
+  bad("lcp", {"'cpkit lcp' needs a subcommand: solve, enumerate, verify"});
+  CHECK(run_cpkit("--help").code == 0);
+  CHECK(run_cpkit("lcp --help").code == 0);
+  CHECK(run_cpkit("--version").out.find("cpkit ") == 0);
   bad("lcp foo", {"unknown subcommand 'foo' for 'cpkit lcp'", "solve, enumerate, verify"});
   bad("step --bogus", {"unknown option --bogus", "cpkit step"}, {"--a11"});
   bad("lcp solve '" + kLcp + "' --bogus=3", {"unknown option --bogus"});
