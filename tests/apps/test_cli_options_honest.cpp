@@ -91,6 +91,17 @@ TEST_CASE("a JSON LCP with a number beyond double is bad input", "[cli][options]
     bad(std::string(cmd) + " '" + f.string() + "'", {"1e400"}, {"internal", "json.exception"});
 }
 
+TEST_CASE("a simulate config with a number beyond double or bad JSON: the user's words",
+          "[cli][options]") {
+  const fs::path f = scratch_dir() / "big_cfg.json";
+  std::ofstream(f) << R"({"parameters": {"a11": 1e400, "a12": 0, "a22": 1, "mu": 0.5}})";
+  bad("simulate --config '" + f.string() + "'", {"1e400", "beyond the range of double"},
+      {"json.exception"});
+  const fs::path g = scratch_dir() / "broken_cfg.json";
+  std::ofstream(g) << R"({"parameters": )";
+  bad("simulate --config '" + g.string() + "'", {"not valid JSON"}, {"json.exception"});
+}
+
 TEST_CASE("options without effect in their context are errors", "[cli][options]") {
   bad("lcp solve '" + kLcp + "' --all-solvers --solver ipopt", {"--all-solvers", "--solver"});
   bad("lcp verify '" + kLcp + "' --skip foo", {"--skip", "foo"});
