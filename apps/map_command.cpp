@@ -229,8 +229,12 @@ MapSetup build_setup(const MapArgs& a) {
     throw InputError(std::string(to_string(s.kind)) + " map needs --param NAME --from X --to Y");
   if (s.kind == MapKind::kParamParam && !s.have_axis2)
     throw InputError("param-param map needs --param2 NAME --from2 X --to2 Y");
-  if (s.kind != MapKind::kDirection) throw_if_invalid(s.axis.validate(), "--param axis");
-  if (s.kind == MapKind::kParamParam) throw_if_invalid(s.axis2.validate(), "--param2 axis");
+  // MapAxis::validate() names the fields n, from, to: here they are options.
+  if (s.kind != MapKind::kDirection)
+    throw_if_invalid_option(s.axis.validate(), {{"n", "--n"}, {"from", "--from"}, {"to", "--to"}});
+  if (s.kind == MapKind::kParamParam)
+    throw_if_invalid_option(s.axis2.validate(),
+                            {{"n", "--n2"}, {"from", "--from2"}, {"to", "--to2"}});
   if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
     throw InputError("--theta-n must be in [1, 1000000]");
   check_map_memory(s);

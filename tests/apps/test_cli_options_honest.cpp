@@ -65,6 +65,9 @@ TEST_CASE("library limits are reported with the option's name", "[cli][options]"
       {"--max-size must lie in [1, 30], got 40"}, {"EnumerationOptions", "::"});
   bad("lcp solve '" + kLcp + "' --time-limit 0", {"--time-limit"}, {"time_limit_s"});
   bad("lcp solve '" + kLcp + "' --max-iter -1", {"--max-iter"}, {"max_iterations"});
+  bad("map --preset fig5b --kind param-direction --param mu --from 2 --to 1 --n 5",
+      {"--from < --to"});
+  bad("map --preset state-d-mu-kappa --n2 0", {"--n2 must be >= 1"});
 }
 
 TEST_CASE("an integral number written as 1e1 or 10.0 is an integer", "[cli][options]") {
