@@ -168,6 +168,12 @@ std::string check_command_words(const CLI::App& app, const std::vector<std::stri
     }
     cur = sub;
   }
+  // `cpkit` or `cpkit lcp` alone: say which subcommands there are (--help/--version excepted).
+  bool asks = false;
+  for (const auto& t : args) asks |= t == "--help" || t == "-h" || t == "--version";
+  if (!asks && !cur->get_subcommands({}).empty())
+    return "'" + command_path(cur) + "' needs a subcommand: " + subcommand_names(*cur) +
+           " (see '" + command_path(cur) + " --help')";
   return {};
 }
 

@@ -173,6 +173,9 @@ int run_all_lcp_solvers(const LcpSolveArgs& a, const LcpProblem& problem,
 int run_lcp_solve(const LcpSolveArgs& a) {
   const LcpProblem problem = read_lcp_file(a.file, a.q_file);  // validates; names file/line
   const CommonOptions options = common_options(a);
+  if (a.all_solvers && a.trace && !a.json)
+    throw InputError("--trace with --all-solvers needs --json (the table has no room for the "
+                     "traces; or trace one solver with --solver NAME --trace)");
   if (a.all_solvers) return run_all_lcp_solvers(a, problem, options);
   const SolverEntry& entry = find_lcp_solver(a.solver, problem);
   const SolveResult r = run_one_solver(entry, problem, options);

@@ -117,7 +117,8 @@ void check_options_have_effect(const MapArgs& a, const MapSetup& s) {
       if (a.given(o)) throw InputError(std::string(o) + " has no effect " + why);
   };
   if (s.kind == MapKind::kDirection)
-    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2"},
+    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2",
+             "--threads"},
             "in a direction map (it has no parameter axis; use --kind param-direction or "
             "param-param)");
   if (s.kind == MapKind::kParamDirection)
@@ -227,8 +228,12 @@ MapSetup build_setup(const MapArgs& a) {
     throw InputError(std::string(to_string(s.kind)) + " map needs --param NAME --from X --to Y");
   if (s.kind == MapKind::kParamParam && !s.have_axis2)
     throw InputError("param-param map needs --param2 NAME --from2 X --to2 Y");
-  if (s.kind != MapKind::kDirection) throw_if_invalid(s.axis.validate(), "--param axis");
-  if (s.kind == MapKind::kParamParam) throw_if_invalid(s.axis2.validate(), "--param2 axis");
+  // MapAxis::validate() names the fields n, from, to: here they are options.
+  if (s.kind != MapKind::kDirection)
+    throw_if_invalid_option(s.axis.validate(), {{"n", "--n"}, {"from", "--from"}, {"to", "--to"}});
+  if (s.kind == MapKind::kParamParam)
+    throw_if_invalid_option(s.axis2.validate(),
+                            {{"n", "--n2"}, {"from", "--from2"}, {"to", "--to2"}});
   if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
     throw InputError("--theta-n must be in [1, 1000000]");
   return s;
@@ -297,15 +302,16 @@ MapProgress make_progress() {
   };
 }
 
-/// Runs the plotting script on PREFIX.json; never fails the command (the data is written).
+/// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
+/// written either way; the caller then exits 4: a requested plot that fails is a failure).
 /// The script gets an argument vector (run_program): the prefix is data, never shell code.
-void run_plot(const std::string& prefix, nlohmann::json& files) {
+bool run_plot(const std::string& prefix, nlohmann::json& files) {
   std::string searched;
   const std::string script = find_data_file("cpkit_plot.py", &searched);
   if (script.empty()) {
     std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
               << "); the data is in " << prefix << ".json and the files it lists\n";
-    return;
+    return false;
   }
   const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
   const std::string cmd = command_text(argv);
@@ -315,7 +321,9 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
     files["png"] = fs::path(prefix + ".png").filename().string();
     files["svg"] = fs::path(prefix + ".svg").filename().string();
     std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
-  } else if (code == kPlotNoMatplotlib) {
+    return true;
+  }
+  if (code == kPlotNoMatplotlib) {
     std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
               << ". The data was written (" << prefix
               << ".json and the files it lists). To get the picture install matplotlib (Debian: "
@@ -326,6 +334,7 @@ void run_plot(const std::string& prefix, nlohmann::json& files) {
               << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
               << "); the data was written. Command:\n  " << cmd << '\n';
   }
+  return false;
 }
 
 void write_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
@@ -774,12 +783,13 @@ int run_map(const MapArgs& a) {
     }
   }
 
+  bool plot_failed = false;
   if (!prefix.empty()) {
     files["json"] = name + ".json";
     j["files"] = files;
     write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     if (a.plot) {
-      run_plot(prefix, files);
+      plot_failed = !run_plot(prefix, files);
       j["files"] = files;
       write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
@@ -794,7 +804,8 @@ int run_map(const MapArgs& a) {
       std::cout << '\n';
     }
   }
-  return disagreements > 0 ? kExitDisagreement : kExitOk;
+  if (disagreements > 0) return kExitDisagreement;
+  return plot_failed ? kExitInternal : kExitOk;  // the picture was asked for and is missing
 }
 
 }  // namespace

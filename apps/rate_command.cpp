@@ -230,7 +230,18 @@ void add_rate_command(CLI::App& app, Context& ctx) {
                   "enumerate (default, cross-checked against analytic), analytic, lemke, "
                   "fb-newton, ipopt");
   cmd->add_flag("--json", args->json, "print one JSON object");
-  cmd->callback([args, &ctx]() { ctx.exit_code = run_rate(*args); });
+  cmd->callback([args, &ctx, cmd]() {
+    // Options that would have no effect in the chosen state are errors, never silence.
+    const std::string st = args->state;
+    if (st != "d" && cmd->count("--sgnPT") > 0)
+      throw InputError("--sgnPT has no effect in state " + st + ": only state d (sliding) has a "
+                       "sign of P_T");
+    if ((st == "a" || st == "b") && (cmd->count("--k_a") > 0 || cmd->count("--P_s") > 0))
+      throw InputError(std::string(cmd->count("--k_a") > 0 ? "--k_a" : "--P_s") +
+                       " has no effect in state " + st + ": P_N = 0 there, so no wear (kappa = "
+                       "k_a P_N / (3 P_s) enters states c and d)");
+    ctx.exit_code = run_rate(*args);
+  });
 }
 
 }  // namespace cpkit::cli

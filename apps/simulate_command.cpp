@@ -229,6 +229,27 @@ int run(const SimArgs& a) {
   Settings s;
   if (!a.config.empty()) read_simulate_config(a.config, s);
   apply_args(a, s);
+  // Command-line options of another load type, or heat options without --heat, would have no
+  // effect: errors, never silence.
+  auto only_with = [&](std::initializer_list<const char*> keys, const std::string& needs) {
+    for (const char* k : keys)
+      if (a.num.count(k))
+        throw InputError(std::string("--") + k + " has no effect here: it needs " + needs);
+  };
+  if (s.load_type != "fretting")
+    only_with({"F_N", "amplitude", "cycles", "steps-per-cycle", "ramp-steps"},
+              "--load fretting (the load is " + s.load_type + ")");
+  if (s.load_type != "ramp")
+    only_with({"F_T0", "F_N0", "F_T1", "F_N1", "duration", "steps"},
+              "--load ramp (the load is " + s.load_type + ")");
+  if (s.load_type == "ramp")
+    only_with({"period"}, "--load fretting or csv (the load is ramp)");
+  if (!s.opt.heat.enabled) {
+    only_with({"heat-capacity", "T-ref", "T-initial"}, "--heat (or heat.enabled)");
+    if (!a.T_body.empty() || !a.conductance.empty())
+      throw InputError(std::string(!a.T_body.empty() ? "--T-body" : "--conductance") +
+                       " has no effect here: it needs --heat (or heat.enabled)");
+  }
   // Wear options that would have no effect are errors (from the command line or the config).
   const bool mroz = s.opt.wear.law == rate::WearLaw::kMrozStupkiewicz;
   if (!mroz && s.opt.wear.k_M != 0)

@@ -225,8 +225,18 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
   json j;
   try {
     j = json::parse(text);
+  } catch (const json::out_of_range& e) {
+    // In the user's words, not the JSON library's ("[json.exception.out_of_range.406] ...").
+    const std::string w = e.what();
+    const auto q = w.find('\'');
+    const std::string number = q == std::string::npos ? std::string() : w.substr(q);
+    throw InputError("config '" + origin + "': the number " + number +
+                     " is beyond the range of double (|x| > 1.8e308)");
   } catch (const std::exception& e) {
-    throw InputError("config '" + origin + "' is not valid JSON: " + e.what());
+    std::string w = e.what();
+    if (w.rfind("[json.exception.", 0) == 0 && w.find("] ") != std::string::npos)
+      w = w.substr(w.find("] ") + 2);  // drop the library's error code
+    throw InputError("config '" + origin + "' is not valid JSON: " + w);
   }
   if (!j.is_object()) throw InputError("config '" + origin + "': the top level must be an object");
   try {

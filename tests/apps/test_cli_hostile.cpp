@@ -91,7 +91,7 @@ TEST_CASE("simulate: config integers must be integers in range", "[cli][simulate
       {"{" + params + "}, \"output\": {\"every\": -1}}", "output.every"},
       {"{" + params + "}, \"output\": {\"every\": 1e300}}", "output.every"},
       {"{" + params + "}, \"heat\": {\"T_body\": [300, \"hot\"]}}", "heat.T_body[1]"},
-      {"{" + params + "}, \"load\": {\"F_N\": 1e999}}", "number overflow"},
+      {"{" + params + "}, \"load\": {\"F_N\": 1e999}}", "beyond the range of double"},
       {"{\"name\": " + std::string(100, '[') + std::string(100, ']') + "}", "nests deeper"},
   };
   int k = 0;

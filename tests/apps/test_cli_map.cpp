@@ -172,7 +172,8 @@ TEST_CASE("CliPlotWritesPngAndSvg", "[cli][map][plot]") {
 }
 
 TEST_CASE("CliPlotWithoutMatplotlibStillWritesTheData", "[cli][map][plot]") {
-  // A Python without matplotlib: the data is written and the message says how to get the picture.
+  // A Python without matplotlib: the data is written, the message says how to get the picture,
+  // and the exit code is 4 (a requested picture that is missing is a failure).
   const fs::path fake = scratch_dir() / "fake_python.sh";
   {
     std::ofstream f(fake);
@@ -189,7 +190,7 @@ TEST_CASE("CliPlotWithoutMatplotlibStillWritesTheData", "[cli][map][plot]") {
   const int rc = std::system((env_cmd + kCpkit + " map --preset fig5a --out " + prefix.string() +
                               " --plot >/dev/null 2>" + o.string())
                                  .c_str());
-  CHECK(WEXITSTATUS(rc) == 0);
+  CHECK(WEXITSTATUS(rc) == 4);
   CHECK(fs::exists(prefix.string() + ".csv"));
   CHECK_FALSE(fs::exists(prefix.string() + ".png"));
   CHECK(slurp(o).find("python3-matplotlib") != std::string::npos);

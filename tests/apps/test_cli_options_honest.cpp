@@ -47,6 +47,11 @@ bool have_matplotlib() {
 TEST_CASE("unknown subcommands and options are named, before any 'required' complaint",
           "[cli][options]") {
   bad("foo", {"unknown subcommand 'foo'", "lcp", "simulate"});
+  bad("", {"'cpkit' needs a subcommand: lcp, map, rate, step, simulate"});
+  bad("lcp", {"'cpkit lcp' needs a subcommand: solve, enumerate, verify"});
+  CHECK(run_cpkit("--help").code == 0);
+  CHECK(run_cpkit("lcp --help").code == 0);
+  CHECK(run_cpkit("--version").out.find("cpkit ") == 0);
   bad("lcp foo", {"unknown subcommand 'foo' for 'cpkit lcp'", "solve, enumerate, verify"});
   bad("step --bogus", {"unknown option --bogus", "cpkit step"}, {"--a11"});
   bad("lcp solve '" + kLcp + "' --bogus=3", {"unknown option --bogus"});
@@ -60,6 +65,9 @@ TEST_CASE("library limits are reported with the option's name", "[cli][options]"
       {"--max-size must lie in [1, 30], got 40"}, {"EnumerationOptions", "::"});
   bad("lcp solve '" + kLcp + "' --time-limit 0", {"--time-limit"}, {"time_limit_s"});
   bad("lcp solve '" + kLcp + "' --max-iter -1", {"--max-iter"}, {"max_iterations"});
+  bad("map --preset fig5b --kind param-direction --param mu --from 2 --to 1 --n 5",
+      {"--from < --to"});
+  bad("map --preset state-d-mu-kappa --n2 0", {"--n2 must be >= 1"});
 }
 
 TEST_CASE("an integral number written as 1e1 or 10.0 is an integer", "[cli][options]") {
@@ -86,6 +94,17 @@ TEST_CASE("a JSON LCP with a number beyond double is bad input", "[cli][options]
     bad(std::string(cmd) + " '" + f.string() + "'", {"1e400"}, {"internal", "json.exception"});
 }
 
+TEST_CASE("a simulate config with a number beyond double or bad JSON: the user's words",
+          "[cli][options]") {
+  const fs::path f = scratch_dir() / "big_cfg.json";
+  std::ofstream(f) << R"({"parameters": {"a11": 1e400, "a12": 0, "a22": 1, "mu": 0.5}})";
+  bad("simulate --config '" + f.string() + "'", {"1e400", "beyond the range of double"},
+      {"json.exception"});
+  const fs::path g = scratch_dir() / "broken_cfg.json";
+  std::ofstream(g) << R"({"parameters": )";
+  bad("simulate --config '" + g.string() + "'", {"not valid JSON"}, {"json.exception"});
+}
+
 TEST_CASE("options without effect in their context are errors", "[cli][options]") {
   bad("lcp solve '" + kLcp + "' --all-solvers --solver ipopt", {"--all-solvers", "--solver"});
   bad("lcp verify '" + kLcp + "' --skip foo", {"--skip", "foo"});
@@ -110,6 +129,20 @@ TEST_CASE("options without effect in their context are errors", "[cli][options]"
   bad("map --preset fig5b --kind param-direction --param mu --from 0.5 --to 2 --mu 3",
       {"--mu", "axis"});
   bad("map --preset fig5b --out ''", {"--out"});
+  bad("map --preset fig5b --threads 4", {"--threads", "direction"});
+  const std::string rate = "rate --a11 1 --a12 0.5 --a22 1 --mu 3 --dF 1 1 ";
+  bad(rate + "--state b --sgnPT -1", {"--sgnPT", "state b"});
+  bad(rate + "--state b --k_a 1", {"--k_a", "state b"});
+  CHECK(run_cpkit(rate + "--state d --P_N 1 --sgnPT -1 --k_a 0.1").code == 0);
+  bad("lcp solve '" + kLcp + "' --all-solvers --trace", {"--trace", "--json"});
+  // simulate: options of another load type, heat options without --heat.
+  const std::string base = "simulate --a11 1 --a12 0 --a22 1 --mu 0.5 ";
+  bad(base + "--steps 10", {"--steps", "--load ramp", "fretting"});
+  bad(base + "--load ramp --cycles 3", {"--cycles", "--load fretting"});
+  bad(base + "--load ramp --period 2", {"--period"});
+  bad(base + "--T-body 300 300", {"--T-body", "--heat"});
+  bad(base + "--T-ref 300", {"--T-ref", "--heat"});
+  CHECK(run_cpkit(base + "--heat --T-body 300 300 --conductance 0.1 0.1 --cycles 1").code == 0);
 }
 
 TEST_CASE("map summary: an open interval, as the sectors", "[cli][map]") {
