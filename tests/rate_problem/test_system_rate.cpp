@@ -392,6 +392,16 @@ TEST_CASE("N-point rate problem: bad input", "[rate][system]") {
   CHECK_THROWS_AS(solve_rate_problem(S, Vec::Zero(4)), cpkit::InputError);
 }
 
+TEST_CASE("beyond the enumeration's size limit: complete = false, nothing listed", "[rate][system]") {
+  ContactSystem S;
+  S.points.resize(9);  // 9 points in state b: LCP size 27 > 24
+  S.A = Eigen::MatrixXd::Identity(18, 18);
+  const SystemRateSolutionSet s = solve_rate_problem(S, Vec::Ones(18));
+  CHECK_FALSE(s.complete);
+  CHECK(s.solutions.empty());
+  CHECK(s.message.find("limit") != std::string::npos);
+}
+
 TEST_CASE("summary agrees with the full solve", "[rate][system]") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> U(-1, 1);

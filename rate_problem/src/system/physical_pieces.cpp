@@ -243,11 +243,17 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   struct ZPiece { std::vector<int> v; std::vector<Vec> rays; };
   std::vector<ZPiece> zp;
   std::ostringstream msg;
+  constexpr int kMaxLcp = 24;  // EnumerationOptions::max_size's default
   if (pre.m == 0) {
     verts.push_back(base);
+  } else if (pre.m > kMaxLcp) {
+    out.complete = false;
+    msg << "the rate LCP has size " << pre.m << " (3 per point in state b, 1 per point in state d), "
+        << "beyond the complete enumeration's limit " << kMaxLcp << ": nothing is listed; ";
   } else {
     lcp::EnumerationOptions opt;
     opt.time_limit_s = 30;
+    opt.max_size = kMaxLcp;
     const lcp::SolutionSet set = lcp::enumerate_all(LcpProblem(pre.M, system_q(pre, dF)), opt);
     if (!set.complete) {
       out.complete = false;
