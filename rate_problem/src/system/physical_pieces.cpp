@@ -348,6 +348,16 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     if (!drop) kept.push_back(p);
   }
   for (const Geo& g : pcs) kept.push_back(g);
+  // rounding noise of exact zeros (e.g. dP_T of a separating point) printed as 0
+  auto clean = [](Vec v) {
+    for (Eigen::Index k = 0; k < v.size(); ++k)
+      if (std::abs(v(k)) <= 1e-3 * kGeoTol) v(k) = 0;
+    return v;
+  };
+  for (Geo& g : kept) {
+    g.a = clean(g.a);
+    if (g.kind == Kind::kSegment) g.b = clean(g.b);
+  }
   for (const Geo& g : kept) {
     SystemRateSolution s;
     s.types = decode_types(g.type, N);
