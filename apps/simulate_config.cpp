@@ -178,11 +178,11 @@ void parse_output(const json& v, SimulateSettings& s) {
   }
 }
 
-/// Bytes of the run: the load history and the recorded series (+ the per-cycle sums).
-double run_bytes(double steps, double cycles, int every) {
-  const double series = every > 0 ? steps / every + 2 : 0;
-  return steps * sizeof(rate::LoadPoint) + series * sizeof(rate::SimulationSample) +
-         2 * cycles * sizeof(double);
+/// Bytes the run keeps: the per-cycle sums, and the load history when it is read from a CSV
+/// file (fretting and ramp loads are generated point by point, and the time series is
+/// streamed to its file as it is produced, so neither grows with the steps).
+double run_bytes(double steps, double cycles, bool stored_history) {
+  return (stored_history ? steps * sizeof(rate::LoadPoint) : 0.0) + 2 * cycles * sizeof(double);
 }
 
 /// Nesting depth of the JSON text (brackets outside strings): a config is at most 3 deep, and
@@ -272,15 +272,14 @@ void read_simulate_config(const std::string& path, SimulateSettings& s) {
 void check_history_memory(std::int64_t steps, const SimulateSettings& s) {
   const double cycles =
       s.load_type == "fretting" ? static_cast<double>(s.fretting.cycles) : 0.0;
-  const double bytes = run_bytes(static_cast<double>(steps), cycles, s.every);
+  const double bytes = run_bytes(static_cast<double>(steps), cycles, s.load_type == "csv");
   if (bytes > static_cast<double>(kMemoryLimitBytes))
     throw InputError("the run would need about " + byte_text(bytes) + " of memory (" +
-                     std::to_string(steps) + " steps" +
-                     (s.every == 1   ? std::string(", each recorded")
-                      : s.every > 1 ? ", one in " + std::to_string(s.every) + " recorded"
-                                    : std::string()) +
+                     std::to_string(steps) + " steps, " +
+                     (s.load_type == "csv" ? std::string("the load history held in memory")
+                                           : std::string("two numbers per cycle")) +
                      "); the limit is " + byte_text(static_cast<double>(kMemoryLimitBytes)) +
-                     ": use fewer steps, or --every N to record fewer");
+                     ": use fewer steps or cycles");
 }
 
 void validate_simulate_settings(const SimulateSettings& s) {
@@ -310,6 +309,13 @@ void validate_simulate_settings(const SimulateSettings& s) {
   } else {
     throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
   }
+}
+
+rate::LoadSource make_simulate_source(const SimulateSettings& s, rate::LoadHistory& storage) {
+  if (s.load_type == "fretting") return rate::fretting_source(s.fretting);
+  if (s.load_type == "ramp") return rate::ramp_source(s.ramp);
+  storage = make_simulate_history(s);
+  return rate::history_source(storage);
 }
 
 rate::LoadHistory make_simulate_history(const SimulateSettings& s) {
