@@ -1,0 +1,342 @@
+// The N-point incremental step (system_step.hpp). Independent sources: the one-point step
+// enumeration with its closed forms (N = 1 and block-diagonal A, whose solution set is the
+// product of the points' sets), and a brute-force Newton from many starts on the physical
+// equations of every active set, written here without the library's elimination.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Dense>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/system_step.hpp"
+
+using namespace cpkit::rate;
+
+namespace {
+
+struct OnePoint {
+  ContactParameters a;
+  StepState s;
+  LoadIncrement l;
+};
+
+double uni(std::mt19937& g, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(g);
+}
+
+OnePoint random_point(std::mt19937& g, bool wear) {
+  OnePoint p;
+  p.a.a11 = uni(g, 0.5, 3);
+  p.a.a22 = uni(g, 0.5, 3);
+  p.a.a12 = uni(g, -0.9, 0.9) * std::sqrt(p.a.a11 * p.a.a22);
+  p.a.mu = uni(g, 0.1, 1.2);
+  p.a.C_T = uni(g, 0, 1) < 0.3 ? 0.0 : uni(g, 0, 0.5);
+  p.a.k_a = wear ? uni(g, 0.01, 8.0) : 0.0;  // up to Lambda < 0 (several solutions)
+  p.a.P_s = uni(g, 0.5, 2);
+  const int st = std::uniform_int_distribution<int>(0, 3)(g);
+  if (st == 0) {
+    p.s.g0 = -uni(g, 0, 0.5);  // open
+  } else if (st == 2) {
+    p.s.P_N0 = uni(g, 0.1, 2);
+    p.s.P_T0 = uni(g, -0.9, 0.9) * p.a.mu * p.s.P_N0;
+  } else if (st == 3) {
+    p.s.P_N0 = uni(g, 0.1, 2);
+    p.s.P_T0 = (uni(g, 0, 1) < 0.5 ? -1 : 1) * p.a.mu * p.s.P_N0;
+  }
+  p.l.dF_T = uni(g, -1, 1);
+  p.l.dF_N = uni(g, -1, 1);
+  return p;
+}
+
+StepProblem step_of(const OnePoint& p) {
+  StepProblem sp;
+  sp.params = p.a;
+  sp.state = p.s;
+  sp.load = p.l;
+  return sp;
+}
+
+SystemStepProblem system_of(const std::vector<OnePoint>& pts) {
+  const int N = static_cast<int>(pts.size());
+  SystemStepProblem sp;
+  sp.system.A = Eigen::MatrixXd::Zero(2 * N, 2 * N);
+  sp.DF.resize(2 * N);
+  for (int i = 0; i < N; ++i) {
+    const OnePoint& p = pts[static_cast<std::size_t>(i)];
+    sp.system.A(2 * i, 2 * i) = p.a.a11;
+    sp.system.A(2 * i, 2 * i + 1) = sp.system.A(2 * i + 1, 2 * i) = p.a.a12;
+    sp.system.A(2 * i + 1, 2 * i + 1) = p.a.a22;
+    SystemPoint q;
+    q.mu = p.a.mu;
+    q.C_T = p.a.C_T;
+    q.k_a = p.a.k_a;
+    q.P_s = p.a.P_s;
+    q.P_T = p.s.P_T0;
+    q.P_N = p.s.P_N0;
+    q.g = p.s.g0;
+    q.values_given = true;
+    sp.system.points.push_back(q);
+    sp.DF[2 * i] = p.l.dF_T;
+    sp.DF[2 * i + 1] = p.l.dF_N;
+  }
+  return sp;
+}
+
+bool same(const StepValues& a, const StepValues& b) {
+  const double f = 1e-7 * (1 + std::abs(a.P_N1) + std::abs(a.P_T1));
+  return std::abs(a.DP_N - b.DP_N) <= f && std::abs(a.DP_T - b.DP_T) <= f &&
+         std::abs(a.Dw_Ti - b.Dw_Ti) <= 1e-7 * (1 + std::abs(a.Dw_Ti)) &&
+         std::abs(a.Dw_N - b.Dw_N) <= 1e-7 * (1 + std::abs(a.Dw_N)) &&
+         std::abs(a.Dw_w - b.Dw_w) <= 1e-7 * (1 + std::abs(a.Dw_w));
+}
+
+/// The one-point point solutions, or false when the one-point set is a continuum.
+bool one_point_set(const OnePoint& p, std::vector<StepSolution>& out) {
+  StepEnumerationOptions o;
+  o.detect_jumps = false;
+  const StepSolutionSet s = enumerate_step(step_of(p), o);
+  if (s.infinite) return false;
+  out = s.solutions;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("OnePointSystemEqualsTheOnePointStep", "[system_step]") {
+  std::mt19937 g(12);
+  int compared = 0, multiple = 0;
+  for (int c = 0; c < 3000; ++c) {
+    const OnePoint p = random_point(g, c % 2 == 1);
+    std::vector<StepSolution> ref;
+    if (!one_point_set(p, ref)) continue;
+    const auto set = enumerate_system_step(system_of({p}));
+    INFO("case " << c);
+    REQUIRE(set.complete);
+    REQUIRE(set.solutions.size() == ref.size());
+    for (const auto& r : ref) {
+      int hits = 0;
+      for (const auto& s : set.solutions)
+        if (same(s.values[0], r.start) && s.types[0] == r.type) ++hits;
+      CHECK(hits == 1);
+    }
+    ++compared;
+    if (ref.size() > 1) ++multiple;
+  }
+  CHECK(compared > 2500);
+  CHECK(multiple > 20);  // the comparison covered non-unique steps
+}
+
+TEST_CASE("BlockDiagonalSystemIsTheProductOfOnePointSets", "[system_step]") {
+  std::mt19937 g(34);
+  int compared = 0, with_two_wear_slips = 0, incomplete = 0;
+  for (int c = 0; c < 400; ++c) {
+    const int N = c % 3 == 0 ? 3 : 2;
+    std::vector<OnePoint> pts;
+    std::vector<std::vector<StepSolution>> refs(static_cast<std::size_t>(N));
+    bool ok = true;
+    for (int i = 0; i < N; ++i) {
+      pts.push_back(random_point(g, c % 4 != 1));
+      ok = ok && one_point_set(pts.back(), refs[static_cast<std::size_t>(i)]);
+    }
+    if (!ok) continue;
+    std::size_t product = 1;
+    for (const auto& r : refs) product *= r.size();
+    const auto set = enumerate_system_step(system_of(pts));
+    INFO("case " << c << ", N = " << N);
+    // N = 2: m <= 2 in every active set, proved complete. N = 3 with wear may leave m = 3
+    // sets unresolved (complete = false): then what is found must still be in the product.
+    if (N == 2) REQUIRE(set.complete);
+    if (set.complete) {
+      REQUIRE(set.solutions.size() == product);
+    } else {
+      REQUIRE(set.solutions.size() <= product);
+      ++incomplete;
+    }
+    for (const auto& s : set.solutions) {
+      for (int i = 0; i < N; ++i) {
+        bool found = false;
+        for (const auto& r : refs[static_cast<std::size_t>(i)])
+          found = found || (same(s.values[static_cast<std::size_t>(i)], r.start) &&
+                            s.types[static_cast<std::size_t>(i)] == r.type);
+        CHECK(found);
+      }
+      int wear_slips = 0;
+      for (int i = 0; i < N; ++i)
+        if ((s.types[static_cast<std::size_t>(i)] == SolutionType::kSlipPlus ||
+             s.types[static_cast<std::size_t>(i)] == SolutionType::kSlipMinus) &&
+            pts[static_cast<std::size_t>(i)].a.k_a > 0)
+          ++wear_slips;
+      if (wear_slips >= 2) ++with_two_wear_slips;
+    }
+    ++compared;
+  }
+  CHECK(compared > 300);
+  CHECK(with_two_wear_slips > 20);  // the resultant route (m = 2) was exercised
+  WARN("block-diagonal cases with an unresolved m = 3 active set: " << incomplete);
+}
+
+namespace {
+
+/// Brute force for one active set with both points slipping (signs s1, s2) of a coupled
+/// 2-point system: Newton from many starts on the physical equations, unknowns
+/// x = (DP (4), Dw (4), xi (2)):  A Dw + DP = DF;  Dw_T,i - C_T DP_T,i - xi_i = 0;
+/// s_i (P_T0 + DP_T) - mu (P_N0 + DP_N) = 0;  g0 + Dw_N - k s P_N1 xi = 0.
+std::vector<Eigen::VectorXd> brute_force_slip_slip(const SystemStepProblem& p, int s1, int s2,
+                                                   std::mt19937& g) {
+  const auto& A = p.system.A;
+  const int s[2] = {s1, s2};
+  auto eval = [&](const Eigen::VectorXd& x, Eigen::VectorXd& f, Eigen::MatrixXd& J) {
+    f.setZero(10);
+    J.setZero(10, 10);
+    f.head(4) = A * x.segment(4, 4) + x.head(4) - p.DF;
+    J.block(0, 4, 4, 4) = A;
+    J.block(0, 0, 4, 4).setIdentity();
+    for (int i = 0; i < 2; ++i) {
+      const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
+      const double k = q.k_a / (3 * q.P_s);
+      const double PN1 = q.P_N + x[2 * i + 1], xi = x[8 + i];
+      f[4 + i] = x[4 + 2 * i] - q.C_T * x[2 * i] - xi;
+      J(4 + i, 4 + 2 * i) = 1;
+      J(4 + i, 2 * i) = -q.C_T;
+      J(4 + i, 8 + i) = -1;
+      f[6 + i] = s[i] * (q.P_T + x[2 * i]) - q.mu * PN1;
+      J(6 + i, 2 * i) = s[i];
+      J(6 + i, 2 * i + 1) = -q.mu;
+      f[8 + i] = q.g + x[4 + 2 * i + 1] - k * s[i] * PN1 * xi;
+      J(8 + i, 4 + 2 * i + 1) = 1;
+      J(8 + i, 2 * i + 1) = -k * s[i] * xi;
+      J(8 + i, 8 + i) = -k * s[i] * PN1;
+    }
+  };
+  std::vector<Eigen::VectorXd> roots;
+  Eigen::VectorXd f, x(10);
+  Eigen::MatrixXd J;
+  for (int start = 0; start < 300; ++start) {
+    for (int j = 0; j < 10; ++j) x[j] = uni(g, -30, 30);
+    bool conv = false;
+    for (int it = 0; it < 40 && !conv; ++it) {
+      eval(x, f, J);
+      const Eigen::VectorXd dx = J.fullPivLu().solve(f);
+      x -= dx;
+      conv = dx.cwiseAbs().maxCoeff() <= 1e-13 * (1 + x.cwiseAbs().maxCoeff());
+    }
+    eval(x, f, J);
+    if (!conv || !(f.cwiseAbs().maxCoeff() <= 1e-9)) continue;
+    bool dup = false;
+    for (const auto& r : roots) dup = dup || (r - x).cwiseAbs().maxCoeff() <= 1e-6 * (1 + x.cwiseAbs().maxCoeff());
+    if (!dup) roots.push_back(x);
+  }
+  return roots;
+}
+
+}  // namespace
+
+TEST_CASE("TwoCoupledWearSlipsMatchBruteForce", "[system_step]") {
+  // Coupled 2-point systems started in slip (state d) with large wear, so that both points
+  // slipping gives two coupled bilinear equations (m = 2). Every root that satisfies the sign
+  // conditions (P_N1 >= 0, s xi >= 0) must be in the enumerated set, and vice versa.
+  std::mt19937 g(56);
+  int with_roots = 0, multi = 0;
+  for (int c = 0; c < 40; ++c) {
+    std::vector<OnePoint> pts;
+    for (int i = 0; i < 2; ++i) {
+      OnePoint p = random_point(g, true);
+      p.a.k_a = uni(g, 1.0, 10.0);
+      p.s.g0 = 0;
+      p.s.P_N0 = uni(g, 0.2, 2);
+      p.s.P_T0 = (i == 0 ? 1 : -1) * p.a.mu * p.s.P_N0;
+      pts.push_back(p);
+    }
+    SystemStepProblem sp = system_of(pts);
+    // Couple the points: an SPD off-diagonal block.
+    Eigen::MatrixXd B(4, 4);
+    for (int r = 0; r < 4; ++r)
+      for (int q = 0; q < 4; ++q) B(r, q) = uni(g, -0.4, 0.4);
+    sp.system.A += 0.5 * (B * B.transpose());
+    const auto set = enumerate_system_step(sp);
+    REQUIRE(set.complete);
+    for (int s1 = -1; s1 <= 1; s1 += 2)
+      for (int s2 = -1; s2 <= 1; s2 += 2) {
+        const auto roots = brute_force_slip_slip(sp, s1, s2, g);
+        int admissible = 0;
+        for (const auto& x : roots) {
+          bool ok = true;
+          for (int i = 0; i < 2; ++i) {
+            const double PN1 = sp.system.points[static_cast<std::size_t>(i)].P_N + x[2 * i + 1];
+            const double xi = x[8 + i];
+            ok = ok && PN1 > 1e-7 && (i == 0 ? s1 : s2) * xi > 1e-7;
+          }
+          if (!ok) continue;
+          ++admissible;
+          bool found = false;
+          for (const auto& s : set.solutions) {
+            bool m = true;
+            for (int i = 0; i < 2; ++i) {
+              const auto& v = s.values[static_cast<std::size_t>(i)];
+              m = m && std::abs(v.DP_N - x[2 * i + 1]) <= 1e-6 * (1 + std::abs(x[2 * i + 1])) &&
+                  std::abs(v.Dw_Ti - x[8 + i]) <= 1e-6 * (1 + std::abs(x[8 + i]));
+            }
+            found = found || m;
+          }
+          INFO("case " << c << " signs " << s1 << " " << s2);
+          CHECK(found);
+        }
+        if (admissible > 0) ++with_roots;
+        if (admissible > 1) ++multi;
+      }
+    // Conversely: every enumerated solution with both points slipping in contact has a brute
+    // force twin (its residual was checked by the library; here its equations are re-checked).
+    for (const auto& s : set.solutions) {
+      for (int i = 0; i < 2; ++i) {
+        const auto& v = s.values[static_cast<std::size_t>(i)];
+        const SystemPoint& q = sp.system.points[static_cast<std::size_t>(i)];
+        const double k = q.k_a / (3 * q.P_s);
+        CHECK(v.P_N1 >= -1e-12);
+        CHECK(std::abs(v.P_T1) <= q.mu * v.P_N1 + 1e-9);
+        CHECK(v.g1 <= 1e-9);
+        CHECK(v.Dw_w == Approx(k * v.P_N1 * std::abs(v.Dw_Ti)).margin(1e-12));
+      }
+    }
+  }
+  CHECK(with_roots > 10);
+  CHECK(multi > 0);
+}
+
+TEST_CASE("SystemStepBadInput", "[system_step]") {
+  std::mt19937 g(78);
+  SystemStepProblem sp = system_of({random_point(g, true), random_point(g, false)});
+  SECTION("DF size") {
+    sp.DF.resize(3);
+    CHECK_THROWS_WITH(enumerate_system_step(sp), Catch::Contains("DF has 3 numbers"));
+  }
+  SECTION("A not positive definite") {
+    sp.system.A(0, 0) = -1;
+    CHECK_THROWS_WITH(enumerate_system_step(sp), Catch::Contains("positive definite"));
+  }
+  SECTION("A not symmetric") {
+    sp.system.A(0, 3) += 0.5;
+    CHECK_THROWS_WITH(enumerate_system_step(sp), Catch::Contains("symmetric"));
+  }
+  SECTION("NaN") {
+    sp.DF[1] = NAN;
+    CHECK_THROWS_AS(enumerate_system_step(sp), cpkit::InputError);
+  }
+  SECTION("state beyond the friction limit names the point") {
+    sp.system.points[1].P_N = 1;
+    sp.system.points[1].g = 0;
+    sp.system.points[1].P_T = 2 * sp.system.points[1].mu;
+    CHECK_THROWS_WITH(enumerate_system_step(sp), Catch::Contains("point 2"));
+  }
+  SECTION("softening criterion") {
+    sp.system.criterion = Criterion::kSoftening;
+    CHECK_THROWS_WITH(enumerate_system_step(sp), Catch::Contains("Coulomb"));
+  }
+  SECTION("too many points") {
+    SystemStepOptions o;
+    o.max_points = 1;
+    CHECK_THROWS_WITH(enumerate_system_step(sp, o), Catch::Contains("limit"));
+  }
+}
