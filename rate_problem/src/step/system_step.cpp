@@ -391,15 +391,30 @@ struct Enumerator {
     }
     Eigen::FullPivLU<Eigen::MatrixXd> lu0(L0);
     Eigen::VectorXd v = lu0.isInvertible() ? Eigen::VectorXd(lu0.solve(b0)) : v0;
-    // Continuation in the wear coefficients (scaled by h = 1/16 ... 1): the root that grows
-    // continuously out of the wear-free solution.
-    bool ok = true;
-    std::vector<Row> Rh = R;
-    for (int k = 1; k <= 16 && ok; ++k) {
-      for (std::size_t r = 0; r < R.size(); ++r) Rh[r].c = R[r].c * k / 16.0;
-      ok = newton(Rh, v);
+    // The root continued from the wear-free solution, searched only when that solution is
+    // near this active set's sign conditions (P_N1 >= 0, s xi >= 0 of its slipping points,
+    // within 10% of the force and displacement scales): Newton directly, else continuation
+    // in the wear coefficients (scaled by 1/8 ... 1).
+    bool near = true;
+    for (const Row* r : bil_rows) {
+      const int i = r->bil;
+      const double s = code[static_cast<std::size_t>(i)] == 2 ? 1.0 : -1.0;
+      near = near && v[i] >= -0.1 * m.fscale && s * v[N + i] / sigma >= -0.1 * m.dscale;
     }
-    if (ok) accept(v);
+    if (near) {
+      Eigen::VectorXd w = v;
+      bool ok = newton(R, w);
+      if (!ok) {
+        ok = true;
+        w = v;
+        std::vector<Row> Rh = R;
+        for (int k = 1; k <= 8 && ok; ++k) {
+          for (std::size_t r = 0; r < R.size(); ++r) Rh[r].c = R[r].c * k / 8.0;
+          ok = newton(Rh, w);
+        }
+      }
+      if (ok) accept(w);
+    }
     std::ostringstream o;
     o << mm << " points slip with wear: up to " << (1 << mm)
       << " roots; only the one continued from the wear-free solution was searched (Newton)";

@@ -24,8 +24,10 @@
 ///   Sylvester resultant (a quartic, companion-matrix eigenvalues) with both conics' roots in
 ///   the second coordinate, polished by Newton. Two conics without a common component meet in
 ///   at most 4 points (Bezout) and every one is found: the set is proved complete;
-/// - m >= 3: Newton from the active set's wear-free solution finds the root next to it (the
-///   small-wear root); other roots may exist: the result says complete = false and why.
+/// - m >= 3: when the active set's wear-free solution is near its sign conditions (within 10%
+///   of the force and displacement scales), Newton (with continuation in the wear
+///   coefficients) finds the root that grows out of it (the small-wear root); other roots
+///   may exist: the result says complete = false and why.
 /// Degenerate active sets (the linear part singular and consistent: a continuum; or a
 /// resultant that vanishes identically) are not resolved: complete = false with the set named.
 /// Every candidate is verified by the unit-free residual of the step NCP
