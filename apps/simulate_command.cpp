@@ -27,6 +27,7 @@
 #include "cpkit/core/errors.hpp"
 #include "run_program.hpp"
 #include "simulate_config.hpp"
+#include "simulate_system.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::cli {
@@ -35,7 +36,7 @@ namespace {
 struct SimArgs {
   std::string config;
   std::map<std::string, double> num;  // numeric options given on the command line
-  std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot;
+  std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot, system;
   std::vector<double> T_body, conductance;
   bool heat = false, json = false;
   int every = 1;
@@ -127,6 +128,7 @@ void apply_args(const SimArgs& a, Settings& s) {
   if (!a.summary.empty()) s.summary = a.summary;
   if (!a.plot.empty()) s.plot = a.plot;
   if (a.every_given) s.every = a.every;
+  if (!a.system.empty()) s.system = a.system;
 }
 
 // Opens an output file, creating its folder first (configs name paths like out/fretting.csv).
@@ -219,6 +221,7 @@ int run(const SimArgs& a) {
   apply_args(a, s);
   // Everything is checked (model, load, sizes) before the history is allocated.
   validate_simulate_settings(s);
+  if (!s.system.empty()) return run_system_simulation(s, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
   // The series goes to its file as it is produced; without a file nothing is recorded, so the
@@ -284,6 +287,8 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
       "simulate", "Quasi-static fretting simulation with friction, wear and heat "
                   "(docs/simulation.md)");
   cmd->add_option("--config", a->config, "JSON settings (docs/examples/fretting.json)");
+  cmd->add_option("--system", a->system,
+                  "N-point system file (docs/file_formats.md): simulate N points (docs/simulation.md)");
   struct NumOpt {
     const char* name;
     const char* help;

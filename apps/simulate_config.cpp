@@ -235,6 +235,11 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
         if (!rule) throw InputError("branch_rule must be closest or stop, got " + shown(v));
         s.opt.branch_rule = *rule;
       } else if (k == "output") parse_output(v, s);
+      else if (k == "system") {
+        const std::string file = get_str(v, k);
+        if (file.empty()) throw InputError("system must not be empty");
+        s.system = file[0] == '/' ? file : dir + "/" + file;
+      }
       else if (k == "name" || k == "note") {
         // free text
       } else {
@@ -284,7 +289,21 @@ void check_history_memory(std::int64_t steps, const SimulateSettings& s) {
 
 void validate_simulate_settings(const SimulateSettings& s) {
   const char* names[] = {"a11", "a12", "a22", "mu"};
-  for (int i = 0; i < 4; ++i)
+  if (!s.system.empty()) {
+    // The system file gives every point's parameters.
+    for (int i = 0; i < 4; ++i)
+      if (s.have[i])
+        throw InputError(std::string(names[i]) + " cannot be combined with a system file (the "
+                         "system gives every point's parameters)");
+    if (s.opt.params.criterion != rate::Criterion::kCoulomb ||
+        s.opt.wear.law != rate::WearLaw::kArchard)
+      throw InputError("a system simulation supports the Coulomb criterion (38) with Archard "
+                       "wear (37) only");
+    if (s.load_type != "fretting" && s.load_type != "csv")
+      throw InputError("a system simulation's load type must be fretting (through the system's "
+                       "patterns) or csv (t and 2N forces per row), got '" + s.load_type + "'");
+  }
+  for (int i = 0; i < 4 && s.system.empty(); ++i)
     if (!s.have[i])
       throw InputError(std::string(names[i]) + " is required (--" + names[i] +
                        " or parameters." + names[i] + " in --config)");
@@ -293,7 +312,8 @@ void validate_simulate_settings(const SimulateSettings& s) {
     throw InputError("a CSV or plot needs every >= 1");
   rate::SimulationOptions o = s.opt;
   o.record_every = s.every;
-  throw_if_invalid(o.validate(), "simulation");
+  if (s.system.empty()) throw_if_invalid(o.validate(), "simulation");
+  else throw_if_invalid(o.heat.validate(), "heat");
   if (s.load_type == "fretting") {
     throw_if_invalid(s.fretting.validate(), "fretting cycle");
     check_history_memory(std::int64_t{s.fretting.ramp_steps} +

@@ -23,6 +23,10 @@ struct SimulateSettings {
   std::string csv, summary, plot;
   int every = 1;
   bool have[4] = {false, false, false, false};  ///< a11, a12, a22, mu given
+  /// N-point system file (config key "system", relative to the config; --system): the points'
+  /// parameters come from it, the load is the fretting cycle through its patterns or a csv
+  /// with t and 2N forces per row (docs/simulation.md, "N points").
+  std::string system;
 };
 
 /// Parses a config (JSON text; `origin` names it in messages, `dir` is the folder relative
