@@ -7,6 +7,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -233,4 +234,44 @@ TEST_CASE("CliStepSystemBadInput", "[cli][step][system]") {
   CHECK(r.err.find("--all") != std::string::npos);
   r = run_cli("step --system /nonexistent.json --DF 0 0 --all");
   CHECK(r.code == 2);
+}
+
+TEST_CASE("CliSimulateSystemOfIndependentPointsEqualsOneSimulationEach", "[cli][simulate][system]") {
+  // Two points that do not interact, the fretting cycle through the patterns (1,0,1,0) and
+  // (0,1,0,1): every point must wear as the one-point `cpkit simulate` of its own parameters.
+  const fs::path dir = scratch_dir() / "sim_system";
+  fs::create_directories(dir);
+  {
+    std::ofstream f(dir / "system.json");
+    f << R"({"A": [[2, 0.3, 0, 0], [0.3, 1.5, 0, 0], [0, 0, 2, 0.3], [0, 0, 0.3, 1.5]],
+ "points": [{"state": "b", "mu": 0.5, "C_T": 0.4, "k_a": 0.01},
+            {"state": "b", "mu": 0.5, "C_T": 0.4, "k_a": 0.02}],
+ "patterns": [[1, 0, 1, 0], [0, 1, 0, 1]]})";
+    std::ofstream c(dir / "config.json");
+    c << R"({"system": "system.json",
+ "load": {"type": "fretting", "F_N": 1, "amplitude": 1.2, "cycles": 3, "steps_per_cycle": 40}})";
+  }
+  const Run r = run_cli("simulate --config '" + (dir / "config.json").string() + "' --csv '" +
+                        (dir / "run.csv").string() + "' --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["n_points"] == 2);
+  CHECK(j["complete"] == true);  // m <= 2 everywhere
+  const char* k_a[2] = {"0.01", "0.02"};
+  for (int i = 0; i < 2; ++i) {
+    const auto one = nlohmann::json::parse(
+        run_cli(std::string("simulate --a11 2 --a12 0.3 --a22 1.5 --mu 0.5 --C_T 0.4 --k_a ") +
+                k_a[i] + " --F_N 1 --amplitude 1.2 --cycles 3 --steps-per-cycle 40 --json")
+            .out);
+    CHECK(j["final_wear_depth"][i].get<double>() ==
+          Approx(one["final_wear_depth"].get<double>()).epsilon(1e-9));
+    CHECK(j["total_slip"][i].get<double>() == Approx(one["total_slip"].get<double>()).epsilon(1e-9));
+  }
+  // The streamed CSV: header + start + every step.
+  const std::string csv = slurp(dir / "run.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 1 + j["steps"].get<long>());
+  const Run bad = run_cli("simulate --config '" + (dir / "config.json").string() + "' --mu 0.3");
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find("cannot be combined with a system") != std::string::npos);
 }
