@@ -340,3 +340,138 @@ TEST_CASE("SystemStepBadInput", "[system_step]") {
     CHECK_THROWS_WITH(enumerate_system_step(sp, o), Catch::Contains("limit"));
   }
 }
+
+namespace {
+
+/// Brute-force rate problem of an N-point system (model.md Sec. 5), written here: every type
+/// tuple gives a square linear system in (dP (2N), dw (2N), dw_Ti (N)); its solution counts
+/// when the tuple's sign conditions hold. Returns false for a singular tuple (skip the case).
+bool brute_force_rates(const SystemStepProblem& p, const Eigen::VectorXd& dF,
+                       std::vector<Eigen::VectorXd>& out) {
+  const auto& A = p.system.A;
+  const int N = p.system.n_points(), n = 5 * N;
+  // Allowed types per point: 0 separation, 1 stick, 2 slip+, 3 slip-.
+  std::vector<std::vector<int>> allowed(static_cast<std::size_t>(N));
+  for (int i = 0; i < N; ++i) {
+    const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
+    if (q.P_N == 0) allowed[static_cast<std::size_t>(i)] = {0, 1, 2, 3};  // state b
+    else if (std::abs(q.P_T) < q.mu * q.P_N) allowed[static_cast<std::size_t>(i)] = {1};  // c
+    else allowed[static_cast<std::size_t>(i)] = {1, q.P_T > 0 ? 2 : 3};  // d
+  }
+  std::vector<int> t(static_cast<std::size_t>(N), 0);
+  std::vector<std::size_t> idx(static_cast<std::size_t>(N), 0);
+  while (true) {
+    for (int i = 0; i < N; ++i) t[static_cast<std::size_t>(i)] = allowed[static_cast<std::size_t>(i)][idx[static_cast<std::size_t>(i)]];
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+    // x = (dP (0..2N-1), dw (2N..4N-1), xi (4N..5N-1)); dP + A dw = dF.
+    M.block(0, 0, 2 * N, 2 * N).setIdentity();
+    M.block(0, 2 * N, 2 * N, 2 * N) = A;
+    r.head(2 * N) = dF;
+    for (int i = 0; i < N; ++i) {
+      const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
+      const int row = 2 * N + 3 * i;
+      M(row, 2 * N + 2 * i) = 1;  // dw_T - C_T dP_T - xi = 0
+      M(row, 2 * i) = -q.C_T;
+      M(row, 4 * N + i) = -1;
+      const int ty = t[static_cast<std::size_t>(i)];
+      if (ty == 0) {
+        M(row + 1, 2 * i) = 1;
+        M(row + 2, 2 * i + 1) = 1;
+      } else if (ty == 1) {
+        M(row + 1, 4 * N + i) = 1;
+        M(row + 2, 2 * N + 2 * i + 1) = 1;
+      } else {
+        const double s = ty == 2 ? 1 : -1;
+        M(row + 1, 2 * i) = 1;
+        M(row + 1, 2 * i + 1) = -s * q.mu;
+        M(row + 2, 2 * N + 2 * i + 1) = 1;
+      }
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+    if (!lu.isInvertible()) return false;
+    const Eigen::VectorXd x = lu.solve(r);
+    bool ok = true;
+    const double tol = 1e-12 * (1 + dF.cwiseAbs().maxCoeff());
+    for (int i = 0; i < N && ok; ++i) {
+      const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
+      const int ty = t[static_cast<std::size_t>(i)];
+      const double dPT = x[2 * i], dPN = x[2 * i + 1], dwN = x[2 * N + 2 * i + 1], xi = x[4 * N + i];
+      const bool b = q.P_N == 0;
+      if (ty == 0) ok = dwN <= tol;
+      else if (ty == 1 && b) ok = dPN >= -tol && std::abs(dPT) <= q.mu * dPN + tol;
+      else if (ty == 1 && std::abs(q.P_T) >= q.mu * q.P_N) ok = (q.P_T > 0 ? 1 : -1) * dPT <= q.mu * dPN + tol;
+      else if (ty >= 2) ok = (ty == 2 ? 1 : -1) * xi >= -tol && (!b || dPN >= -tol);
+    }
+    if (ok) {
+      Eigen::VectorXd y(2 * N);  // (dP_N, xi) per point
+      for (int i = 0; i < N; ++i) {
+        y[2 * i] = x[2 * i + 1];
+        y[2 * i + 1] = x[4 * N + i];
+      }
+      bool dup = false;
+      for (const auto& o : out) dup = dup || (o - y).cwiseAbs().maxCoeff() <= 1e-9 * (1 + y.cwiseAbs().maxCoeff());
+      if (!dup) out.push_back(y);
+    }
+    int k = 0;
+    while (k < N && ++idx[static_cast<std::size_t>(k)] == allowed[static_cast<std::size_t>(k)].size()) idx[static_cast<std::size_t>(k++)] = 0;
+    if (k == N) break;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("WearFreeStepIsRateTimesIncrement", "[system_step]") {
+  // k_a = 0 from states b (P = 0, g = 0), c and d: the step is positively homogeneous in the
+  // increment, so the step solutions of size O(eps) are exactly eps times the rate solutions
+  // (brute force over type tuples above); O(1) jump solutions (e.g. separation of a d point)
+  // have no rate counterpart and are left out.
+  std::mt19937 g(90);
+  int compared = 0;
+  for (int c = 0; c < 300; ++c) {
+    const int N = c % 2 ? 3 : 2;
+    std::vector<OnePoint> pts;
+    for (int i = 0; i < N; ++i) {
+      OnePoint p = random_point(g, false);
+      p.s.g0 = 0;
+      if (i % 3 == 0) p.s.P_T0 = p.s.P_N0 = 0;
+      pts.push_back(p);
+    }
+    SystemStepProblem sp = system_of(pts);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Random(2 * N, 2 * N) * 0.3;
+    sp.system.A += B * B.transpose();
+    const Eigen::VectorXd dF = sp.DF;
+    std::vector<Eigen::VectorXd> rates;
+    if (!brute_force_rates(sp, dF, rates)) continue;
+    // eps: small enough that c points stay inside the cone, large enough that eps times a
+    // rate stays above the step's resolution (1e-9 of its force and displacement scales).
+    const double eps = 1e-4;
+    sp.DF = eps * dF;
+    const auto set = enumerate_system_step(sp);
+    REQUIRE(set.complete);
+    std::vector<Eigen::VectorXd> small;
+    for (const auto& s : set.solutions) {
+      Eigen::VectorXd y(2 * N);
+      for (int i = 0; i < N; ++i) {
+        y[2 * i] = s.values[static_cast<std::size_t>(i)].DP_N / eps;
+        y[2 * i + 1] = s.values[static_cast<std::size_t>(i)].Dw_Ti / eps;
+      }
+      if (y.cwiseAbs().maxCoeff() <= 1e3 * (1 + dF.cwiseAbs().maxCoeff())) small.push_back(y);
+    }
+    INFO("case " << c);
+    REQUIRE(small.size() == rates.size());
+    for (const auto& r : rates) {
+      bool found = false;
+      double best = INFINITY;
+      for (const auto& y : small) {
+        best = std::min(best, (y - r).cwiseAbs().maxCoeff());
+        found = found || (y - r).cwiseAbs().maxCoeff() <= 1e-6 * (1 + r.cwiseAbs().maxCoeff());
+      }
+      INFO("rate " << r.transpose() << " nearest step distance " << best);
+      CHECK(found);
+    }
+    ++compared;
+  }
+  CHECK(compared > 200);
+}
