@@ -28,6 +28,7 @@
 #include "data_files.hpp"
 #include "run_program.hpp"
 #include "simulate_config.hpp"
+#include "simulate_system.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::cli {
@@ -36,7 +37,7 @@ namespace {
 struct SimArgs {
   std::string config;
   std::map<std::string, double> num;  // numeric options given on the command line
-  std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot;
+  std::string criterion, wear_law, load, load_csv, branch_rule, csv, summary, plot, system;
   std::vector<double> T_body, conductance;
   bool heat = false, json = false;
   int every = 1;
@@ -128,6 +129,7 @@ void apply_args(const SimArgs& a, Settings& s) {
   if (!a.summary.empty()) s.summary = a.summary;
   if (!a.plot.empty()) s.plot = a.plot;
   if (a.every_given) s.every = a.every;
+  if (!a.system.empty()) s.system = a.system;
 }
 
 // Opens an output file, creating its folder first (configs name paths like out/fretting.csv).
@@ -140,21 +142,30 @@ std::ofstream open_output(const std::string& path) {
   return f;
 }
 
-void write_csv(const std::string& path, const rate::SimulationResult& r) {
-  std::ofstream f = open_output(path);
-  f.precision(12);
-  f << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
-       "dissipation_total,work_total,stored,temperature\n";
-  for (const auto& s : r.series) {
-    f << s.step << ',' << s.t << ',' << s.F_T << ',' << s.F_N << ',' << s.P_T << ',' << s.P_N
-      << ',' << s.w_T << ',' << s.w_N << ',' << s.w_w << ',' << s.w_Ti << ',' << s.g << ','
-      << rate::to_string(s.state) << ',' << rate::to_string(s.type) << ',' << s.count << ','
-      << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
-      << ',' << s.temperature << '\n';
+/// The time series, written row by row as the simulation produces it (never held in memory).
+class CsvSeries {
+ public:
+  explicit CsvSeries(const std::string& path) : path_(path), f_(open_output(path)) {
+    f_.precision(12);
+    f_ << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
+          "dissipation_total,work_total,stored,temperature\n";
   }
-  f.flush();
-  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
-}
+  void write(const rate::SimulationSample& s) {
+    f_ << s.step << ',' << s.t << ',' << s.F_T << ',' << s.F_N << ',' << s.P_T << ',' << s.P_N
+       << ',' << s.w_T << ',' << s.w_N << ',' << s.w_w << ',' << s.w_Ti << ',' << s.g << ','
+       << rate::to_string(s.state) << ',' << rate::to_string(s.type) << ',' << s.count << ','
+       << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
+       << ',' << s.temperature << '\n';
+  }
+  void close() {
+    f_.flush();
+    if (!f_) throw InputError("error writing '" + path_ + "' (disk full or not writable?)");
+  }
+
+ private:
+  std::string path_;
+  std::ofstream f_;
+};
 
 nlohmann::json sample_json(const rate::SimulationSample& s) {
   return {{"step", s.step}, {"t", s.t}, {"F_T", s.F_T}, {"F_N", s.F_N}, {"P_T", s.P_T},
@@ -263,16 +274,25 @@ int run(const SimArgs& a) {
                      "constant is k_M");
   // Everything is checked (model, load, sizes) before the history is allocated.
   validate_simulate_settings(s);
-  s.opt.record_every = s.every;
-  const rate::LoadHistory h = make_simulate_history(s);
-  const rate::SimulationResult r = rate::simulate(h, s.opt);
+  if (!s.system.empty()) return run_system_simulation(s, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
   std::vector<std::string> written;  // named at the end: the user sees what the run produced
+  // The series goes to its file as it is produced; without a file nothing is recorded, so the
+  // memory does not grow with the steps (issue 14).
+  std::unique_ptr<CsvSeries> series;
   if (!csv.empty()) {
-    write_csv(csv, r);
-    written.push_back(csv);
+    series = std::make_unique<CsvSeries>(csv);
+    s.opt.record_every = s.every;
+    s.opt.on_sample = [&series](const rate::SimulationSample& smp) { series->write(smp); };
+  } else {
+    s.opt.record_every = 0;
   }
+  rate::LoadHistory stored;
+  const rate::LoadSource load = make_simulate_source(s, stored);
+  const rate::SimulationResult r = rate::simulate(load, s.opt);
+  if (series) series->close();
+  if (series) written.push_back(csv);
   const nlohmann::json sum = summary_json(r, s);
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
@@ -339,6 +359,8 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
       "simulate", "Quasi-static fretting simulation with friction, wear and heat "
                   "(docs/simulation.md)");
   cmd->add_option("--config", a->config, "JSON settings (docs/examples/fretting.json)");
+  cmd->add_option("--system", a->system,
+                  "N-point system file (docs/file_formats.md): simulate N points (docs/simulation.md)");
   struct NumOpt {
     const char* name;
     const char* help;

@@ -186,11 +186,11 @@ void parse_output(const json& v, const std::string& dir, SimulateSettings& s) {
   }
 }
 
-/// Bytes of the run: the load history and the recorded series (+ the per-cycle sums).
-double run_bytes(double steps, double cycles, int every) {
-  const double series = every > 0 ? steps / every + 2 : 0;
-  return steps * sizeof(rate::LoadPoint) + series * sizeof(rate::SimulationSample) +
-         2 * cycles * sizeof(double);
+/// Bytes the run keeps: the per-cycle sums, and the load history when it is read from a CSV
+/// file (fretting and ramp loads are generated point by point, and the time series is
+/// streamed to its file as it is produced, so neither grows with the steps).
+double run_bytes(double steps, double cycles, bool stored_history) {
+  return (stored_history ? steps * sizeof(rate::LoadPoint) : 0.0) + 2 * cycles * sizeof(double);
 }
 
 /// Nesting depth of the JSON text (brackets outside strings): a config is at most 3 deep, and
@@ -253,6 +253,11 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
         if (!rule) throw InputError("branch_rule must be closest or stop, got " + shown(v));
         s.opt.branch_rule = *rule;
       } else if (k == "output") parse_output(v, dir, s);
+      else if (k == "system") {
+        const std::string file = get_str(v, k);
+        if (file.empty()) throw InputError("system must not be empty");
+        s.system = file[0] == '/' ? file : dir + "/" + file;
+      }
       else if (k == "name" || k == "note") {
         // free text
       } else {
@@ -290,20 +295,33 @@ void read_simulate_config(const std::string& path, SimulateSettings& s) {
 void check_history_memory(std::int64_t steps, const SimulateSettings& s) {
   const double cycles =
       s.load_type == "fretting" ? static_cast<double>(s.fretting.cycles) : 0.0;
-  const double bytes = run_bytes(static_cast<double>(steps), cycles, s.every);
+  const double bytes = run_bytes(static_cast<double>(steps), cycles, s.load_type == "csv");
   if (bytes > static_cast<double>(kMemoryLimitBytes))
     throw InputError("the run would need about " + byte_text(bytes) + " of memory (" +
-                     std::to_string(steps) + " steps" +
-                     (s.every == 1   ? std::string(", each recorded")
-                      : s.every > 1 ? ", one in " + std::to_string(s.every) + " recorded"
-                                    : std::string()) +
+                     std::to_string(steps) + " steps, " +
+                     (s.load_type == "csv" ? std::string("the load history held in memory")
+                                           : std::string("two numbers per cycle")) +
                      "); the limit is " + byte_text(static_cast<double>(kMemoryLimitBytes)) +
-                     ": use fewer steps, or --every N to record fewer");
+                     ": use fewer steps or cycles");
 }
 
 void validate_simulate_settings(const SimulateSettings& s) {
   const char* names[] = {"a11", "a12", "a22", "mu"};
-  for (int i = 0; i < 4; ++i)
+  if (!s.system.empty()) {
+    // The system file gives every point's parameters.
+    for (int i = 0; i < 4; ++i)
+      if (s.have[i])
+        throw InputError(std::string(names[i]) + " cannot be combined with a system file (the "
+                         "system gives every point's parameters)");
+    if (s.opt.params.criterion != rate::Criterion::kCoulomb ||
+        s.opt.wear.law != rate::WearLaw::kArchard)
+      throw InputError("a system simulation supports the Coulomb criterion (38) with Archard "
+                       "wear (37) only");
+    if (s.load_type != "fretting" && s.load_type != "csv")
+      throw InputError("a system simulation's load type must be fretting (through the system's "
+                       "patterns) or csv (t and 2N forces per row), got '" + s.load_type + "'");
+  }
+  for (int i = 0; i < 4 && s.system.empty(); ++i)
     if (!s.have[i])
       throw InputError(std::string(names[i]) + " is required (--" + names[i] +
                        " or parameters." + names[i] + " in --config)");
@@ -312,7 +330,8 @@ void validate_simulate_settings(const SimulateSettings& s) {
     throw InputError("a CSV or plot needs every >= 1");
   rate::SimulationOptions o = s.opt;
   o.record_every = s.every;
-  throw_if_invalid(o.validate(), "simulation");
+  if (s.system.empty()) throw_if_invalid(o.validate(), "simulation");
+  else throw_if_invalid(o.heat.validate(), "heat");
   if (s.load_type == "fretting") {
     throw_if_invalid(s.fretting.validate(), "fretting cycle");
     check_history_memory(std::int64_t{s.fretting.ramp_steps} +
@@ -328,6 +347,13 @@ void validate_simulate_settings(const SimulateSettings& s) {
   } else {
     throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
   }
+}
+
+rate::LoadSource make_simulate_source(const SimulateSettings& s, rate::LoadHistory& storage) {
+  if (s.load_type == "fretting") return rate::fretting_source(s.fretting);
+  if (s.load_type == "ramp") return rate::ramp_source(s.ramp);
+  storage = make_simulate_history(s);
+  return rate::history_source(storage);
 }
 
 rate::LoadHistory make_simulate_history(const SimulateSettings& s) {

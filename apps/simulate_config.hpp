@@ -23,6 +23,10 @@ struct SimulateSettings {
   std::string csv, summary, plot;
   int every = 1;
   bool have[4] = {false, false, false, false};  ///< a11, a12, a22, mu given
+  /// N-point system file (config key "system", relative to the config; --system): the points'
+  /// parameters come from it, the load is the fretting cycle through its patterns or a csv
+  /// with t and 2N forces per row (docs/simulation.md, "N points").
+  std::string system;
 };
 
 /// Parses a config (JSON text; `origin` names it in messages, `dir` is the folder relative
@@ -46,7 +50,8 @@ void read_simulate_config(const std::string& path, SimulateSettings& s);
 
 /// Checks the settings as a whole, before any allocation: the required parameters, the model
 /// (SimulationOptions::validate), the load (FrettingCycle/LoadRamp::validate) and the memory the
-/// run would need (load history + recorded series) against kMemoryLimitBytes. Throws
+/// run would keep (a CSV load history, the per-cycle sums; the time series is streamed to its
+/// file) against kMemoryLimitBytes. Throws
 /// cpkit::InputError; the memory message names the size needed. A csv load is checked by
 /// check_history once read.
 void validate_simulate_settings(const SimulateSettings& s);
@@ -56,5 +61,8 @@ void check_history_memory(std::int64_t steps, const SimulateSettings& s);
 
 /// The load history of the settings (validate first).
 rate::LoadHistory make_simulate_history(const SimulateSettings& s);
+/// The load of the settings as a source (validate first): fretting and ramp loads generated
+/// point by point; a CSV load is read into `storage`, which must outlive the source.
+rate::LoadSource make_simulate_source(const SimulateSettings& s, rate::LoadHistory& storage);
 
 }  // namespace cpkit::cli

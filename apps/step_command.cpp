@@ -4,10 +4,11 @@
 //   cpkit step --a11 X --a12 X --a22 X --mu X [--C_T X] [--k_a X --P_s X] [--criterion 38|35]
 //              [--wear-law archard|mroz --k_M X] --P_T0 X --P_N0 X --g0 X --DF DFT DFN
 //              [--all] [--chain active-set,lemke,fb-newton,ipopt] [--json]
+//   cpkit step --system FILE --DF <2N numbers> --all [--json]      (N points, system_step.hpp)
 //
 // --all: every solution (complete active-set enumeration; continua as segments/rays, jumps
 // flagged). Otherwise one solution by the solver chain. Exit codes: 0 at least one solution,
-// 1 none, 2 bad input.
+// 1 none, 2 bad input; N points: 5 when none was found and the enumeration is not complete.
 #include <iostream>
 #include <memory>
 #include <set>
@@ -22,6 +23,8 @@
 #include "cpkit/rate_problem/step/incremental_step.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
+#include "cpkit/rate_problem/step/system_step.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -35,6 +38,7 @@ struct StepArgs {
   bool all = false;
   bool json = false;
   std::string chain = "active-set,lemke,fb-newton,ipopt";
+  std::string system;  ///< N-point system file (--system)
 };
 
 nlohmann::json values_json(const rate::StepValues& v) {
@@ -184,6 +188,85 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
   return ok ? kExitOk : kExitNoSolution;
 }
 
+/// `--system`: every solution of the N-point step (system_step.hpp).
+int run_system(const StepArgs& a, const CLI::App& cmd) {
+  // The one-point options describe one point; with a system file they would be ignored.
+  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s",
+                        "--criterion", "--wear-law", "--k_M", "--P_T0", "--P_N0", "--g0",
+                        "--chain"})
+    if (cmd.count(o) > 0)
+      throw InputError(std::string(o) + " cannot be combined with --system (the system file "
+                       "gives every point's parameters and state)");
+  if (!a.all)
+    throw InputError("--system needs --all (the N-point step reports every solution)");
+  rate::SystemStepProblem p;
+  p.system = rate::read_contact_system(a.system);
+  const int N = p.system.n_points();
+  if (static_cast<int>(a.DF.size()) != 2 * N)
+    throw InputError("--DF needs " + std::to_string(2 * N) + " numbers (DF_T, DF_N per point, " +
+                     std::to_string(N) + " points), got " + std::to_string(a.DF.size()));
+  p.DF = Eigen::Map<const Eigen::VectorXd>(a.DF.data(), static_cast<Eigen::Index>(a.DF.size()));
+  throw_if_invalid(p.validate(), "step");
+  const rate::SystemStepSolutionSet s = rate::enumerate_system_step(p);
+  auto types_text = [](const rate::SystemStepSolution& sol) {
+    std::string t;
+    for (std::size_t i = 0; i < sol.types.size(); ++i)
+      t += (i ? "/" : "") + std::string(rate::to_string(sol.types[i]));
+    return t;
+  };
+  if (a.json) {
+    nlohmann::json j;
+    j["cpkit_version"] = CPKIT_VERSION;
+    nlohmann::json pts = nlohmann::json::array();
+    for (const auto& q : p.system.points)
+      pts.push_back({{"mu", q.mu}, {"C_T", q.C_T}, {"k_a", q.k_a}, {"P_s", q.P_s},
+                     {"P_T", q.P_T}, {"P_N", q.P_N}, {"g", q.g}});
+    nlohmann::json A = nlohmann::json::array();
+    for (Eigen::Index r = 0; r < p.system.A.rows(); ++r) {
+      std::vector<double> row(p.system.A.cols());
+      for (Eigen::Index c = 0; c < p.system.A.cols(); ++c) row[c] = p.system.A(r, c);
+      A.push_back(row);
+    }
+    j["input"] = {{"system", a.system}, {"name", p.system.name}, {"A", A}, {"points", pts},
+                  {"DF", a.DF}};
+    j["n_points"] = N;
+    j["count"] = s.solutions.size();
+    j["complete"] = s.complete;
+    j["notes"] = s.notes;
+    nlohmann::json sols = nlohmann::json::array();
+    for (const auto& sol : s.solutions) {
+      nlohmann::json e;
+      std::vector<std::string> types;
+      for (auto t : sol.types) types.emplace_back(rate::to_string(t));
+      e["types"] = types;
+      std::vector<double> f[9];
+      for (const auto& v : sol.values) {
+        const double x[9] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.P_T1, v.P_N1, v.g1};
+        for (int k = 0; k < 9; ++k) f[k].push_back(x[k]);
+      }
+      const char* names[9] = {"DP_T", "DP_N", "Dw_T", "Dw_N", "Dw_Ti", "Dw_w", "P_T1", "P_N1", "g1"};
+      nlohmann::json vals;
+      for (int k = 0; k < 9; ++k) vals[names[k]] = f[k];
+      e["values"] = vals;
+      e["residual"] = sol.residual;
+      sols.push_back(e);
+    }
+    j["solutions"] = sols;
+    print_json(j);
+  } else {
+    std::cout << "step (" << N << " points): " << s.solutions.size() << " solution(s)"
+              << (s.complete ? " (complete)" : " (NOT proved complete)") << "\n";
+    for (const auto& sol : s.solutions) {
+      std::cout << "  " << types_text(sol) << "\n";
+      for (std::size_t i = 0; i < sol.values.size(); ++i)
+        std::cout << "    point " << i + 1 << ": " << values_text(sol.values[i]) << "\n";
+    }
+    for (const auto& n : s.notes) std::cout << "note: " << n << "\n";
+  }
+  if (!s.solutions.empty()) return kExitOk;
+  return s.complete ? kExitNoSolution : kExitInconclusive;
+}
+
 }  // namespace
 
 void add_step_command(CLI::App& app, Context& ctx) {
@@ -192,14 +275,19 @@ void add_step_command(CLI::App& app, Context& ctx) {
       "step", "One implicit time step of the one-point contact problem with friction and wear "
               "(the incremental problem, docs/simulation.md)");
   add_model_options(*cmd, args->model);
+  // With --system the file gives the model: the one-point options are checked in the callback.
+  for (const char* o : {"--a11", "--a12", "--a22", "--mu"}) cmd->get_option(o)->required(false);
+  cmd->add_option("--system", args->system,
+                  "N-point system file (JSON, docs/file_formats.md); needs --all and 2N --DF values");
   cmd->add_option("--wear-law", args->wear_law,
                   "archard (37, default) or mroz (Mroz-Stupkiewicz (41), with --k_M)");
   cmd->add_option("--k_M", args->k_M, "Mroz-Stupkiewicz wear constant (>= 0)");
-  cmd->add_option("--P_T0", args->P_T0, "tangential force at the start of the step")->required();
-  cmd->add_option("--P_N0", args->P_N0, "normal force at the start (>= 0)")->required();
-  cmd->add_option("--g0", args->g0, "gap function w_N - w^w at the start (<= 0; 0 in contact)")
+  cmd->add_option("--P_T0", args->P_T0, "tangential force at the start of the step");
+  cmd->add_option("--P_N0", args->P_N0, "normal force at the start (>= 0)");
+  cmd->add_option("--g0", args->g0, "gap function w_N - w^w at the start (<= 0; 0 in contact)");
+  cmd->add_option("--DF", args->DF, "load increment: DFT DFN (2N values with --system)")
+      ->expected(1, 1 << 20)
       ->required();
-  cmd->add_option("--DF", args->DF, "load increment: DFT DFN")->expected(2)->required();
   cmd->add_flag("--all", args->all, "every solution (complete active-set enumeration)");
   cmd->add_option("--chain", args->chain,
                   "solver chain for one solution (comma-separated; default "
@@ -217,6 +305,13 @@ void add_step_command(CLI::App& app, Context& ctx) {
     if (args->all && cmd->count("--chain") > 0)
       throw InputError("--chain has no effect with --all (every solution comes from the complete "
                        "active-set enumeration)");
+    if (!args->system.empty()) {
+      ctx.exit_code = run_system(*args, *cmd);
+      return;
+    }
+    for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--P_T0", "--P_N0", "--g0"})
+      if (cmd->count(o) == 0)
+        throw InputError(std::string(o) + " is required (or --system FILE for N points)");
     const rate::StepProblem p = make_problem(*args);
     ctx.exit_code = args->all ? run_all(p, args->json) : run_one(p, args->chain, args->json);
   });

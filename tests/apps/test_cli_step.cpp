@@ -7,6 +7,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -186,4 +187,98 @@ TEST_CASE("CliSimulateStopsAndReportsAndRejectsBadInput", "[cli][simulate]") {
     CHECK(r.code == 2);
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("CliStepSystemIsTheProductOfOnePointSteps", "[cli][step][system]") {
+  // Two points that do not interact (block-diagonal A): point 1 is the Lambda < 0 case above
+  // (3 solutions), point 2 a stick state with a unique solution. The N-point step must list
+  // the 3 x 1 combinations, each point's values equal to the one-point `cpkit step --all`.
+  const fs::path sys = scratch_dir() / "two_independent.json";
+  {
+    std::ofstream f(sys);
+    f << R"({"name": "two independent points",
+ "A": [[1, 0.9, 0, 0], [0.9, 1, 0, 0], [0, 0, 2, 0.3], [0, 0, 0.3, 1.5]],
+ "points": [{"P_T": 2, "P_N": 1, "g": 0, "mu": 2},
+            {"P_T": 0.1, "P_N": 1, "g": 0, "mu": 0.5}]})";
+  }
+  const Run r = run_cli("step --system '" + sys.string() + "' --DF -0.01 0 0.05 0.02 --all --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == 3);
+  CHECK(j["complete"] == true);
+  CHECK(j["n_points"] == 2);
+  CHECK(j["input"]["DF"].size() == 4);
+  CHECK(j.contains("cpkit_version"));
+  const auto one1 = nlohmann::json::parse(run_cli(kLambdaNegative + "--DF -0.01 0 --all --json").out);
+  const auto one2 = nlohmann::json::parse(
+      run_cli("step --a11 2 --a12 0.3 --a22 1.5 --mu 0.5 --P_T0 0.1 --P_N0 1 --g0 0 --DF 0.05 0.02 --all --json").out);
+  REQUIRE(one2["count"] == 1);
+  for (const auto& s : j["solutions"]) {
+    CHECK(s["types"][1] == one2["solutions"][0]["type"]);
+    CHECK(s["values"]["DP_T"][1].get<double>() ==
+          Approx(one2["solutions"][0]["values"]["DP_T"].get<double>()).margin(1e-12));
+    bool found = false;
+    for (const auto& o : one1["solutions"])
+      found = found || (o["type"] == s["types"][0] &&
+                        std::abs(o["values"]["DP_N"].get<double>() - s["values"]["DP_N"][0].get<double>()) <= 1e-9 &&
+                        std::abs(o["values"]["Dw_Ti"].get<double>() - s["values"]["Dw_Ti"][0].get<double>()) <= 1e-9);
+    CHECK(found);
+  }
+}
+
+TEST_CASE("CliStepSystemBadInput", "[cli][step][system]") {
+  const std::string sys = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/three_point_punch.json";
+  Run r = run_cli("step --system '" + sys + "' --DF 0.2 0.1 --all");
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("--DF needs 6 numbers") != std::string::npos);
+  r = run_cli("step --system '" + sys + "' --DF 0 0 0 0 0 0 --all --mu 3");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--mu cannot be combined with --system") != std::string::npos);
+  r = run_cli("step --system '" + sys + "' --DF 0 0 0 0 0 0");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--all") != std::string::npos);
+  r = run_cli("step --system /nonexistent.json --DF 0 0 --all");
+  CHECK(r.code == 2);
+}
+
+TEST_CASE("CliSimulateSystemOfIndependentPointsEqualsOneSimulationEach", "[cli][simulate][system]") {
+  // Two points that do not interact, the fretting cycle through the patterns (1,0,1,0) and
+  // (0,1,0,1): every point must wear as the one-point `cpkit simulate` of its own parameters.
+  const fs::path dir = scratch_dir() / "sim_system";
+  fs::create_directories(dir);
+  {
+    std::ofstream f(dir / "system.json");
+    f << R"({"A": [[2, 0.3, 0, 0], [0.3, 1.5, 0, 0], [0, 0, 2, 0.3], [0, 0, 0.3, 1.5]],
+ "points": [{"state": "b", "mu": 0.5, "C_T": 0.4, "k_a": 0.01},
+            {"state": "b", "mu": 0.5, "C_T": 0.4, "k_a": 0.02}],
+ "patterns": [[1, 0, 1, 0], [0, 1, 0, 1]]})";
+    std::ofstream c(dir / "config.json");
+    c << R"({"system": "system.json",
+ "load": {"type": "fretting", "F_N": 1, "amplitude": 1.2, "cycles": 3, "steps_per_cycle": 40}})";
+  }
+  const Run r = run_cli("simulate --config '" + (dir / "config.json").string() + "' --csv '" +
+                        (dir / "run.csv").string() + "' --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["n_points"] == 2);
+  CHECK(j["complete"] == true);  // m <= 2 everywhere
+  const char* k_a[2] = {"0.01", "0.02"};
+  for (int i = 0; i < 2; ++i) {
+    const auto one = nlohmann::json::parse(
+        run_cli(std::string("simulate --a11 2 --a12 0.3 --a22 1.5 --mu 0.5 --C_T 0.4 --k_a ") +
+                k_a[i] + " --F_N 1 --amplitude 1.2 --cycles 3 --steps-per-cycle 40 --json")
+            .out);
+    CHECK(j["final_wear_depth"][i].get<double>() ==
+          Approx(one["final_wear_depth"].get<double>()).epsilon(1e-9));
+    CHECK(j["total_slip"][i].get<double>() == Approx(one["total_slip"].get<double>()).epsilon(1e-9));
+  }
+  // The streamed CSV: header + start + every step.
+  const std::string csv = slurp(dir / "run.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 1 + j["steps"].get<long>());
+  const Run bad = run_cli("simulate --config '" + (dir / "config.json").string() + "' --mu 0.3");
+  CHECK(bad.code == 2);
+  CHECK(bad.err.find("cannot be combined with a system") != std::string::npos);
 }

@@ -271,3 +271,44 @@ TEST_CASE("LoadHistoriesParseAndRejectBadInput", "[sim][input]") {
   o.params.criterion = Criterion::kSoftening;
   CHECK_THROWS_AS(simulate(h, o), cpkit::InputError);
 }
+
+TEST_CASE("GeneratedLoadStreamsTheSameSeries", "[sim][stream]") {
+  // The streamed run (load generated point by point, samples passed to a sink) must march the
+  // same states as the stored run; the stored history is built by a loop written here.
+  SimulationOptions o = decoupled(3e-3);
+  const FrettingCycle c = cycle(1.2, 3, 40);
+  LoadHistory h;
+  const double dt = c.period / c.steps_per_cycle;
+  for (int i = 1; i <= c.ramp_steps; ++i) h.points.push_back({i * dt, 0.0, c.F_N * i / c.ramp_steps});
+  const double t_ramp = c.ramp_steps * dt;
+  for (int k = 1; k <= c.cycles * c.steps_per_cycle; ++k)
+    h.points.push_back({t_ramp + k * dt,
+                        c.amplitude * std::sin(2 * M_PI * (k % c.steps_per_cycle) / c.steps_per_cycle),
+                        c.F_N});
+  h.period = c.period;
+  h.cycle_start = t_ramp;
+  const auto stored = simulate(h, o);
+  std::vector<SimulationSample> streamed;
+  o.record_every = 7;
+  o.on_sample = [&](const SimulationSample& s) { streamed.push_back(s); };
+  const auto r = simulate(fretting_source(c), o);
+  REQUIRE(r.outcome == SimulationResult::Outcome::kCompleted);
+  CHECK(r.series.empty());
+  CHECK(r.steps == stored.steps);
+  CHECK(r.wear_depth == Approx(stored.wear_depth).epsilon(1e-12));
+  // Recorded: the start, every 7th step and the last step.
+  REQUIRE(static_cast<long>(streamed.size()) == 1 + stored.steps / 7 + (stored.steps % 7 ? 1 : 0));
+  for (const auto& s : streamed) {
+    const auto& ref = stored.series[static_cast<std::size_t>(s.step)];
+    CHECK(s.t == Approx(ref.t).epsilon(1e-12));
+    CHECK(s.P_T == Approx(ref.P_T).epsilon(1e-9).margin(1e-12));
+    CHECK(s.w_w == Approx(ref.w_w).epsilon(1e-9).margin(1e-15));
+  }
+}
+
+TEST_CASE("GeneratedLoadPointsAreChecked", "[sim][stream]") {
+  LoadSource src;
+  src.size = 3;
+  src.at = [](std::size_t i) { return LoadPoint{i == 2 ? 0.5 : 1.0 + static_cast<double>(i), 0.0, 1.0}; };
+  CHECK_THROWS_AS(simulate(src, decoupled(0)), cpkit::InputError);
+}

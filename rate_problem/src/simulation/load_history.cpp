@@ -93,24 +93,46 @@ std::string FrettingCycle::validate() const {
   return msg.str();
 }
 
-LoadHistory fretting_history(const FrettingCycle& c) {
+LoadSource fretting_source(const FrettingCycle& c) {
   throw_if_invalid(c.validate(), "fretting cycle");
-  LoadHistory h;
+  LoadSource src;
+  const std::size_t ramp = static_cast<std::size_t>(c.ramp_steps);
+  src.size = ramp + static_cast<std::size_t>(c.cycles) * static_cast<std::size_t>(c.steps_per_cycle);
   const double dt = c.period / c.steps_per_cycle;
-  h.points.reserve(static_cast<std::size_t>(c.ramp_steps) +
-                   static_cast<std::size_t>(c.cycles) * c.steps_per_cycle);
-  for (int i = 1; i <= c.ramp_steps; ++i)
-    h.points.push_back({i * dt, 0.0, c.F_N * i / c.ramp_steps});
   const double t_ramp = c.ramp_steps * dt;
-  const double two_pi = 2 * std::acos(-1.0);
-  const long total = static_cast<long>(c.cycles) * c.steps_per_cycle;
-  for (long k = 1; k <= total; ++k) {
+  src.period = c.period;
+  src.cycle_start = t_ramp;
+  src.at = [c, ramp, dt, t_ramp](std::size_t i) -> LoadPoint {
+    if (i < ramp) {
+      const double r = static_cast<double>(i + 1);
+      return {r * dt, 0.0, c.F_N * r / c.ramp_steps};
+    }
+    const long k = static_cast<long>(i - ramp) + 1;
+    const double two_pi = 2 * std::acos(-1.0);
     const double phase = static_cast<double>(k % c.steps_per_cycle) / c.steps_per_cycle;
-    h.points.push_back({t_ramp + k * dt, c.amplitude * std::sin(two_pi * phase), c.F_N});
-  }
-  h.period = c.period;
-  h.cycle_start = t_ramp;
+    return {t_ramp + k * dt, c.amplitude * std::sin(two_pi * phase), c.F_N};
+  };
+  return src;
+}
+
+static LoadHistory materialize(const LoadSource& src) {
+  LoadHistory h;
+  h.points.reserve(src.size);
+  for (std::size_t i = 0; i < src.size; ++i) h.points.push_back(src.at(i));
+  h.period = src.period;
+  h.cycle_start = src.cycle_start;
   return h;
+}
+
+LoadHistory fretting_history(const FrettingCycle& c) { return materialize(fretting_source(c)); }
+
+LoadSource history_source(const LoadHistory& h) {
+  LoadSource src;
+  src.size = h.points.size();
+  src.at = [&h](std::size_t i) { return h.points[i]; };
+  src.period = h.period;
+  src.cycle_start = h.cycle_start;
+  return src;
 }
 
 std::string LoadRamp::validate() const {
@@ -125,20 +147,23 @@ std::string LoadRamp::validate() const {
   return msg.str();
 }
 
-LoadHistory ramp_history(const LoadRamp& r) {
+LoadSource ramp_source(const LoadRamp& r) {
   throw_if_invalid(r.validate(), "ramp");
-  LoadHistory h;
+  LoadSource src;
+  const bool offset = r.F_T0 != 0 || r.F_N0 != 0;
   const double dt = r.duration / r.steps;
-  double t0 = 0;
-  if (r.F_T0 != 0 || r.F_N0 != 0) {
-    h.points.push_back({dt, r.F_T0, r.F_N0});
-    t0 = dt;
-  }
-  for (int i = 1; i <= r.steps; ++i) {
-    const double s = static_cast<double>(i) / r.steps;
-    h.points.push_back({t0 + i * dt, r.F_T0 + s * (r.F_T1 - r.F_T0), r.F_N0 + s * (r.F_N1 - r.F_N0)});
-  }
-  return h;
+  src.size = static_cast<std::size_t>(r.steps) + (offset ? 1 : 0);
+  src.at = [r, offset, dt](std::size_t i) -> LoadPoint {
+    // When the start is not zero a first step goes from the unloaded state to it.
+    if (offset && i == 0) return {dt, r.F_T0, r.F_N0};
+    const double t0 = offset ? dt : 0.0;
+    const int k = static_cast<int>(i) + (offset ? 0 : 1);
+    const double s = static_cast<double>(k) / r.steps;
+    return {t0 + k * dt, r.F_T0 + s * (r.F_T1 - r.F_T0), r.F_N0 + s * (r.F_N1 - r.F_N0)};
+  };
+  return src;
 }
+
+LoadHistory ramp_history(const LoadRamp& r) { return materialize(ramp_source(r)); }
 
 }  // namespace cpkit::rate

@@ -99,8 +99,17 @@ std::string describe(const SimulationSample& s) {
 }  // namespace
 
 SimulationResult simulate(const LoadHistory& history, const SimulationOptions& opt) {
-  throw_if_invalid(opt.validate(), "simulation");
   throw_if_invalid(history.validate(), "load history");
+  return simulate(history_source(history), opt);
+}
+
+SimulationResult simulate(const LoadSource& history, const SimulationOptions& opt) {
+  throw_if_invalid(opt.validate(), "simulation");
+  if (history.size == 0 || !history.at) throw InputError("load history: the load history is empty");
+  if (!std::isfinite(history.period) || history.period < 0)
+    throw InputError("load history: period must be finite and >= 0");
+  if (!std::isfinite(history.cycle_start))
+    throw InputError("load history: cycle_start must be finite");
   const ContactParameters& a = opt.params;
   const double detA = a.detA(), D0 = a.D0();
   const double xi_weight = detA / D0;
@@ -118,29 +127,51 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
   cur.state = StateLabel::kB;
   double T = opt.heat.T_initial;
   res.max_temperature = T;
-  const std::size_t n = history.points.size();
-  if (opt.record_every > 0) res.series.reserve(n / opt.record_every + 2);
-  if (opt.record_every > 0) res.series.push_back(cur);
+  const std::size_t n = history.size;
+  const bool streaming = static_cast<bool>(opt.on_sample);
+  auto record = [&](const SimulationSample& smp) {
+    if (streaming) opt.on_sample(smp);
+    else res.series.push_back(smp);
+  };
+  if (opt.record_every > 0 && !streaming) res.series.reserve(n / opt.record_every + 2);
+  // The start sample waits for the first point (a leading unloaded point sets its t).
+  bool start_pending = opt.record_every > 0;
   const bool cycles = history.period > 0;
   double t_prev = 0;
   std::size_t first = 0;
-  if (n > 0 && !(history.points.front().t > 0)) {
+  const LoadPoint front = history.at(0);
+  if (!std::isfinite(front.t) || !std::isfinite(front.F_T) || !std::isfinite(front.F_N))
+    throw InputError("load history: load point 0 (t = " + std::to_string(front.t) +
+                     ") has a non-finite value");
+  if (!(front.t > 0)) {
     // A leading unloaded point at t <= 0 is the start of the run; any other load needs t > 0.
-    const LoadPoint& p0 = history.points.front();
+    const LoadPoint& p0 = front;
     if (p0.F_T != 0 || p0.F_N != 0)
       throw InputError("load history: the run starts unloaded at t = 0, so the first point "
                        "needs t > 0 unless it is the unloaded start (F = 0); got t = " +
                        std::to_string(p0.t));
     t_prev = p0.t;
     cur.t = p0.t;
-    if (!res.series.empty()) res.series.front().t = p0.t;
     first = 1;
   }
+  if (start_pending) record(cur);
+  double t_last = cur.t;
   double min_D = 0;
   Sums sums;
   StepPoints pts;
   for (std::size_t k = first; k < n; ++k) {
-    const LoadPoint& lp = history.points[k];
+    const LoadPoint lp = history.at(k);
+    if (k > 0) {
+      // Points of a generated history are checked as they are reached.
+      if (!std::isfinite(lp.t) || !std::isfinite(lp.F_T) || !std::isfinite(lp.F_N))
+        throw InputError("load history: load point " + std::to_string(k) + " (t = " +
+                         std::to_string(lp.t) + ") has a non-finite value");
+      if (!(lp.t > t_last))
+        throw InputError("load history: load point " + std::to_string(k) + ": t = " +
+                         std::to_string(lp.t) + " does not increase (previous " +
+                         std::to_string(t_last) + ")");
+    }
+    t_last = lp.t;
     sp.state.P_T0 = cur.P_T;
     sp.state.P_N0 = cur.P_N;
     sp.state.g0 = cur.g;
@@ -283,7 +314,7 @@ SimulationResult simulate(const LoadHistory& history, const SimulationOptions& o
     cur = nx;
     ++res.steps;
     if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == n))
-      res.series.push_back(cur);
+      record(cur);
   }
   res.work_abs = sums.work_abs;
   res.wear_integral = sums.wear_integral;

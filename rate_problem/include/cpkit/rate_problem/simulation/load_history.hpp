@@ -3,6 +3,8 @@
 /// Load histories (t, F_T, F_N) for the quasi-static simulation (simulation.hpp,
 /// docs/simulation.md): a CSV file, a built-in fretting cycle, or a ramp. The simulation starts
 /// from the unloaded grazing state (F = 0, P = 0, w = 0) and takes one step to every point.
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,5 +50,21 @@ struct LoadRamp {
   std::string validate() const;
 };
 LoadHistory ramp_history(const LoadRamp& ramp);
+
+/// A load history produced point by point (memory independent of its length): `at(k)` for
+/// k = 0 .. size - 1 returns the same points as the stored history would hold. The simulation
+/// reads each point once, in order.
+struct LoadSource {
+  std::size_t size = 0;
+  std::function<LoadPoint(std::size_t)> at;
+  double period = 0;       ///< as LoadHistory::period
+  double cycle_start = 0;  ///< as LoadHistory::cycle_start
+};
+/// A view of a stored history (which must outlive the source).
+LoadSource history_source(const LoadHistory& history);
+/// The fretting cycle / ramp generated on the fly (the points of fretting_history /
+/// ramp_history, computed by the same formulas). Throw InputError for invalid settings.
+LoadSource fretting_source(const FrettingCycle& cycle);
+LoadSource ramp_source(const LoadRamp& ramp);
 
 }  // namespace cpkit::rate

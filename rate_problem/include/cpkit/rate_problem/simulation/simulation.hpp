@@ -18,6 +18,7 @@
 ///   W_ext = sum (F0 + F1)/2 . Dw = E(w, P_T) - E_0 + sum D with the stored energy
 ///   E = w.A w / 2 + C_T P_T^2 / 2 (trapezoidal work: exact for E; the end-of-step dissipation
 ///   makes the balance first-order accurate in the step), relative error reported.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@
 #include "cpkit/rate_problem/model/rates.hpp"
 
 namespace cpkit::rate {
+
+struct SimulationSample;
 
 enum class BranchRule { kClosest, kStop };
 std::string_view to_string(BranchRule r) noexcept;  ///< "closest" / "stop"
@@ -41,6 +44,10 @@ struct SimulationOptions {
   double tol = 1e-9;             ///< acceptance on the step NCP residual
   int record_every = 1;          ///< keep every n-th step in the series (0: none)
   int max_branch_records = 100;  ///< branch points recorded in detail
+  /// When set, every recorded sample (the start state, every record_every-th step and the
+  /// last step) is passed here as it is produced instead of being stored in
+  /// SimulationResult::series: the run's memory is then independent of its number of steps.
+  std::function<void(const SimulationSample&)> on_sample;
   std::string validate() const;
 };
 
@@ -72,7 +79,7 @@ struct SimulationResult {
   Outcome outcome = Outcome::kCompleted;
   std::string message;           ///< for a stop: time, state and why
   long steps = 0;                ///< steps completed
-  std::vector<SimulationSample> series;
+  std::vector<SimulationSample> series;  ///< empty when SimulationOptions::on_sample is set
   SimulationSample final_state;  ///< the last state reached
   long branch_steps = 0;         ///< steps with more than one solution
   std::vector<BranchPoint> branch_points;  ///< the first max_branch_records of them
@@ -94,6 +101,11 @@ std::string_view to_string(SimulationResult::Outcome o) noexcept;
 
 /// Runs the simulation. Throws InputError for invalid options or history.
 SimulationResult simulate(const LoadHistory& history, const SimulationOptions& options);
+/// The same for a load produced point by point (fretting_source, ramp_source): memory
+/// independent of the number of steps when options.on_sample is set (slip_per_cycle and
+/// wear_per_cycle keep two numbers per cycle). A point that is not finite or whose t does not
+/// increase throws InputError when it is reached.
+SimulationResult simulate(const LoadSource& load, const SimulationOptions& options);
 
 /// Contact state a-d of a configuration after a step (no validation).
 StateLabel step_state_label(const ContactParameters& params, double P_T, double P_N,

@@ -1,0 +1,110 @@
+#pragma once
+/// \file system_simulation.hpp
+/// Quasi-static simulation of N contact points coupled through A (docs/simulation.md,
+/// "N points"): the one-point march of simulation.hpp, every step solved by the N-point step
+/// enumeration (system_step.hpp) and verified by its unit-free NCP residual.
+///
+/// - Start: the system's points' current values (P_T, P_N, g), displacements w = 0, F = 0
+///   (a system whose points carry forces must give the load that holds them as the first
+///   load point; the march does not check it).
+/// - Several solutions: BranchRule::kClosest takes the one closest to the previous state in
+///   sum_i |DP_T,i| + |DP_N,i| + (det A_i / D0_i)|Dw_Ti,i| (A_i: point i's diagonal block);
+///   kStop stops. No solution: the run stops and says when and why. A step whose enumeration
+///   was not proved complete (system_step.hpp: m >= 3 points slipping with wear) is counted
+///   in `incomplete_steps`; when it found no solution the run stops as inconclusive.
+/// - After a step each point is put on its active constraints (as for one point).
+/// - Checks per point: the dissipation (42) D_i = P_T1 Dw_Ti + P_N1 Dw^w_i >= 0; the wear depth
+///   equals Archard's integral sum k_i P_N1,i |Dw_Ti,i| (both accumulated); the interface
+///   temperature by the one-point heat balance per point (the same HeatOptions for all). The
+///   global energy balance W_ext = sum (F0 + F1)/2 . Dw = E - E_0 + sum_i D_i with
+///   E = w.A w / 2 + sum_i C_T,i P_T,i^2 / 2.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cpkit/rate_problem/model/contact_state.hpp"
+#include "cpkit/rate_problem/model/heat.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/simulation/load_history.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
+
+namespace cpkit::rate {
+
+/// A load point of an N-point history: F (2N, interleaved T_1, N_1, ...).
+struct SystemLoadPoint {
+  double t = 0;
+  Eigen::VectorXd F;
+};
+
+/// An N-point load history produced point by point (memory independent of its length).
+struct SystemLoadSource {
+  std::size_t size = 0;
+  std::function<SystemLoadPoint(std::size_t)> at;
+  double period = 0, cycle_start = 0;  ///< as LoadHistory
+};
+
+/// The one-point fretting cycle through two load patterns: F(t) = F_T(t) e_T + F_N(t) e_N with
+/// F_T, F_N the one-point cycle (fretting_source) and e_T, e_N 2N-vectors (a system's
+/// `patterns`: the first tangential, the second normal). Throws InputError.
+SystemLoadSource system_fretting_source(const FrettingCycle& cycle, const Eigen::VectorXd& e_T,
+                                        const Eigen::VectorXd& e_N);
+/// A stored history (rows t, F (2N)); it must outlive the source.
+SystemLoadSource system_history_source(const std::vector<SystemLoadPoint>& points,
+                                       double period = 0);
+
+struct SystemSimulationSample;
+
+struct SystemSimulationOptions {
+  HeatOptions heat;
+  BranchRule branch_rule = BranchRule::kClosest;
+  double tol = 1e-9;     ///< acceptance on the step's unit-free residual
+  int record_every = 1;  ///< every n-th step is passed to on_sample (0: none)
+  int max_points = 8;    ///< enumeration limit (system_step.hpp)
+  /// Receives the start state, every record_every-th step and the last step, as produced.
+  std::function<void(const SystemSimulationSample&)> on_sample;
+  std::string validate() const;
+};
+
+/// The state after a step (per point vectors of length N; w of length 2N).
+struct SystemSimulationSample {
+  long step = 0;
+  double t = 0;
+  Eigen::VectorXd F;                     ///< 2N
+  Eigen::VectorXd w;                     ///< 2N, total displacements (T, N interleaved)
+  Eigen::VectorXd P_T, P_N, g, w_w, w_Ti;  ///< N
+  Eigen::VectorXd temperature;           ///< N (T_initial when heat is off)
+  std::vector<StateLabel> state;         ///< N, contact state a-d after the step
+  std::vector<SolutionType> type;        ///< N, the step's solution type per point
+  int count = 1;                         ///< number of step solutions found
+  bool complete = true;                  ///< the step's enumeration was proved complete
+  double dissipation_total = 0, work_total = 0, stored = 0;
+};
+
+struct SystemSimulationResult {
+  SimulationResult::Outcome outcome = SimulationResult::Outcome::kCompleted;
+  bool inconclusive = false;  ///< stopped at a step with no solution found and no proof
+  std::string message;
+  long steps = 0;
+  SystemSimulationSample final_state;
+  long branch_steps = 0;      ///< steps with more than one solution
+  long incomplete_steps = 0;  ///< steps whose enumeration was not proved complete
+  Eigen::VectorXd wear_integral;  ///< per point: sum k_i P_N1,i |Dw_Ti,i| (Archard)
+  Eigen::VectorXd total_slip;     ///< per point: sum |Dw_Ti,i|
+  Eigen::VectorXd dissipation;    ///< per point: sum D_i
+  Eigen::VectorXd min_step_dissipation;  ///< per point: most negative D_i / its scale (0: none)
+  Eigen::VectorXd max_temperature;       ///< per point
+  std::vector<Eigen::VectorXd> wear_per_cycle;  ///< per cycle, per point (when periodic)
+  double external_work = 0, stored_energy = 0, work_abs = 0;
+  double energy_error = 0;  ///< |W - (E - E0) - sum D| / work_abs
+  double max_residual = 0;
+};
+
+/// Runs the march. Throws InputError for invalid options, system or load (sizes, NaN, t not
+/// increasing, N above max_points).
+SystemSimulationResult simulate_system(const ContactSystem& system, const SystemLoadSource& load,
+                                       const SystemSimulationOptions& options);
+
+}  // namespace cpkit::rate

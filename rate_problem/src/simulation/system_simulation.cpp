@@ -1,0 +1,259 @@
+#include "cpkit/rate_problem/simulation/system_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/step/system_step.hpp"
+
+namespace cpkit::rate {
+
+SystemLoadSource system_fretting_source(const FrettingCycle& cycle, const Eigen::VectorXd& e_T,
+                                        const Eigen::VectorXd& e_N) {
+  if (e_T.size() != e_N.size() || e_T.size() == 0 || e_T.size() % 2 != 0)
+    throw InputError("fretting through patterns: the two patterns need 2N numbers each");
+  if (!e_T.allFinite() || !e_N.allFinite())
+    throw InputError("fretting through patterns: a pattern value is not finite");
+  const LoadSource one = fretting_source(cycle);
+  SystemLoadSource s;
+  s.size = one.size;
+  s.period = one.period;
+  s.cycle_start = one.cycle_start;
+  s.at = [one, e_T, e_N](std::size_t k) {
+    const LoadPoint p = one.at(k);
+    return SystemLoadPoint{p.t, p.F_T * e_T + p.F_N * e_N};
+  };
+  return s;
+}
+
+SystemLoadSource system_history_source(const std::vector<SystemLoadPoint>& points, double period) {
+  SystemLoadSource s;
+  s.size = points.size();
+  s.period = period;
+  s.at = [&points](std::size_t k) { return points[k]; };
+  return s;
+}
+
+std::string SystemSimulationOptions::validate() const {
+  std::string m = heat.validate();
+  if (!m.empty()) return "heat: " + m;
+  if (!(tol > 0) || !std::isfinite(tol)) return "tol must be finite and > 0";
+  if (record_every < 0) return "record_every must be >= 0";
+  if (max_points < 1) return "max_points must be >= 1";
+  return {};
+}
+
+namespace {
+
+std::string describe(const SystemSimulationSample& s) {
+  std::ostringstream o;
+  o.precision(8);
+  o << "t = " << s.t << " (step " << s.step << "), states ";
+  for (std::size_t i = 0; i < s.state.size(); ++i) o << (i ? "/" : "") << to_string(s.state[i]);
+  return o.str();
+}
+
+}  // namespace
+
+SystemSimulationResult simulate_system(const ContactSystem& system, const SystemLoadSource& load,
+                                       const SystemSimulationOptions& opt) {
+  throw_if_invalid(opt.validate(), "simulation");
+  const int N = system.n_points();
+  if (N > opt.max_points)
+    throw InputError("the N-point simulation enumerates 4^N active sets per step; " +
+                     std::to_string(N) + " points exceed the limit of " +
+                     std::to_string(opt.max_points));
+  if (load.size == 0 || !load.at) throw InputError("load history: the load history is empty");
+  SystemStepProblem sp;
+  sp.system = system;
+  sp.DF = Eigen::VectorXd::Zero(2 * N);
+  throw_if_invalid(sp.validate(), "system");
+  SystemStepOptions so;
+  so.tol = opt.tol;
+  so.max_points = opt.max_points;
+
+  // Per point: Archard k, the weight of the slip in the branch distance.
+  Eigen::VectorXd k(N), xi_weight(N), C_T(N);
+  for (int i = 0; i < N; ++i) {
+    const StepProblem one = point_step_problem(sp, i);
+    k[i] = one.params.k();
+    xi_weight[i] = one.params.detA() / one.params.D0();
+    C_T[i] = one.params.C_T;
+  }
+  SystemSimulationResult res;
+  SystemSimulationSample cur;
+  cur.F = Eigen::VectorXd::Zero(2 * N);
+  cur.w = Eigen::VectorXd::Zero(2 * N);
+  cur.P_T.resize(N);
+  cur.P_N.resize(N);
+  cur.g.resize(N);
+  for (int i = 0; i < N; ++i) {
+    const SystemPoint& q = system.points[static_cast<std::size_t>(i)];
+    cur.P_T[i] = q.P_T;
+    cur.P_N[i] = q.P_N;
+    cur.g[i] = q.g;
+    cur.state.push_back(step_state_label(point_step_problem(sp, i).params, q.P_T, q.P_N, q.g));
+  }
+  cur.type.assign(static_cast<std::size_t>(N), SolutionType::kStick);
+  cur.w_w = cur.w_Ti = Eigen::VectorXd::Zero(N);
+  cur.temperature = Eigen::VectorXd::Constant(N, opt.heat.T_initial);
+  auto ct_energy = [&](const Eigen::VectorXd& P_T) { return C_T.dot(P_T.cwiseProduct(P_T)); };
+  const double E0 = 0.5 * ct_energy(cur.P_T);
+  res.wear_integral = res.total_slip = res.dissipation = res.min_step_dissipation =
+      Eigen::VectorXd::Zero(N);
+  res.max_temperature = cur.temperature;
+  if (opt.record_every > 0 && opt.on_sample) opt.on_sample(cur);
+  double t_prev = 0;
+  for (std::size_t step = 0; step < load.size; ++step) {
+    const SystemLoadPoint lp = load.at(step);
+    if (lp.F.size() != 2 * N)
+      throw InputError("load point " + std::to_string(step) + " has " +
+                       std::to_string(lp.F.size()) + " numbers; " + std::to_string(N) +
+                       " points need " + std::to_string(2 * N));
+    if (!std::isfinite(lp.t) || !lp.F.allFinite())
+      throw InputError("load point " + std::to_string(step) + " has a non-finite value");
+    if (!(lp.t > t_prev))
+      throw InputError("load point " + std::to_string(step) + ": t = " + std::to_string(lp.t) +
+                       " does not increase (previous " + std::to_string(t_prev) + ")");
+    for (int i = 0; i < N; ++i) {
+      SystemPoint& q = sp.system.points[static_cast<std::size_t>(i)];
+      q.P_T = cur.P_T[i];
+      q.P_N = cur.P_N[i];
+      q.g = cur.g[i];
+    }
+    sp.DF = lp.F - cur.F;
+    const SystemStepSolutionSet set = enumerate_system_step(sp, so);
+    if (!set.complete) ++res.incomplete_steps;
+    if (set.solutions.empty()) {
+      std::ostringstream m;
+      m << "stopped before t = " << lp.t << ": ";
+      if (set.complete) {
+        res.outcome = SimulationResult::Outcome::kNoSolution;
+        m << "the step has no solution (complete enumeration of its 4^N active sets). ";
+      } else {
+        res.outcome = SimulationResult::Outcome::kNoSolution;
+        res.inconclusive = true;
+        m << "no solution was found and the enumeration is not complete ("
+          << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
+      }
+      m << "Last state: " << describe(cur);
+      res.message = m.str();
+      break;
+    }
+    std::size_t best = 0;
+    if (set.solutions.size() > 1) {
+      ++res.branch_steps;
+      if (opt.branch_rule == BranchRule::kStop) {
+        res.outcome = SimulationResult::Outcome::kBranchStop;
+        std::ostringstream m;
+        m << "stopped before t = " << lp.t << ": the step has " << set.solutions.size()
+          << " solutions and the branch rule is 'stop'. Last state: " << describe(cur);
+        res.message = m.str();
+        break;
+      }
+      double bd = INFINITY;
+      for (std::size_t j = 0; j < set.solutions.size(); ++j) {
+        double d = 0;
+        for (int i = 0; i < N; ++i) {
+          const StepValues& v = set.solutions[j].values[static_cast<std::size_t>(i)];
+          d += std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight[i] * std::abs(v.Dw_Ti);
+        }
+        if (d < bd) {
+          bd = d;
+          best = j;
+        }
+      }
+    }
+    const SystemStepSolution& sol = set.solutions[best];
+    res.max_residual = std::max(res.max_residual, sol.residual);
+    SystemSimulationSample nx = cur;
+    nx.step = res.steps + 1;
+    nx.t = lp.t;
+    nx.F = lp.F;
+    nx.count = static_cast<int>(set.solutions.size());
+    nx.complete = set.complete;
+    double dW = 0;
+    const double dt = lp.t - t_prev;
+    for (int i = 0; i < N; ++i) {
+      const StepValues& v = sol.values[static_cast<std::size_t>(i)];
+      const SolutionType ty = sol.types[static_cast<std::size_t>(i)];
+      const ContactParameters a = point_step_problem(sp, i).params;
+      nx.type[static_cast<std::size_t>(i)] = ty;
+      nx.w[2 * i] += v.Dw_T;
+      nx.w[2 * i + 1] += v.Dw_N;
+      nx.w_w[i] += v.Dw_w;
+      nx.w_Ti[i] += v.Dw_Ti;
+      dW += 0.5 * (cur.F[2 * i] + lp.F[2 * i]) * v.Dw_T +
+            0.5 * (cur.F[2 * i + 1] + lp.F[2 * i + 1]) * v.Dw_N;
+      // Put the point exactly on its active constraints.
+      if (v.P_N1 <= 0 || ty == SolutionType::kSeparation || ty == SolutionType::kOpen) {
+        nx.P_N[i] = 0;
+        nx.P_T[i] = 0;
+        nx.g[i] = std::min(v.g1, 0.0);
+      } else {
+        nx.P_N[i] = v.P_N1;
+        nx.g[i] = 0;
+        const double Y = a.mu * v.P_N1;
+        nx.P_T[i] = ty == SolutionType::kSlipPlus    ? Y
+                    : ty == SolutionType::kSlipMinus ? -Y
+                                                     : std::clamp(v.P_T1, -Y, Y);
+      }
+      nx.state[static_cast<std::size_t>(i)] = step_state_label(a, nx.P_T[i], nx.P_N[i], nx.g[i]);
+      const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+      const double D_scale =
+          (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
+      if (D < 0)
+        res.min_step_dissipation[i] =
+            std::min(res.min_step_dissipation[i], D / std::max(D_scale, 1e-300));
+      res.dissipation[i] += D;
+      nx.dissipation_total += D;
+      res.wear_integral[i] += k[i] * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
+      res.total_slip[i] += std::abs(v.Dw_Ti);
+      if (opt.heat.enabled)
+        nx.temperature[i] = heat_step(opt.heat, cur.temperature[i], std::max(D, 0.0), dt);
+      res.max_temperature[i] = std::max(res.max_temperature[i], nx.temperature[i]);
+    }
+    nx.work_total += dW;
+    res.work_abs += std::abs(dW);
+    nx.stored = 0.5 * nx.w.dot(system.A * nx.w) + 0.5 * ct_energy(nx.P_T);
+    if (!nx.w.allFinite() || !std::isfinite(nx.stored) || !std::isfinite(nx.work_total)) {
+      res.outcome = SimulationResult::Outcome::kNumericalFailure;
+      res.message = "stopped before t = " + std::to_string(lp.t) +
+                    ": the values exceed the range of double. Last state: " + describe(cur);
+      break;
+    }
+    if (load.period > 0 && lp.t > load.cycle_start) {
+      const double tc = 0.5 * (t_prev + lp.t) - load.cycle_start;
+      if (tc >= 0) {
+        const auto c = static_cast<std::size_t>(std::floor(tc / load.period));
+        while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N));
+        for (int i = 0; i < N; ++i)
+          res.wear_per_cycle[c][i] += sol.values[static_cast<std::size_t>(i)].Dw_w;
+      }
+    }
+    t_prev = lp.t;
+    cur = nx;
+    ++res.steps;
+    if (opt.record_every > 0 && opt.on_sample &&
+        (res.steps % opt.record_every == 0 || step + 1 == load.size))
+      opt.on_sample(cur);
+  }
+  res.final_state = cur;
+  res.external_work = cur.work_total;
+  res.stored_energy = cur.stored;
+  res.energy_error = std::abs(res.external_work - (res.stored_energy - E0) - cur.dissipation_total) /
+                     std::max(res.work_abs, 1e-300);
+  if (res.outcome == SimulationResult::Outcome::kCompleted) {
+    std::ostringstream m;
+    m << "completed " << res.steps << " steps; final " << describe(cur);
+    if (res.incomplete_steps > 0)
+      m << "; " << res.incomplete_steps
+        << " steps had an enumeration not proved complete (m >= 3 points slipping with wear)";
+    res.message = m.str();
+  }
+  return res;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,670 @@
+#include "cpkit/rate_problem/step/system_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/residuals.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+
+namespace cpkit::rate {
+namespace {
+
+constexpr double kDegTol = 1e-12;  // relative size under which a coefficient or pivot is zero
+
+ContactParameters block_parameters(const ContactSystem& s, int i) {
+  ContactParameters p;
+  p.a11 = s.A(2 * i, 2 * i);
+  p.a12 = s.A(2 * i, 2 * i + 1);
+  p.a22 = s.A(2 * i + 1, 2 * i + 1);
+  const SystemPoint& q = s.points[static_cast<std::size_t>(i)];
+  p.mu = q.mu;
+  p.C_T = q.C_T;
+  p.k_a = q.k_a;
+  p.P_s = q.P_s;
+  p.criterion = s.criterion;
+  return p;
+}
+
+/// The affine maps of u = (P_N1 (N), xi (N)) computed once per problem:
+/// P_T1 = pt0 + PT u, Dw_N = wn0 + WN u, Dw_T = wt0 + WT u (wt0/WT: total tangential Dw).
+struct Maps {
+  int N = 0;
+  Eigen::VectorXd pt0, wn0, wt0, P0, PT0, g0, mu, k, C_T;
+  Eigen::MatrixXd PT, WN, WT;
+  double fscale = 0, dscale = 0;
+};
+
+Maps make_maps(const SystemStepProblem& p) {
+  const ContactSystem& s = p.system;
+  const int N = s.n_points();
+  Maps m;
+  m.N = N;
+  m.P0.resize(N);
+  m.PT0.resize(N);
+  m.g0.resize(N);
+  m.mu.resize(N);
+  m.k.resize(N);
+  m.C_T.resize(N);
+  for (int i = 0; i < N; ++i) {
+    const SystemPoint& q = s.points[static_cast<std::size_t>(i)];
+    m.P0[i] = std::max(q.P_N, 0.0);
+    m.PT0[i] = q.P_T;
+    m.g0[i] = q.g;
+    m.mu[i] = q.mu;
+    m.k[i] = q.k_a / (3.0 * q.P_s);
+    m.C_T[i] = q.C_T;
+  }
+  // G y = rhs, y = (Dw (2N), DP_T (N)): A Dw + E_T DP_T = DF - E_N DP_N; Dw_T - C_T DP_T = xi.
+  const int n = 3 * N;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, n);
+  G.topLeftCorner(2 * N, 2 * N) = s.A;
+  for (int i = 0; i < N; ++i) {
+    G(2 * i, 2 * N + i) = 1;
+    G(2 * N + i, 2 * i) = 1;
+    G(2 * N + i, 2 * N + i) = -m.C_T[i];
+  }
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, 2 * N + 1);
+  for (int i = 0; i < 2 * N; ++i) R(i, 0) = p.DF[i];
+  for (int i = 0; i < N; ++i) {
+    R(2 * i + 1, 0) += m.P0[i];   // DP_N = P_N1 - P_N0
+    R(2 * i + 1, 1 + i) = -1;     // d/dP_N1
+    R(2 * N + i, 1 + N + i) = 1;  // d/dxi
+  }
+  const Eigen::MatrixXd Y = G.partialPivLu().solve(R);
+  m.pt0.resize(N);
+  m.wn0.resize(N);
+  m.wt0.resize(N);
+  m.PT.resize(N, 2 * N);
+  m.WN.resize(N, 2 * N);
+  m.WT.resize(N, 2 * N);
+  for (int i = 0; i < N; ++i) {
+    m.pt0[i] = m.PT0[i] + Y(2 * N + i, 0);
+    m.PT.row(i) = Y.block(2 * N + i, 1, 1, 2 * N);
+    m.wn0[i] = Y(2 * i + 1, 0);
+    m.WN.row(i) = Y.block(2 * i + 1, 1, 1, 2 * N);
+    m.wt0[i] = Y(2 * i, 0);
+    m.WT.row(i) = Y.block(2 * i, 1, 1, 2 * N);
+  }
+  double f = std::max({m.P0.cwiseAbs().maxCoeff(), m.PT0.cwiseAbs().maxCoeff(),
+                       p.DF.cwiseAbs().maxCoeff()});
+  m.fscale = std::max(f, std::numeric_limits<double>::min());
+  // Displacement scale: the largest point compliance (as classify_step uses for one point).
+  double comp = 0;
+  for (int i = 0; i < N; ++i) {
+    const ContactParameters a = block_parameters(s, i);
+    comp = std::max(comp, (a.a11 + a.a22) / a.detA() + a.C_T);
+  }
+  m.dscale = m.g0.cwiseAbs().maxCoeff() + m.fscale * comp;
+  return m;
+}
+
+/// The step NCP F(z), z = (P_N1, l+, l-) per point.
+void ncp_F(const Maps& m, const Eigen::VectorXd& z, Eigen::VectorXd& F) {
+  const int N = m.N;
+  Eigen::VectorXd u(2 * N);
+  for (int i = 0; i < N; ++i) {
+    u[i] = z[3 * i];
+    u[N + i] = z[3 * i + 1] - z[3 * i + 2];
+  }
+  F.resize(3 * N);
+  for (int i = 0; i < N; ++i) {
+    const double PT1 = m.pt0[i] + m.PT.row(i).dot(u);
+    const double g_lin = m.g0[i] + m.wn0[i] + m.WN.row(i).dot(u);
+    F[3 * i] = -g_lin + m.k[i] * z[3 * i] * (z[3 * i + 1] + z[3 * i + 2]);
+    F[3 * i + 1] = m.mu[i] * z[3 * i] - PT1;
+    F[3 * i + 2] = m.mu[i] * z[3 * i] + PT1;
+  }
+}
+
+void ncp_J(const Maps& m, const Eigen::VectorXd& z, Eigen::MatrixXd& J) {
+  const int N = m.N;
+  J.setZero(3 * N, 3 * N);
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) {
+      // du_j/dz: P_N1_j = z[3j], xi_j = z[3j+1] - z[3j+2].
+      const double dPT_P = m.PT(i, j), dPT_x = m.PT(i, N + j);
+      const double dWN_P = m.WN(i, j), dWN_x = m.WN(i, N + j);
+      J(3 * i, 3 * j) = -dWN_P;
+      J(3 * i, 3 * j + 1) = -dWN_x;
+      J(3 * i, 3 * j + 2) = dWN_x;
+      J(3 * i + 1, 3 * j) = -dPT_P;
+      J(3 * i + 1, 3 * j + 1) = -dPT_x;
+      J(3 * i + 1, 3 * j + 2) = dPT_x;
+      J(3 * i + 2, 3 * j) = dPT_P;
+      J(3 * i + 2, 3 * j + 1) = dPT_x;
+      J(3 * i + 2, 3 * j + 2) = -dPT_x;
+    }
+    J(3 * i, 3 * i) += m.k[i] * (z[3 * i + 1] + z[3 * i + 2]);
+    J(3 * i, 3 * i + 1) += m.k[i] * z[3 * i];
+    J(3 * i, 3 * i + 2) += m.k[i] * z[3 * i];
+    J(3 * i + 1, 3 * i) += m.mu[i];
+    J(3 * i + 2, 3 * i) += m.mu[i];
+  }
+}
+
+McpProblem make_mcp(const Maps& maps) {
+  auto F = [maps](const Vec& x, Vec& f) {
+    if (x.size() != 3 * maps.N) return false;
+    ncp_F(maps, x, f);
+    return f.allFinite();
+  };
+  auto J = [maps](const Vec& x, Mat& j) {
+    if (x.size() != 3 * maps.N) return false;
+    ncp_J(maps, x, j);
+    return j.allFinite();
+  };
+  McpProblem mcp = make_ncp(3 * maps.N, F, J, "N-point incremental step");
+  mcp.x0 = Vec::Zero(3 * maps.N);
+  for (int i = 0; i < maps.N; ++i) mcp.x0[3 * i] = maps.P0[i];
+  return mcp;
+}
+
+/// One equation of an active set in the scaled unknowns v = (P_N1, sigma xi): the linear part
+/// a . v + a0, plus (bilinear rows) -c P_N1,i xi_i.
+struct Row {
+  Eigen::RowVectorXd a;
+  double a0 = 0;
+  int bil = -1;   // point index of the bilinear term, -1: linear
+  double c = 0;   // coefficient of P_N1,i * xi_i (xi = v_{N+i} / sigma)
+};
+
+const char* kTypeNames[4] = {"separation", "stick", "slip+", "slip-"};
+
+struct Enumerator {
+  const SystemStepProblem& p;
+  const Maps& m;
+  const McpProblem& mcp;
+  double tol;
+  double sigma;  // xi scale: v_{N+i} = sigma xi_i (force units)
+  SystemStepSolutionSet& out;
+  std::vector<Eigen::VectorXd> found;  // u of accepted solutions
+  std::vector<int> code;
+
+  std::string set_name() const {
+    std::string s = "(";
+    for (std::size_t i = 0; i < code.size(); ++i) {
+      if (i) s += "/";
+      s += kTypeNames[code[i]];
+    }
+    return s + ")";
+  }
+
+  void note(const std::string& why) {
+    out.complete = false;
+    if (out.notes.size() < 20) out.notes.push_back("active set " + set_name() + ": " + why);
+    else if (out.notes.size() == 20) out.notes.push_back("(further unresolved active sets not listed)");
+  }
+
+  /// The equations of the active set `code`.
+  std::vector<Row> rows() const {
+    const int N = m.N;
+    std::vector<Row> r;
+    r.reserve(2 * N);
+    auto lin = [&](const Eigen::RowVectorXd& du, double c0) {
+      // du is d/du with u = (P_N1, xi); convert to v = (P_N1, sigma xi).
+      Row row;
+      row.a = du;
+      row.a.tail(N) /= sigma;
+      row.a0 = c0;
+      return row;
+    };
+    for (int i = 0; i < N; ++i) {
+      Eigen::RowVectorXd e = Eigen::RowVectorXd::Zero(2 * N);
+      switch (code[i]) {
+        case 0: {  // separation: P_N1 = 0, P_T1 = 0
+          e[i] = 1;
+          r.push_back(lin(e, 0));
+          r.push_back(lin(m.PT.row(i), m.pt0[i]));
+          break;
+        }
+        case 1: {  // stick: xi = 0, g1 = g0 + Dw_N = 0
+          e[N + i] = 1;
+          r.push_back(lin(e, 0));
+          r.push_back(lin(m.WN.row(i), m.g0[i] + m.wn0[i]));
+          break;
+        }
+        default: {  // slip s: s P_T1 - mu P_N1 = 0; g0 + Dw_N - k s P_N1 xi = 0
+          const double s = code[i] == 2 ? 1.0 : -1.0;
+          Eigen::RowVectorXd f = s * m.PT.row(i);
+          f[i] -= m.mu[i];
+          r.push_back(lin(f, s * m.pt0[i]));
+          Row g = lin(m.WN.row(i), m.g0[i] + m.wn0[i]);
+          if (m.k[i] > 0) {
+            g.bil = i;
+            g.c = -m.k[i] * s / sigma;  // in v: -k s P_N1 (v_{N+i} / sigma)
+          }
+          r.push_back(g);
+        }
+      }
+    }
+    return r;
+  }
+
+  /// Accepts a candidate v when the step NCP holds (unit-free residual) and it is new.
+  void accept(const Eigen::VectorXd& v) {
+    const int N = m.N;
+    if (!v.allFinite()) return;
+    Eigen::VectorXd u = v;
+    u.tail(N) /= sigma;
+    for (int i = 0; i < N; ++i) {
+      if (u[i] < 0) {
+        if (u[i] < -1e-9 * m.fscale) return;
+        u[i] = 0;  // rounding below 0
+      }
+    }
+    Vec z(3 * N);
+    for (int i = 0; i < N; ++i) {
+      z[3 * i] = u[i];
+      z[3 * i + 1] = std::max(u[N + i], 0.0);
+      z[3 * i + 2] = std::max(-u[N + i], 0.0);
+    }
+    Vec F;
+    ncp_F(m, z, F);
+    const Residuals res = mcp_residuals(mcp, z, F);
+    if (!res.finite || !(res.natural <= tol)) return;
+    for (const auto& f : found) {
+      if ((f.head(N) - u.head(N)).cwiseAbs().maxCoeff() <= 1e-9 * m.fscale &&
+          (f.tail(N) - u.tail(N)).cwiseAbs().maxCoeff() <= 1e-9 * m.dscale)
+        return;
+    }
+    found.push_back(u);
+    SystemStepSolution sol;
+    sol.residual = res.natural;
+    sol.values = system_step_values(p, u.head(N), u.tail(N));
+    for (int i = 0; i < N; ++i)
+      sol.types.push_back(classify_step(point_step_problem(p, i), sol.values[static_cast<std::size_t>(i)]));
+    out.solutions.push_back(std::move(sol));
+  }
+
+  /// Newton on the square system (linear rows + bilinear rows) from v.
+  bool newton(const std::vector<Row>& R, Eigen::VectorXd& v) const {
+    const int n = static_cast<int>(v.size());
+    Eigen::VectorXd f(n);
+    Eigen::MatrixXd J(n, n);
+    for (int it = 0; it < 60; ++it) {
+      double fs = 0;
+      for (int r = 0; r < n; ++r) {
+        const Row& row = R[static_cast<std::size_t>(r)];
+        f[r] = row.a.dot(v) + row.a0;
+        J.row(r) = row.a;
+        double sc = row.a.cwiseAbs().dot(v.cwiseAbs()) + std::abs(row.a0);
+        if (row.bil >= 0) {
+          const int i = row.bil;
+          f[r] += row.c * v[i] * v[m.N + i];
+          J(r, i) += row.c * v[m.N + i];
+          J(r, m.N + i) += row.c * v[i];
+          sc += std::abs(row.c * v[i] * v[m.N + i]);
+        }
+        fs = std::max(fs, std::abs(f[r]) / std::max(sc, std::numeric_limits<double>::min()));
+      }
+      if (fs <= 1e-15) return true;
+      const Eigen::VectorXd dv = J.fullPivLu().solve(f);
+      if (!dv.allFinite()) return false;
+      v -= dv;
+      if (dv.cwiseAbs().maxCoeff() <= 1e-15 * (1 + v.cwiseAbs().maxCoeff())) return true;
+    }
+    return false;
+  }
+
+  void run_set() {
+    const int N = m.N, n = 2 * N;
+    std::vector<Row> R = rows();
+    std::vector<const Row*> lin_rows, bil_rows;
+    for (const auto& r : R) (r.bil >= 0 ? bil_rows : lin_rows).push_back(&r);
+    const int mm = static_cast<int>(bil_rows.size());
+    const int nl = n - mm;
+    // Linear part, rows equilibrated by their largest coefficient.
+    Eigen::MatrixXd L(nl, n);
+    Eigen::VectorXd b(nl);
+    for (int r = 0; r < nl; ++r) {
+      const double sc = std::max(lin_rows[static_cast<std::size_t>(r)]->a.cwiseAbs().maxCoeff(),
+                                 std::numeric_limits<double>::min());
+      L.row(r) = lin_rows[static_cast<std::size_t>(r)]->a / sc;
+      b[r] = -lin_rows[static_cast<std::size_t>(r)]->a0 / sc;
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(L);
+    lu.setThreshold(kDegTol);
+    if (lu.rank() < nl) {
+      const Eigen::VectorXd v0 = lu.solve(b);
+      if ((L * v0 - b).cwiseAbs().maxCoeff() <= 1e-9 * (1 + b.cwiseAbs().maxCoeff()))
+        note("its linear equations are singular and consistent (a continuum or a degenerate "
+             "case); not resolved");
+      return;  // inconsistent: no solution in this active set
+    }
+    const Eigen::VectorXd v0 = lu.solve(b);
+    if (mm == 0) {
+      accept(v0);
+      return;
+    }
+    Eigen::MatrixXd K = lu.kernel();  // n x mm
+    for (int j = 0; j < mm; ++j) K.col(j).normalize();
+    // Bilinear row j on v = v0 + K t: alpha(t) + c beta(t) gamma(t), each affine.
+    struct Aff {
+      double c0;
+      Eigen::VectorXd c;
+    };
+    auto affine = [&](const Eigen::RowVectorXd& a, double a0) {
+      return Aff{a.dot(v0) + a0, (a * K).transpose()};
+    };
+    if (mm == 1) {
+      const Row& r = *bil_rows[0];
+      const int i = r.bil;
+      const Aff al = affine(r.a, r.a0);
+      const double b0 = v0[i], b1 = K(i, 0), g0 = v0[N + i], g1 = K(N + i, 0);
+      const double c2 = r.c * b1 * g1, c1 = al.c[0] + r.c * (b0 * g1 + b1 * g0),
+                   c0 = al.c0 + r.c * b0 * g0;
+      const double s2 = std::abs(c2),
+                   s1 = r.a.cwiseAbs().dot(K.col(0).cwiseAbs()) +
+                        std::abs(r.c) * (std::abs(b0 * g1) + std::abs(b1 * g0)),
+                   s0 = r.a.cwiseAbs().dot(v0.cwiseAbs()) + std::abs(r.a0) + std::abs(r.c * b0 * g0);
+      double roots[2];
+      const int nr = stable_quadratic_roots(c2, c1, c0, s2, s1, s0, kDegTol, roots);
+      if (nr < 0) {
+        note("the bilinear equation vanishes on the line of the linear ones (a continuum); not "
+             "resolved");
+        return;
+      }
+      for (int k = 0; k < nr; ++k) {
+        Eigen::VectorXd v = v0 + K.col(0) * roots[k];
+        newton(R, v);
+        accept(v);
+      }
+      return;
+    }
+    if (mm == 2) {
+      solve_two(R, bil_rows, v0, K);
+      return;
+    }
+    // m >= 3: Newton from the wear-free solution of this active set (the small-wear root).
+    std::vector<Row> R0 = R;
+    for (auto& r : R0) r.bil = -1;
+    Eigen::MatrixXd L0(n, n);
+    Eigen::VectorXd b0(n);
+    for (int r = 0; r < n; ++r) {
+      L0.row(r) = R0[static_cast<std::size_t>(r)].a;
+      b0[r] = -R0[static_cast<std::size_t>(r)].a0;
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu0(L0);
+    Eigen::VectorXd v = lu0.isInvertible() ? Eigen::VectorXd(lu0.solve(b0)) : v0;
+    // The root continued from the wear-free solution, searched only when that solution is
+    // near this active set's sign conditions (P_N1 >= 0, s xi >= 0 of its slipping points,
+    // within 10% of the force and displacement scales): Newton directly, else continuation
+    // in the wear coefficients (scaled by 1/8 ... 1).
+    bool near = true;
+    for (const Row* r : bil_rows) {
+      const int i = r->bil;
+      const double s = code[static_cast<std::size_t>(i)] == 2 ? 1.0 : -1.0;
+      near = near && v[i] >= -0.1 * m.fscale && s * v[N + i] / sigma >= -0.1 * m.dscale;
+    }
+    if (near) {
+      Eigen::VectorXd w = v;
+      bool ok = newton(R, w);
+      if (!ok) {
+        ok = true;
+        w = v;
+        std::vector<Row> Rh = R;
+        for (int k = 1; k <= 8 && ok; ++k) {
+          for (std::size_t r = 0; r < R.size(); ++r) Rh[r].c = R[r].c * k / 8.0;
+          ok = newton(Rh, w);
+        }
+      }
+      if (ok) accept(w);
+    }
+    std::ostringstream o;
+    o << mm << " points slip with wear: up to " << (1 << mm)
+      << " roots; only the one continued from the wear-free solution was searched (Newton)";
+    note(o.str());
+  }
+
+  /// m = 2: the two conics in the plane v = v0 + K t, by the Sylvester resultant.
+  void solve_two(const std::vector<Row>& R, const std::vector<const Row*>& br,
+                 const Eigen::VectorXd& v0, const Eigen::MatrixXd& K0) {
+    const int N = m.N;
+    // Conic j: [xx, xy, yy, x, y, 1] in t = (x, y).
+    auto conic = [&](const Row& r, const Eigen::MatrixXd& K, double co[6], double& scale) {
+      const int i = r.bil;
+      const double a0 = r.a.dot(v0) + r.a0;
+      const Eigen::RowVectorXd aK = r.a * K;
+      const double b0 = v0[i], b1 = K(i, 0), b2 = K(i, 1);
+      const double g0 = v0[N + i], g1 = K(N + i, 0), g2 = K(N + i, 1);
+      const double c = r.c;
+      co[0] = c * b1 * g1;
+      co[1] = c * (b1 * g2 + b2 * g1);
+      co[2] = c * b2 * g2;
+      co[3] = aK[0] + c * (b0 * g1 + b1 * g0);
+      co[4] = aK[1] + c * (b0 * g2 + b2 * g0);
+      co[5] = a0 + c * b0 * g0;
+      scale = r.a.cwiseAbs().dot(v0.cwiseAbs()) + std::abs(r.a0) +
+              (r.a.cwiseAbs() * K.cwiseAbs()).sum() +
+              std::abs(c) * (std::abs(b0) + std::abs(b1) + std::abs(b2)) *
+                  (std::abs(g0) + std::abs(g1) + std::abs(g2));
+    };
+    // A rotation of t that gives both conics a y^2 term (a generic projection direction).
+    const double angles[] = {0.0, 0.5, 1.1, 1.7, 2.3, 2.9};
+    double best = -1;
+    Eigen::MatrixXd K = K0;
+    double q[2][6], sc[2];
+    for (double th : angles) {
+      Eigen::Matrix2d Rt;
+      Rt << std::cos(th), -std::sin(th), std::sin(th), std::cos(th);
+      const Eigen::MatrixXd Kt = K0 * Rt;
+      double qt[2][6], st[2];
+      conic(*br[0], Kt, qt[0], st[0]);
+      conic(*br[1], Kt, qt[1], st[1]);
+      const double score = std::min(std::abs(qt[0][2]) / st[0], std::abs(qt[1][2]) / st[1]) +
+                           1e-3 * std::max(std::abs(qt[0][2]) / st[0], std::abs(qt[1][2]) / st[1]);
+      if (score > best) {
+        best = score;
+        K = Kt;
+        std::copy(qt[0], qt[0] + 6, q[0]);
+        std::copy(qt[1], qt[1] + 6, q[1]);
+        sc[0] = st[0];
+        sc[1] = st[1];
+      }
+    }
+    const bool quad0 = std::max({std::abs(q[0][0]), std::abs(q[0][1]), std::abs(q[0][2])}) > kDegTol * sc[0];
+    const bool quad1 = std::max({std::abs(q[1][0]), std::abs(q[1][1]), std::abs(q[1][2])}) > kDegTol * sc[1];
+    std::vector<Eigen::Vector2d> cands;
+    if (!quad0 && !quad1) {
+      // Both equations are linear in the plane.
+      Eigen::Matrix2d B;
+      B << q[0][3], q[0][4], q[1][3], q[1][4];
+      Eigen::FullPivLU<Eigen::Matrix2d> l2(B);
+      l2.setThreshold(kDegTol);
+      if (l2.rank() < 2) {
+        note("the two wear equations are dependent in their plane; not resolved");
+        return;
+      }
+      cands.push_back(l2.solve(Eigen::Vector2d(-q[0][5], -q[1][5])));
+    } else {
+      // Polynomials in x: A_j (const), B_j = q3' ... as coefficient arrays (low to high).
+      using P = std::vector<double>;
+      auto mul = [](const P& a, const P& b) {
+        P r(a.size() + b.size() - 1, 0.0);
+        for (std::size_t i = 0; i < a.size(); ++i)
+          for (std::size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+        return r;
+      };
+      auto sub = [](P a, const P& b) {
+        if (a.size() < b.size()) a.resize(b.size(), 0.0);
+        for (std::size_t i = 0; i < b.size(); ++i) a[i] -= b[i];
+        return a;
+      };
+      auto abs_p = [](P a) {
+        for (auto& x : a) x = std::abs(x);
+        return a;
+      };
+      auto add = [](P a, const P& b) {
+        if (a.size() < b.size()) a.resize(b.size(), 0.0);
+        for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+        return a;
+      };
+      const P A1{q[0][2]}, A2{q[1][2]};
+      const P B1{q[0][4], q[0][1]}, B2{q[1][4], q[1][1]};
+      const P C1{q[0][5], q[0][3], q[0][0]}, C2{q[1][5], q[1][3], q[1][0]};
+      const P u1 = sub(mul(A1, C2), mul(A2, C1));
+      const P u2 = sub(mul(A1, B2), mul(A2, B1));
+      const P u3 = sub(mul(B1, C2), mul(B2, C1));
+      P res = sub(mul(u1, u1), mul(u2, u3));
+      // Its rounding scale: the same products of absolute values.
+      const P v1 = add(mul(abs_p(A1), abs_p(C2)), mul(abs_p(A2), abs_p(C1)));
+      const P v2 = add(mul(abs_p(A1), abs_p(B2)), mul(abs_p(A2), abs_p(B1)));
+      const P v3 = add(mul(abs_p(B1), abs_p(C2)), mul(abs_p(B2), abs_p(C1)));
+      const P rs = add(mul(v1, v1), mul(v2, v3));
+      double rmax = 0, smax = 0;
+      for (std::size_t i = 0; i < res.size(); ++i) {
+        rmax = std::max(rmax, std::abs(res[i]));
+        smax = std::max(smax, rs[i]);
+      }
+      if (rmax <= 1e-11 * smax) {
+        note("the resultant of the two wear equations vanishes identically (a common "
+             "component: a continuum or a degenerate case); not resolved");
+        return;
+      }
+      while (res.size() > 1 && std::abs(res.back()) <= 1e-14 * smax) res.pop_back();
+      const int deg = static_cast<int>(res.size()) - 1;
+      std::vector<double> xs;
+      if (deg == 1) {
+        xs.push_back(-res[0] / res[1]);
+      } else if (deg >= 2) {
+        Eigen::MatrixXd Cm = Eigen::MatrixXd::Zero(deg, deg);
+        for (int i = 1; i < deg; ++i) Cm(i, i - 1) = 1;
+        for (int i = 0; i < deg; ++i) Cm(i, deg - 1) = -res[static_cast<std::size_t>(i)] / res.back();
+        Eigen::EigenSolver<Eigen::MatrixXd> es(Cm, false);
+        for (int i = 0; i < deg; ++i) {
+          const std::complex<double> z = es.eigenvalues()[i];
+          // Near-real eigenvalues are candidates (a double root splits by O(sqrt(eps))); each
+          // is polished and verified, so a generous bound only costs time.
+          if (std::abs(z.imag()) <= 1e-6 * (1 + std::abs(z))) xs.push_back(z.real());
+        }
+      }
+      for (double x : xs) {
+        for (int j = 0; j < 2; ++j) {
+          const double a = q[j][2], bb = q[j][1] * x + q[j][4],
+                       c = (q[j][0] * x + q[j][3]) * x + q[j][5];
+          double ys[2];
+          const double s = sc[j];
+          const int ny = stable_quadratic_roots(a, bb, c, s, s, s, kDegTol, ys);
+          for (int k = 0; k < ny; ++k) cands.emplace_back(x, ys[k]);
+        }
+      }
+    }
+    for (const auto& t : cands) {
+      Eigen::VectorXd v = v0 + K * t;
+      newton(R, v);
+      accept(v);
+    }
+  }
+};
+
+}  // namespace
+
+StepProblem point_step_problem(const SystemStepProblem& p, int i) {
+  StepProblem sp;
+  sp.params = block_parameters(p.system, i);
+  const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
+  sp.state.P_T0 = q.P_T;
+  sp.state.P_N0 = q.P_N;
+  sp.state.g0 = q.g;
+  sp.load.dF_T = p.DF[2 * i];
+  sp.load.dF_N = p.DF[2 * i + 1];
+  return sp;
+}
+
+std::string SystemStepProblem::validate() const {
+  const ContactSystem& s = system;
+  const int N = s.n_points();
+  std::ostringstream o;
+  if (N < 1) return "the system has no points";
+  if (s.A.rows() != 2 * N || s.A.cols() != 2 * N) {
+    o << "A is " << s.A.rows() << " x " << s.A.cols() << "; " << N << " points need " << 2 * N
+      << " x " << 2 * N;
+    return o.str();
+  }
+  if (DF.size() != 2 * N) {
+    o << "DF has " << DF.size() << " numbers; " << N << " points need " << 2 * N;
+    return o.str();
+  }
+  if (!s.A.allFinite()) return "A has a value that is not finite";
+  if (!DF.allFinite()) return "DF has a value that is not finite";
+  const double amax = s.A.cwiseAbs().maxCoeff();
+  if (!((s.A - s.A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * amax))
+    return "A is not symmetric";
+  Eigen::LLT<Eigen::MatrixXd> llt(s.A);
+  if (llt.info() != Eigen::Success || !(amax > 0)) return "A is not positive definite";
+  if (s.criterion != Criterion::kCoulomb)
+    return "the N-point step supports only the Coulomb criterion (38)";
+  for (int i = 0; i < N; ++i) {
+    StepProblem sp = point_step_problem(*this, i);
+    std::string m = sp.validate();
+    if (!m.empty()) {
+      o << "point " << i + 1 << ": " << m;
+      return o.str();
+    }
+  }
+  return {};
+}
+
+std::vector<StepValues> system_step_values(const SystemStepProblem& p, const Eigen::VectorXd& P_N1,
+                                           const Eigen::VectorXd& xi) {
+  const Maps m = make_maps(p);
+  const int N = m.N;
+  if (P_N1.size() != N || xi.size() != N)
+    throw InputError("system_step_values: P_N1 and Dw_Ti need one value per point");
+  Eigen::VectorXd u(2 * N);
+  u << P_N1, xi;
+  std::vector<StepValues> out(static_cast<std::size_t>(N));
+  for (int i = 0; i < N; ++i) {
+    StepValues& v = out[static_cast<std::size_t>(i)];
+    v.P_N1 = P_N1[i];
+    v.DP_N = P_N1[i] - m.P0[i];
+    v.P_T1 = m.pt0[i] + m.PT.row(i).dot(u);
+    v.DP_T = v.P_T1 - m.PT0[i];
+    v.Dw_Ti = xi[i];
+    v.Dw_T = m.wt0[i] + m.WT.row(i).dot(u);
+    v.Dw_N = m.wn0[i] + m.WN.row(i).dot(u);
+    v.Dw_w = m.k[i] * std::max(v.P_N1, 0.0) * std::abs(xi[i]);
+    v.g1 = m.g0[i] + v.Dw_N - v.Dw_w;
+  }
+  return out;
+}
+
+McpProblem system_step_as_mcp(const SystemStepProblem& p) {
+  throw_if_invalid(p.validate(), "step");
+  return make_mcp(make_maps(p));
+}
+
+SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
+                                            const SystemStepOptions& opt) {
+  throw_if_invalid(p.validate(), "step");
+  if (!(opt.tol > 0) || !std::isfinite(opt.tol))
+    throw InputError("step enumeration: tol must be finite and > 0");
+  const int N = p.system.n_points();
+  if (N > opt.max_points)
+    throw InputError("the N-point step enumerates 4^N active sets; " + std::to_string(N) +
+                     " points exceed the limit of " + std::to_string(opt.max_points));
+  const Maps m = make_maps(p);
+  const McpProblem mcp = make_mcp(m);
+  SystemStepSolutionSet out;
+  const double amax = p.system.A.cwiseAbs().maxCoeff();
+  Enumerator e{p, m, mcp, opt.tol, amax, out, {}, std::vector<int>(static_cast<std::size_t>(N), 0)};
+  long total = 1;
+  for (int i = 0; i < N; ++i) total *= 4;
+  for (long c = 0; c < total; ++c) {
+    long r = c;
+    for (int i = 0; i < N; ++i) {
+      e.code[static_cast<std::size_t>(i)] = static_cast<int>(r % 4);
+      r /= 4;
+    }
+    e.run_set();
+  }
+  out.active_sets = total;
+  return out;
+}
+
+}  // namespace cpkit::rate
