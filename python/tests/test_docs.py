@@ -1,0 +1,46 @@
+"""Every ```python snippet of docs/python.md runs as shown, and each `print(...)  # text` line
+prints what its comment says (the part before "..." or before ": explanation")."""
+import contextlib
+import io
+import os
+import re
+
+import pytest
+
+from conftest import SOURCE_DIR
+
+DOC = os.path.join(SOURCE_DIR, "docs", "python.md")
+
+
+def snippets():
+    with open(DOC) as f:
+        text = f.read()
+    return re.findall(r"```python\n(.*?)```", text, flags=re.S)
+
+
+def expected_outputs(code):
+    out = []
+    for line in code.splitlines():
+        m = re.match(r"\s*print\(.*\)\s+# (.*)$", line)
+        if m:
+            want = m.group(1)
+            if "..." in want:
+                want = want.split("...")[0]
+            else:
+                want = re.sub(r"^(\S+): .*$", r"\1", want)
+            out.append(want.rstrip())
+    return out
+
+
+@pytest.mark.parametrize("k", range(len(snippets())))
+def test_snippet_runs_and_prints_what_it_says(k, tmp_path, monkeypatch):
+    code = snippets()[k]
+    monkeypatch.chdir(tmp_path)  # figures land in a scratch directory
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        exec(compile(code, f"docs/python.md snippet {k + 1}", "exec"), {})
+    lines = buf.getvalue().splitlines()
+    wants = expected_outputs(code)
+    assert len(lines) == len(wants)
+    for got, want in zip(lines, wants):
+        assert got.startswith(want), (got, want)
