@@ -1,4 +1,4 @@
-"""Every ```python snippet of docs/python.md runs as shown, and each `print(...)  # text` line
+"""Every ```python snippet of docs/python.md and README.md runs as shown, and each `print(...)  # text` line
 prints what its comment says (the part before "..." or before ": explanation")."""
 import contextlib
 import io
@@ -9,13 +9,15 @@ import pytest
 
 from conftest import SOURCE_DIR
 
-DOC = os.path.join(SOURCE_DIR, "docs", "python.md")
+DOCS = [os.path.join(SOURCE_DIR, "docs", "python.md"), os.path.join(SOURCE_DIR, "README.md")]
 
 
 def snippets():
-    with open(DOC) as f:
-        text = f.read()
-    return re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    found = []
+    for doc in DOCS:
+        with open(doc) as f:
+            found += re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
+    return found
 
 
 def expected_outputs(code):
@@ -38,7 +40,7 @@ def test_snippet_runs_and_prints_what_it_says(k, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # figures land in a scratch directory
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
-        exec(compile(code, f"docs/python.md snippet {k + 1}", "exec"), {})
+        exec(compile(code, f"python snippet {k + 1}", "exec"), {})
     lines = buf.getvalue().splitlines()
     wants = expected_outputs(code)
     assert len(lines) == len(wants)
