@@ -118,6 +118,8 @@ pyb::dict param_direction_map(const pyb::object& params, const pyb::object& stat
   const auto o = map_options(method, threads);
   const auto axis = axis_from(param, from, to, n);
   if (theta_n < 1) throw InputError("theta_n must be at least 1, got " + std::to_string(theta_n));
+  check_memory(3.0 * n * theta_n, "the map of " + std::to_string(n) + " x " +
+                                      std::to_string(theta_n) + " (n x theta_n) cells");
   rate::ParamDirectionMap map;
   {
     pyb::gil_scoped_release release;
@@ -158,6 +160,8 @@ pyb::dict param_param_map(const pyb::object& params, const pyb::object& state,
   const auto o = map_options(method, threads);
   const auto a1 = axis_from(param1, from1, to1, n1);
   const auto a2 = axis_from(param2, from2, to2, n2);
+  check_memory(5.0 * n1 * n2, "the map of " + std::to_string(n1) + " x " + std::to_string(n2) +
+                                  " (n1 x n2) cells");
   rate::ParamParamMap map;
   {
     pyb::gil_scoped_release release;

@@ -1,5 +1,6 @@
 // The one-point rate problem [Stromberg et al. 1996, Sec. 4.3]: every solution for a contact
 // state and a load rate (docs/contact_model.md), as plain Python data.
+#include <cmath>
 #include <string>
 
 #include "bindings.hpp"
@@ -38,8 +39,10 @@ pyb::dict solve_rate(const pyb::object& params, const pyb::object& state, double
   const auto p = parameters_from(params);
   const auto s = state_from(state, p);
   const auto m = method_from(method);
-  const rate::LoadRate load{finite_number(pyb::float_(dF_T), "dF_T"),
-                            finite_number(pyb::float_(dF_N), "dF_N")};
+  if (!std::isfinite(dF_T) || !std::isfinite(dF_N))
+    throw InputError("dF must be finite, got (" + std::to_string(dF_T) + ", " +
+                     std::to_string(dF_N) + ")");
+  const rate::LoadRate load{dF_T, dF_N};
   rate::RateSolutionSet set;
   {
     pyb::gil_scoped_release release;

@@ -142,6 +142,9 @@ pyb::dict simulate(const pyb::object& params, const Vec& t, const Vec& F_T, cons
     throw InputError("load history: t, F_T and F_N must have the same length (got " +
                      std::to_string(t.size()) + ", " + std::to_string(F_T.size()) + ", " +
                      std::to_string(F_N.size()) + ")");
+  // The history and the recorded series (one sample per step at record_every = 1).
+  check_memory(static_cast<double>(t.size()) * (sizeof(rate::LoadPoint) + sizeof(rate::SimulationSample)),
+               "a simulation of " + std::to_string(t.size()) + " load points");
   rate::LoadHistory h;
   h.period = period;
   h.cycle_start = cycle_start;
@@ -238,12 +241,17 @@ void bind_step(pyb::module_& m) {
                                int steps_per_cycle, int ramp_steps) {
     rate::FrettingCycle c{F_N, amplitude, period, cycles, steps_per_cycle, ramp_steps};
     throw_if_invalid(c.validate(), "fretting");
+    check_memory((static_cast<double>(cycles) * steps_per_cycle + ramp_steps) * 3 * sizeof(double),
+                 "a fretting history of " + std::to_string(cycles) + " x " +
+                     std::to_string(steps_per_cycle) + " steps");
     return history_arrays(rate::fretting_history(c));
   });
   m.def("ramp_history", [](double F_T0, double F_N0, double F_T1, double F_N1, double duration,
                            int steps) {
     rate::LoadRamp r{F_T0, F_N0, F_T1, F_N1, duration, steps};
     throw_if_invalid(r.validate(), "ramp");
+    check_memory(static_cast<double>(steps) * 3 * sizeof(double),
+                 "a ramp of " + std::to_string(steps) + " steps");
     return history_arrays(rate::ramp_history(r));
   });
 }

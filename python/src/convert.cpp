@@ -1,6 +1,7 @@
 #include "convert.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/status.hpp"
@@ -85,6 +86,16 @@ double finite_number(const pyb::handle& o, const char* what) {
   }
   if (!std::isfinite(v)) throw InputError(std::string(what) + " must be finite, got " + std::to_string(v));
   return v;
+}
+
+void check_memory(double bytes, const std::string& what) {
+  constexpr double kLimit = 1024.0 * 1024.0 * 1024.0;
+  if (bytes > kLimit) {
+    char size[32];
+    std::snprintf(size, sizeof size, "%.3g GiB", bytes / kLimit);
+    throw InputError(what + " would need about " + size +
+                     " of memory; the limit is 1 GiB: use fewer cells or steps");
+  }
 }
 
 namespace {

@@ -39,6 +39,10 @@ rate::ContactState state_from(const pyb::handle& o, const rate::ContactParameter
 /// Rates as a dict {dP_T, dP_N, dw_T, dw_N, dw_Ti, dw_w} (the CLI's JSON names).
 pyb::dict to_dict(const rate::Rates& r);
 
+/// The module's memory bound, as the command line's (apps/memory_limit.hpp): a result that
+/// would need more than 1 GiB is refused up front with InputError naming `what` and the size.
+void check_memory(double bytes, const std::string& what);
+
 /// A finite double from a Python number; ValueError naming `what` otherwise.
 double finite_number(const pyb::handle& o, const char* what);
 

@@ -207,3 +207,13 @@ def test_simulation_agrees_with_the_cli():
     # Coulomb's law holds along the whole series (|P_T| <= mu P_N).
     assert (np.abs(r.series["P_T"]) <= params.mu * r.series["P_N"] * (1 + 1e-12) + 1e-15).all()
     pickle.loads(pickle.dumps(r))
+
+
+def test_oversized_requests_are_refused_up_front():
+    with pytest.raises(ValueError, match="100000 x 100000 .*limit is 1 GiB"):
+        cpkit.param_direction_map(cpkit.ContactParameters(), "b", "mu", 0.1, 1, 100000, 100000)
+    with pytest.raises(ValueError, match="limit is 1 GiB"):
+        cpkit.param_param_map(cpkit.ContactParameters(), "b", "mu", 0.1, 1, 100000, "a22", 1, 2,
+                              100000)
+    with pytest.raises(ValueError, match="limit is 1 GiB"):
+        cpkit.fretting_history(cycles=10**6, steps_per_cycle=10**6)
