@@ -9,6 +9,7 @@ from . import _cpkit
 from .contact import (ContactParameters, ContactState, direction_map, enumerate_step,
                       fretting_history, param_direction_map, param_param_map, ramp_history,
                       rate_indicators, simulate, solve_rate_problem, solve_step)
+from .system import ContactSystem
 from .lcp import cross_verify, enumerate, solve, solve_mcp, solvers
 from .results import (TYPE_BITS, CrossVerifyReport, DirectionMap, ParamDirectionMap,
                       ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_cpkit, m) {
   cpkit::py::bind_rate(m);
   cpkit::py::bind_maps(m);
   cpkit::py::bind_step(m);
+  cpkit::py::bind_system(m);
 }
