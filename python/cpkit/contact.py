@@ -50,12 +50,24 @@ def _load(dF):
     return float(a[0]), float(a[1])
 
 
-def solve_rate_problem(params: ContactParameters, state, dF,
-                       method: str = "enumerate") -> RateSolutionSet:
-    """Every solution of the rate problem for load rate dF = (dF_T, dF_N). state: a
-    ContactState or just its label ("a".."d"). method: "enumerate" (LCP + complete
-    enumeration, default), "analytic" (the paper's closed forms) or a single solver ("lemke",
-    "fb-newton", "ipopt": one solution, complete=False)."""
+def solve_rate_problem(params, state, dF=None, method: str = "enumerate"):
+    """Every solution of a rate problem.
+
+    One point: solve_rate_problem(params, state, dF, method="enumerate") with
+    ContactParameters, a ContactState or just its label ("a".."d"), and dF = (dF_T, dF_N);
+    method "enumerate" (LCP + complete enumeration, default), "analytic" (the paper's closed
+    forms) or a single solver ("lemke", "fb-newton", "ipopt": one solution, complete=False).
+    Returns a RateSolutionSet.
+
+    N points: solve_rate_problem(system, dF, method="enumerate") with a ContactSystem and a
+    2N-vector dF (see cpkit.system.solve_system_rate). Returns a SystemRateSolutionSet."""
+    from .system import ContactSystem, solve_system_rate
+    if isinstance(params, ContactSystem):
+        if dF is not None:  # solve_rate_problem(system, dF, method)
+            method = dF
+        return solve_system_rate(params, state, method)
+    if dF is None:
+        raise TypeError("solve_rate_problem(params, state, dF): the load rate dF is missing")
     dFT, dFN = _load(dF)
     return RateSolutionSet._from(_cpkit.solve_rate_problem(params, state, dFT, dFN, method))
 

@@ -411,3 +411,47 @@ class SimulationResult:
         return (f"SimulationResult(outcome={self.outcome!r}, steps={self.steps}, "
                 f"wear_depth={self.wear_depth:.6g}, total_slip={self.total_slip:.6g}, "
                 f"energy_error={self.energy_error:.3g})")
+
+
+@dataclass
+class SystemRateSolution:
+    """One piece of an N-point rate problem's solution set with one type tuple (`types`, one
+    name per point). Rates are dicts of numpy arrays (one entry per point): dP_T, dP_N, dw_T,
+    dw_N, dw_Ti, dw_w."""
+    types: List[str]
+    kind: str
+    start: Dict[str, np.ndarray]
+    start_closed: bool = True
+    end: Optional[Dict[str, np.ndarray]] = None
+    end_closed: bool = True
+    direction: Optional[Dict[str, np.ndarray]] = None
+
+
+@dataclass(repr=False)
+class SystemRateSolutionSet:
+    """All solutions of an N-point rate problem (system/system_rate.hpp); `count` is -1 for
+    infinitely many; `complete` False for single solvers or when the enumeration could not
+    decide (then `message` says why)."""
+    solutions: List[SystemRateSolution]
+    infinite: bool
+    complete: bool
+    count: int
+    message: str = ""
+    residual: float = 0.0
+    disagreement: bool = False
+
+    @property
+    def type_tuples(self) -> List[str]:
+        """The distinct type tuples present, e.g. ["stick/slip+", "stick/stick"]."""
+        return sorted({"/".join(s.types) for s in self.solutions})
+
+    def __repr__(self):
+        n = "inf" if self.count < 0 else str(self.count)
+        return (f"SystemRateSolutionSet(count={n}, complete={self.complete}, "
+                f"types={self.type_tuples})")
+
+    @classmethod
+    def _from(cls, d):
+        d = dict(d)
+        d["solutions"] = [SystemRateSolution(**s) for s in d["solutions"]]
+        return cls(**d)

@@ -11,7 +11,7 @@ import numpy as np
 from . import _cpkit
 from .contact import ContactParameters
 
-__all__ = ["ContactSystem"]
+__all__ = ["ContactSystem", "solve_system_rate", "system_direction_counts"]
 
 
 def _finite_list(a, name, shape=None):
@@ -92,3 +92,32 @@ class ContactSystem:
     def __repr__(self):
         states = "".join(p["state"] for p in self.points)
         return f"ContactSystem({self.name!r}, N={self.n_points}, states={states!r})"
+
+
+def solve_system_rate(system: ContactSystem, dF, method: str = "enumerate"):
+    """Every solution of the N-point rate problem for the load rate dF (a 2N-vector,
+    interleaved (dF_T1, dF_N1, ...)). method: "enumerate" (every solution) or a single LCP
+    solver ("lemke", "fb-newton", "ipopt": one solution, complete=False)."""
+    from .results import SystemRateSolutionSet
+    if not isinstance(system, ContactSystem):
+        raise TypeError("system must be a cpkit.ContactSystem")
+    dF = np.asarray(dF, dtype=float)
+    if dF.ndim != 1:
+        raise ValueError(f"dF must be a 1-D array of 2N = {2 * system.n_points} entries, got shape {dF.shape}")
+    return SystemRateSolutionSet._from(_cpkit.solve_system_rate(system.to_json(), dF, method))
+
+
+def system_direction_counts(system: ContactSystem, theta, e1=None, e2=None) -> Dict[str, np.ndarray]:
+    """For the loads dF = cos(theta) e1 + sin(theta) e2 at every theta (radians): "count"
+    (-1: infinitely many), "n_tuples" (distinct type tuples) and "reliable" (False where the
+    enumeration could not decide), as numpy arrays. e1, e2 default to the system's patterns."""
+    if e1 is None or e2 is None:
+        if system.patterns is None:
+            raise ValueError("give the load patterns e1, e2 (the system has no patterns)")
+        e1, e2 = system.patterns
+    theta = np.atleast_1d(np.asarray(theta, dtype=float))
+    if theta.ndim != 1:
+        raise ValueError(f"theta must be 1-D, got shape {theta.shape}")
+    d = _cpkit.system_direction_counts(system.to_json(), np.asarray(e1, float),
+                                       np.asarray(e2, float), theta)
+    return dict(d)
