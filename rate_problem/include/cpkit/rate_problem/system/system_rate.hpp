@@ -52,6 +52,8 @@ struct SystemRateSolutionSet {
   std::string message;    ///< why complete is false, or which single solver answered
   /// Single solvers: the natural residual of the LCP solution (as RateSolutionSet::residual).
   double residual = 0;
+  /// Single solvers: the solver's point is not in the enumerated set (CLI exit 3).
+  bool disagreement = false;
   /// Force and displacement-rate scales used by the tolerance tests (relative to the load).
   double force_scale = 1, disp_scale = 1;
   int count() const noexcept;  ///< number of solutions; -1 when infinite
@@ -85,6 +87,7 @@ struct SystemRatePrecomputed {
   Eigen::MatrixXd M;         ///< m x m
   Eigen::MatrixXd Q;         ///< m x 2N: q = Q dF
   Eigen::MatrixXd Pf, Pz;    ///< 6N x 2N, 6N x m: physical rates = Pf dF + Pz z
+  Eigen::MatrixXd G;         ///< m x 6N: w = G (physical rates) (the LCP's complementary rows)
   double inv_min_eig = 1;    ///< 1 / smallest eigenvalue of A (displacement-rate scale)
   double max_C_T = 0;
 };
