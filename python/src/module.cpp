@@ -15,4 +15,5 @@ PYBIND11_MODULE(_cpkit, m) {
   cpkit::py::bind_maps(m);
   cpkit::py::bind_step(m);
   cpkit::py::bind_system(m);
+  cpkit::py::bind_system_rate(m);
 }
