@@ -127,14 +127,14 @@ def check_one_node(args, failures):
         thresholds.append(mu_star)
         print(f"{nx:4d} {A[0, 0]:10.6f} {A[0, 1]:10.6f} {A[1, 1]:10.6f} {mu_star:16.6f}")
         # cpkit's mu x direction map of the node on a mu grid straddling mu* (not on it): its
-        # analytic critical value must be mu*, no cell below mu* may have several solutions,
-        # and some cell above must (a sampled direction grid sees the three-solution wedge only
-        # once it is wider than a cell, so its first such row may lie a little above mu*).
+        # analytic critical value must be mu* and no cell below mu* may have several solutions
+        # (a sampled direction grid sees the three-solution wedge only once it is wider than a
+        # cell, so its first such row lies a little above mu*, or beyond the grid).
         h = 0.01
         mus = mu_star + h * (np.arange(-20, 21) + 0.5)
         first, m = one_node_threshold_from_map(A, mus, args.theta_n)
         crit = [c["x"] for c in m.critical_values if c["name"] in ("D+=0", "D-=0")]
-        ok = first is not None and first > mu_star and \
+        ok = (first is None or first > mu_star) and \
             len(crit) == 1 and abs(crit[0] - mu_star) <= 1e-12 * mu_star
         # Exact direction maps (every sector, no sampling) just below and above mu*: one
         # solution for every direction / three in a sector.
@@ -144,7 +144,8 @@ def check_one_node(args, failures):
         ok = ok and below.max() == 1 and below.min() == 1 and above.max() == 3
         print(f"     map: critical value {crit[0]:.6f}; exact direction maps: max count "
               f"{below.max()} below, {above.max()} above; sampled grid ({args.theta_n} "
-              f"directions): first non-unique mu {first:.4f}")
+              f"directions): first non-unique mu "
+              f"{'%.4f' % first if first is not None else 'beyond mu* + 0.2'}")
         if not ok:
             failures.append(f"one node, nx = {nx}: map threshold {first} vs a11/|a12| = {mu_star}")
     diffs = np.abs(np.diff(thresholds))
@@ -152,6 +153,79 @@ def check_one_node(args, failures):
     if len(diffs) >= 2 and not (diffs[1:] < diffs[:-1]).all():
         failures.append(f"one-node threshold does not settle under refinement: {thresholds}")
     return thresholds
+
+
+def system_of(A, mu, patterns):
+    """Every contact point grazing (state b) with friction coefficient mu."""
+    return cpkit.ContactSystem(A, [{"state": "b", "mu": float(mu)} for _ in range(A.shape[0] // 2)],
+                               patterns=patterns)
+
+
+def directions_at(A, e_T, e_N, mu, theta):
+    """Counts of the N-point rate problem at mu for the punch motions theta (radians):
+    dF = cos theta e_T + sin theta e_N. Returns (several, undecided): does some direction have
+    several solutions (verified: a lower bound even where the enumeration is incomplete), and
+    how many directions the enumeration could not decide completely."""
+    c = cpkit.system_direction_counts(system_of(A, mu, (e_T, e_N)), theta)
+    several = bool(((c["count"] > 1) | (c["count"] < 0)).any())
+    return several, int((~c["reliable"]).sum()), c["count"]
+
+
+def threshold(A, e_T, e_N, theta, mu_grid, tol):
+    """The first mu of mu_grid with several solutions for some sampled direction, refined by
+    bisection to tol (the property is monotone in mu on every case tried here). Returns
+    (mu, undecided directions met below it) or (None, ...)."""
+    undecided, lo = 0, None
+    for mu in mu_grid:
+        several, und, _ = directions_at(A, e_T, e_N, mu, theta)
+        if several:
+            hi = mu
+            break
+        undecided += und
+        lo = mu
+    else:
+        return None, undecided
+    if lo is None:
+        return hi, undecided
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        several, und, _ = directions_at(A, e_T, e_N, mid, theta)
+        if several:
+            hi = mid
+        else:
+            lo, undecided = mid, undecided + und
+    return hi, undecided
+
+
+def check_body(args, failures):
+    theta = (np.arange(args.theta_n) + 0.5) * 2 * math.pi / args.theta_n
+    mu_grid = np.arange(0.25, 3.0 + 1e-12, 0.25)
+    print(f"== cpkit's N-point rate problem, every contact node grazing (state b), "
+          f"{args.theta_n} punch motion directions ==")
+    # One node through the N-point machinery (the Schur-complement LCP of size 3) must give
+    # the one-point map cell by cell (a different route: the one-point LCP / closed forms).
+    A, e_T, e_N, _ = body(args.meshes[0], args, contact="corner")
+    mus = np.linspace(0.5, 3.0, 11)
+    one = cpkit.param_direction_map(cpkit.ContactParameters(a11=A[0, 0], a12=A[0, 1], a22=A[1, 1]),
+                                    "b", "mu", mus[0], mus[-1], len(mus), args.theta_n)
+    # Same loads as the one-point map: force directions (dF_T, dF_N) = (cos, sin).
+    agree = True
+    for i, mu in enumerate(mus):
+        c = cpkit.system_direction_counts(system_of(A, mu, (np.array([1.0, 0.0]), np.array([0.0, 1.0]))),
+                                          one.theta)
+        agree &= bool((c["count"] == one.count[i]).all())
+    print(f"  one node (nx = {args.meshes[0]}): N-point counts equal the one-point map on all "
+          f"{one.count.size} cells: {agree}")
+    if not agree:
+        failures.append("one node: the N-point counts differ from the one-point map")
+    print(f"{'nx':>4} {'N':>3} {'first mu with several solutions':>32}  undecided directions below it")
+    firsts = []
+    for nx in args.body_meshes:
+        A, e_T, e_N, x = body(nx, args, contact="bottom")
+        mu1, undecided = threshold(A, e_T, e_N, theta, mu_grid, 1e-3)
+        firsts.append(mu1)
+        print(f"{nx:4d} {len(x):3d} {('%.3f' % mu1) if mu1 is not None else 'none <= 3':>32}  {undecided}")
+    return firsts
 
 
 def main(argv=None):
@@ -163,13 +237,17 @@ def main(argv=None):
     ap.add_argument("--meshes", type=int, nargs="+", default=[4, 8, 16, 32, 64],
                     help="elements along the width, one body per value")
     ap.add_argument("--theta-n", type=int, default=360, help="load directions of the maps")
+    ap.add_argument("--body-meshes", type=int, nargs="+", default=[2, 3, 4, 5, 6],
+                    help="elements along the width for the whole-bottom contact (N = value + 1)")
     ap.add_argument("--quick", action="store_true", help="smaller meshes and maps (the test)")
     args = ap.parse_args(argv)
     if args.quick:
         args.meshes = [4, 8, 16, 32]
-        args.theta_n = 180
+        args.body_meshes = [2, 3]
+        args.theta_n = 72
     failures = []
     check_one_node(args, failures)
+    check_body(args, failures)
     for f in failures:
         print("CHECK FAILED:", f)
     print("all checks passed" if not failures else f"{len(failures)} check(s) failed")
