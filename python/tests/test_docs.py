@@ -1,5 +1,5 @@
 """Every ```python snippet of docs/python.md and README.md runs as shown, and each `print(...)  # text` line
-prints what its comment says (the part before "..." or before ": explanation")."""
+prints what its comment says (the part before "...", ": explanation" or " (explanation)")."""
 import contextlib
 import io
 import os
@@ -30,6 +30,7 @@ def expected_outputs(code):
                 want = want.split("...")[0]
             else:
                 want = re.sub(r"^(\S+): .*$", r"\1", want)
+                want = re.sub(r" \(.*\)$", "", want)  # "value (explanation)"
             out.append(want.rstrip())
     return out
 
