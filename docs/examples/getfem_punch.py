@@ -17,13 +17,22 @@ foundation. The load is a motion of the punch (top edge) in the direction
    (T_1, N_1, T_2, N_2, ...), T = +x, N = -y (into the foundation, so that w_N > 0 penetrates),
    every contact point grazing (state b: touching, no force yet).
 
+4. The whole bottom in contact (N = nx + 1 nodes, all grazing): for each mesh, the first mu at
+   which cpkit's N-point rate problem has several solutions for some punch motion direction
+   (sampled directions; a coarse mu grid, then bisection to 1e-3). Directions where the
+   enumeration cannot decide (several nodes lifting off at once: a piece of dimension >= 2)
+   are counted and reported; the solutions found there are verified, so "several" remains
+   proven, but "unique" is not claimed for them.
+
 Checks (exit code 1 when one fails):
 - one contact node (the body touches the foundation at its bottom-left corner only): the
   condensed 2 x 2 block [[a11, a12], [a12, a22]] gives the one-point criterion "unique for every
   load direction iff a11 > mu |a12|", i.e. the threshold mu* = a11 / |a12|; cpkit's
   (mu x direction) count map of that node must switch from "one solution everywhere" to
   "three solutions somewhere" exactly there;
-- refining the mesh changes that threshold smoothly (successive changes shrink).
+- refining the mesh changes that threshold smoothly (successive changes shrink);
+- the same node through the N-point route (its 3 x 3 Schur-complement LCP) gives the one-point
+  map's counts cell by cell.
 
 Run: python3 docs/examples/getfem_punch.py [--quick]   (PYTHONPATH=<build>/python for a build
 tree). Needs Debian's python3-getfem; exits 77 saying so when GetFEM is not installed.
