@@ -10,6 +10,9 @@
 // no count (the set may hold more; the enumerated count is shown for reference, as
 // "enumerated_count" in JSON), and their point is checked against the enumerated set. Exit codes: 0 at least one solution, 1 none
 // (or the single solver found none), 2 bad input, 3 the routes disagree (reason on stderr).
+//
+// N points (rate_system.cpp): cpkit rate --system FILE [--dF ... 2N numbers] [--json]
+//              [--method enumerate|lemke|fb-newton|ipopt]
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -25,6 +28,11 @@
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
 
 namespace cpkit::cli {
+
+/// `cpkit rate --system FILE` (rate_system.cpp).
+int run_rate_system(const std::string& path, const std::vector<double>& dF,
+                    const std::string& method, bool json);
+
 namespace {
 
 struct RateArgs {
@@ -35,6 +43,8 @@ struct RateArgs {
   std::vector<double> dF;
   std::string method = "enumerate";
   bool json = false;
+  std::string system;  ///< --system FILE: the N-point problem (rate_system.cpp)
+  std::vector<CLI::Option*> one_point_required;  ///< required unless --system is given
 };
 
 nlohmann::json rates_json(const rate::Rates& r) {
@@ -158,6 +168,15 @@ void print_text(const rate::RateSolutionSet& s, const RateArgs& a,
 }
 
 int run_rate(const RateArgs& a) {
+  if (!a.system.empty()) {
+    for (const CLI::Option* o : a.one_point_required)
+      if (o->count() > 0 && o->get_name() != "--dF")
+        throw InputError(o->get_name() + " is a one-point option; with --system the state and "
+                         "parameters come from the system file");
+    return run_rate_system(a.system, a.dF, a.method, a.json);
+  }
+  for (const CLI::Option* o : a.one_point_required)
+    if (o->count() == 0) throw InputError(o->get_name() + " is required (or give --system FILE)");
   const rate::ContactParameters p = model_parameters(a.model);
   rate::ContactState st;
   const auto label = rate::state_from_string(a.state);
@@ -218,12 +237,25 @@ void add_rate_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<RateArgs>();
   auto* cmd = app.add_subcommand(
       "rate", "Rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]");
-  cmd->add_option("--state", args->state, "contact state: a (open), b (grazing), c (stick), "
-                                          "d (sliding)")->required();
+  auto* state = cmd->add_option("--state", args->state,
+                                "contact state: a (open), b (grazing), c (stick), d (sliding)");
   add_model_options(*cmd, args->model);
+  // required for one point only; checked in run_rate (with --system they come from the file)
+  args->one_point_required = {state};
+  for (const char* n : {"--a11", "--a12", "--a22", "--mu"}) {
+    CLI::Option* o = cmd->get_option(n);
+    o->required(false);
+    args->one_point_required.push_back(o);
+  }
   cmd->add_option("--P_N", args->P_N, "normal force in states c/d (> 0)");
   cmd->add_option("--sgnPT", args->sgn_PT, "sign of P_T in state d (+1 or -1; default +1)");
-  cmd->add_option("--dF", args->dF, "load rate: DFT DFN")->expected(2)->required();
+  auto* dF = cmd->add_option("--dF", args->dF,
+                             "load rate: DFT DFN (one point); 2N numbers T_1 N_1 T_2 N_2 ... "
+                             "with --system (default: the file's dF)")
+                 ->expected(1, -1);
+  args->one_point_required.push_back(dF);
+  cmd->add_option("--system", args->system,
+                  "N-point system file (JSON, docs/file_formats.md): solve its rate problem");
   cmd->add_option("--method", args->method,
                   "enumerate (default, cross-checked against analytic), analytic, lemke, "
                   "fb-newton, ipopt");

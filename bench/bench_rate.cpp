@@ -20,6 +20,7 @@
 #include "cpkit/rate_problem/one_point/analytic.hpp"
 #include "cpkit/rate_problem/one_point/rate_lcp.hpp"
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/system/system_rate.hpp"
 
 using namespace cpkit::rate;
 
@@ -62,6 +63,70 @@ double best_rate(int reps, int n, F&& run) {
     best = std::max(best, n / s);
   }
   return best;
+}
+
+/// A random N-point system: SPD A with coupling, points in states b and d (half each).
+ContactSystem make_system(int N, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  std::normal_distribution<double> G(0, 1);
+  ContactSystem s;
+  Eigen::MatrixXd B(2 * N, 2 * N);
+  for (int i = 0; i < 2 * N; ++i)
+    for (int j = 0; j < 2 * N; ++j) B(i, j) = G(rng);
+  s.A = B * B.transpose() + 0.5 * Eigen::MatrixXd::Identity(2 * N, 2 * N);
+  for (int i = 0; i < N; ++i) {
+    SystemPoint p;
+    p.mu = 0.1 + 2 * U(rng);
+    p.C_T = U(rng);
+    p.k_a = U(rng);
+    if (i % 2 == 1) {
+      p.state.label = StateLabel::kD;
+      p.state.P_N = p.P_N = 0.5 + U(rng);
+      p.state.sgn_PT = U(rng) < 0.5 ? 1 : -1;
+      p.P_T = p.state.sgn_PT * p.mu * p.P_N;
+    }
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+/// Cost of one N-point rate solve (full set) and one summary (precomputed), N = 1..5.
+void bench_system(int reps) {
+  std::printf("\n# N-point rate problem (states b, d alternating; LCP size 3 n_b + n_d)\n");
+  std::printf("%-3s %-5s %16s %16s %s\n", "N", "m", "full solves/s", "summaries/s", "counts 0/1/2/3+/inf");
+  for (int N = 1; N <= 5; ++N) {
+    std::mt19937_64 rng(100 + N);
+    const int ns = 20;
+    std::vector<ContactSystem> sys;
+    std::vector<SystemRatePrecomputed> pre;
+    std::vector<Eigen::VectorXd> loads;
+    for (int k = 0; k < ns; ++k) {
+      sys.push_back(make_system(N, rng));
+      pre.push_back(precompute_system_rate(sys.back()));
+    }
+    const int nl = N <= 3 ? 200 : 40;
+    std::normal_distribution<double> G(0, 1);
+    for (int k = 0; k < nl; ++k) {
+      Eigen::VectorXd f(2 * N);
+      for (int j = 0; j < 2 * N; ++j) f(j) = G(rng);
+      loads.push_back(f);
+    }
+    int hist[5] = {};
+    const double rf = best_rate(reps, ns * nl, [&] {
+      for (int a = 0; a < ns; ++a)
+        for (const auto& f : loads) (void)solve_rate_problem(sys[static_cast<std::size_t>(a)], f);
+    });
+    const double rs = best_rate(reps, ns * nl, [&] {
+      for (auto& h : hist) h = 0;
+      for (const auto& p : pre)
+        for (const auto& f : loads) {
+          const int c = summarize_rate_problem(p, f).count;
+          ++hist[c < 0 ? 4 : std::min(c, 3)];
+        }
+    });
+    std::printf("%-3d %-5d %16.0f %16.0f %d/%d/%d/%d/%d\n", N, pre[0].m, rf, rs, hist[0], hist[1],
+                hist[2], hist[3], hist[4]);
+  }
 }
 
 }  // namespace
@@ -164,5 +229,6 @@ int main(int argc, char** argv) {
     }
     if (unreliable) std::printf("# %s: %ld summaries flagged unreliable\n", st, unreliable);
   }
+  bench_system(reps);
   return 0;
 }

@@ -132,3 +132,8 @@ TEST_CASE("ContactSystem::validate on a constructed system", "[rate][system]") {
   CHECK(s.validate().find("point 2") != std::string::npos);
   CHECK_THROWS_AS(s.point_parameters(2), std::out_of_range);
 }
+
+TEST_CASE("system file: directories and devices are refused", "[rate][system]") {
+  CHECK_THROWS_AS(read_contact_system("/dev/zero"), cpkit::InputError);
+  CHECK_THROWS_AS(read_contact_system("/tmp"), cpkit::InputError);
+}

@@ -2,6 +2,7 @@
 #include "cpkit/rate_problem/system/contact_system.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -341,6 +342,16 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
 }
 
 ContactSystem read_contact_system(const std::string& path) {
+  // as the problem-file readers (docs/file_formats.md): regular files and FIFOs only, at most
+  // 2 GiB, so that a directory or a device (/dev/zero) cannot block or exhaust memory
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InputError("cannot open system file " + path);
+  if (!fs::is_regular_file(st) && !fs::is_fifo(st))
+    throw InputError("system file " + path + " is not a regular file");
+  if (fs::is_regular_file(st) && fs::file_size(path, ec) > (std::uintmax_t{1} << 31))
+    throw InputError("system file " + path + " is larger than 2 GiB");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open system file " + path);
   std::ostringstream ss;

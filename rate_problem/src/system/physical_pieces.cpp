@@ -243,11 +243,17 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   struct ZPiece { std::vector<int> v; std::vector<Vec> rays; };
   std::vector<ZPiece> zp;
   std::ostringstream msg;
+  constexpr int kMaxLcp = 24;  // EnumerationOptions::max_size's default
   if (pre.m == 0) {
     verts.push_back(base);
+  } else if (pre.m > kMaxLcp) {
+    out.complete = false;
+    msg << "the rate LCP has size " << pre.m << " (3 per point in state b, 1 per point in state d), "
+        << "beyond the complete enumeration's limit " << kMaxLcp << ": nothing is listed; ";
   } else {
     lcp::EnumerationOptions opt;
     opt.time_limit_s = 30;
+    opt.max_size = kMaxLcp;
     const lcp::SolutionSet set = lcp::enumerate_all(LcpProblem(pre.M, system_q(pre, dF)), opt);
     if (!set.complete) {
       out.complete = false;
@@ -342,6 +348,16 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     if (!drop) kept.push_back(p);
   }
   for (const Geo& g : pcs) kept.push_back(g);
+  // rounding noise of exact zeros (e.g. dP_T of a separating point) printed as 0
+  auto clean = [](Vec v) {
+    for (Eigen::Index k = 0; k < v.size(); ++k)
+      if (std::abs(v(k)) <= 1e-3 * kGeoTol) v(k) = 0;
+    return v;
+  };
+  for (Geo& g : kept) {
+    g.a = clean(g.a);
+    if (g.kind == Kind::kSegment) g.b = clean(g.b);
+  }
   for (const Geo& g : kept) {
     SystemRateSolution s;
     s.types = decode_types(g.type, N);

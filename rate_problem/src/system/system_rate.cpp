@@ -286,6 +286,10 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system, const Eige
 SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
                                          const Eigen::VectorXd& dF) noexcept {
   SystemRateSummary out;
+  if (dF.size() != pre.Pf.cols() || !dF.allFinite()) {  // invalid input: say so, do not guess
+    out.reliable = false;
+    return out;
+  }
   try {
     const SystemRateSolutionSet set = detail::enumerate_system(pre, dF);
     out.count = set.count();

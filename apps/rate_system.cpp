@@ -1,0 +1,152 @@
+// `cpkit rate --system FILE`: the rate problem of N contact points (docs/contact_model.md,
+// "N points"): every solution by complete enumeration, or one by a single LCP solver checked
+// against the enumerated set. Exit codes as for one point: 0 at least one solution, 1 none,
+// 2 bad input, 3 a single solver's answer is not in the enumerated set, 5 the enumeration is
+// not conclusive (e.g. a 2-dimensional piece of solutions; message on stderr).
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/system/system_rate.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+nlohmann::json values_json(const rate::SystemRates& r) {
+  nlohmann::json j;
+  j["dP_T"] = as_list(r.dP_T);
+  j["dP_N"] = as_list(r.dP_N);
+  j["dw_T"] = as_list(r.dw_T);
+  j["dw_N"] = as_list(r.dw_N);
+  j["dw_Ti"] = as_list(r.dw_Ti);
+  j["dw_w"] = as_list(r.dw_w);
+  return j;
+}
+
+std::string values_text(const rate::SystemRates& r) {
+  std::ostringstream o;
+  o.precision(10);
+  auto vec = [&](const char* name, const Eigen::VectorXd& v) {
+    o << ' ' << name << "=[";
+    for (Eigen::Index i = 0; i < v.size(); ++i) o << (i ? ", " : "") << v(i);
+    o << ']';
+  };
+  vec("dP_T", r.dP_T);
+  vec("dP_N", r.dP_N);
+  vec("dw_T", r.dw_T);
+  vec("dw_N", r.dw_N);
+  vec("dw_Ti", r.dw_Ti);
+  vec("dw_w", r.dw_w);
+  return o.str();
+}
+
+nlohmann::json types_json(const std::vector<rate::SolutionType>& t) {
+  nlohmann::json j = nlohmann::json::array();
+  for (auto x : t) j.push_back(std::string(rate::to_string(x)));
+  return j;
+}
+
+}  // namespace
+
+int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
+                    const std::string& method_name, bool json) {
+  const rate::ContactSystem sys = rate::read_contact_system(path);
+  const int N = sys.n_points();
+  Eigen::VectorXd dF;
+  if (!dF_arg.empty()) {
+    if (static_cast<int>(dF_arg.size()) != 2 * N)
+      throw InputError("--dF needs 2N = " + std::to_string(2 * N) + " numbers (T_1 N_1 T_2 N_2 ...) for the " +
+                       std::to_string(N) + " points of " + path + ", got " + std::to_string(dF_arg.size()));
+    dF = Eigen::Map<const Eigen::VectorXd>(dF_arg.data(), 2 * N);
+  } else if (sys.dF) {
+    dF = *sys.dF;
+  } else {
+    throw InputError("no load rate: give --dF (2N numbers) or \"dF\" in " + path);
+  }
+  const auto method = rate::rate_method_from_string(method_name);
+  if (!method || *method == rate::RateMethod::kAnalytic)
+    throw InputError("--method with --system must be enumerate, lemke, fb-newton or ipopt, got '" +
+                     method_name + "'");
+  const rate::SystemRateSolutionSet s = rate::solve_rate_problem(sys, dF, *method);
+  const bool single = *method != rate::RateMethod::kEnumerate;
+  int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
+  std::string problem;
+  if (single && s.disagreement) {
+    problem = method_name + "'s solution is not in the enumerated solution set";
+    code = kExitDisagreement;
+  } else if (!single && !s.complete) {
+    problem = "the enumeration is not conclusive: " + s.message;
+    code = kExitInconclusive;
+  }
+  const std::string count = s.count() < 0 ? std::string("inf") : std::to_string(s.count());
+  if (json) {
+    nlohmann::json j;
+    j["cpkit_version"] = CPKIT_VERSION;
+    j["input"] = {{"system", path}, {"name", sys.name}, {"dF", as_list(dF)}, {"method", method_name}};
+    j["n_points"] = N;
+    j["complete"] = s.complete;
+    if (s.complete) {
+      if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
+    } else {
+      j["found"] = s.solutions.size();
+    }
+    if (!s.message.empty()) j["message"] = s.message;
+    nlohmann::json sols = nlohmann::json::array();
+    for (const auto& p : s.solutions) {
+      nlohmann::json e;
+      e["types"] = types_json(p.types);
+      e["kind"] = std::string(rate::to_string(p.kind));
+      switch (p.kind) {
+        case rate::RateSolution::Kind::kPoint:
+          e["values"] = values_json(p.start);
+          break;
+        case rate::RateSolution::Kind::kSegment:
+          e["start"] = values_json(p.start);
+          e["start_closed"] = p.start_closed;
+          e["end"] = values_json(p.end);
+          e["end_closed"] = p.end_closed;
+          break;
+        case rate::RateSolution::Kind::kRay:
+          e["start"] = values_json(p.start);
+          e["start_closed"] = p.start_closed;
+          e["direction"] = values_json(p.direction);
+          break;
+      }
+      sols.push_back(e);
+    }
+    j["solutions"] = sols;
+    print_json(j);
+  } else {
+    std::cout << "rate problem, system " << (sys.name.empty() ? path : sys.name) << " (" << N
+              << " points), method " << method_name << "\n";
+    if (s.complete) std::cout << "count: " << count << "\n";
+    else if (single) std::cout << (s.solutions.empty() ? "no solution found" : "a solution") << " (found by " << method_name << "; not a count)\n";
+    else std::cout << "solutions found: " << s.solutions.size() << " (INCOMPLETE: not a count)\n";
+    for (const auto& p : s.solutions) {
+      std::cout << "  " << rate::types_string(p.types) << ' ' << rate::to_string(p.kind) << ":";
+      switch (p.kind) {
+        case rate::RateSolution::Kind::kPoint:
+          std::cout << values_text(p.start) << "\n";
+          break;
+        case rate::RateSolution::Kind::kSegment:
+          std::cout << " from" << values_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                    << "\n      to" << values_text(p.end) << (p.end_closed ? " (closed)" : " (open)") << "\n";
+          break;
+        case rate::RateSolution::Kind::kRay:
+          std::cout << " from" << values_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                    << "\n      direction" << values_text(p.direction) << "\n";
+          break;
+      }
+    }
+    if (!s.message.empty()) std::cout << "note: " << s.message << "\n";
+  }
+  if (!problem.empty()) std::cerr << "cpkit rate: " << problem << '\n';
+  return code;
+}
+
+}  // namespace cpkit::cli
