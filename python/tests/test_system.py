@@ -92,3 +92,27 @@ def test_system_input_errors():
     s = cpkit.ContactSystem(np.eye(2), [{"state": "b", "mu": 1}])
     with pytest.raises(ValueError):
         cpkit.solve_rate_problem(s, [1.0, 2.0, 3.0])
+
+
+@pytest.mark.parametrize("name, dF", [
+    ("three_point_punch", None),
+    ("two_point_system", None),
+    ("two_point_system", [0.3, 1.0, -0.2, 1.0]),
+])
+def test_system_rate_agrees_with_the_cli(name, dF):
+    from conftest import run_cli
+    path = os.path.join(SOURCE_DIR, "docs", "examples", name + ".json")
+    args = ["rate", "--system", path, "--json"]
+    if dF is not None:
+        args[3:3] = ["--dF", *dF]
+    _, cli = run_cli(*args, expect=(0, 1))
+    s = cpkit.ContactSystem.from_file(path)
+    r = cpkit.solve_rate_problem(s, s.dF if dF is None else np.array(dF))
+    assert r.complete == cli["complete"]
+    assert (r.count if r.count >= 0 else "inf") == cli["count"]
+    assert len(r.solutions) == len(cli["solutions"])
+    for mine, theirs in zip(r.solutions, cli["solutions"]):
+        assert mine.types == theirs["types"] and mine.kind == theirs["kind"]
+        if theirs["kind"] == "point":
+            for key, values in theirs["values"].items():
+                np.testing.assert_allclose(mine.start[key], values, atol=1e-12)
