@@ -151,7 +151,8 @@ def check_one_node(args, failures):
         below = cpkit.direction_map(p(mu_star * (1 - 1e-9)), "b").counts
         above = cpkit.direction_map(p(mu_star * (1 + 1e-9)), "b").counts
         ok = ok and below.max() == 1 and below.min() == 1 and above.max() == 3
-        print(f"     map: critical value {crit[0]:.6f}; exact direction maps: max count "
+        crit_text = ", ".join(f"{c:.6f}" for c in crit) or "none"
+        print(f"     map: critical value {crit_text}; exact direction maps: max count "
               f"{below.max()} below, {above.max()} above; sampled grid ({args.theta_n} "
               f"directions): first non-unique mu "
               f"{'%.4f' % first if first is not None else 'beyond mu* + 0.2'}")
@@ -172,9 +173,9 @@ def system_of(A, mu, patterns):
 
 def directions_at(A, e_T, e_N, mu, theta):
     """Counts of the N-point rate problem at mu for the punch motions theta (radians):
-    dF = cos theta e_T + sin theta e_N. Returns (several, undecided): does some direction have
-    several solutions (verified: a lower bound even where the enumeration is incomplete), and
-    how many directions the enumeration could not decide completely."""
+    dF = cos theta e_T + sin theta e_N. Returns (several, undecided, counts): does some direction
+    have several solutions (verified: a lower bound even where the enumeration is incomplete),
+    how many directions the enumeration could not decide completely, and the counts."""
     c = cpkit.system_direction_counts(system_of(A, mu, (e_T, e_N)), theta)
     several = bool(((c["count"] > 1) | (c["count"] < 0)).any())
     return several, int((~c["reliable"]).sum()), c["count"]
