@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <thread>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
@@ -513,4 +514,29 @@ TEST_CASE("summary agrees with the full solve", "[rate][system]") {
     return S;
   }());
   CHECK_FALSE(summarize_rate_problem(pre, Vec::Zero(3)).reliable);
+}
+
+TEST_CASE("summaries from two threads on one precomputed system agree with one thread",
+          "[rate][system]") {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> U(-1, 1);
+  ContactSystem S;
+  for (int i = 0; i < 3; ++i) S.points.push_back(random_point(rng, i == 1 ? StateLabel::kD : StateLabel::kB));
+  S.A = random_spd(rng, 6);
+  const SystemRatePrecomputed pre = precompute_system_rate(S);
+  std::vector<Vec> loads;
+  for (int k = 0; k < 200; ++k) {
+    Vec f(6);
+    for (int j = 0; j < 6; ++j) f(j) = U(rng);
+    loads.push_back(f);
+  }
+  std::vector<int> serial(loads.size()), par(loads.size());
+  for (std::size_t k = 0; k < loads.size(); ++k) serial[k] = summarize_rate_problem(pre, loads[k]).count;
+  auto work = [&](std::size_t from) {
+    for (std::size_t k = from; k < loads.size(); k += 2) par[k] = summarize_rate_problem(pre, loads[k]).count;
+  };
+  std::thread t0(work, 0), t1(work, 1);
+  t0.join();
+  t1.join();
+  CHECK(par == serial);
 }

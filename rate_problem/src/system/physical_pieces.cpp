@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/lcp/enumerate_small.hpp"
 #include "physical_pieces.hpp"
 
 namespace cpkit::rate::detail {
@@ -49,6 +50,29 @@ std::vector<SolutionType> types_at(const Ctx& c, const Vec& y) {
   return t;
 }
 TypeTuple tuple_at(const Ctx& c, const Vec& y) { return encode_types(types_at(c, y)); }
+
+/// m <= 4: the fixed-size enumeration (the path enumerate_all takes for these sizes, without
+/// its copies and allocations). Fills the extreme solutions and the pieces.
+template <int K>
+void small_lcp(const SystemRatePrecomputed& pre, const Vec& q, std::vector<Vec>& zs,
+               std::vector<std::pair<std::vector<int>, std::vector<Vec>>>& pieces, int& ambiguous,
+               int& dropped) {
+  const Eigen::Matrix<double, K, K> M = pre.M;
+  const Eigen::Matrix<double, K, 1> qq = q;
+  lcp::SmallSolutionSet<K> set;
+  lcp::enumerate_small<K>(M, qq, set, 1e-12);
+  ambiguous = set.ambiguous;
+  dropped = set.dropped;
+  for (int k = 0; k < set.num_points; ++k) zs.push_back(set.z[static_cast<std::size_t>(k)]);
+  for (int i = 0; i < set.num_pieces; ++i) {
+    const auto& pc = set.pieces[static_cast<std::size_t>(i)];
+    std::pair<std::vector<int>, std::vector<Vec>> p;
+    for (int k = 0; k < set.num_points; ++k)
+      if (pc.vertex_mask & (1u << k)) p.first.push_back(k);
+    for (int r = 0; r < pc.num_rays; ++r) p.second.push_back(pc.rays[static_cast<std::size_t>(r)]);
+    pieces.push_back(std::move(p));
+  }
+}
 
 /// Rows whose sign decides a type: dw_N of b points, dw_T^i of b and d points.
 std::vector<int> type_rows(const Ctx& c) {
@@ -250,6 +274,32 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     out.complete = false;
     msg << "the rate LCP has size " << pre.m << " (3 per point in state b, 1 per point in state d), "
         << "beyond the complete enumeration's limit " << kMaxLcp << ": nothing is listed; ";
+  } else if (pre.m <= 4) {
+    const Vec q = system_q(pre, dF);
+    std::vector<Vec> zs;
+    std::vector<std::pair<std::vector<int>, std::vector<Vec>>> pieces;
+    int ambiguous = 0, dropped = 0;
+    switch (pre.m) {
+      case 1: small_lcp<1>(pre, q, zs, pieces, ambiguous, dropped); break;
+      case 2: small_lcp<2>(pre, q, zs, pieces, ambiguous, dropped); break;
+      case 3: small_lcp<3>(pre, q, zs, pieces, ambiguous, dropped); break;
+      default: small_lcp<4>(pre, q, zs, pieces, ambiguous, dropped); break;
+    }
+    if (ambiguous > 0) {
+      out.complete = false;
+      msg << ambiguous << " sign tests of the enumeration were too close to call; ";
+    }
+    if (dropped > 0) {
+      out.complete = false;
+      msg << dropped << " candidates of the enumeration could not be represented; ";
+    }
+    for (const Vec& z : zs) verts.push_back(base + pre.Pz * z);
+    for (const auto& p : pieces) {
+      ZPiece z;
+      z.v = p.first;
+      for (const Vec& d : p.second) z.rays.push_back(pre.Pz * d);
+      zp.push_back(std::move(z));
+    }
   } else {
     lcp::EnumerationOptions opt;
     opt.time_limit_s = 30;
