@@ -41,3 +41,38 @@ if(CPKIT_BUILD_TESTS)
 endif()
 
 find_package(Threads REQUIRED)
+
+# The Python module (python/): optional. Without pybind11, the Python 3 headers or numpy the
+# module is skipped with a message and everything else builds. Debian's interpreter is the
+# default so that the module matches the python3 that sees Debian's numpy/scipy/getfem.
+set(CPKIT_HAVE_PYTHON FALSE)
+if(CPKIT_BUILD_PYTHON)
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Python 3 interpreter of the cpkit module")
+  endif()
+  set(PYTHON_EXECUTABLE ${Python3_EXECUTABLE})
+  find_package(Python3 3.7 QUIET COMPONENTS Interpreter Development.Module)
+  set(_cpkit_numpy FALSE)
+  if(Python3_Interpreter_FOUND)
+    execute_process(COMMAND ${Python3_EXECUTABLE} -c "import numpy"
+                    RESULT_VARIABLE _cpkit_numpy_rc OUTPUT_QUIET ERROR_QUIET)
+    if(_cpkit_numpy_rc EQUAL 0)
+      set(_cpkit_numpy TRUE)
+    endif()
+  endif()
+  # pybind11 is looked for only with a working Python: its own fallback search would stop the
+  # configure step with an error instead of skipping the module.
+  if(NOT Python3_Interpreter_FOUND OR NOT Python3_Development.Module_FOUND)
+    message(STATUS "cpkit: Python module skipped: no Python 3 interpreter with headers at ${Python3_EXECUTABLE} (install the Debian package 'python3-dev')")
+  elseif(NOT _cpkit_numpy)
+    message(STATUS "cpkit: Python module skipped: numpy not importable by ${Python3_EXECUTABLE} (install the Debian package 'python3-numpy')")
+  else()
+    find_package(pybind11 2.6 CONFIG QUIET)
+    if(NOT pybind11_FOUND)
+      message(STATUS "cpkit: Python module skipped: pybind11 not found (install the Debian package 'pybind11-dev')")
+    else()
+      set(CPKIT_HAVE_PYTHON TRUE)
+      message(STATUS "cpkit: Python module for ${Python3_EXECUTABLE} (${Python3_VERSION})")
+    endif()
+  endif()
+endif()

@@ -3,17 +3,20 @@
 # Usage: scripts/setup-deps.sh [--bench] [--tests]
 #   --bench  also the peers the benchmarks compare against (Siconos numerics, lrslib).
 #   --tests  also the peers the test suite compares against: Siconos' own .dat reader and writer
-#            (python3-siconos, with python3-scipy for its sparse matrices). Without them the
-#            test core.test_io_siconos_peer is skipped, saying why.
+#            (python3-siconos, with python3-scipy for its sparse matrices), pytest for the
+#            Python module's tests and GetFEM for its example (docs/examples/getfem_punch.py).
+#            Without them those tests are skipped, saying why.
+# The base set includes pybind11-dev and python3-dev: the Python module `cpkit` (python/).
 # Runs `apt-get update` once, and only when something is missing. Needs root (or sudo).
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
-          catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy)
+          catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy
+          pybind11-dev python3-dev)
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(libsiconos-numerics-dev lrslib) ;;
-    --tests) packages+=(python3-siconos python3-scipy) ;;
+    --tests) packages+=(python3-siconos python3-scipy python3-pytest python3-getfem) ;;
     *) echo "cpkit setup: unknown option $arg (valid: --bench, --tests)" >&2; exit 2 ;;
   esac
 done

@@ -1,0 +1,19 @@
+"""cpkit: complementarity problems (LCP, NCP/MCP) and the contact, friction and wear model of
+Stromberg, Johansson & Klarbring (1996). See docs/python.md.
+
+    import cpkit
+    r = cpkit.solve([[2, 1], [1, 2]], [-5, -6])      # r.status, r.z, r.w, r.residuals, ...
+    s = cpkit.enumerate([[2, 1], [1, 2]], [-5, -6])  # every solution
+"""
+from . import _cpkit
+from .contact import (ContactParameters, ContactState, direction_map, enumerate_step,
+                      fretting_history, param_direction_map, param_param_map, ramp_history,
+                      rate_indicators, simulate, solve_rate_problem, solve_step)
+from .system import ContactSystem, solve_system_rate, system_direction_counts
+from .lcp import cross_verify, enumerate, solve, solve_mcp, solvers
+from .results import (TYPE_BITS, CrossVerifyReport, DirectionMap, ParamDirectionMap,
+                      ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,
+                      StepSolutionSet, SystemRateSolutionSet)
+
+__version__ = _cpkit.__version__
+UNIQUENESS_CLASSES = list(_cpkit.UNIQUENESS_CLASSES)

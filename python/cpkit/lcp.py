@@ -1,0 +1,120 @@
+"""LCPs (z >= 0, w = M z + q >= 0, z.w = 0) and NCP/MCPs with Python callables."""
+from __future__ import annotations
+
+import math
+from typing import Callable, Iterable, Optional
+
+import numpy as np
+
+from . import _cpkit
+from .results import CrossVerifyReport, SolutionSet, SolveResult
+
+__all__ = ["solve", "enumerate", "cross_verify", "solve_mcp", "solvers"]
+
+_INF = math.inf
+
+
+def _is_sparse(M) -> bool:
+    try:
+        import scipy.sparse
+    except ImportError:  # without scipy nothing can be a scipy matrix
+        return False
+    return scipy.sparse.issparse(M)
+
+
+def _vector(v, name: str) -> np.ndarray:
+    try:
+        a = np.asarray(v, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name} must be a vector of numbers ({e})") from None
+    if a.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array, got shape {a.shape}")
+    return a
+
+
+def _lcp_data(M, q):
+    """(is_sparse, M, q) with M as float64 (CSC when sparse) and q 1-D; shapes checked here,
+    values (NaN/Inf, size agreement) by the C++ validator."""
+    q = _vector(q, "q")
+    if _is_sparse(M):
+        M = M.tocsc().astype(float)
+        if M.shape[0] != M.shape[1]:
+            raise ValueError(f"M must be square, got shape {M.shape}")
+        return True, M, q
+    try:
+        M = np.asarray(M, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"M must be a matrix of numbers (numpy array or scipy.sparse) ({e})") from None
+    if M.ndim != 2:
+        raise ValueError(f"M must be a 2-D array, got shape {M.shape}")
+    return False, M, q
+
+
+def solvers(kind: str = "lcp"):
+    """Registered solver names ("lcp" or "mcp"), in the order of the automatic chain."""
+    return _cpkit.solvers(kind)
+
+
+def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: float = 1e-6,
+          max_iterations: int = 0, time_limit: float = _INF) -> SolveResult:
+    """One solution of LCP(M, q), verified from the data: z >= 0, w = M z + q >= 0, z.w = 0.
+
+    M: square numpy array (or anything np.asarray accepts) or scipy.sparse matrix; q: 1-D.
+    solver: "auto" (Lemke, FB Newton, enumeration, Farkas search, Ipopt, NLopt, every attempt
+    in `attempts`) or one of solvers("lcp"). tol / tol_acceptable bound the unit-free residual
+    for "solved" / "solved_inaccurate" (docs/conventions.md); max_iterations 0 is the solver's
+    default; time_limit in seconds. Outcomes are statuses; bad input raises ValueError/TypeError.
+    """
+    sparse, M, q = _lcp_data(M, q)
+    fn = _cpkit.solve_sparse if sparse else _cpkit.solve_dense
+    return SolveResult._from(fn(M, q, solver, float(tol), float(tol_acceptable),
+                                int(max_iterations), float(time_limit)))
+
+
+def enumerate(M, q, *, max_size: int = 24, time_limit: float = 60.0) -> SolutionSet:
+    """Every solution of LCP(M, q) (n <= max_size <= 30): all extreme solutions, the pieces of
+    positive dimension with their rays, and whether the enumeration is `complete`."""
+    sparse, M, q = _lcp_data(M, q)
+    fn = _cpkit.enumerate_sparse if sparse else _cpkit.enumerate_dense
+    return SolutionSet._from(fn(M, q, int(max_size), float(time_limit)))
+
+
+def cross_verify(M, q, *, skip: Iterable[str] = (), max_size: int = 24,
+                 time_limit: float = 60.0) -> CrossVerifyReport:
+    """Every registered solver's answer checked against the complete enumeration;
+    `consistent` is False when some solver's claim contradicts it (`disagreements`)."""
+    sparse, M, q = _lcp_data(M, q)
+    fn = _cpkit.cross_verify_sparse if sparse else _cpkit.cross_verify_dense
+    return CrossVerifyReport._from(fn(M, q, list(skip), int(max_size), float(time_limit)))
+
+
+def solve_mcp(F: Callable, J: Optional[Callable], x0, lower=None, upper=None,
+              solver: str = "fb-newton", *, tol: float = 1e-10, tol_acceptable: float = 1e-6,
+              max_iterations: int = 0, time_limit: float = _INF) -> SolveResult:
+    """One solution of MCP(F, lower, upper) from x0:
+    x_i = l_i => F_i(x) >= 0, x_i = u_i => F_i(x) <= 0, l_i < x_i < u_i => F_i(x) = 0.
+    lower=None means 0 and upper=None means +inf (the NCP x >= 0, F(x) >= 0, x.F(x) = 0).
+
+    F(x) -> 1-D array of length n (or None when x is outside F's domain); J(x) -> n x n numpy
+    array or scipy.sparse matrix (the kind is taken from J(x0)), or J=None for finite
+    differences. solver: "fb-newton", "ipopt", "nlopt" or "auto". An exception raised inside F
+    or J stops the solve and is re-raised here unchanged.
+    """
+    if not callable(F):
+        raise TypeError("F must be callable: F(x) -> array of length n")
+    if J is not None and not callable(J):
+        raise TypeError("J must be callable (J(x) -> n x n array or sparse matrix) or None")
+    x0 = _vector(x0, "x0")
+    n = x0.size
+    lower = np.zeros(n) if lower is None else _vector(lower, "lower")
+    upper = np.full(n, _INF) if upper is None else _vector(upper, "upper")
+    jac, sparse_jac = J, False
+    if J is not None and _is_sparse(J(x0.copy())):
+        sparse_jac = True
+
+        def jac(x):  # CSC with float64 entries, the layout the C++ side reads
+            m = J(x)
+            return None if m is None else m.tocsc().astype(float)
+    return SolveResult._from(_cpkit.solve_mcp(F, jac, sparse_jac, x0, lower, upper, solver,
+                                              float(tol), float(tol_acceptable),
+                                              int(max_iterations), float(time_limit)))

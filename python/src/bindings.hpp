@@ -1,0 +1,13 @@
+#pragma once
+// One function per concept adds its part of the module (module.cpp calls them in order).
+#include <pybind11/pybind11.h>
+
+namespace cpkit::py {
+void bind_lcp(pybind11::module_& m);
+void bind_mcp(pybind11::module_& m);
+void bind_rate(pybind11::module_& m);
+void bind_maps(pybind11::module_& m);
+void bind_step(pybind11::module_& m);
+void bind_system(pybind11::module_& m);
+void bind_system_rate(pybind11::module_& m);
+}  // namespace cpkit::py

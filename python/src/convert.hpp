@@ -1,0 +1,49 @@
+#pragma once
+// Conversions shared by the bindings: C++ results -> plain Python data (dicts, lists, numpy
+// arrays), so that every result the module returns can be pickled and compared without cpkit.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "cpkit/core/result.hpp"
+#include "cpkit/rate_problem/model/contact_state.hpp"
+#include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
+
+namespace cpkit::py {
+
+namespace pyb = pybind11;
+
+/// A numpy copy of an Eigen vector (owns its data: safe after the C++ object is gone).
+pyb::array_t<double> to_numpy(const Vec& v);
+
+/// SolveResult as a dict with the field names of core/report.hpp's JSON.
+pyb::dict to_dict(const SolveResult& r);
+pyb::dict to_dict(const Residuals& r);
+
+/// Solution type names of a type mask, in SolutionType order ("separation", "stick", ...).
+pyb::list type_names(unsigned mask);
+
+/// ContactParameters from any object with the attributes a11, a12, a22, mu, C_T, k_a, P_s and
+/// criterion ("38"/"coulomb" or "35"/"softening"): cpkit.ContactParameters. Validated
+/// (InputError -> ValueError naming the field).
+rate::ContactParameters parameters_from(const pyb::handle& o);
+/// ContactState from an object with label ("a".."d"), P_N, sgn_PT (cpkit.ContactState), or a
+/// bare label string. Validated against `params`.
+rate::ContactState state_from(const pyb::handle& o, const rate::ContactParameters& params);
+
+/// Rates as a dict {dP_T, dP_N, dw_T, dw_N, dw_Ti, dw_w} (the CLI's JSON names).
+pyb::dict to_dict(const rate::Rates& r);
+
+/// The module's memory bound, as the command line's (apps/memory_limit.hpp): a result that
+/// would need more than 1 GiB is refused up front with InputError naming `what` and the size.
+void check_memory(double bytes, const std::string& what);
+
+/// A finite double from a Python number; ValueError naming `what` otherwise.
+double finite_number(const pyb::handle& o, const char* what);
+
+}  // namespace cpkit::py
