@@ -15,7 +15,7 @@ enum ExitCode : int {
   kExitNoSolution = 1,    ///< the solve ran but found no solution
   kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
   kExitDisagreement = 3,  ///< a disagreement between solvers or routes (`lcp verify`, `rate`, `map`)
-  kExitInternal = 4,      ///< internal error (a bug: please report it)
+  kExitInternal = 4,      ///< internal error (a bug), or a requested picture that could not be drawn
   kExitInconclusive = 5,  ///< incomplete enumeration that proves nothing (`lcp verify`: no
                           ///< disagreement; `lcp enumerate`: no solution found so far)
 };

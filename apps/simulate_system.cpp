@@ -8,6 +8,7 @@
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/system_simulation.hpp"
+#include "data_files.hpp"
 #include "run_program.hpp"
 
 namespace cpkit::cli {
@@ -176,27 +177,35 @@ int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
     std::cout << "\n  energy balance relative error " << r.energy_error << ", branch points "
               << r.branch_steps << ", steps not proved complete " << r.incomplete_steps << "\n";
   }
+  bool plot_failed = false;
   if (!s.plot.empty()) {
-    std::string script;
-    for (const char* dir : {CPKIT_INSTALLED_PLOT_SCRIPT_DIR, CPKIT_PLOT_SCRIPT_DIR}) {
-      const std::string p = std::string(dir) + "/cpkit_plot_system_simulation.py";
-      if (std::ifstream(p)) {
-        script = p;
-        break;
-      }
-    }
+    std::string searched;
+    const std::string script = find_data_file("cpkit_plot_system_simulation.py", &searched);
     if (script.empty()) {
-      std::cerr << "cpkit simulate: plot script cpkit_plot_system_simulation.py not found; no figures\n";
+      std::cerr << "cpkit simulate: plotting script cpkit_plot_system_simulation.py not found "
+                   "(looked in "
+                << searched << "); no figures\n";
+      plot_failed = true;
     } else {
-      const std::vector<std::string> argv = {"/usr/bin/python3", script, "--csv", csv,
+      const std::string plot_dir = std::filesystem::path(s.plot).parent_path().string();
+      std::error_code ec;
+      if (!plot_dir.empty()) std::filesystem::create_directories(plot_dir, ec);
+      if (ec) throw InputError("cannot create the folder of --plot '" + s.plot + "': " + ec.message());
+      const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
                                              "--summary", summary, "--out", s.plot};
       const ProgramRun pr = run_program(argv, true);
-      if (!pr.started || pr.exit_code != 0)
+      if (!pr.started || pr.exit_code != 0) {
         std::cerr << "cpkit simulate: the plot script failed ("
                   << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
                   << "): " << command_text(argv) << "\n";
+        plot_failed = true;
+      } else {
+        std::cerr << "cpkit simulate: wrote the figures " << s.plot << "_*.png/.svg\n";
+      }
     }
   }
+  // A requested picture that could not be drawn is a failure (exit 4), as for one point.
+  if (plot_failed) return kExitInternal;
   if (r.outcome == rate::SimulationResult::Outcome::kCompleted) return kExitOk;
   return r.inconclusive ? kExitInconclusive : kExitNoSolution;
 }
