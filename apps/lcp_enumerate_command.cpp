@@ -115,7 +115,7 @@ int run_lcp_enumerate(const LcpEnumerateArgs& a) {
   opt.time_limit_s = a.time_limit_s;
   opt.max_size = a.max_size;
   throw_if_invalid(opt.validate(), "options");
-  const lcp::SolutionSet s = lcp::enumerate_all(problem, opt);  // InputError above the limit
+  const lcp::SolutionSet s = lcp::enumerate_all(problem, opt);
   if (a.json)
     print_json(set_json(s, problem));
   else
@@ -136,7 +136,8 @@ void add_lcp_enumerate(CLI::App& lcp, Context& ctx) {
   cmd->add_option("--time-limit", args->time_limit_s,
                   "wall-clock limit in seconds, every phase (default 60; then complete = false)");
   cmd->add_option("--max-size", args->max_size,
-                  "largest n accepted (default 24, at most 30; larger n is bad input)");
+                  "largest n the general engine attempts (default and at most 64); a larger problem that is "
+                  "not a bimatrix game ends with complete = false");
   cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_enumerate(*args); });
 }
 
