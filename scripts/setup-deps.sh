@@ -9,7 +9,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
-          catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy)
+          catch2 libcli11-dev nlohmann-json3-dev libsimdjson-dev python3-matplotlib python3-numpy)
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(libsiconos-numerics-dev lrslib) ;;

@@ -80,7 +80,7 @@ TEST_CASE("cli: a Matrix Market M with its q beside it or from --q", "[cli][io]"
   // --q with a file that holds q itself.
   const auto j = run_cpkit("lcp solve " + siconos("lcp_deudeu.dat") + " --q " + write("q2.mtx", kQ));
   CHECK(j.code == 2);
-  CHECK_THAT(j.err, Contains("a separate q file is only read with a Matrix Market (.mtx) M"));
+  CHECK_THAT(j.err, Contains("a separate q file is only read with a Matrix Market (.mtx) or numpy (.npy) M"));
 }
 
 TEST_CASE("cli: bad problem files exit 2 with the reason, never 4", "[cli][io]") {
