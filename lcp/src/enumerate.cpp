@@ -892,9 +892,16 @@ class IndexSet {
     return c;
   }
   bool operator==(const IndexSet& o) const { return w_ == o.w_; }
-  size_t hash() const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::uint64_t x : w_) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
+  size_t hash() const { return hash_words(w_.data(), w_.size()); }
+  const std::vector<std::uint64_t>& words() const { return w_; }
+  static size_t hash_words(const std::uint64_t* w, size_t count) {
+    std::uint64_t h = 0;
+    for (size_t k = 0; k < count; ++k) {  // splitmix64 finalizer per word
+      std::uint64_t z = h ^ (w[k] + 0x9e3779b97f4a7c15ull);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+      h = z ^ (z >> 31);
+    }
     return static_cast<size_t>(h);
   }
 
@@ -903,6 +910,50 @@ class IndexSet {
 };
 struct IndexSetHash {
   size_t operator()(const IndexSet& s) const { return s.hash(); }
+};
+
+/// A set of IndexSets of one width, stored flat: the keys' words in one array and open
+/// addressing (linear probing) over indices into it - no allocation per key, so that the
+/// traversal's millions of membership tests stay in cache-friendly memory.
+class FlatIndexSets {
+ public:
+  /// Inserts s (of the width of the first key); true when it was not there yet.
+  bool insert(const IndexSet& s) {
+    const std::vector<std::uint64_t>& w = s.words();
+    if (width_ == 0) width_ = w.size();
+    if ((size_ + 1) * 2 > slots_.size()) grow();
+    size_t at = s.hash() & (slots_.size() - 1);
+    for (;; at = (at + 1) & (slots_.size() - 1)) {
+      const std::uint32_t k = slots_[at];
+      if (k == kEmpty) break;
+      if (std::equal(w.begin(), w.end(), words_.begin() + std::ptrdiff_t(size_t(k) * width_)))
+        return false;
+    }
+    slots_[at] = static_cast<std::uint32_t>(size_);
+    words_.insert(words_.end(), w.begin(), w.end());
+    ++size_;
+    return true;
+  }
+  size_t size() const { return size_; }
+
+ private:
+  static constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
+  void grow() {
+    std::vector<std::uint32_t> old = std::move(slots_);
+    slots_.assign(std::max<size_t>(64, old.size() * 2), kEmpty);
+    for (std::uint32_t k : old) {
+      if (k == kEmpty) continue;
+      size_t at = hash_at(k) & (slots_.size() - 1);
+      while (slots_[at] != kEmpty) at = (at + 1) & (slots_.size() - 1);
+      slots_[at] = k;
+    }
+  }
+  size_t hash_at(std::uint32_t k) const {
+    return IndexSet::hash_words(&words_[size_t(k) * width_], width_);
+  }
+  std::vector<std::uint64_t> words_;
+  std::vector<std::uint32_t> slots_;
+  size_t width_ = 0, size_ = 0;
 };
 
 /// Bases kept by the traversal of one polytope: the memory bound of the structured path (each
@@ -945,11 +996,11 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   }
   s0.bl = row_label;
   s0.nl = var_label;
-  std::unordered_set<IndexSet, IndexSetHash> seen_basis, seen_vertex;
+  FlatIndexSets seen_basis, seen_vertex;
   {
     IndexSet m0(n);
     for (int c = 0; c < d; ++c) m0.set(var_label[c]);
-    seen_basis.insert(std::move(m0));
+    seen_basis.insert(m0);
   }
   masks.clear();
   std::vector<State> stack;
@@ -985,7 +1036,7 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
         return Structured::kUndecided;  // infeasible or too close to call
       }
     }
-    if (seen_vertex.insert(lab).second) masks.push_back(std::move(lab));
+    if (seen_vertex.insert(lab)) masks.push_back(std::move(lab));
     for (int c = 0; c < d; ++c) {
       double tmax = 0;
       for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
@@ -1009,7 +1060,7 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       IndexSet nb = cob;
       nb.reset(s.nl[c]);
       nb.set(s.bl[best]);
-      if (!seen_basis.insert(std::move(nb)).second) continue;
+      if (!seen_basis.insert(nb)) continue;
       if (seen_basis.size() > kMaxPolytopeBases || (stack.size() + 1) * state_bytes > kMaxOpenBytes)
         return Structured::kMemory;
       // pivot: nonbasic c enters, basic `best` leaves
