@@ -2,12 +2,14 @@
 #include <exception>
 #include <iostream>
 
+#include "blas_threads.hpp"
 #include "cli_common.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 
 int main(int argc, char** argv) {
   using namespace cpkit::cli;
+  use_one_blas_thread();
   CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
   app.set_version_flag("--version", std::string("cpkit ") + CPKIT_VERSION);
   app.require_subcommand(1);
