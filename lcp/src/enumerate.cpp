@@ -957,9 +957,9 @@ class FlatIndexSets {
 };
 
 /// Bases kept by the traversal of one polytope: the memory bound of the structured path (each
-/// costs a hash-set entry; the open dictionaries on the stack are bounded separately).
+/// costs a hash-set entry; the open bases on the stack are bounded separately).
 constexpr size_t kMaxPolytopeBases = 20'000'000;
-constexpr size_t kMaxOpenBytes = size_t(2) << 30;  // 2 GiB of open dictionaries
+constexpr size_t kMaxOpenBytes = size_t(2) << 30;  // 2 GiB of open bases on the stack
 
 /// Why the structured path did not answer: the general engine then decides (kUndecided), or,
 /// on a budget, the answer is incomplete and says so.
@@ -967,12 +967,14 @@ enum class Structured { kAnswered, kUndecided, kTimeLimit, kMemory };
 
 /// Vertices of the polytope {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded), each as the
 /// set of its labels (LCP index of every tight inequality: var_label[c] for v_c = 0,
-/// row_label[r] for row r; labels are below n). Traverses the vertex graph by simplex pivots on
-/// a dictionary with the lexicographic ratio test (b perturbed by (e, e^2, ...)
-/// [Dantzig-Orden-Wolfe 1955]), so that degenerate vertices are handled: every
+/// row_label[r] for row r; labels are below n). Traverses the vertex graph depth-first by
+/// simplex pivots on a dictionary with the lexicographic ratio test (b perturbed by
+/// (e, e^2, ...) [Dantzig-Orden-Wolfe 1955]), so that degenerate vertices are handled: every
 /// lexicographically feasible basis is visited once and each geometric vertex is reported once
-/// with all its tight inequalities. kUndecided on an unbounded edge, a tie or a value in the
-/// gray band of the zero test.
+/// with all its tight inequalities. Open bases on the stack keep their dictionaries up to
+/// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
+/// from the dictionary in hand is reached by that pivot, any other is refactorised from the data. kUndecided on an unbounded edge, a tie
+/// or a value in the gray band of the zero test.
 Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
                              const std::vector<int>& row_label, int n,
                              std::vector<IndexSet>& masks, Deadline& deadline) {
@@ -983,19 +985,63 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     std::vector<double> R;  // R[r w + 0] = beta_r, R[r w + 1 + k] = P_rk (lexicographic part)
     std::vector<int> bl, nl;  // labels of the basic / nonbasic variables
   };
-  const size_t state_bytes = sizeof(double) * (size_t(m) * d + size_t(m) * w) +
-                             sizeof(int) * size_t(m + d) + sizeof(State);
+  /// A basis waiting on the stack: its dictionary while the stack's dictionaries fit in
+  /// kStackDictBytes (fast: no refactorisation), else only its labels and the visit it is one
+  /// pivot (r0, c) from (memory O(m + d)).
+  struct Open {
+    State s;
+    long long parent = -1;
+    int r0 = -1, c = -1;
+  };
+  const size_t open_bytes = sizeof(Open) + sizeof(int) * size_t(m + d) + 64;
+  const size_t dict_bytes = sizeof(double) * size_t(m) * size_t(d + w);
+  constexpr size_t kStackDictBytes = size_t(64) << 20;
+  size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
   constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
-  State s0;
-  s0.T.resize(size_t(m) * d);
-  s0.R.assign(size_t(m) * w, 0.0);
-  for (int r = 0; r < m; ++r) {
-    for (int c = 0; c < d; ++c) s0.T[size_t(r) * d + c] = D(r, c);
-    s0.R[size_t(r) * w] = b(r);
-    s0.R[size_t(r) * w + 1 + r] = 1.0;
-  }
-  s0.bl = row_label;
-  s0.nl = var_label;
+  // The system s - D v = b + (perturbation): A x = P0 with A = [-D | I], P0 = [b | I]; the
+  // column of a variable in A by its label.
+  Mat A(m, d + m), P0 = Mat::Zero(m, w);
+  A.leftCols(d) = -D;
+  A.rightCols(m).setIdentity();
+  P0.col(0) = b;
+  P0.rightCols(m).setIdentity();
+  std::vector<int> col_of(static_cast<size_t>(n), -1);
+  for (int c = 0; c < d; ++c) col_of[size_t(var_label[c])] = c;
+  for (int r = 0; r < m; ++r) col_of[size_t(row_label[r])] = d + r;
+  Mat AB(m, m), AN(m, d);
+  // the dictionary of basis s.bl from the data: x_B = A_B^-1 P0 - A_B^-1 A_N x_N
+  auto refactor = [&](State& s) {
+    for (int r = 0; r < m; ++r) AB.col(r) = A.col(col_of[size_t(s.bl[r])]);
+    for (int c = 0; c < d; ++c) AN.col(c) = A.col(col_of[size_t(s.nl[c])]);
+    const Eigen::PartialPivLU<Mat> lu(AB);
+    const Mat Rm = lu.solve(P0), Tm = -lu.solve(AN);
+    if (!Rm.allFinite() || !Tm.allFinite()) return false;
+    s.T.resize(size_t(m) * d);
+    s.R.resize(size_t(m) * w);
+    for (int r = 0; r < m; ++r) {
+      for (int c = 0; c < d; ++c) s.T[size_t(r) * d + c] = Tm(r, c);
+      for (int k = 0; k < w; ++k) s.R[size_t(r) * w + k] = Rm(r, k);
+    }
+    return true;
+  };
+  // pivot in place: nonbasic c enters, basic r0 leaves
+  auto pivot = [&](State& s, int r0, int c) {
+    const double p = s.T[size_t(r0) * d + c];
+    double* tp = &s.T[size_t(r0) * d];
+    double* rp = &s.R[size_t(r0) * w];
+    for (int cc = 0; cc < d; ++cc) tp[cc] = cc == c ? 1.0 / p : -tp[cc] / p;
+    for (int k = 0; k < w; ++k) rp[k] = -rp[k] / p;
+    for (int r = 0; r < m; ++r) {
+      if (r == r0) continue;
+      double* tr = &s.T[size_t(r) * d];
+      const double f = tr[c];
+      if (f == 0) continue;
+      double* rr = &s.R[size_t(r) * w];
+      for (int cc = 0; cc < d; ++cc) tr[cc] = cc == c ? f * tp[cc] : tr[cc] + f * tp[cc];
+      for (int k = 0; k < w; ++k) rr[k] += f * rp[k];
+    }
+    std::swap(s.bl[size_t(r0)], s.nl[size_t(c)]);
+  };
   FlatIndexSets seen_basis, seen_vertex;
   {
     IndexSet m0(n);
@@ -1003,8 +1049,15 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     seen_basis.insert(m0);
   }
   masks.clear();
-  std::vector<State> stack;
-  stack.push_back(std::move(s0));
+  std::vector<Open> stack;
+  {
+    Open root;
+    root.s.bl = row_label;
+    root.s.nl = var_label;
+    stack.push_back(std::move(root));
+  }
+  State s;
+  long long in_hand = -1, visits = 0;
   std::vector<double> cm(w);
   // a < b, a == b, a > b (-1, 0, 1) for two numbers at absolute tolerance kTie * sc
   auto cmp = [](double a, double bb, double sc) {
@@ -1013,8 +1066,19 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   };
   while (!stack.empty()) {
     if (deadline.passed(64)) return Structured::kTimeLimit;
-    State s = std::move(stack.back());
+    Open o = std::move(stack.back());
     stack.pop_back();
+    if (!o.s.T.empty()) {
+      stack_dicts -= dict_bytes;
+      s = std::move(o.s);
+    } else if (o.parent >= 0 && o.parent == in_hand) {
+      pivot(s, o.r0, o.c);
+    } else {
+      s.bl = std::move(o.s.bl);
+      s.nl = std::move(o.s.nl);
+      if (!refactor(s)) return Structured::kUndecided;
+    }
+    in_hand = visits++;
     double bmax = 0;
     for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
     IndexSet cob(n);
@@ -1049,39 +1113,35 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
         }
         if (best < 0) { best = r; continue; }
         const double ab = s.T[size_t(best) * d + c];
-        int o = 0;
+        int cmp_result = 0;
         const double amin = std::min(-a, -ab);
-        for (int k = 0; k < w && o == 0; ++k)
-          o = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab, cm[k] / amin);
-        if (o == 0) return Structured::kUndecided;  // cannot happen for independent perturbations
-        if (o < 0) best = r;
+        for (int k = 0; k < w && cmp_result == 0; ++k)
+          cmp_result = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab, cm[k] / amin);
+        if (cmp_result == 0) return Structured::kUndecided;  // not for independent perturbations
+        if (cmp_result < 0) best = r;
       }
       if (best < 0) return Structured::kUndecided;  // unbounded edge: not a polytope
       IndexSet nb = cob;
       nb.reset(s.nl[c]);
       nb.set(s.bl[best]);
       if (!seen_basis.insert(nb)) continue;
-      if (seen_basis.size() > kMaxPolytopeBases || (stack.size() + 1) * state_bytes > kMaxOpenBytes)
+      if (seen_basis.size() > kMaxPolytopeBases ||
+          (stack.size() + 1) * open_bytes + stack_dicts > kMaxOpenBytes)
         return Structured::kMemory;
-      // pivot: nonbasic c enters, basic `best` leaves
-      State t = s;
-      const int r0 = best;
-      const double p = s.T[size_t(r0) * d + c];
-      double* tp = &t.T[size_t(r0) * d];
-      double* rp = &t.R[size_t(r0) * w];
-      for (int cc = 0; cc < d; ++cc) tp[cc] = cc == c ? 1.0 / p : -tp[cc] / p;
-      for (int k = 0; k < w; ++k) rp[k] = -rp[k] / p;
-      for (int r = 0; r < m; ++r) {
-        if (r == r0) continue;
-        double* tr = &t.T[size_t(r) * d];
-        const double f = tr[c];
-        if (f == 0) continue;
-        double* rr = &t.R[size_t(r) * w];
-        for (int cc = 0; cc < d; ++cc) tr[cc] = cc == c ? f * tp[cc] : tr[cc] + f * tp[cc];
-        for (int k = 0; k < w; ++k) rr[k] += f * rp[k];
+      Open child;
+      if (stack_dicts + dict_bytes <= kStackDictBytes) {
+        child.s = s;
+        pivot(child.s, best, c);
+        stack_dicts += dict_bytes;
+      } else {
+        child.s.bl = s.bl;
+        child.s.nl = s.nl;
+        std::swap(child.s.bl[size_t(best)], child.s.nl[size_t(c)]);
+        child.parent = in_hand;
+        child.r0 = best;
+        child.c = c;
       }
-      std::swap(t.bl[r0], t.nl[c]);
-      stack.push_back(std::move(t));
+      stack.push_back(std::move(child));
     }
   }
   return Structured::kAnswered;
@@ -1176,7 +1236,7 @@ Structured try_bipartite(const EnumerationOptions& opt, SolutionSet& out, Deadli
                             std::to_string(out.nodes) + " vertices so far)"
                       : "memory bound of the polytope enumeration reached (" +
                             std::to_string(kMaxPolytopeBases) + " bases or " +
-                            std::to_string(kMaxOpenBytes >> 20) + " MiB of open dictionaries)";
+                            std::to_string(kMaxOpenBytes >> 20) + " MiB of open bases)";
     return st;
   }
   if (st != Structured::kAnswered) return st;
