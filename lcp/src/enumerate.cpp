@@ -1042,6 +1042,53 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     }
     std::swap(s.bl[size_t(r0)], s.nl[size_t(c)]);
   };
+  // The basic values of a dictionary: positive, or zero (a degenerate vertex: the label is
+  // added to `lab`, and the row must be lexicographically positive). A value that is small
+  // against the largest (<= kGrayHi of it) is judged against the componentwise forward error
+  // bound of a fresh solve, |dx_r| <= gamma sum_j |A_B^-1|_rj (|A_B| |x_B| + |b|)_j
+  // [Higham 2002, Thm. 7.4] (A_B^-1 is the perturbation block of R): zero within 10 bounds,
+  // positive beyond 1e4 bounds, too close to call between. A fixed fraction of the largest value
+  // was not scale-aware: an 18 x 18 game with payoffs up to 1000 has a vertex with a genuine
+  // basic value 8e-8 times the largest (fresh and pivoted dictionaries agree to 1e-15).
+  enum { kDecided, kNeedsFresh, kCannotDecide };
+  const double gamma = 4.0 * (m + 1) * std::numeric_limits<double>::epsilon();
+  std::vector<double> cm(w), u(m);
+  auto classify = [&](const State& st, bool is_fresh, IndexSet& labels) {
+    double bmax = 0;
+    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(st.R[size_t(r) * w]));
+    // column scales of the right-hand side: round-off of a column is relative to them
+    std::fill(cm.begin(), cm.end(), 0.0);
+    for (int r = 0; r < m; ++r)
+      for (int k = 0; k < w; ++k) cm[k] = std::max(cm[k], std::abs(st.R[size_t(r) * w + k]));
+    bool bound_ready = false;
+    for (int r = 0; r < m; ++r) {
+      const double* row = &st.R[size_t(r) * w];
+      const double v = row[0];
+      if (v > kGrayHi * bmax) continue;  // clearly positive
+      if (!is_fresh) return kNeedsFresh;
+      if (!bound_ready) {  // u = |A_B| |x_B| + |b|
+        for (int j = 0; j < m; ++j) {
+          double sum = std::abs(b(j));
+          for (int k = 0; k < m; ++k)
+            sum += std::abs(A(j, col_of[size_t(st.bl[k])])) * std::abs(st.R[size_t(k) * w]);
+          u[size_t(j)] = sum;
+        }
+        bound_ready = true;
+      }
+      double err = 0;
+      for (int j = 0; j < m; ++j) err += std::abs(row[1 + j]) * u[size_t(j)];
+      err *= gamma;
+      if (std::abs(v) <= 10 * err) {
+        labels.set(st.bl[r]);  // degenerate: a basic variable at zero
+        int k = 1;
+        while (k < w && std::abs(row[k]) <= kTie * cm[k]) ++k;
+        if (k == w || row[k] < 0) return kCannotDecide;  // not lexicographically feasible
+      } else if (!(v >= 1e4 * err)) {
+        return kCannotDecide;  // negative, or too close to zero to call
+      }
+    }
+    return kDecided;
+  };
   FlatIndexSets seen_basis, seen_vertex;
   {
     IndexSet m0(n);
@@ -1058,7 +1105,6 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   }
   State s;
   long long in_hand = -1, visits = 0;
-  std::vector<double> cm(w);
   // a < b, a == b, a > b (-1, 0, 1) for two numbers at absolute tolerance kTie * sc
   auto cmp = [](double a, double bb, double sc) {
     if (std::abs(a - bb) <= kTie * sc) return 0;
@@ -1068,6 +1114,7 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     if (deadline.passed(64)) return Structured::kTimeLimit;
     Open o = std::move(stack.back());
     stack.pop_back();
+    bool fresh = false;  // the dictionary was just computed from the data (no pivot chain)
     if (!o.s.T.empty()) {
       stack_dicts -= dict_bytes;
       s = std::move(o.s);
@@ -1077,29 +1124,19 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       s.bl = std::move(o.s.bl);
       s.nl = std::move(o.s.nl);
       if (!refactor(s)) return Structured::kUndecided;
+      fresh = true;
     }
     in_hand = visits++;
-    double bmax = 0;
-    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
     IndexSet cob(n);
     for (int c = 0; c < d; ++c) cob.set(s.nl[c]);
     IndexSet lab = cob;
-    // column scales of the right-hand side: round-off of a column is relative to them
-    std::fill(cm.begin(), cm.end(), 0.0);
-    for (int r = 0; r < m; ++r)
-      for (int k = 0; k < w; ++k) cm[k] = std::max(cm[k], std::abs(s.R[size_t(r) * w + k]));
-    for (int r = 0; r < m; ++r) {
-      const double* row = &s.R[size_t(r) * w];
-      const double v = row[0];
-      if (std::abs(v) <= kZero * bmax) {
-        lab.set(s.bl[r]);  // degenerate: a basic variable at zero
-        int k = 1;
-        while (k < w && std::abs(row[k]) <= kTie * cm[k]) ++k;
-        if (k == w || row[k] < 0) return Structured::kUndecided;  // not lexicographically feasible
-      } else if (v < 0 || v <= kGrayHi * bmax) {
-        return Structured::kUndecided;  // infeasible or too close to call
-      }
+    int verdict = classify(s, fresh, lab);
+    if (verdict == kNeedsFresh) {  // a small value: decide it on a dictionary fresh from the data
+      if (!refactor(s)) return Structured::kUndecided;
+      lab = cob;
+      verdict = classify(s, true, lab);
     }
+    if (verdict != kDecided) return Structured::kUndecided;
     if (seen_vertex.insert(lab)) masks.push_back(std::move(lab));
     for (int c = 0; c < d; ++c) {
       double tmax = 0;
