@@ -226,7 +226,8 @@ bool may_underflow(const std::string& text) {
   // every '-' preceded by an exponent mark (memchr: the scan runs at memory speed)
   const char* const begin = text.data();
   const char* const end = begin + text.size();
-  for (const char* at = begin; (at = static_cast<const char*>(std::memchr(at, '-', size_t(end - at)))); ++at) {
+  for (const char* at = begin;
+       (at = static_cast<const char*>(std::memchr(at, '-', size_t(end - at)))) != nullptr; ++at) {
     if (at == begin || (at[-1] != 'e' && at[-1] != 'E')) continue;
     int exponent = 0;
     for (const char* d = at + 1; d < end && *d >= '0' && *d <= '9'; ++d) {

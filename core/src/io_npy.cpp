@@ -221,8 +221,8 @@ void read_data(const std::string& bytes, const NpyHeader& h, std::uint64_t rows,
   } else {  // C order: row-major in the file
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>> dst(out, r, c);
     if (host_little) {
-      dst = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          reinterpret_cast<const double*>(src), r, c);
+      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      dst = Eigen::Map<const RowMajor>(reinterpret_cast<const double*>(src), r, c);
     } else {
       for (std::uint64_t i = 0; i < rows; ++i)
         for (std::uint64_t k = 0; k < cols; ++k)

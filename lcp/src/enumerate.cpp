@@ -973,8 +973,8 @@ enum class Structured { kAnswered, kUndecided, kTimeLimit, kMemory };
 /// lexicographically feasible basis is visited once and each geometric vertex is reported once
 /// with all its tight inequalities. Open bases on the stack keep their dictionaries up to
 /// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
-/// from the dictionary in hand is reached by that pivot, any other is refactorised from the data. kUndecided on an unbounded edge, a tie
-/// or a value in the gray band of the zero test.
+/// from the dictionary in hand is reached by that pivot, any other is refactorised from the
+/// data. kUndecided on an unbounded edge, a tie, or a basic value too close to zero to call.
 Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
                              const std::vector<int>& row_label, int n,
                              std::vector<IndexSet>& masks, Deadline& deadline) {
@@ -1153,7 +1153,8 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
         int cmp_result = 0;
         const double amin = std::min(-a, -ab);
         for (int k = 0; k < w && cmp_result == 0; ++k)
-          cmp_result = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab, cm[k] / amin);
+          cmp_result = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab,
+                           cm[k] / amin);
         if (cmp_result == 0) return Structured::kUndecided;  // not for independent perturbations
         if (cmp_result < 0) best = r;
       }
