@@ -118,7 +118,7 @@ int run_lcp_enumerate(const LcpEnumerateArgs& a) {
   throw_if_invalid_option(opt.validate(), {{"EnumerationOptions::max_size", "--max-size"},
                                            {"EnumerationOptions::tol", "--tol"},
                                            {"EnumerationOptions::time_limit_s", "--time-limit"}});
-  const lcp::SolutionSet s = lcp::enumerate_all(problem, opt);  // InputError above the limit
+  const lcp::SolutionSet s = lcp::enumerate_all(problem, opt);
   if (a.json)
     print_json(set_json(s, problem));
   else
@@ -139,7 +139,8 @@ void add_lcp_enumerate(CLI::App& lcp, Context& ctx) {
   cmd->add_option("--time-limit", args->time_limit_s,
                   "wall-clock limit in seconds, every phase (default 60; then complete = false)");
   cmd->add_option("--max-size", args->max_size,
-                  "largest n accepted (default 24, at most 30; larger n is bad input)");
+                  "largest n the general engine attempts (default and at most 64); a larger problem that is "
+                  "not a bimatrix game ends with complete = false");
   cmd->callback([args, &ctx]() { ctx.exit_code = run_lcp_enumerate(*args); });
 }
 

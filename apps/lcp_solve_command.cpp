@@ -28,7 +28,7 @@ namespace {
 /// Command-line arguments of `lcp solve` (owned by the callback, alive during parse()).
 struct LcpSolveArgs {
   std::string file;
-  std::string q_file;  ///< --q: the q of a Matrix Market M (default FILE.q.mtx beside it)
+  std::string q_file;  ///< --q: the q of a Matrix Market or .npy M (default FILE.q.mtx/.q.npy)
   std::string solver = "lemke";
   bool json = false;
   double tol = CommonOptions{}.tol;
@@ -191,12 +191,13 @@ int run_lcp_solve(const LcpSolveArgs& a) {
 void add_lcp_solve(CLI::App& lcp, Context& ctx) {
   auto args = std::make_shared<LcpSolveArgs>();
   auto* cmd = lcp.add_subcommand("solve", "Solve an LCP 0 <= z _|_ Mz + q >= 0 from a .json, "
-                                          "Siconos .dat or Matrix Market .mtx file");
+                                          "Siconos .dat, Matrix Market .mtx or numpy .npy file");
   cmd->add_option("FILE", args->file,
-                  "problem file: .json, Siconos .dat, or a Matrix Market M (.mtx) whose q is in "
-                  "FILE.q.mtx beside it or given by --q")
+                  "problem file: .json, Siconos .dat, or a Matrix Market (.mtx) or numpy (.npy) M "
+                  "whose q is in FILE.q.mtx / FILE.q.npy beside it or given by --q")
       ->required();
-  cmd->add_option("--q", args->q_file, "Matrix Market file holding q, for a Matrix Market M");
+  cmd->add_option("--q", args->q_file,
+                  "file holding q, for a Matrix Market (.mtx) or numpy (.npy) M");
   CLI::Option* solver_opt = cmd->add_option("--solver", args->solver,
                   "solver name from the registry (default lemke; valid: " + lcp_solver_list() +
                       ")");

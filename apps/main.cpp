@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "blas_threads.hpp"
 #include "cli_common.hpp"
 #include "cli_options.hpp"
 #include "run_echo.hpp"
@@ -11,6 +12,7 @@
 
 int main(int argc, char** argv) {
   using namespace cpkit::cli;
+  use_one_blas_thread();
   CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
   // Defaults are recorded so that JSON results can echo every option used (run_echo.hpp).
   app.option_defaults()->always_capture_default();

@@ -25,6 +25,11 @@ find_package(nlohmann_json 3 QUIET)
 if(NOT TARGET nlohmann_json::nlohmann_json)
   message(FATAL_ERROR "nlohmann-json not found: install the Debian package 'nlohmann-json3-dev'")
 endif()
+# simdjson: the fast reader of dense JSON problem files (docs/file_formats.md).
+find_package(simdjson QUIET CONFIG)
+if(NOT TARGET simdjson::simdjson)
+  message(FATAL_ERROR "simdjson not found: install the Debian package 'libsimdjson-dev'")
+endif()
 
 if(CPKIT_BUILD_APPS)
   find_package(CLI11 CONFIG QUIET)

@@ -11,7 +11,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
-          catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib python3-numpy
+          catch2 libcli11-dev nlohmann-json3-dev libsimdjson-dev python3-matplotlib python3-numpy
           pybind11-dev python3-dev)
 for arg in "$@"; do
   case "$arg" in

@@ -1,5 +1,5 @@
 // read_lcp_file: the problem-file dispatcher (one reader per format: io_json.cpp, io_dat.cpp,
-// io_matrix_market.cpp).
+// io_matrix_market.cpp, io_npy.cpp).
 #include "cpkit/core/io.hpp"
 
 #include <algorithm>
@@ -50,14 +50,15 @@ LcpProblem read_lcp_matrix_market(const std::string& m_path, const std::string& 
 LcpProblem read_lcp_file(const std::string& path, const std::string& q_path) {
   const auto ext = lower_extension(path);
   if (ext == ".mtx") return read_lcp_matrix_market(path, q_path);
+  if (ext == ".npy") return read_lcp_npy(path, q_path);
   const std::string shown = io_text::valid_utf8(path);
   if (!q_path.empty() && (ext == ".json" || ext == ".dat"))
-    throw InputError(shown + ": a separate q file is only read with a Matrix Market (.mtx) M; "
-                             "this file holds q itself");
+    throw InputError(shown + ": a separate q file is only read with a Matrix Market (.mtx) or "
+                             "numpy (.npy) M; this file holds q itself");
   if (ext == ".json") return read_lcp_json(path);
   if (ext == ".dat") return read_lcp_dat(path);
   throw InputError(shown + ": unknown file type '" + io_text::valid_utf8(ext) +
-                   "' (expected .json, .dat or .mtx)");
+                   "' (expected .json, .dat, .mtx or .npy)");
 }
 
 }  // namespace cpkit

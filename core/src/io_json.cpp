@@ -1,6 +1,13 @@
 // JSON problem files: {"M": [[...], ...], "q": [...]} or {"M_mtx": ..., "q_mtx": ...}.
+// Two readers with one meaning: the fast one (simdjson, for the dense files of every size that
+// users time) answers every well-formed dense file it can fully vouch for; anything else - an
+// error, Matrix Market fields, a number that might underflow - goes to the reference reader
+// (nlohmann's SAX parser with the checks below), which gives every message.
+#include <simdjson.h>
+
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -207,9 +214,131 @@ LcpProblem from_dense_fields(const json& j, const std::string& origin) {
   return p;
 }
 
+/// True when some number in `text` might be non-zero yet round to 0 in double: an exponent of
+/// -150 or below, or a run of 150 zeros (a non-zero decimal below 2^-1074 ~ 4.9e-324 needs
+/// leading zeros plus exponent digits of at least 323). simdjson would round it to 0 silently;
+/// the reference reader refuses it with a message. Conservative: a string holding such text
+/// also sends the file to the reference reader.
+bool may_underflow(const std::string& text) {
+  constexpr int kLimit = 150;
+  const std::string zeros(kLimit, '0');
+  if (memmem(text.data(), text.size(), zeros.data(), zeros.size()) != nullptr) return true;
+  // every '-' preceded by an exponent mark (memchr: the scan runs at memory speed)
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
+  for (const char* at = begin;
+       (at = static_cast<const char*>(std::memchr(at, '-', size_t(end - at)))) != nullptr; ++at) {
+    if (at == begin || (at[-1] != 'e' && at[-1] != 'E')) continue;
+    int exponent = 0;
+    for (const char* d = at + 1; d < end && *d >= '0' && *d <= '9'; ++d) {
+      exponent = exponent * 10 + (*d - '0');
+      if (exponent >= kLimit) return true;
+    }
+  }
+  return false;
+}
+
+/// No object anywhere in `e` has two equal keys (the reference reader refuses those).
+bool distinct_keys(const simdjson::dom::element& e) {
+  simdjson::dom::object obj;
+  simdjson::dom::array arr;
+  if (!e.get(obj)) {
+    std::vector<std::string_view> keys;
+    for (const auto field : obj) {
+      if (std::find(keys.begin(), keys.end(), field.key) != keys.end()) return false;
+      keys.push_back(field.key);
+      if (!distinct_keys(field.value)) return false;
+    }
+  } else if (!e.get(arr)) {
+    for (const auto item : arr)
+      if (!distinct_keys(item)) return false;
+  }
+  return true;
+}
+
+/// The fast reader: true with `p` filled for a well-formed dense file that passes every check
+/// of the reference reader; false (p untouched) for anything else, which the reference reader
+/// then reads or refuses with its message. Nesting is limited to kMaxJsonDepth - 1 here, so
+/// that the boundary is always the reference reader's.
+bool parse_dense_fast(const std::string& text, LcpProblem& p) {
+  if (may_underflow(text)) return false;
+  simdjson::dom::parser parser;
+  if (parser.allocate(text.size(), kMaxJsonDepth - 1) != simdjson::SUCCESS) return false;
+  simdjson::dom::element root;
+  if (parser.parse(text.data(), text.size()).get(root) != simdjson::SUCCESS) return false;
+  simdjson::dom::object top;
+  if (root.get(top) != simdjson::SUCCESS) return false;
+  simdjson::dom::array jm, jq;
+  bool has_m = false, has_q = false;
+  std::string_view name, note;
+  std::vector<std::string_view> keys;
+  for (const auto field : top) {
+    const std::string_view k = field.key;
+    if (std::find(keys.begin(), keys.end(), k) != keys.end()) return false;  // duplicate
+    keys.push_back(k);
+    if (k == "M") {
+      if (field.value.get(jm) != simdjson::SUCCESS) return false;
+      has_m = true;
+    } else if (k == "q") {
+      if (field.value.get(jq) != simdjson::SUCCESS) return false;
+      has_q = true;
+    } else if (k == "name") {
+      if (field.value.get(name) != simdjson::SUCCESS) return false;
+    } else if (k == "note") {
+      if (field.value.get(note) != simdjson::SUCCESS) return false;
+    } else if (k == "source" || k == "expected") {
+      if (!distinct_keys(field.value)) return false;
+    } else {
+      return false;  // unknown field, or the Matrix Market form
+    }
+  }
+  if (!has_m || !has_q) return false;
+  const std::size_t n = jq.size();  // simdjson saturates at 2^24 - 1: then never equal below
+  if (n == 0 || n >= 0xFFFFFF || jm.size() != n) return false;
+  for (const auto row : jm) {  // every row checked before M is allocated
+    simdjson::dom::array r;
+    if (row.get(r) != simdjson::SUCCESS || r.size() != n) return false;
+  }
+  const auto ni = static_cast<Eigen::Index>(n);
+  Mat M(ni, ni);
+  Vec q(ni);
+  Eigen::Index i = 0;
+  for (const auto row : jm) {
+    simdjson::dom::array r;
+    if (row.get(r) != simdjson::SUCCESS) return false;
+    Eigen::Index k = 0;
+    for (const auto v : r) {
+      double x = 0;
+      if (v.get(x) != simdjson::SUCCESS) return false;  // not a number (int64/uint64/double)
+      M(i, k++) = x;
+    }
+    ++i;
+  }
+  i = 0;
+  for (const auto v : jq) {
+    double x = 0;
+    if (v.get(x) != simdjson::SUCCESS) return false;
+    q[i++] = x;
+  }
+  p.M = std::move(M);
+  p.q = std::move(q);
+  p.name = std::string(name);
+  p.note = std::string(note);
+  return true;
+}
+
 }  // namespace
 
 LcpProblem parse_lcp_json(const std::string& text, const std::string& origin_in) {
+  LcpProblem p;
+  if (parse_dense_fast(text, p)) {
+    throw_if_invalid(p.validate(), io_text::valid_utf8(origin_in));
+    return p;
+  }
+  return parse_lcp_json_reference(text, origin_in);
+}
+
+LcpProblem parse_lcp_json_reference(const std::string& text, const std::string& origin_in) {
   const std::string origin = io_text::valid_utf8(origin_in);
   const json j = parse_bounded(text, origin);
   if (!j.is_object()) throw InputError(origin + ": top level must be an object with \"M\" and \"q\"");

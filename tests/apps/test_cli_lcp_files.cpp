@@ -4,6 +4,7 @@
 // message (never 4, "internal error"), including file names that are not UTF-8.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -80,7 +81,26 @@ TEST_CASE("cli: a Matrix Market M with its q beside it or from --q", "[cli][io]"
   // --q with a file that holds q itself.
   const auto j = run_cpkit("lcp solve " + siconos("lcp_deudeu.dat") + " --q " + write("q2.mtx", kQ));
   CHECK(j.code == 2);
-  CHECK_THAT(j.err, Contains("a separate q file is only read with a Matrix Market (.mtx) M"));
+  CHECK_THAT(j.err, Contains("a separate q file is only read with a Matrix Market (.mtx) or numpy (.npy) M"));
+}
+
+TEST_CASE("cli: numpy .npy M with q beside it or from --q", "[cli][io][npy]") {
+  // tests/data/npy/make_npy.py: M = [[2, 1, 0], [1, 3, 1], [0, 1, 4]], q = (-2, 0, 3), unique
+  // solution z = (1, 0, 0)
+  const std::string dir = std::string("'") + CPKIT_TEST_DATA_DIR + "/npy/";
+  for (const std::string& args : {"lcp solve " + dir + "lcp3.npy'",
+                                  "lcp solve " + dir + "lcp3.npy' --q " + dir + "q_column.npy'",
+                                  "lcp solve " + dir + "lcp3.npy' --solver fb-newton"}) {
+    const auto z = solved_z(args);
+    REQUIRE(z.size() == 3);
+    CHECK(std::abs(z[0] - 1) < 1e-9);
+    CHECK(std::abs(z[1]) < 1e-9);
+    CHECK(std::abs(z[2]) < 1e-9);
+  }
+  const auto e = run_cpkit("lcp solve " + dir + "A_int64.npy' --q " + dir + "q_column.npy'");
+  CHECK(e.code == 2);
+  CHECK(e.out.empty());
+  CHECK_THAT(e.err, Contains("A_int64.npy") && Contains("dtype '<i8' is not supported"));
 }
 
 TEST_CASE("cli: bad problem files exit 2 with the reason, never 4", "[cli][io]") {

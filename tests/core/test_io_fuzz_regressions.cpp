@@ -28,6 +28,7 @@ const std::map<std::string, std::function<void(const std::string&)>> kReaders = 
     {"matrix_market", [](const std::string& t) { cpkit::parse_matrix_market(t, "input.mtx"); }},
     {"matrix_market_vector",
      [](const std::string& t) { cpkit::parse_matrix_market_vector(t, "input.q.mtx"); }},
+    {"npy", [](const std::string& t) { cpkit::parse_npy_matrix(t, "input.npy"); }},
 };
 
 /// reader/file -> the message it must give (what used to happen, in the comment).
@@ -52,6 +53,10 @@ const std::map<std::string, std::string> kExpected = {
     {"matrix_market/array_size_product_overflow.mtx", "input.mtx:2: rows = 4294967296 is outside"},
     // Heap buffer overflow: a symmetric q file with a non-square size.
     {"matrix_market_vector/symmetric_non_square_q.mtx", "input.q.mtx:2: a symmetric matrix must be square"},
+    // .npy shapes that the data do not back: refused before M is allocated (no 128 PB resize).
+    {"npy/shape_beyond_data.npy", "input.npy: shape (4000000000, 4000000000) needs more data than the 8 bytes"},
+    {"npy/shape_product_overflow.npy", "needs more data than the 8 bytes after the header"},
+    {"npy/header_length_beyond_file.npy", "input.npy: the .npy header length 4294967295 goes beyond"},
 };
 
 std::string slurp(const fs::path& p) {

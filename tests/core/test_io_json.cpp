@@ -2,7 +2,12 @@
 // and the limits (nesting depth, number range, unknown fields).
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
@@ -113,4 +118,102 @@ TEST_CASE("JSON: M is allocated only once its n rows of n numbers are in the fil
   for (std::size_t i = 1; i < n; ++i) text += ",[]";
   text += "]}";
   fails_with(text, "M row 0 must be an array of 100000 numbers");
+}
+
+namespace {
+
+/// The outcome of one reader: the problem, or the message of its InputError.
+struct Outcome {
+  bool ok = false;
+  cpkit::LcpProblem p;
+  std::string error;
+};
+template <class Read>
+Outcome outcome(Read&& read, const std::string& text) {
+  Outcome o;
+  try {
+    o.p = read(text, "f.json");
+    o.ok = true;
+  } catch (const InputError& e) {
+    o.error = e.what();
+  }
+  return o;
+}
+
+/// parse_lcp_json (simdjson fast path) and parse_lcp_json_reference (nlohmann) agree: the
+/// same problem bit for bit, or the same message.
+void same_outcome(const std::string& text) {
+  const Outcome a = outcome(
+      [](const std::string& t, const std::string& o) { return cpkit::parse_lcp_json(t, o); }, text);
+  const Outcome b = outcome([](const std::string& t, const std::string& o) {
+    return cpkit::parse_lcp_json_reference(t, o);
+  }, text);
+  CAPTURE(text.substr(0, 300));
+  REQUIRE(a.ok == b.ok);
+  if (!a.ok) {
+    CHECK(a.error == b.error);
+    return;
+  }
+  CHECK(a.p.dense_M() == b.p.dense_M());
+  CHECK(a.p.q == b.p.q);
+  for (Eigen::Index i = 0; i < a.p.q.size(); ++i)  // signs of zeros too
+    CHECK(std::signbit(a.p.q[i]) == std::signbit(b.p.q[i]));
+  CHECK(a.p.name == b.p.name);
+  CHECK(a.p.note == b.p.note);
+}
+
+std::string slurp_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST_CASE("JSON: the fast reader and the reference reader agree on every input", "[io][json]") {
+  namespace fs = std::filesystem;
+  std::vector<std::string> texts = {
+      R"({"M": [[1, 2], [3, 4]], "q": [-1, 0.5], "name": "a\u00e9\n", "note": ""})",
+      R"({"q": [-0, 0.0, -0.0], "M": [[0,0,0],[0,0,0],[0,0,0]]})",
+      R"({"M": [[18446744073709551616]], "q": [-9223372036854775808]})",
+      R"({"M": [[1e-320]], "q": [-1]})", R"({"M": [[1e-400]], "q": [-1]})",
+      R"({"M": [[1E-149]], "q": [-1]})", R"({"M": [[1e-0000000000000000000400]], "q": [-1]})",
+      R"({"M": [[0.)" + std::string(400, '0') + R"(1]], "q": [-1]})",
+      R"({"M": [[0.)" + std::string(200, '0') + R"(1e-200]], "q": [-1]})",
+      R"({"M": [[1e308]], "q": [1e309]})", R"({"M": [[1]], "q": [1], "name": "\ud800"})",
+      R"({"M": [[1]], "q": [1], "name": "\udc00\ud800"})",
+      R"({"M": [[1]], "q": [1], "expected": {"a": 1, "b": {"c": 2, "c": 3}}})",
+      R"({"M": [[1]], "q": [1], "expected": [{"a": 1}, {"a": 2}], "source": "x"})",
+      R"({"M": [[1]], "q": [1], "q": [1]})", R"({"M": [[1]], "q": [1], "M_mtx": "a"})",
+      R"({"M": [[1]], "q": [1]} x)", R"({"M": [[1]], "q": [1],})", "\xef\xbb\xbf{\"M\": [[1]], \"q\": [1]}",
+      R"({"M": [[1, 2], [3]], "q": [1, 2]})", R"({"M": [[1]], "q": [true]})",
+      R"({"M": [[1]], "q": [1], "note": 5})", R"({"M": [[NaN]], "q": [1]})", "",
+      R"({"M": [[1]], "q": [-1]})",  // validates; M = 1 > 0
+      "{\"M\": [[1]], \"q\": [1]}\n\n\n",
+  };
+  for (int depth : {cpkit::kMaxJsonDepth - 3, cpkit::kMaxJsonDepth - 2, cpkit::kMaxJsonDepth - 1,
+                    cpkit::kMaxJsonDepth, cpkit::kMaxJsonDepth + 1})
+    texts.push_back(R"({"M": [[1]], "q": [1], "expected": )" + std::string(size_t(depth), '[') +
+                    std::string(size_t(depth), ']') + "}");
+  const fs::path root(CPKIT_SOURCE_DIR);
+  for (const fs::path& dir : {root / "tests/fuzz/corpus/json_lcp", root / "tests/fuzz/regressions/json_lcp",
+                             root / "tests/data/lcp"})
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".json") texts.push_back(slurp_file(e.path()));
+  const std::size_t seeds = texts.size();
+  // seeded mutations of every seed: byte flips, deletions, duplications
+  std::mt19937 rng(14);
+  for (std::size_t s = 0; s < seeds; ++s)
+    for (int k = 0; k < 40; ++k) {
+      std::string t = texts[s];
+      if (t.empty()) break;
+      std::uniform_int_distribution<std::size_t> at(0, t.size() - 1);
+      const char alphabet[] = "{}[],:\"-+.eE0123456789 \\u";
+      switch (k % 3) {
+        case 0: t[at(rng)] = alphabet[rng() % (sizeof alphabet - 1)]; break;
+        case 1: t.erase(at(rng), 1); break;
+        default: { const std::size_t a = at(rng); t.insert(a, t.substr(a, 1 + rng() % 8)); }
+      }
+      texts.push_back(std::move(t));
+    }
+  for (const std::string& t : texts) same_outcome(t);
 }

@@ -287,7 +287,7 @@ TEST_CASE("enumerate_all: block-bipartite path agrees with the general engine", 
   }
 }
 
-TEST_CASE("enumerate_all: misuse and the size limit throw", "[enumerate]") {
+TEST_CASE("enumerate_all: misuse throws, the size limit ends incomplete", "[enumerate]") {
   cpkit::Mat M = cpkit::Mat::Identity(3, 3);
   cpkit::Vec q = cpkit::Vec::Ones(3);
   q(1) = std::nan("");
@@ -296,14 +296,31 @@ TEST_CASE("enumerate_all: misuse and the size limit throw", "[enumerate]") {
   EnumerationOptions bad;
   bad.tol = 0;
   CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), bad), cpkit::InputError);
-  const int big = 25;
-  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(cpkit::Mat::Identity(big, big), cpkit::Vec::Ones(big))),
-                  cpkit::InputError);
+  for (const int size : {0, cpkit::lcp::kMaxEnumerationSize + 1}) {
+    EnumerationOptions o;
+    o.max_size = size;
+    CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), o), cpkit::InputError);
+  }
+  // n = 30 beyond the old limit (24): M = I, q = 1 has the single solution z = 0.
+  const int big = 30;
+  const SolutionSet s30 =
+      enumerate_all(cpkit::LcpProblem(cpkit::Mat::Identity(big, big), cpkit::Vec::Ones(big)));
+  CHECK(s30.complete);
+  REQUIRE(s30.solutions.size() == 1);
+  CHECK(s30.solutions[0].z.isZero(0));
+  // Beyond max_size (not a game): no exception, complete = false and a message naming the limit.
   EnumerationOptions small;
-  small.max_size = 2;
-  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), small), cpkit::InputError);
-  small.max_size = 31;
-  CHECK_THROWS_AS(enumerate_all(cpkit::LcpProblem(M, cpkit::Vec::Ones(3)), small), cpkit::InputError);
+  small.max_size = 5;
+  const SolutionSet s = enumerate_all(cpkit::LcpProblem(cpkit::Mat::Identity(6, 6),
+                                                        cpkit::Vec::Ones(6)), small);
+  CHECK_FALSE(s.complete);
+  CHECK(s.solutions.empty());
+  CHECK_THAT(s.message, Catch::Contains("exceeds the general engine's limit 5"));
+  const int huge = cpkit::lcp::kMaxEnumerationSize + 6;
+  const SolutionSet h = enumerate_all(cpkit::LcpProblem(cpkit::Mat::Identity(huge, huge),
+                                                        -cpkit::Vec::Ones(huge)));
+  CHECK_FALSE(h.complete);
+  CHECK_THAT(h.message, Catch::Contains("only bimatrix games"));
 }
 
 TEST_CASE("enumerate_all: n = 24 is within the limit", "[enumerate]") {

@@ -9,6 +9,7 @@
 ///   text after q is kept as the note. Sparse block matrices give sparse storage.
 /// - Matrix Market (coordinate or array; real, integer or double; general, symmetric) for M,
 ///   with q in a second Matrix Market file.
+/// - numpy .npy (little-endian float64, C or Fortran order) for M, with q in a second .npy file.
 /// Malformed input throws InputError naming the file and the line or field, before anything is
 /// allocated in proportion to a size the file states but does not back with data.
 #include <Eigen/Core>
@@ -25,18 +26,35 @@ inline constexpr int kMaxJsonDepth = 64;
 inline constexpr Eigen::Index kMaxMatrixMarketDimension = 10'000'000;
 
 LcpProblem read_lcp_json(const std::string& path);
+/// Reads a JSON problem. Dense files are parsed with simdjson (a small fraction of a solve even
+/// for n in the thousands); every other case, and every error, with the reference reader below,
+/// so that the result and every message are the reference reader's.
 LcpProblem parse_lcp_json(const std::string& text, const std::string& origin = "<string>");
+/// The reference JSON reader (nlohmann's SAX parser; slower): same result and messages as
+/// parse_lcp_json. Public so that the tests can compare the two on every input.
+LcpProblem parse_lcp_json_reference(const std::string& text,
+                                    const std::string& origin = "<string>");
 LcpProblem read_lcp_dat(const std::string& path);
 LcpProblem parse_lcp_dat(const std::string& text, const std::string& origin = "<string>");
 
-/// The q file that belongs beside a Matrix Market M: "dir/A.mtx" -> "dir/A.q.mtx".
+/// The q file that belongs beside a Matrix Market or .npy M: "dir/A.mtx" -> "dir/A.q.mtx",
+/// "dir/A.npy" -> "dir/A.q.npy".
 std::string matrix_market_q_path(const std::string& m_path);
 /// M from the Matrix Market file `m_path` (sparse storage), q from `q_path`, or, when `q_path`
 /// is empty, from matrix_market_q_path(m_path). Without a q file: InputError saying what to do.
 LcpProblem read_lcp_matrix_market(const std::string& m_path, const std::string& q_path = {});
 
-/// Dispatches on the extension (case-insensitive): .json, .dat or .mtx; otherwise InputError.
-/// `q_path` (the q of a Matrix Market M) is accepted only with .mtx.
+/// numpy .npy arrays (format 1.0, 2.0, 3.0) of little-endian float64 ('<f8'), C or Fortran
+/// order; the header is parsed strictly and the data must be exactly as long as the shape says.
+/// A matrix needs a 2-D shape, a vector (n,) or (n, 1). `origin` names the file in messages.
+Mat parse_npy_matrix(const std::string& bytes, const std::string& origin = "<string>");
+Vec parse_npy_vector(const std::string& bytes, const std::string& origin = "<string>");
+/// M from the .npy file `m_path` (dense), q from `q_path`, or, when `q_path` is empty, from
+/// matrix_market_q_path(m_path) ("dir/M.npy" -> "dir/M.q.npy").
+LcpProblem read_lcp_npy(const std::string& m_path, const std::string& q_path = {});
+
+/// Dispatches on the extension (case-insensitive): .json, .dat, .mtx or .npy; otherwise
+/// InputError. `q_path` (the q of a Matrix Market or .npy M) is accepted only with .mtx, .npy.
 LcpProblem read_lcp_file(const std::string& path, const std::string& q_path = {});
 
 void write_lcp_json(const LcpProblem& p, const std::string& path);

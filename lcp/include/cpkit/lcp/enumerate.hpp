@@ -9,10 +9,13 @@
 /// vertices and extreme rays; whether the set is infinite; and whether the enumeration is
 /// complete. Singular principal blocks are normal input (docs/enumeration.md).
 ///
-/// Size limit: n <= EnumerationOptions::max_size (default 24, at most kMaxEnumerationSize = 30);
-/// beyond it InputError, never a silent partial answer. The time limit (default 60 s) holds in
-/// every phase (search, singular pieces, piece collection, directions); when it stops any of
-/// them the result has complete = false with a message saying so.
+/// Budget: the time limit (default 60 s) holds in every phase (polytope traversal, search,
+/// singular pieces, piece collection, directions); when it stops any of them the result has
+/// complete = false with a message saying so, never a silent partial answer. The general engine
+/// takes n <= EnumerationOptions::max_size (default and at most kMaxEnumerationSize = 64, its
+/// supports are 64-bit masks); a larger problem that is not a bimatrix game gets
+/// complete = false with a message. Bimatrix games (the structured path) have no size limit:
+/// they are bounded by the time limit and a memory bound (docs/enumeration.md).
 ///
 /// Units: every sign and zero test is relative to the size of the terms it compares (unit-free);
 /// the decisions are made on (M, q) scaled by powers of two to max entries in [0.5, 1), so the
@@ -39,14 +42,16 @@
 
 namespace cpkit::lcp {
 
-/// Hard ceiling on the problem size (supports are bit masks).
-inline constexpr int kMaxEnumerationSize = 30;
+/// Largest n of the general engine (its supports are 64-bit masks). The structured path for
+/// bimatrix games has no such ceiling.
+inline constexpr int kMaxEnumerationSize = 64;
 
 struct EnumerationOptions {
   /// Relative tolerance of the sign and zero tests (docs/enumeration.md, "Tolerance").
   double tol = 1e-12;
-  /// Problems with n > max_size throw InputError (1 <= max_size <= kMaxEnumerationSize).
-  int max_size = 24;
+  /// Largest n the general engine attempts (1 <= max_size <= kMaxEnumerationSize); a larger
+  /// problem that the structured path cannot answer gets complete = false and a message.
+  int max_size = kMaxEnumerationSize;
   /// Wall-clock limit in seconds, honoured by every phase; when hit the result has
   /// complete = false and a message. The default bounds a run on a hostile input (a complete
   /// enumeration may need all 2^n bases).
@@ -117,7 +122,7 @@ struct SolutionSet {
 };
 
 /// Enumerates the whole solution set of a dense (or sparse, densified) LCP. Throws InputError
-/// on invalid problems or options and on n > options.max_size.
+/// on invalid problems or options; budgets (time, memory, max_size) end with complete = false.
 SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& options = {});
 
 }  // namespace cpkit::lcp
