@@ -1483,7 +1483,7 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
         work.complete = false;
         work.message = "n = " + std::to_string(n) + " exceeds the general engine's limit " +
                        std::to_string(options.max_size) +
-                       " (EnumerationOptions::max_size, at most " +
+                       " (max_size, the CLI's --max-size, at most " +
                        std::to_string(kMaxEnumerationSize) +
                        "); only bimatrix games (block-bipartite LCPs) are enumerated beyond it";
         break;

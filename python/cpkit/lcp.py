@@ -71,15 +71,15 @@ def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: flo
                                 int(max_iterations), float(time_limit)))
 
 
-def enumerate(M, q, *, max_size: int = 24, time_limit: float = 60.0) -> SolutionSet:
-    """Every solution of LCP(M, q) (n <= max_size <= 30): all extreme solutions, the pieces of
+def enumerate(M, q, *, max_size: int = 64, time_limit: float = 60.0) -> SolutionSet:
+    """Every solution of LCP(M, q) (general engine: n <= max_size <= 64; bimatrix games of any size): all extreme solutions, the pieces of
     positive dimension with their rays, and whether the enumeration is `complete`."""
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.enumerate_sparse if sparse else _cpkit.enumerate_dense
     return SolutionSet._from(fn(M, q, int(max_size), float(time_limit)))
 
 
-def cross_verify(M, q, *, skip: Iterable[str] = (), max_size: int = 24,
+def cross_verify(M, q, *, skip: Iterable[str] = (), max_size: int = 64,
                  time_limit: float = 60.0) -> CrossVerifyReport:
     """Every registered solver's answer checked against the complete enumeration;
     `consistent` is False when some solver's claim contradicts it (`disagreements`)."""

@@ -117,6 +117,12 @@ def test_unknown_solver_lists_the_valid_ones():
         cpkit.solve(M2, q2, solver="simplex")
 
 
-def test_enumeration_size_limit_is_an_error():
+def test_enumeration_beyond_max_size_is_incomplete_not_wrong():
+    # n = 31 > max_size = 30: the general engine does not attempt it and says so.
+    s = cpkit.enumerate(np.eye(31), -np.ones(31), max_size=30)
+    assert not s.complete and "max_size" in s.message
+
+
+def test_enumeration_max_size_out_of_range_is_an_error():
     with pytest.raises(ValueError):
-        cpkit.enumerate(np.eye(31), -np.ones(31))
+        cpkit.enumerate(np.eye(2), -np.ones(2), max_size=65)
