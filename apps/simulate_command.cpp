@@ -25,10 +25,9 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
-#include "data_files.hpp"
-#include "run_program.hpp"
 #include "simulate_config.hpp"
 #include "simulate_system.hpp"
+#include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::cli {
@@ -130,16 +129,6 @@ void apply_args(const SimArgs& a, Settings& s) {
   if (!a.plot.empty()) s.plot = a.plot;
   if (a.every_given) s.every = a.every;
   if (!a.system.empty()) s.system = a.system;
-}
-
-// Opens an output file, creating its folder first (configs name paths like out/fretting.csv).
-std::ofstream open_output(const std::string& path) {
-  const auto dir = std::filesystem::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-  std::ofstream f(path);
-  if (!f) throw InputError("cannot write '" + path + "'");
-  return f;
 }
 
 /// The time series, written row by row as the simulation produces it (never held in memory).
@@ -317,35 +306,9 @@ int run(const SimArgs& a) {
       std::cout << "  temperature: final " << r.final_state.temperature << ", max "
                 << r.max_temperature << "\n";
   }
-  bool plot_failed = false;
-  if (!s.plot.empty()) {
-    std::string searched;
-    const std::string script = find_data_file("cpkit_plot_simulation.py", &searched);
-    if (script.empty()) {
-      std::cerr << "cpkit simulate: plot script cpkit_plot_simulation.py not found (looked in "
-                << searched << "); no figures\n";
-      plot_failed = true;
-    } else {
-      // Outputs create their folders (the figures may go elsewhere than --csv/--summary).
-      const auto plot_dir = std::filesystem::path(s.plot).parent_path();
-      std::error_code ec;
-      if (!plot_dir.empty()) std::filesystem::create_directories(plot_dir, ec);
-      if (ec) throw InputError("cannot create the folder of --plot '" + s.plot + "': " + ec.message());
-      // An argument vector, never a shell: the paths come from the user or a config file.
-      const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
-                                             "--summary", summary, "--out", s.plot};
-      const ProgramRun pr = run_program(argv, true);
-      if (!pr.started || pr.exit_code != 0) {
-        std::cerr << "cpkit simulate: the plot script failed ("
-                  << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
-                  << "): " << command_text(argv) << "\n";
-        plot_failed = true;
-      } else {
-        for (const char* fig : {"_loop", "_wear", "_state"})
-          for (const char* ext : {".png", ".svg"}) written.push_back(s.plot + fig + ext);
-      }
-    }
-  }
+  const bool plot_failed =
+      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_simulation.py", csv, summary, s.plot,
+                                                  {"_loop", "_wear", "_state"}, written);
   for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
   if (plot_failed) return kExitInternal;  // the figures were asked for and are missing
   return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;

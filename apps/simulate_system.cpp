@@ -8,20 +8,10 @@
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/system_simulation.hpp"
-#include "data_files.hpp"
-#include "run_program.hpp"
+#include "simulation_outputs.hpp"
 
 namespace cpkit::cli {
 namespace {
-
-std::ofstream open_file(const std::string& path) {
-  const auto dir = std::filesystem::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-  std::ofstream f(path);
-  if (!f) throw InputError("cannot write '" + path + "'");
-  return f;
-}
 
 /// A csv load for N points: rows t, F_T1, F_N1, ..., F_TN, F_NN ('#' comments, optional header).
 std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int N) {
@@ -97,7 +87,7 @@ int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
   std::ofstream f;
   if (!csv.empty()) {
-    f = open_file(csv);
+    f = open_output(csv);
     f.precision(12);
     f << "step,t";
     for (int i = 1; i <= N; ++i)
@@ -161,7 +151,7 @@ int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
   if (!summary.empty()) {
-    std::ofstream sf = open_file(summary);
+    std::ofstream sf = open_output(summary);
     sf << json_text(j) << '\n';
     sf.flush();
     if (!sf) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
@@ -177,33 +167,13 @@ int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
     std::cout << "\n  energy balance relative error " << r.energy_error << ", branch points "
               << r.branch_steps << ", steps not proved complete " << r.incomplete_steps << "\n";
   }
-  bool plot_failed = false;
-  if (!s.plot.empty()) {
-    std::string searched;
-    const std::string script = find_data_file("cpkit_plot_system_simulation.py", &searched);
-    if (script.empty()) {
-      std::cerr << "cpkit simulate: plotting script cpkit_plot_system_simulation.py not found "
-                   "(looked in "
-                << searched << "); no figures\n";
-      plot_failed = true;
-    } else {
-      const std::string plot_dir = std::filesystem::path(s.plot).parent_path().string();
-      std::error_code ec;
-      if (!plot_dir.empty()) std::filesystem::create_directories(plot_dir, ec);
-      if (ec) throw InputError("cannot create the folder of --plot '" + s.plot + "': " + ec.message());
-      const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
-                                             "--summary", summary, "--out", s.plot};
-      const ProgramRun pr = run_program(argv, true);
-      if (!pr.started || pr.exit_code != 0) {
-        std::cerr << "cpkit simulate: the plot script failed ("
-                  << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
-                  << "): " << command_text(argv) << "\n";
-        plot_failed = true;
-      } else {
-        std::cerr << "cpkit simulate: wrote the figures " << s.plot << "_*.png/.svg\n";
-      }
-    }
-  }
+  std::vector<std::string> written;  // named at the end: the user sees what the run produced
+  if (!csv.empty()) written.push_back(csv);
+  if (!summary.empty()) written.push_back(summary);
+  const bool plot_failed =
+      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_system_simulation.py", csv, summary,
+                                                  s.plot, {"_wear", "_slip"}, written);
+  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
   // A requested picture that could not be drawn is a failure (exit 4), as for one point.
   if (plot_failed) return kExitInternal;
   if (r.outcome == rate::SimulationResult::Outcome::kCompleted) return kExitOk;

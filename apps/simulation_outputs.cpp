@@ -1,0 +1,53 @@
+#include "simulation_outputs.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+
+#include "cpkit/core/errors.hpp"
+#include "data_files.hpp"
+#include "run_program.hpp"
+
+namespace cpkit::cli {
+
+std::ofstream open_output(const std::string& path) {
+  const auto dir = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write '" + path + "'");
+  return f;
+}
+
+bool draw_simulation_figures(const std::string& script_name, const std::string& csv,
+                             const std::string& summary, const std::string& plot,
+                             const std::vector<std::string>& figures,
+                             std::vector<std::string>& written) {
+  std::string searched;
+  const std::string script = find_data_file(script_name, &searched);
+  if (script.empty()) {
+    std::cerr << "cpkit simulate: plot script " << script_name << " not found (looked in "
+              << searched << "); no figures\n";
+    return false;
+  }
+  // Outputs create their folders (the figures may go elsewhere than --csv/--summary).
+  const auto plot_dir = std::filesystem::path(plot).parent_path();
+  std::error_code ec;
+  if (!plot_dir.empty()) std::filesystem::create_directories(plot_dir, ec);
+  if (ec) throw InputError("cannot create the folder of --plot '" + plot + "': " + ec.message());
+  // An argument vector, never a shell: the paths come from the user or a config file.
+  const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
+                                         "--summary", summary, "--out", plot};
+  const ProgramRun pr = run_program(argv, true);
+  if (!pr.started || pr.exit_code != 0) {
+    std::cerr << "cpkit simulate: the plot script failed ("
+              << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
+              << "): " << command_text(argv) << "\n";
+    return false;
+  }
+  for (const auto& fig : figures)
+    for (const char* ext : {".png", ".svg"}) written.push_back(plot + fig + ext);
+  return true;
+}
+
+}  // namespace cpkit::cli
