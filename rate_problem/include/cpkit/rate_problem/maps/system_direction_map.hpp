@@ -54,7 +54,7 @@ struct SystemDirectionMap {
 
 /// Largest Schur-complement LCP (3 per point in state b, 1 per point in state d) whose 2^m
 /// complementary bases the map scans.
-inline constexpr int kMaxSystemMapLcp = 16;
+inline constexpr int kMaxSystemMapLcp = 12;
 
 /// Computes the direction map. options.method must be kEnumerate (theta_from/theta_to and
 /// threads are not used). Throws InputError for an invalid system or options, patterns that are
