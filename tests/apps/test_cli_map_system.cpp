@@ -96,21 +96,25 @@ TEST_CASE("cpkit map --system: bad input exits 2 naming the option", "[cli][map]
   CHECK(r.err.find("patterns") != std::string::npos);
 }
 
-TEST_CASE("maps.md's sample output of the two-point map is what cpkit prints", "[cli][map][system][docs]") {
+TEST_CASE("maps.md's sample outputs of the N-point maps are what cpkit prints", "[cli][map][system][docs]") {
   std::ifstream f(std::string(CPKIT_SOURCE_DIR) + "/docs/maps.md");
   const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  const std::string head = "cpkit map --system docs/examples/two_point_system.json\n```\n```\n";
-  const auto b = md.find(head);
-  REQUIRE(b != std::string::npos);
-  const auto e = md.find("```", b + head.size());
-  REQUIRE(e != std::string::npos);
-  const std::string sample = md.substr(b + head.size(), e - b - head.size());
-  const std::string file = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/two_point_system.json";
-  const auto r = cpkit::test::run_cpkit("map --system '" + file + "'");
-  REQUIRE(r.code == 0);
-  std::string out = r.out;  // the docs show the path relative to the source tree
-  const auto at = out.find(file);
-  REQUIRE(at != std::string::npos);
-  out.replace(at, file.size(), "docs/examples/two_point_system.json");
-  CHECK(out == sample);
+  for (const std::string example : {"two_point_system", "three_point_punch"}) {
+    const std::string rel = "docs/examples/" + example + ".json";
+    const std::string head = "cpkit map --system " + rel + "\n```\n```\n";
+    const auto b = md.find(head);
+    INFO(example);
+    REQUIRE(b != std::string::npos);
+    const auto e = md.find("```", b + head.size());
+    REQUIRE(e != std::string::npos);
+    const std::string sample = md.substr(b + head.size(), e - b - head.size());
+    const std::string file = std::string(CPKIT_SOURCE_DIR) + "/" + rel;
+    const auto r = cpkit::test::run_cpkit("map --system '" + file + "'");
+    REQUIRE(r.code == 0);
+    std::string out = r.out;  // the docs show the path relative to the source tree
+    const auto at = out.find(file);
+    REQUIRE(at != std::string::npos);
+    out.replace(at, file.size(), rel);
+    CHECK(out == sample);
+  }
 }
