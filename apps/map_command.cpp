@@ -32,6 +32,10 @@
 
 namespace cpkit::cli {
 
+/// `cpkit map --system FILE` (map_system.cpp).
+int run_map_system(const std::string& path, const std::string& kind, const std::string& out,
+                   bool json);
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,6 +45,7 @@ constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplot
 
 struct MapArgs {
   std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
+  std::string system;  // --system FILE: the N-point direction map (map_system.cpp)
   std::string format = "npy";
   double time_limit = 600;  // seconds of cells the estimate may reach (--time-limit)
   double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
@@ -520,6 +525,16 @@ int run_map(const MapArgs& a) {
       std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
     return kExitOk;
   }
+  if (a.given("--system")) {
+    for (const auto& [name, o] : a.opt)
+      if (o->count() > 0 && name != "--system" && name != "--kind" && name != "--out" &&
+          name != "--json")
+        throw InputError(name + " does not apply with --system (the state, parameters and load "
+                         "patterns come from the system file; options: --kind direction, --out, "
+                         "--json)");
+    if (a.plot) throw InputError("--plot does not apply with --system");
+    return run_map_system(a.system, a.given("--kind") ? a.kind : "direction", a.out, a.json);
+  }
   const MapSetup s = build_setup(a);
   MapOptions options;
   const auto method = rate_method_from_string(a.method);
@@ -864,6 +879,9 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--format"] = cmd->add_option("--format", args->format,
                                   "cells of a grid map: npy (default; numpy arrays of codes + axis "
                                   "vectors) | csv (one line per cell)");
+  o["--system"] = cmd->add_option("--system", args->system,
+                                  "N-point system file (docs/file_formats.md): direction map of "
+                                  "dF = cos(theta) e1 + sin(theta) e2 (with --kind direction)");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
   cmd->callback([args, &ctx] { ctx.exit_code = run_map(*args); });

@@ -1,0 +1,66 @@
+#pragma once
+/// \file system_direction_map.hpp
+/// The direction map of the N-point rate problem (docs/maps.md, "N points"): for one system
+/// (states, parameters, A), the solution count and type tuples for every load direction
+/// dF(theta) = cos(theta) e1 + sin(theta) e2, theta in [0, 2 pi), with the system's patterns
+/// e1, e2 (2N each; default e1 = (1, 0, 1, 0, ...), e2 = (0, 1, 0, 1, ...): the same tangential
+/// or normal load rate on every point).
+///
+/// Method (exact critical directions): q = Q dF(theta) of the Schur-complement LCP is linear in
+/// (cos, sin). For every complementary basis the basic z, the non-basic w and the physical rates
+/// (which decide the point types) are linear forms a cos + b sin; a basis with a singular matrix
+/// gives the consistency forms u^T q (u in the left null space). A sign or type can change only
+/// where such a form vanishes: theta0 and theta0 + pi. All zeros are collected, sorted and
+/// deduplicated; the rate problem is summarised (summarize_rate_problem) at every candidate and
+/// at the midpoint (and quarter points, as a check) of every arc between candidates. A candidate
+/// is critical when its solution set or the sets of the arcs on either side differ; the other
+/// candidates are dropped and their arcs merged.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
+#include "cpkit/rate_problem/system/system_rate.hpp"
+
+namespace cpkit::rate {
+
+/// Same count and same type tuples (the `reliable` flag is not compared).
+bool same_solution_set(const SystemRateSummary& a, const SystemRateSummary& b) noexcept;
+
+/// An open sector (theta_from, theta_to) of directions, conventions as DirectionSector.
+struct SystemDirectionSector {
+  double theta_from = 0, theta_to = 0;
+  SystemRateSummary summary;  ///< at the midpoint
+  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
+};
+
+/// A critical direction: the solution set there differs from an adjacent sector.
+struct SystemCriticalDirection {
+  double theta = 0;
+  Eigen::VectorXd dF;  ///< cos(theta) e1 + sin(theta) e2
+  SystemRateSummary summary;
+};
+
+struct SystemDirectionMap {
+  Eigen::VectorXd e1, e2;                         ///< the patterns used
+  std::vector<SystemDirectionSector> sectors;     ///< sorted by theta_from
+  std::vector<SystemCriticalDirection> critical;  ///< sorted by theta
+  int candidates = 0;            ///< distinct zeros of the linear forms
+  int evaluations = 0;           ///< rate problems summarised
+  int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
+  int unreliable = 0;            ///< evaluations flagged unreliable (SystemRateSummary)
+};
+
+/// Largest Schur-complement LCP (3 per point in state b, 1 per point in state d) whose 2^m
+/// complementary bases the map scans.
+inline constexpr int kMaxSystemMapLcp = 12;
+
+/// Computes the direction map. options.method must be kEnumerate (theta_from/theta_to and
+/// threads are not used). Throws InputError for an invalid system or options, patterns that are
+/// linearly dependent (the directions would not sweep a plane), or an LCP larger than
+/// kMaxSystemMapLcp.
+SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
+                                                const MapOptions& options = {});
+
+}  // namespace cpkit::rate

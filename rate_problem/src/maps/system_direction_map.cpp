@@ -1,0 +1,199 @@
+// N-point direction map: exact critical directions from the linear forms of every basis
+// (docs/maps.md, "N points").
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::rate {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kPi = 3.14159265358979323846264338327950;
+// A form whose coefficients are below this fraction of the largest coefficient of its family is
+// identically zero (round-off of an exact zero); relative, so the units of A do not matter.
+constexpr double kZeroForm = 1e-12;
+// Two zeros closer than this (rad) are the same direction.
+constexpr double kSameAngle = 1e-10;
+
+using Mat2 = Eigen::Matrix<double, Eigen::Dynamic, 2>;
+
+/// Adds theta0 and theta0 + pi for every row (a, b) of F that is not identically zero.
+void add_zeros(const Mat2& F, double scale, std::vector<double>& out) {
+  for (int r = 0; r < F.rows(); ++r) {
+    const double a = F(r, 0), b = F(r, 1);
+    if (std::hypot(a, b) <= kZeroForm * scale) continue;
+    double t = std::atan2(-a, b);  // a cos t + b sin t = 0
+    if (t < 0) t += kPi;
+    if (t >= kPi) t -= kPi;
+    out.push_back(t);
+    out.push_back(t + kPi);
+  }
+}
+
+double max_abs(const Mat2& F) { return F.size() == 0 ? 0.0 : F.cwiseAbs().maxCoeff(); }
+
+/// All zeros of all forms, sorted and deduplicated, in [0, 2 pi).
+std::vector<double> candidate_angles(const SystemRatePrecomputed& pre, const Mat2& E) {
+  const int m = pre.m;
+  std::vector<double> zeros;
+  const Mat2 Q = pre.Q * E;     // q = Q (cos, sin)^T
+  const Mat2 base = pre.Pf * E; // physical rates at z = 0
+  const double qs = std::max(max_abs(Q), 1e-300);
+  const double ps = std::max(max_abs(base), 1e-300);
+  add_zeros(base, ps, zeros);
+  add_zeros(Q, qs, zeros);  // the empty basis: w = q
+  for (std::uint32_t S = 1; S < (1u << m); ++S) {
+    std::vector<int> in, out;
+    for (int i = 0; i < m; ++i) ((S >> i) & 1u ? in : out).push_back(i);
+    const int k = static_cast<int>(in.size());
+    Eigen::MatrixXd Mss(k, k), Mns(m - k, k), Pz(pre.Pz.rows(), k);
+    Mat2 qs_(k, 2), qn(m - k, 2);
+    for (int a = 0; a < k; ++a) {
+      qs_.row(a) = Q.row(in[a]);
+      Pz.col(a) = pre.Pz.col(in[a]);
+      for (int b = 0; b < k; ++b) Mss(a, b) = pre.M(in[a], in[b]);
+      for (int b = 0; b < m - k; ++b) Mns(b, a) = pre.M(out[b], in[a]);
+    }
+    for (int b = 0; b < m - k; ++b) qn.row(b) = Q.row(out[b]);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(Mss);
+    if (lu.isInvertible()) {
+      const Mat2 Z = lu.solve(-Eigen::MatrixXd(qs_));
+      add_zeros(Z, std::max(max_abs(Z), 1e-300), zeros);
+      const Mat2 W = Mns * Z + qn;
+      add_zeros(W, std::max({max_abs(Mns * Z), max_abs(qn), 1e-300}), zeros);
+      const Mat2 P = base + Pz * Z;
+      add_zeros(P, std::max({max_abs(Pz * Z), ps}), zeros);
+    } else {
+      // Solutions exist only where q_S is in the range of M_SS: u^T q_S = 0 for u in the left
+      // null space.
+      const Eigen::FullPivLU<Eigen::MatrixXd> lut(Mss.transpose());
+      const Eigen::MatrixXd U = lut.kernel();
+      const Mat2 C = U.transpose() * qs_;
+      add_zeros(C, std::max(max_abs(qs_), 1e-300), zeros);
+    }
+  }
+  std::sort(zeros.begin(), zeros.end());
+  std::vector<double> out;
+  for (double t : zeros) {
+    if (t >= kTwoPi) t -= kTwoPi;
+    if (out.empty() || t - out.back() > kSameAngle) out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  if (out.size() > 1 && out.front() + kTwoPi - out.back() <= kSameAngle) out.pop_back();
+  return out;
+}
+
+struct Arc {
+  double from = 0, to = 0;
+  SystemRateSummary summary;
+  bool consistent = true;
+};
+}  // namespace
+
+bool same_solution_set(const SystemRateSummary& a, const SystemRateSummary& b) noexcept {
+  if (a.count != b.count || a.n_tuples != b.n_tuples) return false;
+  const int n = std::min(a.n_tuples, SystemRateSummary::kCap);
+  for (int i = 0; i < n; ++i)
+    if (a.tuples[static_cast<std::size_t>(i)] != b.tuples[static_cast<std::size_t>(i)]) return false;
+  return true;
+}
+
+SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
+                                                const MapOptions& options) {
+  throw_if_invalid(system.validate(), "system");
+  throw_if_invalid(options.validate(), "map options");
+  if (options.method != RateMethod::kEnumerate)
+    throw InputError("map options: the N-point direction map uses the enumeration route only");
+  const int N = system.n_points();
+  SystemDirectionMap map;
+  if (system.pattern1) {
+    map.e1 = *system.pattern1;
+    map.e2 = *system.pattern2;
+  } else {
+    map.e1 = Eigen::VectorXd::Zero(2 * N);
+    map.e2 = Eigen::VectorXd::Zero(2 * N);
+    for (int i = 0; i < N; ++i) {
+      map.e1(2 * i) = 1;
+      map.e2(2 * i + 1) = 1;
+    }
+  }
+  Mat2 E(2 * N, 2);
+  E.col(0) = map.e1;
+  E.col(1) = map.e2;
+  if (Eigen::FullPivLU<Eigen::MatrixXd>(E).rank() < 2)
+    throw InputError("patterns: e1 and e2 are parallel (or zero); dF(theta) = cos(theta) e1 + "
+                     "sin(theta) e2 needs two independent load patterns");
+  const SystemRatePrecomputed pre = precompute_system_rate(system);
+  if (pre.m > kMaxSystemMapLcp)
+    throw InputError("system: the rate LCP has size " + std::to_string(pre.m) +
+                     " (3 per point in state b, 1 per point in state d); the direction map scans "
+                     "all its 2^m bases and accepts at most " + std::to_string(kMaxSystemMapLcp));
+
+  auto load = [&](double t) -> Eigen::VectorXd { return std::cos(t) * map.e1 + std::sin(t) * map.e2; };
+  auto eval = [&](double t) {
+    const SystemRateSummary s = summarize_rate_problem(pre, load(t));
+    ++map.evaluations;
+    if (!s.reliable) ++map.unreliable;
+    return s;
+  };
+
+  const std::vector<double> cand = candidate_angles(pre, E);
+  const std::size_t m = cand.size();
+  map.candidates = static_cast<int>(m);
+  std::vector<Arc> arcs(m == 0 ? 1 : m);
+  for (std::size_t i = 0; i < arcs.size(); ++i) {
+    Arc& a = arcs[i];
+    a.from = m == 0 ? 0 : cand[i];
+    a.to = m == 0 ? kTwoPi : (i + 1 < m ? cand[i + 1] : cand[0] + kTwoPi);
+    const double w = a.to - a.from;
+    a.summary = eval(a.from + 0.5 * w);
+    a.consistent = same_solution_set(eval(a.from + 0.25 * w), a.summary) &&
+                   same_solution_set(eval(a.from + 0.75 * w), a.summary);
+    if (!a.consistent) ++map.inconsistent_sectors;
+  }
+  std::vector<SystemCriticalDirection> at(m);
+  std::vector<std::size_t> crit;
+  for (std::size_t i = 0; i < m; ++i) {
+    at[i].theta = cand[i];
+    at[i].dF = load(cand[i]);
+    at[i].summary = eval(cand[i]);
+    const Arc& before = arcs[(i + m - 1) % m];
+    const Arc& after = arcs[i];
+    if (!same_solution_set(at[i].summary, before.summary) ||
+        !same_solution_set(at[i].summary, after.summary) ||
+        !same_solution_set(before.summary, after.summary))
+      crit.push_back(i);
+  }
+  if (crit.empty()) {
+    SystemDirectionSector s;
+    s.theta_from = 0;
+    s.theta_to = kTwoPi;
+    s.summary = arcs[0].summary;
+    for (const Arc& a : arcs) s.consistent = s.consistent && a.consistent;
+    map.sectors.push_back(s);
+    return map;
+  }
+  for (std::size_t k = 0; k < crit.size(); ++k) {
+    const std::size_t i0 = crit[k], i1 = crit[(k + 1) % crit.size()];
+    SystemDirectionSector s;
+    s.theta_from = cand[i0];
+    s.theta_to = cand[i1];
+    if (s.theta_to <= s.theta_from) s.theta_to += kTwoPi;
+    s.summary = arcs[i0].summary;
+    for (std::size_t i = i0;; i = (i + 1) % m) {  // arcs merged into this sector
+      s.consistent = s.consistent && arcs[i].consistent;
+      if ((i + 1) % m == i1) break;
+    }
+    map.sectors.push_back(s);
+    map.critical.push_back(at[i0]);
+  }
+  return map;
+}
+
+}  // namespace cpkit::rate

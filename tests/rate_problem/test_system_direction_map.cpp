@@ -1,0 +1,220 @@
+// The N-point direction map against independent answers: N = 1 against the one-point direction
+// map, dense sampling of the rate problem against the sectors, block-diagonal A against the
+// product of one-point counts, bad input.
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/system/system_rate.hpp"
+
+using namespace cpkit::rate;
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+SystemPoint random_point(std::mt19937& rng, StateLabel label) {
+  std::uniform_real_distribution<double> U(0, 1);
+  SystemPoint p;
+  p.mu = 0.1 + 3 * U(rng);
+  p.C_T = U(rng) < 0.3 ? 0.0 : U(rng);
+  p.k_a = U(rng) < 0.3 ? 0.0 : U(rng);
+  p.P_s = 0.5 + U(rng);
+  p.state.label = label;
+  if (label == StateLabel::kC || label == StateLabel::kD) p.state.P_N = 0.2 + 2 * U(rng);
+  if (label == StateLabel::kD) p.state.sgn_PT = U(rng) < 0.5 ? 1 : -1;
+  p.P_N = p.state.P_N;
+  p.P_T = label == StateLabel::kD ? p.state.sgn_PT * p.mu * p.P_N : 0.0;
+  if (label == StateLabel::kA) p.g = -1;
+  return p;
+}
+
+Eigen::MatrixXd random_spd(std::mt19937& rng, int n) {
+  std::normal_distribution<double> G(0, 1);
+  Eigen::MatrixXd B(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) B(i, j) = G(rng);
+  return B * B.transpose() + 0.2 * Eigen::MatrixXd::Identity(n, n);
+}
+
+StateLabel random_label(std::mt19937& rng) {
+  return static_cast<StateLabel>(std::uniform_int_distribution<int>(0, 3)(rng));
+}
+
+/// One-point RateSummary types bitmask of an N = 1 tuple list.
+unsigned type_mask(const SystemRateSummary& s) {
+  unsigned m = 0;
+  for (int i = 0; i < s.n_tuples; ++i) m |= 1u << static_cast<unsigned>(s.tuples[static_cast<std::size_t>(i)]);
+  return m;
+}
+
+/// The sector containing theta (reduced to the map's range), or nullptr on a boundary.
+const SystemDirectionSector* sector_at(const SystemDirectionMap& map, double theta) {
+  for (const auto& s : map.sectors)
+    for (double t : {theta, theta + kTwoPi})
+      if (t > s.theta_from && t < s.theta_to) return &s;
+  return nullptr;
+}
+
+double angle_distance(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), kTwoPi);
+  return std::min(d, kTwoPi - d);
+}
+
+}  // namespace
+
+TEST_CASE("system direction map: N = 1 equals the one-point direction map", "[rate][maps][system]") {
+  std::mt19937 rng(7);
+  int compared = 0, with_critical = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    ContactSystem S;
+    S.points = {random_point(rng, random_label(rng))};
+    S.A = random_spd(rng, 2);
+    if (!S.validate().empty()) continue;
+    const DirectionMap one = compute_direction_map(S.point_parameters(0), S.points[0].state);
+    const SystemDirectionMap sys = compute_system_direction_map(S);
+    CAPTURE(trial, S.A, to_string(S.points[0].state.label), S.points[0].mu, S.points[0].C_T,
+            S.points[0].k_a);
+    REQUIRE(sys.critical.size() == one.critical.size());
+    REQUIRE(sys.sectors.size() == one.sectors.size());
+    for (std::size_t i = 0; i < one.critical.size(); ++i) {
+      CHECK(angle_distance(sys.critical[i].theta, one.critical[i].theta) < 1e-8);
+      CHECK(sys.critical[i].summary.count == one.critical[i].summary.count);
+      CHECK(type_mask(sys.critical[i].summary) == one.critical[i].summary.types);
+    }
+    for (std::size_t i = 0; i < one.sectors.size(); ++i) {
+      CHECK(sys.sectors[i].summary.count == one.sectors[i].summary.count);
+      CHECK(type_mask(sys.sectors[i].summary) == one.sectors[i].summary.types);
+    }
+    ++compared;
+    with_critical += one.critical.empty() ? 0 : 1;
+  }
+  CHECK(compared > 300);
+  CHECK(with_critical > 100);
+}
+
+TEST_CASE("system direction map: dense sampling agrees with the sectors", "[rate][maps][system]") {
+  std::mt19937 rng(21);
+  std::normal_distribution<double> G(0, 1);
+  int maps = 0, counts_seen_nonunique = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int N = 2 + trial % 2;
+    ContactSystem S;
+    for (int i = 0; i < N; ++i) S.points.push_back(random_point(rng, random_label(rng)));
+    S.A = random_spd(rng, 2 * N);
+    Eigen::VectorXd e1(2 * N), e2(2 * N);
+    for (int i = 0; i < 2 * N; ++i) { e1(i) = G(rng); e2(i) = G(rng); }
+    S.pattern1 = e1;
+    S.pattern2 = e2;
+    if (!S.validate().empty()) continue;
+    const SystemDirectionMap map = compute_system_direction_map(S);
+    const SystemRatePrecomputed pre = precompute_system_rate(S);
+    CAPTURE(trial, S.A, e1, e2, map.critical.size());
+    constexpr int kSamples = 1500;
+    const SystemDirectionSector* prev = nullptr;
+    SystemRateSummary prev_s;
+    double prev_t = 0;
+    for (int k = 0; k < kSamples; ++k) {
+      const double t = (k + 0.37) * kTwoPi / kSamples;
+      bool near_critical = false;
+      for (const auto& c : map.critical) near_critical = near_critical || angle_distance(c.theta, t) < 1e-7;
+      const SystemRateSummary s = summarize_rate_problem(pre, std::cos(t) * e1 + std::sin(t) * e2);
+      if (!near_critical && s.reliable) {
+        const SystemDirectionSector* sec = sector_at(map, t);
+        REQUIRE(sec != nullptr);
+        CAPTURE(t, sec->theta_from, sec->theta_to);
+        CHECK(same_solution_set(s, sec->summary));
+        if (s.count > 1 || s.count < 0) ++counts_seen_nonunique;
+        (void)prev;
+        prev = sec;
+      }
+      if (k > 0 && !same_solution_set(s, prev_s)) {  // a change brackets a critical direction
+        bool bracketed = false;
+        for (const auto& c : map.critical)
+          for (double ct : {c.theta, c.theta + kTwoPi})
+            bracketed = bracketed || (ct >= prev_t - 1e-9 && ct <= t + 1e-9);
+        CHECK(bracketed);
+      }
+      prev_s = s;
+      prev_t = t;
+    }
+    ++maps;
+  }
+  CHECK(maps > 40);
+  CHECK(counts_seen_nonunique > 0);
+}
+
+TEST_CASE("system direction map: block-diagonal A multiplies the one-point counts", "[rate][maps][system]") {
+  std::mt19937 rng(5);
+  int checked = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    ContactSystem S;
+    S.points = {random_point(rng, random_label(rng)), random_point(rng, random_label(rng))};
+    S.A = Eigen::MatrixXd::Zero(4, 4);
+    S.A.block(0, 0, 2, 2) = random_spd(rng, 2);
+    S.A.block(2, 2, 2, 2) = random_spd(rng, 2);
+    if (!S.validate().empty()) continue;
+    const SystemDirectionMap map = compute_system_direction_map(S);  // default patterns
+    for (const auto& sec : map.sectors) {
+      const double t = 0.5 * (sec.theta_from + sec.theta_to);
+      const LoadRate l{std::cos(t), std::sin(t)};
+      const int c0 = summarize_rate_problem(S.point_parameters(0), S.points[0].state, l).count;
+      const int c1 = summarize_rate_problem(S.point_parameters(1), S.points[1].state, l).count;
+      const int expected = (c0 == 0 || c1 == 0) ? 0 : ((c0 < 0 || c1 < 0) ? -1 : c0 * c1);
+      CAPTURE(trial, t, c0, c1);
+      CHECK(sec.summary.count == expected);
+      ++checked;
+    }
+    // a one-point critical direction is critical for the pair unless the other point has no
+    // solution around it (then the pair has none on either side)
+    for (int i = 0; i < 2; ++i) {
+      const DirectionMap one = compute_direction_map(S.point_parameters(i), S.points[static_cast<std::size_t>(i)].state);
+      const int o = 1 - i;
+      for (const auto& c : one.critical) {
+        bool other_solvable = true;
+        for (double d : {-1e-6, 0.0, 1e-6}) {
+          const LoadRate l{std::cos(c.theta + d), std::sin(c.theta + d)};
+          other_solvable = other_solvable &&
+              summarize_rate_problem(S.point_parameters(o), S.points[static_cast<std::size_t>(o)].state, l).count != 0;
+        }
+        if (!other_solvable) continue;
+        bool found = false;
+        for (const auto& d : map.critical) found = found || angle_distance(c.theta, d.theta) < 1e-8;
+        CHECK(found);
+      }
+    }
+  }
+  CHECK(checked > 100);
+}
+
+TEST_CASE("system direction map: bad input", "[rate][maps][system]") {
+  ContactSystem S;
+  SystemPoint p;
+  p.state.label = StateLabel::kB;
+  S.points = {p, p};
+  S.A = Eigen::MatrixXd::Identity(4, 4);
+  Eigen::VectorXd e(4);
+  e << 1, 0, 1, 0;
+  S.pattern1 = e;
+  S.pattern2 = 2 * e;
+  CHECK_THROWS_WITH(compute_system_direction_map(S), Catch::Contains("parallel"));
+  S.pattern2 = Eigen::VectorXd::Zero(4);
+  CHECK_THROWS_AS(compute_system_direction_map(S), cpkit::InputError);
+  S.pattern1.reset();
+  S.pattern2.reset();
+  MapOptions o;
+  o.method = RateMethod::kAnalytic;
+  CHECK_THROWS_WITH(compute_system_direction_map(S, o), Catch::Contains("enumeration"));
+  S.A(0, 1) = 5;  // not symmetric
+  CHECK_THROWS_AS(compute_system_direction_map(S), cpkit::InputError);
+  // six points in state b: LCP of size 18 > kMaxSystemMapLcp
+  ContactSystem big;
+  big.points.assign(6, p);
+  big.A = Eigen::MatrixXd::Identity(12, 12);
+  CHECK_THROWS_WITH(compute_system_direction_map(big), Catch::Contains("at most"));
+}
