@@ -99,7 +99,7 @@ TEST_CASE("cpkit map --system: bad input exits 2 naming the option", "[cli][map]
 TEST_CASE("maps.md's sample outputs of the N-point maps are what cpkit prints", "[cli][map][system][docs]") {
   std::ifstream f(std::string(CPKIT_SOURCE_DIR) + "/docs/maps.md");
   const std::string md((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  for (const std::string example : {"two_point_system", "three_point_punch"}) {
+  for (const std::string example : {"two_point_system", "three_point_punch_sliding"}) {
     const std::string rel = "docs/examples/" + example + ".json";
     const std::string head = "cpkit map --system " + rel + "\n```\n```\n";
     const auto b = md.find(head);
