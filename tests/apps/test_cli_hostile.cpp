@@ -115,13 +115,15 @@ TEST_CASE("sizes that pass one by one but not together are refused before alloca
   // Invalid parameters are reported first, even with a huge load.
   expect_bad_input("simulate --a11 1 --a12 0.3 --a22 1 --mu -1 --cycles 1e9 --steps-per-cycle 1e9",
                    "mu");
-  // 1e5 x 1e6 cells = 1e11 cells (3 bytes each).
+  // 1e5 x 1e6 cells = 1e11 cells: refused by the time estimate. --time-limit 60 keeps the
+  // refusal independent of the machine's load (1e11 cells in 60 s would be 1.7e9 cells/s),
+  // where the default 600 s depends on how fast the timed sample happened to run.
   expect_bad_input("map --kind param-direction --state b " + kModelMuAxis +
-                       "--param mu --from 0.1 --to 1 --n 100000 --theta-n 1000000",
+                       "--param mu --from 0.1 --to 1 --n 100000 --theta-n 1000000 --time-limit 60",
                    "would need about");
   expect_bad_input("map --kind param-param --state b " + kModelMuAxis +
                        "--param mu --from 0.1 --to 1 --n 100000 --param2 C_T --from2 0 --to2 0.5 "
-                       "--n2 100000",
+                       "--n2 100000 --time-limit 60",
                    "would need about");
 }
 
