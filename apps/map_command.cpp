@@ -1,6 +1,7 @@
 // `cpkit map`: non-existence and non-uniqueness maps of the rate problem (docs/maps.md).
 // Thin: parse, call the library (cpkit/rate_problem/{direction_map,grid_map,map_output}.hpp),
 // write CSV/JSON, run the plotting script.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "map_system.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
@@ -32,9 +34,6 @@
 
 namespace cpkit::cli {
 
-/// `cpkit map --system FILE` (map_system.cpp).
-int run_map_system(const std::string& path, const std::string& kind, const std::string& out,
-                   bool json);
 
 namespace {
 
@@ -526,14 +525,36 @@ int run_map(const MapArgs& a) {
     return kExitOk;
   }
   if (a.given("--system")) {
+    const std::string kind = a.given("--kind") ? a.kind : "direction";
+    std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json"};
+    if (kind == "param-direction")
+      for (const char* o : {"--param", "--from", "--to", "--n", "--theta-n", "--threads"})
+        allowed.push_back(o);
+    std::string list;
+    for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
     for (const auto& [name, o] : a.opt)
-      if (o->count() > 0 && name != "--system" && name != "--kind" && name != "--out" &&
-          name != "--json")
-        throw InputError(name + " does not apply with --system (the state, parameters and load "
-                         "patterns come from the system file; options: --kind direction, --out, "
-                         "--json)");
+      if (o->count() > 0 && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+        throw InputError(name + " does not apply with --system --kind " + kind +
+                         " (the state, parameters and load patterns come from the system file; "
+                         "options: " + list + ")");
     if (a.plot) throw InputError("--plot does not apply with --system");
-    return run_map_system(a.system, a.given("--kind") ? a.kind : "direction", a.out, a.json);
+    SystemMapRequest r;
+    r.path = a.system;
+    r.kind = kind;
+    r.out = a.out;
+    r.json = a.json;
+    if (kind == "param-direction") {
+      for (const char* o : {"--param", "--from", "--to"})
+        if (!a.given(o))
+          throw InputError(std::string("--system --kind param-direction needs ") + o);
+      r.param = a.param;
+      r.from = a.from;
+      r.to = a.to;
+      if (a.given("--n")) r.n = a.n;
+      if (a.given("--theta-n")) r.theta_n = a.theta_n;
+      r.threads = a.threads;
+    }
+    return run_map_system(r);
   }
   const MapSetup s = build_setup(a);
   MapOptions options;

@@ -11,11 +11,14 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "map_system.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
 
 namespace cpkit::cli {
+
 namespace {
 
 using namespace cpkit::rate;
@@ -41,13 +44,94 @@ std::string count_text(int count) {
   return std::to_string(count) + (count == 1 ? " solution" : " solutions");
 }
 
+std::vector<std::string> pattern_names(const std::vector<TypeTuple>& tuples, int n_points) {
+  std::vector<std::string> out;
+  for (TypeTuple t : tuples) out.push_back(types_string(decode_types(t, n_points)));
+  return out;
+}
+
+/// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
+int run_param_direction(const SystemMapRequest& r) {
+  const ContactSystem sys = read_contact_system(r.path);
+  const int N = sys.n_points();
+  const SystemMapParameter param = parse_system_map_parameter(r.param, N);
+  const SystemParamDirectionMap m =
+      compute_system_param_direction_map(sys, param, r.from, r.to, r.n, r.theta_n, r.threads);
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(sys, e1, e2);
+  const bool complete = m.unreliable == 0;
+  nlohmann::json counts = nlohmann::json::array(), patterns = nlohmann::json::array();
+  for (const auto& c : m.classes)
+    counts.push_back({{"count", count_to_json(c.code)}, {"cells", c.cells},
+                      {"param_min", c.x_min}, {"param_max", c.x_max},
+                      {"theta_min", c.y_min}, {"theta_max", c.y_max}});
+  for (std::size_t k = 0; k < m.patterns.size(); ++k)
+    patterns.push_back({{"id", k}, {"types", pattern_names(m.patterns[k], N)},
+                        {"cells", m.pattern_cells[k]}});
+  nlohmann::json j = {{"cpkit_version", CPKIT_VERSION},
+                      {"kind", "param-direction"},
+                      {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
+                                 {"param", param.name()}, {"from", r.from}, {"to", r.to},
+                                 {"n", r.n}, {"theta_n", r.theta_n},
+                                 {"patterns", {as_list(e1), as_list(e2)}}}},
+                      {"cells", m.cells()},
+                      {"counts", counts},
+                      {"patterns", patterns},
+                      {"lcp_size_max", m.m_max},
+                      {"unreliable", m.unreliable},
+                      {"complete", complete},
+                      {"threads", m.threads},
+                      {"seconds", m.seconds}};
+  if (!complete)
+    std::cerr << "cpkit map: " << m.unreliable
+              << " cells too close to call: the map is not proved complete\n";
+  if (!r.out.empty()) {
+    std::ofstream f(r.out + ".csv");
+    if (!f) throw InputError("--out: cannot write '" + r.out + ".csv'");
+    f << std::setprecision(17) << param.name() << ",theta,count,pattern\n";
+    for (int i = 0; i < m.n; ++i)
+      for (int jj = 0; jj < m.theta_n; ++jj) {
+        const std::size_t k = static_cast<std::size_t>(i) * m.theta_n + jj;
+        f << m.value(i) << ',' << m.theta[jj] << ',' << count_to_string(m.count[k]) << ','
+          << m.pattern[k] << '\n';
+      }
+    if (!f) throw InputError("--out: writing '" + r.out + ".csv' failed");
+    j["files"] = {{"csv", r.out + ".csv"}, {"json", r.out + ".json"}};
+    std::ofstream fj(r.out + ".json");
+    if (!fj) throw InputError("--out: cannot write '" + r.out + ".json'");
+    nlohmann::json jj = j;
+    jj["run"] = run_echo();
+    fj << json_text(jj) << "\n";
+  }
+  if (r.json) {
+    print_json(j);
+  } else {
+    std::cout << "param-direction map of " << N << " points (" << r.path << "): " << param.name()
+              << " in [" << r.from << ", " << r.to << "] (" << r.n << " values) x " << r.theta_n
+              << " directions, " << m.cells() << " cells\ncounts:\n";
+    for (const auto& c : m.classes)
+      std::cout << "  " << count_text(c.code) << ": " << c.cells << " cells, " << param.name()
+                << " in [" << c.x_min << ", " << c.x_max << "]\n";
+    std::cout << "point-type patterns:\n";
+    for (std::size_t k = 0; k < m.patterns.size(); ++k)
+      std::cout << "  " << k << ": "
+                << (m.patterns[k].empty() ? std::string("(no solution)")
+                                          : joined(pattern_names(m.patterns[k], N), ", "))
+                << " (" << m.pattern_cells[k] << " cells)\n";
+  }
+  return complete ? kExitOk : kExitInconclusive;
+}
+
 }  // namespace
 
-int run_map_system(const std::string& path, const std::string& kind, const std::string& out,
-                   bool json) {
-  if (kind != "direction")
-    throw InputError("--kind with --system must be direction (param-direction and param-param "
-                     "maps of N points are not implemented yet), got '" + kind + "'");
+int run_map_system(const SystemMapRequest& r) {
+  if (r.kind == "param-direction") return run_param_direction(r);
+  if (r.kind != "direction")
+    throw InputError("--kind with --system must be direction or param-direction (param-param "
+                     "maps of N points are not implemented yet), got '" + r.kind + "'");
+  const std::string& path = r.path;
+  const std::string& out = r.out;
+  const bool json = r.json;
   const ContactSystem sys = read_contact_system(path);
   const int N = sys.n_points();
   const SystemDirectionMap m = compute_system_direction_map(sys);

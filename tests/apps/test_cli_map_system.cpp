@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -116,5 +117,53 @@ TEST_CASE("maps.md's sample outputs of the N-point maps are what cpkit prints", 
     REQUIRE(at != std::string::npos);
     out.replace(at, file.size(), rel);
     CHECK(out == sample);
+  }
+}
+
+TEST_CASE("cpkit map --system --kind param-direction: one-point product at coupling 0, options",
+          "[cli][map][system]") {
+  // Fig. 5b point (one-point map known: 3 solutions on a sector) uncoupled from a stick point:
+  // every cell's count is the one-point count, and the coupling row 0 equals row 1 (A has no
+  // coupling here).
+  const std::string f = write_system("map_pd.json", kSystem);
+  const auto r = cpkit::test::run_cpkit("map --system " + f +
+                                        " --kind param-direction --param mu@1 --from 1 --to 1.5"
+                                        " --n 2 --theta-n 36 --json --threads 2");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.contains("run"));
+  CHECK(j["complete"] == true);
+  CHECK(j["cells"] == 72);
+  CHECK(j["input"]["param"] == "mu@1");
+  // The one-point maps at mu = 1 and 1.5 over the same 36 directions, through the one-point CLI.
+  std::map<int, long> expect;
+  for (const char* mu : {"1", "1.5"}) {
+    const auto one = cpkit::test::run_cpkit(std::string("map --a11 1 --a12 2 --a22 5 --mu ") + mu +
+                                            " --state b --kind param-direction --param C_T "
+                                            "--from 0 --to 0 --n 1 --theta-n 36 --json");
+    INFO(one.err);
+    REQUIRE(one.code == 0);
+    const auto k = nlohmann::json::parse(one.out);
+    for (const auto& c : k["classes"])
+      expect[c["count"].get<int>()] += c["cells"].get<long>();
+  }
+  std::map<int, long> got;
+  for (const auto& c : j["counts"]) got[c["count"].get<int>()] += c["cells"].get<long>();
+  CHECK(got == expect);
+  // every pattern's second point sticks (state c, uncoupled)
+  for (const auto& p : j["patterns"])
+    for (const auto& t : p["types"]) CHECK(t.get<std::string>().find("/stick") != std::string::npos);
+
+  for (const char* bad : {" --kind param-direction --param mu@3 --from 1 --to 2",
+                          " --kind param-direction --param a11 --from 1 --to 2",
+                          " --kind param-direction --param mu --from 1 --to 2 --param2 C_T",
+                          " --kind param-direction --from 1 --to 2",
+                          " --kind param-param --param mu --from 1 --to 2",
+                          " --kind direction --param mu"}) {
+    const auto e = cpkit::test::run_cpkit("map --system " + f + bad);
+    INFO(bad << ": " << e.err);
+    CHECK(e.code == 2);
+    CHECK(!e.err.empty());
   }
 }

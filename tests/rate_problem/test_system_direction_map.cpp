@@ -12,39 +12,17 @@
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 
+#include "system_test_util.hpp"
+
 using namespace cpkit::rate;
 
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-SystemPoint random_point(std::mt19937& rng, StateLabel label) {
-  std::uniform_real_distribution<double> U(0, 1);
-  SystemPoint p;
-  p.mu = 0.1 + 3 * U(rng);
-  p.C_T = U(rng) < 0.3 ? 0.0 : U(rng);
-  p.k_a = U(rng) < 0.3 ? 0.0 : U(rng);
-  p.P_s = 0.5 + U(rng);
-  p.state.label = label;
-  if (label == StateLabel::kC || label == StateLabel::kD) p.state.P_N = 0.2 + 2 * U(rng);
-  if (label == StateLabel::kD) p.state.sgn_PT = U(rng) < 0.5 ? 1 : -1;
-  p.P_N = p.state.P_N;
-  p.P_T = label == StateLabel::kD ? p.state.sgn_PT * p.mu * p.P_N : 0.0;
-  if (label == StateLabel::kA) p.g = -1;
-  return p;
-}
-
-Eigen::MatrixXd random_spd(std::mt19937& rng, int n) {
-  std::normal_distribution<double> G(0, 1);
-  Eigen::MatrixXd B(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) B(i, j) = G(rng);
-  return B * B.transpose() + 0.2 * Eigen::MatrixXd::Identity(n, n);
-}
-
-StateLabel random_label(std::mt19937& rng) {
-  return static_cast<StateLabel>(std::uniform_int_distribution<int>(0, 3)(rng));
-}
+using cpkit::test::random_label;
+using cpkit::test::random_point;
+using cpkit::test::random_spd;
 
 /// One-point RateSummary types bitmask of an N = 1 tuple list.
 unsigned type_mask(const SystemRateSummary& s) {

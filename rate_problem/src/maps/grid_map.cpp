@@ -13,6 +13,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
+#include "run_items.hpp"
 
 namespace cpkit::rate {
 
@@ -30,62 +31,6 @@ constexpr ParamName kParamNames[] = {
     {MapParameter::kKa, "k_a"},    {MapParameter::kPs, "P_s"},
     {MapParameter::kPN, "P_N"},    {MapParameter::kKappa, "kappa"},
 };
-
-int resolve_threads(int requested, int64_t work_items) {
-  int t = requested;
-  if (t <= 0) t = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  if (work_items < t) t = static_cast<int>(std::max<int64_t>(1, work_items));
-  return t;
-}
-
-/// Runs fn(i) for every i in [begin, end) on `threads` workers (items handed out one at a time).
-/// Results must be stored by index by fn, so the outcome does not depend on the thread count.
-/// The calling thread calls report(items done) about every 0.1 s. The first exception of a
-/// worker is rethrown.
-template <class ItemFn, class Report>
-void run_items(int begin, int end, int threads, ItemFn&& fn, Report&& report) {
-  std::atomic<int> next{begin}, done{0};
-  std::mutex mutex;
-  std::condition_variable cv;
-  threads = std::max(1, std::min(threads, end - begin));
-  int active = threads;
-  std::exception_ptr error;
-  auto worker = [&] {
-    try {
-      for (;;) {
-        const int i = next.fetch_add(1);
-        if (i >= end) break;
-        fn(i);
-        done.fetch_add(1);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!error) error = std::current_exception();
-      next.store(end);
-    }
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      --active;
-    }
-    cv.notify_all();
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  {
-    std::unique_lock<std::mutex> lock(mutex);
-    while (active > 0) {
-      cv.wait_for(lock, std::chrono::milliseconds(100));
-      if (active > 0) {
-        lock.unlock();
-        report(done.load());
-        lock.lock();
-      }
-    }
-  }
-  for (auto& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
-}
 
 /// Values of the uniqueness criteria (as uniqueness_criteria, without names or allocation).
 int criterion_values(const ContactParameters& p, const ContactState& state, double out[2]) {

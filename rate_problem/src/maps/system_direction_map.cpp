@@ -104,31 +104,38 @@ bool same_solution_set(const SystemRateSummary& a, const SystemRateSummary& b) n
   return true;
 }
 
+void system_map_patterns(const ContactSystem& system, Eigen::VectorXd& e1, Eigen::VectorXd& e2) {
+  const int N = system.n_points();
+  if (system.pattern1) {
+    e1 = *system.pattern1;
+    e2 = *system.pattern2;
+  } else {
+    e1 = Eigen::VectorXd::Zero(2 * N);
+    e2 = Eigen::VectorXd::Zero(2 * N);
+    for (int i = 0; i < N; ++i) {
+      e1(2 * i) = 1;
+      e2(2 * i + 1) = 1;
+    }
+  }
+  Mat2 E(2 * N, 2);
+  E.col(0) = e1;
+  E.col(1) = e2;
+  if (Eigen::FullPivLU<Eigen::MatrixXd>(E).rank() < 2)
+    throw InputError("patterns: e1 and e2 are parallel (or zero); dF(theta) = cos(theta) e1 + "
+                     "sin(theta) e2 needs two independent load patterns");
+}
+
 SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
                                                 const MapOptions& options) {
   throw_if_invalid(system.validate(), "system");
   throw_if_invalid(options.validate(), "map options");
   if (options.method != RateMethod::kEnumerate)
     throw InputError("map options: the N-point direction map uses the enumeration route only");
-  const int N = system.n_points();
   SystemDirectionMap map;
-  if (system.pattern1) {
-    map.e1 = *system.pattern1;
-    map.e2 = *system.pattern2;
-  } else {
-    map.e1 = Eigen::VectorXd::Zero(2 * N);
-    map.e2 = Eigen::VectorXd::Zero(2 * N);
-    for (int i = 0; i < N; ++i) {
-      map.e1(2 * i) = 1;
-      map.e2(2 * i + 1) = 1;
-    }
-  }
-  Mat2 E(2 * N, 2);
+  system_map_patterns(system, map.e1, map.e2);
+  Mat2 E(map.e1.size(), 2);
   E.col(0) = map.e1;
   E.col(1) = map.e2;
-  if (Eigen::FullPivLU<Eigen::MatrixXd>(E).rank() < 2)
-    throw InputError("patterns: e1 and e2 are parallel (or zero); dF(theta) = cos(theta) e1 + "
-                     "sin(theta) e2 needs two independent load patterns");
   const SystemRatePrecomputed pre = precompute_system_rate(system);
   if (pre.m > kMaxSystemMapLcp)
     throw InputError("system: the rate LCP has size " + std::to_string(pre.m) +

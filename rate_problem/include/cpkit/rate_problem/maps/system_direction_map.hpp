@@ -52,6 +52,10 @@ struct SystemDirectionMap {
   int unreliable = 0;            ///< evaluations flagged unreliable (SystemRateSummary)
 };
 
+/// The load patterns of a system's maps: the file's e1, e2, or by default e1 = (1, 0, 1, 0, ...),
+/// e2 = (0, 1, 0, 1, ...). Throws InputError when they are linearly dependent.
+void system_map_patterns(const ContactSystem& system, Eigen::VectorXd& e1, Eigen::VectorXd& e2);
+
 /// Largest Schur-complement LCP (3 per point in state b, 1 per point in state d) whose 2^m
 /// complementary bases the map scans.
 inline constexpr int kMaxSystemMapLcp = 12;
