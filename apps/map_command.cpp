@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "map_files.hpp"
 #include "map_system.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
@@ -39,8 +40,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace cpkit::rate;
-
-constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplotlib is missing
 
 struct MapArgs {
   std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
@@ -271,83 +270,6 @@ std::string model_text(const ContactParameters& p, const ContactState& s,
   return t;
 }
 
-/// Prints "\rcpkit map: cells 40% (1.2 s)" on stderr for every phase once the map has run for
-/// more than a second, and the phase's final line at 100 %.
-MapProgress make_progress() {
-  struct State {
-    Stopwatch clock;
-    std::string phase;
-    bool printed = false;
-    int percent = -1;
-    double last = 0;
-  };
-  auto st = std::make_shared<State>();
-  return [st](std::string_view phase, double f) {
-    if (phase != st->phase) {
-      st->phase = std::string(phase);
-      st->printed = false;
-      st->percent = -1;
-    }
-    const double t = st->clock.seconds();
-    const int percent = static_cast<int>(100 * f);
-    // A new line only when the percentage changed (or every 5 s): short logs when redirected.
-    if (f < 1.0 && t > 1.0 && (percent != st->percent || t > st->last + 5.0)) {
-      st->percent = percent;
-      st->last = t;
-      std::cerr << "\rcpkit map: " << phase << ' ' << std::setw(3) << static_cast<int>(100 * f)
-                << "% (" << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
-                << std::flush;
-      st->printed = true;
-    } else if (f >= 1.0 && st->printed) {
-      std::cerr << "\rcpkit map: " << phase << " 100% (" << std::fixed << std::setprecision(1)
-                << t << " s)" << std::defaultfloat << '\n';
-      st->printed = false;
-    }
-  };
-}
-
-/// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
-/// written either way; the caller then exits 4: a requested plot that fails is a failure).
-/// The script gets an argument vector (run_program): the prefix is data, never shell code.
-bool run_plot(const std::string& prefix, nlohmann::json& files) {
-  std::string searched;
-  const std::string script = find_data_file("cpkit_plot.py", &searched);
-  if (script.empty()) {
-    std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
-              << "); the data is in " << prefix << ".json and the files it lists\n";
-    return false;
-  }
-  const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
-  const std::string cmd = command_text(argv);
-  const ProgramRun pr = run_program(argv, true);
-  const int code = pr.started ? pr.exit_code : -1;
-  if (code == 0) {
-    files["png"] = fs::path(prefix + ".png").filename().string();
-    files["svg"] = fs::path(prefix + ".svg").filename().string();
-    std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
-    return true;
-  }
-  if (code == kPlotNoMatplotlib) {
-    std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
-              << ". The data was written (" << prefix
-              << ".json and the files it lists). To get the picture install matplotlib (Debian: "
-                 "apt-get install python3-matplotlib) and run:\n  "
-              << cmd << '\n';
-  } else {
-    std::cerr << "cpkit map: the plotting script failed ("
-              << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
-              << "); the data was written. Command:\n  " << cmd << '\n';
-  }
-  return false;
-}
-
-void write_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
-  std::ofstream f(path);
-  if (!f) throw InputError("cannot write '" + path + "'");
-  fn(f);
-  if (!f) throw InputError("error writing '" + path + "'");
-}
-
 void print_direction_text(const DirectionMap& m) {
   std::cout << "sectors (theta in rad from +dF_T towards +dF_N; open arcs):\n";
   for (const auto& s : m.sectors)
@@ -526,34 +448,64 @@ int run_map(const MapArgs& a) {
   }
   if (a.given("--system")) {
     const std::string kind = a.given("--kind") ? a.kind : "direction";
-    std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json"};
+    std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
+    std::vector<std::string> needed;
     if (kind == "param-direction")
-      for (const char* o : {"--param", "--from", "--to", "--n", "--theta-n", "--threads"})
-        allowed.push_back(o);
+      needed = {"--param", "--from", "--to"};
+    else if (kind == "param-param")
+      needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
+    else if (kind != "direction")
+      throw InputError("--kind with --system must be direction, param-direction or param-param, "
+                       "got '" + kind + "'");
+    allowed.insert(allowed.end(), needed.begin(), needed.end());
+    if (kind != "direction")
+      for (const char* o : {"--n", "--format", "--time-limit"}) allowed.push_back(o);
+    if (kind == "param-direction")
+      for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
+    if (kind == "param-param") allowed.push_back("--n2");
     std::string list;
     for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
     for (const auto& [name, o] : a.opt)
       if (o->count() > 0 && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
         throw InputError(name + " does not apply with --system --kind " + kind +
                          " (the state, parameters and load patterns come from the system file; "
-                         "options: " + list + ")");
-    if (a.plot) throw InputError("--plot does not apply with --system");
+                         "options: " + list + (kind == "direction" ? "" : ", --plot") + ")");
+    for (const auto& o : needed)
+      if (!a.given(o)) throw InputError("--system --kind " + kind + " needs " + o);
+    if (a.plot && kind == "direction")
+      throw InputError("--plot with --system applies to --kind param-direction and param-param");
+    if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+    if (a.given("--format") && a.out.empty())
+      throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
+    if (a.format != "npy" && a.format != "csv")
+      throw InputError("--format must be npy or csv, got '" + a.format + "'");
+    if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
+      throw InputError("--time-limit must be a positive number of seconds");
+    if (a.threads < 0 || a.threads > 1024)
+      throw InputError("--threads must be in [0, 1024] (0: all cores), got " +
+                       std::to_string(a.threads));
     SystemMapRequest r;
     r.path = a.system;
     r.kind = kind;
     r.out = a.out;
     r.json = a.json;
-    if (kind == "param-direction") {
-      for (const char* o : {"--param", "--from", "--to"})
-        if (!a.given(o))
-          throw InputError(std::string("--system --kind param-direction needs ") + o);
-      r.param = a.param;
-      r.from = a.from;
-      r.to = a.to;
-      if (a.given("--n")) r.n = a.n;
-      if (a.given("--theta-n")) r.theta_n = a.theta_n;
-      r.threads = a.threads;
-    }
+    r.plot = a.plot;
+    r.format = a.format;
+    r.threads = a.threads;
+    r.time_limit = a.time_limit;
+    r.param = a.param;
+    r.from = a.from;
+    r.to = a.to;
+    r.param2 = a.param2;
+    r.from2 = a.from2;
+    r.to2 = a.to2;
+    if (a.given("--n")) r.n = a.n;
+    if (a.given("--n2")) r.n2 = a.n2;
+    if (a.given("--theta-n")) r.theta_n = a.theta_n;
+    r.theta_range = a.given("--theta-from") || a.given("--theta-to");
+    if (a.given("--theta-from")) r.theta_from = a.theta_from;
+    if (a.given("--theta-to")) r.theta_to = a.theta_to;
+    if (!r.out.empty()) prepare_out_prefix(r.out);
     return run_map_system(r);
   }
   const MapSetup s = build_setup(a);
@@ -587,16 +539,7 @@ int run_map(const MapArgs& a) {
   const bool csv = a.format == "csv";
   if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
     throw InputError("--time-limit must be a positive number of seconds");
-  if (!a.out.empty() && fs::path(a.out).filename().empty())
-    throw InputError("--out needs a file prefix such as out/map (got '" + a.out + "')");
-  if (!a.out.empty()) {
-    const fs::path parent = fs::path(a.out).parent_path();
-    if (!parent.empty()) {
-      std::error_code ec;
-      fs::create_directories(parent, ec);
-      if (ec) throw InputError("cannot create the output folder '" + parent.string() + "'");
-    }
-  }
+  if (!a.out.empty()) prepare_out_prefix(a.out);
 
   nlohmann::json j;
   j["kind"] = std::string(to_string(s.kind));
@@ -623,7 +566,7 @@ int run_map(const MapArgs& a) {
       std::cerr << "cpkit map: " << m.inconsistent_sectors
                 << " sectors are not uniform (a missed critical direction?)\n";
     if (!prefix.empty()) {
-      write_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
+      write_text_file(prefix + ".csv", [&](std::ostream& o) { write_csv(m, o); });
       files["csv"] = name + ".csv";
     }
     print_text = [m, &s] {
@@ -650,40 +593,7 @@ int run_map(const MapArgs& a) {
       if (types_to_string(1u << b) != "none") bits[types_to_string(1u << b)] = 1u << b;
     j["type_bits"] = bits;
     const bool cross = options.method != RateMethod::kEnumerate;
-    std::vector<std::unique_ptr<NpyWriter>> npy;  // in the order the sink appends
-    std::ofstream csv_file;
-    auto open_npy = [&](const std::string& key, const char* descr, int64_t rows, int64_t cols) {
-      const std::string file = name + "_" + key + ".npy";
-      npy.push_back(std::make_unique<NpyWriter>(prefix + "_" + key + ".npy", descr,
-                                                std::vector<int64_t>{rows, cols}, 1));
-      files[key] = file;
-    };
-    auto open_csv = [&] {
-      csv_file.open(prefix + ".csv");
-      if (!csv_file) throw InputError("cannot write '" + prefix + ".csv'");
-      files["csv"] = name + ".csv";
-    };
-    auto append = [&](std::initializer_list<const void*> arrays, int64_t cells) {
-      std::size_t k = 0;
-      for (const void* p : arrays)
-        if (p && k < npy.size()) npy[k++]->append(p, cells);
-    };
-    auto finish_files = [&] {
-      for (auto& w : npy) w->finish();
-      if (csv_file.is_open()) {
-        csv_file.close();
-        if (!csv_file) throw InputError("error writing '" + prefix + ".csv' (disk full?)");
-      }
-    };
-    // A map that fails part-way (an invalid parameter row, a full disk) leaves no partial files.
-    auto discard_files = [&] {
-      npy.clear();
-      if (csv_file.is_open()) csv_file.close();
-      for (const auto& [key, file] : files.items()) {
-        std::error_code ec;
-        fs::remove(fs::path(prefix).parent_path() / file.get<std::string>(), ec);
-      }
-    };
+    GridFiles out(prefix, files);
     auto axis_values = [](const MapAxis& ax) {
       std::vector<double> v(static_cast<std::size_t>(ax.n));
       for (int i = 0; i < ax.n; ++i) v[i] = ax.value(i);
@@ -694,34 +604,31 @@ int run_map(const MapArgs& a) {
       const std::vector<double> theta =
           map_theta_values(s.theta_n, options.theta_from, options.theta_to);
       if (!prefix.empty() && !csv) {
-        open_npy("count", "|i1", s.axis.n, s.theta_n);
-        open_npy("types", "|u1", s.axis.n, s.theta_n);
-        if (cross) open_npy("disagree", "|u1", s.axis.n, s.theta_n);
-        write_npy_vector(prefix + "_x.npy", axis_values(s.axis));
-        write_npy_vector(prefix + "_theta.npy", theta);
-        files["x"] = name + "_x.npy";
-        files["theta"] = name + "_theta.npy";
+        out.add_npy("count", "|i1", s.axis.n, s.theta_n);
+        out.add_npy("types", "|u1", s.axis.n, s.theta_n);
+        if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
+        out.write_vector("x", axis_values(s.axis));
+        out.write_vector("theta", theta);
       } else if (!prefix.empty()) {
-        open_csv();
-        write_csv_header(s.axis, cross, csv_file);
+        write_csv_header(s.axis, cross, out.open_csv());
       }
       std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
       ParamDirectionMap m;
       try {
         m = compute_param_direction_map(
-          s.params, s.state, s.axis, s.theta_n, options, make_progress(),
+          s.params, s.state, s.axis, s.theta_n, options, make_map_progress(),
           [&](const ParamDirectionRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.theta_n;
-            append({r.count, r.types, r.disagree}, cells);
-            if (csv_file.is_open()) write_csv_rows(s.axis, theta, r, csv_file);
+            out.append({r.count, r.types, r.disagree}, cells);
+            if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
             for (int64_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
               if (r.disagree[k])
                 shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
                                    static_cast<int>(k % s.theta_n));
           });
-        finish_files();
+        out.finish();
       } catch (...) {
-        discard_files();
+        out.discard();
         throw;
       }
       j.update(to_json(m));
@@ -732,7 +639,7 @@ int run_map(const MapArgs& a) {
         std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
                   << ", theta = " << m.theta[k] << '\n';
       if (!prefix.empty()) {
-        write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+        write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
         files["critical_csv"] = name + "_critical.csv";
       }
       const nlohmann::json summary = j;
@@ -763,33 +670,30 @@ int run_map(const MapArgs& a) {
       };
     } else {
       if (!prefix.empty() && !csv) {
-        open_npy("class", "|u1", s.axis.n, s.axis2.n);
-        open_npy("min_count", "|i1", s.axis.n, s.axis2.n);
-        open_npy("max_count", "|i1", s.axis.n, s.axis2.n);
-        open_npy("types", "|u1", s.axis.n, s.axis2.n);
-        if (cross) open_npy("disagree", "|u1", s.axis.n, s.axis2.n);
-        write_npy_vector(prefix + "_x.npy", axis_values(s.axis));
-        write_npy_vector(prefix + "_y.npy", axis_values(s.axis2));
-        files["x"] = name + "_x.npy";
-        files["y"] = name + "_y.npy";
+        out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
+        out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
+        out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
+        out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
+        if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
+        out.write_vector("x", axis_values(s.axis));
+        out.write_vector("y", axis_values(s.axis2));
         j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
                             {"none-and-several", 3}};
       } else if (!prefix.empty()) {
-        open_csv();
-        write_csv_header(s.axis, s.axis2, cross, csv_file);
+        write_csv_header(s.axis, s.axis2, cross, out.open_csv());
       }
       ParamParamMap m;
       try {
         m = compute_param_param_map(
-          s.params, s.state, s.axis, s.axis2, options, make_progress(),
+          s.params, s.state, s.axis, s.axis2, options, make_map_progress(),
           [&](const ParamParamRows& r) {
             const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.axis2.n;
-            append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
-            if (csv_file.is_open()) write_csv_rows(s.axis, s.axis2, r, csv_file);
+            out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
+            if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
           });
-        finish_files();
+        out.finish();
       } catch (...) {
-        discard_files();
+        out.discard();
         throw;
       }
       j.update(to_json(m));
@@ -797,7 +701,7 @@ int run_map(const MapArgs& a) {
       report_disagreements(m.disagreements, "cells");
       report_unreliable(m.unreliable, "direction-map evaluations");
       if (!prefix.empty()) {
-        write_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+        write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
         files["critical_csv"] = name + "_critical.csv";
       }
       const nlohmann::json summary = j;
@@ -823,11 +727,11 @@ int run_map(const MapArgs& a) {
   if (!prefix.empty()) {
     files["json"] = name + ".json";
     j["files"] = files;
-    write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+    write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     if (a.plot) {
-      plot_failed = !run_plot(prefix, files);
+      plot_failed = !run_map_plot(prefix, files);
       j["files"] = files;
-      write_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+      write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
   }
   if (a.json) {
@@ -901,8 +805,10 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                   "cells of a grid map: npy (default; numpy arrays of codes + axis "
                                   "vectors) | csv (one line per cell)");
   o["--system"] = cmd->add_option("--system", args->system,
-                                  "N-point system file (docs/file_formats.md): direction map of "
-                                  "dF = cos(theta) e1 + sin(theta) e2 (with --kind direction)");
+                                  "N-point system file (docs/file_formats.md): maps of "
+                                  "dF = cos(theta) e1 + sin(theta) e2; --kind direction (default), "
+                                  "param-direction, param-param; --param mu, C_T, k_a, P_N, "
+                                  "coupling or mu@i, ...");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
   cmd->callback([args, &ctx] { ctx.exit_code = run_map(*args); });

@@ -1,16 +1,22 @@
-// `cpkit map --system FILE --kind direction`: the direction map of N contact points
-// (docs/maps.md, "N points"): sectors and exact critical directions of
-// dF(theta) = cos(theta) e1 + sin(theta) e2. Exit codes: 0 map computed, 2 bad input,
-// 5 inconclusive (an evaluation too close to call or a sector that is not uniform; the map is
-// then printed with complete: false).
+// `cpkit map --system FILE`: the maps of N contact points (docs/maps.md, "N points"):
+// --kind direction (sectors and exact critical directions of dF(theta) = cos(theta) e1 +
+// sin(theta) e2), param-direction and param-param (grid maps streamed to .npy or CSV files).
+// Exit codes: 0 map computed, 2 bad input, 4 a requested picture not drawn, 5 inconclusive (an
+// evaluation too close to call or a sector that is not uniform; the map is then printed with
+// complete: false).
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
+#include <sstream>
 #include <iostream>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "cli_common.hpp"
+#include "map_files.hpp"
+#include "machine_resources.hpp"
 #include "map_system.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
@@ -50,91 +56,315 @@ std::vector<std::string> pattern_names(const std::vector<TypeTuple>& tuples, int
   return out;
 }
 
+std::string pattern_text(const std::vector<TypeTuple>& tuples, int n_points) {
+  return tuples.empty() ? std::string("(no solution)") : joined(pattern_names(tuples, n_points), ", ");
+}
+
+nlohmann::json pattern_table_json(const SystemPatternTable& t, int n_points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < t.patterns.size(); ++k)
+    out.push_back({{"id", k}, {"types", pattern_names(t.patterns[k], n_points)},
+                   {"cells", t.cells[k]}});
+  return out;
+}
+
+void print_pattern_table(const SystemPatternTable& t, int n_points) {
+  std::cout << "point-type patterns:\n";
+  for (std::size_t k = 0; k < t.patterns.size(); ++k)
+    std::cout << "  " << k << ": " << pattern_text(t.patterns[k], n_points) << " ("
+              << t.cells[k] << " cells)\n";
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream o;
+  o << std::setprecision(3) << s;
+  return o.str();
+}
+
+/// Refuses up front (exit 2) a map whose estimated cell time exceeds --time-limit or whose
+/// files would not fit the disk (`bytes_per_cell` as written: .npy codes or CSV lines).
+nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest& r,
+                              const std::string& cells, const std::string& fewer,
+                              double npy_bytes_per_cell) {
+  if (!r.out.empty()) {
+    // A CSV line holds two numbers at 17 digits, the count and the pattern id.
+    const double output = e.cells * (r.format == "csv" ? 45.0 : npy_bytes_per_cell);
+    const std::string dir = std::filesystem::path(r.out).parent_path().string();
+    const double free = free_disk_bytes(dir);
+    if (free >= 0 && output > 0.95 * free)
+      throw InputError("the map has " + cells + " and its output would take about " +
+                       seconds_text(output / 1e9) + " GB but only " + seconds_text(free / 1e9) +
+                       " GB is free in '" + (dir.empty() ? "." : dir) + "': " + fewer +
+                       (r.format == "csv" ? ", or drop --format csv" : ""));
+  }
+  if (e.seconds > r.time_limit)
+    throw InputError("the map has " + cells + " and would need about " + seconds_text(e.seconds) +
+                     " s of computing on " + std::to_string(e.threads) +
+                     " threads (estimated from " + std::to_string(e.sampled) +
+                     " timed cells), more than --time-limit " + seconds_text(r.time_limit) +
+                     ": " + fewer + ", or raise --time-limit");
+  if (e.seconds > 1.0)
+    std::cerr << "cpkit map: " << cells << ": about " << seconds_text(e.seconds) << " s on "
+              << e.threads << " threads (estimate)\n";
+  return {{"seconds", e.seconds}, {"threads", e.threads}, {"sampled_cells", e.sampled}};
+}
+
+std::vector<double> axis_values(const SystemMapAxis& a) {
+  std::vector<double> v(static_cast<std::size_t>(a.n));
+  for (int i = 0; i < a.n; ++i) v[static_cast<std::size_t>(i)] = a.value(i);
+  return v;
+}
+
+/// The parts of a grid map's run every kind shares: the JSON head, files, plot, exit code.
+struct GridRun {
+  const SystemMapRequest& r;
+  nlohmann::json j;
+  nlohmann::json files = nlohmann::json::object();
+  GridFiles out;
+  explicit GridRun(const SystemMapRequest& req) : r(req), out(req.out, files) {}
+  bool writing_npy() const { return !r.out.empty() && r.format == "npy"; }
+  bool writing_csv() const { return !r.out.empty() && r.format == "csv"; }
+  /// Writes PREFIX.json (and the picture); prints; returns the exit code.
+  int finish(bool complete, const std::function<void()>& print_text) {
+    bool plot_failed = false;
+    if (!r.out.empty()) {
+      const std::string name = std::filesystem::path(r.out).filename().string();
+      files["json"] = name + ".json";
+      j["files"] = files;
+      j["run"] = run_echo();
+      write_text_file(r.out + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+      if (r.plot) {
+        plot_failed = !run_map_plot(r.out, files);
+        j["files"] = files;
+        write_text_file(r.out + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+      }
+    }
+    if (r.json) {
+      print_json(j);
+    } else {
+      print_text();
+      if (!r.out.empty()) {
+        std::cout << "wrote";
+        for (const auto& [k, v] : files.items())
+          std::cout << ' '
+                    << (std::filesystem::path(r.out).parent_path() / v.get<std::string>()).string();
+        std::cout << '\n';
+      }
+    }
+    if (!complete) return kExitInconclusive;
+    return plot_failed ? kExitInternal : kExitOk;
+  }
+};
+
+MapOptions request_options(const SystemMapRequest& r) {
+  MapOptions o;
+  o.threads = r.threads;
+  o.theta_from = r.theta_from;
+  o.theta_to = r.theta_to;
+  if (std::string e = o.validate(); !e.empty())
+    throw InputError("--theta-from/--theta-to: " + e);
+  return o;
+}
+
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
 int run_param_direction(const SystemMapRequest& r) {
   const ContactSystem sys = read_contact_system(r.path);
   const int N = sys.n_points();
-  const SystemMapParameter param = parse_system_map_parameter(r.param, N);
-  const SystemParamDirectionMap m =
-      compute_system_param_direction_map(sys, param, r.from, r.to, r.n, r.theta_n, r.threads);
+  SystemMapAxis axis;
+  axis.param = parse_system_map_parameter(r.param, N);
+  axis.from = r.from;
+  axis.to = r.to;
+  axis.n = r.n;
+  const MapOptions options = request_options(r);
   Eigen::VectorXd e1, e2;
   system_map_patterns(sys, e1, e2);
+  GridRun run(r);
+  const std::string cells = std::to_string(r.n) + " x " + std::to_string(r.theta_n) +
+                            " cells (--n x --theta-n)";
+  const nlohmann::json estimate =
+      check_estimate(estimate_system_param_direction_map(sys, axis, r.theta_n, options), r,
+                     cells, "use a smaller --n or --theta-n", 3);
+  const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
+  if (run.writing_npy()) {
+    run.out.add_npy("count", "|i1", r.n, r.theta_n);
+    run.out.add_npy("pattern", "<u2", r.n, r.theta_n, 2);
+    run.out.write_vector("x", axis_values(axis));
+    run.out.write_vector("theta", theta);
+  } else if (run.writing_csv()) {
+    run.out.open_csv() << std::setprecision(17) << axis.param.name() << ",theta,count,pattern\n";
+  }
+  SystemParamDirectionMap m;
+  try {
+    m = compute_system_param_direction_map(
+        sys, axis, r.theta_n, options, make_map_progress(),
+        [&](const SystemParamDirectionRows& rows) {
+          const int64_t n_cells = static_cast<int64_t>(rows.row_end - rows.row_begin) * r.theta_n;
+          run.out.append({rows.count, rows.pattern}, n_cells);
+          if (!run.out.has_csv()) return;
+          for (int i = rows.row_begin; i < rows.row_end; ++i)
+            for (int jj = 0; jj < r.theta_n; ++jj) {
+              const std::size_t k =
+                  static_cast<std::size_t>(i - rows.row_begin) * r.theta_n + jj;
+              run.out.csv() << axis.value(i) << ',' << theta[static_cast<std::size_t>(jj)] << ','
+                            << count_to_string(rows.count[k]) << ',' << rows.pattern[k] << '\n';
+            }
+        });
+    run.out.finish();
+  } catch (...) {
+    run.out.discard();
+    throw;
+  }
   const bool complete = m.unreliable == 0;
-  nlohmann::json counts = nlohmann::json::array(), patterns = nlohmann::json::array();
+  nlohmann::json counts = nlohmann::json::array();
   for (const auto& c : m.classes)
     counts.push_back({{"count", count_to_json(c.code)}, {"cells", c.cells},
                       {"param_min", c.x_min}, {"param_max", c.x_max},
                       {"theta_min", c.y_min}, {"theta_max", c.y_max}});
-  for (std::size_t k = 0; k < m.patterns.size(); ++k)
-    patterns.push_back({{"id", k}, {"types", pattern_names(m.patterns[k], N)},
-                        {"cells", m.pattern_cells[k]}});
-  nlohmann::json j = {{"cpkit_version", CPKIT_VERSION},
-                      {"kind", "param-direction"},
-                      {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
-                                 {"param", param.name()}, {"from", r.from}, {"to", r.to},
-                                 {"n", r.n}, {"theta_n", r.theta_n},
-                                 {"patterns", {as_list(e1), as_list(e2)}}}},
-                      {"cells", m.cells()},
-                      {"counts", counts},
-                      {"patterns", patterns},
-                      {"lcp_size_max", m.m_max},
-                      {"unreliable", m.unreliable},
-                      {"complete", complete},
-                      {"threads", m.threads},
-                      {"seconds", m.seconds}};
+  run.j = {{"cpkit_version", CPKIT_VERSION},
+           {"kind", "param-direction"},
+           {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
+                      {"param", axis.param.name()}, {"from", r.from}, {"to", r.to},
+                      {"n", r.n}, {"theta_n", r.theta_n}, {"theta_from", r.theta_from},
+                      {"theta_to", r.theta_to}, {"patterns", {as_list(e1), as_list(e2)}}}},
+           {"cells", m.cells()},
+           {"counts", counts},
+           {"patterns", pattern_table_json(m.table, N)},
+           {"lcp_size_max", m.m_max},
+           {"unreliable", m.unreliable},
+           {"complete", complete},
+           {"threads", m.threads},
+           {"seconds", m.seconds},
+           {"estimate", estimate}};
+  if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
     std::cerr << "cpkit map: " << m.unreliable
               << " cells too close to call: the map is not proved complete\n";
-  if (!r.out.empty()) {
-    std::ofstream f(r.out + ".csv");
-    if (!f) throw InputError("--out: cannot write '" + r.out + ".csv'");
-    f << std::setprecision(17) << param.name() << ",theta,count,pattern\n";
-    for (int i = 0; i < m.n; ++i)
-      for (int jj = 0; jj < m.theta_n; ++jj) {
-        const std::size_t k = static_cast<std::size_t>(i) * m.theta_n + jj;
-        f << m.value(i) << ',' << m.theta[jj] << ',' << count_to_string(m.count[k]) << ','
-          << m.pattern[k] << '\n';
-      }
-    if (!f) throw InputError("--out: writing '" + r.out + ".csv' failed");
-    j["files"] = {{"csv", r.out + ".csv"}, {"json", r.out + ".json"}};
-    std::ofstream fj(r.out + ".json");
-    if (!fj) throw InputError("--out: cannot write '" + r.out + ".json'");
-    nlohmann::json jj = j;
-    jj["run"] = run_echo();
-    fj << json_text(jj) << "\n";
-  }
-  if (r.json) {
-    print_json(j);
-  } else {
-    std::cout << "param-direction map of " << N << " points (" << r.path << "): " << param.name()
-              << " in [" << r.from << ", " << r.to << "] (" << r.n << " values) x " << r.theta_n
-              << " directions, " << m.cells() << " cells\ncounts:\n";
+  return run.finish(complete, [&] {
+    std::cout << "param-direction map of " << N << " points (" << r.path << "): "
+              << axis.param.name() << " in [" << r.from << ", " << r.to << "] (" << r.n
+              << " values) x " << r.theta_n << " directions"
+              << (r.theta_range ? " in [" + seconds_text(r.theta_from) + ", " +
+                                      seconds_text(r.theta_to) + "]"
+                                : std::string())
+              << ", " << m.cells() << " cells\ncounts:\n";
     for (const auto& c : m.classes)
-      std::cout << "  " << count_text(c.code) << ": " << c.cells << " cells, " << param.name()
-                << " in [" << c.x_min << ", " << c.x_max << "]\n";
-    std::cout << "point-type patterns:\n";
-    for (std::size_t k = 0; k < m.patterns.size(); ++k)
-      std::cout << "  " << k << ": "
-                << (m.patterns[k].empty() ? std::string("(no solution)")
-                                          : joined(pattern_names(m.patterns[k], N), ", "))
-                << " (" << m.pattern_cells[k] << " cells)\n";
+      std::cout << "  " << count_text(c.code) << ": " << c.cells << " cells, "
+                << axis.param.name() << " in [" << c.x_min << ", " << c.x_max << "]\n";
+    print_pattern_table(m.table, N);
+  });
+}
+
+/// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
+int run_param_param(const SystemMapRequest& r) {
+  const ContactSystem sys = read_contact_system(r.path);
+  const int N = sys.n_points();
+  SystemMapAxis a1, a2;
+  a1.param = parse_system_map_parameter(r.param, N);
+  a1.from = r.from;
+  a1.to = r.to;
+  a1.n = r.n;
+  a2.param = parse_system_map_parameter(r.param2, N);
+  a2.from = r.from2;
+  a2.to = r.to2;
+  a2.n = r.n2;
+  MapOptions options;
+  options.threads = r.threads;
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(sys, e1, e2);
+  GridRun run(r);
+  const std::string cells =
+      std::to_string(r.n) + " x " + std::to_string(r.n2) + " cells (--n x --n2)";
+  const nlohmann::json estimate = check_estimate(
+      estimate_system_param_param_map(sys, a1, a2, options), r, cells, "use a smaller --n or --n2", 5);
+  if (run.writing_npy()) {
+    run.out.add_npy("class", "|u1", r.n, r.n2);
+    run.out.add_npy("min_count", "|i1", r.n, r.n2);
+    run.out.add_npy("max_count", "|i1", r.n, r.n2);
+    run.out.add_npy("pattern", "<u2", r.n, r.n2, 2);
+    run.out.write_vector("x", axis_values(a1));
+    run.out.write_vector("y", axis_values(a2));
+  } else if (run.writing_csv()) {
+    run.out.open_csv() << std::setprecision(17) << a1.param.name() << ',' << a2.param.name()
+                       << ",class,min_count,max_count,pattern\n";
   }
-  return complete ? kExitOk : kExitInconclusive;
+  SystemParamParamMap m;
+  try {
+    m = compute_system_param_param_map(
+        sys, a1, a2, options, make_map_progress(), [&](const SystemParamParamRows& rows) {
+          const int64_t n_cells = static_cast<int64_t>(rows.row_end - rows.row_begin) * r.n2;
+          run.out.append({rows.cls, rows.min_count, rows.max_count, rows.pattern}, n_cells);
+          if (!run.out.has_csv()) return;
+          for (int i = rows.row_begin; i < rows.row_end; ++i)
+            for (int jj = 0; jj < r.n2; ++jj) {
+              const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * r.n2 + jj;
+              run.out.csv() << a1.value(i) << ',' << a2.value(jj) << ','
+                            << to_string(static_cast<UniquenessClass>(rows.cls[k])) << ','
+                            << count_to_string(rows.min_count[k]) << ','
+                            << count_to_string(rows.max_count[k]) << ',' << rows.pattern[k]
+                            << '\n';
+            }
+        });
+    run.out.finish();
+  } catch (...) {
+    run.out.discard();
+    throw;
+  }
+  const bool complete = m.unreliable == 0 && m.inconsistent_sectors == 0;
+  nlohmann::json classes = nlohmann::json::array();
+  for (const auto& c : m.classes)
+    classes.push_back({{"class", to_string(static_cast<UniquenessClass>(c.code))},
+                       {"code", c.code}, {"cells", c.cells},
+                       {"x_min", c.x_min}, {"x_max", c.x_max},
+                       {"y_min", c.y_min}, {"y_max", c.y_max}});
+  run.j = {{"cpkit_version", CPKIT_VERSION},
+           {"kind", "param-param"},
+           {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
+                      {"param", a1.param.name()}, {"from", r.from}, {"to", r.to}, {"n", r.n},
+                      {"param2", a2.param.name()}, {"from2", r.from2}, {"to2", r.to2},
+                      {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}}},
+           {"cells", m.cells()},
+           {"classes", classes},
+           {"class_codes", {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
+                            {"none-and-several", 3}}},
+           {"patterns", pattern_table_json(m.table, N)},
+           {"lcp_size_max", m.m_max},
+           {"unreliable", m.unreliable},
+           {"inconsistent_sectors", m.inconsistent_sectors},
+           {"complete", complete},
+           {"threads", m.threads},
+           {"seconds", m.seconds},
+           {"estimate", estimate}};
+  if (!r.out.empty()) run.j["format"] = r.format;
+  if (!complete)
+    std::cerr << "cpkit map: " << m.unreliable << " evaluations too close to call and "
+              << m.inconsistent_sectors
+              << " sectors not uniform: the map is not proved complete\n";
+  return run.finish(complete, [&] {
+    std::cout << "param-param map of " << N << " points (" << r.path << "): "
+              << a1.param.name() << " in [" << r.from << ", " << r.to << "] (" << r.n
+              << " values) x " << a2.param.name() << " in [" << r.from2 << ", " << r.to2
+              << "] (" << r.n2 << " values), " << m.cells() << " cells\nclasses:\n";
+    for (const auto& c : m.classes)
+      std::cout << "  " << to_string(static_cast<UniquenessClass>(c.code)) << ": " << c.cells
+                << " cells, " << a1.param.name() << " in [" << c.x_min << ", " << c.x_max
+                << "], " << a2.param.name() << " in [" << c.y_min << ", " << c.y_max << "]\n";
+    print_pattern_table(m.table, N);
+  });
 }
 
 }  // namespace
 
 int run_map_system(const SystemMapRequest& r) {
   if (r.kind == "param-direction") return run_param_direction(r);
-  if (r.kind != "direction")
-    throw InputError("--kind with --system must be direction or param-direction (param-param "
-                     "maps of N points are not implemented yet), got '" + r.kind + "'");
+  if (r.kind == "param-param") return run_param_param(r);
   const std::string& path = r.path;
   const std::string& out = r.out;
   const bool json = r.json;
   const ContactSystem sys = read_contact_system(path);
   const int N = sys.n_points();
-  const SystemDirectionMap m = compute_system_direction_map(sys);
+  MapOptions options;
+  options.threads = r.threads;
+  const SystemDirectionMap m = compute_system_direction_map(sys, options);
   const bool complete = m.unreliable == 0 && m.inconsistent_sectors == 0;
 
   nlohmann::json sectors = nlohmann::json::array(), critical = nlohmann::json::array();

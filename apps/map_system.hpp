@@ -6,13 +6,19 @@ namespace cpkit::cli {
 
 /// What `cpkit map --system` was asked (filled by map_command.cpp from the options).
 struct SystemMapRequest {
-  std::string path, kind, out, param;  ///< --system, --kind, --out, --param
-  bool json = false;
-  double from = 0, to = 0;                  ///< --from, --to (param-direction)
-  int n = 100, theta_n = 360, threads = 0;  ///< --n, --theta-n, --threads (param-direction)
+  std::string path, kind, out, param, param2;  ///< --system, --kind, --out, --param, --param2
+  std::string format = "npy";                  ///< --format (grid maps written with --out)
+  bool json = false, plot = false;
+  double from = 0, to = 0, from2 = 0, to2 = 0;  ///< --from, --to, --from2, --to2
+  int n = 100, n2 = 100, theta_n = 360;         ///< --n, --n2, --theta-n
+  int threads = 0;                              ///< --threads (0: all cores)
+  bool theta_range = false;                     ///< --theta-from/--theta-to given
+  double theta_from = 0, theta_to = 6.283185307179586;
+  double time_limit = 600;                      ///< --time-limit (grid maps)
 };
 
-/// Runs the map; returns the exit code (0, or 5 when not proved complete).
+/// Runs the map; returns the exit code (0; 5 when not proved complete; 4 when a requested
+/// picture could not be drawn).
 int run_map_system(const SystemMapRequest& r);
 
 }  // namespace cpkit::cli

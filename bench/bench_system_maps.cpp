@@ -55,8 +55,15 @@ int main(int argc, char** argv) {
   for (int N : {2, 4}) {
     const ContactSystem S = chain(N);
     for (int threads : {1, 2}) {
-      const SystemParamDirectionMap m = compute_system_param_direction_map(
-          S, parse_system_map_parameter("mu", N), 0.2, 4, n, theta_n, threads);
+      SystemMapAxis axis;
+      axis.param = parse_system_map_parameter("mu", N);
+      axis.from = 0.2;
+      axis.to = 4;
+      axis.n = n;
+      MapOptions options;
+      options.threads = threads;
+      const SystemParamDirectionMap m =
+          compute_system_param_direction_map(S, axis, theta_n, options);
       long multi = 0;
       for (auto c : m.count) multi += c > 1 || c < 0;
       std::printf("%-16s %4d %8d %9.3f %12.0f %14ld\n", S.name.c_str(), m.m_max, m.threads,

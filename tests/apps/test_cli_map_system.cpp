@@ -81,7 +81,7 @@ TEST_CASE("cpkit map --system: the example's map and --out", "[cli][map][system]
 
 TEST_CASE("cpkit map --system: bad input exits 2 naming the option", "[cli][map][system]") {
   const std::string f = write_system("map_bad.json", kSystem);
-  for (const char* extra : {"--mu 2", "--kind param-direction", "--preset fig5b", "--threads 2",
+  for (const char* extra : {"--mu 2", "--kind param-direction", "--preset fig5b", "--theta-n 10",
                             "--kind nonsense"}) {
     const auto r = cpkit::test::run_cpkit("map --system " + f + " " + extra);
     INFO(extra << ": " << r.err);

@@ -90,9 +90,23 @@ TEST_CASE("system direction map: dense sampling agrees with the sectors", "[rate
     S.pattern1 = e1;
     S.pattern2 = e2;
     if (!S.validate().empty()) continue;
-    const SystemDirectionMap map = compute_system_direction_map(S);
+    const SystemDirectionMap map = compute_system_direction_map(S);  // all cores
     const SystemRatePrecomputed pre = precompute_system_rate(S);
     CAPTURE(trial, S.A, e1, e2, map.critical.size());
+    {  // one thread: the same map, bit for bit
+      MapOptions one;
+      one.threads = 1;
+      const SystemDirectionMap m1 = compute_system_direction_map(S, one);
+      REQUIRE(m1.sectors.size() == map.sectors.size());
+      REQUIRE(m1.critical.size() == map.critical.size());
+      for (std::size_t k = 0; k < m1.sectors.size(); ++k) {
+        CHECK(m1.sectors[k].theta_from == map.sectors[k].theta_from);
+        CHECK(same_solution_set(m1.sectors[k].summary, map.sectors[k].summary));
+      }
+      for (std::size_t k = 0; k < m1.critical.size(); ++k)
+        CHECK(m1.critical[k].theta == map.critical[k].theta);
+      CHECK(m1.evaluations == map.evaluations);
+    }
     constexpr int kSamples = 1500;
     const SystemDirectionSector* prev = nullptr;
     SystemRateSummary prev_s;

@@ -19,16 +19,29 @@ inline int resolve_threads(int requested, int64_t work_items) {
   return t;
 }
 
-/// Runs fn(i) for every i in [begin, end) on `threads` workers (items handed out one at a time).
+/// Runs fn(i) for every i in [begin, end) on `threads` workers (items handed out one at a time;
+/// one worker: the calling thread itself).
 /// Results must be stored by index by fn, so the outcome does not depend on the thread count.
 /// The calling thread calls report(items done) about every 0.1 s. The first exception of a
 /// worker is rethrown.
 template <class ItemFn, class Report>
 void run_items(int begin, int end, int threads, ItemFn&& fn, Report&& report) {
+  threads = std::max(1, std::min(threads, end - begin));
+  if (threads == 1) {  // in the calling thread: no thread to start for small or nested work
+    auto last = std::chrono::steady_clock::now();
+    for (int i = begin; i < end; ++i) {
+      fn(i);
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last > std::chrono::milliseconds(100)) {
+        last = now;
+        report(i + 1 - begin);
+      }
+    }
+    return;
+  }
   std::atomic<int> next{begin}, done{0};
   std::mutex mutex;
   std::condition_variable cv;
-  threads = std::max(1, std::min(threads, end - begin));
   int active = threads;
   std::exception_ptr error;
   auto worker = [&] {

@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "cpkit/core/errors.hpp"
+#include "run_items.hpp"
 
 namespace cpkit::rate {
 
@@ -38,17 +39,12 @@ void add_zeros(const Mat2& F, double scale, std::vector<double>& out) {
 
 double max_abs(const Mat2& F) { return F.size() == 0 ? 0.0 : F.cwiseAbs().maxCoeff(); }
 
-/// All zeros of all forms, sorted and deduplicated, in [0, 2 pi).
-std::vector<double> candidate_angles(const SystemRatePrecomputed& pre, const Mat2& E) {
+/// Zeros of the forms of the complementary bases S in [S_begin, S_end) (S = 0, the empty basis,
+/// is added by the caller).
+void basis_zeros(const SystemRatePrecomputed& pre, const Mat2& Q, const Mat2& base, double ps,
+                 std::uint32_t S_begin, std::uint32_t S_end, std::vector<double>& zeros) {
   const int m = pre.m;
-  std::vector<double> zeros;
-  const Mat2 Q = pre.Q * E;     // q = Q (cos, sin)^T
-  const Mat2 base = pre.Pf * E; // physical rates at z = 0
-  const double qs = std::max(max_abs(Q), 1e-300);
-  const double ps = std::max(max_abs(base), 1e-300);
-  add_zeros(base, ps, zeros);
-  add_zeros(Q, qs, zeros);  // the empty basis: w = q
-  for (std::uint32_t S = 1; S < (1u << m); ++S) {
+  for (std::uint32_t S = S_begin; S < S_end; ++S) {
     std::vector<int> in, out;
     for (int i = 0; i < m; ++i) ((S >> i) & 1u ? in : out).push_back(i);
     const int k = static_cast<int>(in.size());
@@ -78,6 +74,30 @@ std::vector<double> candidate_angles(const SystemRatePrecomputed& pre, const Mat
       add_zeros(C, std::max(max_abs(qs_), 1e-300), zeros);
     }
   }
+}
+
+/// All zeros of all forms, sorted and deduplicated, in [0, 2 pi). The 2^m bases are split into
+/// chunks run on `threads` workers; the sorted result does not depend on the split.
+std::vector<double> candidate_angles(const SystemRatePrecomputed& pre, const Mat2& E,
+                                     int threads) {
+  const int m = pre.m;
+  std::vector<double> zeros;
+  const Mat2 Q = pre.Q * E;     // q = Q (cos, sin)^T
+  const Mat2 base = pre.Pf * E; // physical rates at z = 0
+  const double qs = std::max(max_abs(Q), 1e-300);
+  const double ps = std::max(max_abs(base), 1e-300);
+  add_zeros(base, ps, zeros);
+  add_zeros(Q, qs, zeros);  // the empty basis: w = q
+  const std::uint32_t bases = 1u << m;
+  const int chunks = std::min<int>(64, static_cast<int>(bases));
+  std::vector<std::vector<double>> part(static_cast<std::size_t>(chunks));
+  run_items(0, chunks, resolve_threads(threads, chunks), [&](int c) {
+    const std::uint32_t b0 = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(
+                                                            uint64_t{bases} * c / chunks));
+    const std::uint32_t b1 = static_cast<std::uint32_t>(uint64_t{bases} * (c + 1) / chunks);
+    basis_zeros(pre, Q, base, ps, b0, b1, part[static_cast<std::size_t>(c)]);
+  }, [](int) {});
+  for (const auto& p : part) zeros.insert(zeros.end(), p.begin(), p.end());
   std::sort(zeros.begin(), zeros.end());
   std::vector<double> out;
   for (double t : zeros) {
@@ -91,7 +111,8 @@ std::vector<double> candidate_angles(const SystemRatePrecomputed& pre, const Mat
 
 struct Arc {
   double from = 0, to = 0;
-  SystemRateSummary summary;
+  SystemRateSummary summary;      ///< at the midpoint
+  SystemRateSummary quarter[2];   ///< at the quarter points (a check)
   bool consistent = true;
 };
 }  // namespace
@@ -143,33 +164,45 @@ SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
                      "all its 2^m bases and accepts at most " + std::to_string(kMaxSystemMapLcp));
 
   auto load = [&](double t) -> Eigen::VectorXd { return std::cos(t) * map.e1 + std::sin(t) * map.e2; };
-  auto eval = [&](double t) {
-    const SystemRateSummary s = summarize_rate_problem(pre, load(t));
-    ++map.evaluations;
-    if (!s.reliable) ++map.unreliable;
-    return s;
-  };
 
-  const std::vector<double> cand = candidate_angles(pre, E);
+  const std::vector<double> cand = candidate_angles(pre, E, options.threads);
   const std::size_t m = cand.size();
   map.candidates = static_cast<int>(m);
   std::vector<Arc> arcs(m == 0 ? 1 : m);
-  for (std::size_t i = 0; i < arcs.size(); ++i) {
-    Arc& a = arcs[i];
-    a.from = m == 0 ? 0 : cand[i];
-    a.to = m == 0 ? kTwoPi : (i + 1 < m ? cand[i + 1] : cand[0] + kTwoPi);
-    const double w = a.to - a.from;
-    a.summary = eval(a.from + 0.5 * w);
-    a.consistent = same_solution_set(eval(a.from + 0.25 * w), a.summary) &&
-                   same_solution_set(eval(a.from + 0.75 * w), a.summary);
-    if (!a.consistent) ++map.inconsistent_sectors;
-  }
   std::vector<SystemCriticalDirection> at(m);
+  // Every arc (midpoint and quarter points) and every candidate, on the workers: item k < arcs
+  // is arc k, item arcs + i is candidate i. Results are stored by index.
+  const int items = static_cast<int>(arcs.size() + m);
+  run_items(0, items, resolve_threads(options.threads, items), [&](int k) {
+    if (k < static_cast<int>(arcs.size())) {
+      Arc& a = arcs[static_cast<std::size_t>(k)];
+      const std::size_t i = static_cast<std::size_t>(k);
+      a.from = m == 0 ? 0 : cand[i];
+      a.to = m == 0 ? kTwoPi : (i + 1 < m ? cand[i + 1] : cand[0] + kTwoPi);
+      const double w = a.to - a.from;
+      a.summary = summarize_rate_problem(pre, load(a.from + 0.5 * w));
+      a.quarter[0] = summarize_rate_problem(pre, load(a.from + 0.25 * w));
+      a.quarter[1] = summarize_rate_problem(pre, load(a.from + 0.75 * w));
+      a.consistent = same_solution_set(a.quarter[0], a.summary) &&
+                     same_solution_set(a.quarter[1], a.summary);
+    } else {
+      const std::size_t i = static_cast<std::size_t>(k) - arcs.size();
+      at[i].theta = cand[i];
+      at[i].dF = load(cand[i]);
+      at[i].summary = summarize_rate_problem(pre, at[i].dF);
+    }
+  }, [](int) {});
+  for (const Arc& a : arcs) {
+    map.evaluations += 3;
+    map.unreliable += !a.summary.reliable + !a.quarter[0].reliable + !a.quarter[1].reliable;
+    map.inconsistent_sectors += !a.consistent;
+  }
+  for (const auto& c : at) {
+    ++map.evaluations;
+    map.unreliable += !c.summary.reliable;
+  }
   std::vector<std::size_t> crit;
   for (std::size_t i = 0; i < m; ++i) {
-    at[i].theta = cand[i];
-    at[i].dF = load(cand[i]);
-    at[i].summary = eval(cand[i]);
     const Arc& before = arcs[(i + m - 1) % m];
     const Arc& after = arcs[i];
     if (!same_solution_set(at[i].summary, before.summary) ||

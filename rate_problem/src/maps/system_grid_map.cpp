@@ -133,110 +133,391 @@ ContactSystem apply_system_map_parameter(const ContactSystem& base, const System
   return sys;
 }
 
-SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& system,
-                                                           const SystemMapParameter& param,
-                                                           double from, double to, int n,
-                                                           int theta_n, int threads,
-                                                           const MapProgress& progress) {
-  throw_if_invalid(system.validate(), "system");
-  MapAxis axis;
-  axis.from = from;
-  axis.to = to;
-  axis.n = n;
-  throw_if_invalid(axis.validate(), "map axis " + param.name());
-  if (theta_n < 1 || theta_n > 1000000)
-    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
-  if (static_cast<int64_t>(n) * theta_n > kMaxSystemMapCells)
-    throw InputError("the map has " + std::to_string(static_cast<int64_t>(n) * theta_n) +
-                     " cells; an N-point map keeps its cells in memory and accepts at most " +
-                     std::to_string(kMaxSystemMapCells) + " (lower --n or --theta-n)");
-  if (threads < 0 || threads > 1024)
-    throw InputError("threads must be in [0, 1024], got " + std::to_string(threads));
-  const Stopwatch clock;
-  SystemParamDirectionMap map;
-  map.param = param;
-  map.from = from;
-  map.to = to;
-  map.n = n;
-  map.theta_n = theta_n;
-  map.theta = map_theta_values(theta_n);
+namespace {
 
-  // Every row's system, validated before any cell is computed (the message names the value).
-  Eigen::VectorXd e1, e2;
-  system_map_patterns(system, e1, e2);
-  std::vector<SystemRatePrecomputed> rows;
-  rows.reserve(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    rows.push_back(precompute_system_rate(apply_system_map_parameter(system, param, map.value(i))));
-    map.m_max = std::max(map.m_max, rows.back().m);
+/// Row-local pattern table: ids in order of first appearance in the row.
+struct RowPatterns {
+  std::vector<std::vector<TypeTuple>> list;
+  uint16_t id(std::vector<TypeTuple>&& tuples) {
+    auto it = std::find(list.begin(), list.end(), tuples);
+    if (it != list.end()) return static_cast<uint16_t>(it - list.begin());
+    if (list.size() >= 65535)
+      throw InputError("a map row has more than 65535 distinct point-type patterns");
+    list.push_back(std::move(tuples));
+    return static_cast<uint16_t>(list.size() - 1);
   }
-  if (map.m_max > kMaxSystemMapLcp)
-    throw InputError("system: the rate LCP has size " + std::to_string(map.m_max) +
-                     " (3 per point in state b, 1 per point in state d); a map cell enumerates "
-                     "its 2^m bases and the maps accept at most " +
-                     std::to_string(kMaxSystemMapLcp));
+};
 
-  const std::size_t cells = static_cast<std::size_t>(map.cells());
-  map.count.assign(cells, 0);
-  map.pattern.assign(cells, 0);
-  // Per row: the row's own pattern table (ids in order of first appearance in the row), merged
-  // into the global table in row order afterwards, so ids do not depend on the thread count.
-  std::vector<std::vector<std::vector<TypeTuple>>> row_patterns(static_cast<std::size_t>(n));
-  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(n), 0);
-  auto row = [&](int i) {
-    const SystemRatePrecomputed& pre = rows[static_cast<std::size_t>(i)];
-    Eigen::VectorXd dF(e1.size());
-    auto& table = row_patterns[static_cast<std::size_t>(i)];
-    const std::size_t base = static_cast<std::size_t>(i) * static_cast<std::size_t>(theta_n);
-    for (int j = 0; j < theta_n; ++j) {
-      dF = std::cos(map.theta[j]) * e1 + std::sin(map.theta[j]) * e2;
-      const SystemRateSummary s = summarize_rate_problem(pre, dF);
-      std::vector<TypeTuple> t = tuples_of(s);
-      auto it = std::find(table.begin(), table.end(), t);
-      if (it == table.end()) it = table.insert(table.end(), std::move(t));
-      map.count[base + j] = static_cast<int8_t>(s.count);
-      map.pattern[base + j] = static_cast<uint16_t>(it - table.begin());
-      row_unreliable[static_cast<std::size_t>(i)] += !s.reliable;
-    }
-  };
-  map.threads = resolve_threads(threads, n);
-  run_items(0, n, map.threads, row, [&](int done) {
-    if (progress) progress("cells", static_cast<double>(done) / n);
-  });
-  if (progress) progress("cells", 1.0);
-
-  std::map<std::vector<TypeTuple>, int> global;
-  std::array<GridClassBox, 128> boxes{};
-  for (int i = 0; i < n; ++i) {
-    const auto& table = row_patterns[static_cast<std::size_t>(i)];
-    std::vector<uint16_t> to_global(table.size());
-    for (std::size_t k = 0; k < table.size(); ++k) {
-      auto [it, added] = global.emplace(table[k], static_cast<int>(map.patterns.size()));
+/// The global table, filled in row order: ids do not depend on which thread ran which row.
+class PatternNumbering {
+ public:
+  explicit PatternNumbering(SystemPatternTable& table) : table_(table) {}
+  /// Replaces the row-local ids in ids[0..cells) by global ids and counts the cells.
+  void merge_row(const RowPatterns& row, uint16_t* ids, int cells) {
+    std::vector<uint16_t> to_global(row.list.size());
+    for (std::size_t k = 0; k < row.list.size(); ++k) {
+      auto [it, added] = index_.emplace(row.list[k], static_cast<int>(table_.patterns.size()));
       if (added) {
-        if (map.patterns.size() >= 65535)
+        if (table_.patterns.size() >= 65535)
           throw InputError("the map has more than 65535 distinct point-type patterns");
-        map.patterns.push_back(table[k]);
-        map.pattern_cells.push_back(0);
+        table_.patterns.push_back(row.list[k]);
+        table_.cells.push_back(0);
       }
       to_global[k] = static_cast<uint16_t>(it->second);
     }
-    const std::size_t base = static_cast<std::size_t>(i) * static_cast<std::size_t>(theta_n);
-    for (int j = 0; j < theta_n; ++j) {
-      uint16_t& id = map.pattern[base + j];
-      id = to_global[id];
-      ++map.pattern_cells[id];
-      boxes[static_cast<std::size_t>((map.count[base + j] + 1) & 127)].add(map.value(i),
-                                                                           map.theta[j]);
+    for (int j = 0; j < cells; ++j) {
+      ids[j] = to_global[ids[j]];
+      ++table_.cells[ids[j]];
     }
-    map.unreliable += row_unreliable[static_cast<std::size_t>(i)];
+  }
+
+ private:
+  SystemPatternTable& table_;
+  std::map<std::vector<TypeTuple>, int> index_;
+};
+
+MapAxis as_map_axis(const SystemMapAxis& a) {
+  MapAxis m;
+  m.from = a.from;
+  m.to = a.to;
+  m.n = a.n;
+  return m;
+}
+
+void validate_axis(const SystemMapAxis& a) {
+  throw_if_invalid(as_map_axis(a).validate(), "map axis " + a.param.name());
+}
+
+/// Size of the rate LCP (the same in every row and cell: parameters do not change states).
+int checked_lcp_size(const ContactSystem& system) {
+  const int m = precompute_system_rate(system).m;
+  if (m > kMaxSystemMapLcp)
+    throw InputError("system: the rate LCP has size " + std::to_string(m) +
+                     " (3 per point in state b, 1 per point in state d); a map enumerates the "
+                     "2^m bases of its cells and accepts at most " +
+                     std::to_string(kMaxSystemMapLcp));
+  return m;
+}
+
+void check_common(const ContactSystem& system, const MapOptions& options) {
+  throw_if_invalid(system.validate(), "system");
+  throw_if_invalid(options.validate(), "map options");
+  if (options.method != RateMethod::kEnumerate)
+    throw InputError("map options: the N-point maps use the enumeration route only");
+}
+
+/// Rows per block: all rows without a sink; else about 2^20 cells, at least 4 rows per worker.
+int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
+  return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;
+}
+
+/// Classes of a cell's direction map (as compute_param_param_map for one point).
+struct CellClass {
+  uint8_t cls = 0;
+  int8_t lo = 0, hi = 0;
+  std::vector<TypeTuple> tuples;  ///< union over all directions, sorted
+};
+CellClass classify(const SystemDirectionMap& dm) {
+  auto rank = [](int c) { return c < 0 ? 1000 : c; };  // a continuum ranks above all counts
+  CellClass out;
+  int lo_rank = 1001, hi_rank = -1;
+  bool none = false, multiple = false;
+  auto visit = [&](const SystemRateSummary& s) {
+    const int r = rank(s.count);
+    if (r < lo_rank) { lo_rank = r; out.lo = static_cast<int8_t>(s.count); }
+    if (r > hi_rank) { hi_rank = r; out.hi = static_cast<int8_t>(s.count); }
+    for (int k = 0; k < std::min(s.n_tuples, SystemRateSummary::kCap); ++k)
+      out.tuples.push_back(s.tuples[static_cast<std::size_t>(k)]);
+    none = none || s.count == 0;
+    multiple = multiple || (s.count != 0 && s.count != 1);
+  };
+  for (const auto& s : dm.sectors) visit(s.summary);
+  for (const auto& c : dm.critical) visit(c.summary);
+  std::sort(out.tuples.begin(), out.tuples.end());
+  out.tuples.erase(std::unique(out.tuples.begin(), out.tuples.end()), out.tuples.end());
+  out.cls = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
+                                 : none           ? UniquenessClass::kNoSolutionSome
+                                 : multiple       ? UniquenessClass::kNonUniqueSome
+                                                  : UniquenessClass::kUniqueAll);
+  return out;
+}
+
+ContactSystem cell_system(const ContactSystem& base, const SystemMapAxis& a1, double x,
+                          const SystemMapAxis& a2, double y) {
+  return apply_system_map_parameter(apply_system_map_parameter(base, a1.param, x), a2.param, y);
+}
+
+}  // namespace
+
+SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& system,
+                                                           const SystemMapAxis& axis, int theta_n,
+                                                           const MapOptions& options,
+                                                           const MapProgress& progress,
+                                                           const SystemParamDirectionSink& sink) {
+  check_common(system, options);
+  validate_axis(axis);
+  if (theta_n < 1 || theta_n > 1000000)
+    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  const int n = axis.n;
+  if (!sink && static_cast<int64_t>(n) * theta_n > kMaxSystemMapCells)
+    throw InputError("the map has " + std::to_string(static_cast<int64_t>(n) * theta_n) +
+                     " cells; a map kept in memory accepts at most " +
+                     std::to_string(kMaxSystemMapCells) + " (stream it to files, or lower --n or "
+                     "--theta-n)");
+  const Stopwatch clock;
+  SystemParamDirectionMap map;
+  map.axis = axis;
+  map.theta_n = theta_n;
+  map.theta_from = options.theta_from;
+  map.theta_to = options.theta_to;
+  map.theta = map_theta_values(theta_n, options.theta_from, options.theta_to);
+  map.m_max = checked_lcp_size(system);
+  // Every row's system is validated before any cell is computed (the message names the value).
+  for (int i = 0; i < n; ++i) (void)apply_system_map_parameter(system, axis.param, axis.value(i));
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(system, e1, e2);
+  std::vector<Eigen::VectorXd> loads(static_cast<std::size_t>(theta_n));
+  for (int j = 0; j < theta_n; ++j)
+    loads[static_cast<std::size_t>(j)] = std::cos(map.theta[j]) * e1 + std::sin(map.theta[j]) * e2;
+
+  map.threads = resolve_threads(options.threads, n);
+  const int block_rows = block_rows_for(static_cast<bool>(sink), n, theta_n, map.threads);
+  const std::size_t buffer =
+      static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
+  std::vector<int8_t> count(buffer, 0);
+  std::vector<uint16_t> pattern(buffer, 0);
+  std::vector<RowPatterns> row_patterns(static_cast<std::size_t>(block_rows));
+  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(block_rows), 0);
+  PatternNumbering numbering(map.table);
+  std::array<GridClassBox, 128> boxes{};
+  int block_begin = 0;
+  auto row = [&](int i) {
+    const std::size_t r = static_cast<std::size_t>(i - block_begin);
+    const SystemRatePrecomputed pre =
+        precompute_system_rate(apply_system_map_parameter(system, axis.param, axis.value(i)));
+    RowPatterns& table = row_patterns[r];
+    table.list.clear();
+    row_unreliable[r] = 0;
+    const std::size_t base = r * static_cast<std::size_t>(theta_n);
+    for (int j = 0; j < theta_n; ++j) {
+      const SystemRateSummary s = summarize_rate_problem(pre, loads[static_cast<std::size_t>(j)]);
+      count[base + j] = static_cast<int8_t>(s.count);
+      pattern[base + j] = table.id(tuples_of(s));
+      row_unreliable[r] += !s.reliable;
+    }
+  };
+  for (block_begin = 0; block_begin < n; block_begin += block_rows) {
+    const int block_end = std::min(n, block_begin + block_rows);
+    run_items(block_begin, block_end, map.threads, row, [&](int done) {
+      if (progress) progress("cells", static_cast<double>(block_begin + done) / n);
+    });
+    for (int i = block_begin; i < block_end; ++i) {
+      const std::size_t r = static_cast<std::size_t>(i - block_begin);
+      const std::size_t base = r * static_cast<std::size_t>(theta_n);
+      numbering.merge_row(row_patterns[r], pattern.data() + base, theta_n);
+      for (int j = 0; j < theta_n; ++j)
+        boxes[static_cast<std::size_t>((count[base + j] + 1) & 127)].add(axis.value(i),
+                                                                         map.theta[j]);
+      map.unreliable += row_unreliable[r];
+    }
+    if (sink) {
+      SystemParamDirectionRows rows;
+      rows.row_begin = block_begin;
+      rows.row_end = block_end;
+      rows.count = count.data();
+      rows.pattern = pattern.data();
+      sink(rows);
+    }
+  }
+  if (progress) progress("cells", 1.0);
+  if (!sink) {
+    map.count = std::move(count);
+    map.pattern = std::move(pattern);
   }
   for (std::size_t c = 0; c < boxes.size(); ++c)
     if (boxes[c].cells > 0) {
       boxes[c].code = static_cast<int>(c) - 1;
       map.classes.push_back(boxes[c]);
     }
+  std::sort(map.classes.begin(), map.classes.end(),
+            [](const GridClassBox& a, const GridClassBox& b) { return a.code < b.code; });
   map.seconds = clock.seconds();
   return map;
+}
+
+SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
+                                                   const SystemMapAxis& axis1,
+                                                   const SystemMapAxis& axis2,
+                                                   const MapOptions& options,
+                                                   const MapProgress& progress,
+                                                   const SystemParamParamSink& sink) {
+  check_common(system, options);
+  validate_axis(axis1);
+  validate_axis(axis2);
+  if (axis1.param.name() == axis2.param.name())
+    throw InputError("param-param map: the two axes vary the same parameter '" +
+                     axis1.param.name() + "'");
+  const int n1 = axis1.n, n2 = axis2.n;
+  if (!sink && static_cast<int64_t>(n1) * n2 > kMaxSystemMapCells)
+    throw InputError("the map has " + std::to_string(static_cast<int64_t>(n1) * n2) +
+                     " cells; a map kept in memory accepts at most " +
+                     std::to_string(kMaxSystemMapCells));
+  const Stopwatch clock;
+  SystemParamParamMap map;
+  map.axis1 = axis1;
+  map.axis2 = axis2;
+  map.m_max = checked_lcp_size(system);
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(system, e1, e2);  // throws unless the patterns are independent
+  for (int i = 0; i < n1; ++i)
+    for (int j = 0; j < n2; ++j) (void)cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j));
+
+  map.threads = resolve_threads(options.threads, n1);
+  const int block_rows = block_rows_for(static_cast<bool>(sink), n1, n2, map.threads);
+  const std::size_t buffer = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
+  std::vector<uint8_t> cls(buffer, 0);
+  std::vector<int8_t> lo(buffer, 0), hi(buffer, 0);
+  std::vector<uint16_t> pattern(buffer, 0);
+  std::vector<RowPatterns> row_patterns(static_cast<std::size_t>(block_rows));
+  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(block_rows), 0);
+  std::vector<int64_t> row_inconsistent(row_unreliable);
+  PatternNumbering numbering(map.table);
+  std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
+  MapOptions cell_options;
+  cell_options.threads = 1;
+  int block_begin = 0;
+  auto row = [&](int i) {
+    const std::size_t r = static_cast<std::size_t>(i - block_begin);
+    row_patterns[r].list.clear();
+    row_unreliable[r] = row_inconsistent[r] = 0;
+    for (int j = 0; j < n2; ++j) {
+      const SystemDirectionMap dm = compute_system_direction_map(
+          cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j)), cell_options);
+      CellClass c = classify(dm);
+      const std::size_t k = r * static_cast<std::size_t>(n2) + static_cast<std::size_t>(j);
+      cls[k] = c.cls;
+      lo[k] = c.lo;
+      hi[k] = c.hi;
+      pattern[k] = row_patterns[r].id(std::move(c.tuples));
+      row_unreliable[r] += dm.unreliable;
+      row_inconsistent[r] += dm.inconsistent_sectors;
+    }
+  };
+  for (block_begin = 0; block_begin < n1; block_begin += block_rows) {
+    const int block_end = std::min(n1, block_begin + block_rows);
+    run_items(block_begin, block_end, map.threads, row, [&](int done) {
+      if (progress) progress("cells", static_cast<double>(block_begin + done) / n1);
+    });
+    for (int i = block_begin; i < block_end; ++i) {
+      const std::size_t r = static_cast<std::size_t>(i - block_begin);
+      const std::size_t base = r * static_cast<std::size_t>(n2);
+      numbering.merge_row(row_patterns[r], pattern.data() + base, n2);
+      for (int j = 0; j < n2; ++j) boxes[cls[base + j]].add(axis1.value(i), axis2.value(j));
+      map.unreliable += row_unreliable[r];
+      map.inconsistent_sectors += row_inconsistent[r];
+    }
+    if (sink) {
+      SystemParamParamRows rows;
+      rows.row_begin = block_begin;
+      rows.row_end = block_end;
+      rows.cls = cls.data();
+      rows.min_count = lo.data();
+      rows.max_count = hi.data();
+      rows.pattern = pattern.data();
+      sink(rows);
+    }
+  }
+  if (progress) progress("cells", 1.0);
+  if (!sink) {
+    map.cls = std::move(cls);
+    map.min_count = std::move(lo);
+    map.max_count = std::move(hi);
+    map.pattern = std::move(pattern);
+  }
+  for (std::size_t c = 0; c < boxes.size(); ++c)
+    if (boxes[c].cells > 0) {
+      boxes[c].code = static_cast<int>(c);
+      map.classes.push_back(boxes[c]);
+    }
+  map.seconds = clock.seconds();
+  return map;
+}
+
+namespace {
+/// Sample positions spread over [0, n): the ends, the middle, then quarters, eighths, ...
+std::vector<int> spread(int n, int max_count) {
+  std::vector<int> out;
+  auto add = [&](int i) {
+    if (static_cast<int>(out.size()) < max_count &&
+        std::find(out.begin(), out.end(), i) == out.end())
+      out.push_back(i);
+  };
+  add(0);
+  add(n - 1);
+  for (int parts = 2; parts <= 64 && static_cast<int>(out.size()) < std::min(n, max_count);
+       parts *= 2)
+    for (int k = 1; k < parts; k += 2) add(static_cast<int>(static_cast<int64_t>(n - 1) * k / parts));
+  return out;
+}
+constexpr double kSampleSeconds = 1.0;  // sampling stops once it has taken this long
+}  // namespace
+
+SystemMapEstimate estimate_system_param_direction_map(const ContactSystem& system,
+                                                      const SystemMapAxis& axis, int theta_n,
+                                                      const MapOptions& options) {
+  check_common(system, options);
+  validate_axis(axis);
+  if (theta_n < 1 || theta_n > 1000000)
+    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  checked_lcp_size(system);
+  SystemMapEstimate e;
+  e.cells = static_cast<double>(axis.n) * theta_n;
+  e.threads = resolve_threads(options.threads, axis.n);
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(system, e1, e2);
+  const std::vector<double> theta = map_theta_values(theta_n, options.theta_from, options.theta_to);
+  const std::vector<int> cols = spread(theta_n, 64);
+  const Stopwatch clock;
+  for (int i : spread(axis.n, 8)) {
+    const SystemRatePrecomputed pre =
+        precompute_system_rate(apply_system_map_parameter(system, axis.param, axis.value(i)));
+    for (int j : cols) {
+      const Eigen::VectorXd dF = std::cos(theta[j]) * e1 + std::sin(theta[j]) * e2;
+      (void)summarize_rate_problem(pre, dF);
+      ++e.sampled;
+    }
+    if (clock.seconds() > kSampleSeconds) break;
+  }
+  e.seconds = clock.seconds() / e.sampled * e.cells / e.threads;
+  return e;
+}
+
+SystemMapEstimate estimate_system_param_param_map(const ContactSystem& system,
+                                                  const SystemMapAxis& axis1,
+                                                  const SystemMapAxis& axis2,
+                                                  const MapOptions& options) {
+  check_common(system, options);
+  validate_axis(axis1);
+  validate_axis(axis2);
+  checked_lcp_size(system);
+  SystemMapEstimate e;
+  e.cells = static_cast<double>(axis1.n) * axis2.n;
+  e.threads = resolve_threads(options.threads, axis1.n);
+  MapOptions one;
+  one.threads = 1;
+  const std::vector<int> rows = spread(axis1.n, 3), cols = spread(axis2.n, 3);
+  const Stopwatch clock;
+  for (int i : rows) {
+    for (int j : cols) {
+      (void)compute_system_direction_map(
+          cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j)), one);
+      ++e.sampled;
+      if (clock.seconds() > kSampleSeconds) break;
+    }
+    if (clock.seconds() > kSampleSeconds) break;
+  }
+  e.seconds = clock.seconds() / e.sampled * e.cells / e.threads;
+  return e;
 }
 
 }  // namespace cpkit::rate

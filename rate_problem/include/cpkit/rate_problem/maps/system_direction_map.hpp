@@ -60,8 +60,9 @@ void system_map_patterns(const ContactSystem& system, Eigen::VectorXd& e1, Eigen
 /// complementary bases the map scans.
 inline constexpr int kMaxSystemMapLcp = 12;
 
-/// Computes the direction map. options.method must be kEnumerate (theta_from/theta_to and
-/// threads are not used). Throws InputError for an invalid system or options, patterns that are
+/// Computes the direction map. options.method must be kEnumerate; options.threads workers
+/// (0: all cores) scan the bases and evaluate the arcs, with a result that does not depend on
+/// their number; theta_from/theta_to are not used (the exact map covers the whole circle). Throws InputError for an invalid system or options, patterns that are
 /// linearly dependent (the directions would not sweep a plane), or an LCP larger than
 /// kMaxSystemMapLcp.
 SystemDirectionMap compute_system_direction_map(const ContactSystem& system,

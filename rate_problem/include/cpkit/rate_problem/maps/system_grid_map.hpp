@@ -1,10 +1,16 @@
 #pragma once
 /// \file system_grid_map.hpp
-/// The parameter x direction map of an N-point system (docs/maps.md, "N points"): rows are the
-/// values of one parameter of the system, columns the load directions
-/// dF(theta) = cos(theta) e1 + sin(theta) e2 (the system's patterns, system_map_patterns), and
-/// every cell holds the solution count of the N-point rate problem and its point-type pattern
-/// (the set of type tuples present), by complete enumeration (summarize_rate_problem).
+/// Grid maps of an N-point system (docs/maps.md, "N points"):
+///  - parameter x direction: rows are the values of one parameter of the system, columns the
+///    load directions dF(theta) = cos(theta) e1 + sin(theta) e2 (the system's patterns,
+///    system_map_patterns); every cell holds the solution count of the N-point rate problem and
+///    its point-type pattern (the set of type tuples present), by complete enumeration
+///    (summarize_rate_problem);
+///  - parameter x parameter: every cell is classified from its exact direction map
+///    (system_direction_map.hpp) as for one point (UniquenessClass), with the union of the type
+///    tuples met over all directions as its pattern.
+/// Rows are computed on threads in blocks; pattern ids are assigned in row order after each
+/// block, so every output is identical for any thread count. With a sink, memory is one block.
 ///
 /// Parameters: `mu`, `C_T`, `k_a`, `P_N` (of every point in state c or d; a d point keeps
 /// |P_T| = mu P_N with its sign), `coupling` c (A(c) = D + c (A - D), D the block diagonal of
@@ -17,6 +23,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 
@@ -39,36 +46,117 @@ SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points);
 ContactSystem apply_system_map_parameter(const ContactSystem& base, const SystemMapParameter& p,
                                          double value);
 
-struct SystemParamDirectionMap {
+/// An axis of an N-point map: `n` values of a system parameter from `from` to `to` inclusive.
+struct SystemMapAxis {
   SystemMapParameter param;
   double from = 0, to = 1;
-  int n = 0, theta_n = 0;
-  std::vector<double> theta;        ///< cell centres (j + 1/2) 2 pi / theta_n
-  std::vector<int8_t> count;        ///< [i * theta_n + j]; -1: a continuum
-  std::vector<uint16_t> pattern;    ///< [i * theta_n + j]: index into `patterns`
-  /// Distinct point-type patterns, numbered in order of first appearance (row-major), each the
-  /// sorted list of type tuples present in the cell (empty: no solution).
+  int n = 100;
+  double value(int i) const noexcept {
+    return n <= 1 ? from : from + (to - from) * static_cast<double>(i) / (n - 1);
+  }
+};
+
+/// Distinct point-type patterns of a map, numbered in order of first appearance (row-major).
+/// A pattern is a sorted list of type tuples (empty: no solution).
+struct SystemPatternTable {
   std::vector<std::vector<TypeTuple>> patterns;
-  std::vector<int64_t> pattern_cells;  ///< cells per pattern
+  std::vector<int64_t> cells;  ///< cells per pattern
+};
+
+/// Rows [row_begin, row_end) of an N-point parameter x direction map, row-major with theta_n
+/// columns; pattern ids index the map's pattern table (final: ids never change later).
+struct SystemParamDirectionRows {
+  int row_begin = 0, row_end = 0;
+  const int8_t* count = nullptr;
+  const uint16_t* pattern = nullptr;
+};
+using SystemParamDirectionSink = std::function<void(const SystemParamDirectionRows&)>;
+
+struct SystemParamDirectionMap {
+  SystemMapAxis axis;
+  int theta_n = 0;
+  double theta_from = 0, theta_to = 0;  ///< the sampled range (MapOptions)
+  std::vector<double> theta;        ///< cell centres theta_from + (j + 1/2) span / theta_n
+  std::vector<int8_t> count;        ///< [i * theta_n + j]; -1: a continuum (empty with a sink)
+  std::vector<uint16_t> pattern;    ///< [i * theta_n + j]: index into `table` (empty with a sink)
+  SystemPatternTable table;
   std::vector<GridClassBox> classes;   ///< per count (-1 first), bounding boxes (x, theta)
   int64_t unreliable = 0;  ///< cells the enumeration flagged as not decided (complete: false)
   int m_max = 0;           ///< largest rate LCP over the rows
   int threads = 1;
   double seconds = 0;
-  double value(int i) const noexcept {
-    return n <= 1 ? from : from + (to - from) * static_cast<double>(i) / (n - 1);
-  }
-  int64_t cells() const noexcept { return static_cast<int64_t>(n) * theta_n; }
+  int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
 };
 
-/// Largest number of cells of one map (the cells are kept in memory: 3 bytes each).
+/// Largest map kept in memory (without a sink): 3 bytes a cell. With a sink any size is
+/// streamed; memory is one block of rows.
 inline constexpr int64_t kMaxSystemMapCells = int64_t{1} << 26;
 
-/// Computes the map on `threads` workers (0: all cores); the result does not depend on the
-/// thread count. Throws InputError for an invalid axis (as MapAxis::validate), theta_n outside
-/// [1, 1000000], too many cells, or a row that is not a valid system.
+/// Computes the map: each cell by complete enumeration (summarize_rate_problem) of the row's
+/// system at dF(theta) = cos(theta) e1 + sin(theta) e2. options: threads (0: all cores) and the
+/// sampled range theta_from..theta_to; method must be kEnumerate. Without a sink the cells are
+/// kept in count/pattern; with one they are handed over block by block, in row order, and not
+/// kept. The result does not depend on the thread count. Throws InputError for an invalid axis
+/// (as MapAxis::validate), theta_n outside [1, 1000000], too many cells to keep, an LCP larger
+/// than kMaxSystemMapLcp, or a row that is not a valid system (naming the value).
 SystemParamDirectionMap compute_system_param_direction_map(
-    const ContactSystem& system, const SystemMapParameter& param, double from, double to, int n,
-    int theta_n, int threads = 0, const MapProgress& progress = {});
+    const ContactSystem& system, const SystemMapAxis& axis, int theta_n,
+    const MapOptions& options = {}, const MapProgress& progress = {},
+    const SystemParamDirectionSink& sink = {});
+
+/// Rows [row_begin, row_end) of an N-point parameter x parameter map, row-major with axis2.n
+/// columns (codes as ParamParamMap; pattern: the union of the type tuples over all directions).
+struct SystemParamParamRows {
+  int row_begin = 0, row_end = 0;
+  const uint8_t* cls = nullptr;  ///< UniquenessClass
+  const int8_t* min_count = nullptr;
+  const int8_t* max_count = nullptr;
+  const uint16_t* pattern = nullptr;
+};
+using SystemParamParamSink = std::function<void(const SystemParamParamRows&)>;
+
+struct SystemParamParamMap {
+  SystemMapAxis axis1, axis2;
+  std::vector<uint8_t> cls;       ///< [i * axis2.n + j] (empty with a sink)
+  std::vector<int8_t> min_count;  ///< over all directions (-1: a continuum)
+  std::vector<int8_t> max_count;  ///< over all directions (-1: a continuum)
+  std::vector<uint16_t> pattern;  ///< union of the type tuples over all directions
+  SystemPatternTable table;
+  std::vector<GridClassBox> classes;  ///< per UniquenessClass present, by code
+  int64_t unreliable = 0;             ///< direction-map evaluations too close to call
+  int64_t inconsistent_sectors = 0;   ///< direction-map sectors that are not uniform
+  int m_max = 0;
+  int threads = 1;
+  double seconds = 0;
+  int64_t cells() const noexcept { return static_cast<int64_t>(axis1.n) * axis2.n; }
+};
+
+/// Computes a parameter x parameter map, each cell classified from its exact direction map
+/// (compute_system_direction_map): unique for every direction, non-unique for some, no solution
+/// for some, or both. Sink, threads, determinism and errors as for the parameter x direction
+/// map; the two axes must name different parameters.
+SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
+                                                   const SystemMapAxis& axis1,
+                                                   const SystemMapAxis& axis2,
+                                                   const MapOptions& options = {},
+                                                   const MapProgress& progress = {},
+                                                   const SystemParamParamSink& sink = {});
+
+/// Up-front cost of a map: the cell phase's time extrapolated from a timed sample of the same
+/// map's cells (spread over the grid, one thread, stopped after about a second of sampling).
+/// Cells of one map can differ in cost by orders of magnitude: an estimate, not a bound.
+struct SystemMapEstimate {
+  double cells = 0;
+  double seconds = 0;  ///< on `threads` workers
+  int threads = 1;
+  int sampled = 0;     ///< cells timed
+};
+SystemMapEstimate estimate_system_param_direction_map(const ContactSystem& system,
+                                                      const SystemMapAxis& axis, int theta_n,
+                                                      const MapOptions& options = {});
+SystemMapEstimate estimate_system_param_param_map(const ContactSystem& system,
+                                                  const SystemMapAxis& axis1,
+                                                  const SystemMapAxis& axis2,
+                                                  const MapOptions& options = {});
 
 }  // namespace cpkit::rate

@@ -1,0 +1,149 @@
+// Shared by every `cpkit map` kind: progress, grid files, the plotting script (map_files.hpp).
+#include "map_files.hpp"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
+#include "data_files.hpp"
+#include "run_program.hpp"
+
+namespace cpkit::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplotlib is missing
+}  // namespace
+
+rate::MapProgress make_map_progress() {
+  struct State {
+    Stopwatch clock;
+    std::string phase;
+    bool printed = false;
+    int percent = -1;
+    double last = 0;
+  };
+  auto st = std::make_shared<State>();
+  return [st](std::string_view phase, double f) {
+    if (phase != st->phase) {
+      st->phase = std::string(phase);
+      st->printed = false;
+      st->percent = -1;
+    }
+    const double t = st->clock.seconds();
+    const int percent = static_cast<int>(100 * f);
+    // A new line only when the percentage changed (or every 5 s): short logs when redirected.
+    if (f < 1.0 && t > 1.0 && (percent != st->percent || t > st->last + 5.0)) {
+      st->percent = percent;
+      st->last = t;
+      std::cerr << "\rcpkit map: " << phase << ' ' << std::setw(3) << static_cast<int>(100 * f)
+                << "% (" << std::fixed << std::setprecision(1) << t << " s)" << std::defaultfloat
+                << std::flush;
+      st->printed = true;
+    } else if (f >= 1.0 && st->printed) {
+      std::cerr << "\rcpkit map: " << phase << " 100% (" << std::fixed << std::setprecision(1)
+                << t << " s)" << std::defaultfloat << '\n';
+      st->printed = false;
+    }
+  };
+}
+
+void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write '" + path + "'");
+  fn(f);
+  if (!f) throw InputError("error writing '" + path + "'");
+}
+
+bool run_map_plot(const std::string& prefix, nlohmann::json& files) {
+  std::string searched;
+  const std::string script = find_data_file("cpkit_plot.py", &searched);
+  if (script.empty()) {
+    std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
+              << "); the data is in " << prefix << ".json and the files it lists\n";
+    return false;
+  }
+  const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
+  const std::string cmd = command_text(argv);
+  const ProgramRun pr = run_program(argv, true);
+  const int code = pr.started ? pr.exit_code : -1;
+  if (code == 0) {
+    files["png"] = fs::path(prefix + ".png").filename().string();
+    files["svg"] = fs::path(prefix + ".svg").filename().string();
+    std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
+    return true;
+  }
+  if (code == kPlotNoMatplotlib) {
+    std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
+              << ". The data was written (" << prefix
+              << ".json and the files it lists). To get the picture install matplotlib (Debian: "
+                 "apt-get install python3-matplotlib) and run:\n  "
+              << cmd << '\n';
+  } else {
+    std::cerr << "cpkit map: the plotting script failed ("
+              << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
+              << "); the data was written. Command:\n  " << cmd << '\n';
+  }
+  return false;
+}
+
+GridFiles::GridFiles(std::string prefix, nlohmann::json& files)
+    : prefix_(std::move(prefix)), name_(fs::path(prefix_).filename().string()), files_(files) {}
+
+void GridFiles::add_npy(const std::string& key, const char* descr, int64_t rows, int64_t cols,
+                        int item_bytes) {
+  npy_.push_back(std::make_unique<rate::NpyWriter>(prefix_ + "_" + key + ".npy", descr,
+                                                   std::vector<int64_t>{rows, cols}, item_bytes));
+  files_[key] = name_ + "_" + key + ".npy";
+}
+
+void GridFiles::write_vector(const std::string& key, const std::vector<double>& v) {
+  files_[key] = name_ + "_" + key + ".npy";
+  rate::write_npy_vector(prefix_ + "_" + key + ".npy", v);
+}
+
+std::ostream& GridFiles::open_csv() {
+  csv_.open(prefix_ + ".csv");
+  if (!csv_) throw InputError("cannot write '" + prefix_ + ".csv'");
+  files_["csv"] = name_ + ".csv";
+  return csv_;
+}
+
+void GridFiles::append(std::initializer_list<const void*> arrays, int64_t cells) {
+  std::size_t k = 0;
+  for (const void* p : arrays)
+    if (p && k < npy_.size()) npy_[k++]->append(p, cells);
+}
+
+void GridFiles::finish() {
+  for (auto& w : npy_) w->finish();
+  if (csv_.is_open()) {
+    csv_.close();
+    if (!csv_) throw InputError("error writing '" + prefix_ + ".csv' (disk full?)");
+  }
+}
+
+void GridFiles::discard() {
+  npy_.clear();
+  if (csv_.is_open()) csv_.close();
+  for (const auto& [key, file] : files_.items()) {
+    std::error_code ec;
+    fs::remove(fs::path(prefix_).parent_path() / file.get<std::string>(), ec);
+  }
+}
+
+void prepare_out_prefix(const std::string& prefix) {
+  if (fs::path(prefix).filename().empty())
+    throw InputError("--out needs a file prefix such as out/map (got '" + prefix + "')");
+  const fs::path parent = fs::path(prefix).parent_path();
+  if (!parent.empty()) {
+    std::error_code ec;
+    fs::create_directories(parent, ec);
+    if (ec) throw InputError("cannot create the output folder '" + parent.string() + "'");
+  }
+}
+
+}  // namespace cpkit::cli

@@ -1,0 +1,64 @@
+#pragma once
+// What every `cpkit map` kind shares (map_command.cpp: one point; map_system.cpp: N points):
+// progress on stderr, the files of a grid map written while its cells are computed, the
+// plotting script.
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <memory>
+#include <ostream>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/npy_writer.hpp"
+
+namespace cpkit::cli {
+
+/// Prints "\rcpkit map: cells 40% (1.2 s)" on stderr for every phase once the map has run for
+/// more than a second, and the phase's final line at 100 %.
+rate::MapProgress make_map_progress();
+
+/// Writes a text file through fn; throws InputError naming the file when it cannot be written.
+void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn);
+
+/// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
+/// written either way; the caller then exits 4: a requested plot that fails is a failure).
+/// Adds "png" and "svg" to `files` on success.
+bool run_map_plot(const std::string& prefix, nlohmann::json& files);
+
+/// The cell files of a grid map under PREFIX: .npy arrays appended block by block (or one CSV),
+/// each recorded in `files` under its key (file names relative to PREFIX's folder). A map that
+/// fails part-way calls discard(): no partial file stays behind.
+class GridFiles {
+ public:
+  GridFiles(std::string prefix, nlohmann::json& files);
+  /// PREFIX_<key>.npy, rows x cols items of item_bytes (descr "|i1", "|u1", "<u2").
+  void add_npy(const std::string& key, const char* descr, int64_t rows, int64_t cols,
+               int item_bytes = 1);
+  /// PREFIX_<key>.npy written at once (axis values).
+  void write_vector(const std::string& key, const std::vector<double>& v);
+  /// PREFIX.csv, opened for writing.
+  std::ostream& open_csv();
+  bool has_csv() const { return csv_.is_open(); }
+  std::ostream& csv() { return csv_; }
+  /// Appends `cells` items of each array to the .npy files in the order they were added
+  /// (nullptr entries are skipped).
+  void append(std::initializer_list<const void*> arrays, int64_t cells);
+  void finish();
+  void discard();
+
+ private:
+  std::string prefix_, name_;
+  nlohmann::json& files_;
+  std::vector<std::unique_ptr<rate::NpyWriter>> npy_;
+  std::ofstream csv_;
+};
+
+/// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.
+void prepare_out_prefix(const std::string& prefix);
+
+}  // namespace cpkit::cli
