@@ -12,7 +12,10 @@ PREFIX.png and PREFIX.svg:
                    the combination of solution types (right), with the analytic critical values
                    (a11 = mu|a12| in state b, Lambda = 0 in state d) and the exact critical
                    directions drawn over it;
-  param-param      unique / non-unique / no-solution / none-and-several classes with the analytic critical curve.
+  param-param      unique / non-unique / no-solution / none-and-several classes with the analytic critical curve;
+  N-point maps     (`cpkit map --system`) param-direction: the count per cell (left) and the
+                   point-type pattern, the type tuples present (right); param-param: the class
+                   over all directions (left) and the union of the patterns (right).
 Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
 Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
@@ -323,6 +326,135 @@ def plot_param_param(summary, base, plt):
     return fig
 
 
+def load_system_grid(summary, base):
+    """(x, y, first array (count or class code), pattern id) of an N-point grid map, [n, m]."""
+    import numpy as np
+    files, inp = summary["files"], summary["input"]
+    pd = summary["kind"] == "param-direction"
+    n, m = inp["n"], inp["theta_n"] if pd else inp["n2"]
+    first = "count" if pd else "class"
+    if first in files:
+        a = np.load(os.path.join(base, files[first]), mmap_mode="r")
+        pat = np.load(os.path.join(base, files["pattern"]), mmap_mode="r")
+        if a.shape != (n, m) or pat.shape != (n, m):
+            fail("%s has shape %s, the summary says (%d, %d)" % (files[first], a.shape, n, m))
+        si, sj = stride(n), stride(m)
+        xs = np.load(os.path.join(base, files["x"]))[::si]
+        ys = np.load(os.path.join(base, files["theta" if pd else "y"]))[::sj]
+        return xs, ys, np.asarray(a[::si, ::sj]).astype(int), np.asarray(pat[::si, ::sj]).astype(int)
+    rows = read_csv(os.path.join(base, files["csv"]))[1:]
+    if len(rows) != n * m:
+        fail("CSV has %d cells, the summary says %d" % (len(rows), n * m))
+    classes = ["unique", "non-unique", "no-solution", "none-and-several"]
+    xs = np.array([float(rows[i * m][0]) for i in range(n)])
+    ys = np.array([float(rows[j][1]) for j in range(m)])
+    if pd:
+        a = np.array([-1 if r[2] == "inf" else int(r[2]) for r in rows])
+    else:
+        a = np.array([classes.index(r[2]) for r in rows])
+    pat = np.array([int(r[-1]) for r in rows])
+    return xs, ys, a.reshape(n, m), pat.reshape(n, m)
+
+
+def plot_system_grid(summary, base, plt):
+    """N points: the count (param-direction) or class (param-param) per cell, left, and the
+    point-type pattern per cell (the type tuples present), right."""
+    import numpy as np
+    from matplotlib.colors import ListedColormap, BoundaryNorm
+    from matplotlib.patches import Patch
+    inp = summary["input"]
+    pd = summary["kind"] == "param-direction"
+    xs, ys, a, pat = load_system_grid(summary, base)
+    def edges(v, lo=None, hi=None):
+        if len(v) == 1:
+            return np.array([v[0] - 0.5, v[0] + 0.5])
+        mid = 0.5 * (v[1:] + v[:-1])
+        e = np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+        if lo is not None:
+            e[0], e[-1] = lo, hi
+        return e
+    if pd:
+        y_lo, y_hi = inp.get("theta_from", 0.0), inp.get("theta_to", 2 * math.pi)
+        xe, ye = edges(xs), edges(ys, y_lo, y_hi)
+    else:
+        xe, ye = edges(xs), edges(ys)
+    fig, axes = plt.subplots(1, 2, figsize=(14, 6), sharey=True)
+    if pd:
+        keys = sorted({count_key(int(c)) for c in np.unique(a)},
+                      key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
+        kidx = {k: i for i, k in enumerate(keys)}
+        left = np.vectorize(lambda c: kidx[count_key(int(c))])(a).T
+        cols = [COUNT_COLOURS.get(k, "#777777") for k in keys]
+        h0 = [Patch(facecolor=cols[i], edgecolor="#999999",
+                    label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
+                    else "continuum") for i, k in enumerate(keys)]
+        axes[0].set_title("number of solutions")
+    else:
+        classes = ["unique", "non-unique", "no-solution", "none-and-several"]
+        present = sorted({int(c) for c in np.unique(a)})
+        kidx = {c: i for i, c in enumerate(present)}
+        left = np.vectorize(lambda c: kidx[int(c)])(a).T
+        cols = [CLASS_COLOURS[classes[c]] for c in present]
+        h0 = [Patch(facecolor=cols[i], edgecolor="#999999", label=CLASS_LABELS[classes[c]])
+              for i, c in enumerate(present)]
+        axes[0].set_title("over all load directions")
+    axes[0].pcolormesh(xe, ye, left, cmap=ListedColormap(cols),
+                       norm=BoundaryNorm(np.arange(len(cols) + 1) - 0.5, len(cols)),
+                       shading="flat", rasterized=True)
+    axes[0].legend(handles=h0, fontsize=8, loc="upper left", framealpha=0.9)
+    # Patterns: the most frequent ones (in the whole map) get colours, the rest is "other".
+    table = {p["id"]: p for p in summary["patterns"]}
+    shown_ids = sorted({int(p) for p in np.unique(pat)},
+                       key=lambda i: -table[i]["cells"] if i in table else 0)
+    palette = ["#4c72b0", "#55a868", "#dd8452", "#8172b3", "#937860", "#da8bc3", "#ccb974",
+               "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf", "#bcbd22"]
+    colour, labels, k = {}, {}, 0
+    for i in shown_ids:
+        types = table[i]["types"] if i in table else []
+        if not types:
+            colour[i], labels[i] = "#d62728", "no solution"
+        elif k < len(palette):
+            colour[i] = palette[k]
+            text = ", ".join(types)
+            labels[i] = text if len(text) <= 70 else text[:67] + "..."
+            k += 1
+        else:
+            colour[i] = "#8c8c8c"
+            labels[i] = "other patterns"
+    order = {i: n for n, i in enumerate(shown_ids)}
+    right = np.vectorize(lambda p: order[int(p)])(pat).T
+    axes[1].pcolormesh(xe, ye, right, cmap=ListedColormap([colour[i] for i in shown_ids]),
+                       norm=BoundaryNorm(np.arange(len(shown_ids) + 1) - 0.5, len(shown_ids)),
+                       shading="flat", rasterized=True)
+    seen, h1 = set(), []
+    for i in shown_ids:
+        if labels[i] in seen:
+            continue
+        seen.add(labels[i])
+        h1.append(Patch(facecolor=colour[i], edgecolor="#999999", label=labels[i]))
+    axes[1].legend(handles=h1, fontsize=7, loc="upper left", framealpha=0.9,
+                   title="type tuples present (point 1/point 2/...)", title_fontsize=7)
+    axes[1].set_title("point-type pattern" + ("" if pd else " (union over directions)"))
+    for ax in axes:
+        ax.set_xlabel(inp["param"])
+        ax.set_xlim(xe[0], xe[-1])
+        ax.set_ylim(ye[0], ye[-1])
+    if pd:
+        axes[0].set_ylabel(r"load direction $\theta$ ($\dot F = \cos\theta\, e_1 + \sin\theta\, e_2$)")
+        if y_lo == 0 and abs(y_hi - 2 * math.pi) < 1e-12:
+            axes[0].set_yticks([0, math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi])
+            axes[0].set_yticklabels(["0", r"$\pi/2$", r"$\pi$", r"$3\pi/2$", r"$2\pi$"])
+    else:
+        axes[0].set_ylabel(inp["param2"])
+    fig.suptitle("%s: %d points, %s (%d x %d cells%s)" %
+                 (inp.get("name") or os.path.basename(inp["system"]), inp["n_points"],
+                  "parameter x load direction" if pd else "parameter x parameter",
+                  a.shape[0], a.shape[1], "" if summary.get("complete", True)
+                  else "; NOT proved complete"), fontsize=10.5)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    return fig
+
+
 def main(argv):
     args = argv[1:]
     if not args or args[0] in ("-h", "--help"):
@@ -359,7 +491,10 @@ def main(argv):
     if out is None:
         out = src[:-5] if src.endswith(".json") else src
     kind = summary.get("kind")
-    if kind == "direction":
+    if isinstance(summary.get("input"), dict) and "system" in summary["input"] and \
+            kind in ("param-direction", "param-param"):
+        fig = plot_system_grid(summary, base, plt)
+    elif kind == "direction":
         fig = plot_direction(summary, base, plt)
     elif kind == "param-direction":
         fig = plot_param_direction(summary, base, plt)

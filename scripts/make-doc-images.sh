@@ -13,7 +13,14 @@ trap 'rm -rf "$tmp"' EXIT
   --theta-n 720 --out "$tmp/mu_direction" --plot
 "$cpkit" map --preset state-d --out "$tmp/state_d" --plot
 "$cpkit" map --preset state-d-mu-kappa --out "$tmp/state_d_mu_kappa" --plot
-for name in fig5a fig5b mu_direction state_d state_d_mu_kappa; do
+# N points (docs/maps.md, "N points"): two grazing points whose coupling creates non-uniqueness
+grazing="$root/docs/examples/coupled_grazing_points.json"
+"$cpkit" map --system "$grazing" --kind param-direction --param coupling --from 0 --to 1 \
+  --n 200 --theta-n 360 --out "$tmp/coupled_points_coupling_direction" --plot
+"$cpkit" map --system "$grazing" --kind param-param --param coupling --from 0 --to 1 --n 40 \
+  --param2 mu --from2 0.2 --to2 2 --n2 40 --out "$tmp/coupled_points_coupling_mu" --plot
+for name in fig5a fig5b mu_direction state_d state_d_mu_kappa coupled_points_coupling_direction \
+    coupled_points_coupling_mu; do
   cp "$tmp/$name.png" "$root/docs/images/$name.png"
 done
-echo "docs/images/: fig5a fig5b mu_direction state_d state_d_mu_kappa redrawn"
+echo "docs/images/: fig5a fig5b mu_direction state_d state_d_mu_kappa coupled_points_* redrawn"

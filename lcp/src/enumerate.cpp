@@ -44,6 +44,10 @@ constexpr double kPivotTol = 1e-10;  // tableau pivot threshold, relative to its
 // column can raise it (T(r, c) > tol * max_c |T(r, c)|). The q part and the T part are measured
 // separately: they have different units, and a tiny T(r, c) > 0 can raise any q'_r < 0.
 constexpr double kPruneTol = 1e-9;
+// Relative round-off allowed in a tableau coefficient (against its row's largest entry) when
+// bounding the round-off of q': kPruneTol * kCoefNoise (1e-15) is above the few-ulp error of a
+// coefficient after a few pivots, so noise never proves infeasibility (only costs pruning).
+constexpr double kCoefNoise = 1e-6;
 constexpr double kLeafTol = 1e-8;    // leaf pre-filter (the decision is made on a fresh solve)
 
 /// The wall-clock limit shared by every phase (search, pieces, post-processing).
@@ -257,7 +261,11 @@ class Engine {
       const double f = ri[c];
       if (f == 0) continue;
       L.qv[i] += f * L.qv[r];
-      L.qmag[i] += std::abs(f) * L.qmag[r];
+      // f itself carries round-off from earlier pivots, up to a small multiple of eps times
+      // the row's magnitude: a coefficient that should be 0 (paired columns c, -c) comes out
+      // as 1e-17 and moves q'_i by f q'_r. The magnitude must cover that, or the prune test
+      // below would read the noise as a proof of infeasibility (a missed solution).
+      L.qmag[i] += std::max(std::abs(f), kCoefNoise * L.row_scale[i]) * L.qmag[r];
       double si = 0;
       for (int k = 0; k < n_; ++k) {
         ri[k] += f * row[k];

@@ -210,3 +210,61 @@ TEST_CASE("system direction map: bad input", "[rate][maps][system]") {
   big.A = Eigen::MatrixXd::Identity(12, 12);
   CHECK_THROWS_WITH(compute_system_direction_map(big), Catch::Contains("at most"));
 }
+
+TEST_CASE("system rate problem on critical directions: degenerate LCPs keep their solutions",
+          "[rate][maps][system]") {
+  // On a direction where a point's stick-trial slip rate vanishes, q has exact zeros in the
+  // rows of its (l+, l-) pair, whose columns are exact negatives of each other: a degenerate LCP
+  // (found by a parameter x parameter map: the tree search pruned on rounding noise 1e-17 and
+  // reported "no solution", complete, where a solution exists). Independent check: a
+  // floating-point brute force over all complementary bases; whenever it finds a solution the
+  // enumeration must report at least one.
+  std::mt19937 rng(808);
+  int checked = 0, with_solution = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const int N = 2;
+    ContactSystem S;
+    for (int i = 0; i < N; ++i)
+      S.points.push_back(random_point(rng, trial % 3 == 2 ? random_label(rng) : StateLabel::kB));
+    S.A = random_spd(rng, 2 * N);
+    if (!S.validate().empty()) continue;
+    const SystemRatePrecomputed pre = precompute_system_rate(S);
+    if (pre.m == 0) continue;
+    Eigen::MatrixXd E(2 * N, 2);
+    E.setZero();
+    for (int i = 0; i < N; ++i) {
+      E(2 * i, 0) = 1;
+      E(2 * i + 1, 1) = 1;
+    }
+    const Eigen::MatrixXd QE = pre.Q * E;
+    for (int r = 0; r < pre.m; ++r) {
+      const double t0 = std::atan2(-QE(r, 0), QE(r, 1));  // q_r(theta) = 0
+      for (double th : {t0, t0 + M_PI}) {
+        const Eigen::VectorXd dF = E.col(0) * std::cos(th) + E.col(1) * std::sin(th);
+        // q as the rate problem forms it: entries that are rounding noise of their terms are 0
+        Eigen::VectorXd q = pre.Q * dF;
+        const Eigen::VectorXd terms = pre.G.cwiseAbs() * (pre.Pf.cwiseAbs() * dF.cwiseAbs());
+        for (int k = 0; k < pre.m; ++k)
+          if (std::abs(q(k)) <= 1e-10 * terms(k)) q(k) = 0;
+        bool exists = false;
+        for (unsigned B = 0; B < (1u << pre.m) && !exists; ++B) {
+          Eigen::MatrixXd Bm(pre.m, pre.m);
+          for (int i = 0; i < pre.m; ++i)
+            Bm.col(i) = ((B >> i) & 1u) ? Eigen::VectorXd(-pre.M.col(i))
+                                        : Eigen::VectorXd(Eigen::VectorXd::Unit(pre.m, i));
+          Eigen::FullPivLU<Eigen::MatrixXd> lu(Bm);
+          if (!lu.isInvertible()) continue;
+          const Eigen::VectorXd x = lu.solve(q);
+          exists = x.minCoeff() >= -1e-9 * (1 + x.cwiseAbs().maxCoeff());
+        }
+        const SystemRateSummary s = summarize_rate_problem(pre, dF);
+        INFO("trial " << trial << " row " << r << " theta " << th);
+        if (exists) REQUIRE(s.count != 0);
+        ++checked;
+        with_solution += exists;
+      }
+    }
+  }
+  CHECK(checked > 500);
+  CHECK(with_solution > 100);
+}
