@@ -1,7 +1,10 @@
-// `cpkit map --system FILE --kind direction`: against the one-point map (an uncoupled stick
-// point does not change the other point's map), the JSON layout, bad input.
+// `cpkit map --system FILE`: the direction map against the one-point map (an uncoupled stick
+// point does not change the other point's map), the grid maps (npy = CSV through numpy, N = 1
+// param-param = the one-point map, pictures, refusals), the JSON layout, bad input.
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <cstdlib>
+#include <filesystem>
 #include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -165,5 +168,158 @@ TEST_CASE("cpkit map --system --kind param-direction: one-point product at coupl
     INFO(bad << ": " << e.err);
     CHECK(e.code == 2);
     CHECK(!e.err.empty());
+  }
+}
+
+namespace {
+bool have_numpy() {
+  return std::system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") == 0;
+}
+// One grazing point with the one-point Fig. 5b data: an N = 1 system.
+const char* kFig5bAlone = R"({"name": "fig5b alone", "A": [[1, 2], [2, 5]], "points": [{"state": "b", "mu": 1}]})";
+}  // namespace
+
+TEST_CASE("cpkit map --system grid maps: .npy files read by numpy equal the CSV of the same map",
+          "[cli][map][system][npy]") {
+  if (!have_numpy()) {
+    WARN("skipped: /usr/bin/python3 has no numpy (Debian: apt-get install python3-numpy)");
+    return;
+  }
+  const std::string f = write_system("map_npy.json", kSystem);
+  for (const std::string kind : {"param-direction", "param-param"}) {
+    CAPTURE(kind);
+    const auto dir = cpkit::test::scratch_dir();
+    const std::string a = (dir / ("sys_npy_" + kind)).string(), b = (dir / ("sys_csv_" + kind)).string();
+    const std::string common =
+        kind == "param-direction"
+            ? "map --system " + f + " --kind param-direction --param mu@1 --from 0.5 --to 3 --n 13 --theta-n 37 --out "
+            : "map --system " + f + " --kind param-param --param mu@1 --from 0.5 --to 3 --n 7 --param2 coupling --from2 0 --to2 1 --n2 5 --out ";
+    const auto ra = cpkit::test::run_cpkit(common + "'" + a + "'");
+    INFO(ra.err);
+    REQUIRE(ra.code == 0);
+    const auto rb = cpkit::test::run_cpkit(common + "'" + b + "' --format csv");
+    REQUIRE(rb.code == 0);
+    const auto j = nlohmann::json::parse(cpkit::test::slurp(a + ".json"));
+    CHECK(j["format"] == "npy");
+    CHECK(j.contains("run"));
+    CHECK(!j["files"].contains("csv"));
+    const auto script = dir / "compare_sys_npy.py";
+    std::ofstream(script) << R"(import csv, json, sys, numpy as np
+pre_npy, pre_csv, kind = sys.argv[1], sys.argv[2], sys.argv[3]
+s = json.load(open(pre_npy + ".json"))
+rows = list(csv.reader(open(pre_csv + ".csv")))[1:]
+d = pre_npy.rsplit("/", 1)[0] + "/"
+load = lambda key: np.load(d + s["files"][key])
+inp = s["input"]
+cnt = lambda c: "inf" if c < 0 else str(c)
+pat = load("pattern")
+assert pat.dtype == np.uint16, pat.dtype
+assert len(rows) == s["cells"]
+assert int(pat.max()) < len(s["patterns"])
+# the pattern table's cell counts are the array's
+for p in s["patterns"]:
+    assert int((pat == p["id"]).sum()) == p["cells"], p
+if kind == "param-direction":
+    c, x, th = load("count"), load("x"), load("theta")
+    assert c.dtype == np.int8 and c.shape == (inp["n"], inp["theta_n"]), c.shape
+    for k, r in enumerate(rows):
+        i, jj = divmod(k, c.shape[1])
+        assert abs(float(r[0]) - x[i]) <= 1e-12 * max(1, abs(x[i])), (r, x[i])
+        assert abs(float(r[1]) - th[jj]) <= 1e-12 * max(1, th[jj]), (r, th[jj])
+        assert r[2] == cnt(c[i, jj]) and int(r[3]) == pat[i, jj], r
+else:
+    cl, lo, hi, x, y = load("class"), load("min_count"), load("max_count"), load("x"), load("y")
+    codes = {v: k for k, v in s["class_codes"].items()}
+    assert cl.shape == (inp["n"], inp["n2"]) and pat.shape == cl.shape
+    for k, r in enumerate(rows):
+        i, jj = divmod(k, cl.shape[1])
+        assert abs(float(r[0]) - x[i]) <= 1e-12 * max(1, abs(x[i])) and abs(float(r[1]) - y[jj]) <= 1e-12
+        assert r[2] == codes[int(cl[i, jj])] and r[3] == cnt(lo[i, jj]) and r[4] == cnt(hi[i, jj]), r
+        assert int(r[5]) == pat[i, jj], r
+)";
+    const int rc = std::system(("/usr/bin/python3 '" + script.string() + "' '" + a + "' '" + b + "' " + kind).c_str());
+    CHECK(rc == 0);
+  }
+}
+
+TEST_CASE("cpkit map --system --kind param-param: N = 1 equals the one-point param-param map",
+          "[cli][map][system]") {
+  // The one-point map decides each cell from the closed-form direction map; the system map from
+  // the N-point exact direction map. Same grid (mu x C_T), same classes and count ranges.
+  const std::string f = write_system("map_fig5b_alone.json", kFig5bAlone);
+  const auto sys = cpkit::test::run_cpkit("map --system " + f + " --kind param-param --param mu "
+                                          "--from 0.2 --to 3 --n 8 --param2 C_T --from2 0 --to2 2 --n2 5 --json");
+  INFO(sys.err);
+  REQUIRE(sys.code == 0);
+  const auto one = cpkit::test::run_cpkit("map --a11 1 --a12 2 --a22 5 --state b --kind param-param "
+                                          "--param mu --from 0.2 --to 3 --n 8 --param2 C_T --from2 0 --to2 2 --n2 5 --json");
+  INFO(one.err);
+  REQUIRE(one.code == 0);
+  const auto j = nlohmann::json::parse(sys.out), k = nlohmann::json::parse(one.out);
+  CHECK(j["complete"] == true);
+  std::map<std::string, long> a, b;
+  for (const auto& c : j["classes"]) a[c["class"].get<std::string>()] = c["cells"].get<long>();
+  for (const auto& c : k["classes"]) b[c["class"].get<std::string>()] = c["cells"].get<long>();
+  CHECK(a == b);
+  CHECK(a.size() >= 2);  // Fig. 5b: unique below mu = a11/a12 = 0.5, not above
+}
+
+TEST_CASE("cpkit map --system grid maps: pictures, refusals, no partial files", "[cli][map][system]") {
+  const std::string f = write_system("map_grid_opts.json", kSystem);
+  const auto dir = cpkit::test::scratch_dir();
+  namespace fs = std::filesystem;
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0) {
+    for (const std::string kind : {"param-direction", "param-param"}) {
+      const std::string p = (dir / ("sys_plot_" + kind)).string();
+      const auto r = cpkit::test::run_cpkit(
+          "map --system " + f + " --kind " + kind + " --param mu@1 --from 0.5 --to 3 --n 6 " +
+          (kind == "param-param" ? "--param2 mu@2 --from2 0.5 --to2 2 --n2 4" : "--theta-n 24") +
+          " --out '" + p + "' --plot");
+      INFO(kind << ": " << r.err);
+      CHECK(r.code == 0);
+      CHECK(fs::file_size(p + ".png") > 10000);
+      CHECK(fs::exists(p + ".svg"));
+      const auto j = nlohmann::json::parse(cpkit::test::slurp(p + ".json"));
+      CHECK(j["files"]["png"] == "sys_plot_" + kind + ".png");
+    }
+  } else {
+    WARN("pictures not checked: /usr/bin/python3 has no matplotlib");
+  }
+  // a zoomed direction range is recorded and the directions lie in it
+  const auto z = cpkit::test::run_cpkit("map --system " + f + " --kind param-direction --param mu --from 1 "
+                                        "--to 2 --n 2 --theta-n 10 --theta-from 0.5 --theta-to 0.6 --json");
+  INFO(z.err);
+  REQUIRE(z.code == 0);
+  const auto jz = nlohmann::json::parse(z.out);
+  CHECK(jz["input"]["theta_from"] == 0.5);
+  for (const auto& c : jz["counts"]) {
+    CHECK(c["theta_min"].get<double>() > 0.5);
+    CHECK(c["theta_max"].get<double>() < 0.6);
+  }
+  // refused before any cell: 1e11 cells cannot be done in 60 s (that would be 1.7e9 cells/s)
+  const auto t = cpkit::test::run_cpkit("map --system " + f + " --kind param-direction --param mu --from 1 "
+                                        "--to 2 --n 100000 --theta-n 1000000 --time-limit 60");
+  CHECK(t.code == 2);
+  CHECK(t.err.find("--time-limit") != std::string::npos);
+  CHECK(t.out.empty());
+  // an invalid row (mu@1 = -1, the first grid value) is named; no partial files
+  const std::string bad = (dir / "sys_bad_row").string();
+  const auto b = cpkit::test::run_cpkit("map --system " + f + " --kind param-param --param mu@1 --from -1 "
+                                        "--to 2 --n 3 --param2 coupling --from2 0 --to2 1 --n2 6 --out '" + bad + "'");
+  CHECK(b.code == 2);
+  CHECK(b.err.find("mu@1 = -1") != std::string::npos);
+  for (const char* s : {"_class.npy", "_pattern.npy", "_x.npy", ".json"}) CHECK_FALSE(fs::exists(bad + s));
+  for (const char* opt : {" --kind param-param --param mu --from 1 --to 2 --param2 C_T --from2 0 --to2 1 --theta-n 5",
+                          " --kind param-param --param mu --from 1 --to 2 --param2 mu --from2 0 --to2 1",
+                          " --kind param-direction --param mu --from 1 --to 2 --plot",
+                          " --kind param-direction --param mu --from 1 --to 2 --format csv",
+                          " --kind param-direction --param mu --from 1 --to 2 --format npz --out x",
+                          " --kind direction --plot --out x",
+                          " --kind param-direction --param mu --from 1 --to 2 --theta-from 1 --theta-to 8"}) {
+    const auto e = cpkit::test::run_cpkit("map --system " + f + opt);
+    INFO(opt << ": " << e.err);
+    CHECK(e.code == 2);
+    CHECK(!e.err.empty());
+    CHECK(e.out.empty());
   }
 }
