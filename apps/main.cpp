@@ -1,4 +1,5 @@
 // cpkit: the command-line program. Thin: parse, call the library, print.
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -7,12 +8,16 @@
 #include "blas_threads.hpp"
 #include "cli_common.hpp"
 #include "cli_options.hpp"
+#include "mpi_session.hpp"
 #include "run_echo.hpp"
 #include "cpkit/core/errors.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+/// Runs the command line; returns the exit code. Under mpirun every rank runs it; only rank 0
+/// prints errors (they are the same on every rank: the input is).
+int run(int argc, char** argv) {
   using namespace cpkit::cli;
-  use_one_blas_thread();
   CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
   // Defaults are recorded so that JSON results can echo every option used (run_echo.hpp).
   app.option_defaults()->always_capture_default();
@@ -53,4 +58,31 @@ int main(int argc, char** argv) {
     return kExitInternal;
   }
   return ctx.exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cpkit::cli;
+  use_one_blas_thread();
+  try {
+    mpi::init(&argc, &argv);
+  } catch (const cpkit::InputError& e) {
+    std::cerr << "cpkit: bad input: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  if (mpi::rank() != 0) {
+    // Other ranks stay quiet: rank 0 reports (the maps send every result to it).
+    std::cout.setstate(std::ios::failbit);
+    std::cerr.setstate(std::ios::failbit);
+  }
+  if (mpi::size() > 1 && !(argc > 1 && std::string(argv[1]) == "map")) {
+    std::cerr << "cpkit: under mpirun only `cpkit map` runs (the grid maps of N-point systems "
+                 "are distributed over the processes); run other commands without mpirun\n";
+    mpi::finalize();
+    return kExitBadInput;
+  }
+  const int code = run(argc, argv);
+  mpi::finalize();
+  return code;
 }

@@ -20,6 +20,7 @@
 #include "cli_common.hpp"
 #include "map_files.hpp"
 #include "map_system.hpp"
+#include "mpi_session.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
@@ -50,7 +51,7 @@ struct MapArgs {
   int sgnPT = 1;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
   int n = 0, n2 = 0, theta_n = 0, threads = 0;
-  bool plot = false, json = false, list_presets = false;
+  bool plot = false, json = false, list_presets = false, resume = false;
   // Which options were given (CLI11 Option pointers).
   std::map<std::string, CLI::Option*> opt;
   bool given(const std::string& name) const {
@@ -459,7 +460,7 @@ int run_map(const MapArgs& a) {
                        "got '" + kind + "'");
     allowed.insert(allowed.end(), needed.begin(), needed.end());
     if (kind != "direction")
-      for (const char* o : {"--n", "--format", "--time-limit"}) allowed.push_back(o);
+      for (const char* o : {"--n", "--format", "--time-limit", "--resume"}) allowed.push_back(o);
     if (kind == "param-direction")
       for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
     if (kind == "param-param") allowed.push_back("--n2");
@@ -475,6 +476,11 @@ int run_map(const MapArgs& a) {
     if (a.plot && kind == "direction")
       throw InputError("--plot with --system applies to --kind param-direction and param-param");
     if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+    if (a.resume && a.out.empty())
+      throw InputError("--resume needs --out PREFIX (the finished chunks are kept in PREFIX.parts)");
+    if (kind == "direction" && mpi::size() > 1)
+      throw InputError("a direction map is one exact computation, not a grid of cells: run it "
+                       "without mpirun (--threads uses the cores of one machine)");
     if (a.given("--format") && a.out.empty())
       throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
     if (a.format != "npy" && a.format != "csv")
@@ -490,6 +496,7 @@ int run_map(const MapArgs& a) {
     r.out = a.out;
     r.json = a.json;
     r.plot = a.plot;
+    r.resume = a.resume;
     r.format = a.format;
     r.threads = a.threads;
     r.time_limit = a.time_limit;
@@ -508,6 +515,13 @@ int run_map(const MapArgs& a) {
     if (!r.out.empty()) prepare_out_prefix(r.out);
     return run_map_system(r);
   }
+  if (mpi::size() > 1)
+    throw InputError("under mpirun, cpkit map distributes the grid maps of N-point systems "
+                     "(--system FILE --kind param-direction or param-param); a one-point map "
+                     "computes millions of cells per second on one process: run it without mpirun");
+  if (a.resume)
+    throw InputError("--resume applies to the grid maps of N-point systems (--system FILE "
+                     "--kind param-direction or param-param)");
   const MapSetup s = build_setup(a);
   MapOptions options;
   const auto method = rate_method_from_string(a.method);
@@ -811,6 +825,9 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                   "coupling or mu@i, ...");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
+  o["--resume"] = cmd->add_flag("--resume", args->resume,
+                                "N-point grid maps: continue an interrupted map from the chunks "
+                                "finished in PREFIX.parts (same map, same --out)");
   cmd->callback([args, &ctx] { ctx.exit_code = run_map(*args); });
 }
 

@@ -22,7 +22,8 @@ namespace cpkit::cli {
 /// more than a second, and the phase's final line at 100 %.
 rate::MapProgress make_map_progress();
 
-/// Writes a text file through fn; throws InputError naming the file when it cannot be written.
+/// Writes a text file through fn, under a temporary name renamed at the end (atomic); throws
+/// InputError naming the file when it cannot be written.
 void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn);
 
 /// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
@@ -31,8 +32,9 @@ void write_text_file(const std::string& path, const std::function<void(std::ostr
 bool run_map_plot(const std::string& prefix, nlohmann::json& files);
 
 /// The cell files of a grid map under PREFIX: .npy arrays appended block by block (or one CSV),
-/// each recorded in `files` under its key (file names relative to PREFIX's folder). A map that
-/// fails part-way calls discard(): no partial file stays behind.
+/// each recorded in `files` under its key (file names relative to PREFIX's folder). Files are
+/// written as NAME.partial and renamed by finish(); a map that fails part-way calls discard():
+/// no file that looks complete stays behind.
 class GridFiles {
  public:
   GridFiles(std::string prefix, nlohmann::json& files);
@@ -56,6 +58,8 @@ class GridFiles {
   nlohmann::json& files_;
   std::vector<std::unique_ptr<rate::NpyWriter>> npy_;
   std::ofstream csv_;
+  std::vector<std::string> finals_;  ///< final paths, written as <path>.partial until finish()
+  std::string partial(const std::string& final_path);
 };
 
 /// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.

@@ -4,7 +4,9 @@
 // Exit codes: 0 map computed, 2 bad input, 4 a requested picture not drawn, 5 inconclusive (an
 // evaluation too close to call or a sector that is not uniform; the map is then printed with
 // complete: false).
+#include <cstring>
 #include <filesystem>
+#include <thread>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -15,10 +17,13 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "map_chunks.hpp"
 #include "map_files.hpp"
+#include "mpi_session.hpp"
 #include "machine_resources.hpp"
 #include "map_system.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
@@ -88,7 +93,8 @@ nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest
                               double npy_bytes_per_cell) {
   if (!r.out.empty()) {
     // A CSV line holds two numbers at 17 digits, the count and the pattern id.
-    const double output = e.cells * (r.format == "csv" ? 45.0 : npy_bytes_per_cell);
+    // The finished chunks are kept in PREFIX.parts until the outputs are complete: twice.
+    const double output = 2 * e.cells * (r.format == "csv" ? 45.0 : npy_bytes_per_cell);
     const std::string dir = std::filesystem::path(r.out).parent_path().string();
     const double free = free_disk_bytes(dir);
     if (free >= 0 && output > 0.95 * free)
@@ -97,16 +103,18 @@ nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest
                        " GB is free in '" + (dir.empty() ? "." : dir) + "': " + fewer +
                        (r.format == "csv" ? ", or drop --format csv" : ""));
   }
-  if (e.seconds > r.time_limit)
-    throw InputError("the map has " + cells + " and would need about " + seconds_text(e.seconds) +
-                     " s of computing on " + std::to_string(e.threads) +
-                     " threads (estimated from " + std::to_string(e.sampled) +
+  const double seconds = e.seconds / mpi::size();  // the ranks share the cells
+  if (seconds > r.time_limit)
+    throw InputError("the map has " + cells + " and would need about " + seconds_text(seconds) +
+                     " s of computing on " + std::to_string(e.threads) + " threads x " +
+                     std::to_string(mpi::size()) + " processes (estimated from " +
+                     std::to_string(e.sampled) +
                      " timed cells), more than --time-limit " + seconds_text(r.time_limit) +
                      ": " + fewer + ", or raise --time-limit");
-  if (e.seconds > 1.0)
-    std::cerr << "cpkit map: " << cells << ": about " << seconds_text(e.seconds) << " s on "
-              << e.threads << " threads (estimate)\n";
-  return {{"seconds", e.seconds}, {"threads", e.threads}, {"sampled_cells", e.sampled}};
+  if (seconds > 1.0 && mpi::rank() == 0)
+    std::cerr << "cpkit map: " << cells << ": about " << seconds_text(seconds) << " s on "
+              << e.threads << " threads x " << mpi::size() << " processes (estimate)\n";
+  return {{"seconds", seconds}, {"threads", e.threads}, {"sampled_cells", e.sampled}};
 }
 
 std::vector<double> axis_values(const SystemMapAxis& a) {
@@ -166,8 +174,122 @@ MapOptions request_options(const SystemMapRequest& r) {
   return o;
 }
 
+/// FNV-1a of the system file's bytes: a resumed map must read the same system.
+std::string file_fingerprint(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  uint64_t h = 1469598103934665603ull;
+  for (char c; f.get(c);) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  std::ostringstream o;
+  o << std::hex << h;
+  return o.str();
+}
+
+int resolved_threads(int requested) {
+  return requested > 0 ? requested
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// A chunk's summary: class boxes, its pattern table (chunk-local ids), counters.
+nlohmann::json chunk_summary(const std::vector<GridClassBox>& classes,
+                             const SystemPatternTable& table, int64_t unreliable,
+                             int64_t inconsistent, int m_max) {
+  nlohmann::json boxes = nlohmann::json::array();
+  for (const auto& b : classes)
+    boxes.push_back({b.code, b.cells, b.x_min, b.x_max, b.y_min, b.y_max});
+  return {{"boxes", boxes}, {"patterns", table.patterns}, {"unreliable", unreliable},
+          {"inconsistent", inconsistent}, {"m_max", m_max}};
+}
+
+/// Rank 0's merge of the chunks in row order: patterns renumbered in order of first
+/// appearance over the whole map (as one process numbers them), boxes and counters combined.
+struct GridMerge {
+  SystemPatternTable table;
+  std::map<std::vector<TypeTuple>, int> index;
+  std::map<int, GridClassBox> boxes;  // by code
+  int64_t unreliable = 0, inconsistent = 0;
+  int m_max = 0;
+
+  /// Renumbers a chunk's pattern ids in `ids` and merges its summary.
+  void add(const nlohmann::json& summary, std::vector<uint16_t>& ids) {
+    std::vector<uint16_t> to_global;
+    for (const auto& p : summary.at("patterns")) {
+      const auto tuples = p.get<std::vector<TypeTuple>>();
+      auto [it, added] = index.emplace(tuples, static_cast<int>(table.patterns.size()));
+      if (added) {
+        if (table.patterns.size() >= 65535)
+          throw InputError("the map has more than 65535 distinct point-type patterns");
+        table.patterns.push_back(tuples);
+        table.cells.push_back(0);
+      }
+      to_global.push_back(static_cast<uint16_t>(it->second));
+    }
+    for (auto& id : ids) {
+      if (id >= to_global.size()) throw InputError("corrupt map chunk (pattern id)");
+      id = to_global[id];
+      ++table.cells[id];
+    }
+    for (const auto& b : summary.at("boxes")) {
+      const int code = b.at(0).get<int>();
+      GridClassBox& g = boxes[code];
+      const int64_t cells = b.at(1).get<int64_t>();
+      if (g.cells == 0) {
+        g.code = code;
+        g.x_min = b.at(2).get<double>();
+        g.x_max = b.at(3).get<double>();
+        g.y_min = b.at(4).get<double>();
+        g.y_max = b.at(5).get<double>();
+      } else {
+        g.x_min = std::min(g.x_min, b.at(2).get<double>());
+        g.x_max = std::max(g.x_max, b.at(3).get<double>());
+        g.y_min = std::min(g.y_min, b.at(4).get<double>());
+        g.y_max = std::max(g.y_max, b.at(5).get<double>());
+      }
+      g.cells += cells;
+    }
+    unreliable += summary.at("unreliable").get<int64_t>();
+    inconsistent += summary.at("inconsistent").get<int64_t>();
+    m_max = std::max(m_max, summary.at("m_max").get<int>());
+  }
+};
+
+std::vector<uint16_t> ids_of(const std::string& bytes) {
+  std::vector<uint16_t> ids(bytes.size() / 2);
+  std::memcpy(ids.data(), bytes.data(), ids.size() * 2);
+  return ids;
+}
+
+/// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing) and returns
+/// the run's figures; the distributed/resume fields go into the JSON.
+ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const nlohmann::json& input,
+                              const ChunkPlan& plan, const std::function<MapChunk(int)>& compute,
+                              const std::function<void(const MapChunk&)>& consume) {
+  ChunkRun run;
+  run.plan = plan;
+  run.compute = compute;
+  run.consume = consume;
+  run.resume = r.resume;
+  if (!r.out.empty()) {
+    run.checkpoint = r.out + ".parts";
+    run.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind}, {"input", input},
+                    {"system_file_fnv1a", file_fingerprint(r.path)}, {"format", r.format},
+                    {"chunk_rows", plan.chunk_rows}, {"chunks", plan.chunks}};
+  }
+  if (mpi::rank() == 0) run.progress = make_map_progress();
+  return run_chunks(run);
+}
+
+void add_run_figures(nlohmann::json& j, const ChunkRunStats& st) {
+  j["ranks"] = st.ranks;
+  j["rank_cells"] = st.rank_cells;
+  if (st.resumed_chunks > 0) j["resumed_cells"] = st.resumed_cells;
+}
+
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
 int run_param_direction(const SystemMapRequest& r) {
+  const Stopwatch clock;
   const ContactSystem sys = read_contact_system(r.path);
   const int N = sys.n_points();
   SystemMapAxis axis;
@@ -184,78 +306,114 @@ int run_param_direction(const SystemMapRequest& r) {
   const nlohmann::json estimate =
       check_estimate(estimate_system_param_direction_map(sys, axis, r.theta_n, options), r,
                      cells, "use a smaller --n or --theta-n", 3);
+  const nlohmann::json input = {
+      {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", axis.param.name()},
+      {"from", r.from}, {"to", r.to}, {"n", r.n}, {"theta_n", r.theta_n},
+      {"theta_from", r.theta_from}, {"theta_to", r.theta_to},
+      {"patterns", {as_list(e1), as_list(e2)}}};
   const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
-  if (run.writing_npy()) {
-    run.out.add_npy("count", "|i1", r.n, r.theta_n);
-    run.out.add_npy("pattern", "<u2", r.n, r.theta_n, 2);
-    run.out.write_vector("x", axis_values(axis));
-    run.out.write_vector("theta", theta);
-  } else if (run.writing_csv()) {
-    run.out.open_csv() << std::setprecision(17) << axis.param.name() << ",theta,count,pattern\n";
-  }
-  SystemParamDirectionMap m;
-  try {
-    m = compute_system_param_direction_map(
-        sys, axis, r.theta_n, options, make_map_progress(),
+  const ChunkPlan plan = plan_chunks(r.n, r.theta_n);
+  auto compute = [&](int k) {
+    MapChunk c;
+    c.index = k;
+    c.row_begin = plan.begin(k);
+    c.row_end = plan.end(k);
+    std::string count, pattern;
+    const SystemParamDirectionMap m = compute_system_param_direction_map(
+        sys, axis, r.theta_n, options, {},
         [&](const SystemParamDirectionRows& rows) {
-          const int64_t n_cells = static_cast<int64_t>(rows.row_end - rows.row_begin) * r.theta_n;
-          run.out.append({rows.count, rows.pattern}, n_cells);
-          if (!run.out.has_csv()) return;
-          for (int i = rows.row_begin; i < rows.row_end; ++i)
-            for (int jj = 0; jj < r.theta_n; ++jj) {
-              const std::size_t k =
-                  static_cast<std::size_t>(i - rows.row_begin) * r.theta_n + jj;
-              run.out.csv() << axis.value(i) << ',' << theta[static_cast<std::size_t>(jj)] << ','
-                            << count_to_string(rows.count[k]) << ',' << rows.pattern[k] << '\n';
-            }
-        });
+          const std::size_t n_cells = static_cast<std::size_t>(rows.row_end - rows.row_begin) *
+                                      static_cast<std::size_t>(r.theta_n);
+          count.append(reinterpret_cast<const char*>(rows.count), n_cells);
+          pattern.append(reinterpret_cast<const char*>(rows.pattern), 2 * n_cells);
+        },
+        RowRange{c.row_begin, c.row_end});
+    c.summary = chunk_summary(m.classes, m.table, m.unreliable, 0, m.m_max);
+    c.arrays = {std::move(count), std::move(pattern)};
+    return c;
+  };
+  GridMerge merge;
+  bool opened = false;
+  auto open_files = [&] {
+    if (run.writing_npy()) {
+      run.out.add_npy("count", "|i1", r.n, r.theta_n);
+      run.out.add_npy("pattern", "<u2", r.n, r.theta_n, 2);
+      run.out.write_vector("x", axis_values(axis));
+      run.out.write_vector("theta", theta);
+    } else if (run.writing_csv()) {
+      run.out.open_csv() << std::setprecision(17) << axis.param.name() << ",theta,count,pattern\n";
+    }
+    opened = true;
+  };
+  auto consume = [&](const MapChunk& c) {
+    if (!opened) open_files();
+    const std::string& count = c.arrays.at(0);
+    std::vector<uint16_t> ids = ids_of(c.arrays.at(1));
+    if (count.size() != ids.size() ||
+        count.size() != static_cast<std::size_t>(c.row_end - c.row_begin) * r.theta_n)
+      throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
+    merge.add(c.summary, ids);
+    run.out.append({count.data(), ids.data()}, static_cast<int64_t>(ids.size()));
+    if (!run.out.has_csv()) return;
+    for (int i = c.row_begin; i < c.row_end; ++i)
+      for (int jj = 0; jj < r.theta_n; ++jj) {
+        const std::size_t k = static_cast<std::size_t>(i - c.row_begin) * r.theta_n + jj;
+        run.out.csv() << axis.value(i) << ',' << theta[static_cast<std::size_t>(jj)] << ','
+                      << count_to_string(static_cast<int8_t>(count[k])) << ',' << ids[k] << '\n';
+      }
+  };
+  ChunkRunStats stats;
+  try {
+    stats = run_grid_chunks(r, input, plan, compute, consume);
+    if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
     run.out.finish();
   } catch (...) {
     run.out.discard();
     throw;
   }
-  const bool complete = m.unreliable == 0;
+  const bool complete = merge.unreliable == 0;
   nlohmann::json counts = nlohmann::json::array();
-  for (const auto& c : m.classes)
-    counts.push_back({{"count", count_to_json(c.code)}, {"cells", c.cells},
+  for (const auto& [code, c] : merge.boxes)
+    counts.push_back({{"count", count_to_json(code)}, {"cells", c.cells},
                       {"param_min", c.x_min}, {"param_max", c.x_max},
                       {"theta_min", c.y_min}, {"theta_max", c.y_max}});
   run.j = {{"cpkit_version", CPKIT_VERSION},
            {"kind", "param-direction"},
-           {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
-                      {"param", axis.param.name()}, {"from", r.from}, {"to", r.to},
-                      {"n", r.n}, {"theta_n", r.theta_n}, {"theta_from", r.theta_from},
-                      {"theta_to", r.theta_to}, {"patterns", {as_list(e1), as_list(e2)}}}},
-           {"cells", m.cells()},
+           {"input", input},
+           {"cells", static_cast<int64_t>(r.n) * r.theta_n},
            {"counts", counts},
-           {"patterns", pattern_table_json(m.table, N)},
-           {"lcp_size_max", m.m_max},
-           {"unreliable", m.unreliable},
+           {"patterns", pattern_table_json(merge.table, N)},
+           {"lcp_size_max", merge.m_max},
+           {"unreliable", merge.unreliable},
            {"complete", complete},
-           {"threads", m.threads},
-           {"seconds", m.seconds},
+           {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
+  add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
-    std::cerr << "cpkit map: " << m.unreliable
+    std::cerr << "cpkit map: " << merge.unreliable
               << " cells too close to call: the map is not proved complete\n";
-  return run.finish(complete, [&] {
+  run.j["seconds"] = clock.seconds();
+  const int code = run.finish(complete, [&] {
     std::cout << "param-direction map of " << N << " points (" << r.path << "): "
               << axis.param.name() << " in [" << r.from << ", " << r.to << "] (" << r.n
               << " values) x " << r.theta_n << " directions"
               << (r.theta_range ? " in [" + seconds_text(r.theta_from) + ", " +
                                       seconds_text(r.theta_to) + "]"
                                 : std::string())
-              << ", " << m.cells() << " cells\ncounts:\n";
-    for (const auto& c : m.classes)
-      std::cout << "  " << count_text(c.code) << ": " << c.cells << " cells, "
+              << ", " << static_cast<int64_t>(r.n) * r.theta_n << " cells\ncounts:\n";
+    for (const auto& [cnt, c] : merge.boxes)
+      std::cout << "  " << count_text(cnt) << ": " << c.cells << " cells, "
                 << axis.param.name() << " in [" << c.x_min << ", " << c.x_max << "]\n";
-    print_pattern_table(m.table, N);
+    print_pattern_table(merge.table, N);
   });
+  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  return code;
 }
 
 /// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
 int run_param_param(const SystemMapRequest& r) {
+  const Stopwatch clock;
   const ContactSystem sys = read_contact_system(r.path);
   const int N = sys.n_points();
   SystemMapAxis a1, a2;
@@ -276,80 +434,117 @@ int run_param_param(const SystemMapRequest& r) {
       std::to_string(r.n) + " x " + std::to_string(r.n2) + " cells (--n x --n2)";
   const nlohmann::json estimate = check_estimate(
       estimate_system_param_param_map(sys, a1, a2, options), r, cells, "use a smaller --n or --n2", 5);
-  if (run.writing_npy()) {
-    run.out.add_npy("class", "|u1", r.n, r.n2);
-    run.out.add_npy("min_count", "|i1", r.n, r.n2);
-    run.out.add_npy("max_count", "|i1", r.n, r.n2);
-    run.out.add_npy("pattern", "<u2", r.n, r.n2, 2);
-    run.out.write_vector("x", axis_values(a1));
-    run.out.write_vector("y", axis_values(a2));
-  } else if (run.writing_csv()) {
-    run.out.open_csv() << std::setprecision(17) << a1.param.name() << ',' << a2.param.name()
-                       << ",class,min_count,max_count,pattern\n";
-  }
-  SystemParamParamMap m;
+  const nlohmann::json input = {
+      {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", a1.param.name()},
+      {"from", r.from}, {"to", r.to}, {"n", r.n}, {"param2", a2.param.name()},
+      {"from2", r.from2}, {"to2", r.to2}, {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}};
+  const ChunkPlan plan = plan_chunks(r.n, r.n2);
+  auto compute = [&](int k) {
+    MapChunk c;
+    c.index = k;
+    c.row_begin = plan.begin(k);
+    c.row_end = plan.end(k);
+    std::string cls, lo, hi, pattern;
+    const SystemParamParamMap m = compute_system_param_param_map(
+        sys, a1, a2, options, {},
+        [&](const SystemParamParamRows& rows) {
+          const std::size_t n_cells =
+              static_cast<std::size_t>(rows.row_end - rows.row_begin) * static_cast<std::size_t>(r.n2);
+          cls.append(reinterpret_cast<const char*>(rows.cls), n_cells);
+          lo.append(reinterpret_cast<const char*>(rows.min_count), n_cells);
+          hi.append(reinterpret_cast<const char*>(rows.max_count), n_cells);
+          pattern.append(reinterpret_cast<const char*>(rows.pattern), 2 * n_cells);
+        },
+        RowRange{c.row_begin, c.row_end});
+    c.summary = chunk_summary(m.classes, m.table, m.unreliable, m.inconsistent_sectors, m.m_max);
+    c.arrays = {std::move(cls), std::move(lo), std::move(hi), std::move(pattern)};
+    return c;
+  };
+  GridMerge merge;
+  bool opened = false;
+  auto open_files = [&] {
+    if (run.writing_npy()) {
+      run.out.add_npy("class", "|u1", r.n, r.n2);
+      run.out.add_npy("min_count", "|i1", r.n, r.n2);
+      run.out.add_npy("max_count", "|i1", r.n, r.n2);
+      run.out.add_npy("pattern", "<u2", r.n, r.n2, 2);
+      run.out.write_vector("x", axis_values(a1));
+      run.out.write_vector("y", axis_values(a2));
+    } else if (run.writing_csv()) {
+      run.out.open_csv() << std::setprecision(17) << a1.param.name() << ',' << a2.param.name()
+                         << ",class,min_count,max_count,pattern\n";
+    }
+    opened = true;
+  };
+  auto consume = [&](const MapChunk& c) {
+    if (!opened) open_files();
+    const std::string &cls = c.arrays.at(0), &lo = c.arrays.at(1), &hi = c.arrays.at(2);
+    std::vector<uint16_t> ids = ids_of(c.arrays.at(3));
+    const std::size_t n_cells = static_cast<std::size_t>(c.row_end - c.row_begin) * r.n2;
+    if (cls.size() != n_cells || lo.size() != n_cells || hi.size() != n_cells || ids.size() != n_cells)
+      throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
+    merge.add(c.summary, ids);
+    run.out.append({cls.data(), lo.data(), hi.data(), ids.data()}, static_cast<int64_t>(n_cells));
+    if (!run.out.has_csv()) return;
+    for (int i = c.row_begin; i < c.row_end; ++i)
+      for (int jj = 0; jj < r.n2; ++jj) {
+        const std::size_t k = static_cast<std::size_t>(i - c.row_begin) * r.n2 + jj;
+        run.out.csv() << a1.value(i) << ',' << a2.value(jj) << ','
+                      << to_string(static_cast<UniquenessClass>(cls[k])) << ','
+                      << count_to_string(static_cast<int8_t>(lo[k])) << ','
+                      << count_to_string(static_cast<int8_t>(hi[k])) << ',' << ids[k] << '\n';
+      }
+  };
+  ChunkRunStats stats;
   try {
-    m = compute_system_param_param_map(
-        sys, a1, a2, options, make_map_progress(), [&](const SystemParamParamRows& rows) {
-          const int64_t n_cells = static_cast<int64_t>(rows.row_end - rows.row_begin) * r.n2;
-          run.out.append({rows.cls, rows.min_count, rows.max_count, rows.pattern}, n_cells);
-          if (!run.out.has_csv()) return;
-          for (int i = rows.row_begin; i < rows.row_end; ++i)
-            for (int jj = 0; jj < r.n2; ++jj) {
-              const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * r.n2 + jj;
-              run.out.csv() << a1.value(i) << ',' << a2.value(jj) << ','
-                            << to_string(static_cast<UniquenessClass>(rows.cls[k])) << ','
-                            << count_to_string(rows.min_count[k]) << ','
-                            << count_to_string(rows.max_count[k]) << ',' << rows.pattern[k]
-                            << '\n';
-            }
-        });
+    stats = run_grid_chunks(r, input, plan, compute, consume);
+    if (mpi::rank() != 0) return kExitOk;
     run.out.finish();
   } catch (...) {
     run.out.discard();
     throw;
   }
-  const bool complete = m.unreliable == 0 && m.inconsistent_sectors == 0;
+  const bool complete = merge.unreliable == 0 && merge.inconsistent == 0;
   nlohmann::json classes = nlohmann::json::array();
-  for (const auto& c : m.classes)
-    classes.push_back({{"class", to_string(static_cast<UniquenessClass>(c.code))},
-                       {"code", c.code}, {"cells", c.cells},
+  for (const auto& [code, c] : merge.boxes)
+    classes.push_back({{"class", to_string(static_cast<UniquenessClass>(code))},
+                       {"code", code}, {"cells", c.cells},
                        {"x_min", c.x_min}, {"x_max", c.x_max},
                        {"y_min", c.y_min}, {"y_max", c.y_max}});
   run.j = {{"cpkit_version", CPKIT_VERSION},
            {"kind", "param-param"},
-           {"input", {{"system", r.path}, {"name", sys.name}, {"n_points", N},
-                      {"param", a1.param.name()}, {"from", r.from}, {"to", r.to}, {"n", r.n},
-                      {"param2", a2.param.name()}, {"from2", r.from2}, {"to2", r.to2},
-                      {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}}},
-           {"cells", m.cells()},
+           {"input", input},
+           {"cells", static_cast<int64_t>(r.n) * r.n2},
            {"classes", classes},
            {"class_codes", {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
                             {"none-and-several", 3}}},
-           {"patterns", pattern_table_json(m.table, N)},
-           {"lcp_size_max", m.m_max},
-           {"unreliable", m.unreliable},
-           {"inconsistent_sectors", m.inconsistent_sectors},
+           {"patterns", pattern_table_json(merge.table, N)},
+           {"lcp_size_max", merge.m_max},
+           {"unreliable", merge.unreliable},
+           {"inconsistent_sectors", merge.inconsistent},
            {"complete", complete},
-           {"threads", m.threads},
-           {"seconds", m.seconds},
+           {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
+  add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
-    std::cerr << "cpkit map: " << m.unreliable << " evaluations too close to call and "
-              << m.inconsistent_sectors
-              << " sectors not uniform: the map is not proved complete\n";
-  return run.finish(complete, [&] {
+    std::cerr << "cpkit map: " << merge.unreliable << " evaluations too close to call and "
+              << merge.inconsistent << " sectors not uniform: the map is not proved complete\n";
+  run.j["seconds"] = clock.seconds();
+  const int code = run.finish(complete, [&] {
     std::cout << "param-param map of " << N << " points (" << r.path << "): "
               << a1.param.name() << " in [" << r.from << ", " << r.to << "] (" << r.n
               << " values) x " << a2.param.name() << " in [" << r.from2 << ", " << r.to2
-              << "] (" << r.n2 << " values), " << m.cells() << " cells\nclasses:\n";
-    for (const auto& c : m.classes)
-      std::cout << "  " << to_string(static_cast<UniquenessClass>(c.code)) << ": " << c.cells
+              << "] (" << r.n2 << " values), " << static_cast<int64_t>(r.n) * r.n2
+              << " cells\nclasses:\n";
+    for (const auto& [cl, c] : merge.boxes)
+      std::cout << "  " << to_string(static_cast<UniquenessClass>(cl)) << ": " << c.cells
                 << " cells, " << a1.param.name() << " in [" << c.x_min << ", " << c.x_max
                 << "], " << a2.param.name() << " in [" << c.y_min << ", " << c.y_max << "]\n";
-    print_pattern_table(m.table, N);
+    print_pattern_table(merge.table, N);
   });
+  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  return code;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ struct SystemMapRequest {
   std::string path, kind, out, param, param2;  ///< --system, --kind, --out, --param, --param2
   std::string format = "npy";                  ///< --format (grid maps written with --out)
   bool json = false, plot = false;
+  bool resume = false;  ///< --resume: reuse the finished chunks in PREFIX.parts
   double from = 0, to = 0, from2 = 0, to2 = 0;  ///< --from, --to, --from2, --to2
   int n = 100, n2 = 100, theta_n = 360;         ///< --n, --n2, --theta-n
   int threads = 0;                              ///< --threads (0: all cores)

@@ -81,3 +81,11 @@ if(CPKIT_BUILD_PYTHON)
     endif()
   endif()
 endif()
+
+if(CPKIT_WITH_MPI)
+  find_package(MPI COMPONENTS CXX)
+  if(NOT MPI_CXX_FOUND)
+    message(FATAL_ERROR "CPKIT_WITH_MPI=ON but MPI was not found: install the Debian package "
+                        "'libopenmpi-dev' (or configure with -DCPKIT_WITH_MPI=OFF)")
+  endif()
+endif()

@@ -206,6 +206,15 @@ void check_common(const ContactSystem& system, const MapOptions& options) {
     throw InputError("map options: the N-point maps use the enumeration route only");
 }
 
+/// The rows [first, last) a call computes; throws InputError for a range outside [0, rows].
+std::pair<int, int> checked_range(const RowRange& r, int rows) {
+  const int end = r.end < 0 ? rows : r.end;
+  if (r.begin < 0 || r.begin > end || end > rows)
+    throw InputError("row range [" + std::to_string(r.begin) + ", " + std::to_string(end) +
+                     ") is outside the map's " + std::to_string(rows) + " rows");
+  return {r.begin, end};
+}
+
 /// Rows per block: all rows without a sink; else about 2^20 cells, at least 4 rows per worker.
 int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
   return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;
@@ -253,7 +262,8 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
                                                            const SystemMapAxis& axis, int theta_n,
                                                            const MapOptions& options,
                                                            const MapProgress& progress,
-                                                           const SystemParamDirectionSink& sink) {
+                                                           const SystemParamDirectionSink& sink,
+                                                           const RowRange& range) {
   check_common(system, options);
   validate_axis(axis);
   if (theta_n < 1 || theta_n > 1000000)
@@ -280,8 +290,10 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
   for (int j = 0; j < theta_n; ++j)
     loads[static_cast<std::size_t>(j)] = std::cos(map.theta[j]) * e1 + std::sin(map.theta[j]) * e2;
 
-  map.threads = resolve_threads(options.threads, n);
-  const int block_rows = block_rows_for(static_cast<bool>(sink), n, theta_n, map.threads);
+  const auto [row0, row1] = checked_range(range, n);
+  map.threads = resolve_threads(options.threads, row1 - row0);
+  const int block_rows =
+      block_rows_for(static_cast<bool>(sink), row1 - row0, theta_n, map.threads);
   const std::size_t buffer =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer, 0);
@@ -306,10 +318,10 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
       row_unreliable[r] += !s.reliable;
     }
   };
-  for (block_begin = 0; block_begin < n; block_begin += block_rows) {
-    const int block_end = std::min(n, block_begin + block_rows);
+  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
+    const int block_end = std::min(row1, block_begin + block_rows);
     run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin + done) / n);
+      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
     });
     for (int i = block_begin; i < block_end; ++i) {
       const std::size_t r = static_cast<std::size_t>(i - block_begin);
@@ -350,7 +362,8 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
                                                    const SystemMapAxis& axis2,
                                                    const MapOptions& options,
                                                    const MapProgress& progress,
-                                                   const SystemParamParamSink& sink) {
+                                                   const SystemParamParamSink& sink,
+                                                   const RowRange& range) {
   check_common(system, options);
   validate_axis(axis1);
   validate_axis(axis2);
@@ -372,8 +385,9 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
   for (int i = 0; i < n1; ++i)
     for (int j = 0; j < n2; ++j) (void)cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j));
 
-  map.threads = resolve_threads(options.threads, n1);
-  const int block_rows = block_rows_for(static_cast<bool>(sink), n1, n2, map.threads);
+  const auto [row0, row1] = checked_range(range, n1);
+  map.threads = resolve_threads(options.threads, row1 - row0);
+  const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, n2, map.threads);
   const std::size_t buffer = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer, 0);
   std::vector<int8_t> lo(buffer, 0), hi(buffer, 0);
@@ -403,10 +417,10 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
       row_inconsistent[r] += dm.inconsistent_sectors;
     }
   };
-  for (block_begin = 0; block_begin < n1; block_begin += block_rows) {
-    const int block_end = std::min(n1, block_begin + block_rows);
+  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
+    const int block_end = std::min(row1, block_begin + block_rows);
     run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin + done) / n1);
+      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
     });
     for (int i = block_begin; i < block_end; ++i) {
       const std::size_t r = static_cast<std::size_t>(i - block_begin);

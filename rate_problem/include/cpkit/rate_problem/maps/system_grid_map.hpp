@@ -77,7 +77,8 @@ struct SystemParamDirectionMap {
   int theta_n = 0;
   double theta_from = 0, theta_to = 0;  ///< the sampled range (MapOptions)
   std::vector<double> theta;        ///< cell centres theta_from + (j + 1/2) span / theta_n
-  std::vector<int8_t> count;        ///< [i * theta_n + j]; -1: a continuum (empty with a sink)
+  /// [(i - rows.begin) * theta_n + j]; -1: a continuum (empty with a sink)
+  std::vector<int8_t> count;
   std::vector<uint16_t> pattern;    ///< [i * theta_n + j]: index into `table` (empty with a sink)
   SystemPatternTable table;
   std::vector<GridClassBox> classes;   ///< per count (-1 first), bounding boxes (x, theta)
@@ -86,6 +87,15 @@ struct SystemParamDirectionMap {
   int threads = 1;
   double seconds = 0;
   int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
+};
+
+/// The rows a call computes: [begin, end) of the first axis (end < 0: to the last row). A map
+/// split into row ranges (the chunks of a distributed or resumable run) has, in each part, the
+/// cells, counters and class boxes of its rows and a pattern table numbered in order of first
+/// appearance within its rows; renumbering the parts' tables in row order gives the whole map's
+/// table (apps/system_map_chunks.cpp does that).
+struct RowRange {
+  int begin = 0, end = -1;
 };
 
 /// Largest map kept in memory (without a sink): 3 bytes a cell. With a sink any size is
@@ -102,7 +112,7 @@ inline constexpr int64_t kMaxSystemMapCells = int64_t{1} << 26;
 SystemParamDirectionMap compute_system_param_direction_map(
     const ContactSystem& system, const SystemMapAxis& axis, int theta_n,
     const MapOptions& options = {}, const MapProgress& progress = {},
-    const SystemParamDirectionSink& sink = {});
+    const SystemParamDirectionSink& sink = {}, const RowRange& rows = {});
 
 /// Rows [row_begin, row_end) of an N-point parameter x parameter map, row-major with axis2.n
 /// columns (codes as ParamParamMap; pattern: the union of the type tuples over all directions).
@@ -140,7 +150,8 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
                                                    const SystemMapAxis& axis2,
                                                    const MapOptions& options = {},
                                                    const MapProgress& progress = {},
-                                                   const SystemParamParamSink& sink = {});
+                                                   const SystemParamParamSink& sink = {},
+                                                   const RowRange& rows = {});
 
 /// Up-front cost of a map: the cell phase's time extrapolated from a timed sample of the same
 /// map's cells (spread over the grid, one thread, stopped after about a second of sampling).
