@@ -220,6 +220,29 @@ int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
   return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;
 }
 
+/// A piece of one row, a work item: rows are split when a block has too few rows for the
+/// threads (a chunk of a distributed map may be a single row). Each segment numbers its
+/// patterns itself; merged in segment order they give the numbering of a row-major scan.
+struct Segment {
+  int row = 0, c0 = 0, c1 = 0;
+  RowPatterns table;
+  int64_t unreliable = 0, inconsistent = 0;
+};
+
+void plan_segments(int b0, int b1, int columns, int threads, std::vector<Segment>& segs) {
+  segs.clear();
+  const int rows = b1 - b0;
+  const int per_row = std::max(1, std::min(columns, (4 * threads + rows - 1) / rows));
+  for (int i = b0; i < b1; ++i)
+    for (int k = 0; k < per_row; ++k) {
+      Segment g;
+      g.row = i;
+      g.c0 = static_cast<int>(int64_t{columns} * k / per_row);
+      g.c1 = static_cast<int>(int64_t{columns} * (k + 1) / per_row);
+      segs.push_back(std::move(g));
+    }
+}
+
 /// Classes of a cell's direction map (as compute_param_param_map for one point).
 struct CellClass {
   uint8_t cls = 0;
@@ -291,46 +314,53 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
     loads[static_cast<std::size_t>(j)] = std::cos(map.theta[j]) * e1 + std::sin(map.theta[j]) * e2;
 
   const auto [row0, row1] = checked_range(range, n);
-  map.threads = resolve_threads(options.threads, row1 - row0);
+  map.threads = resolve_threads(options.threads, static_cast<int64_t>(row1 - row0) * theta_n);
   const int block_rows =
       block_rows_for(static_cast<bool>(sink), row1 - row0, theta_n, map.threads);
   const std::size_t buffer =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer, 0);
   std::vector<uint16_t> pattern(buffer, 0);
-  std::vector<RowPatterns> row_patterns(static_cast<std::size_t>(block_rows));
-  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(block_rows), 0);
+  std::vector<Segment> segs;
   PatternNumbering numbering(map.table);
   std::array<GridClassBox, 128> boxes{};
   int block_begin = 0;
-  auto row = [&](int i) {
-    const std::size_t r = static_cast<std::size_t>(i - block_begin);
-    const SystemRatePrecomputed pre =
-        precompute_system_rate(apply_system_map_parameter(system, axis.param, axis.value(i)));
-    RowPatterns& table = row_patterns[r];
-    table.list.clear();
-    row_unreliable[r] = 0;
-    const std::size_t base = r * static_cast<std::size_t>(theta_n);
-    for (int j = 0; j < theta_n; ++j) {
+  auto segment = [&](int k) {
+    Segment& g = segs[static_cast<std::size_t>(k)];
+    const SystemRatePrecomputed pre = precompute_system_rate(
+        apply_system_map_parameter(system, axis.param, axis.value(g.row)));
+    g.table.list.clear();
+    g.unreliable = 0;
+    const std::size_t base =
+        static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(theta_n);
+    for (int j = g.c0; j < g.c1; ++j) {
       const SystemRateSummary s = summarize_rate_problem(pre, loads[static_cast<std::size_t>(j)]);
       count[base + j] = static_cast<int8_t>(s.count);
-      pattern[base + j] = table.id(tuples_of(s));
-      row_unreliable[r] += !s.reliable;
+      pattern[base + j] = g.table.id(tuples_of(s));
+      g.unreliable += !s.reliable;
     }
   };
   for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
     const int block_end = std::min(row1, block_begin + block_rows);
-    run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
+    plan_segments(block_begin, block_end, theta_n, map.threads, segs);
+    const int n_segs = static_cast<int>(segs.size());
+    run_items(0, n_segs, map.threads, segment, [&](int done) {
+      if (progress)
+        progress("cells", (block_begin - row0 + static_cast<double>(done) / n_segs *
+                                                   (block_end - block_begin)) / (row1 - row0));
     });
+    for (const Segment& g : segs) {
+      const std::size_t base =
+          static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(theta_n);
+      numbering.merge_row(g.table, pattern.data() + base + g.c0, g.c1 - g.c0);
+      map.unreliable += g.unreliable;
+    }
     for (int i = block_begin; i < block_end; ++i) {
-      const std::size_t r = static_cast<std::size_t>(i - block_begin);
-      const std::size_t base = r * static_cast<std::size_t>(theta_n);
-      numbering.merge_row(row_patterns[r], pattern.data() + base, theta_n);
+      const std::size_t base =
+          static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(theta_n);
       for (int j = 0; j < theta_n; ++j)
         boxes[static_cast<std::size_t>((count[base + j] + 1) & 127)].add(axis.value(i),
                                                                          map.theta[j]);
-      map.unreliable += row_unreliable[r];
     }
     if (sink) {
       SystemParamDirectionRows rows;
@@ -386,49 +416,55 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
     for (int j = 0; j < n2; ++j) (void)cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j));
 
   const auto [row0, row1] = checked_range(range, n1);
-  map.threads = resolve_threads(options.threads, row1 - row0);
+  map.threads = resolve_threads(options.threads, static_cast<int64_t>(row1 - row0) * n2);
   const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, n2, map.threads);
   const std::size_t buffer = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer, 0);
   std::vector<int8_t> lo(buffer, 0), hi(buffer, 0);
   std::vector<uint16_t> pattern(buffer, 0);
-  std::vector<RowPatterns> row_patterns(static_cast<std::size_t>(block_rows));
-  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(block_rows), 0);
-  std::vector<int64_t> row_inconsistent(row_unreliable);
+  std::vector<Segment> segs;
   PatternNumbering numbering(map.table);
   std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
   MapOptions cell_options;
   cell_options.threads = 1;
   int block_begin = 0;
-  auto row = [&](int i) {
-    const std::size_t r = static_cast<std::size_t>(i - block_begin);
-    row_patterns[r].list.clear();
-    row_unreliable[r] = row_inconsistent[r] = 0;
-    for (int j = 0; j < n2; ++j) {
+  auto segment = [&](int k) {
+    Segment& g = segs[static_cast<std::size_t>(k)];
+    g.table.list.clear();
+    g.unreliable = g.inconsistent = 0;
+    for (int j = g.c0; j < g.c1; ++j) {
       const SystemDirectionMap dm = compute_system_direction_map(
-          cell_system(system, axis1, axis1.value(i), axis2, axis2.value(j)), cell_options);
+          cell_system(system, axis1, axis1.value(g.row), axis2, axis2.value(j)), cell_options);
       CellClass c = classify(dm);
-      const std::size_t k = r * static_cast<std::size_t>(n2) + static_cast<std::size_t>(j);
-      cls[k] = c.cls;
-      lo[k] = c.lo;
-      hi[k] = c.hi;
-      pattern[k] = row_patterns[r].id(std::move(c.tuples));
-      row_unreliable[r] += dm.unreliable;
-      row_inconsistent[r] += dm.inconsistent_sectors;
+      const std::size_t at = static_cast<std::size_t>(g.row - block_begin) *
+                                 static_cast<std::size_t>(n2) + static_cast<std::size_t>(j);
+      cls[at] = c.cls;
+      lo[at] = c.lo;
+      hi[at] = c.hi;
+      pattern[at] = g.table.id(std::move(c.tuples));
+      g.unreliable += dm.unreliable;
+      g.inconsistent += dm.inconsistent_sectors;
     }
   };
   for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
     const int block_end = std::min(row1, block_begin + block_rows);
-    run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
+    plan_segments(block_begin, block_end, n2, map.threads, segs);
+    const int n_segs = static_cast<int>(segs.size());
+    run_items(0, n_segs, map.threads, segment, [&](int done) {
+      if (progress)
+        progress("cells", (block_begin - row0 + static_cast<double>(done) / n_segs *
+                                                   (block_end - block_begin)) / (row1 - row0));
     });
+    for (const Segment& g : segs) {
+      const std::size_t base =
+          static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(n2);
+      numbering.merge_row(g.table, pattern.data() + base + g.c0, g.c1 - g.c0);
+      map.unreliable += g.unreliable;
+      map.inconsistent_sectors += g.inconsistent;
+    }
     for (int i = block_begin; i < block_end; ++i) {
-      const std::size_t r = static_cast<std::size_t>(i - block_begin);
-      const std::size_t base = r * static_cast<std::size_t>(n2);
-      numbering.merge_row(row_patterns[r], pattern.data() + base, n2);
+      const std::size_t base = static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2);
       for (int j = 0; j < n2; ++j) boxes[cls[base + j]].add(axis1.value(i), axis2.value(j));
-      map.unreliable += row_unreliable[r];
-      map.inconsistent_sectors += row_inconsistent[r];
     }
     if (sink) {
       SystemParamParamRows rows;
