@@ -3,6 +3,10 @@
 #include "map_chunks.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -264,32 +268,72 @@ ChunkRunStats run_chunks(const ChunkRun& run) {
     std::vector<int> todo;
     for (int k = run.plan.chunks - 1; k >= 0; --k)
       if (!have[static_cast<std::size_t>(k)]) todo.push_back(k);  // back = the next to hand out
+    // Rank 0 computes chunks too, on a thread of its own, so that its main thread (the only
+    // one that calls MPI) answers the other ranks at once: a rank never waits for its next
+    // chunk while rank 0 computes.
+    std::mutex mutex;
+    std::vector<MapChunk> local_done;
+    std::exception_ptr local_error;
+    bool local_running = true;
+    auto take = [&](int& k) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (todo.empty()) return false;
+      k = todo.back();
+      todo.pop_back();
+      return true;
+    };
+    std::thread local([&] {
+      try {
+        for (int k; take(k);) {
+          MapChunk c = run.compute(k);
+          std::lock_guard<std::mutex> lock(mutex);
+          stats.rank_cells[0] += cells_of(k);
+          local_done.push_back(std::move(c));
+        }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        local_error = std::current_exception();
+        todo.clear();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      local_running = false;
+    });
+    struct Join {
+      std::thread& t;
+      ~Join() { if (t.joinable()) t.join(); }
+    } join{local};
     int workers = mpi::size() - 1;
-    while (workers > 0 || !todo.empty()) {
+    for (;;) {
+      bool idle = true;
       int from = 0;
-      // Serve every rank that is waiting; block only when rank 0 has nothing left to compute.
-      while (workers > 0 && mpi::probe(kTagDone, &from, todo.empty())) {
+      if (workers > 0 && mpi::probe(kTagDone, &from, false)) {
+        idle = false;
         const std::string bytes = mpi::recv_bytes(kTagDone, &from);
         if (!bytes.empty()) {
           MapChunk c = parse_chunk(bytes);
           stats.rank_cells[static_cast<std::size_t>(from)] += cells_of(c.index);
           col.finished(std::move(c));
         }
-        if (!todo.empty()) {
-          mpi::send_int(todo.back(), from, kTagAssign);
-          todo.pop_back();
+        int k = -1;
+        if (take(k)) {
+          mpi::send_int(k, from, kTagAssign);
         } else {
           mpi::send_int(-1, from, kTagAssign);
           --workers;
         }
       }
-      if (!todo.empty()) {
-        const int k = todo.back();
-        todo.pop_back();
-        MapChunk c = run.compute(k);
-        stats.rank_cells[0] += cells_of(k);
-        col.finished(std::move(c));
+      std::vector<MapChunk> mine;
+      bool running = true;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        mine.swap(local_done);
+        running = local_running;
+        if (local_error) std::rethrow_exception(local_error);
       }
+      for (auto& c : mine) col.finished(std::move(c));
+      if (!mine.empty()) idle = false;
+      if (workers == 0 && !running) break;
+      if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     if (!col.all_consumed()) throw std::logic_error("map chunks left unconsumed");
   } catch (const InputError& e) {
