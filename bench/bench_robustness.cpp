@@ -16,6 +16,11 @@
 // machine.txt. Draw the profile with scripts/plot_profiles.py.
 //
 // Usage: bench_robustness [OUTDIR] [--quick]
+//        mpirun -np K bench_robustness [OUTDIR] [--quick]   (a build with CPKIT_WITH_MPI)
+// Under mpirun the problems are handed out one at a time by rank 0 to whichever rank is free
+// (apps/map_chunks.hpp, as for the distributed maps); every rank runs all solvers on its
+// problems, rank 0 writes the same files in the same order. Times are then those of a rank
+// sharing the machine with the others.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -32,6 +37,8 @@
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/solvers.hpp"
+#include "map_chunks.hpp"
+#include "mpi_session.hpp"
 
 #ifdef CPKIT_HAVE_SICONOS
 #pragma GCC diagnostic push
@@ -234,6 +241,7 @@ std::string machine() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cpkit::cli::mpi::init(&argc, &argv);
   fs::path out_dir = "robustness-out";
   bool quick = false;
   for (int a = 1; a < argc; ++a) {
@@ -254,19 +262,13 @@ int main(int argc, char** argv) {
       {"siconos-enum", SICONOS_LCP_ENUM}};
   for (const auto& s : siconos) columns.push_back(s.first);
 #endif
-  std::ofstream csv(out_dir / "results.csv");
-  csv << "problem,family,n,solvable,solver,status,verified,residual,seconds,answered_by\n";
-  // times[problem][solver] (infinity when not solved); solvable problems only.
-  std::vector<std::vector<double>> times;
-  std::map<std::string, int> ok, false_claims;
-  int solvable = 0, infeasible = 0;
-  for (const auto& it : items) {
-    std::vector<double> row;
+  // Every (problem, solver) run: problem k is chunk k, computed on whichever rank takes it.
+  std::vector<std::vector<Outcome>> results(items.size());
+  auto solve_item = [&](const Item& it) {
+    std::vector<Outcome> outs;
     for (const auto& col : columns) {
       Outcome o;
-      if (const auto* e = cpkit::lcp::solvers().find(col)) {
-        o = run_cpkit(*e, it.problem);
-      }
+      if (const auto* e = cpkit::lcp::solvers().find(col)) o = run_cpkit(*e, it.problem);
 #ifdef CPKIT_HAVE_SICONOS
       for (const auto& s : siconos)
         if (s.first == col) {
@@ -277,6 +279,50 @@ int main(int argc, char** argv) {
           }
         }
 #endif
+      outs.push_back(o);
+    }
+    return outs;
+  };
+  cpkit::cli::ChunkRun run;
+  run.plan.rows = static_cast<int>(items.size());
+  run.plan.chunk_rows = 1;
+  run.plan.chunks = run.plan.rows;
+  run.plan.columns = static_cast<int64_t>(columns.size());
+  run.compute = [&](int k) {
+    cpkit::cli::MapChunk c;
+    c.index = k;
+    c.row_begin = k;
+    c.row_end = k + 1;
+    nlohmann::json outs = nlohmann::json::array();
+    for (const auto& o : solve_item(items[static_cast<std::size_t>(k)]))
+      outs.push_back({o.status, o.solved, o.residual, o.seconds, o.answered_by});
+    c.summary = outs;
+    return c;
+  };
+  run.consume = [&](const cpkit::cli::MapChunk& c) {
+    for (const auto& o : c.summary)
+      results[static_cast<std::size_t>(c.index)].push_back(
+          {o[0].get<std::string>(), o[1].get<bool>(), o[2].get<double>(), o[3].get<double>(),
+           o[4].get<std::string>()});
+    std::cerr << items[static_cast<std::size_t>(c.index)].name << " done\n";
+  };
+  const cpkit::cli::ChunkRunStats stats = cpkit::cli::run_chunks(run);
+  if (cpkit::cli::mpi::rank() != 0) {
+    cpkit::cli::mpi::finalize();
+    return 0;
+  }
+  std::ofstream csv(out_dir / "results.csv");
+  csv << "problem,family,n,solvable,solver,status,verified,residual,seconds,answered_by\n";
+  // times[problem][solver] (infinity when not solved); solvable problems only.
+  std::vector<std::vector<double>> times;
+  std::map<std::string, int> ok, false_claims;
+  int solvable = 0, infeasible = 0;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Item& it = items[k];
+    std::vector<double> row;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::string& col = columns[c];
+      const Outcome& o = results[k][c];
       csv << it.name << ',' << it.family << ',' << it.problem.size() << ',' << it.solvable << ','
           << col << ',' << o.status << ',' << o.solved << ',' << o.residual << ',' << o.seconds
           << ',' << o.answered_by << '\n';
@@ -293,7 +339,6 @@ int main(int argc, char** argv) {
     } else {
       ++infeasible;
     }
-    std::cerr << it.name << " done\n";
   }
   // Dolan-More profile over the solvable problems.
   std::ofstream prof(out_dir / "profile.csv");
@@ -313,7 +358,12 @@ int main(int argc, char** argv) {
     }
     prof << '\n';
   }
-  std::ofstream(out_dir / "machine.txt") << machine();
+  std::ostringstream runs;
+  runs << "processes: " << stats.ranks << " (problems x solvers computed per rank:";
+  for (auto cells : stats.rank_cells) runs << ' ' << cells;
+  runs << ")\n";
+  std::ofstream(out_dir / "machine.txt") << machine() << runs.str();
+  std::cout << runs.str();
   std::ostringstream summary;
   summary << "| solver | solved (of " << solvable << " solvable) | false \"solved\" on " << infeasible
           << " infeasible |\n|---|---|---|\n";
@@ -321,5 +371,6 @@ int main(int argc, char** argv) {
     summary << "| " << c << " | " << ok[c] << " | " << false_claims[c] << " |\n";
   std::ofstream(out_dir / "summary.md") << summary.str();
   std::cout << summary.str();
+  cpkit::cli::mpi::finalize();
   return 0;
 }

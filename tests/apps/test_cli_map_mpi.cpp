@@ -2,7 +2,8 @@
 // writes (the .npy files byte for byte, the CSV, the JSON apart from run figures); the summary
 // records the ranks and the cells each computed; a rank killed mid-run fails the job with no
 // complete-looking output, and --resume finishes it; what cannot be distributed is refused.
-// Independent source: the single-process run. Exits 77 (skipped, reason printed) when this
+// bench_robustness spreads its problems the same way. Independent source: the single-process
+// run. Exits 77 (skipped, reason printed) when this
 // build has no MPI (CMake CPKIT_WITH_MPI=OFF) or mpirun is missing.
 #include <unistd.h>
 
@@ -10,6 +11,8 @@
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -129,4 +132,38 @@ TEST_CASE("mpirun: what is not distributed is refused on every rank, exit 2", "[
     CHECK(err.find("mpirun") != std::string::npos);
     CHECK(slurp(dir / "out.txt").empty());
   }
+}
+
+TEST_CASE("mpirun -np 2 bench_robustness --quick: the same verdicts as one process",
+          "[cli][mpi][bench]") {
+  const fs::path bench = fs::path(CPKIT_BINARY_DIR) / "bench" / "bench_robustness";
+  if (!fs::exists(bench)) {
+    WARN("not checked: " << bench << " is not built (CPKIT_BUILD_BENCH=OFF)");
+    return;
+  }
+  const fs::path dir = scratch_dir() / "robustness";
+  const std::string b = "'" + bench.string() + "' ";
+  REQUIRE(shell(b + "'" + (dir / "one").string() + "' --quick > /dev/null 2>&1") == 0);
+  const std::string launcher = mpirun(2);  // "mpirun ... 'cpkit' ": use its launcher part only
+  const std::string mpi = launcher.substr(0, launcher.find(cpkit_program()));
+  REQUIRE(shell(mpi + b + "'" + (dir / "two").string() + "' --quick > '" + (dir / "two.txt").string() +
+                "' 2>&1") == 0);
+  CHECK(slurp(dir / "two.txt").find("processes: 2") != std::string::npos);
+  // every column but the time (9th) is the same, row for row
+  auto without_times = [](const fs::path& csv) {
+    std::istringstream in(slurp(csv));
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+      std::vector<std::string> f;
+      std::istringstream ls(line);
+      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+      if (f.size() > 8) f.erase(f.begin() + 8);
+      for (const auto& x : f) out += x + ",";
+      out += "\n";
+    }
+    return out;
+  };
+  const std::string one = without_times(dir / "one" / "results.csv");
+  CHECK(one.size() > 1000);
+  CHECK(one == without_times(dir / "two" / "results.csv"));
 }
