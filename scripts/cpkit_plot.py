@@ -142,6 +142,18 @@ def load_param_param(summary, base, n1, n2, classes):
     return xs, ys, cls
 
 
+def cell_edges(v, lo=None, hi=None):
+    """Cell boundaries around the centres v (midpoints; the ends mirrored, or lo and hi)."""
+    import numpy as np
+    if len(v) == 1:
+        return np.array([v[0] - 0.5, v[0] + 0.5])
+    mid = 0.5 * (v[1:] + v[:-1])
+    e = np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+    if lo is not None:
+        e[0], e[-1] = lo, hi
+    return e
+
+
 def count_key(c):
     return "inf" if c == "inf" or c == -1 else str(c)
 
@@ -221,14 +233,7 @@ def plot_param_direction(summary, base, plt):
     combos = sorted({str(t) for t in np.unique(typ_raw)})
     cidx = {c: i for i, c in enumerate(combos)}
     typ = np.vectorize(lambda t: cidx[str(t)])(typ_raw).T
-    def edges(v, lo=None, hi=None):
-        if len(v) == 1:
-            return np.array([v[0] - 0.5, v[0] + 0.5])
-        mid = 0.5 * (v[1:] + v[:-1])
-        e = np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
-        if lo is not None:
-            e[0], e[-1] = lo, hi
-        return e
+    edges = cell_edges
     t_lo, t_hi = summary.get("theta_from", 0.0), summary.get("theta_to", 2 * math.pi)
     xe, te = edges(xs), edges(th, t_lo, t_hi)
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.6), sharey=True)
@@ -297,11 +302,7 @@ def plot_param_param(summary, base, plt):
     xs, ys, cls = load_param_param(summary, base, a1["n"], a2["n"], classes)
     n1, n2 = len(xs), len(ys)
     cls = cls.T
-    def edges(v):
-        if len(v) == 1:
-            return np.array([v[0] - 0.5, v[0] + 0.5])
-        mid = 0.5 * (v[1:] + v[:-1])
-        return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+    edges = cell_edges
     fig, ax = plt.subplots(figsize=(7.5, 6))
     ax.pcolormesh(edges(xs), edges(ys), cls, cmap=ListedColormap([CLASS_COLOURS[c] for c in classes]),
                   norm=BoundaryNorm([k - 0.5 for k in range(len(classes) + 1)], len(classes)), shading="flat", rasterized=True)
@@ -365,14 +366,7 @@ def plot_system_grid(summary, base, plt):
     inp = summary["input"]
     pd = summary["kind"] == "param-direction"
     xs, ys, a, pat = load_system_grid(summary, base)
-    def edges(v, lo=None, hi=None):
-        if len(v) == 1:
-            return np.array([v[0] - 0.5, v[0] + 0.5])
-        mid = 0.5 * (v[1:] + v[:-1])
-        e = np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
-        if lo is not None:
-            e[0], e[-1] = lo, hi
-        return e
+    edges = cell_edges
     if pd:
         y_lo, y_hi = inp.get("theta_from", 0.0), inp.get("theta_to", 2 * math.pi)
         xe, ye = edges(xs), edges(ys, y_lo, y_hi)

@@ -243,6 +243,29 @@ void plan_segments(int b0, int b1, int columns, int threads, std::vector<Segment
     }
 }
 
+/// Block [b0, b1) of rows [row0, row1): its segments computed on the threads by fn(k), then
+/// their pattern tables merged in segment order (ids in `pattern`, the block's cells row-major)
+/// and their counters added.
+template <class SegmentFn>
+void run_block(int b0, int b1, int row0, int row1, int columns, int threads,
+               std::vector<Segment>& segs, SegmentFn&& fn, const MapProgress& progress,
+               PatternNumbering& numbering, uint16_t* pattern, int64_t& unreliable,
+               int64_t& inconsistent) {
+  plan_segments(b0, b1, columns, threads, segs);
+  const int n_segs = static_cast<int>(segs.size());
+  run_items(0, n_segs, threads, fn, [&](int done) {
+    if (progress)
+      progress("cells", (b0 - row0 + static_cast<double>(done) / n_segs * (b1 - b0)) /
+                            (row1 - row0));
+  });
+  for (const Segment& g : segs) {
+    const std::size_t base = static_cast<std::size_t>(g.row - b0) * static_cast<std::size_t>(columns);
+    numbering.merge_row(g.table, pattern + base + g.c0, g.c1 - g.c0);
+    unreliable += g.unreliable;
+    inconsistent += g.inconsistent;
+  }
+}
+
 /// Classes of a cell's direction map (as compute_param_param_map for one point).
 struct CellClass {
   uint8_t cls = 0;
@@ -342,19 +365,9 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
   };
   for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
     const int block_end = std::min(row1, block_begin + block_rows);
-    plan_segments(block_begin, block_end, theta_n, map.threads, segs);
-    const int n_segs = static_cast<int>(segs.size());
-    run_items(0, n_segs, map.threads, segment, [&](int done) {
-      if (progress)
-        progress("cells", (block_begin - row0 + static_cast<double>(done) / n_segs *
-                                                   (block_end - block_begin)) / (row1 - row0));
-    });
-    for (const Segment& g : segs) {
-      const std::size_t base =
-          static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(theta_n);
-      numbering.merge_row(g.table, pattern.data() + base + g.c0, g.c1 - g.c0);
-      map.unreliable += g.unreliable;
-    }
+    int64_t no_sectors = 0;  // a parameter x direction map has no sectors to check
+    run_block(block_begin, block_end, row0, row1, theta_n, map.threads, segs, segment, progress,
+              numbering, pattern.data(), map.unreliable, no_sectors);
     for (int i = block_begin; i < block_end; ++i) {
       const std::size_t base =
           static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(theta_n);
@@ -448,20 +461,8 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
   };
   for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
     const int block_end = std::min(row1, block_begin + block_rows);
-    plan_segments(block_begin, block_end, n2, map.threads, segs);
-    const int n_segs = static_cast<int>(segs.size());
-    run_items(0, n_segs, map.threads, segment, [&](int done) {
-      if (progress)
-        progress("cells", (block_begin - row0 + static_cast<double>(done) / n_segs *
-                                                   (block_end - block_begin)) / (row1 - row0));
-    });
-    for (const Segment& g : segs) {
-      const std::size_t base =
-          static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(n2);
-      numbering.merge_row(g.table, pattern.data() + base + g.c0, g.c1 - g.c0);
-      map.unreliable += g.unreliable;
-      map.inconsistent_sectors += g.inconsistent;
-    }
+    run_block(block_begin, block_end, row0, row1, n2, map.threads, segs, segment, progress,
+              numbering, pattern.data(), map.unreliable, map.inconsistent_sectors);
     for (int i = block_begin; i < block_end; ++i) {
       const std::size_t base = static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2);
       for (int j = 0; j < n2; ++j) boxes[cls[base + j]].add(axis1.value(i), axis2.value(j));
