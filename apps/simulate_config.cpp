@@ -328,6 +328,11 @@ void validate_simulate_settings(const SimulateSettings& s) {
   if (s.every < 0) throw InputError("every must be >= 0, got " + std::to_string(s.every));
   if ((!s.csv.empty() || !s.plot.empty()) && s.every == 0)
     throw InputError("a CSV or plot needs every >= 1");
+  // every thins the time series; without a series file it would change nothing
+  if (s.every != 1 && s.csv.empty() && s.plot.empty())
+    throw InputError("every = " + std::to_string(s.every) + " (--every, output.every) has no "
+                     "effect without a time series: give --csv FILE or --plot PREFIX "
+                     "(output.csv, output.plot)");
   rate::SimulationOptions o = s.opt;
   o.record_every = s.every;
   if (s.system.empty()) throw_if_invalid(o.validate(), "simulation");

@@ -151,6 +151,7 @@ TEST_CASE("empty, non-finite and malformed option values are refused by every su
       {"simulate --a11 1 --a12 \"\" --a22 1 --mu 0.5", "--a12"},
       {"simulate " + kModel + "--every \"\"", "--every"},
       {"simulate " + kModel + "--every -1", "every"},
+      {"simulate " + kModel + "--every 5", "no effect"},  // no --csv/--plot: no series to thin
       {"simulate " + kModel + "--F_N inf", "--F_N"},
       {"simulate " + kModel + "--T-body 300 nan --heat", "--T-body"},
       {"lcp solve '" + lcp + "' --tol \"\"", "--tol"},
