@@ -80,7 +80,7 @@ bool run_map_plot(const std::string& prefix, nlohmann::json& files) {
   }
   const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
   const std::string cmd = command_text(argv);
-  const ProgramRun pr = run_program(argv, true);
+  const ProgramRun pr = run_program(argv, true, kPlotTimeLimit);
   const int code = pr.started ? pr.exit_code : -1;
   if (code == 0) {
     files["png"] = fs::path(prefix + ".png").filename().string();

@@ -3,14 +3,18 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <csignal>
 #include <cerrno>
+#include <chrono>
+#include <thread>
 #include <cstring>
 
 extern char** environ;
 
 namespace cpkit::cli {
 
-ProgramRun run_program(const std::vector<std::string>& argv, bool stdout_to_stderr) {
+ProgramRun run_program(const std::vector<std::string>& argv, bool stdout_to_stderr,
+                       double time_limit_s) {
   ProgramRun out;
   if (argv.empty()) {
     out.error = "no program given";
@@ -32,10 +36,26 @@ ProgramRun run_program(const std::vector<std::string>& argv, bool stdout_to_stde
   }
   out.started = true;
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const pid_t w = waitpid(pid, &status, time_limit_s > 0 ? WNOHANG : 0);
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) {
       out.error = std::string("waitpid failed: ") + std::strerror(errno);
       return out;
+    }
+    if (w == 0) {  // still running (WNOHANG)
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (t > time_limit_s) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        out.exit_code = -1;
+        out.error = "stopped after " + std::to_string(static_cast<int>(time_limit_s)) +
+                    " s (time limit)";
+        return out;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
   out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -38,7 +38,7 @@ bool draw_simulation_figures(const std::string& script_name, const std::string& 
   // An argument vector, never a shell: the paths come from the user or a config file.
   const std::vector<std::string> argv = {plot_python(), script, "--csv", csv,
                                          "--summary", summary, "--out", plot};
-  const ProgramRun pr = run_program(argv, true);
+  const ProgramRun pr = run_program(argv, true, kPlotTimeLimit);
   if (!pr.started || pr.exit_code != 0) {
     std::cerr << "cpkit simulate: the plot script failed ("
               << (pr.error.empty() ? "exit " + std::to_string(pr.exit_code) : pr.error)
