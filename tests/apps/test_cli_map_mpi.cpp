@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -61,9 +62,16 @@ TEST_CASE("mpirun -np 2: the distributed maps equal the single-process maps", "[
       {"pp_csv", "--kind param-param --param mu@1 --from 0.5 --to 9 --n 9 --param2 mu@2 "
                  "--from2 0.5 --to2 3 --n2 5 --format csv",
        {".csv"}}};
-  for (const auto& c : cases) {
+  // and one point (Fig. 5b as an N = 1 system: the one-point model through the N-point engine)
+  const fs::path one_point = dir / "fig5b.json";
+  std::ofstream(one_point) << R"({"A": [[1, 2], [2, 5]], "points": [{"state": "b", "mu": 1}]})";
+  std::vector<Case> all = cases;
+  all.push_back({"n1", "--kind param-direction --param mu --from 0.1 --to 4 --n 90 --theta-n 360",
+                 {"_count.npy", "_pattern.npy"}});
+  for (const auto& c : all) {
     CAPTURE(c.name);
-    const std::string map = "map --system '" + kSystem + "' " + c.args + " --threads 1";
+    const std::string file = c.name == "n1" ? one_point.string() : kSystem;
+    const std::string map = "map --system '" + file + "' " + c.args + " --threads 1";
     const fs::path one = dir / (c.name + "_1"), two = dir / (c.name + "_2");
     REQUIRE(shell(cpkit_program() + " " + map + " --out '" + one.string() + "' > /dev/null 2>&1") == 0);
     const int rc = shell(mpirun(2) + map + " --out '" + two.string() + "' > '" + dir.string() +
