@@ -124,6 +124,21 @@ TEST_CASE("mpirun: a killed rank fails the job without complete-looking files; -
   CHECK(map_result(ref.string() + ".json") == map_result(cut.string() + ".json"));
 }
 
+TEST_CASE("mpirun: bad input is reported once, by rank 0, exit 2", "[cli][map][mpi]") {
+  const fs::path dir = scratch_dir() / "mpi_bad";
+  fs::create_directories(dir);
+  const int rc = shell(mpirun(2) + "map --system '" + kSystem + "' --kind param-direction --param "
+                       "nonsense --from 0 --to 1 --out '" + (dir / "m").string() + "' > '" +
+                       (dir / "out.txt").string() + "' 2> '" + (dir / "err.txt").string() + "'");
+  const std::string err = slurp(dir / "err.txt");
+  INFO(err);
+  CHECK(rc == 2);
+  const auto first = err.find("unknown map parameter 'nonsense'");
+  REQUIRE(first != std::string::npos);
+  CHECK(err.find("unknown map parameter 'nonsense'", first + 1) == std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "m.json"));
+}
+
 TEST_CASE("mpirun: what is not distributed is refused on every rank, exit 2", "[cli][map][mpi]") {
   const fs::path dir = scratch_dir() / "mpi_refuse";
   fs::create_directories(dir);
