@@ -350,4 +350,56 @@ void remove_checkpoint(const std::string& folder) {
   fs::remove_all(folder, ec);
 }
 
+ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
+                             const nlohmann::json& manifest, const ChunkPlan& plan,
+                             const std::function<MapChunk(int)>& compute,
+                             const std::function<void(const MapChunk&)>& consume,
+                             const rate::MapProgress& progress) {
+  ChunkRun run;
+  run.plan = plan;
+  run.compute = compute;
+  run.consume = consume;
+  run.resume = resume;
+  if (!out_prefix.empty()) {
+    run.checkpoint = out_prefix + ".parts";
+    run.manifest = manifest;
+    run.manifest["chunk_rows"] = plan.chunk_rows;
+    run.manifest["chunks"] = plan.chunks;
+  }
+  if (mpi::rank() == 0) run.progress = progress;
+  return run_chunks(run);
+}
+
+void add_run_figures(nlohmann::json& j, const ChunkRunStats& st) {
+  j["ranks"] = st.ranks;
+  j["rank_cells"] = st.rank_cells;
+  if (st.resumed_chunks > 0) j["resumed_cells"] = st.resumed_cells;
+}
+
+nlohmann::json boxes_to_json(const std::vector<rate::GridClassBox>& boxes) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& b : boxes) out.push_back({b.code, b.cells, b.x_min, b.x_max, b.y_min, b.y_max});
+  return out;
+}
+
+void merge_boxes(std::map<int, rate::GridClassBox>& into, const nlohmann::json& boxes) {
+  for (const auto& b : boxes) {
+    const int code = b.at(0).get<int>();
+    rate::GridClassBox& g = into[code];
+    if (g.cells == 0) {
+      g.code = code;
+      g.x_min = b.at(2).get<double>();
+      g.x_max = b.at(3).get<double>();
+      g.y_min = b.at(4).get<double>();
+      g.y_max = b.at(5).get<double>();
+    } else {
+      g.x_min = std::min(g.x_min, b.at(2).get<double>());
+      g.x_max = std::max(g.x_max, b.at(3).get<double>());
+      g.y_min = std::min(g.y_min, b.at(4).get<double>());
+      g.y_max = std::max(g.y_max, b.at(5).get<double>());
+    }
+    g.cells += b.at(1).get<int64_t>();
+  }
+}
+
 }  // namespace cpkit::cli

@@ -8,6 +8,7 @@
 // killed job) is resumed from the finished chunks with --resume.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -64,5 +65,22 @@ ChunkRunStats run_chunks(const ChunkRun& run);
 
 /// Removes the checkpoint folder (after the outputs are complete).
 void remove_checkpoint(const std::string& folder);
+
+/// A grid map's chunks with the checkpoint PREFIX.parts when `out_prefix` is set (manifest:
+/// what the map is); `progress` is called on rank 0 only. Returns the run's figures.
+ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
+                             const nlohmann::json& manifest, const ChunkPlan& plan,
+                             const std::function<MapChunk(int)>& compute,
+                             const std::function<void(const MapChunk&)>& consume,
+                             const rate::MapProgress& progress);
+
+/// The run figures of a map's JSON: "ranks", "rank_cells", and "resumed_cells" after --resume.
+void add_run_figures(nlohmann::json& j, const ChunkRunStats& st);
+
+/// Class boxes of a part of a map, as JSON ([code, cells, x_min, x_max, y_min, y_max] each), and
+/// their merge into the boxes of the whole map (by code; min/max and sums: what one pass over
+/// all cells gives).
+nlohmann::json boxes_to_json(const std::vector<rate::GridClassBox>& boxes);
+void merge_boxes(std::map<int, rate::GridClassBox>& into, const nlohmann::json& boxes);
 
 }  // namespace cpkit::cli

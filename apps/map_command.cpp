@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "map_chunks.hpp"
 #include "map_files.hpp"
 #include "map_system.hpp"
 #include "mpi_session.hpp"
@@ -383,6 +384,8 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
     if (writing)
       e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (sa.n * ts)
                      : e.cells * (2 + cross_bytes) + 8 * (n + tn) + 5 * 128;
+    // The finished chunks stay in PREFIX.parts until the outputs are complete (map_chunks.hpp).
+    if (writing) e.output += e.cells * (2 + cross_bytes);
   } else {
     const double n1 = s.axis.n, n2 = s.axis2.n;
     e.cells = n1 * n2;
@@ -406,6 +409,7 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
     if (writing)
       e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (a1.n * a2.n)
                      : e.cells * (4 + cross_bytes) + 8 * (n1 + n2) + 7 * 128;
+    if (writing) e.output += e.cells * (4 + cross_bytes);  // and the checkpoint's chunks
   }
   return e;
 }
@@ -413,6 +417,9 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
 /// Refuses (exit 2) a grid map that cannot fit this machine's memory or the output's disk.
 void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string& out_dir,
                      bool csv, double time_limit) {
+  // Rank 0 decides for the job (an estimate differs between ranks); if it refuses, mpirun
+  // ends the others.
+  if (mpi::rank() != 0) return;
   const std::string cells =
       s.kind == MapKind::kParamDirection
           ? std::to_string(s.axis.n) + " x " + std::to_string(s.theta_n) + " cells (--n x --theta-n)"
@@ -515,14 +522,13 @@ int run_map(const MapArgs& a) {
     if (!r.out.empty()) prepare_out_prefix(r.out);
     return run_map_system(r);
   }
-  if (mpi::size() > 1)
-    throw InputError("under mpirun, cpkit map distributes the grid maps of N-point systems "
-                     "(--system FILE --kind param-direction or param-param); a one-point map "
-                     "computes millions of cells per second on one process: run it without mpirun");
-  if (a.resume)
-    throw InputError("--resume applies to the grid maps of N-point systems (--system FILE "
-                     "--kind param-direction or param-param)");
   const MapSetup s = build_setup(a);
+  if (s.kind == MapKind::kDirection && mpi::size() > 1)
+    throw InputError("a direction map is one exact computation, not a grid of cells: run it "
+                     "without mpirun");
+  if (a.resume && (s.kind == MapKind::kDirection || a.out.empty()))
+    throw InputError("--resume applies to grid maps written with --out PREFIX (the finished "
+                     "chunks are kept in PREFIX.parts)");
   MapOptions options;
   const auto method = rate_method_from_string(a.method);
   if (!method) throw InputError("--method must be enumerate or analytic, got '" + a.method + "'");
@@ -589,9 +595,15 @@ int run_map(const MapArgs& a) {
     };
   } else {
     // Grid maps: estimate, refuse what cannot fit, then stream the cells to the files.
-    const GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
+    GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
+    est.seconds /= mpi::size();  // the ranks share the cells
     check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv,
                     a.time_limit);
+    // Every grid value next (cheaper than a cell; after the refusals, which need no pass over
+    // the grid): the first invalid one is named before any cell is computed, whichever rank
+    // or chunk would meet it first.
+    validate_map_grid(s.params, s.state, s.axis,
+                      s.kind == MapKind::kParamParam ? &s.axis2 : nullptr);
     j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
                      {"output_bytes", est.output}, {"threads", est.threads}};
     if (est.seconds > 1.0 || est.output > 1e9)
@@ -614,38 +626,124 @@ int run_map(const MapArgs& a) {
       return v;
     };
 
+    // The rows are computed in chunks (map_chunks.hpp): spread over the ranks of an MPI job,
+    // kept in PREFIX.parts for --resume, consumed in row order; the outputs are those of one
+    // pass over the map.
+    nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", j["kind"]},
+                               {"model", j["model"]}, {"method", a.method}, {"format", a.format},
+                               {"axis", {{"param", to_string(s.axis.param)}, {"from", s.axis.from},
+                                         {"to", s.axis.to}, {"n", s.axis.n}}}};
+    ChunkRunStats stats;
     if (s.kind == MapKind::kParamDirection) {
       const std::vector<double> theta =
           map_theta_values(s.theta_n, options.theta_from, options.theta_to);
-      if (!prefix.empty() && !csv) {
-        out.add_npy("count", "|i1", s.axis.n, s.theta_n);
-        out.add_npy("types", "|u1", s.axis.n, s.theta_n);
-        if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
-        out.write_vector("x", axis_values(s.axis));
-        out.write_vector("theta", theta);
-      } else if (!prefix.empty()) {
-        write_csv_header(s.axis, cross, out.open_csv());
-      }
-      std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
+      manifest["theta"] = {{"n", s.theta_n}, {"from", options.theta_from}, {"to", options.theta_to}};
+      // Rank 0 alone writes: the files are opened when the first chunk arrives.
+      bool opened = false;
+      auto open_files = [&] {
+        if (!prefix.empty() && !csv) {
+          out.add_npy("count", "|i1", s.axis.n, s.theta_n);
+          out.add_npy("types", "|u1", s.axis.n, s.theta_n);
+          if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
+          out.write_vector("x", axis_values(s.axis));
+          out.write_vector("theta", theta);
+        } else if (!prefix.empty()) {
+          write_csv_header(s.axis, cross, out.open_csv());
+        }
+        opened = true;
+      };
+      const ChunkPlan plan = plan_chunks(s.axis.n, s.theta_n);
+      auto compute = [&](int k) {
+        MapChunk c;
+        c.index = k;
+        c.row_begin = plan.begin(k);
+        c.row_end = plan.end(k);
+        std::string cnt, typ, dis;
+        const ParamDirectionMap part = compute_param_direction_map(
+            s.params, s.state, s.axis, s.theta_n, options, {},
+            [&](const ParamDirectionRows& r) {
+              const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
+                                        static_cast<std::size_t>(s.theta_n);
+              cnt.append(reinterpret_cast<const char*>(r.count), cells);
+              typ.append(reinterpret_cast<const char*>(r.types), cells);
+              if (r.disagree) dis.append(reinterpret_cast<const char*>(r.disagree), cells);
+            },
+            RowRange{c.row_begin, c.row_end});
+        nlohmann::json crit = nlohmann::json::array(), values = nlohmann::json::array();
+        for (const auto& d : part.critical_directions)
+          crit.push_back({d.x, d.theta, d.conditions, d.summary.count, d.summary.types,
+                          d.summary.reliable});
+        for (const auto& v : part.critical_values) values.push_back({v.name, v.x, v.y});
+        c.summary = {{"boxes", boxes_to_json(part.classes)}, {"type_cells", part.type_cells},
+                     {"disagreements", part.disagreements}, {"unreliable", part.unreliable},
+                     {"critical_directions", crit}, {"critical_values", values}};
+        c.arrays = {std::move(cnt), std::move(typ)};
+        if (cross) c.arrays.push_back(std::move(dis));
+        return c;
+      };
+      // The whole map's summary, merged from the chunks in row order.
       ParamDirectionMap m;
+      m.axis = s.axis;
+      m.theta_n = s.theta_n;
+      m.theta_from = options.theta_from;
+      m.theta_to = options.theta_to;
+      m.theta = theta;
+      m.cross_checked = cross;
+      m.threads = worker_threads(options.threads, s.axis.n);
+      std::map<int, GridClassBox> boxes;
+      std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
+      auto consume = [&](const MapChunk& c) {
+        if (!opened) open_files();
+        const std::size_t cells = static_cast<std::size_t>(c.row_end - c.row_begin) *
+                                  static_cast<std::size_t>(s.theta_n);
+        if (c.arrays.size() != (cross ? 3u : 2u))
+          throw InputError("corrupt map chunk " + std::to_string(c.index));
+        for (const auto& arr : c.arrays)
+          if (arr.size() != cells) throw InputError("corrupt map chunk " + std::to_string(c.index));
+        ParamDirectionRows r;
+        r.row_begin = c.row_begin;
+        r.row_end = c.row_end;
+        r.count = reinterpret_cast<const int8_t*>(c.arrays[0].data());
+        r.types = reinterpret_cast<const uint8_t*>(c.arrays[1].data());
+        r.disagree = cross ? reinterpret_cast<const uint8_t*>(c.arrays[2].data()) : nullptr;
+        out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
+        if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
+        for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
+          if (r.disagree[k])
+            shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
+                               static_cast<int>(k % s.theta_n));
+        const nlohmann::json& sum = c.summary;
+        merge_boxes(boxes, sum.at("boxes"));
+        for (std::size_t b = 0; b < m.type_cells.size(); ++b)
+          m.type_cells[b] += sum.at("type_cells").at(b).get<int64_t>();
+        m.disagreements += sum.at("disagreements").get<int64_t>();
+        m.unreliable += sum.at("unreliable").get<int64_t>();
+        for (const auto& d : sum.at("critical_directions")) {
+          RateSummary rs;
+          rs.count = d.at(3).get<int>();
+          rs.types = d.at(4).get<unsigned>();
+          rs.reliable = d.at(5).get<bool>();
+          m.critical_directions.push_back(
+              {d.at(0).get<double>(), d.at(1).get<double>(), d.at(2).get<std::string>(), rs});
+        }
+        if (c.index == 0)  // the analytic curves are the whole axis's: every chunk has them
+          for (const auto& v : sum.at("critical_values"))
+            m.critical_values.push_back(
+                {v.at(0).get<std::string>(), v.at(1).get<double>(), v.at(2).get<double>()});
+      };
       try {
-        m = compute_param_direction_map(
-          s.params, s.state, s.axis, s.theta_n, options, make_map_progress(),
-          [&](const ParamDirectionRows& r) {
-            const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.theta_n;
-            out.append({r.count, r.types, r.disagree}, cells);
-            if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
-            for (int64_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
-              if (r.disagree[k])
-                shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
-                                   static_cast<int>(k % s.theta_n));
-          });
+        stats = run_map_chunks(prefix, a.resume, manifest, plan, compute, consume,
+                               make_map_progress());
+        if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
         out.finish();
       } catch (...) {
         out.discard();
         throw;
       }
+      for (const auto& [code, b] : boxes) m.classes.push_back(b);
+      m.seconds = clock.seconds();
       j.update(to_json(m));
+      add_run_figures(j, stats);
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
       report_unreliable(m.unreliable, "cells");
@@ -683,34 +781,102 @@ int run_map(const MapArgs& a) {
                     << '\n';
       };
     } else {
-      if (!prefix.empty() && !csv) {
-        out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
-        out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
-        out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
-        out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
-        if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
-        out.write_vector("x", axis_values(s.axis));
-        out.write_vector("y", axis_values(s.axis2));
+      if (!prefix.empty() && !csv)
         j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
                             {"none-and-several", 3}};
-      } else if (!prefix.empty()) {
-        write_csv_header(s.axis, s.axis2, cross, out.open_csv());
-      }
+      bool opened = false;  // rank 0 alone writes, from the first chunk on
+      auto open_files = [&] {
+        if (!prefix.empty() && !csv) {
+          out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
+          out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
+          out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
+          out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
+          if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
+          out.write_vector("x", axis_values(s.axis));
+          out.write_vector("y", axis_values(s.axis2));
+        } else if (!prefix.empty()) {
+          write_csv_header(s.axis, s.axis2, cross, out.open_csv());
+        }
+        opened = true;
+      };
+      manifest["axis2"] = {{"param", to_string(s.axis2.param)}, {"from", s.axis2.from},
+                           {"to", s.axis2.to}, {"n", s.axis2.n}};
+      const ChunkPlan plan = plan_chunks(s.axis.n, s.axis2.n);
+      auto compute = [&](int k) {
+        MapChunk c;
+        c.index = k;
+        c.row_begin = plan.begin(k);
+        c.row_end = plan.end(k);
+        std::string cls, lo, hi, typ, dis;
+        const ParamParamMap part = compute_param_param_map(
+            s.params, s.state, s.axis, s.axis2, options, {},
+            [&](const ParamParamRows& r) {
+              const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
+                                        static_cast<std::size_t>(s.axis2.n);
+              cls.append(reinterpret_cast<const char*>(r.cls), cells);
+              lo.append(reinterpret_cast<const char*>(r.min_count), cells);
+              hi.append(reinterpret_cast<const char*>(r.max_count), cells);
+              typ.append(reinterpret_cast<const char*>(r.types), cells);
+              if (r.disagree) dis.append(reinterpret_cast<const char*>(r.disagree), cells);
+            },
+            RowRange{c.row_begin, c.row_end});
+        nlohmann::json curve = nlohmann::json::array();
+        for (const auto& v : part.critical_curve) curve.push_back({v.name, v.x, v.y});
+        c.summary = {{"boxes", boxes_to_json(part.classes)},
+                     {"disagreements", part.disagreements},
+                     {"inconsistent_sectors", part.inconsistent_sectors},
+                     {"unreliable", part.unreliable}, {"critical_curve", curve}};
+        c.arrays = {std::move(cls), std::move(lo), std::move(hi), std::move(typ)};
+        if (cross) c.arrays.push_back(std::move(dis));
+        return c;
+      };
       ParamParamMap m;
+      m.axis1 = s.axis;
+      m.axis2 = s.axis2;
+      m.cross_checked = cross;
+      m.threads = worker_threads(options.threads, s.axis.n);
+      std::map<int, GridClassBox> boxes;
+      auto consume = [&](const MapChunk& c) {
+        if (!opened) open_files();
+        const std::size_t cells = static_cast<std::size_t>(c.row_end - c.row_begin) *
+                                  static_cast<std::size_t>(s.axis2.n);
+        if (c.arrays.size() != (cross ? 5u : 4u))
+          throw InputError("corrupt map chunk " + std::to_string(c.index));
+        for (const auto& arr : c.arrays)
+          if (arr.size() != cells) throw InputError("corrupt map chunk " + std::to_string(c.index));
+        ParamParamRows r;
+        r.row_begin = c.row_begin;
+        r.row_end = c.row_end;
+        r.cls = reinterpret_cast<const uint8_t*>(c.arrays[0].data());
+        r.min_count = reinterpret_cast<const int8_t*>(c.arrays[1].data());
+        r.max_count = reinterpret_cast<const int8_t*>(c.arrays[2].data());
+        r.types = reinterpret_cast<const uint8_t*>(c.arrays[3].data());
+        r.disagree = cross ? reinterpret_cast<const uint8_t*>(c.arrays[4].data()) : nullptr;
+        out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
+                   static_cast<int64_t>(cells));
+        if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
+        const nlohmann::json& sum = c.summary;
+        merge_boxes(boxes, sum.at("boxes"));
+        m.disagreements += sum.at("disagreements").get<int64_t>();
+        m.inconsistent_sectors += sum.at("inconsistent_sectors").get<int64_t>();
+        m.unreliable += sum.at("unreliable").get<int64_t>();
+        for (const auto& v : sum.at("critical_curve"))
+          m.critical_curve.push_back(
+              {v.at(0).get<std::string>(), v.at(1).get<double>(), v.at(2).get<double>()});
+      };
       try {
-        m = compute_param_param_map(
-          s.params, s.state, s.axis, s.axis2, options, make_map_progress(),
-          [&](const ParamParamRows& r) {
-            const int64_t cells = static_cast<int64_t>(r.row_end - r.row_begin) * s.axis2.n;
-            out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree}, cells);
-            if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
-          });
+        stats = run_map_chunks(prefix, a.resume, manifest, plan, compute, consume,
+                               make_map_progress());
+        if (mpi::rank() != 0) return kExitOk;
         out.finish();
       } catch (...) {
         out.discard();
         throw;
       }
+      for (const auto& [code, b] : boxes) m.classes.push_back(b);
+      m.seconds = clock.seconds();
       j.update(to_json(m));
+      add_run_figures(j, stats);
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
       report_unreliable(m.unreliable, "direction-map evaluations");
@@ -747,6 +913,8 @@ int run_map(const MapArgs& a) {
       j["files"] = files;
       write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
+    // The outputs are complete: the finished chunks kept for --resume are no longer needed.
+    if (s.kind != MapKind::kDirection) remove_checkpoint(prefix + ".parts");
   }
   if (a.json) {
     print_json(j);

@@ -91,6 +91,9 @@ std::string seconds_text(double s) {
 nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest& r,
                               const std::string& cells, const std::string& fewer,
                               double npy_bytes_per_cell) {
+  // Rank 0 decides for the job (an estimate differs between ranks); if it refuses, mpirun
+  // ends the others.
+  if (mpi::rank() != 0) return nlohmann::json::object();
   if (!r.out.empty()) {
     // A CSV line holds two numbers at 17 digits, the count and the pattern id.
     // The finished chunks are kept in PREFIX.parts until the outputs are complete: twice.
@@ -196,11 +199,8 @@ int resolved_threads(int requested) {
 nlohmann::json chunk_summary(const std::vector<GridClassBox>& classes,
                              const SystemPatternTable& table, int64_t unreliable,
                              int64_t inconsistent, int m_max) {
-  nlohmann::json boxes = nlohmann::json::array();
-  for (const auto& b : classes)
-    boxes.push_back({b.code, b.cells, b.x_min, b.x_max, b.y_min, b.y_max});
-  return {{"boxes", boxes}, {"patterns", table.patterns}, {"unreliable", unreliable},
-          {"inconsistent", inconsistent}, {"m_max", m_max}};
+  return {{"boxes", boxes_to_json(classes)}, {"patterns", table.patterns},
+          {"unreliable", unreliable}, {"inconsistent", inconsistent}, {"m_max", m_max}};
 }
 
 /// Rank 0's merge of the chunks in row order: patterns renumbered in order of first
@@ -231,24 +231,7 @@ struct GridMerge {
       id = to_global[id];
       ++table.cells[id];
     }
-    for (const auto& b : summary.at("boxes")) {
-      const int code = b.at(0).get<int>();
-      GridClassBox& g = boxes[code];
-      const int64_t cells = b.at(1).get<int64_t>();
-      if (g.cells == 0) {
-        g.code = code;
-        g.x_min = b.at(2).get<double>();
-        g.x_max = b.at(3).get<double>();
-        g.y_min = b.at(4).get<double>();
-        g.y_max = b.at(5).get<double>();
-      } else {
-        g.x_min = std::min(g.x_min, b.at(2).get<double>());
-        g.x_max = std::max(g.x_max, b.at(3).get<double>());
-        g.y_min = std::min(g.y_min, b.at(4).get<double>());
-        g.y_max = std::max(g.y_max, b.at(5).get<double>());
-      }
-      g.cells += cells;
-    }
+    merge_boxes(boxes, summary.at("boxes"));
     unreliable += summary.at("unreliable").get<int64_t>();
     inconsistent += summary.at("inconsistent").get<int64_t>();
     m_max = std::max(m_max, summary.at("m_max").get<int>());
@@ -261,30 +244,15 @@ std::vector<uint16_t> ids_of(const std::string& bytes) {
   return ids;
 }
 
-/// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing) and returns
-/// the run's figures; the distributed/resume fields go into the JSON.
+/// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing).
 ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const nlohmann::json& input,
                               const ChunkPlan& plan, const std::function<MapChunk(int)>& compute,
                               const std::function<void(const MapChunk&)>& consume) {
-  ChunkRun run;
-  run.plan = plan;
-  run.compute = compute;
-  run.consume = consume;
-  run.resume = r.resume;
-  if (!r.out.empty()) {
-    run.checkpoint = r.out + ".parts";
-    run.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind}, {"input", input},
-                    {"system_file_fnv1a", file_fingerprint(r.path)}, {"format", r.format},
-                    {"chunk_rows", plan.chunk_rows}, {"chunks", plan.chunks}};
-  }
-  if (mpi::rank() == 0) run.progress = make_map_progress();
-  return run_chunks(run);
-}
-
-void add_run_figures(nlohmann::json& j, const ChunkRunStats& st) {
-  j["ranks"] = st.ranks;
-  j["rank_cells"] = st.rank_cells;
-  if (st.resumed_chunks > 0) j["resumed_cells"] = st.resumed_cells;
+  const nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind},
+                                   {"input", input},
+                                   {"system_file_fnv1a", file_fingerprint(r.path)},
+                                   {"format", r.format}};
+  return run_map_chunks(r.out, r.resume, manifest, plan, compute, consume, make_map_progress());
 }
 
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.

@@ -222,21 +222,50 @@ int grid_block_rows(int64_t columns) noexcept {
   return static_cast<int>(std::max<int64_t>(1, kBlockCells / std::max<int64_t>(1, columns)));
 }
 
+void validate_map_grid(const ContactParameters& params, const ContactState& state,
+                       const MapAxis& axis1, const MapAxis* axis2) {
+  throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
+  if (axis2) throw_if_invalid(axis2->validate(), "map axis " + std::string(to_string(axis2->param)));
+  for (int i = 0; i < axis1.n; ++i) {
+    ContactParameters p = params;
+    ContactState st = state;
+    if (!axis2) {
+      set_and_validate(axis1, axis1.value(i), p, st);
+      continue;
+    }
+    apply_map_parameter(axis1.param, axis1.value(i), p, st);
+    for (int j = 0; j < axis2->n; ++j) {
+      ContactParameters pj = p;
+      ContactState sj = st;
+      try {
+        set_and_validate(*axis2, axis2->value(j), pj, sj);
+      } catch (const InputError& e) {
+        throw InputError("map cell " + std::string(to_string(axis1.param)) + " = " +
+                         std::to_string(axis1.value(i)) + ", " + e.what());
+      }
+    }
+  }
+}
+
 ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const ContactState& state, const MapAxis& axis,
                                               int theta_n, const MapOptions& options,
                                               const MapProgress& progress,
-                                              const ParamDirectionSink& sink) {
+                                              const ParamDirectionSink& sink,
+                                              const RowRange& range) {
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis.validate(), "map axis " + std::string(to_string(axis.param)));
   if (theta_n < 1 || theta_n > 1000000)
     throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
   const Stopwatch clock;
 
-  // Per-row model data, validated once.
-  std::vector<ContactParameters> row_params(static_cast<std::size_t>(axis.n), params);
-  std::vector<ContactState> row_state(static_cast<std::size_t>(axis.n), state);
-  for (int i = 0; i < axis.n; ++i) set_and_validate(axis, axis.value(i), row_params[i], row_state[i]);
+  // Per-row model data of the range's rows (index i - row0), validated once.
+  const auto [row0, row1] = checked_range(range, axis.n);
+  const std::size_t range_rows = static_cast<std::size_t>(row1 - row0);
+  std::vector<ContactParameters> row_params(range_rows, params);
+  std::vector<ContactState> row_state(range_rows, state);
+  for (int i = row0; i < row1; ++i)
+    set_and_validate(axis, axis.value(i), row_params[i - row0], row_state[i - row0]);
 
   ParamDirectionMap map;
   map.axis = axis;
@@ -248,25 +277,25 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   std::vector<LoadRate> loads(static_cast<std::size_t>(theta_n));
   for (int j = 0; j < theta_n; ++j) loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
   // Without a sink the whole grid is kept; with one, a buffer of one block of rows.
-  map.threads = resolve_threads(options.threads, axis.n);
+  map.threads = resolve_threads(options.threads, row1 - row0);
   // At least a few rows per worker in a block, or long rows would run on one thread.
-  const int block_rows =
-      sink ? std::min(axis.n, std::max(grid_block_rows(theta_n), 4 * map.threads)) : axis.n;
+  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(theta_n), 4 * map.threads))
+                              : row1 - row0;
   const std::size_t buffer_cells =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer_cells, 0);
   std::vector<uint8_t> types(buffer_cells, 0);
   std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
-  std::vector<int64_t> row_disagree(static_cast<std::size_t>(axis.n), 0);
-  std::vector<int64_t> row_unreliable(static_cast<std::size_t>(axis.n), 0);
-  std::vector<std::vector<CriticalDirectionPoint>> row_crit(static_cast<std::size_t>(axis.n));
+  std::vector<int64_t> row_disagree(range_rows, 0);
+  std::vector<int64_t> row_unreliable(range_rows, 0);
+  std::vector<std::vector<CriticalDirectionPoint>> row_crit(range_rows);
 
   const RateMethod method = options.method;
   const bool cross = map.cross_checked;
   int block_begin = 0;
   auto row = [&](int i) {
-    const ContactParameters& p = row_params[i];
-    const ContactState& st = row_state[i];
+    const ContactParameters& p = row_params[i - row0];
+    const ContactState& st = row_state[i - row0];
     // Once per row (the row's model is fixed): the state's LCP as a linear function of the load.
     const RatePrecomputed pre = precompute_rate_problem(p, st);
     const std::size_t base =
@@ -295,9 +324,9 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
         n_dis += dis[j];
         n_unreliable += !s.reliable || !e.reliable;
       }
-      row_disagree[i] = n_dis;
+      row_disagree[i - row0] = n_dis;
     }
-    row_unreliable[i] = n_unreliable;
+    row_unreliable[i - row0] = n_unreliable;
     // The exact critical directions of this row (curves theta_c(x) over the map).
     MapOptions dopt;
     dopt.method = method;
@@ -307,7 +336,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
       double t = options.theta_from + std::fmod(c.theta - options.theta_from, kTwoPi);
       if (t < options.theta_from) t += kTwoPi;
       if (t <= options.theta_to)
-        row_crit[i].push_back({axis.value(i), t, join_conditions(c.conditions), c.summary});
+        row_crit[i - row0].push_back({axis.value(i), t, join_conditions(c.conditions), c.summary});
     }
   };
 
@@ -336,10 +365,10 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     }
   };
 
-  for (block_begin = 0; block_begin < axis.n; block_begin += block_rows) {
-    const int block_end = std::min(axis.n, block_begin + block_rows);
+  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
+    const int block_end = std::min(row1, block_begin + block_rows);
     run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin + done) / axis.n);
+      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
     });
     summarize_rows(block_begin, block_end);
     if (sink) {
@@ -363,10 +392,10 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
       boxes[c].code = static_cast<int>(c) - 1;
       map.classes.push_back(boxes[c]);
     }
-  for (int i = 0; i < axis.n; ++i) {
-    map.disagreements += row_disagree[i];
-    map.unreliable += row_unreliable[i];
-    for (auto& c : row_crit[i]) map.critical_directions.push_back(std::move(c));
+  for (int i = row0; i < row1; ++i) {
+    map.disagreements += row_disagree[i - row0];
+    map.unreliable += row_unreliable[i - row0];
+    for (auto& c : row_crit[i - row0]) map.critical_directions.push_back(std::move(c));
   }
   for (const auto& z : criterion_zeros(params, state, axis))
     map.critical_values.push_back({z.first, z.second, 0});
@@ -387,7 +416,7 @@ std::string_view to_string(UniquenessClass c) noexcept {
 ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
                                       const MapAxis& axis1, const MapAxis& axis2,
                                       const MapOptions& options, const MapProgress& progress,
-                                      const ParamParamSink& sink) {
+                                      const ParamParamSink& sink, const RowRange& range) {
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
   throw_if_invalid(axis2.validate(), "map axis " + std::string(to_string(axis2.param)));
@@ -396,8 +425,9 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
                      std::string(to_string(axis1.param)) + "'");
   const Stopwatch clock;
   const int n1 = axis1.n, n2 = axis2.n;
+  const auto [row0, row1] = checked_range(range, n1);
   // Validate every cell's model before any work (the message names both values).
-  for (int i = 0; i < n1; ++i)
+  for (int i = row0; i < row1; ++i)
     for (int j = 0; j < n2; ++j) {
       ContactParameters p = params;
       ContactState st = state;
@@ -414,14 +444,15 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   map.axis1 = axis1;
   map.axis2 = axis2;
   map.cross_checked = options.method != RateMethod::kEnumerate;
-  map.threads = resolve_threads(options.threads, n1);
-  const int block_rows = sink ? std::min(n1, std::max(grid_block_rows(n2), 4 * map.threads)) : n1;
+  map.threads = resolve_threads(options.threads, row1 - row0);
+  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(n2), 4 * map.threads))
+                              : row1 - row0;
   const std::size_t buffer_cells = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer_cells, 0), types(buffer_cells, 0);
   std::vector<int8_t> min_count(buffer_cells, 0), max_count(buffer_cells, 0);
   std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
-  std::vector<int64_t> row_dis(static_cast<std::size_t>(n1), 0), row_inc(row_dis),
-      row_unr(row_dis);
+  std::vector<int64_t> row_dis(static_cast<std::size_t>(row1 - row0), 0), row_inc(row_dis),
+      row_unr(row_dis);  // index i - row0
   MapOptions cell_options = options;
   cell_options.threads = 1;
 
@@ -460,17 +491,17 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
       types[k] = static_cast<uint8_t>(type_mask);
       if (map.cross_checked) {
         disagree[k] = dm.disagreements > 0 ? 1 : 0;
-        row_dis[i] += disagree[k];
+        row_dis[i - row0] += disagree[k];
       }
-      row_inc[i] += dm.inconsistent_sectors;
-      row_unr[i] += dm.unreliable;
+      row_inc[i - row0] += dm.inconsistent_sectors;
+      row_unr[i - row0] += dm.unreliable;
     }
   };
   std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
-  for (block_begin = 0; block_begin < n1; block_begin += block_rows) {
-    const int block_end = std::min(n1, block_begin + block_rows);
+  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
+    const int block_end = std::min(row1, block_begin + block_rows);
     run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin + done) / n1);
+      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
     });
     for (int i = block_begin; i < block_end; ++i)
       for (int j = 0; j < n2; ++j)
@@ -501,10 +532,10 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
       boxes[c].code = static_cast<int>(c);
       map.classes.push_back(boxes[c]);
     }
-  for (int i = 0; i < n1; ++i) {
-    map.disagreements += row_dis[i];
-    map.inconsistent_sectors += row_inc[i];
-    map.unreliable += row_unr[i];
+  for (int i = row0; i < row1; ++i) {
+    map.disagreements += row_dis[i - row0];
+    map.inconsistent_sectors += row_inc[i - row0];
+    map.unreliable += row_unr[i - row0];
   }
 
   // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed),
@@ -524,12 +555,20 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
         item_curve[k].push_back({z.first, z.second, axis2.value(j)});
     }
   };
-  run_items(0, n1 + n2, resolve_threads(options.threads, n1 + n2), curve_item, [&](int done) {
-    if (progress) progress("critical curves", static_cast<double>(done) / (n1 + n2));
-  });
+  // Items: the range's rows, then every column when the range ends at the last row (so that
+  // the parts of a split map, in row order, list the curve as the whole map does).
+  std::vector<int> items;
+  for (int i = row0; i < row1; ++i) items.push_back(i);
+  if (row1 == n1)
+    for (int j = 0; j < n2; ++j) items.push_back(n1 + j);
+  const int n_items = static_cast<int>(items.size());
+  run_items(0, n_items, resolve_threads(options.threads, n_items),
+            [&](int k) { curve_item(items[static_cast<std::size_t>(k)]); }, [&](int done) {
+              if (progress) progress("critical curves", static_cast<double>(done) / n_items);
+            });
   if (progress) progress("critical curves", 1.0);
-  for (auto& v : item_curve)
-    for (auto& c : v) map.critical_curve.push_back(std::move(c));
+  for (int k : items)
+    for (auto& c : item_curve[static_cast<std::size_t>(k)]) map.critical_curve.push_back(std::move(c));
   map.seconds = clock.seconds();
   return map;
 }

@@ -8,9 +8,23 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+
 namespace cpkit::rate {
+
+/// The rows [first, last) a call computes; throws InputError for a range outside [0, rows].
+inline std::pair<int, int> checked_range(const RowRange& r, int rows) {
+  const int end = r.end < 0 ? rows : r.end;
+  if (r.begin < 0 || r.begin > end || end > rows)
+    throw InputError("row range [" + std::to_string(r.begin) + ", " + std::to_string(end) +
+                     ") is outside the map's " + std::to_string(rows) + " rows");
+  return {r.begin, end};
+}
 
 inline int resolve_threads(int requested, int64_t work_items) {
   int t = requested;

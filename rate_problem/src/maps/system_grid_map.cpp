@@ -206,15 +206,6 @@ void check_common(const ContactSystem& system, const MapOptions& options) {
     throw InputError("map options: the N-point maps use the enumeration route only");
 }
 
-/// The rows [first, last) a call computes; throws InputError for a range outside [0, rows].
-std::pair<int, int> checked_range(const RowRange& r, int rows) {
-  const int end = r.end < 0 ? rows : r.end;
-  if (r.begin < 0 || r.begin > end || end > rows)
-    throw InputError("row range [" + std::to_string(r.begin) + ", " + std::to_string(end) +
-                     ") is outside the map's " + std::to_string(rows) + " rows");
-  return {r.begin, end};
-}
-
 /// Rows per block: all rows without a sink; else about 2^20 cells, at least 4 rows per worker.
 int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
   return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;

@@ -102,6 +102,21 @@ std::vector<double> map_theta_values(int theta_n, double theta_from = 0,
 /// Rows per block of a streamed grid map with `columns` cells per row (about 2^20 cells).
 int grid_block_rows(int64_t columns) noexcept;
 
+/// The rows a call computes: [begin, end) of the first axis (end < 0: to the last row). A map
+/// split into row ranges (the chunks of a distributed or resumable run, apps/map_chunks.hpp)
+/// has, in each part, the cells, counters, class boxes and per-row curves of its rows; the
+/// whole map is their merge in row order (for N-point maps the pattern tables are renumbered).
+/// Only the rows in the range are validated: validate the whole grid first
+/// (validate_map_grid) to report the first invalid value of the map.
+struct RowRange {
+  int begin = 0, end = -1;
+};
+
+/// Throws InputError for the first grid value (row by row) that is not a valid model: a map's
+/// rows (axis2 == nullptr) or cells.
+void validate_map_grid(const ContactParameters& params, const ContactState& state,
+                       const MapAxis& axis1, const MapAxis* axis2 = nullptr);
+
 /// Rows [row_begin, row_end) of a parameter x direction map; arrays are row-major with theta_n
 /// columns (disagree: nullptr unless cross-checked).
 struct ParamDirectionRows {
@@ -141,7 +156,8 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const ContactState& state, const MapAxis& axis,
                                               int theta_n, const MapOptions& options = {},
                                               const MapProgress& progress = {},
-                                              const ParamDirectionSink& sink = {});
+                                              const ParamDirectionSink& sink = {},
+                                              const RowRange& rows = {});
 
 /// Classes of a parameter x parameter cell.
 enum class UniquenessClass : uint8_t {
@@ -183,11 +199,13 @@ struct ParamParamMap {
 };
 
 /// Computes a parameter x parameter map, each cell from its exact direction map; then the
-/// critical curves (threaded too). Sink: as for compute_param_direction_map.
+/// critical curves (threaded too; with a row range: the zeros along its rows, and along the
+/// columns in the part that ends at the last row). Sink: as for compute_param_direction_map.
 ParamParamMap compute_param_param_map(const ContactParameters& params, const ContactState& state,
                                       const MapAxis& axis1, const MapAxis& axis2,
                                       const MapOptions& options = {},
                                       const MapProgress& progress = {},
-                                      const ParamParamSink& sink = {});
+                                      const ParamParamSink& sink = {},
+                                      const RowRange& rows = {});
 
 }  // namespace cpkit::rate

@@ -89,15 +89,6 @@ struct SystemParamDirectionMap {
   int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
 };
 
-/// The rows a call computes: [begin, end) of the first axis (end < 0: to the last row). A map
-/// split into row ranges (the chunks of a distributed or resumable run) has, in each part, the
-/// cells, counters and class boxes of its rows and a pattern table numbered in order of first
-/// appearance within its rows; renumbering the parts' tables in row order gives the whole map's
-/// table (apps/system_map_chunks.cpp does that).
-struct RowRange {
-  int begin = 0, end = -1;
-};
-
 /// Largest map kept in memory (without a sink): 3 bytes a cell. With a sink any size is
 /// streamed; memory is one block of rows.
 inline constexpr int64_t kMaxSystemMapCells = int64_t{1} << 26;
