@@ -31,7 +31,7 @@ namespace cpkit::cli {
 
 /// `cpkit rate --system FILE` (rate_system.cpp).
 int run_rate_system(const std::string& path, const std::vector<double>& dF,
-                    const std::string& method, bool json);
+                    const std::string& method, int facets, bool json);
 
 namespace {
 
@@ -44,6 +44,7 @@ struct RateArgs {
   std::string method = "enumerate";
   bool json = false;
   std::string system;  ///< --system FILE: the N-point problem (rate_system.cpp)
+  int facets = 0;      ///< --facets K: a 3-D system's faceted route (0: exact)
   std::vector<CLI::Option*> one_point_required;  ///< required unless --system is given
 };
 
@@ -175,8 +176,11 @@ int run_rate(const RateArgs& a) {
       if (o->count() > 0 && o->get_name() != "--dF")
         throw InputError(o->get_name() + " is a one-point option; with --system the state and "
                          "parameters come from the system file");
-    return run_rate_system(a.system, a.dF, a.method, a.json);
+    return run_rate_system(a.system, a.dF, a.method, a.facets, a.json);
   }
+  if (a.facets != 0)
+    throw InputError("--facets applies to 3-D points (--system FILE with \"dim\": 3, "
+                     "docs/contact_3d.md)");
   for (const CLI::Option* o : a.one_point_required)
     if (o->count() == 0) throw InputError(o->get_name() + " is required (or give --system FILE)");
   const rate::ContactParameters p = model_parameters(a.model);
@@ -261,6 +265,9 @@ void add_rate_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--method", args->method,
                   "enumerate (default, cross-checked against analytic), analytic, lemke, "
                   "fb-newton, ipopt");
+  cmd->add_option("--facets", args->facets,
+                  "3-D system (\"dim\": 3): solve the faceted problem with K facets (3..64) "
+                  "instead of the exact elliptic one (docs/contact_3d.md)");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args, &ctx, cmd]() {
     // Options that would have no effect in the chosen state are errors, never silence.

@@ -10,11 +10,15 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
+#include "json_fields.hpp"
 
 namespace cpkit::rate {
 namespace {
 
 using nlohmann::json;
+using detail::get_num;
+using detail::point_name;
+using detail::shown;
 
 /// Relative asymmetry of A tolerated (rounding of a condensed FE stiffness); A is symmetrised.
 constexpr double kSymTol = 1e-10;
@@ -24,20 +28,6 @@ constexpr double kRcondMin = 1e-13;
 /// given (the tolerance of classify()).
 constexpr double kClassifyTol = 1e-12;
 
-std::string shown(const json& v) {
-  std::string t = v.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (t.size() > 40) t = t.substr(0, 37) + "...";
-  return t;
-}
-
-std::string point_name(std::size_t i) { return "point " + std::to_string(i + 1); }
-
-double get_num(const json& v, const std::string& field) {
-  if (!v.is_number()) throw InputError(field + " must be a number, got " + shown(v));
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) throw InputError(field + " must be a finite number");
-  return d;
-}
 
 Eigen::VectorXd get_vector(const json& v, std::size_t n, const std::string& field) {
   if (!v.is_array()) throw InputError(field + " must be an array of " + std::to_string(n) + " numbers");
@@ -300,9 +290,16 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
     for (auto it = doc.begin(); it != doc.end(); ++it) {
       const std::string& k = it.key();
       if (k != "name" && k != "A" && k != "points" && k != "dF" && k != "patterns" &&
-          k != "criterion")
-        throw InputError("unknown key \"" + k + "\" (known: name, A, points, dF, patterns, criterion)");
+          k != "criterion" && k != "dim")
+        throw InputError("unknown key \"" + k +
+                         "\" (known: name, dim, A, points, dF, patterns, criterion)");
     }
+    if (doc.contains("dim") && !(doc["dim"].is_number() && doc["dim"].get<double>() == 2))
+      throw InputError(doc["dim"].is_number() && doc["dim"].get<double>() == 3
+                           ? std::string("dim 3: three-dimensional points are read by `cpkit rate "
+                                         "--system` (one point, docs/contact_3d.md); this command "
+                                         "takes 2-D systems (dim 2) only")
+                           : "dim must be 2 (2-D points) or 3 (3-D points), got " + shown(doc["dim"]));
     if (doc.contains("name")) {
       if (!doc["name"].is_string()) throw InputError("name must be a string");
       sys.name = doc["name"].get<std::string>();
@@ -342,21 +339,7 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
 }
 
 ContactSystem read_contact_system(const std::string& path) {
-  // as the problem-file readers (docs/file_formats.md): regular files and FIFOs only, at most
-  // 2 GiB, so that a directory or a device (/dev/zero) cannot block or exhaust memory
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError("cannot open system file " + path);
-  if (!fs::is_regular_file(st) && !fs::is_fifo(st))
-    throw InputError("system file " + path + " is not a regular file");
-  if (fs::is_regular_file(st) && fs::file_size(path, ec) > (std::uintmax_t{1} << 31))
-    throw InputError("system file " + path + " is larger than 2 GiB");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open system file " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_contact_system(ss.str(), path);
+  return parse_contact_system(detail::read_system_file(path), path);
 }
 
 }  // namespace cpkit::rate

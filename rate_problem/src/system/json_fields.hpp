@@ -1,0 +1,53 @@
+#pragma once
+// Internal: reading numbers from the JSON system files (2-D and 3-D) with messages that name
+// the field.
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::rate::detail {
+
+/// A JSON value as shown in a message (at most 40 characters).
+inline std::string shown(const nlohmann::json& v) {
+  std::string t = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (t.size() > 40) t = t.substr(0, 37) + "...";
+  return t;
+}
+
+/// "point i" with i 1-based, as in the file.
+inline std::string point_name(std::size_t i) { return "point " + std::to_string(i + 1); }
+
+/// A finite number, or InputError naming `field`.
+inline double get_num(const nlohmann::json& v, const std::string& field) {
+  if (!v.is_number()) throw InputError(field + " must be a number, got " + shown(v));
+  const double d = v.get<double>();
+  if (!std::isfinite(d)) throw InputError(field + " must be a finite number");
+  return d;
+}
+
+/// The text of a system file. As the problem-file readers (docs/file_formats.md): regular files
+/// and FIFOs only, at most 2 GiB, so that a directory or a device (/dev/zero) cannot block or
+/// exhaust memory.
+inline std::string read_system_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InputError("cannot open system file " + path);
+  if (!fs::is_regular_file(st) && !fs::is_fifo(st))
+    throw InputError("system file " + path + " is not a regular file");
+  if (fs::is_regular_file(st) && fs::file_size(path, ec) > (std::uintmax_t{1} << 31))
+    throw InputError("system file " + path + " is larger than 2 GiB");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open system file " + path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace cpkit::rate::detail
