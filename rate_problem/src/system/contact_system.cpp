@@ -331,7 +331,7 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
       sys.pattern2 = get_vector(p[1], 2 * n, "patterns[1]");
     }
     throw_if_invalid(sys.validate());
-    sys.A = 0.5 * (sys.A + sys.A.transpose());  // remove rounding asymmetry (kSymTol)
+    sys.A = 0.5 * sys.A + 0.5 * sys.A.transpose();  // no overflow near the largest double  // remove rounding asymmetry (kSymTol)
     return sys;
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());

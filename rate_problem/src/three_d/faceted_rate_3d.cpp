@@ -8,6 +8,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -42,13 +43,17 @@ double rates_distance(const Rates3d& a, const Rates3d& b, double force, double d
 
 }  // namespace
 
-FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& p, const Eigen::Vector3d& dF,
-                                        int k, double time_limit_s) {
-  if (const std::string e = p.validate(); !e.empty()) throw InputError("parameters: " + e);
-  if (!dF.allFinite()) throw InputError("dF must be finite");
+FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
+                                        const Eigen::Vector3d& user_dF, int k,
+                                        double time_limit_s) {
+  if (const std::string e = user_params.validate(); !e.empty()) throw InputError("parameters: " + e);
+  if (!user_dF.allFinite()) throw InputError("dF must be finite");
   if (k < 3 || k > kMaxFacets)
     throw InputError("facets must be in [3, " + std::to_string(kMaxFacets) + "], got " +
                      std::to_string(k));
+  Point3dParameters p = user_params;
+  Eigen::Vector3d dF = user_dF;
+  const detail::UnitScaling scaling = detail::normalize(p, dF);
   // The polygon: vertices v_i = D (cos theta_i, sin theta_i) (counter-clockwise), facet j from
   // v_j to v_j+1 with outward unit normal n_j and support h_j = n_j . v_j > 0; friction set
   // n_j . dP_T <= mu h_j dP_N, flow dw_T^i = sum lambda_j n_j.
@@ -143,6 +148,7 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& p, const Eigen:
                       "face aligned with the load): listed by its extreme points only";
     }
   }
+  detail::rescale(set, scaling);
   return out;
 }
 

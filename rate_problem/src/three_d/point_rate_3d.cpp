@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -130,13 +131,18 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
   // Stick: ||dP_T|| <= mu dP_N (closed).
   {
     const Rates3d r = stick_rates(p, b, dF);
-    const double norm = (b.Dinv * r.dP_T).norm();
+    const double norm = Eigen::Vector2d(b.Dinv * r.dP_T).stableNorm();
     if (norm - p.mu * r.dP_N <= kTol * (norm + p.mu * std::abs(r.dP_N)))
       set.solutions.push_back(point_solution(Type3d::kStick, r));
   }
   // Slip: every root of g(phi) (3D.6), then the 3x2 system for (dP_N, lambda).
   const SlipDirectionFunction g = slip_direction_function(p, dF);
   const double g_scale = g.scale();
+  if (!std::isfinite(g_scale)) {
+    set.complete = false;
+    set.message = "the slip-direction condition overflows double: slip directions are not resolved";
+    return;
+  }
   if (!(g_scale > 0)) {
     set.complete = false;
     set.message = "the slip-direction condition vanishes identically (dF = 0): slip "
@@ -186,6 +192,14 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
       r -= step;
       if (std::abs(step) <= 1e-15 * (1 + std::abs(r))) break;
     }
+  // A root that Newton lost (not finite) cannot be trusted: the list is then not proved.
+  const std::size_t before = roots.size();
+  roots.erase(std::remove_if(roots.begin(), roots.end(), [](double r) { return !std::isfinite(r); }),
+              roots.end());
+  if (roots.size() != before) {
+    set.complete = false;
+    set.message = "a slip direction could not be refined (not finite): not proved complete";
+  }
   // Angles in (phi0 - pi, phi0 + pi], sorted and deduplicated.
   for (double& r : roots) r = phi0 + std::remainder(r - phi0, 2 * kPi);
   std::sort(roots.begin(), roots.end());
@@ -228,10 +242,15 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     const Eigen::Vector2d col_norm(B.col(0).norm(), B.col(1).norm());
     B.col(0) /= col_norm(0);
     B.col(1) /= col_norm(1);
+    if (!B.allFinite()) {
+      not_proved("the slip system is not finite in the direction phi = " + num(phi) +
+                 ": not resolved");
+      continue;
+    }
     const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(B, Eigen::ComputeFullU |
                                                                    Eigen::ComputeFullV);
     const auto& sv = svd.singularValues();
-    if (sv(1) <= 1e-9 * sv(0)) {
+    if (!(sv(1) > 1e-9 * sv(0))) {  // also NaN
       not_proved("the slip system is singular in the direction phi = " + num(phi) +
                  " (a continuum of solutions): not resolved");
       continue;
@@ -329,11 +348,11 @@ std::string Point3dParameters::validate() const {
 
 std::string Point3dState::validate(const Point3dParameters& params) const {
   if (!P_T.allFinite() || !std::isfinite(P_N)) return "P_T and P_N must be finite";
-  const double norm = P_T.cwiseQuotient(params.alpha).norm();
+  const double norm = P_T.cwiseQuotient(params.alpha).stableNorm();
   switch (state) {
     case 'a':
     case 'b':
-      if (P_T.norm() != 0 || P_N != 0)
+      if (P_T.cwiseAbs().maxCoeff() != 0 || P_N != 0)
         return std::string("state ") + state + " has P = 0 (got P_N = " + num(P_N) + ")";
       return {};
     case 'c':
@@ -394,11 +413,14 @@ SlipDirectionFunction slip_direction_function(const Point3dParameters& p,
   return g;
 }
 
-RateSolutionSet3d solve_rate_3d(const Point3dParameters& params, const Point3dState& state,
-                                const Eigen::Vector3d& dF) {
-  if (const std::string e = params.validate(); !e.empty()) throw InputError("parameters: " + e);
-  if (const std::string e = state.validate(params); !e.empty()) throw InputError("state: " + e);
-  if (!dF.allFinite()) throw InputError("dF must be finite");
+RateSolutionSet3d solve_rate_3d(const Point3dParameters& user_params, const Point3dState& state,
+                                const Eigen::Vector3d& user_dF) {
+  if (const std::string e = user_params.validate(); !e.empty()) throw InputError("parameters: " + e);
+  if (const std::string e = state.validate(user_params); !e.empty()) throw InputError("state: " + e);
+  if (!user_dF.allFinite()) throw InputError("dF must be finite");
+  Point3dParameters params = user_params;
+  Eigen::Vector3d dF = user_dF;
+  const detail::UnitScaling scaling = detail::normalize(params, dF);
   const Blocks b = blocks(params);
   RateSolutionSet3d set;
   switch (state.state) {
@@ -421,6 +443,7 @@ RateSolutionSet3d solve_rate_3d(const Point3dParameters& params, const Point3dSt
       solve_state_d(params, state, b, dF, set);
       break;
   }
+  detail::rescale(set, scaling);
   return set;
 }
 

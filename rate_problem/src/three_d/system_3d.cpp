@@ -138,7 +138,7 @@ ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std:
     const double s = sys.A.cwiseAbs().maxCoeff();
     if ((sys.A - sys.A.transpose()).cwiseAbs().maxCoeff() > 1e-10 * s)
       throw InputError("A is not symmetric");
-    sys.A = 0.5 * (sys.A + sys.A.transpose());
+    sys.A = 0.5 * sys.A + 0.5 * sys.A.transpose();  // no overflow near the largest double
     const Eigen::LLT<Eigen::MatrixXd> llt(sys.A);
     if (!(s > 0) || llt.info() != Eigen::Success) throw InputError("A is not positive definite");
     for (std::size_t i = 0; i < pts.size(); ++i) sys.points.push_back(parse_point(pts[i], i));
