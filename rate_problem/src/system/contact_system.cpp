@@ -73,11 +73,8 @@ SystemPoint parse_point(const json& v, std::size_t i, Criterion criterion) {
   for (auto it = v.begin(); it != v.end(); ++it) {
     const std::string& k = it.key();
     const std::string f = pn + ": " + k;
-    if (k == "mu") p.mu = get_num(*it, f);
-    else if (k == "C_T") p.C_T = get_num(*it, f);
-    else if (k == "k_a") p.k_a = get_num(*it, f);
-    else if (k == "P_s") p.P_s = get_num(*it, f);
-    else if (k == "P_T") P_T = get_num(*it, f);
+    if (detail::read_interface_key(k, *it, f, p.mu, p.C_T, p.k_a, p.P_s)) continue;
+    if (k == "P_T") P_T = get_num(*it, f);
     else if (k == "P_N") P_N = get_num(*it, f);
     else if (k == "g") g = get_num(*it, f);
     else if (k == "sgnPT") {

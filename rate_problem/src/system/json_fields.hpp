@@ -31,6 +31,16 @@ inline double get_num(const nlohmann::json& v, const std::string& field) {
   return d;
 }
 
+/// The interface data that 2-D and 3-D points share (mu, C_T, k_a, P_s): reads key `k` into its
+/// field and returns true, or returns false for another key.
+inline bool read_interface_key(const std::string& k, const nlohmann::json& v, const std::string& f,
+                               double& mu, double& C_T, double& k_a, double& P_s) {
+  double* field = k == "mu" ? &mu : k == "C_T" ? &C_T : k == "k_a" ? &k_a : k == "P_s" ? &P_s : nullptr;
+  if (!field) return false;
+  *field = get_num(v, f);
+  return true;
+}
+
 /// The text of a system file. As the problem-file readers (docs/file_formats.md): regular files
 /// and FIFOs only, at most 2 GiB, so that a directory or a device (/dev/zero) cannot block or
 /// exhaust memory.

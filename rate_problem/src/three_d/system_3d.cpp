@@ -35,11 +35,8 @@ SystemPoint3d parse_point(const json& v, std::size_t i) {
   for (auto it = v.begin(); it != v.end(); ++it) {
     const std::string& k = it.key();
     const std::string f = pn + ": " + k;
-    if (k == "mu") p.mu = get_num(*it, f);
-    else if (k == "C_T") p.C_T = get_num(*it, f);
-    else if (k == "k_a") p.k_a = get_num(*it, f);
-    else if (k == "P_s") p.P_s = get_num(*it, f);
-    else if (k == "alpha") p.alpha = get_vector(*it, 2, f, "alpha_X, alpha_Y");
+    if (rate::detail::read_interface_key(k, *it, f, p.mu, p.C_T, p.k_a, p.P_s)) continue;
+    if (k == "alpha") p.alpha = get_vector(*it, 2, f, "alpha_X, alpha_Y");
     else if (k == "P_T") p.state.P_T = get_vector(*it, 2, f, "P_TX, P_TY"), P_T_given = true;
     else if (k == "P_N") p.state.P_N = get_num(*it, f), P_N_given = true;
     else if (k == "state") {
