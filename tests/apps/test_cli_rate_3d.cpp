@@ -76,6 +76,41 @@ TEST_CASE("cpkit rate --system (dim 3): the faceted count equals the exact one",
   CHECK(je["dim"] == 3);
 }
 
+TEST_CASE("cpkit rate --system (dim 3), two coupled points with --facets: the 2-D system's "
+          "solutions when Y is decoupled and unloaded", "[cli][rate3d]") {
+  // docs/examples/two_point_system.json with a decoupled Y direction added to each point
+  const fs::path f = write("two_point_3d.json", R"({"dim": 3,
+    "A": [[1.0, 0, 0.3, 0.2, 0, 0.1], [0, 1, 0, 0, 0, 0], [0.3, 0, 1.0, 0.1, 0, 0.2],
+          [0.2, 0, 0.1, 1.0, 0, 0.3], [0, 0, 0, 0, 1, 0], [0.1, 0, 0.2, 0.3, 0, 1.0]],
+    "points": [{"state": "b", "mu": 3, "C_T": 0.25, "k_a": 0.1, "P_s": 1},
+               {"state": "d", "mu": 3, "C_T": 0.25, "k_a": 0.1, "P_s": 1, "P_N": 2, "P_T": [6, 0]}],
+    "dF": [1.0, 0, -1.0, 0.5, 0, 1.0]})");
+  const CliRun two = run_cpkit("rate --system '" + std::string(CPKIT_SOURCE_DIR) +
+                               "/docs/examples/two_point_system.json' --json");
+  const CliRun three = run_cpkit("rate --system '" + f.string() + "' --facets 8 --json");
+  INFO(two.err << three.err);
+  REQUIRE(two.code == 0);
+  REQUIRE(three.code == 0);
+  const auto j2 = nlohmann::json::parse(two.out), j3 = nlohmann::json::parse(three.out);
+  REQUIRE(j3["count"] == j2["count"]);
+  CHECK(j3["n_points"] == 2);
+  for (const auto& s2 : j2["solutions"]) {
+    bool found = false;
+    for (const auto& s3 : j3["solutions"]) {
+      bool same = true;
+      for (int i = 0; i < 2; ++i)
+        same = same && std::abs(s3["values"]["dP_N"][i].get<double>() - s2["values"]["dP_N"][i].get<double>()) < 1e-8 &&
+               std::abs(s3["values"]["dP_T"][i][0].get<double>() - s2["values"]["dP_T"][i].get<double>()) < 1e-8;
+      found = found || same;
+    }
+    CHECK(found);
+  }
+  // without --facets, N > 1 is refused
+  const CliRun no = run_cpkit("rate --system '" + f.string() + "'");
+  CHECK(no.code == 2);
+  CHECK(no.err.find("--facets") != std::string::npos);
+}
+
 TEST_CASE("cpkit rate --system (dim 3): bad input and what is not built yet are exit 2",
           "[cli][rate3d]") {
   const std::string ok_point = R"({"state": "b", "mu": 1})";
@@ -95,7 +130,7 @@ TEST_CASE("cpkit rate --system (dim 3): bad input and what is not built yet are 
       {R"({"dim": 3, "A": )" + A3 + R"(, "points": [)" + ok_point + "]}", "--dF 1 0 0 --method lemke", "not available"},
       {R"({"dim": 3, "A": )" + A3 + R"(, "points": [)" + ok_point + "]}", "--dF 1 0 0 --facets 2", "facets"},
       {R"({"dim": 3, "A": )" + A3 + R"(, "points": [{"state": "c", "mu": 1, "P_N": 1}]})", "--dF 1 0 0 --facets 8", "state b"},
-      {R"({"dim": 3, "A": [[2,0,0,0,0,0],[0,2,0,0,0,0],[0,0,2,0,0,0],[0,0,0,2,0,0],[0,0,0,0,2,0],[0,0,0,0,0,2]], "points": [)" + ok_point + "," + ok_point + "]}", "--dF 1 0 0 1 0 0", "not solved yet"},
+      {R"({"dim": 3, "A": [[2,0,0,0,0,0],[0,2,0,0,0,0],[0,0,2,0,0,0],[0,0,0,2,0,0],[0,0,0,0,2,0],[0,0,0,0,0,2]], "points": [)" + ok_point + "," + ok_point + "]}", "--dF 1 0 0 1 0 0", "give --facets K"},
       {R"({"dim": 4, "A": [[1, 0], [0, 1]], "points": [{"state": "b"}]})", "--dF 1 0", "dim must be 2"},
   };
   int k = 0;
