@@ -161,7 +161,7 @@ TEST_CASE("mpirun: bad input is reported once, by rank 0, exit 2", "[cli][map][m
 TEST_CASE("mpirun: what is not distributed is refused on every rank, exit 2", "[cli][map][mpi]") {
   const fs::path dir = scratch_dir() / "mpi_refuse";
   fs::create_directories(dir);
-  for (const std::string args :
+  for (const std::string& args :
        {std::string("map --preset fig5b --kind direction"),
         "map --system '" + kSystem + "' --kind direction",
         std::string("rate --state b --a11 1 --a12 0.5 --a22 1 --mu 3 --dF 1 1")}) {
