@@ -133,7 +133,9 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& sys, const E
     }
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
     const Eigen::VectorXd x0 = lu.solve(r0);
-    const Eigen::MatrixXd X = lu.solve(R);
+    // (no solve with an empty right-hand side: Eigen's triangular solve binds a reference to
+    // its null data, which UBSan reports)
+    const Eigen::MatrixXd X = m > 0 ? Eigen::MatrixXd(lu.solve(R)) : Eigen::MatrixXd(dim, 0);
     if (!x0.allFinite() || !X.allFinite() ||
         (K * x0 - r0).cwiseAbs().maxCoeff() > 1e-9 * (1 + r0.cwiseAbs().maxCoeff())) {
       note("the rate equations are singular for a separation case: not resolved");
