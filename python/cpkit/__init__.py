@@ -10,6 +10,8 @@ from .contact import (ContactParameters, ContactState, direction_map, enumerate_
                       fretting_history, param_direction_map, param_param_map, ramp_history,
                       rate_indicators, simulate, solve_rate_problem, solve_step)
 from .system import ContactSystem, solve_system_rate, system_direction_counts
+from .three_d import (Point3d, Rate3dSolutionSet, Step3dSolutionSet, enumerate_step_3d,
+                      solve_rate_3d, solve_system_rate_3d)
 from .lcp import cross_verify, enumerate, solve, solve_mcp, solvers
 from .results import (TYPE_BITS, CrossVerifyReport, DirectionMap, ParamDirectionMap,
                       ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,

@@ -10,4 +10,5 @@ void bind_maps(pybind11::module_& m);
 void bind_step(pybind11::module_& m);
 void bind_system(pybind11::module_& m);
 void bind_system_rate(pybind11::module_& m);
+void bind_three_d(pybind11::module_& m);
 }  // namespace cpkit::py

@@ -284,7 +284,9 @@ bool trig_roots(const TrigPoly& h, std::vector<double>& roots, std::string& why)
     bool explained = false;
     for (const auto* v : {&simple, &twice})
       for (double r : *v) explained = explained || std::abs(std::remainder(a - r, 2 * kPi)) <= 1e-5;
-    if (!explained && std::abs(h(a)) <= flat) {
+    // h is computed to about 1e-15 of its terms: a pair of non-real roots whose h stays above
+    // 1e-10 of the scale has no real root nearby (a near-tangency, resolved).
+    if (!explained && std::abs(h(a)) <= 1e-10 * sc) {
       why = "a root of the slip condition near phi = " + num(a) + " could not be resolved";
       return false;
     }

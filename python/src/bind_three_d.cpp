@@ -1,0 +1,227 @@
+// Three-dimensional contact points (docs/contact_3d.md): the rate problem of one point (exact or
+// faceted), of N points from a "dim": 3 system (faceted), and every solution of one implicit
+// step. Results are plain dicts of numbers, 2-vectors as numpy arrays.
+#include <string>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
+#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
+
+namespace cpkit::py {
+namespace {
+
+using rate3d::Point3dParameters;
+
+Eigen::Vector2d vec2(const pyb::handle& o, const char* what) {
+  const auto v = o.cast<std::vector<double>>();
+  if (v.size() != 2) throw InputError(std::string(what) + " must hold 2 numbers, got " + std::to_string(v.size()));
+  return {v[0], v[1]};
+}
+
+Eigen::Vector3d vec3(const pyb::handle& o, const char* what) {
+  const auto v = o.cast<std::vector<double>>();
+  if (v.size() != 3) throw InputError(std::string(what) + " must hold 3 numbers, got " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+/// Point3dParameters from an object with A (3x3), mu, C_T, k_a, P_s, alpha (cpkit.Point3d).
+Point3dParameters params_from(const pyb::handle& o) {
+  Point3dParameters p;
+  const auto A = o.attr("A").cast<std::vector<std::vector<double>>>();
+  if (A.size() != 3) throw InputError("A must be 3 x 3 (DOFs T_X, T_Y, N)");
+  for (int i = 0; i < 3; ++i) {
+    if (A[i].size() != 3) throw InputError("A must be 3 x 3 (DOFs T_X, T_Y, N)");
+    for (int j = 0; j < 3; ++j) p.A(i, j) = A[i][j];
+  }
+  p.mu = finite_number(o.attr("mu"), "mu");
+  p.C_T = finite_number(o.attr("C_T"), "C_T");
+  p.k_a = finite_number(o.attr("k_a"), "k_a");
+  p.P_s = finite_number(o.attr("P_s"), "P_s");
+  p.alpha = vec2(o.attr("alpha"), "alpha");
+  throw_if_invalid(p.validate(), "point");
+  return p;
+}
+
+pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
+
+pyb::dict rates_dict(const rate3d::Rates3d& r) {
+  pyb::dict d;
+  d["dP_T"] = np2(r.dP_T);
+  d["dP_N"] = r.dP_N;
+  d["dw_T"] = np2(r.dw_T);
+  d["dw_N"] = r.dw_N;
+  d["dw_Ti"] = np2(r.dw_Ti);
+  d["dw_w"] = r.dw_w;
+  return d;
+}
+
+pyb::dict set_dict(const rate3d::RateSolutionSet3d& set) {
+  pyb::list sols;
+  for (const auto& s : set.solutions) {
+    pyb::dict sd;
+    sd["type"] = std::string(rate3d::to_string(s.type));
+    sd["kind"] = s.ray ? "ray" : "point";
+    sd["at"] = rates_dict(s.at);
+    if (s.ray) {
+      sd["direction"] = rates_dict(s.direction);
+      sd["origin_included"] = s.origin_included;
+    }
+    if (s.type == rate3d::Type3d::kSlip) {
+      sd["slip_direction"] = np2(s.slip_direction);
+      sd["slip_angle"] = s.slip_angle;
+    } else {
+      sd["slip_direction"] = pyb::none();
+      sd["slip_angle"] = pyb::none();
+    }
+    sols.append(sd);
+  }
+  pyb::dict d;
+  d["solutions"] = sols;
+  d["complete"] = set.complete;
+  d["message"] = set.message;
+  return d;
+}
+
+pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, const pyb::object& P_T,
+                        double P_N, const pyb::object& dF, int facets) {
+  const Point3dParameters p = params_from(point);
+  rate3d::Point3dState s;
+  if (state.size() != 1 || state[0] < 'a' || state[0] > 'd')
+    throw InputError("state must be 'a', 'b', 'c' or 'd', got '" + state + "'");
+  s.state = state[0];
+  s.P_T = vec2(P_T, "P_T");
+  s.P_N = P_N;
+  const Eigen::Vector3d load = vec3(dF, "dF");
+  pyb::dict d;
+  if (facets > 0) {
+    if (s.state != 'b') throw InputError("facets apply to the grazing state b (a, c, d are linear)");
+    rate3d::FacetedRateResult r;
+    {
+      pyb::gil_scoped_release release;
+      r = rate3d::solve_rate_3d_faceted(p, load, facets);
+    }
+    d = set_dict(r.set);
+    d["facets"] = r.facets;
+    d["route"] = "faceted";
+  } else {
+    if (const std::string e = s.validate(p); !e.empty()) throw InputError("state: " + e);
+    rate3d::RateSolutionSet3d r;
+    {
+      pyb::gil_scoped_release release;
+      r = rate3d::solve_rate_3d(p, s, load);
+    }
+    d = set_dict(r);
+    d["facets"] = 0;
+    d["route"] = "exact";
+  }
+  return d;
+}
+
+pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& dF, int facets) {
+  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(json_text, "system");
+  Eigen::VectorXd load;
+  if (dF.is_none()) {
+    if (!sys.dF) throw InputError("no load rate: give dF (3N numbers) or put \"dF\" in the system");
+    load = *sys.dF;
+  } else {
+    const auto v = dF.cast<std::vector<double>>();
+    if (static_cast<int>(v.size()) != 3 * sys.n_points())
+      throw InputError("dF must hold 3N = " + std::to_string(3 * sys.n_points()) + " numbers, got " +
+                       std::to_string(v.size()));
+    load = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+  }
+  rate3d::SystemRateSet3d r;
+  {
+    pyb::gil_scoped_release release;
+    r = rate3d::solve_system_rate_3d_faceted(sys, load, facets);
+  }
+  pyb::list sols;
+  for (const auto& s : r.solutions) {
+    pyb::list types, rates;
+    for (auto t : s.types) types.append(std::string(rate3d::to_string(t)));
+    for (const auto& x : s.rates) rates.append(rates_dict(x));
+    pyb::dict sd;
+    sd["types"] = types;
+    sd["rates"] = rates;
+    sols.append(sd);
+  }
+  pyb::dict d;
+  d["solutions"] = sols;
+  d["complete"] = r.complete;
+  d["message"] = r.message;
+  d["facets"] = r.facets;
+  d["route"] = "faceted";
+  return d;
+}
+
+pyb::dict step_values_dict(const rate3d::Step3dValues& v) {
+  pyb::dict d;
+  d["P_T1"] = np2(v.P_T1);
+  d["P_N1"] = v.P_N1;
+  d["DP_T"] = np2(v.DP_T);
+  d["DP_N"] = v.DP_N;
+  d["Dw_T"] = np2(v.Dw_T);
+  d["Dw_N"] = v.Dw_N;
+  d["Dw_Ti"] = np2(v.Dw_Ti);
+  d["Dw_w"] = v.Dw_w;
+  d["g1"] = v.g1;
+  d["lambda"] = v.lambda;
+  return d;
+}
+
+pyb::dict enumerate_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0,
+                            double g0, const pyb::object& DF, const std::string& wear_law,
+                            double k_M) {
+  rate3d::Step3dProblem p;
+  p.params = params_from(point);
+  const auto w = rate::wear_law_from_string(wear_law);
+  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
+  p.wear = rate::WearModel{*w, k_M};
+  p.state.P_T0 = vec2(P_T0, "P_T0");
+  p.state.P_N0 = P_N0;
+  p.state.g0 = g0;
+  p.DF = vec3(DF, "DF");
+  rate3d::Step3dSolutionSet set;
+  {
+    pyb::gil_scoped_release release;
+    set = rate3d::enumerate_step_3d(p);
+  }
+  pyb::list sols;
+  for (const auto& s : set.solutions) {
+    pyb::dict sd;
+    sd["type"] = std::string(rate3d::to_string(s.type));
+    sd["values"] = step_values_dict(s.values);
+    if (s.type == rate3d::Type3d::kSlip) {
+      sd["slip_direction"] = np2(s.slip_direction);
+      sd["slip_angle"] = s.slip_angle;
+    } else {
+      sd["slip_direction"] = pyb::none();
+      sd["slip_angle"] = pyb::none();
+    }
+    sd["residual"] = s.residual;
+    sols.append(sd);
+  }
+  pyb::dict d;
+  d["solutions"] = sols;
+  d["complete"] = set.complete;
+  d["message"] = set.message;
+  return d;
+}
+
+}  // namespace
+
+void bind_three_d(pyb::module_& m) {
+  m.def("solve_rate_3d", &solve_rate_3d, pyb::arg("point"), pyb::arg("state"), pyb::arg("P_T"),
+        pyb::arg("P_N"), pyb::arg("dF"), pyb::arg("facets"));
+  m.def("solve_system_rate_3d", &solve_system_rate_3d, pyb::arg("json_text"), pyb::arg("dF"),
+        pyb::arg("facets"));
+  m.def("enumerate_step_3d", &enumerate_step_3d, pyb::arg("point"), pyb::arg("P_T0"),
+        pyb::arg("P_N0"), pyb::arg("g0"), pyb::arg("DF"), pyb::arg("wear_law"), pyb::arg("k_M"));
+}
+
+}  // namespace cpkit::py
