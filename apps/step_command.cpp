@@ -5,6 +5,8 @@
 //              [--wear-law archard|mroz --k_M X] --P_T0 X --P_N0 X --g0 X --DF DFT DFN
 //              [--all] [--chain active-set,lemke,fb-newton,ipopt] [--json]
 //   cpkit step --system FILE --DF <2N numbers> --all [--json]      (N points, system_step.hpp)
+//   cpkit step --system FILE3D --DF X Y N [--all|--chain|--facets K|--multistart N]
+//                                        ("dim": 3, one point: step_3d.cpp)
 //
 // --all: every solution (complete active-set enumeration; continua as segments/rays, jumps
 // flagged). Otherwise one solution by the solver chain. Exit codes: 0 at least one solution,
@@ -18,6 +20,7 @@
 
 #include "cli_common.hpp"
 #include "model_options.hpp"
+#include "step_3d.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
@@ -25,6 +28,7 @@
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
+#include "cpkit/rate_problem/three_d/system_3d.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -39,6 +43,8 @@ struct StepArgs {
   bool json = false;
   std::string chain = "active-set,lemke,fb-newton,ipopt";
   std::string system;  ///< N-point system file (--system)
+  int facets = 0;      ///< --facets K (3-D files only, step_3d.cpp)
+  int multistart = 0;  ///< --multistart N (3-D files only)
 };
 
 nlohmann::json values_json(const rate::StepValues& v) {
@@ -293,6 +299,10 @@ void add_step_command(CLI::App& app, Context& ctx) {
                   "solver chain for one solution (comma-separated; default "
                   "active-set,lemke,fb-newton,ipopt)");
   cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->add_option("--facets", args->facets,
+                  "3-D file: every solution of the faceted step with K facets (no wear)");
+  cmd->add_option("--multistart", args->multistart,
+                  "3-D file: distinct verified solutions from N + 1 starts (FB-SOC, Ipopt)");
   cmd->callback([args, &ctx, cmd]() {
     // Options that would have no effect in this context are errors, never silence.
     const bool mroz = args->wear_law == "mroz";
@@ -302,6 +312,15 @@ void add_step_command(CLI::App& app, Context& ctx) {
       throw InputError("--wear-law mroz needs --k_M (the Mroz-Stupkiewicz wear constant)");
     if (mroz && cmd->count("--k_a") > 0)
       throw InputError("--k_a (Archard) has no effect with --wear-law mroz: give --k_M instead");
+    if (!args->system.empty() && rate3d::is_3d_system_file(args->system)) {
+      Step3dCliArgs a3{args->system, args->DF, args->wear_law, args->k_M, args->g0, args->all,
+                       args->json, args->chain, args->facets, args->multistart};
+      ctx.exit_code = run_step_3d(a3, *cmd);  // step_3d.cpp
+      return;
+    }
+    for (const char* o : {"--facets", "--multistart"})
+      if (cmd->count(o) > 0)
+        throw InputError(std::string(o) + " applies to a \"dim\": 3 --system file (one 3-D point)");
     if (args->all && cmd->count("--chain") > 0)
       throw InputError("--chain has no effect with --all (every solution comes from the complete "
                        "active-set enumeration)");

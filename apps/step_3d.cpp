@@ -1,0 +1,207 @@
+// `cpkit step --system FILE --DF X Y N` with a "dim": 3 file of one point: one implicit step
+// of a 3-D contact point with the elliptic friction-and-wear law (docs/contact_3d.md, "Solvers
+// of the 3-D step").
+//
+//   cpkit step --system FILE --DF DFX DFY DFN [--g0 G (state a)] [--wear-law archard|mroz --k_M X]
+//              [--all | --chain exact,fb-soc,ipopt | --facets K | --multistart N] [--json]
+//
+// The start state is the file's point: state a (open: P = 0, --g0 < 0 required), b (grazing:
+// P = 0, g0 = 0), c and d (in contact with the file's P_T, P_N, g0 = 0). Modes: --all every
+// solution (enumerate_step_3d), --facets K every solution of the faceted problem (no wear),
+// --multistart N distinct verified solutions from N + 1 starts (never proved complete), default
+// one solution by the chain. Exit codes: 0 solution(s) listed, 1 none, 2 bad input,
+// 5 not proved complete (--all, --facets) or none found by --multistart.
+#include "step_3d.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/three_d/system_3d.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+using Pair = std::vector<double>;
+
+nlohmann::json solution_json(const rate3d::Step3dSolution& s) {
+  const rate3d::Step3dValues& v = s.values;
+  nlohmann::json e;
+  e["type"] = std::string(rate3d::to_string(s.type));
+  e["P_T1"] = Pair{v.P_T1(0), v.P_T1(1)};
+  e["P_N1"] = v.P_N1;
+  e["DP"] = Pair{v.DP_T(0), v.DP_T(1), v.DP_N};
+  e["Dw"] = Pair{v.Dw_T(0), v.Dw_T(1), v.Dw_N};
+  e["Dw_Ti"] = Pair{v.Dw_Ti(0), v.Dw_Ti(1)};
+  e["Dw_w"] = v.Dw_w;
+  e["g1"] = v.g1;
+  e["lambda"] = v.lambda;
+  if (s.type == rate3d::Type3d::kSlip) {
+    e["slip_direction"] = Pair{s.slip_direction(0), s.slip_direction(1)};
+    e["slip_angle"] = s.slip_angle;
+  } else {
+    e["slip_direction"] = nullptr;
+    e["slip_angle"] = nullptr;
+  }
+  e["residual"] = s.residual;
+  return e;
+}
+
+std::string solution_text(const rate3d::Step3dSolution& s) {
+  const rate3d::Step3dValues& v = s.values;
+  std::ostringstream o;
+  o.precision(10);
+  o << rate3d::to_string(s.type) << ": P_T1=[" << v.P_T1(0) << ", " << v.P_T1(1)
+    << "] P_N1=" << v.P_N1 << " DP=[" << v.DP_T(0) << ", " << v.DP_T(1) << ", " << v.DP_N
+    << "] Dw=[" << v.Dw_T(0) << ", " << v.Dw_T(1) << ", " << v.Dw_N << "] Dw_Ti=["
+    << v.Dw_Ti(0) << ", " << v.Dw_Ti(1) << "] Dw_w=" << v.Dw_w << " lambda=" << v.lambda;
+  o.precision(6);
+  if (s.type == rate3d::Type3d::kSlip) o << " slip_angle=" << s.slip_angle;
+  o << " residual=" << s.residual;
+  return o.str();
+}
+
+}  // namespace
+
+int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
+  // The one-point 2-D options describe a 2-D point; the file gives the 3-D point.
+  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s",
+                        "--criterion", "--P_T0", "--P_N0"})
+    if (cmd.count(o) > 0)
+      throw InputError(std::string(o) + " cannot be combined with a \"dim\": 3 --system file (the "
+                       "file gives the point's parameters and state)");
+  const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(a.system);
+  if (sys.n_points() != 1)
+    throw InputError(a.system + ": the 3-D step is available for one point (N = 1); this file has " +
+                     std::to_string(sys.n_points()) + " points");
+  const bool chain_given = cmd.count("--chain") > 0;
+  const int modes = (a.all ? 1 : 0) + (chain_given ? 1 : 0) + (cmd.count("--facets") > 0 ? 1 : 0) +
+                    (cmd.count("--multistart") > 0 ? 1 : 0);
+  if (modes > 1)
+    throw InputError("--all, --chain, --facets and --multistart are alternative modes: give at "
+                     "most one");
+  if (a.DF.size() != 3)
+    throw InputError("--DF needs 3 numbers for a 3-D point (DF_TX DF_TY DF_N), got " +
+                     std::to_string(a.DF.size()));
+  rate3d::Step3dProblem p;
+  p.params = sys.point_parameters(0);
+  const auto law = rate::wear_law_from_string(a.wear_law);
+  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
+  p.wear.law = *law;
+  p.wear.k_M = a.k_M;
+  if (*law == rate::WearLaw::kMrozStupkiewicz && p.params.k_a != 0)
+    throw InputError(a.system + ": the point's k_a (Archard) has no effect with --wear-law mroz: "
+                     "remove it from the file or use --wear-law archard");
+  const rate3d::Point3dState& st = sys.points[0].state;
+  if (st.state == 'a') {
+    if (cmd.count("--g0") == 0 || !(a.g0 < 0))
+      throw InputError("the point is in state a (open): give its gap with --g0 G, G < 0");
+    p.state.g0 = a.g0;
+  } else {
+    if (cmd.count("--g0") > 0)
+      throw InputError(std::string("--g0 applies to a state-a (open) point; the point is in "
+                       "state ") + st.state + " (in contact, g0 = 0)");
+    p.state.P_T0 = st.P_T;
+    p.state.P_N0 = st.P_N;
+  }
+  p.DF = Eigen::Vector3d(a.DF[0], a.DF[1], a.DF[2]);
+  if (cmd.count("--facets") > 0 && p.wear_coefficient() != 0)
+    throw InputError("--facets is the faceted LCP without wear; with wear (k_a or k_M > 0) the "
+                     "faceted step is nonlinear: use --all (exact) or --multistart");
+  if (cmd.count("--multistart") > 0 && a.multistart < 1)
+    throw InputError("--multistart needs N >= 1 starts, got " + std::to_string(a.multistart));
+  throw_if_invalid(p.validate(), "step");
+
+  std::string mode = "chain";
+  if (a.all) mode = "all";
+  if (cmd.count("--facets") > 0) mode = "facets";
+  if (cmd.count("--multistart") > 0) mode = "multistart";
+
+  rate3d::Step3dSolutionSet set;
+  rate3d::Step3dChainResult chain;
+  rate3d::Step3dChainOptions copt;
+  if (mode == "chain" && chain_given) {
+    copt.chain.clear();
+    std::stringstream ss(a.chain);
+    std::string name;
+    while (std::getline(ss, name, ',')) copt.chain.push_back(name);
+    throw_if_invalid(copt.validate(), "--chain");
+  }
+  int code = kExitOk;
+  if (mode == "all") {
+    set = rate3d::enumerate_step_3d(p);
+    code = !set.complete ? kExitInconclusive : set.solutions.empty() ? kExitNoSolution : kExitOk;
+  } else if (mode == "facets") {
+    set = rate3d::solve_step_3d_faceted(p, a.facets).set;
+    code = !set.complete ? kExitInconclusive : set.solutions.empty() ? kExitNoSolution : kExitOk;
+  } else if (mode == "multistart") {
+    set = rate3d::multistart_step_3d(p, a.multistart, 1);
+    code = set.solutions.empty() ? kExitInconclusive : kExitOk;
+  } else {
+    chain = rate3d::solve_step_3d(p, copt);
+    set.complete = false;
+    if (chain.solved) set.solutions.push_back(chain.solution);
+    set.message = chain.message;
+    code = chain.solved ? kExitOk : kExitNoSolution;
+  }
+  const std::string name = sys.name.empty() ? a.system : sys.name;
+  if (a.json) {
+    nlohmann::json j;
+    j["cpkit_version"] = CPKIT_VERSION;
+    nlohmann::json in = {{"system", a.system},
+                         {"name", sys.name},
+                         {"state", std::string(1, st.state)},
+                         {"P_T0", Pair{p.state.P_T0(0), p.state.P_T0(1)}},
+                         {"P_N0", p.state.P_N0},
+                         {"g0", p.state.g0},
+                         {"DF", a.DF},
+                         {"wear_law", std::string(rate::to_string(p.wear.law))},
+                         {"mode", mode}};
+    if (p.wear.law == rate::WearLaw::kMrozStupkiewicz) in["k_M"] = p.wear.k_M;
+    if (mode == "facets") in["facets"] = a.facets;
+    if (mode == "multistart") in["multistart"] = a.multistart;
+    if (mode == "chain") in["chain"] = copt.chain;
+    j["input"] = in;
+    j["dim"] = 3;
+    j["mode"] = mode;
+    if (mode == "chain") {
+      j["status"] = chain.solved ? "solved" : "no_solution";
+      j["solver"] = chain.solver;
+      nlohmann::json at = nlohmann::json::array();
+      for (const auto& x : chain.attempts)
+        at.push_back({{"solver", x.solver}, {"solved", x.solved},
+                      {"residual", std::isfinite(x.residual) ? nlohmann::json(x.residual) : nlohmann::json(nullptr)},
+                      {"iterations", x.iterations}, {"seconds", x.seconds}, {"message", x.message}});
+      j["attempts"] = at;
+    } else {
+      j["complete"] = set.complete;
+      if (set.complete) j["count"] = set.count(); else j["found"] = set.count();
+    }
+    if (mode == "facets") j["facets"] = a.facets;
+    if (!set.message.empty()) j["message"] = set.message;
+    nlohmann::json sols = nlohmann::json::array();
+    for (const auto& s : set.solutions) sols.push_back(solution_json(s));
+    j["solutions"] = sols;
+    print_json(j);
+  } else {
+    std::cout << "step, 3-D point " << name << " (state " << st.state << "), ";
+    if (mode == "chain") {
+      std::cout << "solver chain: " << (chain.solved ? "solved by " + chain.solver : std::string("no solution found")) << "\n";
+    } else {
+      std::cout << (mode == "all" ? "exact" : mode == "facets" ? "faceted with " + std::to_string(a.facets) + " facets" : "multistart") << "\n";
+      if (set.complete) std::cout << "count: " << set.count() << "\n";
+      else std::cout << "solutions found: " << set.count() << " (NOT proved complete: not a count)\n";
+    }
+    for (const auto& s : set.solutions) std::cout << "  " << solution_text(s) << "\n";
+    if (!set.message.empty()) std::cout << "note: " << set.message << "\n";
+  }
+  if (code == kExitInconclusive && mode != "multistart")
+    std::cerr << "cpkit step: not proved complete: " << set.message << '\n';
+  return code;
+}
+
+}  // namespace cpkit::cli
