@@ -21,6 +21,7 @@
 #include "map_chunks.hpp"
 #include "map_files.hpp"
 #include "map_system.hpp"
+#include "map_system_3d.hpp"
 #include "mpi_session.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
@@ -34,6 +35,7 @@
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
 #include "cpkit/rate_problem/maps/npy_writer.hpp"
+#include "cpkit/rate_problem/three_d/system_3d.hpp"
 
 namespace cpkit::cli {
 
@@ -53,6 +55,10 @@ struct MapArgs {
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
   int n = 0, n2 = 0, theta_n = 0, threads = 0;
   bool plot = false, json = false, list_presets = false, resume = false;
+  // 3-D systems only (map_system_3d.cpp): --facets K, --point i, --others zero|file, --gamma G
+  int facets = 0, point = 1;
+  std::string others = "zero";
+  double gamma = 0;
   // Which options were given (CLI11 Option pointers).
   std::map<std::string, CLI::Option*> opt;
   bool given(const std::string& name) const {
@@ -454,6 +460,39 @@ int run_map(const MapArgs& a) {
       std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
     return kExitOk;
   }
+  if (a.given("--system") && rate3d::is_3d_system_file(a.system)) {
+    Map3dRequest r;
+    r.path = a.system;
+    r.kind = a.given("--kind") ? a.kind : "";
+    r.out = a.out;
+    r.param = a.param;
+    r.param2 = a.param2;
+    r.others = a.others;
+    r.format = a.format;
+    r.json = a.json;
+    r.plot = a.plot;
+    r.from = a.from;
+    r.to = a.to;
+    r.from2 = a.from2;
+    r.to2 = a.to2;
+    r.theta_from = a.theta_from;
+    r.theta_to = a.theta_to;
+    r.gamma = a.gamma;
+    r.time_limit = a.time_limit;
+    r.n = a.n;
+    r.n2 = a.n2;
+    r.theta_n = a.theta_n;
+    r.threads = a.threads;
+    r.facets = a.facets;
+    r.point = a.point;
+    for (const auto& [name, o] : a.opt)
+      if (o->count() > 0) r.given.push_back(name);
+    return run_map_system_3d(r);
+  }
+  for (const char* o : {"--facets", "--point", "--others", "--gamma"})
+    if (a.given(o))
+      throw InputError(std::string(o) + " applies to maps of 3-D systems (--system FILE with "
+                       "\"dim\": 3)");
   if (a.given("--system")) {
     const std::string kind = a.given("--kind") ? a.kind : "direction";
     std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
@@ -941,7 +980,7 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--preset"] = cmd->add_option("--preset", args->preset,
                                   "fig5a, fig5b, state-d, state-d-mu-kappa (--list-presets)");
   cmd->add_flag("--list-presets", args->list_presets, "list the presets and exit");
-  o["--kind"] = cmd->add_option("--kind", args->kind, "direction | param-direction | param-param");
+  o["--kind"] = cmd->add_option("--kind", args->kind, "direction | param-direction | param-param | sphere (3-D systems)");
   o["--state"] = cmd->add_option("--state", args->state, "contact state a|b|c|d (default b)");
   o["--a11"] = cmd->add_option("--a11", args->a11, "stiffness a11");
   o["--a12"] = cmd->add_option("--a12", args->a12, "stiffness a12");
@@ -991,6 +1030,18 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                   "dF = cos(theta) e1 + sin(theta) e2; --kind direction (default), "
                                   "param-direction, param-param; --param mu, C_T, k_a, P_N, "
                                   "coupling or mu@i, ...");
+  o["--facets"] = cmd->add_option("--facets", args->facets,
+                                  "3-D systems: the faceted route with K facets (3..64; required "
+                                  "for N > 1 points; default for one point: exact)");
+  o["--point"] = cmd->add_option("--point", args->point,
+                                 "3-D systems: the loaded point of --kind sphere/param-direction "
+                                 "and the point whose types are mapped (1..N, default 1)");
+  o["--others"] = cmd->add_option("--others", args->others,
+                                  "3-D systems, N > 1: the other points' load rates, zero "
+                                  "(default) or file (the file's dF)");
+  o["--gamma"] = cmd->add_option("--gamma", args->gamma,
+                                 "3-D param-direction: azimuth G of the meridian plane of load "
+                                 "directions, dF = (cos t cos G, cos t sin G, sin t) (default 0)");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
   o["--resume"] = cmd->add_flag("--resume", args->resume,

@@ -15,7 +15,10 @@ PREFIX.png and PREFIX.svg:
   param-param      unique / non-unique / no-solution / none-and-several classes with the analytic critical curve;
   N-point maps     (`cpkit map --system`) param-direction: the count per cell (left) and the
                    point-type pattern, the type tuples present (right); param-param: the class
-                   over all directions (left) and the union of the patterns (right).
+                   over all directions (left) and the union of the patterns (right);
+  3-D maps         (`cpkit map --system` with "dim": 3) sphere, param-direction, param-param:
+                   the count per cell (left) and the solution types (right), cells not proved
+                   complete marked.
 Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
 Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
@@ -449,6 +452,103 @@ def plot_system_grid(summary, base, plt):
     return fig
 
 
+def plot_map_3d(summary, base, plt):
+    """3-D systems ("dim": 3): the count per cell (left) and the solution types of the loaded
+    point (right); cells not proved complete are marked with black dots. Sphere maps: the
+    azimuth g horizontally, the polar angle b from +N vertically (+N at the top)."""
+    import numpy as np
+    from matplotlib.colors import ListedColormap, BoundaryNorm
+    from matplotlib.patches import Patch
+    from matplotlib.lines import Line2D
+    files, inp, kind = summary["files"], summary["input"], summary["kind"]
+    load = lambda k: np.load(os.path.join(base, files[k]))
+    xs, ys = load("x"), load("y")
+    cnt, typ, comp = load("count"), load("types"), load("complete")
+    if cnt.shape != (len(xs), len(ys)):
+        fail("the arrays of %s do not match its axes" % files["json"])
+    if kind == "sphere":
+        xe = cell_edges(xs, inp.get("beta_from", 0.0), inp.get("beta_to", math.pi))
+        ye = cell_edges(ys)
+    elif kind == "param-direction":
+        xe = cell_edges(xs)
+        ye = cell_edges(ys, inp.get("theta_from", 0.0), inp.get("theta_to", 2 * math.pi))
+    else:
+        xe, ye = cell_edges(xs), cell_edges(ys)
+    fig, axes = plt.subplots(1, 2, figsize=(14, 6), sharey=True)
+    # sphere: rows b drawn vertically (+N at the top), columns g horizontally
+    def mesh(ax, values, cols):
+        norm = BoundaryNorm(np.arange(len(cols) + 1) - 0.5, len(cols))
+        if kind == "sphere":
+            ax.pcolormesh(ye, xe, values, cmap=ListedColormap(cols), norm=norm, shading="flat",
+                          rasterized=True)
+        else:
+            ax.pcolormesh(xe, ye, values.T, cmap=ListedColormap(cols), norm=norm,
+                          shading="flat", rasterized=True)
+    keys = sorted({count_key(int(c)) for c in np.unique(cnt)},
+                  key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
+    kidx = {k: i for i, k in enumerate(keys)}
+    cols = [COUNT_COLOURS.get(k, "#777777") for k in keys]
+    mesh(axes[0], np.vectorize(lambda c: kidx[count_key(int(c))])(cnt), cols)
+    h0 = [Patch(facecolor=cols[i], edgecolor="#999999",
+                label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
+                else "infinitely many") for i, k in enumerate(keys)]
+    names = ["open", "separation", "stick", "slip"]
+    masks = sorted(int(m) for m in np.unique(typ))
+    label = lambda m: ", ".join(n for b, n in enumerate(names) if m & (1 << b)) or "no solution"
+    palette = ["#4c72b0", "#55a868", "#dd8452", "#8172b3", "#937860", "#da8bc3", "#ccb974",
+               "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf", "#bcbd22", "#c44e52", "#8c8c8c",
+               "#1f77b4", "#9467bd"]
+    tcols = ["#d62728" if m == 0 else palette[i % len(palette)] for i, m in enumerate(masks)]
+    midx = {m: i for i, m in enumerate(masks)}
+    mesh(axes[1], np.vectorize(lambda m: midx[int(m)])(typ), tcols)
+    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999", label=label(m))
+          for i, m in enumerate(masks)]
+    bad = np.argwhere(comp == 0)
+    if len(bad):
+        for ax in axes:
+            if kind == "sphere":
+                ax.plot(ys[bad[:, 1]], xs[bad[:, 0]], "k.", ms=3)
+            else:
+                ax.plot(xs[bad[:, 0]], ys[bad[:, 1]], "k.", ms=3)
+        for h in (h0, h1):
+            h.append(Line2D([], [], color="k", marker=".", ls="",
+                            label="not proved complete (%d cells)" % len(bad)))
+    axes[0].legend(handles=h0, fontsize=8, loc="upper left", framealpha=0.9)
+    axes[1].legend(handles=h1, fontsize=8, loc="upper left", framealpha=0.9,
+                   title="types at point %d" % inp.get("point", 1), title_fontsize=8)
+    axes[0].set_title("number of solutions")
+    axes[1].set_title("solution types")
+    for ax in axes:
+        if kind == "sphere":
+            ax.set_xlim(ye[0], ye[-1])
+            ax.set_ylim(xe[-1], xe[0])  # +N (b = 0) at the top
+            ax.set_xlabel(r"azimuth $g$ from $+T_X$ towards $+T_Y$ (rad)")
+            ax.set_xticks([-math.pi, -math.pi / 2, 0, math.pi / 2, math.pi])
+            ax.set_xticklabels([r"$-\pi$", r"$-\pi/2$", "0", r"$\pi/2$", r"$\pi$"])
+        else:
+            ax.set_xlim(xe[0], xe[-1])
+            ax.set_ylim(ye[0], ye[-1])
+            ax.set_xlabel(inp["param"])
+    if kind == "sphere":
+        axes[0].set_ylabel(r"polar angle $b$ from $+N$ (rad)")
+        axes[0].text(0.99, 0.01, r"$\dot F = (\sin b\cos g, \sin b\sin g, \cos b)$",
+                     transform=axes[0].transAxes, ha="right", va="bottom", fontsize=9)
+    elif kind == "param-direction":
+        axes[0].set_ylabel(r"$\theta$: $\dot F = (\cos\theta\cos G, \cos\theta\sin G, "
+                           r"\sin\theta)$, G = %.4g" % inp.get("gamma", 0.0))
+    else:
+        axes[0].set_ylabel(inp["param2"])
+    route = ("faceted, %d facets" % inp["facets"]) if inp.get("facets") else "exact"
+    fig.suptitle("%s: %s map of %d 3-D point%s, %s (%d x %d cells%s)" %
+                 (inp.get("name") or os.path.basename(inp["system"]), kind, inp["n_points"],
+                  "" if inp["n_points"] == 1 else "s", route, cnt.shape[0], cnt.shape[1],
+                  "" if summary.get("complete", True)
+                  else "; %d NOT proved complete" % summary.get("incomplete_cells", 0)),
+                 fontsize=10.5)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    return fig
+
+
 def main(argv):
     args = argv[1:]
     if not args or args[0] in ("-h", "--help"):
@@ -485,7 +585,9 @@ def main(argv):
     if out is None:
         out = src[:-5] if src.endswith(".json") else src
     kind = summary.get("kind")
-    if isinstance(summary.get("input"), dict) and "system" in summary["input"] and \
+    if summary.get("dim") == 3:
+        fig = plot_map_3d(summary, base, plt)
+    elif isinstance(summary.get("input"), dict) and "system" in summary["input"] and \
             kind in ("param-direction", "param-param"):
         fig = plot_system_grid(summary, base, plt)
     elif kind == "direction":
