@@ -8,10 +8,12 @@
 //                  [--heat --heat-capacity X --T-ref X --T-initial X --T-body T1 T2
 //                  --conductance C1 C2] [--branch-rule closest|stop]
 //                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
+//   cpkit simulate --system POINT3D.json --orbit aX aY ...   ("dim": 3: simulate_3d.hpp)
 //
 // Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, a branch point
 // with --branch-rule stop, or numerical_failure: values beyond the range of double; the reason
 // on stdout/in the summary), 2 bad input (also an output file that cannot be written).
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <filesystem>
@@ -25,10 +27,12 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "simulate_3d.hpp"
 #include "simulate_config.hpp"
 #include "simulate_system.hpp"
 #include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/three_d/system_3d.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -41,6 +45,7 @@ struct SimArgs {
   bool heat = false, json = false;
   int every = 1;
   bool every_given = false;
+  Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (simulate_3d.cpp)
 };
 
 using Settings = SimulateSettings;
@@ -225,10 +230,45 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
   return j;
 }
 
+/// A "dim": 3 system: one 3-D point under an elliptic load orbit (simulate_3d.cpp); the options
+/// of the 2-D simulation are passed on to be refused there.
+int run_3d(const SimArgs& a) {
+  Simulate3dCommon c;
+  c.system = a.system;
+  c.num = a.num;
+  c.wear_law = a.wear_law;
+  c.branch_rule = a.branch_rule;
+  c.csv = a.csv;
+  c.summary = a.summary;
+  c.plot = a.plot;
+  c.every = a.every;
+  c.every_given = a.every_given;
+  c.json = a.json;
+  static const char* const used[] = {"F_N", "period", "cycles", "steps-per-cycle", "ramp-steps",
+                                     "k_M"};
+  for (const auto& kv : a.num)
+    if (std::find(std::begin(used), std::end(used), kv.first) == std::end(used))
+      c.other_given.push_back("--" + kv.first);
+  if (!a.config.empty()) c.other_given.push_back("--config");
+  if (!a.criterion.empty()) c.other_given.push_back("--criterion");
+  if (!a.load.empty()) c.other_given.push_back("--load");
+  if (!a.load_csv.empty()) c.other_given.push_back("--load-csv");
+  if (a.heat) c.other_given.push_back("--heat");
+  if (!a.T_body.empty()) c.other_given.push_back("--T-body");
+  if (!a.conductance.empty()) c.other_given.push_back("--conductance");
+  return run_simulate_3d(a.three_d, c);
+}
+
 int run(const SimArgs& a) {
+  if (!a.system.empty() && rate3d::is_3d_system_file(a.system)) return run_3d(a);
+  if (const std::string o = a.three_d.first_given(); !o.empty())
+    throw InputError(o + " needs a \"dim\": 3 system file (--system FILE; docs/contact_3d.md)");
   Settings s;
   if (!a.config.empty()) read_simulate_config(a.config, s);
   apply_args(a, s);
+  if (!s.system.empty() && rate3d::is_3d_system_file(s.system))
+    throw InputError("the config's system '" + s.system + "' has \"dim\": 3: simulate it from the "
+                     "command line (cpkit simulate --system FILE --orbit aX aY ...)");
   // Command-line options of another load type, or heat options without --heat, would have no
   // effect: errors, never silence.
   auto only_with = [&](std::initializer_list<const char*> keys, const std::string& needs) {
@@ -360,6 +400,7 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
       "--every", [a](const int& v) { a->every = v; a->every_given = true; },
       "keep every n-th step in the series (default 1; 0: none)");
   cmd->add_flag("--json", a->json, "print the JSON summary");
+  add_simulate_3d_options(cmd, a->three_d);
   cmd->callback([a, &ctx]() { ctx.exit_code = run(*a); });
 }
 
