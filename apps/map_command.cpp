@@ -1038,7 +1038,7 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                  "and the point whose types are mapped (1..N, default 1)");
   o["--others"] = cmd->add_option("--others", args->others,
                                   "3-D systems, N > 1: the other points' load rates, zero "
-                                  "(default) or file (the file's dF)");
+                                  "or file (the file's dF; the default when it has one)");
   o["--gamma"] = cmd->add_option("--gamma", args->gamma,
                                  "3-D param-direction: azimuth G of the meridian plane of load "
                                  "directions, dF = (cos t cos G, cos t sin G, sin t) (default 0)");

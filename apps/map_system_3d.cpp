@@ -186,7 +186,9 @@ int run_map_system_3d(const Map3dRequest& r) {
     throw InputError("--point must be in [1, " + std::to_string(N) + "], got " +
                      std::to_string(r.point));
   o.point = r.point - 1;
-  o.others_from_file = r.others == "file";
+  // The other points' load rates: the file's dF when it has one (a grazing point with a zero
+  // load rate is a degenerate LCP: slow, and not proved complete), else 0; --others chooses.
+  o.others_from_file = r.has("--others") ? r.others == "file" : (N > 1 && p.sys.dF.has_value());
   if (o.others_from_file && !p.sys.dF)
     throw InputError("--others file needs \"dF\" in the system file (the other points' load "
                      "rates)");

@@ -192,6 +192,14 @@ TEST_CASE("cpkit map --system (dim 3) --kind param-param over alpha_X x alpha_Y,
   CHECK(jn["input"]["point"] == 2);
   CHECK(jn["input"]["others"] == "file");
   CHECK(jn["cells"] == 32);
+  // without --others: the file's dF for the other point (the file has one), the same map
+  const CliRun d = run_cpkit("map --system '" + two + "' --kind sphere --n 4 --n2 8 --facets 8 "
+                             "--point 2 --json");
+  REQUIRE(d.code == n2.code);
+  const auto jd = nlohmann::json::parse(d.out);
+  CHECK(jd["input"]["others"] == "file");
+  CHECK(jd["counts"] == jn["counts"]);
+  CHECK(jd["types"] == jn["types"]);
 }
 
 TEST_CASE("cpkit map --system (dim 3) --plot draws the picture", "[cli][map3d]") {
