@@ -1,0 +1,182 @@
+#!/usr/bin/python3
+"""Draws the figures of a 3-D fretting run written by `cpkit simulate --system FILE` with a
+"dim": 3 file (docs/contact_3d.md, "Fretting with an elliptic load orbit").
+
+usage: cpkit_plot_fretting_3d.py --csv SERIES.csv [--summary SUMMARY.json] --out PREFIX
+                                 [--formats png,svg]
+
+Writes, for each format:
+  PREFIX_orbit.*  three views of the tangential plane: the load orbit F_T; the traction path
+                  P_T with the friction ellipse ||P_T|| = mu P_N (half-axes mu P_N alpha_X,
+                  mu P_N alpha_Y, at the largest and the last P_N; needs the summary); the slip
+                  path w_T^i
+                  (coloured by time: stick steps grey, slip steps coloured);
+  PREFIX_wear.*   the wear depth against cycles, and the wear per cycle split into the parts
+                  due to slip in X and in Y (wear_X_per_cycle, wear_Y_per_cycle of the summary).
+Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
+Run it with /usr/bin/python3 (Debian's python3-matplotlib).
+"""
+import csv
+import json
+import math
+import sys
+
+EXIT_BAD_INPUT = 2
+EXIT_NO_MATPLOTLIB = 5
+
+NUMERIC = ["step", "t", "F_TX", "F_TY", "F_N", "P_TX", "P_TY", "P_N", "w_TiX", "w_TiY",
+           "lambda", "w_w", "cycle"]
+
+
+def fail(msg, code=EXIT_BAD_INPUT):
+    sys.stderr.write("cpkit_plot_fretting_3d.py: %s\n" % msg)
+    sys.exit(code)
+
+
+def read_series(path):
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        fail("cannot read %s: %s" % (path, e))
+    if not rows:
+        fail("%s has no rows" % path)
+    cols = {k: [] for k in NUMERIC + ["type"]}
+    for i, r in enumerate(rows):
+        try:
+            for k in NUMERIC:
+                cols[k].append(float(r[k]))
+            cols["type"].append(r["type"])
+        except (KeyError, ValueError, TypeError) as e:
+            fail("%s row %d: %s" % (path, i + 2, e))
+    return cols
+
+
+def parse_args(argv):
+    args = {"csv": None, "summary": None, "out": None, "formats": ["png", "svg"]}
+    i = 1
+    while i < len(argv):
+        a = argv[i]
+        if a in ("-h", "--help"):
+            print(__doc__)
+            sys.exit(0)
+        if a not in ("--csv", "--summary", "--out", "--formats") or i + 1 >= len(argv):
+            fail("unknown or incomplete option %r (see --help)" % a)
+        v = argv[i + 1]
+        args[a[2:]] = v.split(",") if a == "--formats" else v
+        i += 2
+    if not args["csv"] or not args["out"]:
+        fail("--csv and --out are required (see --help)")
+    return args
+
+
+def main(argv):
+    args = parse_args(argv)
+    s = read_series(args["csv"])
+    summary = {}
+    if args["summary"]:
+        try:
+            with open(args["summary"]) as f:
+                summary = json.load(f)
+        except (OSError, ValueError) as e:
+            fail("cannot read summary %s: %s" % (args["summary"], e))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as e:
+        sys.stderr.write("cpkit_plot_fretting_3d.py: matplotlib not available to %s (%s); "
+                         "install python3-matplotlib (Debian) and run with /usr/bin/python3\n" %
+                         (sys.executable, e))
+        return EXIT_NO_MATPLOTLIB
+    out = args["out"]
+    inp = summary.get("input", {})
+    point = inp.get("point", {})
+    alpha = point.get("alpha", [1.0, 1.0])
+    mu = point.get("mu")
+    law = inp.get("wear", {}).get("law", "?")
+    title = "cpkit simulate, 3-D point (alpha = (%g, %g), %s wear)" % (alpha[0], alpha[1], law)
+    outcome = summary.get("outcome")
+    if outcome and outcome != "completed":
+        title += " (stopped: %s)" % outcome
+    t = s["t"]
+    n = len(t)
+    cmap = plt.get_cmap("viridis")
+
+    def path(ax, xs, ys, slip_only=False):
+        seg = max(1, n // 600)
+        for i in range(0, n - 1, seg):
+            j = min(n - 1, i + seg)
+            slipping = any(s["type"][k] == "slip" for k in range(i + 1, j + 1))
+            colour = cmap(i / max(1, n - 1)) if (slipping or not slip_only) else "#bbbbbb"
+            ax.plot(xs[i:j + 1], ys[i:j + 1], color=colour, lw=1.0)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.axhline(0, color="#dddddd", lw=0.6, zorder=0)
+        ax.axvline(0, color="#dddddd", lw=0.6, zorder=0)
+
+    # 1. Load orbit, traction path with the friction ellipse, slip path.
+    fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.8))
+    path(axes[0], s["F_TX"], s["F_TY"])
+    axes[0].set_xlabel("$F_{TX}$")
+    axes[0].set_ylabel("$F_{TY}$")
+    axes[0].set_title("load orbit $F_T$")
+    path(axes[1], s["P_TX"], s["P_TY"])
+    if mu is not None:
+        th = [2 * math.pi * k / 240 for k in range(241)]
+        for PN, style, which in ((max(s["P_N"]), ":", "largest"), (s["P_N"][-1], "--", "last")):
+            axes[1].plot([mu * PN * alpha[0] * math.cos(a) for a in th],
+                         [mu * PN * alpha[1] * math.sin(a) for a in th], style, color="#c44e52",
+                         lw=1.0, label="friction ellipse $\\|P_T\\| = \\mu P_N$ (%s $P_N$)" % which)
+        axes[1].legend(loc="lower right", fontsize=7)
+    axes[1].set_xlabel("$P_{TX}$")
+    axes[1].set_ylabel("$P_{TY}$")
+    axes[1].set_title("traction path $P_T$")
+    path(axes[2], s["w_TiX"], s["w_TiY"], slip_only=True)
+    axes[2].set_xlabel("$w^i_{TX}$")
+    axes[2].set_ylabel("$w^i_{TY}$")
+    axes[2].set_title("slip path $w_T^i$ (grey: stick)")
+    sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
+    fig.colorbar(sm, ax=list(axes), label="t", shrink=0.8)
+    fig.suptitle(title)
+    for fmt in args["formats"]:
+        fig.savefig("%s_orbit.%s" % (out, fmt), dpi=100)
+    plt.close(fig)
+
+    # 2. Wear growth and its split by slip direction.
+    fig, ax = plt.subplots(figsize=(6.8, 4.8))
+    wpc = summary.get("wear_per_cycle") or []
+    wx = summary.get("wear_X_per_cycle") or []
+    wy = summary.get("wear_Y_per_cycle") or []
+    if wpc:
+        cum = [0.0]
+        for w in wpc:
+            cum.append(cum[-1] + w)
+        ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label="wear depth $w^w$ (orbit)")
+        ax.set_xlabel("cycles")
+        ax.set_ylabel("wear depth $w^w$ accumulated over the cycles")
+        ax2 = ax.twinx()
+        xs = [i + 0.5 for i in range(len(wpc))]
+        if len(wx) == len(wpc) and len(wy) == len(wpc):
+            ax2.bar(xs, wx, width=0.8, color="#dd8452", alpha=0.5, label="per cycle, by X slip")
+            ax2.bar(xs, wy, width=0.8, bottom=wx, color="#55a868", alpha=0.5,
+                    label="per cycle, by Y slip")
+        else:
+            ax2.bar(xs, wpc, width=0.8, color="#dd8452", alpha=0.4, label="wear per cycle")
+        ax2.set_ylabel("wear per cycle")
+        h1, l1 = ax.get_legend_handles_labels()
+        h2, l2 = ax2.get_legend_handles_labels()
+        ax.legend(h1 + h2, l1 + l2, loc="upper left", fontsize=7)
+    else:
+        ax.plot(t, s["w_w"], color="#4c72b0", label="wear depth $w^w$")
+        ax.set_xlabel("t")
+        ax.set_ylabel("wear depth $w^w$")
+    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title), fontsize=9)
+    fig.tight_layout()
+    for fmt in args["formats"]:
+        fig.savefig("%s_wear.%s" % (out, fmt), dpi=100)
+    plt.close(fig)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
