@@ -16,7 +16,9 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/one_point/analytic.hpp"
+#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
+#include "cpkit/rate_problem/three_d/step_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;
@@ -450,4 +452,37 @@ TEST_CASE("3-D: bad input is an InputError naming the field", "[rate3d]") {
   st = {};
   p = {};
   CHECK_THROWS_AS(solve_rate_3d(p, st, {std::nan(""), 0, 0}), cpkit::InputError);
+}
+
+TEST_CASE("3-D rate: a direction where the slip system has rank one for every load", "[rate3d]") {
+  // Isotropic A_TT = a I with mu |A_NT| >= a: in the directions t with mu A_NT . t = a the slip
+  // system B(t) has rank one, so g(phi) vanishes there for every dF. A dF outside B's range has
+  // no slip in that direction: the answer must still be complete, and it must agree with the
+  // faceted route (an independent LCP) at k = 64, and with the exact step from the grazing
+  // state without wear.
+  std::mt19937 rng(171);
+  std::uniform_real_distribution<double> u(-1, 1), pos(0.1, 1);
+  int agree = 0, total = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Point3dParameters p;
+    const double a = 0.5 + pos(rng), ang = kPi * u(rng);
+    p.mu = 0.5 + 2 * pos(rng);
+    const double r = (1 + pos(rng)) * a / p.mu;  // |A_NT| >= a / mu
+    p.A << a, 0, r * std::cos(ang), 0, a, r * std::sin(ang), r * std::cos(ang), r * std::sin(ang),
+        r * r / a + 0.2 + pos(rng);
+    const Eigen::Vector3d dF(u(rng), u(rng), u(rng));
+    const RateSolutionSet3d e = solve_rate_3d(p, Point3dState{}, dF);
+    INFO("trial " << trial << ": " << e.message);
+    REQUIRE(e.complete);
+    const FacetedRateResult f = solve_rate_3d_faceted(p, dF, 64);
+    agree += f.set.count() == e.count();
+    ++total;
+    Step3dProblem st;
+    st.params = p;
+    st.DF = dF;
+    const Step3dSolutionSet s = enumerate_step_3d(st);
+    REQUIRE(s.complete);
+    CHECK(s.count() == e.count());
+  }
+  CHECK(agree >= total - 4);  // the faceted slip directions are approximate near tangencies
 }

@@ -251,6 +251,14 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
                                                                    Eigen::ComputeFullV);
     const auto& sv = svd.singularValues();
     if (!(sv(1) > 1e-9 * sv(0))) {  // also NaN
+      // B(t) of rank one makes g vanish at t for every dF (e.g. an isotropic A_TT = a I with
+      // mu A_NT . t = a). A dF outside B's range has no slip in this direction; inside it, the
+      // slips would be a continuum, which is not resolved.
+      if (sv(0) > 0 && std::isfinite(sv(0))) {
+        const Eigen::Vector3d fn = dF.normalized();
+        const Eigen::Vector3d u0 = svd.matrixU().col(0);
+        if ((fn - u0 * u0.dot(fn)).norm() > 1e-7) continue;
+      }
       not_proved("the slip system is singular in the direction phi = " + num(phi) +
                  " (a continuum of solutions): not resolved");
       continue;

@@ -379,7 +379,15 @@ bool slip_amounts(const SlipSystem& s, bool wear, double phi, std::vector<Eigen:
     Eigen::Matrix<double, 3, 2> B;
     B.col(0) = U / nu;
     B.col(1) = V / nv;
-    const Eigen::Vector2d z = B.colPivHouseholderQr().solve(s.r);
+    // [u v] of rank one: r outside its range has no slip in this direction; inside it the
+    // slips form a continuum (not resolved).
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(B, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    if (!(svd.singularValues()(1) > 1e-9 * svd.singularValues()(0))) {
+      const Eigen::Vector3d rn = s.r.normalized();
+      const Eigen::Vector3d u0 = svd.matrixU().col(0);
+      return (rn - u0 * u0.dot(rn)).norm() > 1e-7;
+    }
+    const Eigen::Vector2d z = svd.solve(s.r);
     if (!z.allFinite()) return false;
     out.emplace_back(z(0) / nu, z(1) / nv);
     return true;
@@ -506,6 +514,11 @@ double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexc
   y << v.lambda, -alpha.cwiseProduct(v.Dw_Ti);
   const Eigen::Vector3d nat = x - project_soc(x - y);
   worse(nat.cwiseAbs().maxCoeff() / (1 + x.cwiseAbs().maxCoeff() + y.cwiseAbs().maxCoeff()));
+  // The natural residual is relative to |x| + |y|: a huge multiplier over a tiny force could
+  // pass it. The complementarity products relative to (1 + |x|)(1 + |y|) close that gap (and
+  // are of the natural residual's order where one factor is small).
+  worse(std::abs(x.dot(y)) / ((1 + x.norm()) * (1 + y.norm())));
+  worse(std::abs(v.P_N1 * v.g1) / ((1 + std::abs(v.P_N1)) * (1 + std::abs(v.g1))));
   return res;
 }
 

@@ -67,7 +67,9 @@ Step3dValues step_3d_values(const Step3dProblem& problem, const Eigen::Vector2d&
 /// Scale-free residual of a candidate solution: the largest of (i) equilibrium relative to its
 /// terms, (ii) the contact pair min(P_N1, -g1) relative to the force and gap scales, (iii) the
 /// second-order-cone natural residual |x - Proj_K(x - y)| of (3D.22) relative to |x| + |y|
-/// (covers the cone, the flow direction, lambda = |D Dw_T^i| and complementarity), each
+/// (covers the cone, the flow direction, lambda = |D Dw_T^i| and complementarity), (iv) the
+/// products x . y and P_N1 g1 relative to (1 + |first|)(1 + |second|) (a huge multiplier over a
+/// tiny force cannot hide in (iii)'s denominator), each
 /// evaluated in units normalized by the problem's own force and stiffness scales. A solution
 /// of every solver is accepted only when this is at most the solver's tolerance (1e-9).
 double step_3d_residual(const Step3dProblem& problem, const Step3dValues& v) noexcept;
