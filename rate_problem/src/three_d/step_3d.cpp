@@ -147,9 +147,25 @@ struct TrigPoly {
   int degree = 0;
   std::array<double, 5> a{}, b{};
   double operator()(double phi) const noexcept {
-    double s = a[0];
-    for (int k = 1; k <= degree; ++k) s += a[k] * std::cos(k * phi) + b[k] * std::sin(k * phi);
+    // cos k phi, sin k phi by the angle-addition recurrence (two trigonometric calls).
+    const double c1 = std::cos(phi), s1 = std::sin(phi);
+    double s = a[0], ck = 1, sk = 0;
+    for (int k = 1; k <= degree; ++k) {
+      const double c = ck * c1 - sk * s1;
+      sk = sk * c1 + ck * s1;
+      ck = c;
+      s += a[k] * ck + b[k] * sk;
+    }
     return s;
+  }
+  /// Sets coefficients at or below `floor` (rounding noise of the samples) to zero and lowers
+  /// the degree past them.
+  void drop_noise(double floor) noexcept {
+    for (int k = 0; k <= degree; ++k) {
+      if (std::abs(a[k]) <= floor) a[k] = 0;
+      if (std::abs(b[k]) <= floor) b[k] = 0;
+    }
+    while (degree > 0 && a[degree] == 0 && b[degree] == 0) --degree;
   }
   double derivative(double phi) const noexcept {
     double s = 0;
@@ -203,7 +219,7 @@ TrigPoly fourier(F&& h, int max_degree) {
 /// (|h'| clearly nonzero) or exactly double (h' = 0 there too, refined by Newton on h', with
 /// |h''| clearly nonzero): symmetric problems have double roots where two solutions share a
 /// slip direction. Returns false with `why` when the list is not proved complete.
-bool trig_roots(const TrigPoly& h, std::vector<double>& roots, std::string& why) {
+bool trig_roots(const TrigPoly& h, double noise, std::vector<double>& roots, std::string& why) {
   roots.clear();
   const int n = h.degree;
   const double sc = h.scale();
@@ -229,7 +245,13 @@ bool trig_roots(const TrigPoly& h, std::vector<double>& roots, std::string& why)
     why = "the eigenvalue solver did not converge";
     return false;
   }
-  const double zero = 1e-11 * sc, flat = 1e-7 * sc;
+  // h is known to about `noise` (rounding in the terms of its samples): a root is where h is
+  // within 100 noise (or 1e-11 of its scale), and h must stand well above the noise.
+  if (sc <= 1e4 * noise) {
+    why = "the slip condition is at the rounding level of its terms: slip directions are not resolved";
+    return false;
+  }
+  const double zero = std::max(1e-11 * sc, 100 * noise), flat = 1e-7 * sc;
   auto newton = [](auto&& f, auto&& df, double phi) {
     for (int it = 0; it < 60; ++it) {
       const double d = df(phi);
@@ -263,6 +285,25 @@ bool trig_roots(const TrigPoly& h, std::vector<double>& roots, std::string& why)
       continue;
     }
     near.push_back(start);
+  }
+  // Double roots do not change the sign of h, so no sign test can see a lost one: every local
+  // minimum of |h| on a dense scan (neighbours of one sign) is also followed by Newton on h'.
+  {
+    constexpr int kScan = 1440;
+    const double step = 2 * kPi / kScan;
+    std::array<double, kScan> hv;
+    for (int j = 0; j < kScan; ++j) hv[j] = h(step * j);
+    for (int j = 0; j < kScan; ++j) {
+      const double l = hv[(j + kScan - 1) % kScan], hc = hv[j], r = hv[(j + 1) % kScan];
+      if (!(std::abs(hc) <= std::abs(l) && std::abs(hc) < std::abs(r))) continue;
+      if ((l > 0) != (hc > 0) || (r > 0) != (hc > 0)) continue;  // a sign change: simple roots
+      const double start = step * j;
+      const double phi2 = newton([&](double x) { return h.derivative(x); },
+                                 [&](double x) { return h.second_derivative(x); }, start);
+      if (std::abs(phi2 - start) <= step && std::abs(h(phi2)) <= zero &&
+          std::abs(h.derivative(phi2)) <= 1e-9 * sc && std::abs(h.second_derivative(phi2)) > flat)
+        twice.push_back(std::remainder(phi2, 2 * kPi));
+    }
   }
   auto unique = [](std::vector<double>& v) {
     std::sort(v.begin(), v.end());
@@ -580,9 +621,13 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
   // Slip (3D.24)-(3D.27): every zero of the slip condition.
   const SlipSystem s = slip_system(p);
   const bool wear = p.wear_coefficient() > 0;
-  const TrigPoly h = fourier([&](double phi) { return s.condition(phi, wear); }, wear ? 4 : 2);
+  TrigPoly h = fourier([&](double phi) { return s.condition(phi, wear); }, wear ? 4 : 2);
   double terms = 0;
   for (int j = 0; j < 16; ++j) terms = std::max(terms, s.condition_terms(2 * kPi * j / 16, wear));
+  // The samples carry rounding errors of about 1e-16 of their terms (and the transform adds a
+  // few more): coefficients below 1e-14 of the terms are noise, not structure.
+  const double noise = 1e-14 * terms;
+  if (std::isfinite(noise)) h.drop_noise(noise);
   std::vector<double> roots;
   std::string why;
   if (!std::isfinite(h.scale())) {
@@ -592,7 +637,7 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
     set.complete = false;
     set.message = "the slip condition vanishes for every direction (e.g. no load and no "
                   "stored force): slip solutions are not resolved";
-  } else if (!trig_roots(h, roots, why)) {
+  } else if (!trig_roots(h, noise, roots, why)) {
     set.complete = false;
     set.message = why;
   }
