@@ -14,12 +14,9 @@ Writes, for each format:
 Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
 Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
-import csv
-import json
 import sys
 
-EXIT_BAD_INPUT = 2
-EXIT_NO_MATPLOTLIB = 5
+import cpkit_plot_series as series
 
 TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]
 TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
@@ -30,68 +27,16 @@ NUMERIC = ["step", "t", "F_T", "F_N", "P_T", "P_N", "w_T", "w_N", "w_w", "w_Ti",
            "dissipation", "dissipation_total", "work_total", "stored", "temperature"]
 
 
-def fail(msg, code=EXIT_BAD_INPUT):
-    sys.stderr.write("cpkit_plot_simulation.py: %s\n" % msg)
-    sys.exit(code)
-
-
-def read_series(path):
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail("cannot read %s: %s" % (path, e))
-    if not rows:
-        fail("%s has no rows" % path)
-    cols = {k: [] for k in NUMERIC + ["state", "type"]}
-    for i, r in enumerate(rows):
-        try:
-            for k in NUMERIC:
-                cols[k].append(float(r[k]))
-            cols["state"].append(r["state"])
-            cols["type"].append(r["type"])
-        except (KeyError, ValueError, TypeError) as e:
-            fail("%s row %d: %s" % (path, i + 2, e))
-    return cols
-
-
-def parse_args(argv):
-    args = {"csv": None, "summary": None, "out": None, "formats": ["png", "svg"]}
-    i = 1
-    while i < len(argv):
-        a = argv[i]
-        if a in ("-h", "--help"):
-            print(__doc__)
-            sys.exit(0)
-        if a not in ("--csv", "--summary", "--out", "--formats") or i + 1 >= len(argv):
-            fail("unknown or incomplete option %r (see --help)" % a)
-        v = argv[i + 1]
-        args[a[2:]] = v.split(",") if a == "--formats" else v
-        i += 2
-    if not args["csv"] or not args["out"]:
-        fail("--csv and --out are required (see --help)")
-    return args
+SCRIPT = "cpkit_plot_simulation.py"
 
 
 def main(argv):
-    args = parse_args(argv)
-    s = read_series(args["csv"])
-    summary = {}
-    if args["summary"]:
-        try:
-            with open(args["summary"]) as f:
-                summary = json.load(f)
-        except (OSError, ValueError) as e:
-            fail("cannot read summary %s: %s" % (args["summary"], e))
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError as e:
-        sys.stderr.write("cpkit_plot_simulation.py: matplotlib not available to %s (%s); install "
-                         "python3-matplotlib (Debian) and run with /usr/bin/python3\n" %
-                         (sys.executable, e))
-        return EXIT_NO_MATPLOTLIB
+    args = series.parse_args(SCRIPT, argv, __doc__)
+    s = series.read_series(SCRIPT, args["csv"], NUMERIC, ["state", "type"])
+    summary = series.read_summary(SCRIPT, args["summary"])
+    plt = series.pyplot(SCRIPT)
+    if plt is None:
+        return series.EXIT_NO_MATPLOTLIB
     out = args["out"]
     title = "cpkit simulate (%s, %s wear)" % (summary.get("criterion", "?"),
                                                summary.get("wear_law", "?"))
