@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/one_point/analytic.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
@@ -15,22 +16,11 @@
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;
 
+using cpkit::test::coupled_spd;
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Eigen::Matrix3d coupled_spd(std::mt19937& rng, double coupling) {
-  std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
-  Eigen::Matrix2d L;
-  L << 0.5 + pos(rng), 0, u(rng), 0.5 + pos(rng);
-  const Eigen::Matrix2d ATT = L * L.transpose();
-  const Eigen::Vector2d ATN = coupling * Eigen::Vector2d(u(rng), u(rng));
-  Eigen::Matrix3d A;
-  A.topLeftCorner<2, 2>() = ATT;
-  A.topRightCorner<2, 1>() = ATN;
-  A.bottomLeftCorner<1, 2>() = ATN.transpose();
-  A(2, 2) = ATN.dot(ATT.ldlt().solve(ATN)) + 0.05 + pos(rng);
-  return A;
-}
 }  // namespace
 
 TEST_CASE("faceted 3-D, isotropic with Y decoupled and unloaded: the 2-D closed forms",
@@ -81,7 +71,7 @@ TEST_CASE("faceted 3-D: the counts approach the exact elliptic counts as k grows
   int cases = 0, non_unique = 0;
   for (int c = 0; c < 400; ++c) {
     Point3dParameters p;
-    p.A = coupled_spd(rng, c % 2 ? 1.0 : 0.3);
+    p.A = coupled_spd(rng, c % 2 ? 1.0 : 0.3, false);
     p.mu = 0.2 + 4 * pos(rng);
     p.C_T = c % 3 == 0 ? 0 : pos(rng);
     p.alpha = {0.4 + pos(rng), 0.4 + pos(rng)};

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/one_point/analytic.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
@@ -22,6 +23,8 @@
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;
+
+using cpkit::test::coupled_spd;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -32,22 +35,6 @@ Eigen::Matrix3d random_spd(std::mt19937& rng, double coupling = 1) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) L(i, j) = u(rng) * (i == j ? 1 : coupling);
   return L * L.transpose() + 0.05 * Eigen::Matrix3d::Identity();
-}
-
-/// SPD with a strong tangential-normal coupling A_TN (where non-uniqueness lives): A_NN just
-/// above the Schur-complement bound.
-Eigen::Matrix3d coupled_spd(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
-  Eigen::Matrix2d L;
-  L << 0.5 + pos(rng), 0, u(rng), 0.5 + pos(rng);
-  const Eigen::Matrix2d ATT = L * L.transpose();
-  const Eigen::Vector2d ATN(u(rng), u(rng));
-  Eigen::Matrix3d A;
-  A.topLeftCorner<2, 2>() = ATT;
-  A.topRightCorner<2, 1>() = ATN;
-  A.bottomLeftCorner<1, 2>() = ATN.transpose();
-  A(2, 2) = ATN.dot(ATT.ldlt().solve(ATN)) + 0.05 * pos(rng);
-  return A;
 }
 
 bool close(double x, double y, double scale) { return std::abs(x - y) <= 1e-7 * scale; }

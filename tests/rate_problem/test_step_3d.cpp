@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/three_d/step_3d.hpp"
@@ -20,22 +21,10 @@
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;
 
+using cpkit::test::coupled_spd;
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-Eigen::Matrix3d coupled_spd(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
-  Eigen::Matrix2d L;
-  L << 0.5 + pos(rng), 0, u(rng), 0.5 + pos(rng);
-  const Eigen::Matrix2d ATT = L * L.transpose();
-  const Eigen::Vector2d ATN(u(rng), u(rng));
-  Eigen::Matrix3d A;
-  A.topLeftCorner<2, 2>() = ATT;
-  A.topRightCorner<2, 1>() = ATN;
-  A.bottomLeftCorner<1, 2>() = ATN.transpose();
-  A(2, 2) = ATN.dot(ATT.ldlt().solve(ATN)) + 0.05 * pos(rng);
-  return A;
-}
 
 /// A random start state of the given kind: 'b' grazing, 'a' open, 'c' inside the cone, 'd' on it.
 Step3dState random_state(std::mt19937& rng, char kind, const Point3dParameters& p) {

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <random>
 
+#include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
@@ -24,22 +25,10 @@
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;
 
+using cpkit::test::coupled_spd;
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-Eigen::Matrix3d coupled_spd(std::mt19937& rng, double coupling) {
-  std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
-  Eigen::Matrix2d L;
-  L << 0.5 + pos(rng), 0, u(rng), 0.5 + pos(rng);
-  const Eigen::Matrix2d ATT = L * L.transpose();
-  const Eigen::Vector2d ATN = coupling * Eigen::Vector2d(u(rng), u(rng));
-  Eigen::Matrix3d A;
-  A.topLeftCorner<2, 2>() = ATT;
-  A.topRightCorner<2, 1>() = ATN;
-  A.bottomLeftCorner<1, 2>() = ATN.transpose();
-  A(2, 2) = ATN.dot(ATT.ldlt().solve(ATN)) + 0.05 + pos(rng);
-  return A;
-}
 
 /// A random admissible start state: grazing, open, stick inside the ellipse, or on it.
 Step3dState random_state(std::mt19937& rng, const Point3dParameters& p, int kind, bool y_zero) {
@@ -221,7 +210,7 @@ TEST_CASE("FB-SOC rotates with the tangential plane of an isotropic problem", "[
   int solved = 0, n = 0;
   for (int c = 0; c < 300; ++c) {
     Step3dProblem p;
-    p.params.A = coupled_spd(rng, 1.5);
+    p.params.A = coupled_spd(rng, 1.5, false);
     p.params.mu = 0.2 + 2 * pos(rng);
     p.params.C_T = c % 2 ? 0 : pos(rng);
     p.params.k_a = c % 3 == 0 ? 0.3 * pos(rng) : 0;
@@ -255,7 +244,7 @@ TEST_CASE("FB-SOC verdicts do not depend on units", "[step3d][solvers]") {
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
   for (int c = 0; c < 60; ++c) {
     Step3dProblem p;
-    p.params.A = coupled_spd(rng, 1.5);
+    p.params.A = coupled_spd(rng, 1.5, false);
     p.params.mu = 0.2 + 2 * pos(rng);
     p.params.C_T = c % 2 ? 0 : pos(rng);
     p.params.alpha = Eigen::Vector2d(0.4 + pos(rng), 0.4 + pos(rng));
@@ -310,7 +299,7 @@ TEST_CASE("FB-SOC, Ipopt and the chain agree with the exact enumeration; faceted
   const int n_problems = 300;
   for (int c = 0; c < n_problems; ++c) {
     Step3dProblem p;
-    p.params.A = coupled_spd(rng, 3.0);
+    p.params.A = coupled_spd(rng, 3.0, false);
     p.params.mu = 0.5 + 4 * pos(rng);
     p.params.C_T = c % 2 ? 0 : pos(rng);
     p.params.alpha = Eigen::Vector2d(0.4 + pos(rng), 0.4 + pos(rng));
