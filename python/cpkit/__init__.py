@@ -12,6 +12,10 @@ from .contact import (ContactParameters, ContactState, direction_map, enumerate_
 from .system import ContactSystem, solve_system_rate, system_direction_counts
 from .three_d import (Point3d, Rate3dSolutionSet, Step3dSolutionSet, enumerate_step_3d,
                       solve_rate_3d, solve_system_rate_3d)
+from .three_d_more import (FacetedStep3dSolutionSet, Fretting3dResult, Map3d, StepChain3dResult,
+                           multistart_step_3d, param_direction_map_3d, param_param_map_3d,
+                           simulate_fretting_3d, solve_step_3d, solve_step_3d_faceted,
+                           sphere_map_3d)
 from .lcp import cross_verify, enumerate, solve, solve_mcp, solvers
 from .results import (TYPE_BITS, CrossVerifyReport, DirectionMap, ParamDirectionMap,
                       ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,

@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "point3d_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
@@ -16,36 +17,6 @@ namespace cpkit::py {
 namespace {
 
 using rate3d::Point3dParameters;
-
-Eigen::Vector2d vec2(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 2) throw InputError(std::string(what) + " must hold 2 numbers, got " + std::to_string(v.size()));
-  return {v[0], v[1]};
-}
-
-Eigen::Vector3d vec3(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 3) throw InputError(std::string(what) + " must hold 3 numbers, got " + std::to_string(v.size()));
-  return {v[0], v[1], v[2]};
-}
-
-/// Point3dParameters from an object with A (3x3), mu, C_T, k_a, P_s, alpha (cpkit.Point3d).
-Point3dParameters params_from(const pyb::handle& o) {
-  Point3dParameters p;
-  const auto A = o.attr("A").cast<std::vector<std::vector<double>>>();
-  if (A.size() != 3) throw InputError("A must be 3 x 3 (DOFs T_X, T_Y, N)");
-  for (int i = 0; i < 3; ++i) {
-    if (A[i].size() != 3) throw InputError("A must be 3 x 3 (DOFs T_X, T_Y, N)");
-    for (int j = 0; j < 3; ++j) p.A(i, j) = A[i][j];
-  }
-  p.mu = finite_number(o.attr("mu"), "mu");
-  p.C_T = finite_number(o.attr("C_T"), "C_T");
-  p.k_a = finite_number(o.attr("k_a"), "k_a");
-  p.P_s = finite_number(o.attr("P_s"), "P_s");
-  p.alpha = vec2(o.attr("alpha"), "alpha");
-  throw_if_invalid(p.validate(), "point");
-  return p;
-}
 
 pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
 

@@ -11,4 +11,5 @@ void bind_step(pybind11::module_& m);
 void bind_system(pybind11::module_& m);
 void bind_system_rate(pybind11::module_& m);
 void bind_three_d(pybind11::module_& m);
+void bind_three_d_more(pybind11::module_& m);
 }  // namespace cpkit::py
