@@ -1,6 +1,7 @@
-// `cpkit step --system FILE --DF X Y N` with a "dim": 3 file of one point: one implicit step
-// of a 3-D contact point with the elliptic friction-and-wear law (docs/contact_3d.md, "Solvers
-// of the 3-D step").
+// `cpkit step --system FILE --DF X Y N` with a "dim": 3 file: one implicit step of a 3-D contact
+// point with the elliptic friction-and-wear law (docs/contact_3d.md, "Solvers of the 3-D step");
+// with N > 1 points the coupled step by FB-SOC Newton (--chain fb-soc, default) or --multistart
+// (system_step_3d.hpp; --all and --facets are refused: no complete enumeration).
 //
 //   cpkit step --system FILE --DF DFX DFY DFN [--g0 G (state a)] [--wear-law archard|mroz --k_M X]
 //              [--all | --chain exact,fb-soc,ipopt | --facets K | --multistart N] [--json]
@@ -22,6 +23,7 @@
 #include "cpkit/rate_problem/three_d/step_3d.hpp"
 #include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/three_d/system_step_3d.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -65,6 +67,145 @@ std::string solution_text(const rate3d::Step3dSolution& s) {
   return o.str();
 }
 
+/// N > 1 coupled points: FB-SOC Newton on the 4N unknowns (--chain fb-soc, the default) or
+/// --multistart N; no complete enumeration exists for coupled 3-D points (--all, --facets are
+/// refused). --g0 G gives the gap of every state-a point.
+int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
+                       const rate3d::ContactSystem3d& sys) {
+  const int N = sys.n_points();
+  if (a.all || cmd.count("--facets") > 0)
+    throw InputError(std::string(a.all ? "--all" : "--facets") + " is not available for " +
+                     std::to_string(N) + " coupled 3-D points: there is no complete enumeration "
+                     "of the coupled 3-D step (only one point, N = 1, is enumerated exactly); use "
+                     "--chain fb-soc (default) or --multistart N");
+  const bool chain_given = cmd.count("--chain") > 0;
+  if (chain_given && cmd.count("--multistart") > 0)
+    throw InputError("--chain and --multistart are alternative modes: give at most one");
+  if (chain_given && a.chain != "fb-soc")
+    throw InputError("--chain '" + a.chain + "': for " + std::to_string(N) + " coupled 3-D points "
+                     "the only link is fb-soc (exact and ipopt are one-point solvers)");
+  if (a.DF.size() != static_cast<std::size_t>(3 * N))
+    throw InputError("--DF needs 3N = " + std::to_string(3 * N) + " numbers for " +
+                     std::to_string(N) + " 3-D points (DF_TX DF_TY DF_N per point), got " +
+                     std::to_string(a.DF.size()));
+  rate3d::SystemStep3dProblem p;
+  p.system = sys;
+  const auto law = rate::wear_law_from_string(a.wear_law);
+  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
+  p.wear.law = *law;
+  p.wear.k_M = a.k_M;
+  bool any_open = false;
+  for (int i = 0; i < N; ++i) {
+    const rate3d::SystemPoint3d& pt = sys.points[static_cast<std::size_t>(i)];
+    if (*law == rate::WearLaw::kMrozStupkiewicz && pt.k_a != 0)
+      throw InputError(a.system + ": point " + std::to_string(i + 1) + ": its k_a (Archard) has "
+                       "no effect with --wear-law mroz: remove it from the file or use "
+                       "--wear-law archard");
+    rate3d::Step3dState st;
+    if (pt.state.state == 'a') {
+      any_open = true;
+      if (cmd.count("--g0") == 0 || !(a.g0 < 0))
+        throw InputError("point " + std::to_string(i + 1) + " is in state a (open): give the gap "
+                         "of the open points with --g0 G, G < 0");
+      st.g0 = a.g0;
+    } else {
+      st.P_T0 = pt.state.P_T;
+      st.P_N0 = pt.state.P_N;
+    }
+    p.states.push_back(st);
+  }
+  if (!any_open && cmd.count("--g0") > 0)
+    throw InputError("--g0 applies to state-a (open) points; no point of this file is in state a");
+  p.DF = Eigen::Map<const Eigen::VectorXd>(a.DF.data(), 3 * N);
+  if (cmd.count("--multistart") > 0 && a.multistart < 1)
+    throw InputError("--multistart needs N >= 1 starts, got " + std::to_string(a.multistart));
+  throw_if_invalid(p.validate(), "step");
+
+  const std::string mode = cmd.count("--multistart") > 0 ? "multistart" : "chain";
+  rate3d::SystemStep3dSolutionSet set;
+  rate3d::SystemStep3dSolverResult r;
+  int code = kExitOk;
+  if (mode == "multistart") {
+    set = rate3d::multistart_system_step_3d(p, a.multistart, 1);
+    code = set.solutions.empty() ? kExitInconclusive : kExitOk;
+  } else {
+    r = rate3d::solve_system_step_3d_fb_soc(p);
+    if (r.solved) set.solutions.push_back(r.solution);
+    set.message = r.message;
+    code = r.solved ? kExitOk : kExitNoSolution;
+  }
+  const std::string name = sys.name.empty() ? a.system : sys.name;
+  if (a.json) {
+    nlohmann::json j;
+    j["cpkit_version"] = CPKIT_VERSION;
+    nlohmann::json states = nlohmann::json::array(), pt0 = nlohmann::json::array(),
+                   pn0 = nlohmann::json::array(), g0 = nlohmann::json::array();
+    for (int i = 0; i < N; ++i) {
+      const rate3d::Step3dState& st = p.states[static_cast<std::size_t>(i)];
+      states.push_back(std::string(1, sys.points[static_cast<std::size_t>(i)].state.state));
+      pt0.push_back(Pair{st.P_T0(0), st.P_T0(1)});
+      pn0.push_back(st.P_N0);
+      g0.push_back(st.g0);
+    }
+    nlohmann::json in = {{"system", a.system}, {"name", sys.name}, {"n_points", N},
+                         {"state", states},    {"P_T0", pt0},      {"P_N0", pn0},
+                         {"g0", g0},           {"DF", a.DF},
+                         {"wear_law", std::string(rate::to_string(p.wear.law))},
+                         {"mode", mode}};
+    if (p.wear.law == rate::WearLaw::kMrozStupkiewicz) in["k_M"] = p.wear.k_M;
+    if (mode == "multistart") in["multistart"] = a.multistart;
+    if (mode == "chain") in["chain"] = std::vector<std::string>{"fb-soc"};
+    j["input"] = in;
+    j["dim"] = 3;
+    j["n_points"] = N;
+    j["mode"] = mode;
+    if (mode == "chain") {
+      j["status"] = r.solved ? "solved" : "no_solution";
+      j["solver"] = r.solved ? "fb-soc" : "";
+      const double res = r.solution.residual;
+      j["attempts"] = nlohmann::json::array(
+          {{{"solver", "fb-soc"}, {"solved", r.solved},
+            {"residual", std::isfinite(res) ? nlohmann::json(res) : nlohmann::json(nullptr)},
+            {"iterations", r.iterations}, {"seconds", r.seconds}, {"message", r.message}}});
+    } else {
+      j["complete"] = false;
+      j["found"] = set.count();
+    }
+    if (!set.message.empty()) j["message"] = set.message;
+    nlohmann::json sols = nlohmann::json::array();
+    for (const auto& s : set.solutions) {
+      nlohmann::json pts = nlohmann::json::array();
+      for (const auto& x : s.points) pts.push_back(solution_json(x));
+      sols.push_back({{"points", pts}, {"residual", s.residual}});
+    }
+    j["solutions"] = sols;
+    print_json(j);
+  } else {
+    std::cout << "step, " << N << " coupled 3-D points " << name << " (states ";
+    for (const auto& pt : sys.points) std::cout << pt.state.state;
+    std::cout << "), ";
+    if (mode == "chain")
+      std::cout << "FB-SOC Newton: "
+                << (r.solved ? "solved in " + std::to_string(r.iterations) + " iterations"
+                             : std::string("no solution found"))
+                << "\n";
+    else
+      std::cout << "multistart\nsolutions found: " << set.count()
+                << " (NOT proved complete: not a count)\n";
+    int k = 0;
+    for (const auto& s : set.solutions) {
+      std::ostringstream o;
+      o.precision(6);
+      o << s.residual;
+      std::cout << "  solution " << ++k << " (residual " << o.str() << "):\n";
+      int i = 0;
+      for (const auto& x : s.points) std::cout << "    point " << ++i << " " << solution_text(x) << "\n";
+    }
+    if (!set.message.empty()) std::cout << "note: " << set.message << "\n";
+  }
+  return code;
+}
+
 }  // namespace
 
 int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
@@ -75,9 +216,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
       throw InputError(std::string(o) + " cannot be combined with a \"dim\": 3 --system file (the "
                        "file gives the point's parameters and state)");
   const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(a.system);
-  if (sys.n_points() != 1)
-    throw InputError(a.system + ": the 3-D step is available for one point (N = 1); this file has " +
-                     std::to_string(sys.n_points()) + " points");
+  if (sys.n_points() != 1) return run_system_step_3d(a, cmd, sys);
   const bool chain_given = cmd.count("--chain") > 0;
   const int modes = (a.all ? 1 : 0) + (chain_given ? 1 : 0) + (cmd.count("--facets") > 0 ? 1 : 0) +
                     (cmd.count("--multistart") > 0 ? 1 : 0);

@@ -2,11 +2,14 @@
 // source: the 2-D command line (`cpkit step --a11 ... --all`, the active-set enumeration) on an
 // isotropic point whose Y direction is decoupled and unloaded, where the 3-D step must give the
 // 2-D solutions (every mode: --all, --chain, --facets with even K, --multistart); and bad input
-// (exit 2 with the problem named, nothing on stdout).
+// (exit 2 with the problem named, nothing on stdout). N > 1 coupled points (FB-SOC Newton,
+// --multistart) against the 2-D N-point command line (`cpkit step --system 2-D FILE --all`) for
+// isotropic points whose Y directions are decoupled and unloaded.
 #include <catch2/catch.hpp>
 
 #include "cli_runner.hpp"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -211,6 +214,117 @@ TEST_CASE("cpkit step, 3-D: bad input exits 2 naming the problem", "[cli][step3d
       {"step --system " + worn + " --DF 1 0 1 --wear-law mroz --k_M 0.1", "k_a"},
       {"step --a11 1 --a12 0 --a22 1 --mu 0.5 --P_T0 0 --P_N0 1 --g0 0 --DF 0.1 0 --facets 8",
        "dim"},
+  };
+  for (const auto& [args, what] : bad) {
+    const Run r = run_cpkit(args);
+    CAPTURE(args, r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(what) != std::string::npos);
+  }
+}
+
+namespace {
+/// The 2-D counterpart (X-N DOFs) of docs/examples/two_point_system_3d.json.
+std::string two_d_of_example() {
+  const auto path = scratch_dir() / "two_point_2d_of_3d.json";
+  std::ofstream f(path);
+  f << R"({"name": "2-D of two_point_system_3d",
+ "A": [[1.0, 0.3, 0.2, 0.1], [0.3, 1.0, 0.1, 0.2], [0.2, 0.1, 1.0, 0.3], [0.1, 0.2, 0.3, 1.0]],
+ "points": [{"P_T": 0, "P_N": 0, "g": 0, "mu": 3, "C_T": 0.25, "k_a": 0.1, "P_s": 1},
+            {"P_T": 6, "P_N": 2, "g": 0, "mu": 3, "C_T": 0.25, "k_a": 0.1, "P_s": 1}]})";
+  return "'" + path.string() + "'";
+}
+
+bool in_2d_system(const nlohmann::json& s3, const nlohmann::json& two_d, double F) {
+  for (const auto& t : two_d["solutions"]) {
+    bool all = true;
+    for (std::size_t i = 0; i < s3["points"].size(); ++i) {
+      const auto& p = s3["points"][i];
+      all = all && std::abs(p["P_T1"][1].get<double>()) <= 1e-7 * F &&
+            std::abs(p["P_T1"][0].get<double>() - t["values"]["P_T1"][i].get<double>()) <= 1e-6 * F &&
+            std::abs(p["P_N1"].get<double>() - t["values"]["P_N1"][i].get<double>()) <= 1e-6 * F;
+    }
+    if (all) return true;
+  }
+  return false;
+}
+}  // namespace
+
+TEST_CASE("cpkit step, 3-D with N > 1 coupled points: FB-SOC and multistart give 2-D N-point "
+          "solutions", "[cli][step3d]") {
+  const std::string three = std::string("'") + CPKIT_SOURCE_DIR + "/docs/examples/two_point_system_3d.json'";
+  const std::string two = two_d_of_example();
+  int compared = 0;
+  for (const auto& [dfx1, dfn1, dfx2, dfn2] :
+       std::vector<std::array<double, 4>>{{1.0, -1.0, 0.5, 1.0}, {0.2, 0.5, -0.3, 0.4},
+                                          {-0.5, 1.0, 1.0, -0.2}, {0.1, 0.1, 0.1, 0.1}}) {
+    const std::string df2 = num(dfx1) + " " + num(dfn1) + " " + num(dfx2) + " " + num(dfn2);
+    const std::string df3 = num(dfx1) + " 0 " + num(dfn1) + " " + num(dfx2) + " 0 " + num(dfn2);
+    const Run r2 = run_cpkit("step --system " + two + " --DF " + df2 + " --all --json");
+    CAPTURE(df3, r2.err);
+    REQUIRE(r2.code == 0);
+    const auto j2 = nlohmann::json::parse(r2.out);
+    if (j2["complete"] != true) continue;
+    const double F = 6;
+    // the default for N > 1: FB-SOC Newton on the 8 unknowns
+    const Run d = run_cpkit("step --system " + three + " --DF " + df3 + " --json");
+    CAPTURE(d.err);
+    REQUIRE((d.code == 0 || d.code == 1));
+    const auto jd = nlohmann::json::parse(d.out);
+    CHECK(jd["n_points"] == 2);
+    CHECK(jd["input"]["DF"].size() == 6);
+    CHECK(jd["input"]["state"].size() == 2);
+    CHECK(jd["attempts"].size() == 1);
+    if (d.code == 0) {
+      CHECK(jd["solver"] == "fb-soc");
+      REQUIRE(jd["solutions"].size() == 1);
+      const auto& s = jd["solutions"][0];
+      REQUIRE(s["points"].size() == 2);
+      for (const auto& p : s["points"])
+        for (const char* k : {"type", "P_T1", "P_N1", "DP", "Dw", "Dw_Ti", "Dw_w", "g1", "lambda",
+                              "slip_direction", "slip_angle", "residual"})
+          CHECK(p.contains(k));
+      CHECK(s["residual"].get<double>() <= 1e-9);
+      CHECK(in_2d_system(s, j2, F));
+      ++compared;
+    }
+    // --chain fb-soc is the same
+    const Run c = run_cpkit("step --system " + three + " --DF " + df3 + " --chain fb-soc --json");
+    CHECK(c.code == d.code);
+    // --multistart: verified 2-D solutions, never claimed complete
+    const Run m = run_cpkit("step --system " + three + " --DF " + df3 + " --multistart 10 --json");
+    CAPTURE(m.err);
+    REQUIRE((m.code == 0 || m.code == 5));
+    const auto jm = nlohmann::json::parse(m.out);
+    CHECK(jm["complete"] == false);
+    CHECK(jm["found"].get<int>() <= static_cast<int>(j2["solutions"].size()));
+    for (const auto& s : jm["solutions"]) {
+      CHECK(s["residual"].get<double>() <= 1e-9);
+      CHECK(in_2d_system(s, j2, F));
+      ++compared;
+    }
+    // text output: one line per point
+    const Run t = run_cpkit("step --system " + three + " --DF " + df3 + " --multistart 4");
+    CHECK(t.out.find("NOT proved complete") != std::string::npos);
+    if (t.code == 0) CHECK(t.out.find("point 2 ") != std::string::npos);
+  }
+  CHECK(compared >= 4);
+}
+
+TEST_CASE("cpkit step, 3-D with N > 1: refused modes and bad input exit 2", "[cli][step3d]") {
+  const std::string three = std::string("'") + CPKIT_SOURCE_DIR + "/docs/examples/two_point_system_3d.json'";
+  const std::string base = "step --system " + three;
+  const std::pair<std::string, std::string> bad[] = {
+      {base + " --DF 1 0 1 0 0 1 --all", "no complete enumeration"},
+      {base + " --DF 1 0 1 0 0 1 --facets 8", "no complete enumeration"},
+      {base + " --DF 1 0 1 0 0 1 --chain exact", "fb-soc"},
+      {base + " --DF 1 0 1 0 0 1 --chain fb-soc,ipopt", "fb-soc"},
+      {base + " --DF 1 0 1", "3N = 6"},
+      {base + " --DF 1 0 1 0 0 1 --g0 -1", "--g0"},
+      {base + " --DF 1 0 1 0 0 1 --multistart 0", "--multistart"},
+      {base + " --DF 1 0 1 0 0 1 --chain fb-soc --multistart 3", "alternative modes"},
+      {base + " --DF 1 0 1 0 0 1 --wear-law mroz --k_M 0.1", "k_a"},
   };
   for (const auto& [args, what] : bad) {
     const Run r = run_cpkit(args);

@@ -12,6 +12,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "step_3d_terms.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -77,16 +78,7 @@ Step3dValues to_normalized(Step3dValues v, const Scales& s) noexcept {
   return to_user_units(v, inv);
 }
 
-/// Projection onto the second-order cone {(x0, x1): x0 >= |x1|}.
-Eigen::Vector3d project_soc(const Eigen::Vector3d& v) noexcept {
-  const double r = v.tail<2>().stableNorm();
-  if (r <= v(0)) return v;
-  if (r <= -v(0)) return Eigen::Vector3d::Zero();
-  const double a = (v(0) + r) / 2;
-  Eigen::Vector3d out;
-  out << a, a * v.tail<2>() / r;
-  return out;
-}
+using detail::project_soc;
 
 double det3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   return a.dot(b.cross(c));
@@ -528,38 +520,13 @@ double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexc
   const Scales s = scales_of(user);
   const Step3dProblem p = normalized(user, s);
   const Step3dValues v = to_normalized(uv, s);
-  const Eigen::Vector3d P0(p.state.P_T0(0), p.state.P_T0(1), p.state.P_N0);
   const Eigen::Vector3d DP(v.DP_T(0), v.DP_T(1), v.DP_N);
-  const Eigen::Vector3d P1(v.P_T1(0), v.P_T1(1), v.P_N1);
   const Eigen::Vector3d Dw(v.Dw_T(0), v.Dw_T(1), v.Dw_N);
-  const double c_w = p.wear_coefficient();
-  const double big = 1 + P0.cwiseAbs().maxCoeff() + P1.cwiseAbs().maxCoeff();
-  double res = 0;
-  auto worse = [&res](double r) { res = std::isfinite(r) ? std::max(res, r) : INFINITY; };
-  // The values must be consistent with one another (a solver may fill them in any way).
-  worse((P1 - P0 - DP).cwiseAbs().maxCoeff() / big);
+  double res = detail::local_step_3d_residual(p, v);
   const Eigen::Vector3d eq = p.DF - DP - p.params.A * Dw;
-  worse(eq.cwiseAbs().maxCoeff() /
-        (1 + DP.cwiseAbs().maxCoeff() + (p.params.A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff()));
-  const double dscale = 1 + Dw.cwiseAbs().maxCoeff() + std::abs(p.state.g0) +
-                        p.params.C_T * DP.cwiseAbs().maxCoeff() + std::abs(v.Dw_w);
-  worse((v.Dw_T - p.params.C_T * v.DP_T - v.Dw_Ti).cwiseAbs().maxCoeff() / dscale);
-  worse(std::abs(v.Dw_w - c_w * std::max(v.P_N1, 0.0) * v.lambda) / dscale);
-  worse(std::abs(v.g1 - (p.state.g0 + v.Dw_N - v.Dw_w)) / dscale);
-  // Contact: P_N1 >= 0, g1 <= 0, P_N1 g1 = 0.
-  worse(std::abs(std::min(v.P_N1 / big, -v.g1 / dscale)));
-  // Friction over the second-order cone (3D.22).
-  const Eigen::Vector2d alpha = p.params.alpha;
-  Eigen::Vector3d x, y;
-  x << p.params.mu * v.P_N1, v.P_T1.cwiseQuotient(alpha);
-  y << v.lambda, -alpha.cwiseProduct(v.Dw_Ti);
-  const Eigen::Vector3d nat = x - project_soc(x - y);
-  worse(nat.cwiseAbs().maxCoeff() / (1 + x.cwiseAbs().maxCoeff() + y.cwiseAbs().maxCoeff()));
-  // The natural residual is relative to |x| + |y|: a huge multiplier over a tiny force could
-  // pass it. The complementarity products relative to (1 + |x|)(1 + |y|) close that gap (and
-  // are of the natural residual's order where one factor is small).
-  worse(std::abs(x.dot(y)) / ((1 + x.norm()) * (1 + y.norm())));
-  worse(std::abs(v.P_N1 * v.g1) / ((1 + std::abs(v.P_N1)) * (1 + std::abs(v.g1))));
+  const double r = eq.cwiseAbs().maxCoeff() /
+                   (1 + DP.cwiseAbs().maxCoeff() + (p.params.A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff());
+  res = std::isfinite(r) ? std::max(res, r) : INFINITY;
   return res;
 }
 
