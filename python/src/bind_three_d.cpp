@@ -18,8 +18,6 @@ namespace {
 
 using rate3d::Point3dParameters;
 
-pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
-
 pyb::dict rates_dict(const rate3d::Rates3d& r) {
   pyb::dict d;
   d["dP_T"] = np2(r.dP_T);
@@ -130,58 +128,16 @@ pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& 
   return d;
 }
 
-pyb::dict step_values_dict(const rate3d::Step3dValues& v) {
-  pyb::dict d;
-  d["P_T1"] = np2(v.P_T1);
-  d["P_N1"] = v.P_N1;
-  d["DP_T"] = np2(v.DP_T);
-  d["DP_N"] = v.DP_N;
-  d["Dw_T"] = np2(v.Dw_T);
-  d["Dw_N"] = v.Dw_N;
-  d["Dw_Ti"] = np2(v.Dw_Ti);
-  d["Dw_w"] = v.Dw_w;
-  d["g1"] = v.g1;
-  d["lambda"] = v.lambda;
-  return d;
-}
-
 pyb::dict enumerate_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0,
                             double g0, const pyb::object& DF, const std::string& wear_law,
                             double k_M) {
-  rate3d::Step3dProblem p;
-  p.params = params_from(point);
-  const auto w = rate::wear_law_from_string(wear_law);
-  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
-  p.wear = rate::WearModel{*w, k_M};
-  p.state.P_T0 = vec2(P_T0, "P_T0");
-  p.state.P_N0 = P_N0;
-  p.state.g0 = g0;
-  p.DF = vec3(DF, "DF");
+  const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   rate3d::Step3dSolutionSet set;
   {
     pyb::gil_scoped_release release;
     set = rate3d::enumerate_step_3d(p);
   }
-  pyb::list sols;
-  for (const auto& s : set.solutions) {
-    pyb::dict sd;
-    sd["type"] = std::string(rate3d::to_string(s.type));
-    sd["values"] = step_values_dict(s.values);
-    if (s.type == rate3d::Type3d::kSlip) {
-      sd["slip_direction"] = np2(s.slip_direction);
-      sd["slip_angle"] = s.slip_angle;
-    } else {
-      sd["slip_direction"] = pyb::none();
-      sd["slip_angle"] = pyb::none();
-    }
-    sd["residual"] = s.residual;
-    sols.append(sd);
-  }
-  pyb::dict d;
-  d["solutions"] = sols;
-  d["complete"] = set.complete;
-  d["message"] = set.message;
-  return d;
+  return step_set_dict(set);
 }
 
 }  // namespace

@@ -166,57 +166,6 @@ pyb::dict param_param_map_3d(const std::string& json_text, const std::string& pa
 
 // ---- step solvers ----------------------------------------------------------------------------
 
-pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
-
-rate3d::Step3dProblem step_problem(const pyb::object& point, const pyb::object& P_T0,
-                                   double P_N0, double g0, const pyb::object& DF,
-                                   const std::string& wear_law, double k_M) {
-  rate3d::Step3dProblem p;
-  p.params = params_from(point);
-  const auto w = rate::wear_law_from_string(wear_law);
-  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
-  p.wear = rate::WearModel{*w, k_M};
-  p.state.P_T0 = vec2(P_T0, "P_T0");
-  p.state.P_N0 = P_N0;
-  p.state.g0 = g0;
-  p.DF = vec3(DF, "DF");
-  throw_if_invalid(p.validate(), "step");
-  return p;
-}
-
-/// A step solution as a dict with the keys of enumerate_step_3d's solutions.
-pyb::dict solution_dict(const rate3d::Step3dSolution& s) {
-  const rate3d::Step3dValues& v = s.values;
-  pyb::dict values;
-  values["P_T1"] = np2(v.P_T1);
-  values["P_N1"] = v.P_N1;
-  values["DP_T"] = np2(v.DP_T);
-  values["DP_N"] = v.DP_N;
-  values["Dw_T"] = np2(v.Dw_T);
-  values["Dw_N"] = v.Dw_N;
-  values["Dw_Ti"] = np2(v.Dw_Ti);
-  values["Dw_w"] = v.Dw_w;
-  values["g1"] = v.g1;
-  values["lambda"] = v.lambda;
-  pyb::dict d;
-  d["type"] = std::string(rate3d::to_string(s.type));
-  d["values"] = values;
-  const bool slip = s.type == rate3d::Type3d::kSlip;
-  d["slip_direction"] = slip ? pyb::object(np2(s.slip_direction)) : pyb::object(pyb::none());
-  d["slip_angle"] = slip ? pyb::object(pyb::float_(s.slip_angle)) : pyb::object(pyb::none());
-  d["residual"] = s.residual;
-  return d;
-}
-
-pyb::dict set_dict(const rate3d::Step3dSolutionSet& set) {
-  pyb::list sols;
-  for (const auto& s : set.solutions) sols.append(solution_dict(s));
-  pyb::dict d;
-  d["solutions"] = sols;
-  d["complete"] = set.complete;
-  d["message"] = set.message;
-  return d;
-}
 
 pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0, double g0,
                         const pyb::object& DF, const std::string& wear_law, double k_M,
@@ -248,7 +197,7 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   pyb::dict d;
   d["solved"] = r.solved;
   d["solver"] = r.solver;
-  d["solution"] = r.solved ? pyb::object(solution_dict(r.solution)) : pyb::object(pyb::none());
+  d["solution"] = r.solved ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
   d["attempts"] = attempts;
   d["message"] = r.message;
   return d;
@@ -264,7 +213,7 @@ pyb::dict multistart_step_3d(const pyb::object& point, const pyb::object& P_T0, 
     pyb::gil_scoped_release release;
     set = rate3d::multistart_step_3d(p, n_starts, seed);
   }
-  return set_dict(set);
+  return step_set_dict(set);
 }
 
 pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T0, double P_N0,
@@ -277,7 +226,7 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
     pyb::gil_scoped_release release;
     r = rate3d::solve_step_3d_faceted(p, facets, n_starts, seed);
   }
-  pyb::dict d = set_dict(r.set);
+  pyb::dict d = step_set_dict(r.set);
   d["facets"] = r.facets;
   d["size"] = r.size;
   d["lcp"] = r.lcp;

@@ -1,6 +1,6 @@
 #pragma once
-// Reading a 3-D point (cpkit.Point3d) and small vectors from Python objects, shared by
-// bind_three_d.cpp and bind_three_d_more.cpp. Errors are InputError (ValueError in Python)
+// Reading a 3-D point (cpkit.Point3d), small vectors and one-point step problems from Python
+// objects, and step solutions back as dicts, shared by bind_three_d.cpp and bind_three_d_more.cpp. Errors are InputError (ValueError in Python)
 // naming the field.
 #include <string>
 #include <vector>
@@ -10,6 +10,7 @@
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
+#include "cpkit/rate_problem/three_d/step_3d.hpp"
 
 namespace cpkit::py {
 
@@ -41,6 +42,58 @@ inline rate3d::Point3dParameters params_from(const pyb::handle& o) {
   p.alpha = vec2(o.attr("alpha"), "alpha");
   throw_if_invalid(p.validate(), "point");
   return p;
+}
+
+inline pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
+
+inline rate3d::Step3dProblem step_problem(const pyb::object& point, const pyb::object& P_T0,
+                                   double P_N0, double g0, const pyb::object& DF,
+                                   const std::string& wear_law, double k_M) {
+  rate3d::Step3dProblem p;
+  p.params = params_from(point);
+  const auto w = rate::wear_law_from_string(wear_law);
+  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
+  p.wear = rate::WearModel{*w, k_M};
+  p.state.P_T0 = vec2(P_T0, "P_T0");
+  p.state.P_N0 = P_N0;
+  p.state.g0 = g0;
+  p.DF = vec3(DF, "DF");
+  throw_if_invalid(p.validate(), "step");
+  return p;
+}
+
+/// A step solution as a dict with the keys of enumerate_step_3d's solutions.
+inline pyb::dict step_solution_dict(const rate3d::Step3dSolution& s) {
+  const rate3d::Step3dValues& v = s.values;
+  pyb::dict values;
+  values["P_T1"] = np2(v.P_T1);
+  values["P_N1"] = v.P_N1;
+  values["DP_T"] = np2(v.DP_T);
+  values["DP_N"] = v.DP_N;
+  values["Dw_T"] = np2(v.Dw_T);
+  values["Dw_N"] = v.Dw_N;
+  values["Dw_Ti"] = np2(v.Dw_Ti);
+  values["Dw_w"] = v.Dw_w;
+  values["g1"] = v.g1;
+  values["lambda"] = v.lambda;
+  pyb::dict d;
+  d["type"] = std::string(rate3d::to_string(s.type));
+  d["values"] = values;
+  const bool slip = s.type == rate3d::Type3d::kSlip;
+  d["slip_direction"] = slip ? pyb::object(np2(s.slip_direction)) : pyb::object(pyb::none());
+  d["slip_angle"] = slip ? pyb::object(pyb::float_(s.slip_angle)) : pyb::object(pyb::none());
+  d["residual"] = s.residual;
+  return d;
+}
+
+inline pyb::dict step_set_dict(const rate3d::Step3dSolutionSet& set) {
+  pyb::list sols;
+  for (const auto& s : set.solutions) sols.append(step_solution_dict(s));
+  pyb::dict d;
+  d["solutions"] = sols;
+  d["complete"] = set.complete;
+  d["message"] = set.message;
+  return d;
 }
 
 }  // namespace cpkit::py

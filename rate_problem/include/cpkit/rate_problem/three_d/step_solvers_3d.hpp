@@ -81,12 +81,14 @@ struct FacetedStep3dResult {
   Step3dSolutionSet set;  ///< physical solutions (values of the polygonal law), deduplicated;
                           ///< each solution's residual measures it against the ELLIPTIC law
   int facets = 0;
-  int size = 0;           ///< 1 + k
+  int size = 0;           ///< the complementarity problem's size: k (LCP, P_N1 eliminated by
+                          ///< g1 = 0) without wear, 1 + k (NCP) with wear
   bool lcp = true;        ///< no wear: an LCP enumerated completely; else an NCP (multistart)
   long long nodes = 0;    ///< LCP enumeration nodes
   double seconds = 0;
 };
-/// Without wear (c_w = 0): every solution of the LCP of size 1 + k in (P_N1, lambda_j) by
+/// Without wear (c_w = 0): separation directly, and every contact solution of the LCP of size k
+/// in lambda_j (g1 = 0 gives P_N1 affinely) by
 /// cpkit::lcp::enumerate_all (complete as that enumeration). With wear: the NCP solved by the
 /// registry's MCP solvers ("fb-newton" from `n_starts` seeded starts, "ipopt" from two) and
 /// complete = false. Throws InputError for invalid input or k outside [3, 64].
