@@ -492,3 +492,30 @@ TEST_CASE("3-D step: bad input", "[step3d]") {
   CHECK_FALSE(s.complete);
   CHECK_FALSE(s.message.empty());
 }
+
+TEST_CASE("3-D step: slip directions near the ends of double's range", "[step3d]") {
+  // Loads of 1e300 and 1e-300 (A of order 1): the same verdicts and slip angles as at 1
+  // (|Dw_T^i|^2 would overflow or underflow a double; the direction must not).
+  Step3dProblem p;
+  p.params.A << 1.0, 0.0, 0.8, 0.0, 1.0, 0.3, 0.8, 0.3, 1.5;
+  p.params.mu = 2.0;
+  p.params.C_T = 0.25;
+  p.params.alpha = {0.6, 1.0};
+  p.DF = {1.0, 0.5, 0.9};
+  const Step3dSolutionSet base = enumerate_step_3d(p);
+  REQUIRE(base.complete);
+  REQUIRE(base.count() == 3);
+  for (double s : {1e300, 1e-300}) {
+    Step3dProblem q = p;
+    q.DF *= s;
+    const Step3dSolutionSet r = enumerate_step_3d(q);
+    INFO("scale " << s << ": " << r.message);
+    REQUIRE(r.complete);
+    REQUIRE(r.count() == base.count());
+    for (int i = 0; i < r.count(); ++i) {
+      CHECK(r.solutions[i].type == base.solutions[i].type);
+      CHECK(std::abs(r.solutions[i].slip_angle - base.solutions[i].slip_angle) <= 1e-9);
+      CHECK(std::abs(r.solutions[i].slip_direction.norm() - base.solutions[i].slip_direction.norm()) <= 1e-12);
+    }
+  }
+}

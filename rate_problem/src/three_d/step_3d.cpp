@@ -543,8 +543,8 @@ Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues&
   s.values = v;
   s.type = classify_step_3d(p, v);
   s.residual = step_3d_residual(p, v);
-  if (s.type == Type3d::kSlip && v.Dw_Ti.norm() > 0) {
-    s.slip_direction = v.Dw_Ti.normalized();
+  if (s.type == Type3d::kSlip && v.Dw_Ti.stableNorm() > 0) {
+    s.slip_direction = v.Dw_Ti.stableNormalized();  // no overflow near 1e308
     s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
   }
   return s;

@@ -459,8 +459,8 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
     else
       sol.type = Type3d::kSlip;
     sol.residual = local[static_cast<std::size_t>(i)];
-    if (sol.type == Type3d::kSlip && uv.Dw_Ti.norm() > 0) {
-      sol.slip_direction = uv.Dw_Ti.normalized();
+    if (sol.type == Type3d::kSlip && uv.Dw_Ti.stableNorm() > 0) {
+      sol.slip_direction = uv.Dw_Ti.stableNormalized();  // no overflow near 1e308
       sol.slip_angle = std::atan2(sol.slip_direction(1), sol.slip_direction(0));
     }
     out.residual = std::isfinite(sol.residual) ? std::max(out.residual, sol.residual) : kInf;
