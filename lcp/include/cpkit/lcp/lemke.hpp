@@ -65,6 +65,11 @@ struct LemkeOptions {
   /// variable id ("plain" Lemke, which can cycle): for tests and demonstrations of the cycle
   /// guard only.
   bool lexicographic = true;
+  /// Debug/test mode: after every pivot, check the invariant of the lexicographic rule (every
+  /// row of [values, B^{-1}] of a basic variable lexicographically positive, at the rounding
+  /// level; O(n^2) per pivot). A violation ends the run with Status::kNumericalFailure and a
+  /// message naming the row (the final pivot, z0 leaving, is not checked).
+  bool check_invariant = false;
   /// Empty when usable for a problem of size n; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
