@@ -20,15 +20,16 @@ namespace {
 using detail::LemkeBasis;
 
 // Tolerances, all relative to the size of the terms that produced the number being tested
-// (so invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings of the data):
-constexpr double kPivotTol = 1e-11;  // a pivot entry below this times its terms is noise
-// Ties are decided at the rounding level of the computed numbers (tie_level()): a few ulps per
-// basic variable, or the measured backward error of the basis inverse when that is larger, never
-// above kTieTol. kTieTol itself only bounds the window in which a tie is looked for: a fixed
-// 1e-9 used as the tie criterion merged real differences (a contact LCP whose q spans 0.01 and
-// 1e-10, DART's Lemke_12D: ratios 1.8e-10 apart, 1e5 times their rounding level) and the
-// "tie" broken on the B^{-1} columns alone was not the lexicographic minimum: a basic variable
-// went negative, the invariant broke and degenerate pivots cycled (issue 24, item 7).
+// (so invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings of the data).
+// Ties, and pivot entries that are noise, are decided at the rounding level of the computed
+// numbers (tie_level()): a few ulps per basic variable, or the measured backward error of the
+// basis inverse when that is larger, never above kTieTol, which itself only bounds the window
+// in which a tie is looked for. A fixed 1e-9 used as the tie criterion merged real
+// differences (DART's Lemke_12D contact LCP, q spanning 0.01 and 1e-10: ratios 1.8e-10 apart,
+// 1e5 times their rounding), and the "tie" broken on the B^{-1} columns alone was not the
+// lexicographic minimum: a basic variable went negative, the invariant broke and degenerate
+// pivots cycled (issue 24, item 7). A fixed pivot tolerance of 1e-11 likewise dropped real
+// pivot entries (a P-matrix with det 3 * 2^-40 ended on a false secondary ray).
 constexpr double kTieTol = 1e-9;     // window for near ties (times ratio + value terms)
 constexpr double kTieUlps = 64;      // rounding floor: kTieUlps * eps * (k + 1)
 constexpr double kTieGrowth = 4;     // times the inverse's measured backward error
@@ -104,8 +105,8 @@ class LemkeRun {
   // Debug/test mode (LemkeOptions::check_invariant): every row of [value, B^{-1}] of a basic
   // variable is lexicographically positive at the rounding level; else a message naming it.
   std::string invariant_violation();
-  // The pivot entry a of `c` is above kPivotTol times the size of its terms (not noise).
-  bool admissible(const Candidate& c) const;
+  // The pivot entry a of `c` is above tie_level() times the size of its terms (not noise).
+  bool admissible(const Candidate& c);
   // Minimum-ratio test with the lexicographic tie-break for the current direction. `initial`:
   // the z0 pivot (basic variables grow; the most negative ratio leaves). -1: no blocking
   // variable (ray); -2: no finite ratio (numerical failure).
@@ -120,7 +121,8 @@ class LemkeRun {
   // The updated inverse is as accurate as a fresh one could be (backward error at most
   // kRefactorTol, or within a factor 1e3 of the last freshly computed inverse's).
   bool inverse_accurate() {
-    return basis_.hinv_quality() <= std::max(kRefactorTol, 1e3 * fresh_quality_);
+    quality_ = basis_.hinv_quality();
+    return quality_ <= std::max(kRefactorTol, 1e3 * fresh_quality_);
   }
 
   const LcpProblem& problem_;
@@ -146,6 +148,7 @@ class LemkeRun {
   int entering_ = -1;          // the variable entering at the current pivot
   double tie_level_ = -1;      // tie_level() of the current ratio test (-1: not computed)
   double fresh_quality_ = 0;  // hinv_quality() right after the last refactorization
+  double quality_ = 0;        // hinv_quality() at the last accuracy check (for tie_level())
   Stopwatch clock_;
 };
 
@@ -221,24 +224,26 @@ int LemkeRun::lexmin_of_tied() {
   return var;
 }
 
-bool LemkeRun::admissible(const Candidate& c) const {
+bool LemkeRun::admissible(const Candidate& c) {
   // Cheap bound first: for a w row, |G(i, entering)| + rowmax_G(i) ||dxz||_1 bounds its terms.
-  if (c.var > n_ && c.a > kPivotTol * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
-                                                                            entering_)
-                                                                : 0.0) +
-                                       g_rowmax_[c.var - n_ - 1] * dxz_l1_))
+  const double level = tie_level();
+  if (c.var > n_ && c.a > level * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
+                                                                        entering_)
+                                                            : 0.0) +
+                                   g_rowmax_[c.var - n_ - 1] * dxz_l1_))
     return true;
-  return c.a > kPivotTol * basis_.rate_terms(c.var, entering_, dxz_);
+  return c.a > level * basis_.rate_terms(c.var, entering_, dxz_);
 }
 
 double LemkeRun::tie_level() {
   // Values and B^{-1} rows carry the rounding of the products that formed them (a few ulps
   // per term, k + 1 terms), and of the inverse itself when it has drifted: its componentwise
-  // backward error (O(k^2), the order of one pivot) times a growth margin.
+  // backward error as measured at the last accuracy check (every kCheckEvery pivots; the
+  // check refactorizes beyond kRefactorTol) times a margin.
   if (tie_level_ < 0) {
     const double eps = std::numeric_limits<double>::epsilon();
     tie_level_ = std::min(kTieTol, std::max(kTieUlps * eps * (basis_.k() + 1),
-                                            kTieGrowth * basis_.hinv_quality()));
+                                            kTieGrowth * quality_));
   }
   return tie_level_;
 }
@@ -331,7 +336,7 @@ int LemkeRun::ratio_test(bool initial, double& step) {
       leaving = -2;
       break;
     }
-    // A pivot entry that is rounding noise (below kPivotTol times the size of its terms) is
+    // A pivot entry that is rounding noise (below tie_level() times the size of its terms) is
     // not a pivot: drop the candidate and look again.
     if (!admissible(*best)) {
       excluded_[static_cast<size_t>(best->var)] = 1;
@@ -494,7 +499,7 @@ bool LemkeRun::check_accuracy(int pivots) {
   if (!forced && pivots % kCheckEvery != 0) return true;
   if (forced || !inverse_accurate()) {
     if (!basis_.refactor()) return false;
-    fresh_quality_ = basis_.hinv_quality();
+    fresh_quality_ = quality_ = basis_.hinv_quality();
   }
   basis_.recompute_values();
   return true;
@@ -524,7 +529,7 @@ SolveResult LemkeRun::run() {
     zset.clear();
     basis_.reset(zset);
   }
-  fresh_quality_ = basis_.hinv_quality();
+  fresh_quality_ = quality_ = basis_.hinv_quality();
   // Is the starting basic solution already a solution? (q >= 0 for the cold start.)
   basis_.current_point(claim.z, z0);
   const bool start_feasible =
