@@ -111,6 +111,13 @@ class LemkeRun {
   // the z0 pivot (basic variables grow; the most negative ratio leaves). -1: no blocking
   // variable (ray); -2: no finite ratio (numerical failure).
   int ratio_test(bool initial, double& step);
+  // Adds the rounding of the value updates of a pivot with step t to drift_ (O(n)).
+  void note_update(double t) {
+    const int k = basis_.k();
+    double x_max = basis_.w().lpNorm<Eigen::Infinity>();
+    if (k > 0) x_max = std::max(x_max, basis_.xz().head(k).lpNorm<Eigen::Infinity>());
+    drift_ += 2 * std::numeric_limits<double>::epsilon() * (std::abs(t) * rate_max_ + x_max);
+  }
   // Cycle guard: records the current basis; false when it was visited before.
   bool remember_basis(int entering, int leaving);
   // Candidate certificates at a secondary ray; true when one passes check_certificate.
@@ -147,6 +154,8 @@ class LemkeRun {
   double beta_ = 1;            // internal z0 = user z0 / beta_ (see run())
   int entering_ = -1;          // the variable entering at the current pivot
   double tie_level_ = -1;      // tie_level() of the current ratio test (-1: not computed)
+  double drift_ = 0;           // rounding bound of the updated values since recomputed
+  double rate_max_ = 0;        // max |rate| of the current direction
   double fresh_quality_ = 0;  // hinv_quality() right after the last refactorization
   double quality_ = 0;        // hinv_quality() at the last accuracy check (for tie_level())
   Stopwatch clock_;
@@ -268,6 +277,8 @@ int LemkeRun::ratio_test(bool initial, double& step) {
   // variable grows, and the most negative value / rate leaves).
   tie_level_ = -1;
   dxz_l1_ = basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<1>() : 0.0;
+  rate_max_ = std::max(dw_.lpNorm<Eigen::Infinity>(),
+                       basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<Eigen::Infinity>() : 0.0);
   const double sign = initial ? 1.0 : -1.0;
   const int k = basis_.k();
   // Collected into the preallocated cands_ (no push_back in this hot loop).
@@ -313,18 +324,13 @@ int LemkeRun::ratio_test(bool initial, double& step) {
         bound = std::abs(problem_.q[i]) +
                 g_rowmax_[i] * (k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0);
       }
-      if (theta2 > c1->theta + kTieTol * (std::abs(c1->theta) + bound / c1->a)) {
+      if (theta2 > c1->theta + kTieTol * (std::abs(c1->theta) + bound / c1->a))
         leaving = c1->var;
-      } else if (k > 0) {
-        // A near tie is decided at the rounding level: start from values freshly computed
-        // from the data (one refinement step, O(n k)), not from the updated ones.
-        basis_.recompute_values();
-        collect();
-      }
     }
   }
   const Span<Candidate> cands{first, last};
   std::vector<int> dropped;  // excluded_ marks to clear (rare: pivots that are noise)
+  bool refreshed = drift_ == 0;
   while (leaving < 0) {
     // The minimum ratio among the candidates not excluded.
     const Candidate* best = nullptr;
@@ -358,14 +364,21 @@ int LemkeRun::ratio_test(bool initial, double& step) {
     const double window =
         best->theta + kTieTol * (std::abs(best->theta) + best_bound / best->a);
     double best_terms = -1;
+    bool ambiguous = false;
     tied_.clear();
     for (const Candidate& c : cands) {
       if (excluded_[static_cast<size_t>(c.var)] || c.theta > window) continue;
       if (&c != best) {
         if (best_terms < 0) best_terms = value_terms(best->var);
+        // The updated values carry the rounding of the updates since they were last computed
+        // from the data (drift_): a decision within that of the limit is made again on fresh
+        // values (O(n k), only then: exact ties and clear gaps do not pay for it). The terms of
+        // c's value (O(k)) are needed only when c is not tied on the minimizer's terms alone.
         const double tie = tie_level();
-        const double limit = best->theta + tie * (std::abs(best->theta) + best_terms / best->a +
-                                                  value_terms(c.var) / c.a);
+        const double band = drift_ * (1 / c.a + 1 / best->a);
+        double limit = best->theta + tie * (std::abs(best->theta) + best_terms / best->a);
+        if (c.theta > limit - band) limit += tie * value_terms(c.var) / c.a;
+        ambiguous = ambiguous || std::abs(c.theta - limit) <= band;
         if (c.theta > limit) continue;
         if (!admissible(c)) {
           excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
@@ -374,6 +387,13 @@ int LemkeRun::ratio_test(bool initial, double& step) {
         }
       }
       tied_.push_back(c);
+    }
+    if (ambiguous && !refreshed) {
+      refreshed = true;
+      basis_.recompute_values();
+      drift_ = 0;
+      collect();  // the same candidates (the rates are unchanged), fresh ratios
+      continue;
     }
     // z0 among the tied leaves (the solution is reached), as in every Lemke variant.
     for (const Candidate& c : tied_)
@@ -502,6 +522,7 @@ bool LemkeRun::check_accuracy(int pivots) {
     fresh_quality_ = quality_ = basis_.hinv_quality();
   }
   basis_.recompute_values();
+  drift_ = 0;
   return true;
 }
 
@@ -594,6 +615,7 @@ SolveResult LemkeRun::run() {
       return finish(std::move(claim));
     }
     basis_.pivot(z0var, leaving, step, dxz_, dw_);
+    note_update(step);
     ++pivots;
     remember_basis(z0var, leaving);
     record(pivots, "z0-enters", z0var, leaving, step * beta_);
@@ -656,6 +678,7 @@ SolveResult LemkeRun::run() {
       break;
     }
     basis_.pivot(entering, leaving, step, dxz_, dw_);
+    note_update(step);
     ++pivots;
     if (!remember_basis(entering, leaving)) {
       record(pivots, "pivot", entering, leaving, step);
