@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -19,10 +20,19 @@ namespace {
 using detail::LemkeBasis;
 
 // Tolerances, all relative to the size of the terms that produced the number being tested
-// (so invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings of the data):
-constexpr double kPivotTol = 1e-11;  // a pivot entry below this times its terms is noise
-constexpr double kTieTol = 1e-9;     // ratios within this (times ratio + value terms) tie
-constexpr double kLexTol = 1e-9;     // lexico entries within this times the rows' scale tie
+// (so invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings of the data).
+// Ties, and pivot entries that are noise, are decided at the rounding level of the computed
+// numbers (tie_level()): a few ulps per basic variable, or the measured backward error of the
+// basis inverse when that is larger, never above kTieTol, which itself only bounds the window
+// in which a tie is looked for. A fixed 1e-9 used as the tie criterion merged real
+// differences (DART's Lemke_12D contact LCP, q spanning 0.01 and 1e-10: ratios 1.8e-10 apart,
+// 1e5 times their rounding), and the "tie" broken on the B^{-1} columns alone was not the
+// lexicographic minimum: a basic variable went negative, the invariant broke and degenerate
+// pivots cycled (issue 24, item 7). A fixed pivot tolerance of 1e-11 likewise dropped real
+// pivot entries (a P-matrix with det 3 * 2^-40 ended on a false secondary ray).
+constexpr double kTieTol = 1e-9;     // window for near ties (times ratio + value terms)
+constexpr double kTieUlps = 64;      // rounding floor: kTieUlps * eps * (k + 1)
+constexpr double kTieGrowth = 4;     // times the inverse's measured backward error
 constexpr int kCheckEvery = 16;       // pivots between accuracy checks of the basis inverse
 constexpr double kRefactorTol = 1e-10;  // relative residual that triggers a refactorization
 
@@ -87,12 +97,27 @@ class LemkeRun {
   };
   // Lexicographic minimum of (value, B^{-1} row) / a over tied_ (>= 2 candidates).
   int lexmin_of_tied();
-  // The pivot entry a of `c` is above kPivotTol times the size of its terms (not noise).
-  bool admissible(const Candidate& c) const;
+  // Relative rounding level of the computed values, ratios and B^{-1} rows at this pivot
+  // (computed once per ratio test, on a near tie only): ties are differences below it.
+  double tie_level();
+  // Size of the terms of the value of basic `var` (the scale its rounding is relative to).
+  double value_terms(int var);
+  // Debug/test mode (LemkeOptions::check_invariant): every row of [value, B^{-1}] of a basic
+  // variable is lexicographically positive at the rounding level; else a message naming it.
+  std::string invariant_violation();
+  // The pivot entry a of `c` is above tie_level() times the size of its terms (not noise).
+  bool admissible(const Candidate& c);
   // Minimum-ratio test with the lexicographic tie-break for the current direction. `initial`:
   // the z0 pivot (basic variables grow; the most negative ratio leaves). -1: no blocking
   // variable (ray); -2: no finite ratio (numerical failure).
   int ratio_test(bool initial, double& step);
+  // Adds the rounding of the value updates of a pivot with step t to drift_ (O(n)).
+  void note_update(double t) {
+    const int k = basis_.k();
+    double x_max = basis_.w().lpNorm<Eigen::Infinity>();
+    if (k > 0) x_max = std::max(x_max, basis_.xz().head(k).lpNorm<Eigen::Infinity>());
+    drift_ += 2 * std::numeric_limits<double>::epsilon() * (std::abs(t) * rate_max_ + x_max);
+  }
   // Cycle guard: records the current basis; false when it was visited before.
   bool remember_basis(int entering, int leaving);
   // Candidate certificates at a secondary ray; true when one passes check_certificate.
@@ -103,7 +128,8 @@ class LemkeRun {
   // The updated inverse is as accurate as a fresh one could be (backward error at most
   // kRefactorTol, or within a factor 1e3 of the last freshly computed inverse's).
   bool inverse_accurate() {
-    return basis_.hinv_quality() <= std::max(kRefactorTol, 1e3 * fresh_quality_);
+    quality_ = basis_.hinv_quality();
+    return quality_ <= std::max(kRefactorTol, 1e3 * fresh_quality_);
   }
 
   const LcpProblem& problem_;
@@ -127,7 +153,11 @@ class LemkeRun {
   double qmax_ = 0;            // ||q||_inf
   double beta_ = 1;            // internal z0 = user z0 / beta_ (see run())
   int entering_ = -1;          // the variable entering at the current pivot
+  double tie_level_ = -1;      // tie_level() of the current ratio test (-1: not computed)
+  double drift_ = 0;           // rounding bound of the updated values since recomputed
+  double rate_max_ = 0;        // max |rate| of the current direction
   double fresh_quality_ = 0;  // hinv_quality() right after the last refactorization
+  double quality_ = 0;        // hinv_quality() at the last accuracy check (for tie_level())
   Stopwatch clock_;
 };
 
@@ -154,10 +184,10 @@ int LemkeRun::lexmin_of_tied() {
   // perturbed problem q + (eps, eps^2, ...) and never revisits a basis.
   // Column j of W (w_j basic) is a unit column: only the row of w_j has an entry, exactly
   // 1 / a > 0 (no rounding), so w_j alone is dropped, in O(1). A column of R holds computed
-  // entries: the candidates above the column's minimum by more than kLexTol times the rows'
-  // scales max_j |B^{-1}(v, j)| / a_v (the rounding level) are dropped. Work: O(1) per column
-  // of W, O(k) per candidate for the scales (computed at the first column of R), O(1) per
-  // candidate and column of R: at most O(n) per candidate, never O(n^2) per pivot.
+  // entries: the candidates above the column's minimum by more than tie_level() times the
+  // rows' scales max_j |B^{-1}(v, j)| / a_v (the rounding level) are dropped. Work: O(1) per
+  // column of W, O(k) per candidate for the scales (computed at the first column of R), O(1)
+  // per candidate and column of R: at most O(n) per candidate, never O(n^2) per pivot.
   for (size_t c = 0; c < tied_.size(); ++c) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
   auto drop = [&](size_t c) {
     tied_pos_[static_cast<size_t>(tied_[c].var)] = kNone;
@@ -168,6 +198,7 @@ int LemkeRun::lexmin_of_tied() {
     if (c < tied_.size()) tied_pos_[static_cast<size_t>(tied_[c].var)] = c;
   };
   tied_scale_.clear();
+  const double tie = tie_level();
   for (Eigen::Index j = 0; j < n_ && tied_.size() > 1; ++j) {
     if (basis_.rpos(j) < 0) {
       const size_t c = tied_pos_[static_cast<size_t>(n_ + 1 + j)];
@@ -189,7 +220,7 @@ int LemkeRun::lexmin_of_tied() {
     }
     for (size_t c = tied_.size(); c-- > 0;) {
       const double e = basis_.inverse_entry(tied_[c].var, j) / tied_[c].a;
-      if (e - lo > kLexTol * (tied_scale_[c] + lo_scale)) drop(c);
+      if (e - lo > tie * (tied_scale_[c] + lo_scale)) drop(c);
     }
   }
   // Rows equal to rounding level in every column (not expected: they are independent): the
@@ -202,40 +233,76 @@ int LemkeRun::lexmin_of_tied() {
   return var;
 }
 
-bool LemkeRun::admissible(const Candidate& c) const {
+bool LemkeRun::admissible(const Candidate& c) {
   // Cheap bound first: for a w row, |G(i, entering)| + rowmax_G(i) ||dxz||_1 bounds its terms.
-  if (c.var > n_ && c.a > kPivotTol * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
-                                                                            entering_)
-                                                                : 0.0) +
-                                       g_rowmax_[c.var - n_ - 1] * dxz_l1_))
+  const double level = tie_level();
+  if (c.var > n_ && c.a > level * (std::abs(entering_ <= n_ ? basis_.g(c.var - n_ - 1,
+                                                                        entering_)
+                                                            : 0.0) +
+                                   g_rowmax_[c.var - n_ - 1] * dxz_l1_))
     return true;
-  return c.a > kPivotTol * basis_.rate_terms(c.var, entering_, dxz_);
+  return c.a > level * basis_.rate_terms(c.var, entering_, dxz_);
+}
+
+double LemkeRun::tie_level() {
+  // Values and B^{-1} rows carry the rounding of the products that formed them (a few ulps
+  // per term, k + 1 terms), and of the inverse itself when it has drifted: its componentwise
+  // backward error as measured at the last accuracy check (every kCheckEvery pivots; the
+  // check refactorizes beyond kRefactorTol) times a margin.
+  if (tie_level_ < 0) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    tie_level_ = std::min(kTieTol, std::max(kTieUlps * eps * (basis_.k() + 1),
+                                            kTieGrowth * quality_));
+  }
+  return tie_level_;
+}
+
+double LemkeRun::value_terms(int var) {
+  if (var <= n_ || basis_.lexico_rows_enabled()) {
+    double row_max = 0, terms = 0;
+    basis_.inverse_row_scales(var, row_max, terms);
+    return terms;
+  }
+  // A basic w_i = q_i + G(i, Z) x_Z without the rows X: its own terms, O(k).
+  const Eigen::Index i = var - n_ - 1;
+  double terms = std::abs(problem_.q[i]);
+  for (int p = 0; p < basis_.k(); ++p)
+    terms += std::abs(basis_.g(i, basis_.zcols()[static_cast<size_t>(p)])) *
+             std::abs(basis_.xz()[p]);
+  return terms;
 }
 
 int LemkeRun::ratio_test(bool initial, double& step) {
   // Candidates: basic variables that move towards their bound 0 (the z0 pivot: every basic
   // variable grows, and the most negative value / rate leaves).
+  tie_level_ = -1;
   dxz_l1_ = basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<1>() : 0.0;
+  rate_max_ = std::max(dw_.lpNorm<Eigen::Infinity>(),
+                       basis_.k() > 0 ? dxz_.head(basis_.k()).lpNorm<Eigen::Infinity>() : 0.0);
+  const double sign = initial ? 1.0 : -1.0;
+  const int k = basis_.k();
   // Collected into the preallocated cands_ (no push_back in this hot loop).
   Candidate* const first = cands_.data();
   Candidate* last = first;
-  const double sign = initial ? 1.0 : -1.0;
-  const int k = basis_.k();
-  for (int p = 0; p < k; ++p) {
-    const double a = sign * dxz_[p], x = basis_.xz()[p];
-    if (a > 0)
-      *last++ = {basis_.zcols()[static_cast<size_t>(p)], a, (initial ? x : std::max(x, 0.0)) / a};
-  }
-  for (Eigen::Index i = 0; i < n_; ++i) {
-    const double a = sign * dw_[i], x = basis_.w()[i];
-    if (a > 0 && basis_.rpos(i) < 0)
-      *last++ = {static_cast<int>(n_ + 1 + i), a, (initial ? x : std::max(x, 0.0)) / a};
-  }
-  const Span<Candidate> cands{first, last};
+  auto collect = [&] {
+    last = first;
+    for (int p = 0; p < k; ++p) {
+      const double a = sign * dxz_[p], x = basis_.xz()[p];
+      if (a > 0)
+        *last++ = {basis_.zcols()[static_cast<size_t>(p)], a,
+                   (initial ? x : std::max(x, 0.0)) / a};
+    }
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      const double a = sign * dw_[i], x = basis_.w()[i];
+      if (a > 0 && basis_.rpos(i) < 0)
+        *last++ = {static_cast<int>(n_ + 1 + i), a, (initial ? x : std::max(x, 0.0)) / a};
+    }
+  };
+  collect();
   int leaving = -1;
-  // Fast path (no ties, the usual case): the smallest ratio is an admissible pivot and the
-  // second smallest lies beyond any tie tolerance (bounded from above without O(k) work for a
-  // w; exact for a z).
+  // Fast path (no near ties, the usual case): the smallest ratio is an admissible pivot and
+  // the second smallest lies beyond the near-tie window kTieTol (bounded from above without
+  // O(k) work for a w; exact for a z).
   if (last - first >= 1) {
     const Candidate* c1 = first;
     double theta2 = INFINITY;
@@ -261,7 +328,9 @@ int LemkeRun::ratio_test(bool initial, double& step) {
         leaving = c1->var;
     }
   }
+  const Span<Candidate> cands{first, last};
   std::vector<int> dropped;  // excluded_ marks to clear (rare: pivots that are noise)
+  bool refreshed = drift_ == 0;
   while (leaving < 0) {
     // The minimum ratio among the candidates not excluded.
     const Candidate* best = nullptr;
@@ -273,46 +342,58 @@ int LemkeRun::ratio_test(bool initial, double& step) {
       leaving = -2;
       break;
     }
-    // A pivot entry that is rounding noise (below kPivotTol times the size of its terms) is
+    // A pivot entry that is rounding noise (below tie_level() times the size of its terms) is
     // not a pivot: drop the candidate and look again.
     if (!admissible(*best)) {
       excluded_[static_cast<size_t>(best->var)] = 1;
       dropped.push_back(best->var);
       continue;
     }
-    // Ties: ratios within kTieTol of the minimum, relative to its size and to the size of
-    // the terms of its value (a degenerate zero is "0 up to rounding of those terms"). For a
-    // basic w_i (value q_i + G(i, Z) x_Z) the terms are first bounded cheaply by
-    // |q_i| + max_j |G(i, j)| ||x_Z||_1, and computed exactly only when some other ratio lies
-    // within that bound (without ties the test stays O(n), with no strided access to M).
-    double row_max = 0, terms = 0;
-    if (best->var <= n_ || basis_.lexico_rows_enabled()) {
-      basis_.inverse_row_scales(best->var, row_max, terms);
-    } else {
-      const Eigen::Index i = best->var - n_ - 1;
-      const double xz_l1 = k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0;
-      const double bound = std::abs(problem_.q[i]) + g_rowmax_[i] * xz_l1;
-      const double hi = best->theta + kTieTol * (std::abs(best->theta) + bound / best->a);
-      bool near = false;
-      for (const Candidate& c : cands)
-        near = near || (&c != best && !excluded_[static_cast<size_t>(c.var)] && c.theta <= hi);
-      if (near) {
-        terms = std::abs(problem_.q[i]);
-        for (int p = 0; p < k; ++p)
-          terms += std::abs(basis_.g(i, basis_.zcols()[static_cast<size_t>(p)])) *
-                   std::abs(basis_.xz()[p]);
-      }
-    }
-    const double limit = best->theta + kTieTol * (std::abs(best->theta) + terms / best->a);
+    // Ties: ratios that differ from the minimum by no more than their rounding, tie_level()
+    // times the size of the ratios and of the terms of both values (a degenerate zero is "0
+    // up to rounding of those terms"). Only candidates inside the near-tie window (kTieTol,
+    // the terms of a basic w bounded cheaply by |q_i| + max_j |G(i, j)| ||x_Z||_1) are looked
+    // at, so without near ties the test stays O(n), with no strided access to M.
+    const double xz_l1 = k > 0 ? basis_.xz().head(k).lpNorm<1>() : 0.0;
+    auto terms_bound = [&](const Candidate& c) {
+      if (c.var <= n_) return value_terms(c.var);
+      const Eigen::Index i = c.var - n_ - 1;
+      return std::abs(problem_.q[i]) + g_rowmax_[i] * xz_l1;
+    };
+    const double best_bound = terms_bound(*best);
+    const double window =
+        best->theta + kTieTol * (std::abs(best->theta) + best_bound / best->a);
+    double best_terms = -1;
+    bool ambiguous = false;
     tied_.clear();
     for (const Candidate& c : cands) {
-      if (excluded_[static_cast<size_t>(c.var)] || c.theta > limit) continue;
-      if (&c != best && !admissible(c)) {
-        excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
-        dropped.push_back(c.var);
-        continue;
+      if (excluded_[static_cast<size_t>(c.var)] || c.theta > window) continue;
+      if (&c != best) {
+        if (best_terms < 0) best_terms = value_terms(best->var);
+        // The updated values carry the rounding of the updates since they were last computed
+        // from the data (drift_): a decision within that of the limit is made again on fresh
+        // values (O(n k), only then: exact ties and clear gaps do not pay for it). The terms of
+        // c's value (O(k)) are needed only when c is not tied on the minimizer's terms alone.
+        const double tie = tie_level();
+        const double band = drift_ * (1 / c.a + 1 / best->a);
+        double limit = best->theta + tie * (std::abs(best->theta) + best_terms / best->a);
+        if (c.theta > limit - band) limit += tie * value_terms(c.var) / c.a;
+        ambiguous = ambiguous || std::abs(c.theta - limit) <= band;
+        if (c.theta > limit) continue;
+        if (!admissible(c)) {
+          excluded_[static_cast<size_t>(c.var)] = 1;  // noise, not a pivot
+          dropped.push_back(c.var);
+          continue;
+        }
       }
       tied_.push_back(c);
+    }
+    if (ambiguous && !refreshed) {
+      refreshed = true;
+      basis_.recompute_values();
+      drift_ = 0;
+      collect();  // the same candidates (the rates are unchanged), fresh ratios
+      continue;
     }
     // z0 among the tied leaves (the solution is reached), as in every Lemke variant.
     for (const Candidate& c : tied_)
@@ -334,6 +415,35 @@ int LemkeRun::ratio_test(bool initial, double& step) {
   const double x = value(leaving), r = rate(leaving);
   step = initial ? -x / r : std::max(0.0, x) / -r;
   return leaving;
+}
+
+std::string LemkeRun::invariant_violation() {
+  // Every basic variable v: its row (value_v, B^{-1}(v, 0..n-1)) is lexicographically positive
+  // [CPS 1992, Sec. 4.9; Murty 1988, Sec. 2.2]: the first entry beyond the rounding level
+  // (tie_level() times the value's terms, resp. the row's largest entry) is positive. O(n^2).
+  basis_.enable_lexico_rows();
+  tie_level_ = -1;
+  const double tie = tie_level();
+  std::vector<int> basic(basis_.zcols().begin(), basis_.zcols().begin() + basis_.k());
+  for (Eigen::Index i = 0; i < n_; ++i)
+    if (basis_.rpos(i) < 0) basic.push_back(static_cast<int>(n_ + 1 + i));
+  for (int v : basic) {
+    double row_max = 0, terms = 0;
+    basis_.inverse_row_scales(v, row_max, terms);
+    const double x = value(v);
+    int sign = x > tie * terms ? 1 : x < -tie * terms ? -1 : 0;
+    for (Eigen::Index j = 0; j < n_ && sign == 0; ++j) {
+      const double e = basis_.inverse_entry(v, j);
+      sign = e > tie * row_max ? 1 : e < -tie * row_max ? -1 : 0;
+    }
+    if (sign <= 0) {
+      std::ostringstream m;
+      m << "lexicographic invariant violated: the row of " << var_name(v, n_)
+        << " (value " << x << ") is not lexicographically positive";
+      return m.str();
+    }
+  }
+  return {};
 }
 
 bool LemkeRun::remember_basis(int entering, int leaving) {
@@ -409,9 +519,10 @@ bool LemkeRun::check_accuracy(int pivots) {
   if (!forced && pivots % kCheckEvery != 0) return true;
   if (forced || !inverse_accurate()) {
     if (!basis_.refactor()) return false;
-    fresh_quality_ = basis_.hinv_quality();
+    fresh_quality_ = quality_ = basis_.hinv_quality();
   }
   basis_.recompute_values();
+  drift_ = 0;
   return true;
 }
 
@@ -439,7 +550,7 @@ SolveResult LemkeRun::run() {
     zset.clear();
     basis_.reset(zset);
   }
-  fresh_quality_ = basis_.hinv_quality();
+  fresh_quality_ = quality_ = basis_.hinv_quality();
   // Is the starting basic solution already a solution? (q >= 0 for the cold start.)
   basis_.current_point(claim.z, z0);
   const bool start_feasible =
@@ -504,9 +615,19 @@ SolveResult LemkeRun::run() {
       return finish(std::move(claim));
     }
     basis_.pivot(z0var, leaving, step, dxz_, dw_);
+    note_update(step);
     ++pivots;
     remember_basis(z0var, leaving);
     record(pivots, "z0-enters", z0var, leaving, step * beta_);
+    if (o_.check_invariant) {
+      if (auto v = invariant_violation(); !v.empty()) {
+        claim.status = Status::kNumericalFailure;
+        add_message(claim, v + " after pivot " + std::to_string(pivots));
+        claim.iterations = pivots;
+        basis_.current_point(claim.z, z0);
+        return finish(std::move(claim));
+      }
+    }
     // The complement of the leaving variable enters next.
     entering = leaving < n_ ? leaving + static_cast<int>(n_) + 1 : leaving - static_cast<int>(n_) - 1;
   }
@@ -557,6 +678,7 @@ SolveResult LemkeRun::run() {
       break;
     }
     basis_.pivot(entering, leaving, step, dxz_, dw_);
+    note_update(step);
     ++pivots;
     if (!remember_basis(entering, leaving)) {
       record(pivots, "pivot", entering, leaving, step);
@@ -567,6 +689,14 @@ SolveResult LemkeRun::run() {
                                     "please report this problem)"
                                   : " (plain tie-breaking cycles; use the lexicographic rule)"));
       break;
+    }
+    if (o_.check_invariant && leaving != z0var) {
+      if (auto v = invariant_violation(); !v.empty()) {
+        record(pivots, "pivot", entering, leaving, step);
+        claim.status = Status::kNumericalFailure;
+        add_message(claim, v + " after pivot " + std::to_string(pivots));
+        break;
+      }
     }
     if (leaving == z0var) {
       record(pivots, "z0-leaves", entering, leaving, step);

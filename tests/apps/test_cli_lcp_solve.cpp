@@ -7,6 +7,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +55,34 @@ TEST_CASE("cli: solved problem, JSON output", "[cli]") {
   CHECK(j.at("residual").get<double>() <= 1e-10);
   CHECK_FALSE(j.contains("certificate"));
   CHECK(r.err.empty());
+}
+
+TEST_CASE("cli: DART's Lemke_12D contact LCP is solved, not cycle_detected (issue 24)",
+          "[cli][lemke]") {
+  // Reproducer of issue 24, item 7: `lcp solve FILE --solver lemke` ended in cycle_detected.
+  // Exact rational lexicographic Lemke (tests/data/lemke/exact_lemke.py) takes 8 pivots, the z0
+  // pivot included; Siconos' lexicolemke 7 without it. The z is checked from the data here.
+  const std::string file = std::string(CPKIT_TEST_DATA_DIR) + "/lemke/engine_dart_lemke_12d.json";
+  const auto r = run_cli("lcp solve '" + file + "' --solver lemke --json");
+  CAPTURE(r.out, r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("status") == "solved");
+  CHECK(j.at("iterations") == 8);
+  std::ifstream in(file);
+  const auto doc = nlohmann::json::parse(in);
+  REQUIRE(j.at("z").size() == 12);
+  for (size_t i = 0; i < 12; ++i) {
+    double w = doc["q"][i].get<double>(), scale = std::abs(w);
+    for (size_t k = 0; k < 12; ++k) {
+      w += doc["M"][i][k].get<double>() * j["z"][k].get<double>();
+      scale += std::abs(doc["M"][i][k].get<double>() * j["z"][k].get<double>());
+    }
+    const double z = j["z"][i].get<double>();
+    CHECK(z >= -1e-9 * scale);
+    CHECK(w >= -1e-9 * scale);
+    CHECK(std::min(z, w) <= 1e-9 * scale);
+  }
 }
 
 TEST_CASE("cli: infeasible problem exits 1 with a certificate", "[cli]") {

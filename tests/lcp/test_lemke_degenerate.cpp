@@ -77,6 +77,13 @@ TEST_CASE("Contact LCPs (q ~ 1e-10, M ~ 1): solved in a few pivots, checked here
     CHECK(is_solution_here(p.M, p.q, r.z));
     CHECK(r.z.maxCoeff() > 0);  // q has negative entries: z = 0 is no solution
     CHECK(r.iterations <= 12);  // Siconos: 5 to 12 pivots on these
+    // The lexicographic invariant holds at every pivot (debug mode; same path).
+    LemkeOptions checked = o;
+    checked.check_invariant = true;
+    const auto rc = solve_lemke(p, checked);
+    CAPTURE(rc.message);
+    CHECK(rc.status == Status::kSolved);
+    CHECK(rc.iterations == r.iterations);
     // No basis twice on the path (the cycle guard would have stopped; checked here too).
     REQUIRE(ref.contains(name));
     const auto& s = ref.at(name);

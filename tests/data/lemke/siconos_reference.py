@@ -1,8 +1,12 @@
 #!/usr/bin/python3
-"""Writes siconos_reference.json: Siconos numerics' lcp_lexicolemke on every contact_*.json here
+"""Writes siconos_reference.json: Siconos numerics' lcp_lexicolemke on every contact_*.json,
+engine_*.json and cycling_*.json here
 (pivot limit 50 (n + 1) + 1000, as cpkit's default), with its z and whether that z is a solution
 by a componentwise check done here: min(z_i, w_i) within 1e-9 of (|M||z| + |q|)_i.
-Used by tests/lcp/test_lemke_degenerate.cpp as the peer's answer (run again after adding files).
+Used by tests/lcp/test_lemke_degenerate.cpp and test_lemke_engines.cpp as the peer's answer (run
+again after adding files). Siconos' pivot count ("pivots", its SICONOS_IPARAM_ITER_DONE) does not
+count the initial z0 pivot that cpkit counts (engine_dart_lemke_12d: Siconos 7, cpkit 8, exact
+lexicographic Lemke 8 with that pivot).
 """
 import glob
 import json
@@ -13,7 +17,9 @@ import siconos.numerics as sn
 
 here = os.path.dirname(os.path.abspath(__file__))
 out = {}
-for path in sorted(glob.glob(os.path.join(here, "contact_*.json"))):
+paths = [p for pat in ("contact_*.json", "engine_*.json", "cycling_*.json")
+         for p in glob.glob(os.path.join(here, pat))]
+for path in sorted(paths):
     d = json.load(open(path))
     M, q = np.array(d["M"]), np.array(d["q"])
     n = len(q)

@@ -9,12 +9,14 @@
 /// Guarantees: terminates (lexicographic rule, finite number of bases) with a solution, a
 /// secondary ray, or at the pivot/time limit. Lemke solves every LCP with a P-matrix, and for a
 /// copositive-plus M a secondary ray proves infeasibility [CPS 1992, Thm 4.4.13].
-/// Lexicographic rule [CPS 1992, Sec. 4.9]: ties in the minimum ratio (within 1e-9 of the
-/// ratio and of the size of the terms of its value) are broken by the rows of the basis
-/// inverse divided by the pivot entries, column by column, entries compared relative to the
-/// rows' scales; the rows are independent, so no basis repeats. Pivot entries below 1e-11
-/// times the size of their own terms are noise. All tolerances are relative to the terms of
-/// the number tested: invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings.
+/// Lexicographic rule [CPS 1992, Sec. 4.9]: ties in the minimum ratio are broken by the rows
+/// of the basis inverse divided by the pivot entries, column by column; the rows are
+/// independent, so no basis repeats. Ties and noise are judged at the rounding level
+/// tau = max(64 eps (k + 1), 4 omega) (omega: the inverse's measured componentwise backward
+/// error; capped at 1e-9): ratios within tau of the ratio and of the size of the terms of the
+/// values, entries of B^{-1} within tau of the rows' scales, pivot entries below tau times
+/// the size of their own terms. All tolerances are relative to the terms of the number
+/// tested: invariant under q -> a q, (M, q) -> b (M, q) and row/column scalings.
 /// Cycle guard: a repeated basis (hash of the set of basic variables per pivot) ends the run
 /// with Status::kCycleDetected (a bug-class outcome) instead of cycling to the pivot limit.
 /// On a secondary ray cheap candidate certificates y (the z-part of the ray, minus the z0 row
@@ -65,6 +67,11 @@ struct LemkeOptions {
   /// variable id ("plain" Lemke, which can cycle): for tests and demonstrations of the cycle
   /// guard only.
   bool lexicographic = true;
+  /// Debug/test mode: after every pivot, check the invariant of the lexicographic rule (every
+  /// row of [values, B^{-1}] of a basic variable lexicographically positive, at the rounding
+  /// level; O(n^2) per pivot). A violation ends the run with Status::kNumericalFailure and a
+  /// message naming the row (the final pivot, z0 leaving, is not checked).
+  bool check_invariant = false;
   /// Empty when usable for a problem of size n; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
