@@ -102,8 +102,8 @@ std::string read_checkpoint_file(const std::string& path, uint64_t max_bytes,
   return bytes;
 }
 
-/// JSON of a checkpoint file, nested at most kMaxJsonDepth deep (deeper text is refused while
-/// parsed: the DOM's destructor and dump() recurse).
+}  // namespace
+
 nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what) {
   try {
     return nlohmann::json::parse(text, [&](int depth, nlohmann::json::parse_event_t,
@@ -117,6 +117,8 @@ nlohmann::json parse_checkpoint_json(const std::string& text, const std::string&
     throw InputError(what + " is not valid JSON: not one cpkit wrote");
   }
 }
+
+namespace {
 
 /// Largest file chunk k of a map can be: its arrays (at most 16 bytes a cell; the kinds write
 /// 2 to 6) and its summary (critical directions and values: bounded per row).

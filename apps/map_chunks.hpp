@@ -32,6 +32,10 @@ struct MapChunk {
 /// deeper than kMaxJsonDepth).
 std::string serialize_chunk(const MapChunk& c);
 MapChunk parse_chunk(const std::string& bytes);
+/// JSON of a checkpoint file (a manifest, a chunk's summary), nested at most kMaxJsonDepth
+/// deep: deeper or invalid text is an InputError naming `what` (the DOM's destructor and
+/// dump() recurse, so the depth is bounded while parsing).
+nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what);
 
 /// The cut of a map with `rows` rows of `columns` cells: about 64 chunks (one row each for
 /// small maps), at most about 2^20 cells a chunk.
