@@ -227,12 +227,44 @@ std::vector<char> open_checkpoint(const ChunkRun& run, ChunkRunStats& stats) {
       std::string t = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
       return t.size() > 200 ? t.substr(0, 200) + "..." : t;
     };
+    // The innermost field that differs ("input.from"), so that the message names it.
+    auto first_difference = [](const nlohmann::json& there, const nlohmann::json& now,
+                               std::string& path, const nlohmann::json*& a,
+                               const nlohmann::json*& b) {
+      a = &there;
+      b = &now;
+      while (a->is_object() && b->is_object()) {
+        const nlohmann::json *na = nullptr, *nb = nullptr;
+        std::string key;
+        for (const auto& [k, v] : b->items())
+          if (!a->contains(k) || a->at(k) != v) {
+            key = k;
+            na = a->contains(k) ? &a->at(k) : nullptr;
+            nb = &v;
+            break;
+          }
+        if (!nb) break;
+        if (!na) {
+          path += "." + key;
+          a = nullptr;
+          b = nb;
+          return;
+        }
+        path += "." + key;
+        a = na;
+        b = nb;
+      }
+    };
     for (const auto& [key, value] : run.manifest.items())
-      if (!old.contains(key) || old[key] != value)
+      if (!old.contains(key) || old[key] != value) {
+        std::string path = key;
+        const nlohmann::json *there = nullptr, *now = &value;
+        if (old.contains(key)) first_difference(old[key], value, path, there, now);
         throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
-                         "different map (" + key + " differs: " +
-                         (old.contains(key) ? shown(old[key]) : std::string("absent")) +
-                         " there, " + shown(value) + " now); remove it or run without --resume");
+                         "different map (" + path + " differs: " +
+                         (there ? shown(*there) : std::string("absent")) + " there, " +
+                         shown(*now) + " now); remove it or run without --resume");
+      }
     for (const auto& [key, value] : old.items())
       if (!run.manifest.contains(key))
         throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
