@@ -172,23 +172,29 @@ TEST_CASE("--resume refuses chunks written by another map on the same prefix (is
   CHECK(r.err.find("chunk_3.bin' was written by another map") != std::string::npos);
   CHECK(r.out.empty());
   CHECK_FALSE(fs::exists(p.string() + "_count.npy"));
-  // A checkpoint of the same options over another system file is another map (the input's
-  // data are part of the identity): a copy of the system with one coupling changed.
-  checkpoint_only(kMapB, p);
-  std::string text = file_bytes(kSystem);
-  const fs::path other = dir / "other.json";
+  // The system's data are part of the identity: a checkpoint made with a system file that is
+  // then edited (same path, same name, one compliance changed) is another map.
+  const fs::path copy = dir / "copy.json";
+  fs::copy_file(kSystem, copy, fs::copy_options::overwrite_existing);
+  std::string mapB_copy = kMapB;
+  mapB_copy.replace(mapB_copy.find(kSystem), kSystem.size(), copy.string());
+  checkpoint_only(mapB_copy, p);
+  std::string text = file_bytes(copy);
   const auto at = text.find("\"mu\"");
   REQUIRE(at != std::string::npos);
-  text.replace(at, 4, "\"C_T\": 0.001, \"mu\"");  // a different system, same shape
+  text.replace(at, 4, "\"C_T\": 0.001, \"mu\"");
   {
-    std::ofstream f(other);
+    std::ofstream f(copy, std::ios::trunc);
     f << text;
   }
-  std::string mapB_other = kMapB;
-  mapB_other.replace(mapB_other.find(kSystem), kSystem.size(), other.string());
-  r = run_cpkit(mapB_other + " --out '" + p.string() + "' --resume");
+  r = run_cpkit(mapB_copy + " --out '" + p.string() + "' --resume");
   CHECK(r.code == 2);
-  CHECK(r.err.find("different map") != std::string::npos);
+  CHECK(r.err.find("system_data_fnv1a differs") != std::string::npos);
+  // and another range of the same map names the field
+  checkpoint_only(kMapA, p);
+  r = run_cpkit(kMapB + " --out '" + p.string() + "' --resume");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("(input.from differs: 0.0 there, 0.5 now)") != std::string::npos);
 }
 
 TEST_CASE("a map's --out prefix is locked while it runs (issue 24, item 9)", "[cli][map][resume]") {
