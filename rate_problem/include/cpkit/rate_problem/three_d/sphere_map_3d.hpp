@@ -20,7 +20,6 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -88,12 +87,13 @@ struct Map3dOptions {
   /// The other points' load rates: false 0, true the system's dF (required then).
   bool others_from_file = false;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
-  /// Wall-clock budget of the whole map in seconds (from the start of the compute call; may be
-  /// infinite). Each cell's solve gets what is left of it; a cell it cuts short keeps what was
+  /// Wall-clock budget of the whole map in seconds (from the start of the compute call; default
+  /// 600, as `cpkit map --time-limit`; may be infinite, then a faceted N-point cell may run
+  /// without bound). Each cell's solve gets what is left of it; a cell it cuts short keeps what was
   /// found, not complete; once it is spent, the cells not computed are stored as count 0,
   /// types 0, not complete; both are counted in Map3d::timed_out_cells. A faceted N-point cell can otherwise take without bound
   /// (2^n_b separation cases).
-  double time_limit_s = std::numeric_limits<double>::infinity();
+  double time_limit_s = 600;
   /// Validates against the system: facets (required for N > 1), point, others_from_file,
   /// time_limit_s > 0.
   std::string validate(const ContactSystem3d& system) const;
@@ -107,10 +107,10 @@ struct Cell3d {
 };
 
 /// One cell: every solution for the load rate dF (3N) by the route of `options`; the faceted
-/// solve gets at most `time_limit_s` seconds (options.time_limit_s is the map's, not used here).
+/// solve gets at most `time_limit_s` seconds (default 60, as solve_system_rate_3d_faceted;
+/// options.time_limit_s is the map's, not used here).
 Cell3d evaluate_cell_3d(const ContactSystem3d& system, const Eigen::VectorXd& dF,
-                        const Map3dOptions& options,
-                        double time_limit_s = std::numeric_limits<double>::infinity());
+                        const Map3dOptions& options, double time_limit_s = 60);
 
 /// Progress: fraction of rows done, from the calling thread (about every 0.1 s).
 using Map3dProgress = std::function<void(double fraction)>;
