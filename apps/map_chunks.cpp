@@ -14,7 +14,14 @@
 #include <map>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/io.hpp"
 #include "mpi_session.hpp"
 
 namespace cpkit::cli {
@@ -22,7 +29,9 @@ namespace cpkit::cli {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr char kMagic[8] = {'c', 'p', 'k', 'c', 'h', 'n', 'k', '1'};
+// Version 2 adds the map identity (map_id) after the magic: a chunk names the map it belongs to.
+constexpr char kMagic[8] = {'c', 'p', 'k', 'c', 'h', 'n', 'k', '2'};
+constexpr std::size_t kHeaderBytes = 8 + 8 + 4 * 8;  // magic, map_id, index, rows, rank
 constexpr int kTagDone = 11;    // worker -> rank 0: a finished chunk (or "ready")
 constexpr int kTagAssign = 12;  // rank 0 -> worker: the next chunk index, -1 = stop
 
@@ -39,16 +48,106 @@ uint64_t get_u64(const std::string& s, std::size_t& at) {
   return v;
 }
 
+uint64_t fnv1a(const std::string& bytes) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
 std::string chunk_path(const std::string& folder, int k) {
   return (fs::path(folder) / ("chunk_" + std::to_string(k) + ".bin")).string();
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot read '" + path + "'");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
+/// The bytes of a checkpoint file (its first `head` bytes), which must have at most
+/// `max_bytes`. Only a regular file is read: a device (/dev/zero), a
+/// FIFO or a symbolic link put in a checkpoint folder is refused without reading or blocking
+/// (opened with O_NONBLOCK | O_NOFOLLOW, then checked with fstat).
+std::string read_checkpoint_file(const std::string& path, uint64_t max_bytes,
+                                 uint64_t head = UINT64_MAX) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0)
+    throw InputError("cannot read the checkpoint file '" + path + "': " + std::strerror(errno) +
+                     (errno == ELOOP ? " (a symbolic link: a checkpoint holds only the files "
+                                       "cpkit wrote)" : ""));
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } close_fd{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+    throw InputError("the checkpoint file '" + path + "' is not a regular file (a device, FIFO "
+                     "or folder): a checkpoint holds only the files cpkit wrote; remove it or "
+                     "run without --resume");
+  const uint64_t size = static_cast<uint64_t>(st.st_size);
+  if (size > max_bytes)
+    throw InputError("the checkpoint file '" + path + "' has " + std::to_string(size) +
+                     " bytes, more than the " + std::to_string(max_bytes) +
+                     " a file of this map can have: it is not one cpkit wrote; remove it or "
+                     "run without --resume");
+  const uint64_t want = std::min(size, head);
+  std::string bytes(static_cast<std::size_t>(want), '\0');
+  std::size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got != bytes.size())
+    throw InputError("the checkpoint file '" + path + "' changed while read (" +
+                     std::to_string(got) + " of " + std::to_string(want) + " bytes)");
+  return bytes;
+}
+
+}  // namespace
+
+nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what) {
+  try {
+    return nlohmann::json::parse(text, [&](int depth, nlohmann::json::parse_event_t,
+                                           nlohmann::json&) {
+      if (depth > kMaxJsonDepth)
+        throw InputError(what + " is nested deeper than " + std::to_string(kMaxJsonDepth) +
+                         " levels: not one cpkit wrote");
+      return true;
+    });
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(what + " is not valid JSON: not one cpkit wrote");
+  }
+}
+
+namespace {
+
+/// Largest file chunk k of a map can be: its arrays (at most 16 bytes a cell; the kinds write
+/// 2 to 6) and its summary (critical directions and values: bounded per row).
+uint64_t max_chunk_bytes(const ChunkPlan& p, int k) {
+  const uint64_t rows = static_cast<uint64_t>(p.end(k) - p.begin(k));
+  return (uint64_t{1} << 20) + rows * (uint64_t{1} << 16) +
+         rows * static_cast<uint64_t>(p.columns) * 16;
+}
+
+constexpr uint64_t kMaxManifestBytes = uint64_t{1} << 20;
+
+/// The chunk of file `path`, checked against the map: a regular file of bounded size, chunk k
+/// with the plan's rows, written for this map (map_id).
+MapChunk read_chunk(const ChunkRun& run, const std::string& path, int k) {
+  MapChunk c;
+  try {
+    c = parse_chunk(read_checkpoint_file(path, max_chunk_bytes(run.plan, k)));
+  } catch (const InputError& e) {
+    throw InputError("checkpoint chunk '" + path + "': " + e.what());
+  }
+  if (c.map_id != run.map_id)
+    throw InputError("checkpoint chunk '" + path + "' was written by another map (another "
+                     "run on the same --out with other input or options); remove the "
+                     "checkpoint folder or run without --resume");
+  if (c.index != k || c.row_begin != run.plan.begin(k) || c.row_end != run.plan.end(k))
+    throw InputError("checkpoint chunk '" + path + "' is corrupt (it holds chunk " +
+                     std::to_string(c.index) + ", rows " + std::to_string(c.row_begin) + ".." +
+                     std::to_string(c.row_end) + ")");
+  return c;
 }
 
 /// Written under a temporary name and renamed: a chunk file is complete or absent.
@@ -72,6 +171,7 @@ class Collector {
       : run_(run), in_checkpoint_(std::move(in_checkpoint)) {}
 
   void finished(MapChunk&& c) {
+    c.map_id = run_.map_id;
     if (!run_.checkpoint.empty()) write_file_atomic(chunk_path(run_.checkpoint, c.index), serialize_chunk(c));
     const int k = c.index;
     waiting_.emplace(k, std::move(c));
@@ -85,9 +185,7 @@ class Collector {
         run_.consume(it->second);
         waiting_.erase(it);
       } else if (in_checkpoint_[static_cast<std::size_t>(next_)]) {
-        MapChunk c = parse_chunk(read_file(chunk_path(run_.checkpoint, next_)));
-        if (c.index != next_) throw InputError("checkpoint chunk " + std::to_string(next_) + " is corrupt");
-        run_.consume(c);
+        run_.consume(read_chunk(run_, chunk_path(run_.checkpoint, next_), next_));
       } else {
         break;
       }
@@ -119,30 +217,87 @@ std::vector<char> open_checkpoint(const ChunkRun& run, ChunkRunStats& stats) {
     if (!fs::exists(manifest))
       throw InputError("--resume: no checkpoint in '" + dir.string() + "' (nothing to resume: run "
                        "without --resume)");
-    nlohmann::json old;
-    try {
-      old = nlohmann::json::parse(read_file(manifest.string()));
-    } catch (const nlohmann::json::exception&) {
+    const nlohmann::json old = parse_checkpoint_json(
+        read_checkpoint_file(manifest.string(), kMaxManifestBytes),
+        "--resume: '" + manifest.string() + "'");
+    if (!old.is_object())
       throw InputError("--resume: '" + manifest.string() + "' is not a checkpoint manifest");
-    }
-    for (const auto& [key, value] : run.manifest.items())
-      if (!old.contains(key) || old[key] != value)
-        throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
-                         "different map (" + key + " differs: " +
-                         (old.contains(key) ? old[key].dump() : std::string("absent")) + " there, " +
-                         value.dump() + " now); remove it or run without --resume");
-    for (int k = 0; k < run.plan.chunks; ++k)
-      if (fs::exists(chunk_path(run.checkpoint, k))) {
-        have[static_cast<std::size_t>(k)] = 1;
-        ++stats.resumed_chunks;
-        stats.resumed_cells += static_cast<int64_t>(run.plan.end(k) - run.plan.begin(k)) * run.plan.columns;
+    // What the checkpoint belongs to: version, inputs (the system's data hash), options, grid.
+    auto shown = [](const nlohmann::json& v) {
+      std::string t = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+      return t.size() > 200 ? t.substr(0, 200) + "..." : t;
+    };
+    // The innermost field that differs ("input.from"), so that the message names it.
+    auto first_difference = [](const nlohmann::json& there, const nlohmann::json& now,
+                               std::string& path, const nlohmann::json*& a,
+                               const nlohmann::json*& b) {
+      a = &there;
+      b = &now;
+      while (a->is_object() && b->is_object()) {
+        const nlohmann::json *na = nullptr, *nb = nullptr;
+        std::string key;
+        for (const auto& [k, v] : b->items())
+          if (!a->contains(k) || a->at(k) != v) {
+            key = k;
+            na = a->contains(k) ? &a->at(k) : nullptr;
+            nb = &v;
+            break;
+          }
+        if (!nb) break;
+        if (!na) {
+          path += "." + key;
+          a = nullptr;
+          b = nb;
+          return;
+        }
+        path += "." + key;
+        a = na;
+        b = nb;
       }
+    };
+    for (const auto& [key, value] : run.manifest.items())
+      if (!old.contains(key) || old[key] != value) {
+        std::string path = key;
+        const nlohmann::json *there = nullptr, *now = &value;
+        if (old.contains(key)) first_difference(old[key], value, path, there, now);
+        throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
+                         "different map (" + path + " differs: " +
+                         (there ? shown(*there) : std::string("absent")) + " there, " +
+                         shown(*now) + " now); remove it or run without --resume");
+      }
+    for (const auto& [key, value] : old.items())
+      if (!run.manifest.contains(key))
+        throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
+                         "different map (it has " + key + ", this map has none); remove it or "
+                         "run without --resume");
+    for (int k = 0; k < run.plan.chunks; ++k) {
+      const std::string path = chunk_path(run.checkpoint, k);
+      std::error_code sec;
+      if (fs::symlink_status(path, sec).type() == fs::file_type::not_found) continue;
+      // Every present chunk is checked before any work (the whole of it when consumed): a
+      // regular file of bounded size, of this map.
+      const std::string head = read_checkpoint_file(path, max_chunk_bytes(run.plan, k), kHeaderBytes);
+      if (head.size() < kHeaderBytes || std::memcmp(head.data(), kMagic, 8) != 0)
+        throw InputError("--resume: '" + path + "' is not a chunk of this cpkit version's "
+                         "checkpoints; remove the checkpoint folder or run without --resume");
+      std::size_t at = 8;
+      if (get_u64(head, at) != run.map_id)
+        throw InputError("--resume: '" + path + "' was written by another map (another run on "
+                         "the same --out with other input or options); remove the checkpoint "
+                         "folder '" + dir.string() + "' or run without --resume");
+      if (get_u64(head, at) != static_cast<uint64_t>(k))
+        throw InputError("--resume: '" + path + "' is corrupt (it holds another chunk)");
+      have[static_cast<std::size_t>(k)] = 1;
+      ++stats.resumed_chunks;
+      stats.resumed_cells += static_cast<int64_t>(run.plan.end(k) - run.plan.begin(k)) * run.plan.columns;
+    }
     return have;
   }
   fs::remove_all(dir, ec);
   fs::create_directories(dir, ec);
   if (ec) throw InputError("cannot create the checkpoint folder '" + dir.string() + "'");
-  write_file_atomic(manifest.string(), run.manifest.dump(1) + "\n");
+  write_file_atomic(manifest.string(),
+                    run.manifest.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   return have;
 }
 
@@ -156,6 +311,7 @@ std::vector<char> open_checkpoint(const ChunkRun& run, ChunkRunStats& stats) {
 
 std::string serialize_chunk(const MapChunk& c) {
   std::string s(kMagic, 8);
+  put_u64(s, c.map_id);
   put_u64(s, static_cast<uint64_t>(c.index));
   put_u64(s, static_cast<uint64_t>(c.row_begin));
   put_u64(s, static_cast<uint64_t>(c.row_end));
@@ -175,17 +331,14 @@ MapChunk parse_chunk(const std::string& b) {
   if (b.size() < 8 || std::memcmp(b.data(), kMagic, 8) != 0) throw InputError("not a cpkit map chunk");
   std::size_t at = 8;
   MapChunk c;
+  c.map_id = get_u64(b, at);
   c.index = static_cast<int>(get_u64(b, at));
   c.row_begin = static_cast<int>(get_u64(b, at));
   c.row_end = static_cast<int>(get_u64(b, at));
   c.rank = static_cast<int>(get_u64(b, at));
   const uint64_t jn = get_u64(b, at);
   if (jn > b.size() - at) throw InputError("truncated map chunk");
-  try {
-    c.summary = nlohmann::json::parse(b.substr(at, jn));
-  } catch (const nlohmann::json::exception&) {
-    throw InputError("corrupt map chunk summary");
-  }
+  c.summary = parse_checkpoint_json(b.substr(at, jn), "the map chunk's summary");
   at += jn;
   const uint64_t na = get_u64(b, at);
   if (na > 64) throw InputError("corrupt map chunk");
@@ -365,6 +518,7 @@ ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
     run.manifest = manifest;
     run.manifest["chunk_rows"] = plan.chunk_rows;
     run.manifest["chunks"] = plan.chunks;
+    run.map_id = fnv1a(run.manifest.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   }
   if (mpi::rank() == 0) run.progress = progress;
   return run_chunks(run);

@@ -21,15 +21,21 @@ namespace cpkit::cli {
 /// One computed chunk: rows [row_begin, row_end), its cell arrays (raw bytes, in the order the
 /// map kind defines) and the summary of its rows (the kind's JSON).
 struct MapChunk {
+  uint64_t map_id = 0;  ///< the map it belongs to (ChunkRun::map_id; set by rank 0 when stored)
   int index = -1, row_begin = 0, row_end = 0;
   int rank = 0;  ///< the process that computed it
   nlohmann::json summary;
   std::vector<std::string> arrays;
 };
 /// Bytes of a chunk (for MPI messages and checkpoint files) and back; parse_chunk throws
-/// InputError when the bytes are not a chunk (a truncated or foreign file).
+/// InputError when the bytes are not a chunk (a truncated or foreign file, a summary nested
+/// deeper than kMaxJsonDepth).
 std::string serialize_chunk(const MapChunk& c);
 MapChunk parse_chunk(const std::string& bytes);
+/// JSON of a checkpoint file (a manifest, a chunk's summary), nested at most kMaxJsonDepth
+/// deep: deeper or invalid text is an InputError naming `what` (the DOM's destructor and
+/// dump() recurse, so the depth is bounded while parsing).
+nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what);
 
 /// The cut of a map with `rows` rows of `columns` cells: about 64 chunks (one row each for
 /// small maps), at most about 2^20 cells a chunk.
@@ -47,6 +53,9 @@ struct ChunkRun {
   std::function<void(const MapChunk&)> consume;    ///< on rank 0, in chunk order
   std::string checkpoint;  ///< folder for finished chunks ("" for none)
   nlohmann::json manifest; ///< what the map is: a resumed run must have exactly the same
+  /// Hash of the manifest, written into every chunk: a chunk of another map (another run on
+  /// the same prefix) is refused on --resume.
+  uint64_t map_id = 0;
   bool resume = false;     ///< reuse the finished chunks of the checkpoint
   rate::MapProgress progress;
 };

@@ -558,7 +558,8 @@ int run_map(const MapArgs& a) {
     r.theta_range = a.given("--theta-from") || a.given("--theta-to");
     if (a.given("--theta-from")) r.theta_from = a.theta_from;
     if (a.given("--theta-to")) r.theta_to = a.theta_to;
-    if (!r.out.empty()) prepare_out_prefix(r.out);
+    std::unique_ptr<PrefixLock> lock;  // held until the map is written
+    if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
     return run_map_system(r);
   }
   const MapSetup s = build_setup(a);
@@ -598,7 +599,8 @@ int run_map(const MapArgs& a) {
   const bool csv = a.format == "csv";
   if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
     throw InputError("--time-limit must be a positive number of seconds");
-  if (!a.out.empty()) prepare_out_prefix(a.out);
+  std::unique_ptr<PrefixLock> lock;  // held until the map is written
+  if (!a.out.empty()) lock = claim_map_prefix(a.out, {});
 
   nlohmann::json j;
   j["kind"] = std::string(to_string(s.kind));

@@ -8,6 +8,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "data_files.hpp"
+#include "mpi_session.hpp"
 #include "run_program.hpp"
 
 namespace cpkit::cli {
@@ -170,6 +171,21 @@ void prepare_out_prefix(const std::string& prefix) {
     fs::create_directories(parent, ec);
     if (ec) throw InputError("cannot create the output folder '" + parent.string() + "'");
   }
+}
+
+std::unique_ptr<PrefixLock> claim_map_prefix(const std::string& prefix,
+                                             const std::vector<NamedPath>& inputs) {
+  if (fs::path(prefix).filename().empty())
+    throw InputError("--out needs a file prefix such as out/map (got '" + prefix + "')");
+  refuse_outputs_over_inputs("cpkit map", map_output_files(prefix), inputs);
+  for (const auto& i : inputs)
+    if (inside_folder(i.path, prefix + ".parts"))
+      throw InputError("cpkit map: the input '" + i.path + "' (" + i.what +
+                       ") lies in the checkpoint folder '" + prefix +
+                       ".parts' of --out " + prefix + ", which a map replaces; move it first");
+  prepare_out_prefix(prefix);
+  if (mpi::rank() != 0) return nullptr;
+  return std::make_unique<PrefixLock>(prefix);
 }
 
 }  // namespace cpkit::cli

@@ -15,6 +15,7 @@
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/npy_writer.hpp"
+#include "output_guard.hpp"
 
 namespace cpkit::cli {
 
@@ -64,5 +65,12 @@ class GridFiles {
 
 /// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.
 void prepare_out_prefix(const std::string& prefix);
+
+/// Everything a map does with --out PREFIX before it writes: refuses (InputError, exit 2) a
+/// PREFIX whose files or checkpoint folder PREFIX.parts would overwrite or remove an input,
+/// creates PREFIX's folder, and on rank 0 locks the prefix for the run (PREFIX.lock: a second
+/// run on the same prefix is refused). Returns the lock (null on other ranks).
+std::unique_ptr<PrefixLock> claim_map_prefix(const std::string& prefix,
+                                             const std::vector<NamedPath>& inputs);
 
 }  // namespace cpkit::cli

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -177,14 +178,38 @@ MapOptions request_options(const SystemMapRequest& r) {
   return o;
 }
 
-/// FNV-1a of the system file's bytes: a resumed map must read the same system.
-std::string file_fingerprint(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
+/// FNV-1a of the system's data (A, every point's parameters and state, criterion, dF,
+/// patterns) as read: a resumed map must read the same system. Taken from the parsed system,
+/// not by reading the file again (a --system <(...) pipe can be read once only).
+std::string system_fingerprint(const ContactSystem& sys) {
   uint64_t h = 1469598103934665603ull;
-  for (char c; f.get(c);) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
+  auto bytes = [&](const void* p, std::size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= c[i];
+      h *= 1099511628211ull;
+    }
+  };
+  auto real = [&](double x) { bytes(&x, sizeof x); };
+  auto vec = [&](const std::optional<Eigen::VectorXd>& v) {
+    const int64_t n = v ? v->size() : -1;
+    bytes(&n, sizeof n);
+    if (v) bytes(v->data(), sizeof(double) * static_cast<std::size_t>(v->size()));
+  };
+  const int64_t rows = sys.A.rows(), cols = sys.A.cols();
+  bytes(&rows, sizeof rows);
+  bytes(&cols, sizeof cols);
+  bytes(sys.A.data(), sizeof(double) * static_cast<std::size_t>(sys.A.size()));
+  for (const SystemPoint& p : sys.points) {
+    for (double x : {p.mu, p.C_T, p.k_a, p.P_s, p.state.P_N, p.P_T, p.P_N, p.g}) real(x);
+    const int ints[] = {static_cast<int>(p.state.label), p.state.sgn_PT, p.values_given ? 1 : 0};
+    bytes(ints, sizeof ints);
   }
+  const int crit = static_cast<int>(sys.criterion);
+  bytes(&crit, sizeof crit);
+  vec(sys.dF);
+  vec(sys.pattern1);
+  vec(sys.pattern2);
   std::ostringstream o;
   o << std::hex << h;
   return o.str();
@@ -245,12 +270,13 @@ std::vector<uint16_t> ids_of(const std::string& bytes) {
 }
 
 /// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing).
-ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const nlohmann::json& input,
-                              const ChunkPlan& plan, const std::function<MapChunk(int)>& compute,
+ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const ContactSystem& sys,
+                              const nlohmann::json& input, const ChunkPlan& plan,
+                              const std::function<MapChunk(int)>& compute,
                               const std::function<void(const MapChunk&)>& consume) {
   const nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind},
                                    {"input", input},
-                                   {"system_file_fnv1a", file_fingerprint(r.path)},
+                                   {"system_data_fnv1a", system_fingerprint(sys)},
                                    {"format", r.format}};
   return run_map_chunks(r.out, r.resume, manifest, plan, compute, consume, make_map_progress());
 }
@@ -259,6 +285,8 @@ ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const nlohmann::json& i
 int run_param_direction(const SystemMapRequest& r) {
   const Stopwatch clock;
   const ContactSystem sys = read_contact_system(r.path);
+  // Limits that depend on N and the states, before any work in proportion to N.
+  check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
   SystemMapAxis axis;
   axis.param = parse_system_map_parameter(r.param, N);
@@ -332,7 +360,7 @@ int run_param_direction(const SystemMapRequest& r) {
   };
   ChunkRunStats stats;
   try {
-    stats = run_grid_chunks(r, input, plan, compute, consume);
+    stats = run_grid_chunks(r, sys, input, plan, compute, consume);
     if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
     run.out.finish();
   } catch (...) {
@@ -383,6 +411,8 @@ int run_param_direction(const SystemMapRequest& r) {
 int run_param_param(const SystemMapRequest& r) {
   const Stopwatch clock;
   const ContactSystem sys = read_contact_system(r.path);
+  // Limits that depend on N and the states, before any work in proportion to N.
+  check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
   SystemMapAxis a1, a2;
   a1.param = parse_system_map_parameter(r.param, N);
@@ -465,7 +495,7 @@ int run_param_param(const SystemMapRequest& r) {
   };
   ChunkRunStats stats;
   try {
-    stats = run_grid_chunks(r, input, plan, compute, consume);
+    stats = run_grid_chunks(r, sys, input, plan, compute, consume);
     if (mpi::rank() != 0) return kExitOk;
     run.out.finish();
   } catch (...) {
@@ -524,6 +554,7 @@ int run_map_system(const SystemMapRequest& r) {
   const std::string& out = r.out;
   const bool json = r.json;
   const ContactSystem sys = read_contact_system(path);
+  check_system_map_lcp_size(sys, "the direction map");
   const int N = sys.n_points();
   MapOptions options;
   options.threads = r.threads;

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -31,7 +32,8 @@ namespace cpkit::cli {
 
 /// `cpkit rate --system FILE` (rate_system.cpp).
 int run_rate_system(const std::string& path, const std::vector<double>& dF,
-                    const std::string& method, int facets, bool json);
+                    const std::string& method, int facets, bool json,
+                    std::optional<double> time_limit);
 
 namespace {
 
@@ -45,6 +47,7 @@ struct RateArgs {
   bool json = false;
   std::string system;  ///< --system FILE: the N-point problem (rate_system.cpp)
   int facets = 0;      ///< --facets K: a 3-D system's faceted route (0: exact)
+  std::optional<double> time_limit;  ///< --time-limit S: the faceted 3-D solves' budget
   std::vector<CLI::Option*> one_point_required;  ///< required unless --system is given
 };
 
@@ -176,8 +179,12 @@ int run_rate(const RateArgs& a) {
       if (o->count() > 0 && o->get_name() != "--dF")
         throw InputError(o->get_name() + " is a one-point option; with --system the state and "
                          "parameters come from the system file");
-    return run_rate_system(a.system, a.dF, a.method, a.facets, a.json);
+    return run_rate_system(a.system, a.dF, a.method, a.facets, a.json, a.time_limit);
   }
+  if (a.time_limit)
+    throw InputError("--time-limit applies to the faceted 3-D rate problems (--system FILE "
+                     "with \"dim\": 3 and --facets K); the one-point 2-D problem is solved in "
+                     "bounded time");
   if (a.facets != 0)
     throw InputError("--facets applies to 3-D points (--system FILE with \"dim\": 3, "
                      "docs/contact_3d.md)");
@@ -268,6 +275,10 @@ void add_rate_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--facets", args->facets,
                   "3-D system (\"dim\": 3): solve the faceted problem with K facets (3..64) "
                   "instead of the exact elliptic one (docs/contact_3d.md)");
+  cmd->add_option_function<double>(
+      "--time-limit", [args](const double& v) { args->time_limit = v; },
+      "3-D system with --facets: wall-clock budget in seconds of the whole solve (default 60); "
+      "when it runs out the answer is not complete (exit 5)");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args, &ctx, cmd]() {
     // Options that would have no effect in the chosen state are errors, never silence.

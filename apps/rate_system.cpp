@@ -5,6 +5,7 @@
 // not conclusive (e.g. a 2-dimensional piece of solutions; message on stderr).
 #include <iostream>
 #include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,11 +57,17 @@ nlohmann::json types_json(const std::vector<rate::SolutionType>& t) {
 
 /// `cpkit rate --system FILE` with "dim": 3 (rate_system_3d.cpp).
 int run_rate_system_3d(const std::string& path, const std::vector<double>& dF,
-                       const std::string& method, int facets, bool json);
+                       const std::string& method, int facets, bool json,
+                       std::optional<double> time_limit);
 
 int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
-                    const std::string& method_name, int facets, bool json) {
-  if (rate3d::is_3d_system_file(path)) return run_rate_system_3d(path, dF_arg, method_name, facets, json);
+                    const std::string& method_name, int facets, bool json,
+                    std::optional<double> time_limit) {
+  if (rate3d::is_3d_system_file(path))
+    return run_rate_system_3d(path, dF_arg, method_name, facets, json, time_limit);
+  if (time_limit)
+    throw InputError("--time-limit applies to the faceted 3-D rate problems (\"dim\": 3 and "
+                     "--facets K); " + path + " is a 2-D system");
   if (facets != 0)
     throw InputError("--facets applies to 3-D points (\"dim\": 3 in the system file, "
                      "docs/contact_3d.md); " + path + " is a 2-D system");

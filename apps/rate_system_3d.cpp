@@ -5,6 +5,7 @@
 // 2 bad input, 5 not proved complete (message on stderr).
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -99,7 +100,16 @@ void slip_json(const Row& r, nlohmann::json& e) {
 }  // namespace
 
 int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_arg,
-                       const std::string& method, int facets, bool json) {
+                       const std::string& method, int facets, bool json,
+                       std::optional<double> time_limit_arg) {
+  if (time_limit_arg && !(*time_limit_arg > 0 && *time_limit_arg <= 1e9))
+    throw InputError("--time-limit must be a positive number of seconds (at most 1e9), got " +
+                     num_text(*time_limit_arg));
+  if (time_limit_arg && facets == 0)
+    throw InputError("--time-limit applies with --facets K (the faceted enumeration); the exact "
+                     "one-point route is solved in bounded time");
+  // One budget for the whole solve (every separation case of the N-point problem).
+  const double time_limit = time_limit_arg.value_or(60.0);
   const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(path);
   const int N = sys.n_points();
   if (method != "enumerate")
@@ -120,7 +130,7 @@ int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_ar
     throw InputError("no load rate: give --dF (3N numbers: T_X T_Y N per point) or \"dF\" in " + path);
   }
   std::vector<Row> rows;
-  bool complete = true;
+  bool complete = true, timed_out = false;
   std::string message;
   if (N == 1) {
     const rate3d::Point3dParameters p = sys.point_parameters(0);
@@ -129,15 +139,18 @@ int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_ar
       throw InputError(std::string("--facets applies to state b (grazing); state ") + st.state +
                        " has a linear rate problem, solved exactly without it");
     const rate3d::RateSolutionSet3d s =
-        facets != 0 ? rate3d::solve_rate_3d_faceted(p, dF, facets).set : rate3d::solve_rate_3d(p, st, dF);
+        facets != 0 ? rate3d::solve_rate_3d_faceted(p, dF, facets, time_limit).set
+                    : rate3d::solve_rate_3d(p, st, dF);
     complete = s.complete;
     message = s.message;
     for (const auto& x : s.solutions)
       rows.push_back({{x.type}, {x.at}, {x.direction}, x.ray, x.origin_included});
   } else {
-    const rate3d::SystemRateSet3d s = rate3d::solve_system_rate_3d_faceted(sys, dF, facets);
+    const rate3d::SystemRateSet3d s =
+        rate3d::solve_system_rate_3d_faceted(sys, dF, facets, time_limit);
     complete = s.complete;
     message = s.message;
+    timed_out = s.timed_out;
     for (const auto& x : s.solutions) rows.push_back({x.types, x.rates, {}, false, true});
   }
   const int count = static_cast<int>(rows.size());
@@ -155,6 +168,7 @@ int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_ar
     j["n_points"] = N;
     j["route"] = route;
     j["complete"] = complete;
+    if (timed_out) j["time_limit_reached"] = true;
     if (complete) {
       if (infinite) j["count"] = "inf"; else j["count"] = count;
     } else {

@@ -260,12 +260,20 @@ int run_3d(const SimArgs& a) {
 }
 
 int run(const SimArgs& a) {
+  // No output may be an input (issue 24, item 8): refused before anything is read or written.
+  refuse_outputs_over_inputs("cpkit simulate", simulation_output_files(a.csv, a.summary, a.plot),
+                             {{"--config", a.config}, {"--system", a.system},
+                              {"--load-csv", a.load_csv}});
   if (!a.system.empty() && rate3d::is_3d_system_file(a.system)) return run_3d(a);
   if (const std::string o = a.three_d.first_given(); !o.empty())
     throw InputError(o + " needs a \"dim\": 3 system file (--system FILE; docs/contact_3d.md)");
   Settings s;
   if (!a.config.empty()) read_simulate_config(a.config, s);
   apply_args(a, s);
+  // The config names its own system, load and outputs: the same check on what it gives.
+  refuse_outputs_over_inputs("cpkit simulate", simulation_output_files(s.csv, s.summary, s.plot),
+                             {{"--config", a.config}, {"system", s.system},
+                              {"load csv", s.load_csv}});
   if (!s.system.empty() && rate3d::is_3d_system_file(s.system))
     throw InputError("the config's system '" + s.system + "' has \"dim\": 3: simulate it from the "
                      "command line (cpkit simulate --system FILE --orbit aX aY ...)");

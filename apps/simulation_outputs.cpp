@@ -10,6 +10,18 @@
 
 namespace cpkit::cli {
 
+std::vector<NamedPath> simulation_output_files(const std::string& csv, const std::string& summary,
+                                               const std::string& plot) {
+  std::vector<NamedPath> out;
+  out.push_back({"--csv", csv.empty() && !plot.empty() ? plot + ".csv" : csv});
+  out.push_back({"--summary", summary.empty() && !plot.empty() ? plot + ".json" : summary});
+  if (!plot.empty())
+    for (const char* fig : {"_loop", "_wear", "_state", "_orbit"})
+      for (const char* ext : {".png", ".svg"})
+        out.push_back({"--plot " + plot + ": PLOT" + fig + ext, plot + fig + ext});
+  return out;
+}
+
 std::ofstream open_output(const std::string& path) {
   const auto dir = std::filesystem::path(path).parent_path();
   std::error_code ec;

@@ -4,7 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "output_guard.hpp"
+
 namespace cpkit::cli {
+
+/// Every file a simulation writes: the series `csv` (default PLOT.csv with --plot), the
+/// `summary` (default PLOT.json) and the figures PLOT<suffix>.png/.svg of every plotting script.
+std::vector<NamedPath> simulation_output_files(const std::string& csv, const std::string& summary,
+                                               const std::string& plot);
 
 /// Opens an output file for writing, creating its folder first (configs name paths such as
 /// out/fretting.csv). Throws InputError naming the path when it cannot be written.

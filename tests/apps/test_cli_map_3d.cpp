@@ -5,6 +5,7 @@
 // docs' promises about files and JSON fields. Bad input: exit 2 with the problem named.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -268,4 +269,52 @@ TEST_CASE("cpkit map --system (dim 3): bad input exits 2 naming the problem", "[
     CHECK(r.err.find(c.message) != std::string::npos);
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("cpkit map (dim 3): --time-limit is one deadline for the whole map (issue 24, "
+          "items 11 and 12)", "[cli][map][map3d]") {
+  const std::string sys =
+      std::string(CPKIT_SOURCE_DIR) + "/tests/data/systems/eight_grazing_points_3d.json";
+  // The issue's reproducer: one cell of eight grazing points, 4 facets, --time-limit 1 ran
+  // 600 s. Now about 1 s, the cell flagged: complete false, exit 5.
+  auto t0 = std::chrono::steady_clock::now();
+  CliRun r = run_cpkit("map --system '" + sys +
+                       "' --kind sphere --facets 4 --n 1 --n2 1 --time-limit 1 --json");
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(r.err);
+  CHECK(r.code == 5);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == false);
+  CHECK(j["time_limit_reached"] == true);
+  CHECK(j["timed_out_cells"] == 1);
+  CHECK(j["incomplete_cells"] == 1);
+  CHECK(r.err.find("time limit reached") != std::string::npos);
+  CHECK(seconds < 15);  // the bound allows a slow (sanitizer) build
+  // A larger map whose timed sample cannot finish within the limit is refused up front.
+  t0 = std::chrono::steady_clock::now();
+  r = run_cpkit("map --system '" + sys + "' --kind sphere --facets 4 --n 5 --n2 9 --time-limit 1");
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(r.code == 2);
+  CHECK(r.err.find("the time limit was reached") != std::string::npos);
+  CHECK(r.out.empty());
+  CHECK(seconds < 15);
+  // Limits that depend on N and the states are checked right after the file is read: 11
+  // grazing points (at most 10), and 8 grazing points x 9 facets = 72 > 64.
+  std::ostringstream big;
+  big << "{\"dim\": 3, \"A\": [";
+  for (int i = 0; i < 33; ++i) {
+    big << (i ? ", " : "") << "[";
+    for (int k = 0; k < 33; ++k) big << (k ? ", " : "") << (i == k ? 1 : 0);
+    big << "]";
+  }
+  big << "], \"points\": [";
+  for (int i = 0; i < 11; ++i) big << (i ? ", " : "") << "{\"state\": \"b\", \"mu\": 1}";
+  big << "]}";
+  const fs::path eleven = write("eleven_grazing.json", big.str());
+  r = run_cpkit("map --system '" + eleven.string() + "' --kind sphere --facets 4 --n 2 --n2 2");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("11 grazing points") != std::string::npos);
+  r = run_cpkit("map --system '" + sys + "' --kind sphere --facets 9 --n 2 --n2 2");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("n_d + K n_b = 72") != std::string::npos);
 }

@@ -1,7 +1,9 @@
 // `cpkit map --system FILE`: the direction map against the one-point map (an uncoupled stick
 // point does not change the other point's map), the grid maps (npy = CSV through numpy, N = 1
-// param-param = the one-point map, pictures, refusals), the JSON layout, bad input.
+// param-param = the one-point map, pictures, refusals), the JSON layout, bad input; limits
+// that depend on N checked right after the file is read (issue 24, item 12).
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 #include <cstdlib>
 #include <filesystem>
@@ -327,5 +329,45 @@ TEST_CASE("cpkit map --system grid maps: pictures, refusals, no partial files", 
     CHECK(e.code == 2);
     CHECK(!e.err.empty());
     CHECK(e.out.empty());
+  }
+}
+
+TEST_CASE("cpkit map --system: a system too large for a map is refused right after it is read "
+          "(issue 24, item 12)", "[cli][map][system]") {
+  // The issue's 1000 grazing points (a rate LCP of size 3000 > 12) were refused only after 36 s
+  // and 1.27 GB: the N^3 precomputation came first. Here 400 points (LCP size 1200; a few
+  // seconds before the fix): the refusal must cost about what reading the file costs (measured
+  // by a command that reads it and stops at once: a --dF of the wrong size), whatever the
+  // build's speed.
+  const int n = 400;
+  std::string text = "{\"A\": [";
+  text.reserve(static_cast<std::size_t>(4 * n) * static_cast<std::size_t>(4 * n) / 2 + 64 * n);
+  for (int i = 0; i < 2 * n; ++i) {
+    text += i ? ",[" : "[";
+    for (int k = 0; k < 2 * n; ++k) text += k ? (i == k ? ",2" : ",0") : (i == k ? "2" : "0");
+    text += "]";
+  }
+  text += "], \"points\": [";
+  for (int i = 0; i < n; ++i) text += i ? ",{\"state\": \"b\", \"mu\": 1}" : "{\"state\": \"b\", \"mu\": 1}";
+  text += "]}";
+  const std::string sys = write_system("many_points.json", text);
+  auto timed = [](const std::string& args, cpkit::test::CliRun& r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    r = cpkit::test::run_cpkit(args);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  cpkit::test::CliRun r;
+  const double read = timed("rate --system " + sys + " --dF 1", r);
+  REQUIRE(r.code == 2);
+  for (const std::string& kind :
+       {std::string("--kind direction"),
+        std::string("--kind param-direction --param mu --from 1 --to 2 --n 2 --theta-n 4"),
+        std::string("--kind param-param --param mu --from 1 --to 2 --n 2 --param2 C_T --from2 0 "
+                    "--to2 1 --n2 2")}) {
+    CAPTURE(kind);
+    const double map = timed("map --system " + sys + " " + kind, r);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("the rate LCP has size 1200") != std::string::npos);
+    CHECK(map < 3 * read + 1);
   }
 }

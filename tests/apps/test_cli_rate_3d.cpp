@@ -4,6 +4,7 @@
 // an LCP by enumeration) for the count of an elliptic point. Bad input: exit 2, a message.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -151,4 +152,42 @@ TEST_CASE("cpkit rate --system (dim 3): bad input and what is not built yet are 
   const CliRun one = run_cpkit("rate --state b --a11 1 --a12 0 --a22 1 --mu 1 --dF 1 1 --facets 8");
   CHECK(one.code == 2);
   CHECK(one.err.find("--facets") != std::string::npos);
+}
+
+TEST_CASE("cpkit rate --system (dim 3) --facets: one time limit for the whole solve "
+          "(issue 24, item 11)", "[cli][rate3d]") {
+  // Eight grazing points: 2^8 separation cases; `rate --facets 4` used to never end. The
+  // issue's stated answer on expiry: an honest "time limit", complete: false, exit 5.
+  const std::string sys =
+      std::string(CPKIT_SOURCE_DIR) + "/tests/data/systems/eight_grazing_points_3d.json";
+  const auto t0 = std::chrono::steady_clock::now();
+  CliRun r = run_cpkit("rate --system '" + sys + "' --facets 4 --time-limit 1 --json");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(r.err);
+  CHECK(r.code == 5);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == false);
+  CHECK(j["time_limit_reached"] == true);
+  CHECK(j["message"].get<std::string>().find("time limit of 1 s reached") != std::string::npos);
+  CHECK_FALSE(j.contains("count"));  // what was found is not a count
+  CHECK(seconds < 15);               // about 1 s; the bound allows a slow (sanitizer) build
+  // the option's values and where it applies
+  for (const char* bad : {"0", "-1", "nan", "1e10"}) {
+    r = run_cpkit("rate --system '" + sys + "' --facets 4 --time-limit " + bad);
+    CHECK(r.code == 2);
+  }
+  r = run_cpkit("rate --system '" + std::string(CPKIT_SOURCE_DIR) +
+                "/docs/examples/elliptic_point_3d.json' --time-limit 5");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("--time-limit applies with --facets") != std::string::npos);
+  r = run_cpkit("rate --system '" + std::string(CPKIT_SOURCE_DIR) +
+                "/docs/examples/two_point_system.json' --time-limit 5");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("2-D system") != std::string::npos);
+  // a problem that ends within the limit is unchanged: complete
+  r = run_cpkit("rate --system '" + std::string(CPKIT_SOURCE_DIR) +
+                "/docs/examples/two_point_system_3d.json' --facets 8 --time-limit 30 --json");
+  CHECK(r.code == 0);
+  CHECK(nlohmann::json::parse(r.out)["complete"] == true);
 }

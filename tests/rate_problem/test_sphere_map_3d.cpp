@@ -11,9 +11,12 @@
 // - alpha_X = alpha_Y = a is the isotropic law with mu a (the friction set |p_T| <= a mu P_N);
 // - a block-diagonal two-point system (the second point sticking) against the one-point map;
 // - the faceted route with k = 64 against the exact one at generic cells;
-// - 1 and 2 threads give identical arrays.
+// - 1 and 2 threads give identical arrays;
+// - the time limit (issue 24, item 11): a map of eight grazing points used to run for 600 s
+//   past --time-limit 1; its cells are now flagged not complete once the budget is spent.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -398,4 +401,44 @@ TEST_CASE("3-D maps: bad input is refused", "[rate3d][map3d]") {
   CHECK_THROWS_WITH(compute_param_direction_map_3d(d, Map3dAxis{parse_map_3d_parameter("mu", 1), 1, 2, 3},
                                                    10, 0, 2 * kPi, 0),
                     Catch::Contains("mu = 1"));
+}
+
+TEST_CASE("3-D maps: one time limit for the whole map (issue 24, item 11)", "[rate3d][map]") {
+  // Eight grazing points in a chain, 4 facets: one cell's solve (2^8 separation cases) runs
+  // far longer than the budget.
+  const int n = 8;
+  ContactSystem3d s;
+  s.A = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i) {
+    s.A.block<3, 3>(3 * i, 3 * i) << 1.0, 0.0, 0.3, 0.0, 1.0, 0.2, 0.3, 0.2, 1.5;
+    if (i + 1 < n) {
+      s.A(3 * i, 3 * i + 3) = s.A(3 * i + 3, 3 * i) = 0.1;
+      s.A(3 * i + 1, 3 * i + 4) = s.A(3 * i + 4, 3 * i + 1) = 0.1;
+      s.A(3 * i + 2, 3 * i + 5) = s.A(3 * i + 5, 3 * i + 2) = 0.2;
+      s.A(3 * i, 3 * i + 5) = s.A(3 * i + 5, 3 * i) = 0.05;
+      s.A(3 * i + 2, 3 * i + 3) = s.A(3 * i + 3, 3 * i + 2) = 0.05;
+    }
+    SystemPoint3d p;
+    p.mu = 3;
+    p.C_T = 0.25;
+    p.state.state = 'b';
+    s.points.push_back(p);
+  }
+  SphereGrid g;
+  g.n_beta = 1;
+  g.n_gamma = 3;
+  Map3dOptions o;
+  o.facets = 4;
+  o.threads = 1;
+  o.time_limit_s = 0.5;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Map3d m = compute_sphere_map_3d(s, g, o);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(m.timed_out_cells == 3);  // the first cut short, the others not computed
+  CHECK(m.incomplete_cells == 3);
+  for (int j = 0; j < 3; ++j) CHECK_FALSE(m.complete_at(0, j));
+  CHECK(seconds < 10);  // about 0.5 s; the bound allows a slow (sanitizer) build
+  o.time_limit_s = 0;
+  CHECK_THROWS_AS(compute_sphere_map_3d(s, g, o), InputError);
 }

@@ -1,6 +1,7 @@
 // The N-point direction map against independent answers: N = 1 against the one-point direction
 // map, dense sampling of the rate problem against the sectors, block-diagonal A against the
-// product of one-point counts, bad input.
+// product of one-point counts, bad input; the LCP size counted from the states before any
+// other work (issue 24, item 12).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 
@@ -209,6 +211,39 @@ TEST_CASE("system direction map: bad input", "[rate][maps][system]") {
   big.points.assign(6, p);
   big.A = Eigen::MatrixXd::Identity(12, 12);
   CHECK_THROWS_WITH(compute_system_direction_map(big), Catch::Contains("at most"));
+}
+
+TEST_CASE("system maps: the LCP size is counted from the states, before any other work "
+          "(issue 24, item 12)", "[rate][maps][system]") {
+  // 3 per point in state b, 1 per point in state d, 0 in a and c (counted by hand).
+  ContactSystem S;
+  for (StateLabel l : {StateLabel::kA, StateLabel::kB, StateLabel::kC, StateLabel::kD,
+                       StateLabel::kB, StateLabel::kD}) {
+    SystemPoint p;
+    p.state.label = l;
+    S.points.push_back(p);
+  }
+  CHECK(system_map_lcp_size(S) == 3 + 1 + 3 + 1);
+  CHECK_NOTHROW(check_system_map_lcp_size(S, "a map"));
+  // 1000 points in state b: refused by the count alone. A is left empty (not 2000 x 2000): the
+  // refusal must come before validate() (an O(N^3) Cholesky) and the precomputation, which
+  // would also refuse this system for its size, so their message would show up instead.
+  ContactSystem big;
+  SystemPoint b;
+  b.state.label = StateLabel::kB;
+  big.points.assign(1000, b);
+  CHECK(system_map_lcp_size(big) == 3000);
+  CHECK_THROWS_WITH(check_system_map_lcp_size(big, "a map"), Catch::Contains("has size 3000"));
+  CHECK_THROWS_WITH(compute_system_direction_map(big), Catch::Contains("has size 3000"));
+  SystemMapAxis axis;
+  axis.param = parse_system_map_parameter("mu", 1000);
+  axis.from = 1;
+  axis.to = 2;
+  axis.n = 2;
+  CHECK_THROWS_WITH(compute_system_param_direction_map(big, axis, 4),
+                    Catch::Contains("has size 3000"));
+  CHECK_THROWS_WITH(estimate_system_param_direction_map(big, axis, 4, MapOptions{}),
+                    Catch::Contains("has size 3000"));
 }
 
 TEST_CASE("system rate problem on critical directions: degenerate LCPs keep their solutions",

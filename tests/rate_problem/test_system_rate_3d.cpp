@@ -3,12 +3,18 @@
 // - block-diagonal A: the product of the one-point sets;
 // - isotropic points whose Y directions are decoupled and unloaded, with an even number of
 //   facets (vertices at +-X, where the polygon holds the 2-D law exactly): the 2-D N-point
-//   solver (rate::solve_rate_problem, the enumeration of the 2-D rate LCP).
+//   solver (rate::solve_rate_problem, the enumeration of the 2-D rate LCP);
+// - the time limit (issue 24, item 11): eight grazing points used to run without bound; one
+//   deadline for the whole solve ends it with complete = false (the issue's stated answer).
 #include <catch2/catch.hpp>
 
 #include <Eigen/Cholesky>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
@@ -184,4 +190,49 @@ TEST_CASE("N-point 3-D: bad input", "[rate3d][system]") {
   s.points.assign(3, SystemPoint3d{});
   s.A = Eigen::MatrixXd::Identity(9, 9);
   CHECK_THROWS_AS(solve_system_rate_3d_faceted(s, Eigen::VectorXd::Ones(9), 32), cpkit::InputError);  // 96 > 64
+}
+
+namespace {
+/// Eight grazing points in a chain (issue 24, item 11): 2^8 separation cases, the first an LCP
+/// of size 8 K; `cpkit rate --facets 4` on such a system never ended. A is diagonally dominant
+/// (SPD by Gershgorin).
+ContactSystem3d eight_grazing_points() {
+  const int n = 8;
+  ContactSystem3d s;
+  s.name = "eight grazing points";
+  s.A = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int i = 0; i < n; ++i) {
+    s.A.block<3, 3>(3 * i, 3 * i) << 1.0, 0.0, 0.3, 0.0, 1.0, 0.2, 0.3, 0.2, 1.5;
+    if (i + 1 < n)
+      for (const auto& [r, c, v] : {std::tuple{0, 0, 0.1}, std::tuple{2, 2, 0.2},
+                                    std::tuple{0, 2, 0.05}, std::tuple{2, 0, 0.05},
+                                    std::tuple{1, 1, 0.1}})
+        s.A(3 * i + r, 3 * (i + 1) + c) = s.A(3 * (i + 1) + c, 3 * i + r) = v;
+    SystemPoint3d p;
+    p.mu = 3;
+    p.C_T = 0.25;
+    p.state.state = 'b';
+    s.points.push_back(p);
+  }
+  Eigen::VectorXd dF(3 * n);
+  for (int i = 0; i < n; ++i) dF.segment<3>(3 * i) << 1.0, 0.5, i % 2 ? -0.2 : 0.3;
+  s.dF = dF;
+  return s;
+}
+}  // namespace
+
+TEST_CASE("N-point 3-D: one time limit for the whole solve (issue 24, item 11)",
+          "[rate3d][system]") {
+  const ContactSystem3d s = eight_grazing_points();
+  const auto t0 = std::chrono::steady_clock::now();
+  const SystemRateSet3d got = solve_system_rate_3d_faceted(s, *s.dF, 4, 0.5);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(got.timed_out);
+  CHECK_FALSE(got.complete);
+  CHECK(got.message.find("time limit of 0.5 s reached") != std::string::npos);
+  CHECK(seconds < 10);  // about 0.5 s; the bound allows a slow (sanitizer) build
+  // a limit must be positive (NaN too is refused); an infinite one is no limit
+  CHECK_THROWS_AS(solve_system_rate_3d_faceted(s, *s.dF, 4, 0.0), cpkit::InputError);
+  CHECK_THROWS_AS(solve_system_rate_3d_faceted(s, *s.dF, 4, std::nan("")), cpkit::InputError);
 }

@@ -146,8 +146,25 @@ void system_map_patterns(const ContactSystem& system, Eigen::VectorXd& e1, Eigen
                      "sin(theta) e2 needs two independent load patterns");
 }
 
+int system_map_lcp_size(const ContactSystem& system) noexcept {
+  int m = 0;
+  for (const SystemPoint& p : system.points)
+    m += p.state.label == StateLabel::kB ? 3 : p.state.label == StateLabel::kD ? 1 : 0;
+  return m;
+}
+
+void check_system_map_lcp_size(const ContactSystem& system, const std::string& what) {
+  const int m = system_map_lcp_size(system);
+  if (m > kMaxSystemMapLcp)
+    throw InputError("system: the rate LCP has size " + std::to_string(m) +
+                     " (3 per point in state b, 1 per point in state d); " + what +
+                     " scans all its 2^m bases and accepts at most " +
+                     std::to_string(kMaxSystemMapLcp));
+}
+
 SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
                                                 const MapOptions& options) {
+  check_system_map_lcp_size(system, "the direction map");
   throw_if_invalid(system.validate(), "system");
   throw_if_invalid(options.validate(), "map options");
   if (options.method != RateMethod::kEnumerate)
@@ -158,10 +175,6 @@ SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
   E.col(0) = map.e1;
   E.col(1) = map.e2;
   const SystemRatePrecomputed pre = precompute_system_rate(system);
-  if (pre.m > kMaxSystemMapLcp)
-    throw InputError("system: the rate LCP has size " + std::to_string(pre.m) +
-                     " (3 per point in state b, 1 per point in state d); the direction map scans "
-                     "all its 2^m bases and accepts at most " + std::to_string(kMaxSystemMapLcp));
 
   auto load = [&](double t) -> Eigen::VectorXd { return std::cos(t) * map.e1 + std::sin(t) * map.e2; };
 

@@ -190,16 +190,12 @@ void validate_axis(const SystemMapAxis& a) {
 
 /// Size of the rate LCP (the same in every row and cell: parameters do not change states).
 int checked_lcp_size(const ContactSystem& system) {
-  const int m = precompute_system_rate(system).m;
-  if (m > kMaxSystemMapLcp)
-    throw InputError("system: the rate LCP has size " + std::to_string(m) +
-                     " (3 per point in state b, 1 per point in state d); a map enumerates the "
-                     "2^m bases of its cells and accepts at most " +
-                     std::to_string(kMaxSystemMapLcp));
-  return m;
+  check_system_map_lcp_size(system, "a map of its cells");
+  return system_map_lcp_size(system);
 }
 
 void check_common(const ContactSystem& system, const MapOptions& options) {
+  check_system_map_lcp_size(system, "a map of its cells");  // O(N): before validate's O(N^3)
   throw_if_invalid(system.validate(), "system");
   throw_if_invalid(options.validate(), "map options");
   if (options.method != RateMethod::kEnumerate)

@@ -47,15 +47,20 @@ void fill_map(Map3d& m, const Map3dOptions& options, const Map3dProgress& progre
   m.count.assign(n, 0);
   m.types.assign(n, 0);
   m.complete.assign(n, 1);
+  std::vector<uint8_t> timed_out(n, 0);
   m.threads = rate::resolve_threads(options.threads, m.rows);
+  // One budget for the whole map: a cell gets what is left; none is left: not computed.
+  const double limit = options.time_limit_s;
   rate::run_items(
       0, m.rows, m.threads,
       [&](int i) {
-        row_cells(i, [&](int j, const Cell3d& c) {
+        row_cells(i, [&](int) { return limit - clock.seconds(); },
+                  [&](int j, const Cell3d& c) {
           const std::size_t k = static_cast<std::size_t>(i) * m.cols + static_cast<std::size_t>(j);
           m.count[k] = c.count;
           m.types[k] = c.types;
           m.complete[k] = c.complete ? 1 : 0;
+          timed_out[k] = c.timed_out ? 1 : 0;
         });
       },
       [&](int done) {
@@ -63,11 +68,13 @@ void fill_map(Map3d& m, const Map3dOptions& options, const Map3dProgress& progre
       });
   std::map<int, int64_t> counts;
   m.incomplete_cells = 0;
+  m.timed_out_cells = 0;
   m.type_cells.fill(0);
   for (std::size_t k = 0; k < n; ++k) {
     ++counts[m.count[k]];
     ++m.type_cells[m.types[k] & 15u];
     m.incomplete_cells += m.complete[k] == 0;
+    m.timed_out_cells += timed_out[k];
   }
   m.count_cells.assign(counts.begin(), counts.end());
   m.seconds = clock.seconds();
@@ -208,12 +215,18 @@ std::string Map3dOptions::validate(const ContactSystem3d& sys) const {
   if (others_from_file && !sys.dF)
     return "the other points' load rates from the file need \"dF\" in the system file";
   if (threads < 0 || threads > 1024) return "threads must be in [0, 1024]";
+  if (!(time_limit_s > 0)) return "time_limit_s must be > 0 (infinite: no limit)";
   return {};
 }
 
 Cell3d evaluate_cell_3d(const ContactSystem3d& sys, const Eigen::VectorXd& dF,
-                        const Map3dOptions& o) {
+                        const Map3dOptions& o, double time_limit_s) {
   Cell3d c;
+  if (!(time_limit_s > 0)) {  // the map's budget is spent: not computed
+    c.complete = false;
+    c.timed_out = true;
+    return c;
+  }
   if (o.facets == 0) {
     const RateSolutionSet3d s = solve_rate_3d(sys.point_parameters(0), sys.points[0].state,
                                               Eigen::Vector3d(dF.head<3>()));
@@ -222,10 +235,11 @@ Cell3d evaluate_cell_3d(const ContactSystem3d& sys, const Eigen::VectorXd& dF,
     c.complete = s.complete;
     return c;
   }
-  const SystemRateSet3d s = solve_system_rate_3d_faceted(sys, dF, o.facets);
+  const SystemRateSet3d s = solve_system_rate_3d_faceted(sys, dF, o.facets, time_limit_s);
   c.count = static_cast<int8_t>(std::min(s.count(), 127));
   for (const auto& x : s.solutions) c.types |= type_bit(x.types[static_cast<std::size_t>(o.point)]);
   c.complete = s.complete;
+  c.timed_out = s.timed_out;
   return c;
 }
 
@@ -238,10 +252,10 @@ Map3d compute_sphere_map_3d(const ContactSystem3d& sys, const SphereGrid& grid,
   m.cols = grid.n_gamma;
   for (int i = 0; i < m.rows; ++i) m.x.push_back(grid.beta(i));
   for (int j = 0; j < m.cols; ++j) m.y.push_back(grid.gamma(j));
-  fill_map(m, options, progress, [&](int i, auto&& put) {
+  fill_map(m, options, progress, [&](int i, auto&& left, auto&& put) {
     for (int j = 0; j < m.cols; ++j)
       put(j, evaluate_cell_3d(sys, load_with(sys, options, sphere_direction(m.x[i], m.y[j])),
-                              options));
+                              options, left(j)));
   });
   return m;
 }
@@ -272,12 +286,12 @@ Map3d compute_param_direction_map_3d(const ContactSystem3d& sys, const Map3dAxis
   }
   m.y = rate::map_theta_values(theta_n, theta_from, theta_to);
   const Eigen::Vector2d g = cos_sin_exact(gamma);
-  fill_map(m, options, progress, [&](int i, auto&& put) {
+  fill_map(m, options, progress, [&](int i, auto&& left, auto&& put) {
     const ContactSystem3d& s = rows[static_cast<std::size_t>(i)];
     for (int j = 0; j < m.cols; ++j) {
       const Eigen::Vector2d t = cos_sin_exact(m.y[static_cast<std::size_t>(j)]);
       put(j, evaluate_cell_3d(s, load_with(s, options, Eigen::Vector3d(t(0) * g(0), t(0) * g(1), t(1))),
-                              options));
+                              options, left(j)));
     }
   });
   return m;
@@ -312,12 +326,12 @@ Map3d compute_param_param_map_3d(const ContactSystem3d& sys, const Map3dAxis& ax
                              num(m.y[static_cast<std::size_t>(j)]) + ": ");
     }
   const Eigen::VectorXd dF = *sys.dF;
-  fill_map(m, options, progress, [&](int i, auto&& put) {
+  fill_map(m, options, progress, [&](int i, auto&& left, auto&& put) {
     ContactSystem3d s = sys;
     apply_map_3d_parameter(axis1.param, m.x[static_cast<std::size_t>(i)], s);
     for (int j = 0; j < m.cols; ++j) {
       apply_map_3d_parameter(axis2.param, m.y[static_cast<std::size_t>(j)], s);
-      put(j, evaluate_cell_3d(s, dF, options));
+      put(j, evaluate_cell_3d(s, dF, options, left(j)));
     }
   });
   return m;

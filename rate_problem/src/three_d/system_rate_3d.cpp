@@ -3,10 +3,13 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
 
@@ -14,6 +17,12 @@ namespace cpkit::rate3d {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+std::string num_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
 constexpr double kTol = 1e-10;
 
 /// The inscribed polygon of a point's ellipse: outward unit facet normals and supports.
@@ -48,6 +57,9 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& sys, const E
     throw InputError("dF must have 3N = " + std::to_string(3 * n) + " finite entries");
   if (k < 3 || k > kMaxFacets)
     throw InputError("facets must be in [3, " + std::to_string(kMaxFacets) + "], got " + std::to_string(k));
+  if (!(time_limit_s > 0))
+    throw InputError("the time limit must be a positive number of seconds, got " +
+                     num_text(time_limit_s));
   for (int i = 0; i < n; ++i) {
     const Point3dParameters p = sys.point_parameters(i);
     if (const std::string e = p.validate(); !e.empty())
@@ -82,12 +94,23 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& sys, const E
 
   SystemRateSet3d out;
   out.facets = k;
+  // One deadline for the whole solve (every separation case), not one per enumeration: 2^n_b
+  // cases of up to the limit each would not end (issue 24, item 11).
+  const Stopwatch clock;
   const int dim = 6 * n;  // x = (dP (3N), dw (3N))
   auto note = [&](const std::string& m) {
     out.complete = false;
     if (out.message.empty()) out.message = m;
   };
   for (unsigned mask = 0; mask < (1u << nb); ++mask) {  // bit b set: grazing point b separates
+    if (clock.seconds() >= time_limit_s) {
+      out.timed_out = true;
+      out.complete = false;
+      out.message = "time limit of " + num_text(time_limit_s) + " s reached after " +
+                    std::to_string(mask) + " of " + std::to_string(1u << nb) +
+                    " separation cases: the solutions found are not the whole set";
+      break;
+    }
     auto separated = [&](int i) {
       for (int b = 0; b < nb; ++b)
         if (grazing[b] == i) return ((mask >> b) & 1u) != 0;
@@ -166,9 +189,16 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& sys, const E
       zs.push_back(Eigen::VectorXd());
     } else {
       lcp::EnumerationOptions opt;
-      opt.time_limit_s = time_limit_s;
+      opt.time_limit_s = std::max(1e-3, time_limit_s - clock.seconds());  // what is left
       const lcp::SolutionSet set = lcp::enumerate_all(lcp, opt);
       out.nodes += set.nodes;
+      if (!set.complete && clock.seconds() >= time_limit_s) {
+        out.timed_out = true;
+        out.complete = false;
+        out.message = "time limit of " + num_text(time_limit_s) + " s reached in separation "
+                      "case " + std::to_string(mask + 1) + " of " + std::to_string(1u << nb) +
+                      ": the solutions found are not the whole set";
+      }
       if (!set.complete) note(set.message);
       for (const auto& e : set.solutions) zs.push_back(e.z);
       for (const auto& piece : set.pieces) {

@@ -60,6 +60,14 @@ void system_map_patterns(const ContactSystem& system, Eigen::VectorXd& e1, Eigen
 /// complementary bases the map scans.
 inline constexpr int kMaxSystemMapLcp = 12;
 
+/// Size of a system's rate LCP from its states alone (3 per point in state b, 1 per point in
+/// state d): O(N), nothing allocated in proportion to the work.
+int system_map_lcp_size(const ContactSystem& system) noexcept;
+/// Throws InputError when the rate LCP is larger than kMaxSystemMapLcp. Called right after a
+/// system is read and before anything proportional to N or 2^m is computed (a 1000-point
+/// system is refused at once, not after its N^3 precomputation).
+void check_system_map_lcp_size(const ContactSystem& system, const std::string& what);
+
 /// Computes the direction map. options.method must be kEnumerate; options.threads workers
 /// (0: all cores) scan the bases and evaluate the arcs, with a result that does not depend on
 /// their number; theta_from/theta_to are not used (the exact map covers the whole circle). Throws InputError for an invalid system or options, patterns that are

@@ -87,7 +87,15 @@ struct Map3dOptions {
   /// The other points' load rates: false 0, true the system's dF (required then).
   bool others_from_file = false;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
-  /// Validates against the system: facets (required for N > 1), point, others_from_file.
+  /// Wall-clock budget of the whole map in seconds (from the start of the compute call; default
+  /// 600, as `cpkit map --time-limit`; may be infinite, then a faceted N-point cell may run
+  /// without bound). Each cell's solve gets what is left of it; a cell it cuts short keeps what was
+  /// found, not complete; once it is spent, the cells not computed are stored as count 0,
+  /// types 0, not complete; both are counted in Map3d::timed_out_cells. A faceted N-point cell can otherwise take without bound
+  /// (2^n_b separation cases).
+  double time_limit_s = 600;
+  /// Validates against the system: facets (required for N > 1), point, others_from_file,
+  /// time_limit_s > 0.
   std::string validate(const ContactSystem3d& system) const;
 };
 
@@ -95,11 +103,14 @@ struct Cell3d {
   int8_t count = 0;     ///< -1: infinitely many (a ray of the one-point state d)
   uint8_t types = 0;    ///< mask of type_bit() of the loaded point's solution types
   bool complete = true;
+  bool timed_out = false;  ///< the time limit ended the cell's solve (complete = false)
 };
 
-/// One cell: every solution for the load rate dF (3N) by the route of `options`.
+/// One cell: every solution for the load rate dF (3N) by the route of `options`; the faceted
+/// solve gets at most `time_limit_s` seconds (default 60, as solve_system_rate_3d_faceted;
+/// options.time_limit_s is the map's, not used here).
 Cell3d evaluate_cell_3d(const ContactSystem3d& system, const Eigen::VectorXd& dF,
-                        const Map3dOptions& options);
+                        const Map3dOptions& options, double time_limit_s = 60);
 
 /// Progress: fraction of rows done, from the calling thread (about every 0.1 s).
 using Map3dProgress = std::function<void(double fraction)>;
@@ -112,6 +123,9 @@ struct Map3d {
   std::vector<uint8_t> types;       ///< type masks
   std::vector<uint8_t> complete;    ///< 1: proved complete, 0: not
   int64_t incomplete_cells = 0;
+  /// Cells the time limit (Map3dOptions::time_limit_s) cut short or left uncomputed; they are
+  /// among the incomplete cells. Nonzero: the map is not the answer for those cells.
+  int64_t timed_out_cells = 0;
   std::vector<std::pair<int, int64_t>> count_cells;  ///< (count, cells), by count (-1 first)
   std::array<int64_t, 16> type_cells{};             ///< cells per type mask
   double seconds = 0;

@@ -25,6 +25,7 @@ struct SystemSolution3d {
 struct SystemRateSet3d {
   std::vector<SystemSolution3d> solutions;  ///< deduplicated physical solutions
   bool complete = true;  ///< false: a case was not decided or a continuum met (`message`)
+  bool timed_out = false;  ///< the time limit ended the solve (then complete = false)
   std::string message;
   int facets = 0;
   long long nodes = 0;   ///< enumeration search nodes over all subsets
@@ -35,8 +36,13 @@ struct SystemRateSet3d {
 inline constexpr int kMaxGrazing3d = 10;
 
 /// Every solution of the faceted N-point problem for the load rate dF (3N). Throws InputError
-/// for invalid input, facets outside [3, kMaxFacets], more than kMaxGrazing3d grazing points, or
-/// an LCP larger than the enumeration's 64 (n_d + k n_b: fewer facets or points).
+/// for invalid input, facets outside [3, kMaxFacets], more than kMaxGrazing3d grazing points, an
+/// LCP larger than the enumeration's 64 (n_d + k n_b: fewer facets or points), or a time limit
+/// that is not positive.
+/// `time_limit_s` (wall clock, seconds; may be infinite) bounds the whole solve: it is checked
+/// before every separation case and what is left of it bounds each case's enumeration. When it
+/// runs out the result has timed_out = true, complete = false and a message saying so; the
+/// solutions found so far are listed (never called the whole set).
 SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& system,
                                              const Eigen::VectorXd& dF, int facets,
                                              double time_limit_s = 60);
