@@ -5,6 +5,19 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${CPKIT_BINARY_DIR} --prefix 
 if(rc)
   message(FATAL_ERROR "cmake --install failed (${rc})")
 endif()
+# The Python module is installed with its package files when it was built (the full build), and
+# not at all otherwise (run-main.sh's cpkit_cli-only build: python/CMakeLists.txt).
+file(GLOB_RECURSE built_module ${CPKIT_BINARY_DIR}/python/cpkit/_cpkit*.so)
+file(GLOB_RECURSE installed_module ${WORK_DIR}/prefix/*/_cpkit*.so)
+file(GLOB_RECURSE installed_init ${WORK_DIR}/prefix/*/cpkit/__init__.py)
+if(built_module AND NOT (installed_module AND installed_init))
+  message(FATAL_ERROR "the Python module was built (${built_module}) but not installed")
+endif()
+if(NOT built_module AND installed_init)
+  message(FATAL_ERROR "half a Python package installed (no extension built): ${installed_init}")
+endif()
+# The consumer reads its problem from a file (the readers need simdjson at link time).
+file(WRITE ${WORK_DIR}/problem.json "{\"M\": [[2, 1], [1, 2]], \"q\": [-5, -6]}\n")
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
                         -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
                 RESULT_VARIABLE rc)
@@ -15,7 +28,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build RESULT_VARIAB
 if(rc)
   message(FATAL_ERROR "building the consumer failed (${rc})")
 endif()
-execute_process(COMMAND ${WORK_DIR}/build/consumer RESULT_VARIABLE rc)
+execute_process(COMMAND ${WORK_DIR}/build/consumer ${WORK_DIR}/problem.json RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer program failed (${rc})")
 endif()
@@ -41,7 +54,7 @@ execute_process(COMMAND c++ -std=c++17 -O1 ${CONSUMER_SOURCE_DIR}/main.cpp ${fla
 if(rc)
   message(FATAL_ERROR "building the consumer with pkg-config's flags failed (${rc})")
 endif()
-execute_process(COMMAND ${WORK_DIR}/consumer_pkgconfig RESULT_VARIABLE rc)
+execute_process(COMMAND ${WORK_DIR}/consumer_pkgconfig ${WORK_DIR}/problem.json RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the pkg-config consumer program failed (${rc})")
 endif()
