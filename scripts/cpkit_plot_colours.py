@@ -42,9 +42,9 @@ COMBO_COLOURS = {
 
 # Anything else (a combination outside the tables, an N-point pattern): a colour from this
 # palette chosen by a checksum of its canonical name -- fixed for that name in every picture.
-HASH_PALETTE = ["#1b9e77", "#d95f02", "#7570b3", "#66a61e", "#1f78b4", "#b2df8a", "#fb9a99", "#fdbf6f", "#cab2d6", "#6a3d9a", "#b15928",
-                "#8dd3c7", "#bebada", "#80b1d3", "#fccde5", "#bc80bd", "#ccebc5", "#ffed6f",
-                "#9c9ede", "#e7cb94", "#de9ed6"]
+HASH_PALETTE = ["#1b9e77", "#d95f02", "#7570b3", "#1f78b4", "#b2df8a", "#fb9a99", "#fdbf6f",
+                "#6a3d9a", "#b15928", "#8dd3c7", "#bebada", "#80b1d3", "#fccde5", "#bc80bd",
+                "#ffed6f", "#e7cb94", "#000080", "#808000", "#00ced1", "#2f4f4f"]
 
 
 def canonical_types(types):
@@ -87,7 +87,7 @@ def pattern_colour(tuples):
 def pattern_colours(patterns):
     """{pattern key: colour} for the patterns of one map. Each gets pattern_colour(); should two
     of them share a checksum colour, the one later in canonical order takes the next free palette
-    colour (rare: HASH_PALETTE has 21 colours), so that one picture never shows two patterns in
+    colour (rare: HASH_PALETTE has 20 colours), so that one picture never shows two patterns in
     one colour."""
     out, used = {}, set()
     for key in sorted(pattern_key(p) for p in patterns):
