@@ -31,7 +31,8 @@ import sys
 EXIT_BAD_INPUT = 2
 EXIT_NO_MATPLOTLIB = 5
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# The script's own folder (share/cpkit when installed); sys.argv[0] when run without __file__.
+sys.path.insert(0, os.path.dirname(os.path.abspath(globals().get("__file__") or sys.argv[0])))
 from cpkit_plot_colours import (NO_SOLUTION, TYPE_COLOURS, combination_colour,  # noqa: E402
                                 pattern_colours, pattern_key)
 

@@ -19,7 +19,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# The script's own folder (share/cpkit when installed); sys.argv[0] when run without __file__.
+sys.path.insert(0, os.path.dirname(os.path.abspath(globals().get("__file__") or sys.argv[0])))
 from cpkit_plot_colours import NO_SOLUTION, TYPE_COLOURS  # noqa: E402
 
 ap = argparse.ArgumentParser()
