@@ -31,12 +31,15 @@ import sys
 EXIT_BAD_INPUT = 2
 EXIT_NO_MATPLOTLIB = 5
 
-TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]
-TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
-                "slip-": "#c44e52", "open": "#8172b3"}
-COUNT_COLOURS = {"0": "#d62728", "1": "#e8e8e8", "2": "#f2b134", "3": "#1f77b4",
+# The script's own folder (share/cpkit when installed); sys.argv[0] when run without __file__.
+sys.path.insert(0, os.path.dirname(os.path.abspath(globals().get("__file__") or sys.argv[0])))
+from cpkit_plot_colours import (NO_SOLUTION, TYPE_COLOURS, combination_colour,  # noqa: E402
+                                pattern_colours, pattern_key)
+
+TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]  # rings of the direction map
+COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#e8e8e8", "2": "#f2b134", "3": "#1f77b4",
                  "4": "#9467bd", "inf": "#000000"}
-CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": "#d62728",
+CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": NO_SOLUTION,
                  "none-and-several": "#8c2d8c"}
 CLASS_LABELS = {"unique": "unique for every direction",
                 "non-unique": "several solutions for some directions",
@@ -161,6 +164,108 @@ def count_key(c):
     return "inf" if c == "inf" or c == -1 else str(c)
 
 
+def legend_below(ax, handles, ncol=1, title=None, fontsize=8):
+    """A legend under the axes, below their tick labels and axis label (never over the data).
+    Placed by place_legends() once the layout is final; savefig(bbox_inches="tight") then grows
+    the picture to keep it whole, however long its labels."""
+    if handles:
+        pending = getattr(ax.figure, "_cpkit_legends", [])
+        pending.append((ax, handles, dict(ncol=ncol, fontsize=fontsize, title=title,
+                                          title_fontsize=fontsize, frameon=False)))
+        ax.figure._cpkit_legends = pending
+
+
+def place_legends(fig):
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for ax, handles, kw in getattr(fig, "_cpkit_legends", []):
+        box = ax.get_tightbbox(renderer).transformed(fig.transFigure.inverted())
+        pos = ax.get_position()
+        ax.legend(handles=handles, loc="upper center",
+                  bbox_to_anchor=(0.5 * (pos.x0 + pos.x1), box.y0 - 0.01),
+                  bbox_transform=fig.transFigure, **kw)
+
+
+def wrap(text, width=60):
+    import textwrap
+    return "\n".join(textwrap.wrap(text, width)) or text
+
+
+def system_parameters(inp, varying=()):
+    """The fixed parameters of a --system map, read from its system file (what the picture was
+    computed at), without the swept ones; '' if the file cannot be read."""
+    try:
+        with open(inp["system"]) as f:
+            sysf = json.load(f)
+    except (OSError, ValueError, KeyError, TypeError):
+        return ""
+    varying = {str(v).split("_")[0] for v in varying if v}
+    per_point = []
+    for p in sysf.get("points", []):
+        kv = ["state %s" % p["state"]] if "state" in p else []
+        for k in ("mu", "C_T", "alpha", "k_a", "P_N", "kappa"):
+            if k in p and k not in varying:
+                v = p[k]
+                kv.append("%s=%s" % (k, ("(" + ", ".join("%g" % x for x in v) + ")")
+                                     if isinstance(v, list) else "%g" % v))
+        per_point.append(", ".join(kv))
+    if not per_point:
+        return ""
+    if len(set(per_point)) == 1:
+        text = ("every point: " if len(per_point) > 1 else "") + per_point[0]
+    else:
+        text = "; ".join("point %d: %s" % (i + 1, t) for i, t in enumerate(per_point))
+    if "coupling" in varying:
+        text += " (coupling swept)"
+    return text + "; A from " + os.path.basename(inp["system"])
+
+
+NARROW_SECTOR_DEG = 15.0  # a sector with several solutions narrower than this gets a zoomed inset
+
+
+def zoom_narrow_sector(fig, ax, summary, present, r_out):
+    """An inset that unrolls the narrowest sector with several solutions (Fig. 5(b): 6.4 degrees
+    wide) and its neighbours on a linear angle axis: one row per solution type, the critical
+    directions as vertical lines; the zoomed range is outlined on the disc."""
+    from matplotlib.patches import Wedge
+    multi = [s for s in summary["sectors"] if (s["count"] == "inf" or s["count"] >= 2) and
+             math.degrees(s["theta_to"] - s["theta_from"]) < NARROW_SECTOR_DEG]
+    if not multi:
+        return
+    z = min(multi, key=lambda s: s["theta_to"] - s["theta_from"])
+    d0, d1 = math.degrees(z["theta_from"]), math.degrees(z["theta_to"])
+    pad = 0.6 * (d1 - d0)
+    lo, hi = d0 - pad, d1 + pad
+    ax.add_patch(Wedge((0, 0), r_out + 0.02, lo, hi, width=r_out - 0.3, facecolor="none",
+                       edgecolor="black", linestyle="--", linewidth=0.8))
+    ins = fig.add_axes([0.07, 0.70, 0.34, 0.15])
+    rows = {t: k for k, t in enumerate(reversed(present))}
+    full = 2 * math.pi
+    for s in summary["sectors"]:
+        a0, a1 = math.degrees(s["theta_from"]), math.degrees(s["theta_to"])
+        for shift in (-360.0, 0.0, 360.0):  # sectors are given modulo 2 pi
+            b0, b1 = max(a0 + shift, lo), min(a1 + shift, hi)
+            if b1 <= b0:
+                continue
+            for t in s["types"]:
+                ins.broken_barh([(b0, b1 - b0)], (rows[t] + 0.1, 0.8),
+                                facecolors=TYPE_COLOURS[t], edgecolor="white", linewidth=0.5)
+    for c in summary["critical"]:
+        th = math.degrees(c["theta"] % full)
+        for v in (th - 360.0, th, th + 360.0):
+            if lo <= v <= hi:
+                ins.axvline(v, color="black", lw=0.8)
+    ins.set_xlim(lo, hi)
+    ins.set_ylim(0, len(present))
+    ins.set_yticks([rows[t] + 0.5 for t in present])
+    ins.set_yticklabels(present, fontsize=7)
+    ins.tick_params(axis="x", labelsize=7)
+    ins.set_xlabel("load direction theta (degrees)", fontsize=7, labelpad=1)
+    ins.set_title("zoom (dashed on the disc): %s solutions for theta in\n(%.2f, %.2f) degrees, "
+                  "a sector %.1f degrees wide" % (count_key(z["count"]), d0, d1, d1 - d0),
+                  fontsize=7.5)
+
+
 def plot_direction(summary, base, plt):
     from matplotlib.patches import Patch, Wedge
     fig = plt.figure(figsize=(7.2, 7.6))
@@ -210,6 +315,7 @@ def plot_direction(summary, base, plt):
         ha = "left" if math.cos(th) >= 0 else "right"
         ax.text(1.37 * math.cos(th), 1.37 * math.sin(th), lab, fontsize=7.5, ha=ha,
                 va="center")
+    zoom_narrow_sector(fig, ax, summary, present, r_out)
     handles = [Patch(facecolor=TYPE_COLOURS[t], label=t) for t in present]
     fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.045), fontsize=9,
                title="solution types (one ring each, inner to outer)", title_fontsize=9,
@@ -243,16 +349,7 @@ def plot_param_direction(summary, base, plt):
     cmap = ListedColormap([COUNT_COLOURS.get(k, "#777777") for k in keys])
     norm = BoundaryNorm(np.arange(len(keys) + 1) - 0.5, len(keys))
     axes[0].pcolormesh(xe, te, cnt, cmap=cmap, norm=norm, shading="flat", rasterized=True)
-    palette = ["#e8e8e8", "#4c72b0", "#55a868", "#dd8452", "#c44e52", "#8172b3", "#937860",
-               "#da8bc3", "#8c8c8c", "#ccb974", "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf"]
-    tcols = []
-    for c in combos:
-        if c in TYPE_COLOURS:
-            tcols.append(TYPE_COLOURS[c])
-        elif c == "none":
-            tcols.append("#d62728")
-        else:
-            tcols.append(palette[(len(tcols) + 5) % len(palette)])
+    tcols = [combination_colour(c) for c in combos]  # fixed per combination (all pictures)
     axes[1].pcolormesh(xe, te, typ, cmap=ListedColormap(tcols),
                        norm=BoundaryNorm(np.arange(len(combos) + 1) - 0.5, len(combos)),
                        shading="flat", rasterized=True)
@@ -285,11 +382,13 @@ def plot_param_direction(summary, base, plt):
                 label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
                 else "continuum") for k in keys]
     l0, lab0 = axes[0].get_legend_handles_labels()
-    axes[0].legend(handles=h0 + l0, fontsize=8, loc="upper left", framealpha=0.9)
-    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999", label=c.replace("|", " + "))
+    legend_below(axes[0], h0 + l0, ncol=2)
+    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999",
+                label=c.replace("|", " + ") if c != "none" else "no solution")
           for i, c in enumerate(combos)]
-    axes[1].legend(handles=h1, fontsize=7.5, loc="upper left", framealpha=0.9)
-    fig.suptitle("Rate problem: %s x load direction (%d x %d cells, %s route)\n%s" %
+    legend_below(axes[1], h1, ncol=2)
+    fig.suptitle("Rate problem: %s x load direction (%d x %d cells, %s route), each cell at "
+                 "one load direction theta\n%s" %
                  (ax_info["param"], n, tn, summary.get("method", "enumerate"),
                   model_title(summary)), fontsize=10.5)
     fig.tight_layout(rect=(0, 0, 1, 0.93))
@@ -323,9 +422,9 @@ def plot_param_param(summary, base, plt):
     ax.set_ylim(edges(ys)[0], edges(ys)[-1])
     ax.set_xlabel(a1["param"])
     ax.set_ylabel(a2["param"])
-    ax.legend(handles=handles, fontsize=8, loc="upper right", framealpha=0.9)
-    ax.set_title("Rate problem over all load directions (%d x %d cells)\n%s" %
-                 (n1, n2, model_title(summary)), fontsize=10)
+    legend_below(ax, handles, ncol=1)
+    ax.set_title("Rate problem, each cell classified over ALL load directions theta in "
+                 "[0, 2pi) (%d x %d cells)\n%s" % (n1, n2, model_title(summary)), fontsize=10)
     fig.tight_layout()
     return fig
 
@@ -398,26 +497,18 @@ def plot_system_grid(summary, base, plt):
     axes[0].pcolormesh(xe, ye, left, cmap=ListedColormap(cols),
                        norm=BoundaryNorm(np.arange(len(cols) + 1) - 0.5, len(cols)),
                        shading="flat", rasterized=True)
-    axes[0].legend(handles=h0, fontsize=8, loc="upper left", framealpha=0.9)
-    # Patterns: the most frequent ones (in the whole map) get colours, the rest is "other".
+    legend_below(axes[0], h0, ncol=1)
+    # Patterns: each its own colour, fixed by the pattern itself (cpkit_plot_colours.py), so the
+    # same pattern has the same colour in every picture; every label in full.
     table = {p["id"]: p for p in summary["patterns"]}
     shown_ids = sorted({int(p) for p in np.unique(pat)},
-                       key=lambda i: -table[i]["cells"] if i in table else 0)
-    palette = ["#4c72b0", "#55a868", "#dd8452", "#8172b3", "#937860", "#da8bc3", "#ccb974",
-               "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf", "#bcbd22"]
-    colour, labels, k = {}, {}, 0
+                       key=lambda i: pattern_key(table[i]["types"] if i in table else []))
+    by_key = pattern_colours([table[i]["types"] if i in table else [] for i in shown_ids])
+    colour, labels = {}, {}
     for i in shown_ids:
         types = table[i]["types"] if i in table else []
-        if not types:
-            colour[i], labels[i] = "#d62728", "no solution"
-        elif k < len(palette):
-            colour[i] = palette[k]
-            text = ", ".join(types)
-            labels[i] = text if len(text) <= 70 else text[:67] + "..."
-            k += 1
-        else:
-            colour[i] = "#8c8c8c"
-            labels[i] = "other patterns"
+        colour[i] = by_key[pattern_key(types)]
+        labels[i] = "no solution" if not types else wrap(", ".join(pattern_key(types)), 75)
     order = {i: n for n, i in enumerate(shown_ids)}
     right = np.vectorize(lambda p: order[int(p)])(pat).T
     axes[1].pcolormesh(xe, ye, right, cmap=ListedColormap([colour[i] for i in shown_ids]),
@@ -429,8 +520,8 @@ def plot_system_grid(summary, base, plt):
             continue
         seen.add(labels[i])
         h1.append(Patch(facecolor=colour[i], edgecolor="#999999", label=labels[i]))
-    axes[1].legend(handles=h1, fontsize=7, loc="upper left", framealpha=0.9,
-                   title="type tuples present (point 1/point 2/...)", title_fontsize=7)
+    legend_below(axes[1], h1, ncol=1, fontsize=7,
+                 title="type tuples present in a cell (point 1/point 2/...)")
     axes[1].set_title("point-type pattern" + ("" if pd else " (union over directions)"))
     for ax in axes:
         ax.set_xlabel(inp["param"])
@@ -443,12 +534,20 @@ def plot_system_grid(summary, base, plt):
             axes[0].set_yticklabels(["0", r"$\pi/2$", r"$\pi$", r"$3\pi/2$", r"$2\pi$"])
     else:
         axes[0].set_ylabel(inp["param2"])
-    fig.suptitle("%s: %d points, %s (%d x %d cells%s)" %
+    e = inp.get("patterns") or []
+    load = (r"load $\dot F = \cos\theta\, e_1 + \sin\theta\, e_2$" +
+            (", e1 = (%s), e2 = (%s)" % tuple(", ".join("%g" % v for v in ei) for ei in e[:2])
+             if len(e) >= 2 else ""))
+    load += (": each cell at one direction theta" if pd else
+             ": each cell classified over ALL directions theta in [0, 2pi)")
+    fixed = system_parameters(inp, (inp.get("param"), inp.get("param2")))
+    fig.suptitle("%s: %d points, %s (%d x %d cells%s)\n%s%s" %
                  (inp.get("name") or os.path.basename(inp["system"]), inp["n_points"],
                   "parameter x load direction" if pd else "parameter x parameter",
                   a.shape[0], a.shape[1], "" if summary.get("complete", True)
-                  else "; NOT proved complete"), fontsize=10.5)
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+                  else "; NOT proved complete", load, ("\n" + fixed) if fixed else ""),
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.9))
     return fig
 
 
@@ -495,10 +594,8 @@ def plot_map_3d(summary, base, plt):
     names = ["open", "separation", "stick", "slip"]
     masks = sorted(int(m) for m in np.unique(typ))
     label = lambda m: ", ".join(n for b, n in enumerate(names) if m & (1 << b)) or "no solution"
-    palette = ["#4c72b0", "#55a868", "#dd8452", "#8172b3", "#937860", "#da8bc3", "#ccb974",
-               "#64b5cd", "#2ca02c", "#ff7f0e", "#17becf", "#bcbd22", "#c44e52", "#8c8c8c",
-               "#1f77b4", "#9467bd"]
-    tcols = ["#d62728" if m == 0 else palette[i % len(palette)] for i, m in enumerate(masks)]
+    # fixed per combination, the same colours as the 2-D maps' (cpkit_plot_colours.py)
+    tcols = [combination_colour([n for b, n in enumerate(names) if m & (1 << b)]) for m in masks]
     midx = {m: i for i, m in enumerate(masks)}
     mesh(axes[1], np.vectorize(lambda m: midx[int(m)])(typ), tcols)
     h1 = [Patch(facecolor=tcols[i], edgecolor="#999999", label=label(m))
@@ -513,9 +610,8 @@ def plot_map_3d(summary, base, plt):
         for h in (h0, h1):
             h.append(Line2D([], [], color="k", marker=".", ls="",
                             label="not proved complete (%d cells)" % len(bad)))
-    axes[0].legend(handles=h0, fontsize=8, loc="upper left", framealpha=0.9)
-    axes[1].legend(handles=h1, fontsize=8, loc="upper left", framealpha=0.9,
-                   title="types at point %d" % inp.get("point", 1), title_fontsize=8)
+    legend_below(axes[0], h0, ncol=2)
+    legend_below(axes[1], h1, ncol=2, title="types at point %d" % inp.get("point", 1))
     axes[0].set_title("number of solutions")
     axes[1].set_title("solution types")
     for ax in axes:
@@ -539,13 +635,22 @@ def plot_map_3d(summary, base, plt):
     else:
         axes[0].set_ylabel(inp["param2"])
     route = ("faceted, %d facets" % inp["facets"]) if inp.get("facets") else "exact"
-    fig.suptitle("%s: %s map of %d 3-D point%s, %s (%d x %d cells%s)" %
+    if kind == "param-param":
+        load = ("each cell at ONE load direction dF = (%s) (not over all directions)" %
+                ", ".join("%g" % v for v in inp.get("dF", [])))
+    elif kind == "param-direction":
+        load = "each cell at one load direction theta, in the plane of azimuth G = %.4g" % \
+            inp.get("gamma", 0.0)
+    else:
+        load = "each cell at one load direction (b, g)"
+    fixed = system_parameters(inp, (inp.get("param"), inp.get("param2")))
+    fig.suptitle("%s: %s map of %d 3-D point%s, %s (%d x %d cells%s)\n%s%s" %
                  (inp.get("name") or os.path.basename(inp["system"]), kind, inp["n_points"],
                   "" if inp["n_points"] == 1 else "s", route, cnt.shape[0], cnt.shape[1],
                   "" if summary.get("complete", True)
-                  else "; %d NOT proved complete" % summary.get("incomplete_cells", 0)),
-                 fontsize=10.5)
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+                  else "; %d NOT proved complete" % summary.get("incomplete_cells", 0),
+                  load, ("\n" + fixed) if fixed else ""), fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.9))
     return fig
 
 
@@ -598,8 +703,9 @@ def main(argv):
         fig = plot_param_param(summary, base, plt)
     else:
         fail("unknown map kind %r in %s" % (kind, src))
+    place_legends(fig)
     for fmt in formats:
-        fig.savefig("%s.%s" % (out, fmt), dpi=110)
+        fig.savefig("%s.%s" % (out, fmt), dpi=110, bbox_inches="tight")
     return 0
 
 

@@ -9,8 +9,7 @@ Writes, for each format:
   PREFIX_orbit.*  three views of the tangential plane: the load orbit F_T; the traction path
                   P_T with the friction ellipse ||P_T|| = mu P_N (half-axes mu P_N alpha_X,
                   mu P_N alpha_Y, at the largest and the last P_N; needs the summary); the slip
-                  path w_T^i
-                  (coloured by time: stick steps grey, slip steps coloured);
+                  path w_T^i (coloured by time; segments without slip, if any, grey);
   PREFIX_wear.*   the wear depth against cycles, and the wear per cycle split into the parts
                   due to slip in X and in Y (wear_X_per_cycle, wear_Y_per_cycle of the summary).
 Exit codes: 0 ok, 2 bad input, 5 matplotlib is not available (the data is unaffected).
@@ -50,18 +49,26 @@ def main(argv):
     cmap = plt.get_cmap("viridis")
 
     def path(ax, xs, ys, slip_only=False):
+        """Draws the path; returns how many grey segments (no slip in them) have a visible
+        length (a stick step leaves w_T^i where it is: a grey point, not a line)."""
         seg = max(1, n // 600)
+        grey = 0
         for i in range(0, n - 1, seg):
             j = min(n - 1, i + seg)
             slipping = any(s["type"][k] == "slip" for k in range(i + 1, j + 1))
             colour = cmap(i / max(1, n - 1)) if (slipping or not slip_only) else "#bbbbbb"
+            grey += colour == "#bbbbbb" and (xs[j] != xs[i] or ys[j] != ys[i])
             ax.plot(xs[i:j + 1], ys[i:j + 1], color=colour, lw=1.0)
         ax.set_aspect("equal", adjustable="datalim")
         ax.axhline(0, color="#dddddd", lw=0.6, zorder=0)
         ax.axvline(0, color="#dddddd", lw=0.6, zorder=0)
+        return grey
 
-    # 1. Load orbit, traction path with the friction ellipse, slip path.
-    fig, axes = plt.subplots(1, 3, figsize=(13.5, 4.8))
+    # 1. Load orbit, traction path with the friction ellipse, slip path. Constrained layout
+    # keeps every panel's labels clear of its neighbour.
+    fig = plt.figure(figsize=(14.5, 5.4), constrained_layout=True)
+    fig.set_constrained_layout_pads(w_pad=0.15, wspace=0.08)
+    axes = fig.subplots(1, 3)
     path(axes[0], s["F_TX"], s["F_TY"])
     axes[0].set_xlabel("$F_{TX}$")
     axes[0].set_ylabel("$F_{TY}$")
@@ -73,19 +80,22 @@ def main(argv):
             axes[1].plot([mu * PN * alpha[0] * math.cos(a) for a in th],
                          [mu * PN * alpha[1] * math.sin(a) for a in th], style, color="#c44e52",
                          lw=1.0, label="friction ellipse $\\|P_T\\| = \\mu P_N$ (%s $P_N$)" % which)
-        axes[1].legend(loc="lower right", fontsize=7)
+        axes[1].legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=7,
+                       frameon=False)  # under the panel, never over the path
     axes[1].set_xlabel("$P_{TX}$")
     axes[1].set_ylabel("$P_{TY}$")
     axes[1].set_title("traction path $P_T$")
-    path(axes[2], s["w_TiX"], s["w_TiY"], slip_only=True)
+    grey = path(axes[2], s["w_TiX"], s["w_TiY"], slip_only=True)
     axes[2].set_xlabel("$w^i_{TX}$")
     axes[2].set_ylabel("$w^i_{TY}$")
-    axes[2].set_title("slip path $w_T^i$ (grey: stick)")
+    # Say "grey" only when grey is drawn (the title used to promise it regardless).
+    axes[2].set_title("slip path $w_T^i$" + (" (grey: no slip)" if grey else
+                                             " (stick steps do not move it)"))
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
-    fig.colorbar(sm, ax=list(axes), label="t", shrink=0.8)
+    fig.colorbar(sm, ax=list(axes), label="t", shrink=0.8, pad=0.01)
     fig.suptitle(title)
     for fmt in args["formats"]:
-        fig.savefig("%s_orbit.%s" % (out, fmt), dpi=100)
+        fig.savefig("%s_orbit.%s" % (out, fmt), dpi=100, bbox_inches="tight")
     plt.close(fig)
 
     # 2. Wear growth and its split by slip direction.

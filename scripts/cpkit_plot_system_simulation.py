@@ -9,11 +9,19 @@ over the steps: stick zone and slip zones).
 import argparse
 import csv
 import json
+import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+# The script's own folder (share/cpkit when installed); sys.argv[0] when run without __file__.
+sys.path.insert(0, os.path.dirname(os.path.abspath(globals().get("__file__") or sys.argv[0])))
+from cpkit_plot_colours import NO_SOLUTION, TYPE_COLOURS  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--csv", required=True)
@@ -41,17 +49,29 @@ fig.tight_layout()
 for ext in ("png", "svg"):
     fig.savefig(f"{a.out}_wear.{ext}", dpi=120)
 
-codes = {"open": 0, "separation": 0, "stick": 1, "slip+": 2, "slip-": 3}
+# Categories, so a categorical legend (not a colour bar), in the map pictures' fixed colours.
+order = ["open", "separation", "stick", "slip+", "slip-"]
 steps = [int(r["step"]) for r in rows]
-grid = [[codes.get(r[f"type_{i}"], 0) for r in rows] for i in points]
+types = [[r[f"type_{i}"] for r in rows] for i in points]
+present = [t for t in order if any(t in row for row in types)]
+if any(t not in order for row in types for t in row):
+    present.append("other")
+code = {t: k for k, t in enumerate(present)}
+grid = [[code.get(t, code.get("other", 0)) for t in row] for row in types]
+cols = [TYPE_COLOURS.get(t, NO_SOLUTION) for t in present]
 fig, ax = plt.subplots(figsize=(7, 3))
-im = ax.imshow(grid, aspect="auto", interpolation="nearest", cmap="viridis", vmin=0, vmax=3,
-               extent=[steps[0], steps[-1], n + 0.5, 0.5])
-cb = fig.colorbar(im, ticks=[0, 1, 2, 3])
-cb.ax.set_yticklabels(["open/sep.", "stick", "slip+", "slip-"])
+ax.imshow(grid, aspect="auto", interpolation="nearest", cmap=ListedColormap(cols),
+          norm=BoundaryNorm([k - 0.5 for k in range(len(cols) + 1)], len(cols)),
+          extent=[steps[0] - 0.5, steps[-1] + 0.5, n + 0.5, 0.5])
+ax.legend(handles=[Patch(facecolor=c, edgecolor="#999999",
+                         label=t if t != "other" else "other (no solution)")
+                   for t, c in zip(present, cols)],
+          loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False,
+          title="solution type", title_fontsize=8)
+ax.set_yticks(points)
 ax.set_xlabel("step")
 ax.set_ylabel("contact point")
 ax.set_title("solution type per point: stick in the middle, slip at the edges")
 fig.tight_layout()
 for ext in ("png", "svg"):
-    fig.savefig(f"{a.out}_slip.{ext}", dpi=120)
+    fig.savefig(f"{a.out}_slip.{ext}", dpi=120, bbox_inches="tight")

@@ -19,8 +19,22 @@ grazing="$root/docs/examples/coupled_grazing_points.json"
   --n 200 --theta-n 360 --out "$tmp/coupled_points_coupling_direction" --plot
 "$cpkit" map --system "$grazing" --kind param-param --param coupling --from 0 --to 1 --n 40 \
   --param2 mu --from2 0.2 --to2 2 --n2 40 --out "$tmp/coupled_points_coupling_mu" --plot
+# 3-D (docs/contact_3d.md): the sphere map and the fretting orbit
+"$cpkit" map --system "$root/docs/examples/sphere_point_3d.json" --kind sphere --n 61 --n2 120 \
+  --out "$tmp/sphere_map_3d" --plot
+"$cpkit" simulate --system "$root/docs/examples/fretting_point_3d.json" --orbit 0.9 0.5 \
+  --orbit-angle 0.4 --cycles 8 --steps-per-cycle 80 --plot "$tmp/fretting_3d"
 for name in fig5a fig5b mu_direction state_d state_d_mu_kappa coupled_points_coupling_direction \
-    coupled_points_coupling_mu; do
+    coupled_points_coupling_mu sphere_map_3d fretting_3d_orbit; do
   cp "$tmp/$name.png" "$root/docs/images/$name.png"
 done
-echo "docs/images/: fig5a fig5b mu_direction state_d state_d_mu_kappa coupled_points_* redrawn"
+# The flat punch (docs/simulation.md): 55 s of CPU, minutes on a loaded machine; skipped with
+# CPKIT_DOC_IMAGES_QUICK=1.
+if [ -z "${CPKIT_DOC_IMAGES_QUICK:-}" ]; then
+  "$cpkit" simulate --config "$root/docs/examples/flat_punch_fretting.json" --plot "$tmp/flat_punch"
+  cp "$tmp/flat_punch_slip.png" "$tmp/flat_punch_wear.png" "$root/docs/images/"
+fi
+echo "docs/images/: fig5a fig5b mu_direction state_d state_d_mu_kappa coupled_points_* sphere_map_3d" \
+  "fretting_3d_orbit redrawn"
+[ -z "${CPKIT_DOC_IMAGES_QUICK:-}" ] && echo "docs/images/: flat_punch_slip flat_punch_wear redrawn"
+exit 0

@@ -15,3 +15,7 @@ echo "== Fig. 5(b): solutions per load direction, state b, mu = 3 > a11/a12 = 2"
 echo "== mu x load direction, state b (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25)"
 "$build/apps/cpkit" map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 \
   --n 400 --theta-n 720 --out "$out/mu_direction" --plot
+echo "== done: pictures and data in $out"
+echo "the cpkit program: $build/apps/cpkit"
+echo "  run it from anywhere: export PATH=\"$build/apps:\$PATH\""
+echo "  or install it (program, plotting scripts, libraries): cmake --install $build --prefix \$HOME/.local"

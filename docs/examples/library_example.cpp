@@ -10,8 +10,17 @@
 #include <cpkit/rate_problem/step/step_enumeration.hpp>
 #include <cmath>
 #include <iostream>
+#include <string>
 
-int main() {
+// The folder of the example problem files: the program's argument if given, else the one the
+// build defines (the test suite passes -DCPKIT_EXAMPLE_DATA=<repository>/tests/data/lcp), else
+// the repository's tests/data/lcp relative to the current folder (run from the top folder).
+#ifndef CPKIT_EXAMPLE_DATA
+#define CPKIT_EXAMPLE_DATA "tests/data/lcp"
+#endif
+
+int main(int argc, char** argv) {
+  const std::string data_dir = argc > 1 ? argv[1] : CPKIT_EXAMPLE_DATA;
   int failures = 0;
   auto expect = [&](bool ok, const char* what) {
     std::cout << (ok ? "ok   " : "FAIL ") << what << '\n';
@@ -35,7 +44,7 @@ int main() {
   }
 
   // 3. Every solution: battle of the sexes has exactly three equilibria.
-  const cpkit::LcpProblem game = cpkit::read_lcp_file(CPKIT_EXAMPLE_DATA "/battle_of_the_sexes.json");
+  const cpkit::LcpProblem game = cpkit::read_lcp_file(data_dir + "/battle_of_the_sexes.json");
   const cpkit::lcp::SolutionSet all = cpkit::lcp::enumerate_all(game);
   expect(all.complete && !all.infinite && all.count() == 3, "enumeration finds 3 equilibria");
 

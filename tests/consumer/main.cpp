@@ -1,14 +1,22 @@
 // Solves a hand-checked 2x2 LCP through the installed cpkit::lcp and checks the answer.
 // M = [[2, 1], [1, 2]], q = (-5, -6): z = (4/3, 7/3), w = 0 (solve M z = -q).
+// The problem is read from the JSON file given as argv[1] (written by run_consumer_test.cmake):
+// a consumer that reads a problem file links the file readers and their dependencies
+// (simdjson), which cpkit.pc and cpkitConfig.cmake must both supply.
 #include <cmath>
+#include <cpkit/core/io.hpp>
 #include <cpkit/lcp/lemke.hpp>
 #include <iostream>
 
-int main() {
-  cpkit::LcpProblem p(cpkit::Mat{{2, 1}, {1, 2}}, cpkit::Vec{{-5, -6}});
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: consumer PROBLEM.json\n";
+    return 2;
+  }
+  const cpkit::LcpProblem p = cpkit::read_lcp_file(argv[1]);
   const auto r = cpkit::lcp::solve_lemke(p, {});
-  const bool ok = cpkit::is_solution(r.status) && std::abs(r.z[0] - 4.0 / 3.0) < 1e-12 &&
-                  std::abs(r.z[1] - 7.0 / 3.0) < 1e-12;
+  const bool ok = p.size() == 2 && cpkit::is_solution(r.status) &&
+                  std::abs(r.z[0] - 4.0 / 3.0) < 1e-12 && std::abs(r.z[1] - 7.0 / 3.0) < 1e-12;
   std::cout << "consumer: " << cpkit::to_string(r.status) << (ok ? " ok" : " WRONG") << '\n';
   return ok ? 0 : 1;
 }
