@@ -162,3 +162,18 @@ TEST_CASE("cpkit rate: text output", "[cli][rate]") {
   CHECK(r.out.find("count: 1") != std::string::npos);
   CHECK(r.out.find("stick point") != std::string::npos);
 }
+
+TEST_CASE("cpkit rate: A in units of 1e10 is solved, not a 'disagreement' (issue 24 item 17)",
+          "[cli][rate][units]") {
+  // Hand solution (slip+, dw_N = 0, dP_T = mu dP_N): dP_N = 4/17, dw_T^i = 15/17 1e-10; unique
+  // since a11 > mu |a12|. It used to exit 3 on an inconclusive enumeration.
+  for (const std::string a : {"--a11 1e10 --a12 3e9 --a22 1.2e10", "--a11 1e-10 --a12 3e-11 --a22 1.2e-10"}) {
+    const Run r = run_rate("--state b " + a + " --mu 0.5 --dF 1 0.5 --json");
+    CAPTURE(a, r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["count"] == 1);
+    CHECK(j["types"] == nlohmann::json({"slip+"}));
+    CHECK(j["solutions"][0]["rates"]["dP_N"].get<double>() == Approx(4.0 / 17).epsilon(1e-12));
+  }
+}

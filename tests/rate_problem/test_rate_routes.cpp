@@ -3,6 +3,7 @@
 // satisfies the rate laws (checked by rate_test_util.hpp, independent of the library). Route 3
 // (single LCP solvers) lands inside the set.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <random>
 
 #include "cpkit/lcp/solvers.hpp"
@@ -262,4 +263,60 @@ TEST_CASE("routes 1 and 2 agree on the degenerate lines (a11 = mu|a12|, Lambda =
     infinite += r1.infinite;
   }
   CHECK(infinite > 500);  // the segments and rays were actually exercised
+}
+
+TEST_CASE("rate problem in any units: A and the load scaled by 1e-12..1e12 (issue 24 item 17)",
+          "[rate][routes][units]") {
+  // Item 17: state b, A = 1e10 [[1, 0.3], [0.3, 1.2]], mu = 0.5, dF = (1, 0.5). Hand solution
+  // (slip+, Dw_N = 0, dP_T = mu dP_N): 1 - P/2 = a11' l, 0.5 - P = a12' l, so dP_N = 4/17,
+  // dP_T = 2/17, dw_T^i = 15/17 / 1e10; a11 > mu |a12|, so it is the only solution.
+  ContactState st;
+  st.label = StateLabel::kB;
+  for (double cA : {1e-12, 1e-6, 1.0, 1e3, 1e10, 1e12}) {
+    for (double cF : {1e-12, 1.0, 1e12}) {
+      CAPTURE(cA, cF);
+      ContactParameters p;
+      p.a11 = 1 * cA;
+      p.a12 = 0.3 * cA;
+      p.a22 = 1.2 * cA;
+      p.mu = 0.5;
+      const LoadRate f{1 * cF, 0.5 * cF};
+      for (RateMethod m : {RateMethod::kEnumerate, RateMethod::kAnalytic}) {
+        const RateSolutionSet s = solve_rate_problem(p, st, f, m);
+        CAPTURE(to_string(m), s.message);
+        CHECK(s.complete);
+        REQUIRE(s.count() == 1);
+        CHECK(s.solutions[0].type == SolutionType::kSlipPlus);
+        const Rates& r = s.solutions[0].start;
+        CHECK(std::abs(r.dP_N - 4.0 / 17 * cF) <= 1e-13 * cF);
+        CHECK(std::abs(r.dP_T - 2.0 / 17 * cF) <= 1e-13 * cF);
+        CHECK(std::abs(r.dw_Ti - 15.0 / 17 * cF / cA) <= 1e-13 * cF / cA);
+        CHECK(r.dw_N == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("rate problem at the ends of double's range (issue 24 item 5)", "[rate][routes][units]") {
+  ContactParameters p;
+  p.a11 = 1;
+  p.a12 = 0.3;
+  p.a22 = 1.2;
+  p.mu = 0.5;
+  ContactState st;
+  st.label = StateLabel::kB;
+  // dF = (1.7e308, 1): separation with dw_T = a22 dF_T / det A = 1.84e308: not representable.
+  CHECK_THROWS_WITH(solve_rate_problem(p, st, LoadRate{1.7e308, 1}),
+                    Catch::Contains("not representable"));
+  // dF = (1e308, 1): separation, dw = A^-1 dF (det A = 1.11).
+  const RateSolutionSet s = solve_rate_problem(p, st, LoadRate{1e308, 1});
+  REQUIRE(s.count() == 1);
+  CHECK(s.solutions[0].type == SolutionType::kSeparation);
+  CHECK(std::abs(s.solutions[0].start.dw_T / (1.2e308 / 1.11) - 1) <= 1e-14);
+  // subnormal dF = 2^-1063 (1, 0.5): the slip+ of the units test, scaled.
+  const double t = std::ldexp(1.0, -1063);
+  const RateSolutionSet u = solve_rate_problem(p, st, LoadRate{t, 0.5 * t});
+  REQUIRE(u.count() == 1);
+  CHECK(u.solutions[0].type == SolutionType::kSlipPlus);
+  CHECK(std::abs(u.solutions[0].start.dP_N / (4.0 / 17 * t) - 1) <= 1e-3);
 }

@@ -54,11 +54,18 @@ StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& o
       Stopwatch sw;
       StepPoints pts;
       enumerate_step_points(problem, ncp, pts, options.common.tol_acceptable);
+      if (pts.unrepresentable > 0)  // as enumerate_step and the rate problem: refused
+        throw InputError("step: a solution is not representable in double precision (its "
+                         "values overflow in these units)");
       r.solver = "active-set";
       if (pts.n == 0) {
         r.status = Status::kStalled;
         r.message = pts.infinite ? "the solutions form a continuum (use enumerate_step)"
-                                 : "complete active-set enumeration found no solution";
+                                 : pts.undecided > 0
+                                       ? "active-set enumeration: no candidate verified, " +
+                                             std::to_string(pts.undecided) +
+                                             " neither verified nor rejected (ill-conditioned)"
+                                       : "complete active-set enumeration found no solution";
         r.z = Vec::Zero(3);
         r.z[0] = problem.state.P_N0;
       } else {
