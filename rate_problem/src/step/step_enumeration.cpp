@@ -331,13 +331,14 @@ double sign_error(const StepProblem& n, int piece, const double u[5]) noexcept {
 void refine(const StepProblem& n, Candidate& c) noexcept {
   // The piece's own two conditions are imposed exactly (to rounding of their formulas).
   auto snap = [&](double* u) {
+    // (0.0 - x: no negative zeros in the output)
     const double P1 = n.state.P_N0 + u[1];
     if (c.piece == kPieceSep) {
-      u[0] = -n.state.P_T0;
-      u[1] = -n.state.P_N0;
+      u[0] = 0.0 - n.state.P_T0;
+      u[1] = 0.0 - n.state.P_N0;
     } else if (c.piece == kPieceStick) {
       u[4] = 0;
-      u[3] = -n.state.g0;
+      u[3] = 0.0 - n.state.g0;
     } else {
       const double s = c.piece == kPieceSlipPlus ? 1.0 : -1.0;
       u[0] = s * (n.params.mu * P1 - n.softening() * P1 * P1) - n.state.P_T0;
