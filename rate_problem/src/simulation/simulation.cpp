@@ -215,7 +215,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     if (pts.n > 1) {
       double bd = INFINITY;
       for (int i = 0; i < pts.n; ++i) {
-        const StepValues v = step_values(sp, pts.points[i].DP_N, pts.points[i].xi);
+        const StepValues& v = pts.points[i].values;
         const double d = std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight * std::abs(v.Dw_Ti);
         if (d < bd) {
           bd = d;
@@ -242,7 +242,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       }
     }
     const StepPoint& chosen = pts.points[best];
-    const StepValues v = step_values(sp, chosen.DP_N, chosen.xi);
+    const StepValues& v = chosen.values;
     res.max_residual = std::max(res.max_residual, ncp.residual(step_unknowns(v)));
     SimulationSample nx = cur;
     nx.step = res.steps + 1;

@@ -612,7 +612,8 @@ void enumerate_step_points(const StepProblem& problem, const StepNcp& /*ncp*/, S
     StepPoint pt = w.pts.points[i];
     pt.DP_N = std::ldexp(pt.DP_N, u.eF);
     pt.xi = std::ldexp(pt.xi, u.eL());
-    if (!all_finite(to_user(values_of(n, w.cand[i].u), u))) {
+    pt.values = to_user(values_of(n, w.cand[i].u), u);
+    if (!all_finite(pt.values)) {
       ++out.unrepresentable;
       continue;
     }

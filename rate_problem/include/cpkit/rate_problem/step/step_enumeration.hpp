@@ -95,6 +95,7 @@ struct StepPoint {
   SolutionType type = SolutionType::kStick;
   double DP_N = 0;
   double xi = 0;
+  StepValues values;  ///< the verified values (polished; step_values() would recompute them)
 };
 constexpr int kMaxStepPoints = 8;
 struct StepPoints {
