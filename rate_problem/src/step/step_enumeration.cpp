@@ -437,7 +437,7 @@ SolutionType type_of(const StepProblem& n, const Candidate& c) noexcept {
 
 /// Same physical point (within both candidates' forward tolerances)?
 bool same_point(const StepProblem& n, const Candidate& a, const Candidate& b) noexcept {
-  const double tol = std::min(1e-3, std::max(a.ftol, b.ftol));
+  const double tol = std::min(1e-6, std::max(a.ftol, b.ftol));
   const double fs = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
                               std::abs(n.load.dF_N), std::abs(a.u[0]), std::abs(a.u[1]),
                               std::abs(b.u[0]), std::abs(b.u[1])});
@@ -466,6 +466,9 @@ void try_point(const StepProblem& n, int piece, double x, double xi, double tol,
   c.u[2] = v0.Dw_T;
   c.u[3] = v0.Dw_N;
   c.u[4] = v0.Dw_Ti;
+  // A sign condition violated by 25 % of its scale is not a rounding matter: polishing moves
+  // the point by its forward error only, so such a candidate is rejected as it is.
+  if (sign_error(n, piece, c.u) > std::max(0.25, tol)) return;
   refine(n, c);
   if (!(c.backward <= kAccept)) {
     if (!(c.backward > tol)) ++w.pts.undecided;  // neither accepted nor rejected
