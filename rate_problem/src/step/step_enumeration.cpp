@@ -143,40 +143,53 @@ Units units_of(const StepProblem& p) noexcept {
   return u;
 }
 
+/// x 2^e: a multiplication by the exact factor when 2^e is a normal double (fast, and exact
+/// like ldexp unless the result leaves the normal range, where both round), else ldexp.
+struct Pow2 {
+  int e;
+  double f;
+  explicit Pow2(int e_) noexcept : e(e_), f(e_ >= -1000 && e_ <= 1000 ? std::ldexp(1.0, e_) : 0) {}
+  double operator()(double x) const noexcept { return f != 0 ? x * f : std::ldexp(x, e); }
+};
+
 /// The problem in the units `u` (every scaling a power of two: exact unless a value leaves
 /// double's range; a wear coefficient that underflows there is 0 to working precision).
 StepProblem normalise(const StepProblem& p, const Units& u) noexcept {
   StepProblem n = p;
-  n.params.a11 = std::ldexp(p.params.a11, -u.eA);
-  n.params.a12 = std::ldexp(p.params.a12, -u.eA);
-  n.params.a22 = std::ldexp(p.params.a22, -u.eA);
-  n.params.C_T = std::ldexp(p.params.C_T, u.eA);         // length/force
-  n.params.P_s = std::ldexp(p.params.P_s, -u.eF);        // k = k_a / (3 P_s): 1/force
-  n.wear.k_M = std::ldexp(p.wear.k_M, u.eF);             // 1/force
+  if (u.eF == 0 && u.eA == 0) return n;
+  const Pow2 dA(-u.eA), uA(u.eA), dF(-u.eF), uF(u.eF), dL(-u.eL());
+  n.params.a11 = dA(p.params.a11);
+  n.params.a12 = dA(p.params.a12);
+  n.params.a22 = dA(p.params.a22);
+  n.params.C_T = uA(p.params.C_T);  // length/force
+  n.params.P_s = dF(p.params.P_s);  // k = k_a / (3 P_s): 1/force
+  n.wear.k_M = uF(p.wear.k_M);      // 1/force
   if (!std::isfinite(n.params.P_s)) {
     n.params.k_a = 0;
     n.params.P_s = 1;
   }
-  n.state.P_T0 = std::ldexp(p.state.P_T0, -u.eF);
-  n.state.P_N0 = std::ldexp(p.state.P_N0, -u.eF);
-  n.state.g0 = std::ldexp(p.state.g0, -u.eL());
-  n.load.dF_T = std::ldexp(p.load.dF_T, -u.eF);
-  n.load.dF_N = std::ldexp(p.load.dF_N, -u.eF);
+  n.state.P_T0 = dF(p.state.P_T0);
+  n.state.P_N0 = dF(p.state.P_N0);
+  n.state.g0 = dL(p.state.g0);
+  n.load.dF_T = dF(p.load.dF_T);
+  n.load.dF_N = dF(p.load.dF_N);
   return n;
 }
 
 /// Values of the normalised problem in the caller's units.
 StepValues to_user(const StepValues& v, const Units& u) noexcept {
+  if (u.eF == 0 && u.eA == 0) return v;
+  const Pow2 F(u.eF), L(u.eL());
   StepValues w;
-  w.DP_T = std::ldexp(v.DP_T, u.eF);
-  w.DP_N = std::ldexp(v.DP_N, u.eF);
-  w.P_T1 = std::ldexp(v.P_T1, u.eF);
-  w.P_N1 = std::ldexp(v.P_N1, u.eF);
-  w.Dw_T = std::ldexp(v.Dw_T, u.eL());
-  w.Dw_N = std::ldexp(v.Dw_N, u.eL());
-  w.Dw_Ti = std::ldexp(v.Dw_Ti, u.eL());
-  w.Dw_w = std::ldexp(v.Dw_w, u.eL());
-  w.g1 = std::ldexp(v.g1, u.eL());
+  w.DP_T = F(v.DP_T);
+  w.DP_N = F(v.DP_N);
+  w.P_T1 = F(v.P_T1);
+  w.P_N1 = F(v.P_N1);
+  w.Dw_T = L(v.Dw_T);
+  w.Dw_N = L(v.Dw_N);
+  w.Dw_Ti = L(v.Dw_Ti);
+  w.Dw_w = L(v.Dw_w);
+  w.g1 = L(v.g1);
   return w;
 }
 
@@ -194,11 +207,14 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 enum Piece { kPieceSep = 0, kPieceStick = 1, kPieceSlipPlus = 2, kPieceSlipMinus = 3 };
 
 /// A candidate: u = (DP_T, DP_N, Dw_T, Dw_N, Dw_Ti) in normalised units.
+/// (No default member initialisers: Work holds eight of them per call on the hot path; every
+/// field is set before use.)
 struct Candidate {
-  int piece = kPieceStick;
-  double u[5] = {0, 0, 0, 0, 0};
-  double backward = INFINITY;  ///< unit-free backward error (equations and sign conditions)
-  double ftol = 1e-9;          ///< relative forward tolerance (from the conditioning)
+  int piece;
+  double u[5];
+  double backward;  ///< unit-free backward error (equations and sign conditions)
+  double ftol;      ///< relative forward tolerance (from the conditioning)
+  double fs, ds;    ///< force and displacement scales (scales_of) after polishing
 };
 
 double ratio(double num, double den) noexcept {
@@ -284,10 +300,10 @@ void scales_of(const StepProblem& n, const double u[5], double& fs, double& ds) 
 
 /// Backward error of the piece's equations (rows 0, 1, 4... in force units, 2 and the
 /// displacement rows in length units), each relative to its terms or the scale of its kind.
-double equation_error(const StepProblem& n, int piece, const double u[5]) noexcept {
-  double r[5], t[5], fs, ds;
+double equation_error(const StepProblem& n, int piece, const double u[5], double fs,
+                      double ds) noexcept {
+  double r[5], t[5];
   piece_equations(n, piece, u, r, t, nullptr);
-  scales_of(n, u, fs, ds);
   // Which rows are in length units: compatibility (2), and for stick xi = 0 (3) and the gap
   // rows g1 = 0 (4) of stick and slip.
   const bool len[5] = {false, false, true, piece == kPieceStick, piece != kPieceSep};
@@ -296,15 +312,21 @@ double equation_error(const StepProblem& n, int piece, const double u[5]) noexce
   return e;
 }
 
+double equation_error(const StepProblem& n, int piece, const double u[5]) noexcept {
+  double fs, ds;
+  scales_of(n, u, fs, ds);
+  return equation_error(n, piece, u, fs, ds);
+}
+
 /// Violations of the piece's sign conditions, relative to the candidate's scales.
-double sign_error(const StepProblem& n, int piece, const double u[5]) noexcept {
+double sign_error(const StepProblem& n, int piece, const double u[5], double fs,
+                  double ds) noexcept {
   const double DPT = u[0], DPN = u[1], DwN = u[3], xi = u[4];
   const double P0 = n.state.P_N0, PT0 = n.state.P_T0, g0 = n.state.g0;
   const double mu = n.params.mu, kc = n.softening();
   const double P1 = P0 + DPN, PT1 = PT0 + DPT, Pt = P0 + std::abs(DPN);
   const double Y = mu * P1 - kc * P1 * P1, Yt = mu * Pt + kc * Pt * Pt;
-  double fs, ds;
-  scales_of(n, u, fs, ds);
+  (void)fs;
   // Force conditions per direction: a normal force is judged against the normal forces of the
   // step, a friction margin against the tangential ones (a load of 1e6 along T must not excuse
   // a P_N1 of -1e-6 when the normal forces are of order 1e3).
@@ -324,6 +346,12 @@ double sign_error(const StepProblem& n, int piece, const double u[5]) noexcept {
     }
   }
   return e;
+}
+
+double sign_error(const StepProblem& n, int piece, const double u[5]) noexcept {
+  double fs, ds;
+  scales_of(n, u, fs, ds);
+  return sign_error(n, piece, u, fs, ds);
 }
 
 /// Polishes u by Newton steps on the piece's equations (rows scaled by their terms, LU with
@@ -349,7 +377,10 @@ void refine(const StepProblem& n, Candidate& c) noexcept {
   double err = equation_error(n, c.piece, c.u);
   Eigen::Matrix<double, 5, 5> J;
   double rcond = 1;
-  for (int it = 0; it < 4; ++it) {
+  // Already at the rounding level (the usual case for well-conditioned data, and the
+  // simulation's hot path): no factorisation, forward tolerance 1e-9.
+  const bool polished = err <= 64 * kEps;
+  for (int it = 0; it < 4 && !polished; ++it) {
     double r[5], t[5];
     piece_equations(n, c.piece, c.u, r, t, &J);
     Eigen::Matrix<double, 5, 1> rhs;
@@ -379,9 +410,10 @@ void refine(const StepProblem& n, Candidate& c) noexcept {
     std::copy(trial, trial + 5, c.u);
     err = e2;
   }
-  c.backward = std::max(err, sign_error(n, c.piece, c.u));
+  scales_of(n, c.u, c.fs, c.ds);
+  c.backward = std::max(err, sign_error(n, c.piece, c.u, c.fs, c.ds));
   // Forward error of the unknowns relative to their magnitudes: backward error / rcond.
-  c.ftol = std::max(1e-9, 16 * std::max(c.backward, kEps) / std::max(rcond, 1e-300));
+  c.ftol = polished ? 1e-9 : std::max(1e-9, 16 * std::max(c.backward, kEps) / std::max(rcond, 1e-300));
 }
 
 StepValues values_of(const StepProblem& n, const double u[5]) noexcept {
@@ -398,11 +430,6 @@ StepValues values_of(const StepProblem& n, const double u[5]) noexcept {
   return v;
 }
 
-double displacement_scale(const StepProblem& n, const double u[5]) noexcept {
-  double fs, ds;
-  scales_of(n, u, fs, ds);
-  return ds;
-}
 
 bool started_open(const StepProblem& n) noexcept {
   const ContactParameters& a = n.params;
@@ -417,8 +444,7 @@ bool started_open(const StepProblem& n) noexcept {
 SolutionType type_of(const StepProblem& n, const Candidate& c) noexcept {
   constexpr double kTypeTol = 1e-9;
   const double* u = c.u;
-  double fs, ds;
-  scales_of(n, u, fs, ds);
+  const double fs = c.fs, ds = c.ds;
   const double P1 = n.state.P_N0 + u[1];
   const bool open = started_open(n);
   auto by_slip = [&]() {
@@ -441,7 +467,7 @@ bool same_point(const StepProblem& n, const Candidate& a, const Candidate& b) no
   const double fs = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
                               std::abs(n.load.dF_N), std::abs(a.u[0]), std::abs(a.u[1]),
                               std::abs(b.u[0]), std::abs(b.u[1])});
-  const double ds = std::max(displacement_scale(n, a.u), displacement_scale(n, b.u));
+  const double ds = std::max(a.ds, b.ds);
   for (int j = 0; j < 5; ++j)
     if (std::abs(a.u[j] - b.u[j]) > tol * (j < 2 ? fs : ds)) return false;
   return true;
@@ -460,6 +486,8 @@ void try_point(const StepProblem& n, int piece, double x, double xi, double tol,
   if (!std::isfinite(x) || !std::isfinite(xi)) return;
   Candidate c;
   c.piece = piece;
+  c.backward = INFINITY;
+  c.ftol = 1e-9;
   const StepValues v0 = step_values(n, x, xi);
   c.u[0] = v0.DP_T;
   c.u[1] = v0.DP_N;
@@ -489,7 +517,10 @@ void try_point(const StepProblem& n, int piece, double x, double xi, double tol,
 /// Every candidate of the normalised problem `p` (normalise()).
 void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
   const Setup st = make_setup(p);
-  w.pts = StepPoints{};
+  w.pts.n = 0;
+  w.pts.infinite = false;
+  w.pts.undecided = 0;
+  w.pts.unrepresentable = 0;
   w.ncont = 0;
   // 1. P_N1 = 0: P_T1 = 0 fixes xi.
   {
@@ -606,16 +637,19 @@ void enumerate_step_points(const StepProblem& problem, const StepNcp& /*ncp*/, S
                            double tol) noexcept {
   const Units u = units_of(problem);
   const StepProblem n = normalise(problem, u);
-  Work w;
+  // One work area per thread: constructing it (eight StepPoints with their values) per call
+  // cost a fifth of this hot path (the simulation's per-step call).
+  thread_local Work w;
   enumerate_core(n, tol, w);
-  out = StepPoints{};
+  out.n = 0;
+  out.unrepresentable = 0;
   out.infinite = w.pts.infinite;
   out.undecided = w.pts.undecided;
   for (int i = 0; i < w.pts.n; ++i) {
     StepPoint pt = w.pts.points[i];
-    pt.DP_N = std::ldexp(pt.DP_N, u.eF);
-    pt.xi = std::ldexp(pt.xi, u.eL());
     pt.values = to_user(values_of(n, w.cand[i].u), u);
+    pt.DP_N = pt.values.DP_N;
+    pt.xi = pt.values.Dw_Ti;
     if (!all_finite(pt.values)) {
       ++out.unrepresentable;
       continue;
@@ -660,8 +694,10 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
       v = step_values(n, x, c.s * (c.b0 + c.b1 * x) / st.detA);
       Candidate k;
       k.piece = piece;
+      k.ftol = 1e-9;
       const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
       std::copy(u, u + 5, k.u);
+      scales_of(n, k.u, k.fs, k.ds);
       k.backward = std::max(equation_error(n, piece, k.u), sign_error(n, piece, k.u));
       if (!(k.backward <= kAccept)) ++w.pts.undecided;  // an end not verified
       return k;
@@ -730,8 +766,11 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     if (listed) continue;
     Candidate k;
     k.piece = kPieceStick;
+    k.backward = 0;
+    k.ftol = 1e-9;
     const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
     std::copy(u, u + 5, k.u);
+    scales_of(n, k.u, k.fs, k.ds);
     add_point(v, type_of(n, k), 0);
   }
   for (auto& c : conts) set.solutions.push_back(c);
