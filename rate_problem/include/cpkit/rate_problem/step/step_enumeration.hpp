@@ -25,10 +25,13 @@
 /// scaling exact, so scaling A, or A and the loads, changes nothing but the units of the
 /// answer, and loads near 1e308 or subnormal ones are solved like loads of order 1. Every
 /// candidate is polished by Newton steps on the model's own equations (equilibrium
-/// DF - DP = A Dw, Dw_T = C_T DP_T + Dw_Ti and the two active conditions of its piece) and then
-/// judged by its backward error: the largest violation of those equations and of the piece's
-/// sign conditions (P_N1 >= 0, g1 <= 0, |P_T1| <= Y(P_N1), s Dw_T^i >= 0), each divided by the
-/// sum of the magnitudes of its own terms. Backward error <= 1e-12: accepted; > tol: rejected;
+/// DF - DP = A Dw, Dw_T = C_T DP_T + Dw_Ti and the two active conditions of its piece, imposed
+/// exactly) unless it is already at the rounding level, and then judged by its backward error:
+/// the largest violation of those equations, each divided by the magnitudes of its own terms
+/// (at least the step's force or displacement scale), and of the piece's sign conditions
+/// (P_N1 >= 0 against the normal forces, |P_T1| <= Y(P_N1) against the tangential ones,
+/// g1 <= 0 and s Dw_T^i >= 0 against the displacements). A sign condition violated by 25 %
+/// rejects a candidate before polishing. Backward error <= 1e-12: accepted; > tol: rejected;
 /// in between: neither, and the set says complete = false. A solution whose values overflow in
 /// the caller's units is not representable: enumerate_step throws InputError (as the rate
 /// problem does), enumerate_step_points counts it in `unrepresentable`. Types come from the
