@@ -177,3 +177,18 @@ TEST_CASE("cpkit rate: A in units of 1e10 is solved, not a 'disagreement' (issue
     CHECK(j["solutions"][0]["rates"]["dP_N"].get<double>() == Approx(4.0 / 17).epsilon(1e-12));
   }
 }
+
+TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 item 17)",
+          "[cli][rate]") {
+  // dF = (a11 (1 + 1.16e-12), a12): N = a11 dF_N - a12 dF_T is 1e-12 of its terms, on the
+  // critical direction N = 0 to within rounding; the enumeration's sign test cannot call it
+  // (it says so), which is inconclusive (5), not a disagreement between routes (3, as before).
+  const Run r = run_rate("--state b --a11 1.0142831963176735 --a12 0.8450714454408795 "
+                         "--a22 1.2075902949448927 --mu 1.038170126179592 "
+                         "--dF 1.0142831963188452 0.8450714454408795 --json");
+  CHECK(r.code == 5);
+  CHECK(r.err.find("not conclusive") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == false);
+  CHECK_FALSE(j.contains("count"));
+}
