@@ -9,7 +9,10 @@
 // ipopt) find at most one solution: their output says "a solution" with complete = false and
 // no count (the set may hold more; the enumerated count is shown for reference, as
 // "enumerated_count" in JSON), and their point is checked against the enumerated set. Exit codes: 0 at least one solution, 1 none
-// (or the single solver found none), 2 bad input, 3 the routes disagree (reason on stderr).
+// (or the single solver found none), 2 bad input (also: a solution not representable in
+// double), 3 the routes disagree (reason on stderr), 5 the enumeration is inconclusive (sign
+// tests too close to call; the routes run in normalised units, so this is conditioning, not
+// units).
 //
 // N points (rate_system.cpp): cpkit rate --system FILE [--dF ... 2N numbers] [--json]
 //              [--method enumerate|lemke|fb-newton|ipopt]
@@ -207,6 +210,7 @@ int run_rate(const RateArgs& a) {
   const rate::RateSolutionSet s = rate::solve_rate_problem(p, st, f, *method);
   int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
   std::string problem;
+  bool inconclusive = false;  // the enumeration could not decide: exit 5, never 3
   rate::RateSolutionSet ref;
   const bool single = single_solver(*method);
   if (*method == rate::RateMethod::kEnumerate) {
@@ -215,6 +219,7 @@ int run_rate(const RateArgs& a) {
     std::string why;
     if (!s.complete) {
       problem = "the enumeration is not conclusive: " + s.message;
+      inconclusive = true;
     } else if (!rate::same_solution_sets(s, analytic, 1e-7, &why)) {
       problem = "enumeration and analytic routes disagree: " + why;
     }
@@ -239,7 +244,7 @@ int run_rate(const RateArgs& a) {
   if (a.json) print_json(set_json(s, reference)); else print_text(s, a, reference);
   if (!problem.empty()) {
     std::cerr << "cpkit rate: " << problem << '\n';
-    code = kExitDisagreement;
+    code = inconclusive ? kExitInconclusive : kExitDisagreement;
   }
   return code;
 }

@@ -9,8 +9,10 @@
 //                                        ("dim": 3, one point: step_3d.cpp)
 //
 // --all: every solution (complete active-set enumeration; continua as segments/rays, jumps
-// flagged). Otherwise one solution by the solver chain. Exit codes: 0 at least one solution,
-// 1 none, 2 bad input; N points: 5 when none was found and the enumeration is not complete.
+// flagged; "complete": false when a candidate could be neither verified nor rejected, or a
+// solution does not fit in double). Otherwise one solution by the solver chain. Exit codes:
+// 0 at least one solution, 1 none, 2 bad input, 5 none was found and the enumeration is not
+// complete.
 #include <iostream>
 #include <memory>
 #include <set>
@@ -95,6 +97,8 @@ int run_all(const rate::StepProblem& p, bool json) {
     if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
     j["types"] = std::vector<std::string>(types.begin(), types.end());
     j["continuous_count"] = s.continuous_count;
+    j["complete"] = s.complete;
+    if (!s.complete) j["message"] = s.message;
     nlohmann::json sols = nlohmann::json::array();
     for (const auto& sol : s.solutions) {
       nlohmann::json e;
@@ -128,6 +132,7 @@ int run_all(const rate::StepProblem& p, bool json) {
               << " solution(s)";
     if (s.continuous_count >= 0)
       std::cout << ", " << s.continuous_count << " continuous (rate-consistent)";
+    if (!s.complete) std::cout << " (NOT proved complete)";
     std::cout << "\n";
     for (const auto& sol : s.solutions) {
       std::cout << "  " << rate::to_string(sol.type) << " (" << rate::to_string(sol.kind)
@@ -146,8 +151,10 @@ int run_all(const rate::StepProblem& p, bool json) {
     if (s.continuous_count == 0 && !s.solutions.empty())
       std::cout << "note: every solution is a jump: the rate problem has no solution in this "
                    "load direction\n";
+    if (!s.complete) std::cout << "note: " << s.message << "\n";
   }
-  return s.solutions.empty() ? kExitNoSolution : kExitOk;
+  if (!s.solutions.empty()) return kExitOk;
+  return s.complete ? kExitNoSolution : kExitInconclusive;
 }
 
 int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {

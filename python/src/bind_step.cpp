@@ -79,6 +79,8 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
   d["infinite"] = set.infinite;
   d["count"] = set.count();
   d["continuous_count"] = set.continuous_count;
+  d["complete"] = set.complete;  // false: a candidate neither verified nor rejected
+  d["message"] = set.message;
   d["types"] = type_names(set.type_mask());
   return d;
 }

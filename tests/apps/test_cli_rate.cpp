@@ -162,3 +162,33 @@ TEST_CASE("cpkit rate: text output", "[cli][rate]") {
   CHECK(r.out.find("count: 1") != std::string::npos);
   CHECK(r.out.find("stick point") != std::string::npos);
 }
+
+TEST_CASE("cpkit rate: A in units of 1e10 is solved, not a 'disagreement' (issue 24 item 17)",
+          "[cli][rate][units]") {
+  // Hand solution (slip+, dw_N = 0, dP_T = mu dP_N): dP_N = 4/17, dw_T^i = 15/17 1e-10; unique
+  // since a11 > mu |a12|. It used to exit 3 on an inconclusive enumeration.
+  for (const std::string a : {"--a11 1e10 --a12 3e9 --a22 1.2e10", "--a11 1e-10 --a12 3e-11 --a22 1.2e-10"}) {
+    const Run r = run_rate("--state b " + a + " --mu 0.5 --dF 1 0.5 --json");
+    CAPTURE(a, r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["count"] == 1);
+    CHECK(j["types"] == nlohmann::json({"slip+"}));
+    CHECK(j["solutions"][0]["rates"]["dP_N"].get<double>() == Approx(4.0 / 17).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 item 17)",
+          "[cli][rate]") {
+  // dF = (a11 (1 + 1.16e-12), a12): N = a11 dF_N - a12 dF_T is 1e-12 of its terms, on the
+  // critical direction N = 0 to within rounding; the enumeration's sign test cannot call it
+  // (it says so), which is inconclusive (5), not a disagreement between routes (3, as before).
+  const Run r = run_rate("--state b --a11 1.0142831963176735 --a12 0.8450714454408795 "
+                         "--a22 1.2075902949448927 --mu 1.038170126179592 "
+                         "--dF 1.0142831963188452 0.8450714454408795 --json");
+  CHECK(r.code == 5);
+  CHECK(r.err.find("not conclusive") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == false);
+  CHECK_FALSE(j.contains("count"));
+}

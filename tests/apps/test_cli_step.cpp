@@ -282,3 +282,59 @@ TEST_CASE("CliSimulateSystemOfIndependentPointsEqualsOneSimulationEach", "[cli][
   CHECK(bad.code == 2);
   CHECK(bad.err.find("cannot be combined with a system") != std::string::npos);
 }
+
+TEST_CASE("CliStepInAnyUnitsAndAtTheEndsOfDoublesRange", "[cli][step][units]") {
+  // Issue 24 item 3: A = 1e10 [[1, 0.3], [0.3, 1.2]], DF = (1, 0.5) from grazing: one slip+
+  // (hand: P_N1 = 4/17, P_T1 = 2/17, Dw_T^i = 15/17 1e-10); no penetrating "separation".
+  const Run r = run_cli("step --a11 1e10 --a12 3e9 --a22 1.2e10 --mu 0.5 --P_T0 0 --P_N0 0 "
+                        "--g0 0 --DF 1 0.5 --all --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["count"] == 1);
+  CHECK(j["complete"] == true);
+  CHECK(j["types"] == nlohmann::json({"slip+"}));
+  CHECK(j["solutions"][0]["values"]["P_N1"].get<double>() == Approx(4.0 / 17).epsilon(1e-12));
+  CHECK(j["solutions"][0]["values"]["Dw_Ti"].get<double>() ==
+        Approx(15.0 / 17 * 1e-10).epsilon(1e-12));
+  // cond(A) = 1e7: one slip- (exact rational solution: DP_N = 0.1802709301241728,
+  // Dw_T^i = -1.583259173274164e-11, 43 % of Dw_T), never "stick".
+  const Run c = run_cli("step --a11 127600897.60974222 --a12 34985746.76265956 "
+                        "--a22 9592443.16983857 --mu 1.468801105377418 --C_T 7.96941781947783e-11 "
+                        "--P_T0 0 --P_N0 0 --g0 0 --DF -0.2694949768340834 0.17897876001458093 "
+                        "--all --json");
+  INFO(c.err);
+  REQUIRE(c.code == 0);
+  const auto k = nlohmann::json::parse(c.out);
+  CHECK(k["types"] == nlohmann::json({"slip-"}));
+  CHECK(k["count"] == 1);
+  CHECK(k["solutions"][0]["values"]["Dw_Ti"].get<double>() ==
+        Approx(-1.583259173274164e-11).epsilon(1e-6));
+  // Item 5: DF = (1.7e308, 1): the separation has Dw_T = 1.84e308 > DBL_MAX: refused, exit 2,
+  // as `rate` and `simulate` do; DF = (1e308, 1): the separation, Dw_T = 1.2e308 / 1.11.
+  const std::string unit = "--a11 1 --a12 0.3 --a22 1.2 --mu 0.5 ";
+  for (const std::string& cmd :
+       {"step " + unit + "--P_T0 0 --P_N0 0 --g0 0 --DF 1.7e308 1 --all",
+        "step " + unit + "--P_T0 0 --P_N0 0 --g0 0 --DF 1.7e308 1",
+        "rate --state b " + unit + "--dF 1.7e308 1",
+        "simulate " + unit + "--load ramp --F_T1 1.7e308 --F_N1 1 --steps 1"}) {
+    const Run b = run_cli(cmd);
+    CAPTURE(cmd, b.out);
+    CHECK(b.code == 2);
+    CHECK(b.err.find("not representable") != std::string::npos);
+  }
+  const Run big = run_cli("step " + unit + "--P_T0 0 --P_N0 0 --g0 0 --DF 1e308 1 --all --json");
+  INFO(big.err);
+  REQUIRE(big.code == 0);
+  const auto bj = nlohmann::json::parse(big.out);
+  CHECK(bj["types"] == nlohmann::json({"separation"}));
+  CHECK(bj["solutions"][0]["values"]["Dw_T"].get<double>() == Approx(1.2e308 / 1.11).epsilon(1e-13));
+  // Subnormal loads: DF = (1e-320, 0.5e-320) is the (1, 0.5) problem scaled: one slip+.
+  const Run sub = run_cli("step " + unit + "--P_T0 0 --P_N0 0 --g0 0 --DF 1e-320 5e-321 --all --json");
+  INFO(sub.err);
+  REQUIRE(sub.code == 0);
+  CHECK(nlohmann::json::parse(sub.out)["types"] == nlohmann::json({"slip+"}));
+  const Run rsub = run_cli("rate --state b " + unit + "--dF 1e-320 5e-321 --json");
+  REQUIRE(rsub.code == 0);
+  CHECK(nlohmann::json::parse(rsub.out)["types"] == nlohmann::json({"slip+"}));
+}

@@ -3,6 +3,7 @@
 // satisfies the rate laws (checked by rate_test_util.hpp, independent of the library). Route 3
 // (single LCP solvers) lands inside the set.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <random>
 
 #include "cpkit/lcp/solvers.hpp"
@@ -262,4 +263,158 @@ TEST_CASE("routes 1 and 2 agree on the degenerate lines (a11 = mu|a12|, Lambda =
     infinite += r1.infinite;
   }
   CHECK(infinite > 500);  // the segments and rays were actually exercised
+}
+
+TEST_CASE("rate problem in any units: A and the load scaled by 1e-12..1e12 (issue 24 item 17)",
+          "[rate][routes][units]") {
+  // Item 17: state b, A = 1e10 [[1, 0.3], [0.3, 1.2]], mu = 0.5, dF = (1, 0.5). Hand solution
+  // (slip+, Dw_N = 0, dP_T = mu dP_N): 1 - P/2 = a11' l, 0.5 - P = a12' l, so dP_N = 4/17,
+  // dP_T = 2/17, dw_T^i = 15/17 / 1e10; a11 > mu |a12|, so it is the only solution.
+  ContactState st;
+  st.label = StateLabel::kB;
+  for (double cA : {1e-12, 1e-6, 1.0, 1e3, 1e10, 1e12}) {
+    for (double cF : {1e-12, 1.0, 1e12}) {
+      CAPTURE(cA, cF);
+      ContactParameters p;
+      p.a11 = 1 * cA;
+      p.a12 = 0.3 * cA;
+      p.a22 = 1.2 * cA;
+      p.mu = 0.5;
+      const LoadRate f{1 * cF, 0.5 * cF};
+      for (RateMethod m : {RateMethod::kEnumerate, RateMethod::kAnalytic}) {
+        const RateSolutionSet s = solve_rate_problem(p, st, f, m);
+        CAPTURE(to_string(m), s.message);
+        CHECK(s.complete);
+        REQUIRE(s.count() == 1);
+        CHECK(s.solutions[0].type == SolutionType::kSlipPlus);
+        const Rates& r = s.solutions[0].start;
+        CHECK(std::abs(r.dP_N - 4.0 / 17 * cF) <= 1e-13 * cF);
+        CHECK(std::abs(r.dP_T - 2.0 / 17 * cF) <= 1e-13 * cF);
+        CHECK(std::abs(r.dw_Ti - 15.0 / 17 * cF / cA) <= 1e-13 * cF / cA);
+        CHECK(r.dw_N == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("rate problem at the ends of double's range (issue 24 item 5)", "[rate][routes][units]") {
+  ContactParameters p;
+  p.a11 = 1;
+  p.a12 = 0.3;
+  p.a22 = 1.2;
+  p.mu = 0.5;
+  ContactState st;
+  st.label = StateLabel::kB;
+  // dF = (1.7e308, 1): separation with dw_T = a22 dF_T / det A = 1.84e308: not representable.
+  CHECK_THROWS_WITH(solve_rate_problem(p, st, LoadRate{1.7e308, 1}),
+                    Catch::Contains("not representable"));
+  // dF = (1e308, 1): separation, dw = A^-1 dF (det A = 1.11).
+  const RateSolutionSet s = solve_rate_problem(p, st, LoadRate{1e308, 1});
+  REQUIRE(s.count() == 1);
+  CHECK(s.solutions[0].type == SolutionType::kSeparation);
+  CHECK(std::abs(s.solutions[0].start.dw_T / (1.2e308 / 1.11) - 1) <= 1e-14);
+  // subnormal dF = 2^-1063 (1, 0.5): the slip+ of the units test, scaled.
+  const double t = std::ldexp(1.0, -1063);
+  const RateSolutionSet u = solve_rate_problem(p, st, LoadRate{t, 0.5 * t});
+  REQUIRE(u.count() == 1);
+  CHECK(u.solutions[0].type == SolutionType::kSlipPlus);
+  CHECK(std::abs(u.solutions[0].start.dP_N / (4.0 / 17 * t) - 1) <= 1e-3);
+}
+
+TEST_CASE("rate problem at cond(A) = 1e12: a slip of 1 beside a separation of 1e11 is a slip",
+          "[rate][routes][conditioning]") {
+  // Found by a random cond sweep: the enumeration typed the slip+ point "stick" because its type
+  // test used a scale grown by the separation vertex (dw_T = 1.3e11), and `cpkit rate` exited 3.
+  // Exact rational solution of the doubles (sympy, every active set): separation, stick, and
+  // slip+ with dP_N = 0.17522969854464887, dP_T = 0.34385888164409234, dw_T^i = 1.0299381157285108.
+  ContactParameters p;
+  p.a11 = 0.38194048139952747;
+  p.a12 = 0.48586206897353046;
+  p.a22 = 0.618059518601419;
+  p.mu = 1.962332210235906;
+  ContactState st;
+  st.label = StateLabel::kB;
+  const LoadRate f{0.7372339413771619, 0.6756375623672025};
+  for (RateMethod m : {RateMethod::kEnumerate, RateMethod::kAnalytic}) {
+    const RateSolutionSet s = solve_rate_problem(p, st, f, m);
+    CAPTURE(to_string(m), s.message);
+    REQUIRE(s.complete);
+    REQUIRE(s.count() == 3);
+    CHECK(s.type_mask() == ((1u << static_cast<unsigned>(SolutionType::kSeparation)) |
+                            (1u << static_cast<unsigned>(SolutionType::kStick)) |
+                            (1u << static_cast<unsigned>(SolutionType::kSlipPlus))));
+    for (const auto& x : s.solutions) {
+      if (x.type != SolutionType::kSlipPlus) continue;
+      CHECK(std::abs(x.start.dP_N - 0.17522969854464887) <= 1e-6);
+      CHECK(std::abs(x.start.dw_Ti - 1.0299381157285108) <= 1e-4);
+    }
+  }
+}
+
+TEST_CASE("rate problem over cond(A) 1e2..1e12: the constructed solution, or incomplete",
+          "[rate][routes][conditioning]") {
+  // Construct-then-check, as for the step (test_step_conditioning.cpp): integer
+  // A = [[d1 + k^2 d2, k d2], [k d2, d2]] (det = d1 d2, cond ~ k^4 d2 / d1), a state-b solution
+  // chosen first (separation, stick inside the cone, or slip), dF = dP + A dw exactly. Since
+  // a11 > mu |a12| the state-b solution is unique (Stromberg et al. 1996, Sec. 4.3), so the
+  // enumeration route (the default, and what `cpkit rate` prints) must list exactly it, or say
+  // complete = false. (The analytic route snaps sign tests within 1e-9 of their terms to 0
+  // without saying so: at cond 1e12 it can call a separation with N = -2 against terms of 1e10
+  // a zero-force slip; `cpkit rate` then reports a disagreement, exit 3, never a false answer.)
+  std::mt19937_64 rng(20261127);
+  std::uniform_int_distribution<int> small(1, 7), type(0, 3), sgn(0, 1);
+  ContactState st;
+  st.label = StateLabel::kB;
+  int complete = 0, total = 0;
+  for (int e = 2; e <= 12; ++e) {
+    for (int rep = 0; rep < 12; ++rep) {
+      const double d1 = small(rng), d2 = small(rng);
+      double k = std::round(std::pow(std::pow(10.0, e) * d1 / d2, 0.25));
+      if (sgn(rng)) k = -k;
+      ContactParameters p;
+      p.a11 = d1 + k * k * d2;
+      p.a12 = k * d2;
+      p.a22 = d2;
+      p.mu = small(rng) / 8.0;
+      const int t = type(rng);
+      double dPT = 0, dPN = 0, dwT = 0, dwN = 0;
+      SolutionType want = SolutionType::kStick;
+      if (t == 0) {
+        dwT = (2 * sgn(rng) - 1) * small(rng) / 8.0;
+        dwN = -small(rng) / 8.0;
+        want = SolutionType::kSeparation;
+      } else if (t == 1) {
+        dPN = 8 * small(rng);
+        dPT = (2 * sgn(rng) - 1) * (small(rng) % 4) * p.mu * dPN / 8;
+      } else {
+        const double s = t == 2 ? 1 : -1;
+        dPN = 8 * small(rng);
+        dPT = s * p.mu * dPN;
+        dwT = s * small(rng) / 8.0;
+        want = t == 2 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
+      }
+      const LoadRate f{dPT + p.a11 * dwT + p.a12 * dwN, dPN + p.a12 * dwT + p.a22 * dwN};
+      CAPTURE(e, rep, p.a11, p.a12, p.a22, p.mu, f.dF_T, f.dF_N, t);
+      const double ftol = std::max(1e-10, 1e-14 * std::pow(10.0, e + 1));
+      const double F = std::abs(f.dF_T) + std::abs(f.dF_N), D = std::abs(dwT) + std::abs(dwN);
+      for (RateMethod m : {RateMethod::kEnumerate}) {
+        const RateSolutionSet s = solve_rate_problem(p, st, f, m);
+        CAPTURE(to_string(m), s.message);
+        ++total;
+        if (s.complete) {
+          ++complete;
+          REQUIRE(s.count() == 1);
+        }
+        for (const auto& x : s.solutions) {
+          CHECK(x.type == want);
+          CHECK(std::abs(x.start.dP_T - dPT) <= ftol * F);
+          CHECK(std::abs(x.start.dP_N - dPN) <= ftol * F);
+          CHECK(std::abs(x.start.dw_T - dwT) <= ftol * (D + F / p.a11));
+          CHECK(std::abs(x.start.dw_N - dwN) <= ftol * (D + F / p.a11));
+        }
+      }
+    }
+  }
+  INFO("complete answers: " << complete << " of " << total);
+  CHECK(complete >= total * 3 / 4);
 }

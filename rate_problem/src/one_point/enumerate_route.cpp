@@ -63,7 +63,10 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   res.ambiguous = set.ambiguous;
   res.dropped = set.dropped;
   const double sF = load_scale(f);
-  double U = sF, V = sF * (p.C_T + 1.0 / p.a11);
+  // V0: the load's own displacement scale. Type decisions use it, not V (which grows with the
+  // largest vertex): a separation vertex of 1e11 must not make a slip of 1 look like stick.
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);
+  double U = sF, V = V0;
   detail::P2 vert[8];
   for (int k = 0; k < set.num_points; ++k) {
     vert[k] = detail::P2{set.z[k](0), set.z[k](1) - set.z[k](2)};
@@ -85,7 +88,7 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   }
   const double c1 = 1.0 + p.a11 * p.C_T;
   TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
-             c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V};
+             c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
   plane.add_affine(type.S, -c1, -p.a12);
   plane.add_affine(0.0, 0.0, 1.0);
   res.infinite = plane.num_lines() > 0;
@@ -106,7 +109,8 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
   const double u0 = state_d_rates(p, st, f, 0.0).dP_N;
   const double u1 = state_d_rates(p, st, LoadRate{}, 1.0).dP_N;
   const double sF = load_scale(f);
-  double U = sF, V = sF * (p.C_T + 1.0 / p.a11);
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
+  double U = sF, V = V0;
   detail::P2 vert[2];
   for (int k = 0; k < set.num_points; ++k) {
     const double lam = set.z[k](0);
@@ -129,7 +133,7 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
     }
     plane.add_piece(pv, nv, pr, pc.num_rays);
   }
-  TypeD type{V};
+  TypeD type{V0};
   plane.add_affine(0.0, 0.0, 1.0);
   res.infinite = plane.num_lines() > 0;
   res.n = plane.finish(type, res.pieces);
@@ -185,7 +189,8 @@ void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen
   const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
   constexpr double kFeas = 1e-10;  // relative tolerance of the sign tests
   const double sF = load_scale(f);
-  double U = sF, V = sF * (p.C_T + 1.0 / p.a11);
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
+  double U = sF, V = V0;
   detail::P2 pts[6];
   int np = 0;
   auto try_support = [&](double z0, double z1, double z2) {
@@ -215,7 +220,7 @@ void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen
   }
   const double c1 = 1.0 + p.a11 * p.C_T;
   const TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
-                   c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V};
+                   c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
   sum.count = 0;
   sum.types = 0;
   for (int k = 0; k < np; ++k) {

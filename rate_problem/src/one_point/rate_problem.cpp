@@ -112,22 +112,83 @@ const char* single_solver_name(RateMethod m) {
 
 }  // namespace
 
-RateSolutionSet solve_rate_problem(const ContactParameters& params, const ContactState& state,
-                                   const LoadRate& load, RateMethod method) {
-  RateSolutionSet out;
+namespace {
+
+int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
+  int e = 0;
+  std::frexp(v, &e);
+  return e - 1;
+}
+
+Rates scaled_rates(const Rates& r, int eF, int eL) noexcept {
+  Rates s;
+  s.dP_T = std::ldexp(r.dP_T, eF);
+  s.dP_N = std::ldexp(r.dP_N, eF);
+  s.dw_T = std::ldexp(r.dw_T, eL);
+  s.dw_N = std::ldexp(r.dw_N, eL);
+  s.dw_Ti = std::ldexp(r.dw_Ti, eL);
+  s.dw_w = std::ldexp(r.dw_w, eL);
+  return s;
+}
+
+bool finite_rates(const Rates& r) noexcept {
+  return std::isfinite(r.dP_T) && std::isfinite(r.dP_N) && std::isfinite(r.dw_T) &&
+         std::isfinite(r.dw_N) && std::isfinite(r.dw_Ti) && std::isfinite(r.dw_w);
+}
+
+RateSolutionSet dispatch(const ContactParameters& params, const ContactState& state,
+                         const LoadRate& load, RateMethod method) {
   switch (method) {
     case RateMethod::kEnumerate:
-      out = solve_rate_enumerate(params, state, load);
-      break;
+      return solve_rate_enumerate(params, state, load);
     case RateMethod::kAnalytic:
-      out = solve_rate_analytic(params, state, load);
-      break;
+      return solve_rate_analytic(params, state, load);
     case RateMethod::kLemke:
     case RateMethod::kFbNewton:
     case RateMethod::kIpopt:
-      out = solve_rate_single(params, state, load, single_solver_name(method));
       break;
   }
+  return solve_rate_single(params, state, load, single_solver_name(method));
+}
+
+}  // namespace
+
+RateSolutionSet solve_rate_problem(const ContactParameters& params, const ContactState& state,
+                                   const LoadRate& load, RateMethod method) {
+  detail::validate_inputs(params, state, load);
+  // Every route runs in normalised units: stiffnesses divided by 2^eA (eA from max(a11, a22)),
+  // the load rate by 2^eF (the rates are linear in it), lengths then in units of 2^(eF - eA).
+  // Powers of two make this exact: the answer does not depend on the units of A or of the
+  // load, and loads near 1e308 or subnormal ones are solved like loads of order 1 (issue 24).
+  // The state (P_N) and the wear and softening constants keep their units: with forces
+  // unscaled, kappa = k_a P_N / (3 P_s) is unchanged.
+  const int eA = exponent_of(std::max(params.a11, params.a22));
+  const double fmax = std::max(std::abs(load.dF_T), std::abs(load.dF_N));
+  const int eF = fmax > 0 ? exponent_of(fmax) : 0;
+  ContactParameters pn = params;
+  pn.a11 = std::ldexp(params.a11, -eA);
+  pn.a12 = std::ldexp(params.a12, -eA);
+  pn.a22 = std::ldexp(params.a22, -eA);
+  pn.C_T = std::ldexp(params.C_T, eA);
+  const LoadRate fn{std::ldexp(load.dF_T, -eF), std::ldexp(load.dF_N, -eF)};
+  RateSolutionSet out = dispatch(pn, state, fn, method);
+  const int eL = eF - eA;
+  for (auto& s : out.solutions) {
+    s.start = scaled_rates(s.start, eF, eL);
+    s.end = scaled_rates(s.end, eF, eL);
+    s.direction = scaled_rates(s.direction, 0, -eA);  // a direction: any positive factor
+    const bool fits = finite_rates(s.start) &&
+                      (s.kind != RateSolution::Kind::kSegment || finite_rates(s.end)) &&
+                      (s.kind != RateSolution::Kind::kRay || finite_rates(s.direction));
+    if (!fits)
+      throw InputError("rate problem: a solution is not representable in double precision "
+                       "(its rates overflow in these units)");
+  }
+  const RateIndicators ind = rate_indicators(params, state);
+  out.Lambda = ind.Lambda;
+  out.D_plus = ind.D_plus;
+  out.D_minus = ind.D_minus;
+  out.scale = detail::rate_scale(params, load);
   return out;
 }
 

@@ -179,6 +179,14 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     sp.load.dF_N = lp.F_N - cur.F_N;
     const StepNcp ncp = build_step_ncp_unchecked(sp);
     enumerate_step_points(sp, ncp, pts, opt.tol);
+    if (pts.unrepresentable > 0) {
+      // As `cpkit step` and `cpkit rate`: a solution beyond double's range is refused.
+      std::ostringstream m;
+      m << "step to t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N
+        << ")): a solution is not representable in double precision (it overflows in these "
+           "units)";
+      throw InputError(m.str());
+    }
     if (pts.n == 0) {
       std::ostringstream m;
       m << "stopped before t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N
@@ -188,8 +196,13 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
         m << "the step's solutions form a continuum (degenerate data); no rule can choose. ";
       } else {
         res.outcome = SimulationResult::Outcome::kNoSolution;
-        m << "the step has no solution (complete active-set enumeration: no separation, stick "
-             "or slip solution satisfies the step NCP). ";
+        if (pts.undecided > 0)
+          m << "no step solution was verified, and " << pts.undecided
+            << " candidate(s) could be neither verified nor rejected (ill-conditioned data: "
+               "inconclusive). ";
+        else
+          m << "the step has no solution (complete active-set enumeration: no separation, "
+               "stick or slip solution satisfies the step NCP). ";
         if (a.criterion == Criterion::kSoftening && sp.params.k() > 0)
           m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << a.mu / sp.params.k()
             << " (condition (46)). ";
@@ -202,7 +215,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     if (pts.n > 1) {
       double bd = INFINITY;
       for (int i = 0; i < pts.n; ++i) {
-        const StepValues v = step_values(sp, pts.points[i].DP_N, pts.points[i].xi);
+        const StepValues& v = pts.points[i].values;
         const double d = std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight * std::abs(v.Dw_Ti);
         if (d < bd) {
           bd = d;
@@ -229,7 +242,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       }
     }
     const StepPoint& chosen = pts.points[best];
-    const StepValues v = step_values(sp, chosen.DP_N, chosen.xi);
+    const StepValues& v = chosen.values;
     res.max_residual = std::max(res.max_residual, ncp.residual(step_unknowns(v)));
     SimulationSample nx = cur;
     nx.step = res.steps + 1;

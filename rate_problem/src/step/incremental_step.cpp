@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -188,17 +189,26 @@ Eigen::Vector3d step_unknowns(const StepValues& v) noexcept {
 }
 
 SolutionType classify_step(const StepProblem& p, const StepValues& v) noexcept {
+  // Every test compares a quantity with the magnitudes of the terms it is made of (unit-free:
+  // the same verdict in any units, whatever the conditioning of A).
   const ContactParameters& a = p.params;
+  const double tol = 1e-9;
   const double fscale = std::max({std::abs(p.state.P_T0), std::abs(p.state.P_N0),
                                   std::abs(p.load.dF_T), std::abs(p.load.dF_N),
-                                  std::abs(v.P_N1), std::abs(v.P_T1), 1e-300});
+                                  std::numeric_limits<double>::min()});
   const double comp = (a.a11 + a.a22) / a.detA() + a.C_T;
-  const double dscale = std::abs(p.state.g0) + fscale * comp;
-  const double tol = 1e-9;
-  const bool started_open = p.state.g0 < -tol * dscale;
-  if (v.P_N1 <= tol * fscale) {
+  const bool started_open = p.state.g0 < -tol * (std::abs(p.state.g0) + fscale * comp);
+  // Displacements of this solution, or what its forces move the stiffest direction by.
+  const double forces = std::abs(v.DP_T) + std::abs(v.DP_N) + std::abs(p.load.dF_T) +
+                        std::abs(p.load.dF_N);
+  const double dscale = std::max({std::abs(v.Dw_T), std::abs(v.Dw_N), std::abs(v.Dw_Ti),
+                                  std::abs(p.state.g0), std::abs(a.C_T * v.DP_T),
+                                  forces / (a.a11 + a.a22)});
+  const double Pt = std::abs(p.state.P_N0) + std::abs(v.DP_N);
+  if (v.P_N1 <= tol * Pt) {
     if (started_open) return SolutionType::kOpen;
-    if (v.g1 < -tol * dscale) return SolutionType::kSeparation;
+    if (v.g1 < -tol * (std::abs(p.state.g0) + std::abs(v.Dw_N) + std::abs(v.Dw_w)))
+      return SolutionType::kSeparation;
   }
   if (std::abs(v.Dw_Ti) <= tol * dscale) return SolutionType::kStick;
   return v.Dw_Ti > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+
+#include <Eigen/LU>
 
 #include "cpkit/core/errors.hpp"
 
@@ -114,51 +117,421 @@ struct Continuum {
   double b0, b1;      // xi(x) = s (b0 + b1 x) / detA
 };
 
+// ---- Units: exact power-of-two normalisation (forces 2^eF, stiffness 2^eA, lengths 2^eL) ----
+
+struct Units {
+  int eF = 0, eA = 0;
+  int eL() const noexcept { return eF - eA; }
+};
+
+int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
+  int e = 0;
+  std::frexp(v, &e);
+  return e - 1;
+}
+
+Units units_of(const StepProblem& p) noexcept {
+  Units u;
+  u.eA = exponent_of(std::max(p.params.a11, p.params.a22));
+  const double f = std::max({std::abs(p.state.P_T0), std::abs(p.state.P_N0),
+                             std::abs(p.load.dF_T), std::abs(p.load.dF_N)});
+  if (f > 0) {
+    u.eF = exponent_of(f);
+  } else if (p.state.g0 != 0) {
+    u.eF = u.eA + exponent_of(std::abs(p.state.g0));  // no force at all: lengths of order 1
+  }
+  return u;
+}
+
+/// x 2^e: a multiplication by the exact factor when 2^e is a normal double (fast, and exact
+/// like ldexp unless the result leaves the normal range, where both round), else ldexp.
+struct Pow2 {
+  int e;
+  double f;
+  explicit Pow2(int e_) noexcept : e(e_), f(e_ >= -1000 && e_ <= 1000 ? std::ldexp(1.0, e_) : 0) {}
+  double operator()(double x) const noexcept { return f != 0 ? x * f : std::ldexp(x, e); }
+};
+
+/// The problem in the units `u` (every scaling a power of two: exact unless a value leaves
+/// double's range; a wear coefficient that underflows there is 0 to working precision).
+StepProblem normalise(const StepProblem& p, const Units& u) noexcept {
+  StepProblem n = p;
+  if (u.eF == 0 && u.eA == 0) return n;
+  const Pow2 dA(-u.eA), uA(u.eA), dF(-u.eF), uF(u.eF), dL(-u.eL());
+  n.params.a11 = dA(p.params.a11);
+  n.params.a12 = dA(p.params.a12);
+  n.params.a22 = dA(p.params.a22);
+  n.params.C_T = uA(p.params.C_T);  // length/force
+  n.params.P_s = dF(p.params.P_s);  // k = k_a / (3 P_s): 1/force
+  n.wear.k_M = uF(p.wear.k_M);      // 1/force
+  if (!std::isfinite(n.params.P_s)) {
+    n.params.k_a = 0;
+    n.params.P_s = 1;
+  }
+  n.state.P_T0 = dF(p.state.P_T0);
+  n.state.P_N0 = dF(p.state.P_N0);
+  n.state.g0 = dL(p.state.g0);
+  n.load.dF_T = dF(p.load.dF_T);
+  n.load.dF_N = dF(p.load.dF_N);
+  return n;
+}
+
+/// Values of the normalised problem in the caller's units.
+StepValues to_user(const StepValues& v, const Units& u) noexcept {
+  if (u.eF == 0 && u.eA == 0) return v;
+  const Pow2 F(u.eF), L(u.eL());
+  StepValues w;
+  w.DP_T = F(v.DP_T);
+  w.DP_N = F(v.DP_N);
+  w.P_T1 = F(v.P_T1);
+  w.P_N1 = F(v.P_N1);
+  w.Dw_T = L(v.Dw_T);
+  w.Dw_N = L(v.Dw_N);
+  w.Dw_Ti = L(v.Dw_Ti);
+  w.Dw_w = L(v.Dw_w);
+  w.g1 = L(v.g1);
+  return w;
+}
+
+bool all_finite(const StepValues& v) noexcept {
+  for (double x : {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.P_T1, v.P_N1, v.g1})
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+// ---- Verification of a candidate against the model's own equations (unit-free) ----
+
+constexpr double kAccept = 1e-12;  // backward error at or below which a candidate is accepted
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+enum Piece { kPieceSep = 0, kPieceStick = 1, kPieceSlipPlus = 2, kPieceSlipMinus = 3 };
+
+/// A candidate: u = (DP_T, DP_N, Dw_T, Dw_N, Dw_Ti) in normalised units.
+/// (No default member initialisers: Work holds eight of them per call on the hot path; every
+/// field is set before use.)
+struct Candidate {
+  int piece;
+  double u[5];
+  double backward;  ///< unit-free backward error (equations and sign conditions)
+  double ftol;      ///< relative forward tolerance (from the conditioning)
+  double fs, ds;    ///< force and displacement scales (scales_of) after polishing
+};
+
+double ratio(double num, double den) noexcept {
+  if (!(num > 0)) return 0;
+  return den > 0 ? num / den : INFINITY;
+}
+
+/// Residuals r and term magnitudes t of the five equations of the piece (equilibrium T, N,
+/// compatibility, the two active conditions); the Jacobian when J is set.
+void piece_equations(const StepProblem& n, int piece, const double u[5], double r[5], double t[5],
+                     Eigen::Matrix<double, 5, 5>* J) noexcept {
+  const ContactParameters& a = n.params;
+  const double DPT = u[0], DPN = u[1], DwT = u[2], DwN = u[3], xi = u[4];
+  const double fT = n.load.dF_T, fN = n.load.dF_N, P0 = n.state.P_N0, PT0 = n.state.P_T0;
+  const double g0 = n.state.g0, mu = a.mu, kc = n.softening(), cw = n.wear_coefficient();
+  const double P1 = P0 + DPN, PT1 = PT0 + DPT, Pt = P0 + std::abs(DPN);
+  r[0] = a.a11 * DwT + a.a12 * DwN + DPT - fT;
+  t[0] = std::abs(a.a11 * DwT) + std::abs(a.a12 * DwN) + std::abs(DPT) + std::abs(fT);
+  r[1] = a.a12 * DwT + a.a22 * DwN + DPN - fN;
+  t[1] = std::abs(a.a12 * DwT) + std::abs(a.a22 * DwN) + std::abs(DPN) + std::abs(fN);
+  r[2] = DwT - a.C_T * DPT - xi;
+  t[2] = std::abs(DwT) + std::abs(a.C_T * DPT) + std::abs(xi);
+  if (J != nullptr) {
+    J->setZero();
+    (*J)(0, 0) = 1;
+    (*J)(0, 2) = a.a11;
+    (*J)(0, 3) = a.a12;
+    (*J)(1, 1) = 1;
+    (*J)(1, 2) = a.a12;
+    (*J)(1, 3) = a.a22;
+    (*J)(2, 2) = 1;
+    (*J)(2, 0) = -a.C_T;
+    (*J)(2, 4) = -1;
+  }
+  switch (piece) {
+    case kPieceSep:  // P_N1 = 0, P_T1 = 0
+      r[3] = P1;
+      t[3] = Pt;
+      r[4] = PT1;
+      t[4] = std::abs(PT0) + std::abs(DPT);
+      if (J != nullptr) {
+        (*J)(3, 1) = 1;
+        (*J)(4, 0) = 1;
+      }
+      break;
+    case kPieceStick:  // Dw_T^i = 0, g1 = 0
+      r[3] = xi;
+      t[3] = std::abs(xi) + std::abs(DwT) + std::abs(a.C_T * DPT);
+      r[4] = g0 + DwN;
+      t[4] = std::abs(g0) + std::abs(DwN);
+      if (J != nullptr) {
+        (*J)(3, 4) = 1;
+        (*J)(4, 3) = 1;
+      }
+      break;
+    default: {  // slip s: s P_T1 = Y(P_N1), g1 = g0 + Dw_N - c_w P_N1 s Dw_T^i = 0
+      const double s = piece == kPieceSlipPlus ? 1.0 : -1.0;
+      r[3] = s * PT1 - (mu * P1 - kc * P1 * P1);
+      t[3] = std::abs(PT0) + std::abs(DPT) + mu * Pt + kc * Pt * Pt;
+      r[4] = g0 + DwN - cw * P1 * s * xi;
+      t[4] = std::abs(g0) + std::abs(DwN) + std::abs(cw * P1 * xi);
+      if (J != nullptr) {
+        (*J)(3, 0) = s;
+        (*J)(3, 1) = -(mu - 2 * kc * P1);
+        (*J)(4, 3) = 1;
+        (*J)(4, 1) = -cw * s * xi;
+        (*J)(4, 4) = -cw * P1 * s;
+      }
+    }
+  }
+}
+
+/// The candidate's force and displacement scales: the largest force of the step (state, load,
+/// increments) and the largest displacement (its own, g0, or what those forces move the
+/// stiffest direction by). Conditions on computed unknowns are judged against these (a
+/// normwise backward error: a quantity that should be 0 comes out as rounding of this size).
+void scales_of(const StepProblem& n, const double u[5], double& fs, double& ds) noexcept {
+  fs = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
+                 std::abs(n.load.dF_N), std::abs(u[0]), std::abs(u[1])});
+  ds = std::max({std::abs(u[2]), std::abs(u[3]), std::abs(u[4]), std::abs(n.state.g0),
+                 std::abs(n.params.C_T * u[0]), fs / (n.params.a11 + n.params.a22)});
+}
+
+/// Backward error of the piece's equations (rows 0, 1, 4... in force units, 2 and the
+/// displacement rows in length units), each relative to its terms or the scale of its kind.
+double equation_error(const StepProblem& n, int piece, const double u[5], double fs,
+                      double ds) noexcept {
+  double r[5], t[5];
+  piece_equations(n, piece, u, r, t, nullptr);
+  // Which rows are in length units: compatibility (2), and for stick xi = 0 (3) and the gap
+  // rows g1 = 0 (4) of stick and slip.
+  const bool len[5] = {false, false, true, piece == kPieceStick, piece != kPieceSep};
+  double e = 0;
+  for (int i = 0; i < 5; ++i) e = std::max(e, ratio(std::abs(r[i]), std::max(t[i], len[i] ? ds : fs)));
+  return e;
+}
+
+double equation_error(const StepProblem& n, int piece, const double u[5]) noexcept {
+  double fs, ds;
+  scales_of(n, u, fs, ds);
+  return equation_error(n, piece, u, fs, ds);
+}
+
+/// Violations of the piece's sign conditions, relative to the candidate's scales.
+double sign_error(const StepProblem& n, int piece, const double u[5], double fs,
+                  double ds) noexcept {
+  const double DPT = u[0], DPN = u[1], DwN = u[3], xi = u[4];
+  const double P0 = n.state.P_N0, PT0 = n.state.P_T0, g0 = n.state.g0;
+  const double mu = n.params.mu, kc = n.softening();
+  const double P1 = P0 + DPN, PT1 = PT0 + DPT, Pt = P0 + std::abs(DPN);
+  const double Y = mu * P1 - kc * P1 * P1, Yt = mu * Pt + kc * Pt * Pt;
+  (void)fs;
+  // Force conditions per direction: a normal force is judged against the normal forces of the
+  // step, a friction margin against the tangential ones (a load of 1e6 along T must not excuse
+  // a P_N1 of -1e-6 when the normal forces are of order 1e3).
+  const double fN = std::max({P0, std::abs(DPN), std::abs(n.load.dF_N)});
+  const double fT = std::max({std::abs(PT0), std::abs(DPT), std::abs(n.load.dF_T), Yt});
+  double e = 0;
+  switch (piece) {
+    case kPieceSep:  // g1 <= 0 (no wear at P_N1 = 0)
+      e = ratio(g0 + DwN, ds);
+      break;
+    case kPieceStick:  // P_N1 >= 0, |P_T1| <= Y
+      e = std::max(ratio(-P1, fN), ratio(std::abs(PT1) - Y, fT));
+      break;
+    default: {  // P_N1 >= 0, s Dw_T^i >= 0, Y >= 0
+      const double s = piece == kPieceSlipPlus ? 1.0 : -1.0;
+      e = std::max({ratio(-P1, fN), ratio(-s * xi, ds), ratio(-Y, std::max(fN, Yt))});
+    }
+  }
+  return e;
+}
+
+double sign_error(const StepProblem& n, int piece, const double u[5]) noexcept {
+  double fs, ds;
+  scales_of(n, u, fs, ds);
+  return sign_error(n, piece, u, fs, ds);
+}
+
+/// Polishes u by Newton steps on the piece's equations (rows scaled by their terms, LU with
+/// partial pivoting), then sets the backward error and the forward tolerance.
+void refine(const StepProblem& n, Candidate& c) noexcept {
+  // The piece's own two conditions are imposed exactly (to rounding of their formulas).
+  auto snap = [&](double* u) {
+    // (0.0 - x: no negative zeros in the output)
+    const double P1 = n.state.P_N0 + u[1];
+    if (c.piece == kPieceSep) {
+      u[0] = 0.0 - n.state.P_T0;
+      u[1] = 0.0 - n.state.P_N0;
+    } else if (c.piece == kPieceStick) {
+      u[4] = 0;
+      u[3] = 0.0 - n.state.g0;
+    } else {
+      const double s = c.piece == kPieceSlipPlus ? 1.0 : -1.0;
+      u[0] = s * (n.params.mu * P1 - n.softening() * P1 * P1) - n.state.P_T0;
+      u[3] = n.wear_coefficient() * P1 * s * u[4] - n.state.g0;
+    }
+  };
+  snap(c.u);
+  double err = equation_error(n, c.piece, c.u);
+  Eigen::Matrix<double, 5, 5> J;
+  double rcond = 1;
+  // Already at the rounding level (the usual case for well-conditioned data, and the
+  // simulation's hot path): no factorisation, forward tolerance 1e-9.
+  const bool polished = err <= 64 * kEps;
+  for (int it = 0; it < 4 && !polished; ++it) {
+    double r[5], t[5];
+    piece_equations(n, c.piece, c.u, r, t, &J);
+    Eigen::Matrix<double, 5, 1> rhs;
+    for (int i = 0; i < 5; ++i) {
+      const double w = t[i] > 0 ? 1.0 / t[i] : 1.0;
+      J.row(i) *= w;
+      rhs(i) = -r[i] * w;
+    }
+    // Columns in the candidate's own magnitudes: forces and displacements.
+    double fs = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
+                          std::abs(n.load.dF_N), std::abs(c.u[0]), std::abs(c.u[1])});
+    double ds = std::max({std::abs(c.u[2]), std::abs(c.u[3]), std::abs(c.u[4]),
+                          std::abs(n.state.g0)});
+    if (!(fs > 0)) fs = 1;
+    if (!(ds > 0)) ds = fs;
+    const double cs[5] = {fs, fs, ds, ds, ds};
+    for (int j = 0; j < 5; ++j) J.col(j) *= cs[j];
+    const Eigen::PartialPivLU<Eigen::Matrix<double, 5, 5>> lu(J);
+    rcond = lu.rcond();
+    if (err <= 4 * kEps || !(rcond > 0) || !std::isfinite(rcond)) break;
+    const Eigen::Matrix<double, 5, 1> du = lu.solve(rhs);
+    double trial[5];
+    for (int j = 0; j < 5; ++j) trial[j] = c.u[j] + du(j) * cs[j];
+    snap(trial);
+    const double e2 = equation_error(n, c.piece, trial);
+    if (!(e2 < err)) break;
+    std::copy(trial, trial + 5, c.u);
+    err = e2;
+  }
+  scales_of(n, c.u, c.fs, c.ds);
+  c.backward = std::max(err, sign_error(n, c.piece, c.u, c.fs, c.ds));
+  // Forward error of the unknowns relative to their magnitudes: backward error / rcond.
+  c.ftol = polished ? 1e-9 : std::max(1e-9, 16 * std::max(c.backward, kEps) / std::max(rcond, 1e-300));
+}
+
+StepValues values_of(const StepProblem& n, const double u[5]) noexcept {
+  StepValues v;
+  v.DP_T = u[0];
+  v.DP_N = u[1];
+  v.Dw_T = u[2];
+  v.Dw_N = u[3];
+  v.Dw_Ti = u[4];
+  v.P_T1 = n.state.P_T0 + u[0];
+  v.P_N1 = n.state.P_N0 + u[1];
+  v.Dw_w = n.wear_coefficient() * std::max(v.P_N1, 0.0) * std::abs(u[4]);
+  v.g1 = n.state.g0 + u[3] - v.Dw_w;
+  return v;
+}
+
+
+bool started_open(const StepProblem& n) noexcept {
+  const ContactParameters& a = n.params;
+  const double fscale = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
+                                  std::abs(n.load.dF_N), std::numeric_limits<double>::min()});
+  const double dscale = std::abs(n.state.g0) + fscale * ((a.a11 + a.a22) / a.detA() + a.C_T);
+  return n.state.g0 < -1e-9 * dscale;
+}
+
+/// Type of an accepted candidate: its piece, except at the ends of the pieces, where a
+/// quantity at the rounding level of the candidate's own scales (scales_of) counts as 0.
+SolutionType type_of(const StepProblem& n, const Candidate& c) noexcept {
+  constexpr double kTypeTol = 1e-9;
+  const double* u = c.u;
+  const double fs = c.fs, ds = c.ds;
+  const double P1 = n.state.P_N0 + u[1];
+  const bool open = started_open(n);
+  auto by_slip = [&]() {
+    if (std::abs(u[4]) <= kTypeTol * ds) return SolutionType::kStick;
+    return u[4] > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
+  };
+  if (c.piece == kPieceSep) {
+    if (open) return SolutionType::kOpen;
+    if (n.state.g0 + u[3] < -kTypeTol * ds) return SolutionType::kSeparation;
+    return by_slip();  // grazing end: the rate problem's zero-force stick/slip
+  }
+  if (open && P1 <= kTypeTol * fs) return SolutionType::kOpen;
+  if (c.piece == kPieceStick) return SolutionType::kStick;
+  return by_slip();
+}
+
+/// Same physical point (within both candidates' forward tolerances)?
+bool same_point(const StepProblem& n, const Candidate& a, const Candidate& b) noexcept {
+  const double tol = std::min(1e-6, std::max(a.ftol, b.ftol));
+  const double fs = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
+                              std::abs(n.load.dF_N), std::abs(a.u[0]), std::abs(a.u[1]),
+                              std::abs(b.u[0]), std::abs(b.u[1])});
+  const double ds = std::max(a.ds, b.ds);
+  for (int j = 0; j < 5; ++j)
+    if (std::abs(a.u[j] - b.u[j]) > tol * (j < 2 ? fs : ds)) return false;
+  return true;
+}
+
 struct Work {
-  StepPoints pts;
+  StepPoints pts;                           // normalised units
+  std::array<Candidate, kMaxStepPoints> cand;  // the accepted candidates behind pts
   Continuum cont[2];
   int ncont = 0;
 };
 
-/// Adds a point (after the residual check and de-duplication).
-void try_point(const StepProblem& p, const StepNcp& ncp, const Setup& st, double x, double xi,
-               double tol, StepPoints& out) noexcept {
+/// Adds a candidate (x = DP_N, xi) of `piece` after polishing, judging and de-duplication.
+void try_point(const StepProblem& n, int piece, double x, double xi, double tol,
+               Work& w) noexcept {
   if (!std::isfinite(x) || !std::isfinite(xi)) return;
-  // P_N1 slightly below 0 is rounding: snap to 0.
-  if (st.P0 + x < 0) {
-    if (st.P0 + x < -1e-9 * st.fscale) return;
-    x = -st.P0;
+  Candidate c;
+  c.piece = piece;
+  c.backward = INFINITY;
+  c.ftol = 1e-9;
+  const StepValues v0 = step_values(n, x, xi);
+  c.u[0] = v0.DP_T;
+  c.u[1] = v0.DP_N;
+  c.u[2] = v0.Dw_T;
+  c.u[3] = v0.Dw_N;
+  c.u[4] = v0.Dw_Ti;
+  // A sign condition violated by 25 % of its scale is not a rounding matter: polishing moves
+  // the point by its forward error only, so such a candidate is rejected as it is.
+  if (sign_error(n, piece, c.u) > std::max(0.25, tol)) return;
+  refine(n, c);
+  if (!(c.backward <= kAccept)) {
+    if (!(c.backward > tol)) ++w.pts.undecided;  // neither accepted nor rejected
+    return;
   }
-  const StepValues v = step_values(p, x, xi);
-  if (ncp.residual(step_unknowns(v)) > tol) return;
-  for (int i = 0; i < out.n; ++i) {
-    const StepPoint& q = out.points[i];
-    if (std::abs(q.DP_N - x) <= 1e-9 * st.fscale && std::abs(q.xi - xi) <= 1e-9 * st.dscale)
-      return;
-  }
+  StepPoints& out = w.pts;
+  for (int i = 0; i < out.n; ++i)
+    if (same_point(n, w.cand[i], c)) return;
   if (out.n >= kMaxStepPoints) return;
   StepPoint pt;
-  pt.type = classify_step(p, v);
-  pt.DP_N = x;
-  pt.xi = xi;
+  pt.type = type_of(n, c);
+  pt.DP_N = c.u[1];
+  pt.xi = c.u[4];
+  w.cand[out.n] = c;
   out.points[out.n++] = pt;
 }
 
-void enumerate_core(const StepProblem& p, const StepNcp& ncp, double tol, Work& w) noexcept {
+/// Every candidate of the normalised problem `p` (normalise()).
+void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
   const Setup st = make_setup(p);
   w.pts.n = 0;
   w.pts.infinite = false;
+  w.pts.undecided = 0;
+  w.pts.unrepresentable = 0;
   w.ncont = 0;
   // 1. P_N1 = 0: P_T1 = 0 fixes xi.
   {
     const double x = -st.P0;
     const double xi = (st.D0 * st.PT0 + st.T - st.a12 * st.P0) / st.detA;
-    try_point(p, ncp, st, x, xi, tol, w.pts);
+    try_point(p, kPieceSep, x, xi, tol, w);
   }
   // 2. stick: g1 = 0 with xi = 0.
   {
     const double x = (st.D0 * st.g0 + st.S) / st.e;
-    try_point(p, ncp, st, x, 0.0, tol, w.pts);
+    try_point(p, kPieceStick, x, 0.0, tol, w);
   }
   // 3. slip s = +1, -1.
   for (int s = 1; s >= -1; s -= 2) {
@@ -211,7 +584,7 @@ void enumerate_core(const StepProblem& p, const StepNcp& ncp, double tol, Work& 
       if (!empty) {
         if (std::isfinite(hi) && hi - lo <= 1e-12 * st.fscale) {
           const double xm = std::max(lo, hi);
-          try_point(p, ncp, st, xm, s * (b0 + b1 * xm) / st.detA, tol, w.pts);
+          try_point(p, s > 0 ? kPieceSlipPlus : kPieceSlipMinus, xm, s * (b0 + b1 * xm) / st.detA, tol, w);
         } else if (w.ncont < 2) {
           w.cont[w.ncont++] = Continuum{type, s, lo, hi, b0, b1_zero ? 0.0 : b1};
           w.pts.infinite = true;
@@ -221,11 +594,9 @@ void enumerate_core(const StepProblem& p, const StepNcp& ncp, double tol, Work& 
     }
     for (int i = 0; i < nr; ++i) {
       const double x = roots[i];
-      if (st.P0 + x < -1e-9 * st.fscale) continue;
-      double l = ((b2 * x + b1) * x + b0) / st.detA;
-      if (l < -1e-9 * st.dscale) continue;
-      l = std::max(l, 0.0);
-      try_point(p, ncp, st, x, s * l, tol, w.pts);
+      if (st.P0 + x < -1e-6 * st.fscale) continue;  // clearly outside: refine() judges the rest
+      const double l = ((b2 * x + b1) * x + b0) / st.detA;
+      try_point(p, s > 0 ? kPieceSlipPlus : kPieceSlipMinus, x, s * l, tol, w);
     }
   }
 }
@@ -262,11 +633,29 @@ int stable_quadratic_roots(double c2, double c1, double c0, double scale2, doubl
   return 2;
 }
 
-void enumerate_step_points(const StepProblem& problem, const StepNcp& ncp, StepPoints& out,
+void enumerate_step_points(const StepProblem& problem, const StepNcp& /*ncp*/, StepPoints& out,
                            double tol) noexcept {
-  Work w;
-  enumerate_core(problem, ncp, tol, w);
-  out = w.pts;
+  const Units u = units_of(problem);
+  const StepProblem n = normalise(problem, u);
+  // One work area per thread: constructing it (eight StepPoints with their values) per call
+  // cost a fifth of this hot path (the simulation's per-step call).
+  thread_local Work w;
+  enumerate_core(n, tol, w);
+  out.n = 0;
+  out.unrepresentable = 0;
+  out.infinite = w.pts.infinite;
+  out.undecided = w.pts.undecided;
+  for (int i = 0; i < w.pts.n; ++i) {
+    StepPoint pt = w.pts.points[i];
+    pt.values = to_user(values_of(n, w.cand[i].u), u);
+    pt.DP_N = pt.values.DP_N;
+    pt.xi = pt.values.Dw_Ti;
+    if (!all_finite(pt.values)) {
+      ++out.unrepresentable;
+      continue;
+    }
+    out.points[out.n++] = pt;
+  }
 }
 
 int StepSolutionSet::count() const noexcept {
@@ -283,35 +672,51 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
   throw_if_invalid(problem.validate(), "step");
   if (!(opt.tol > 0) || !std::isfinite(opt.tol))
     throw InputError("step enumeration: tol must be finite and > 0");
-  const StepNcp ncp = build_step_ncp_unchecked(problem);
+  // Everything below is in the normalised units of `n`; values go back through to_user().
+  const Units units = units_of(problem);
+  const StepProblem n = normalise(problem, units);
   Work w;
-  enumerate_core(problem, ncp, opt.tol, w);
+  enumerate_core(n, opt.tol, w);
   StepSolutionSet set;
   set.infinite = w.pts.infinite;
+  int unrepresentable = 0;
   // Continua first. A continuum's interior has its slip type; an end of another type
-  // (classify_step: stick where xi = 0, open where P_N1 = 0 after an open start) is open and
-  // listed as a point of its own type (the partition of piece_geometry.hpp).
+  // (stick where xi = 0, open where P_N1 = 0 after an open start) is open and listed as a point
+  // of its own type (the partition of piece_geometry.hpp).
   std::vector<StepSolution> conts;
   std::vector<StepValues> open_ends;
-  const Setup st = make_setup(problem);
+  const Setup st = make_setup(n);
   for (int i = 0; i < w.ncont; ++i) {
     const Continuum& c = w.cont[i];
-    auto at = [&](double x) { return step_values(problem, x, c.s * (c.b0 + c.b1 * x) / st.detA); };
+    const int piece = c.s > 0 ? kPieceSlipPlus : kPieceSlipMinus;
+    // An end judged without polishing (the piece's Jacobian is singular along a continuum).
+    auto judge = [&](double x, StepValues& v) {
+      v = step_values(n, x, c.s * (c.b0 + c.b1 * x) / st.detA);
+      Candidate k;
+      k.piece = piece;
+      k.ftol = 1e-9;
+      const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
+      std::copy(u, u + 5, k.u);
+      scales_of(n, k.u, k.fs, k.ds);
+      k.backward = std::max(equation_error(n, piece, k.u), sign_error(n, piece, k.u));
+      if (!(k.backward <= kAccept)) ++w.pts.undecided;  // an end not verified
+      return k;
+    };
     StepSolution sol;
     sol.type = c.type;
-    sol.start = at(c.x_lo);
-    sol.residual = ncp.residual(step_unknowns(sol.start));
-    sol.start_closed = classify_step(problem, sol.start) == c.type;
+    const Candidate k0 = judge(c.x_lo, sol.start);
+    sol.residual = k0.backward;
+    sol.start_closed = type_of(n, k0) == c.type;
     if (!sol.start_closed) open_ends.push_back(sol.start);
     if (std::isfinite(c.x_hi)) {
       sol.kind = RateSolution::Kind::kSegment;
-      sol.end = at(c.x_hi);
-      sol.residual = std::max(sol.residual, ncp.residual(step_unknowns(sol.end)));
-      sol.end_closed = classify_step(problem, sol.end) == c.type;
+      const Candidate k1 = judge(c.x_hi, sol.end);
+      sol.residual = std::max(sol.residual, k1.backward);
+      sol.end_closed = type_of(n, k1) == c.type;
       if (!sol.end_closed) open_ends.push_back(sol.end);
     } else {
       sol.kind = RateSolution::Kind::kRay;
-      const StepValues v1 = at(c.x_lo + 1.0);
+      const StepValues v1 = step_values(n, c.x_lo + 1.0, c.s * (c.b0 + c.b1 * (c.x_lo + 1.0)) / st.detA);
       sol.direction.DP_T = v1.DP_T - sol.start.DP_T;
       sol.direction.DP_N = v1.DP_N - sol.start.DP_N;
       sol.direction.Dw_T = v1.Dw_T - sol.start.Dw_T;
@@ -341,24 +746,32 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     }
     return false;
   };
-  auto add_point = [&](const StepValues& v) {
+  auto add_point = [&](const StepValues& v, SolutionType type, double backward) {
     StepSolution sol;
     sol.start = v;
-    sol.type = classify_step(problem, v);
-    sol.residual = ncp.residual(step_unknowns(v));
+    sol.type = type;
+    sol.residual = backward;
     set.solutions.push_back(sol);
   };
   for (int i = 0; i < w.pts.n; ++i) {
     const StepPoint& pt = w.pts.points[i];
     // Points on the closed part of a continuum belong to it; an open end is a point of its own.
     if (on_continuum(pt) && !at_open_end(pt.DP_N, pt.xi)) continue;
-    add_point(step_values(problem, pt.DP_N, pt.xi));
+    add_point(values_of(n, w.cand[i].u), pt.type, w.cand[i].backward);
   }
   for (const auto& v : open_ends) {
     bool listed = false;
     for (const auto& sol : set.solutions)
       listed = listed || same_point(v.DP_N, v.Dw_Ti, sol.start);
-    if (!listed) add_point(v);
+    if (listed) continue;
+    Candidate k;
+    k.piece = kPieceStick;
+    k.backward = 0;
+    k.ftol = 1e-9;
+    const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
+    std::copy(u, u + 5, k.u);
+    scales_of(n, k.u, k.fs, k.ds);
+    add_point(v, type_of(n, k), 0);
   }
   for (auto& c : conts) set.solutions.push_back(c);
   std::stable_sort(set.solutions.begin(), set.solutions.end(),
@@ -382,12 +795,11 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
     bool ok = true;
     for (int k = 0; k <= kSteps && ok; ++k) {
       const double t = static_cast<double>(k) / kSteps;
-      StepProblem pt = problem;
+      StepProblem pt = n;
       pt.load.dF_T *= t;
       pt.load.dF_N *= t;
-      const StepNcp n_t = build_step_ncp_unchecked(pt);
       Work wt;
-      enumerate_core(pt, n_t, opt.tol, wt);
+      enumerate_core(pt, opt.tol, wt);
       if (wt.pts.infinite) {
         ok = false;
         break;
@@ -395,7 +807,7 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
       cur_v.clear();
       cur_r.clear();
       for (int i = 0; i < wt.pts.n; ++i) {
-        const StepValues v = step_values(pt, wt.pts.points[i].DP_N, wt.pts.points[i].xi);
+        const StepValues v = values_of(pt, wt.cand[i].u);
         bool r = false;
         if (k == 0) {
           r = distance(v) + st.detA / st.D0 * std::abs(v.Dw_Ti) <= 1e-9 * st.fscale;
@@ -434,6 +846,30 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
         if (!sol.jump) ++set.continuous_count;
       }
     }
+  }
+  // Back to the caller's units; a solution that does not fit in double is not listed.
+  std::vector<StepSolution> listed;
+  for (auto sol : set.solutions) {
+    sol.start = to_user(sol.start, units);
+    sol.end = to_user(sol.end, units);
+    sol.direction = to_user(sol.direction, units);
+    const bool fits = all_finite(sol.start) &&
+                      (sol.kind != RateSolution::Kind::kSegment || all_finite(sol.end)) &&
+                      (sol.kind != RateSolution::Kind::kRay || all_finite(sol.direction));
+    if (fits) listed.push_back(sol); else ++unrepresentable;
+  }
+  if (unrepresentable > 0)
+    throw InputError("step: " + std::to_string(unrepresentable) +
+                     " solution(s) not representable in double precision (their values "
+                     "overflow in these units)");
+  set.solutions = std::move(listed);
+  if (w.pts.undecided > 0) {
+    set.complete = false;
+    std::ostringstream m;
+    m << w.pts.undecided << " candidate(s) could be neither verified nor rejected (unit-free "
+      << "backward error between 1e-12 and " << opt.tol
+      << "): ill-conditioned data; the set may miss solutions";
+    set.message = m.str();
   }
   return set;
 }

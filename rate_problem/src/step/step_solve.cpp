@@ -48,17 +48,26 @@ StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& o
   std::vector<Attempt> attempts;
   SolveResult last;
   last.status = Status::kNotRun;
+  StepValues active_set_values;  // the verified values and type of the active-set link's point
+  SolutionType active_set_type = SolutionType::kStick;
   for (const auto& name : options.chain) {
     SolveResult r;
     if (name == "active-set") {
       Stopwatch sw;
       StepPoints pts;
       enumerate_step_points(problem, ncp, pts, options.common.tol_acceptable);
+      if (pts.unrepresentable > 0)  // as enumerate_step and the rate problem: refused
+        throw InputError("step: a solution is not representable in double precision (its "
+                         "values overflow in these units)");
       r.solver = "active-set";
       if (pts.n == 0) {
         r.status = Status::kStalled;
         r.message = pts.infinite ? "the solutions form a continuum (use enumerate_step)"
-                                 : "complete active-set enumeration found no solution";
+                                 : pts.undecided > 0
+                                       ? "active-set enumeration: no candidate verified, " +
+                                             std::to_string(pts.undecided) +
+                                             " neither verified nor rejected (ill-conditioned)"
+                                       : "complete active-set enumeration found no solution";
         r.z = Vec::Zero(3);
         r.z[0] = problem.state.P_N0;
       } else {
@@ -72,7 +81,9 @@ StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& o
             best = i;
           }
         }
-        const StepValues v = step_values(problem, pts.points[best].DP_N, pts.points[best].xi);
+        const StepValues& v = pts.points[best].values;
+        active_set_values = v;
+        active_set_type = pts.points[best].type;
         r.z = Vec(step_unknowns(v));
         r.status = Status::kSolved;  // a claim: finalize() decides
         r.message = std::to_string(pts.n) + " active-set solution(s); the closest to the start "
@@ -118,8 +129,10 @@ StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& o
   if (!skipped.empty()) append(out.result.message, skipped);
   if (is_solution(last.status) && last.z.size() == 3) {
     // Physical values from z: DP_N = P_N1 - P_N0, xi = l+ - l-.
-    out.values = step_values(problem, last.z[0] - problem.state.P_N0, last.z[1] - last.z[2]);
-    out.type = classify_step(problem, out.values);
+    out.values = last.solver == "active-set"
+                     ? active_set_values
+                     : step_values(problem, last.z[0] - problem.state.P_N0, last.z[1] - last.z[2]);
+    out.type = last.solver == "active-set" ? active_set_type : classify_step(problem, out.values);
   }
   return out;
 }

@@ -48,7 +48,10 @@ struct RateSolutionSet {
 };
 
 /// Solves the rate problem. Throws InputError for invalid parameters/state/load (NaN, A not
-/// SPD, mu <= 0, P_N <= 0 in c/d, ...).
+/// SPD, mu <= 0, P_N <= 0 in c/d, ...) and when a solution is not representable in double.
+/// Every route runs in normalised units (A divided by 2^eA ~ max(a11, a22), the load rate by
+/// 2^eF ~ its size; exact, undone on the answer): the answer does not depend on the units of A
+/// or of the load (issue 24 item 17).
 RateSolutionSet solve_rate_problem(const ContactParameters& params, const ContactState& state,
                                    const LoadRate& load,
                                    RateMethod method = RateMethod::kEnumerate);

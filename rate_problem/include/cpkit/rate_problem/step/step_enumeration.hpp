@@ -17,8 +17,26 @@
 /// rate problem (rate_problem/src/one_point/piece_geometry.hpp): a piece holds the points of its own
 /// type only, so an end of another type (the stick end xi = 0 of a slip segment, or an open
 /// end P_N1 = 0 of a step that started open) is an open end of the piece and is listed as a
-/// point of its own type; point solutions on the closed part of a piece are not listed again. Every candidate is verified by the
-/// NCP residual (StepNcp::residual) and duplicates (the same physical point found by two
+/// point of its own type; point solutions on the closed part of a piece are not listed again.
+///
+/// Units and verification (unit-free, issue 24 item 3). The pieces are solved in normalised
+/// units: forces divided by 2^eF (eF from the largest of |P_T0|, P_N0, |DF_T|, |DF_N|),
+/// stiffnesses by 2^eA (eA from max(a11, a22)), lengths by 2^(eF - eA); powers of two keep the
+/// scaling exact, so scaling A, or A and the loads, changes nothing but the units of the
+/// answer, and loads near 1e308 or subnormal ones are solved like loads of order 1. Every
+/// candidate is polished by Newton steps on the model's own equations (equilibrium
+/// DF - DP = A Dw, Dw_T = C_T DP_T + Dw_Ti and the two active conditions of its piece, imposed
+/// exactly) unless it is already at the rounding level, and then judged by its backward error:
+/// the largest violation of those equations, each divided by the magnitudes of its own terms
+/// (at least the step's force or displacement scale), and of the piece's sign conditions
+/// (P_N1 >= 0 against the normal forces, |P_T1| <= Y(P_N1) against the tangential ones,
+/// g1 <= 0 and s Dw_T^i >= 0 against the displacements). A sign condition violated by 25 %
+/// rejects a candidate before polishing. Backward error <= 1e-12: accepted; > tol: rejected;
+/// in between: neither, and the set says complete = false. A solution whose values overflow in
+/// the caller's units is not representable: enumerate_step throws InputError (as the rate
+/// problem does), enumerate_step_points counts it in `unrepresentable`. Types come from the
+/// piece (separation/open, stick, slip+/-); a slip root whose Dw_T^i is at the rounding level of
+/// its own displacements is the stick point. Duplicates (the same physical point found by two
 /// pieces) are merged; the first piece in the order above names its type.
 ///
 /// Jumps: a solution is continuous (rate-consistent) when it lies on a branch that starts at the
@@ -45,13 +63,17 @@ struct StepSolution {
   StepValues direction;      ///< ray: direction (unit length in DP_N)
   bool start_closed = true;  ///< segment/ray: `start` belongs to the piece (same type)
   bool end_closed = true;    ///< segment: `end` belongs to the piece (same type)
-  double residual = 0;       ///< StepNcp::residual at `start` (worst over the ends)
+  double residual = 0;       ///< unit-free backward error at `start` (worst over the ends)
   bool jump = false;         ///< not on a branch from the start state (see the file comment)
 };
 
 struct StepSolutionSet {
   std::vector<StepSolution> solutions;  ///< pieces in the order: separation/open, stick, slip+, slip-
   bool infinite = false;                ///< a segment or a ray is present
+  /// false when some candidate could be neither accepted nor rejected (backward error between
+  /// 1e-12 and tol): the listed solutions are verified, but the set may miss some.
+  bool complete = true;
+  std::string message;  ///< why not complete (empty otherwise)
   int continuous_count = 0;  ///< rate-consistent point solutions (-1 when not determined)
   /// Number of solutions: -1 when infinite.
   int count() const noexcept;
@@ -60,11 +82,12 @@ struct StepSolutionSet {
 };
 
 struct StepEnumerationOptions {
-  double tol = 1e-9;        ///< acceptance on StepNcp::residual
+  double tol = 1e-9;        ///< rejection threshold of the unit-free backward error (see above)
   bool detect_jumps = true; ///< follow the branches in t (129 enumerations) to flag jumps
 };
 
-/// All solutions. Throws InputError for an invalid problem (StepProblem::validate).
+/// All solutions. Throws InputError for an invalid problem (StepProblem::validate) and when a
+/// solution is not representable in double precision.
 StepSolutionSet enumerate_step(const StepProblem& problem,
                                const StepEnumerationOptions& options = {});
 
@@ -75,13 +98,18 @@ struct StepPoint {
   SolutionType type = SolutionType::kStick;
   double DP_N = 0;
   double xi = 0;
+  StepValues values;  ///< the verified values (polished; step_values() would recompute them)
 };
 constexpr int kMaxStepPoints = 8;
 struct StepPoints {
   std::array<StepPoint, kMaxStepPoints> points;
   int n = 0;
   bool infinite = false;
+  int undecided = 0;            ///< candidates neither accepted nor rejected (see above)
+  int unrepresentable = 0;      ///< solutions whose values overflow in the caller's units
+  bool complete() const noexcept { return undecided == 0 && unrepresentable == 0; }
 };
+/// `ncp` is not used (the pieces are solved in normalised units); kept for the callers.
 void enumerate_step_points(const StepProblem& problem, const StepNcp& ncp, StepPoints& out,
                            double tol = 1e-9) noexcept;
 
