@@ -449,6 +449,7 @@ TEST_CASE("WearFreeStepIsRateTimesIncrement", "[system_step]") {
     const double eps = 1e-4;
     sp.DF = eps * dF;
     const auto set = enumerate_system_step(sp);
+    INFO("case " << c << ": " << (set.notes.empty() ? std::string() : set.notes[0]));
     REQUIRE(set.complete);
     std::vector<Eigen::VectorXd> small;
     for (const auto& s : set.solutions) {

@@ -88,7 +88,8 @@ struct SystemRatePrecomputed {
   Eigen::MatrixXd Q;         ///< m x 2N: q = Q dF
   Eigen::MatrixXd Pf, Pz;    ///< 6N x 2N, 6N x m: physical rates = Pf dF + Pz z
   Eigen::MatrixXd G;         ///< m x 6N: w = G (physical rates) (the LCP's complementary rows)
-  double inv_min_eig = 1;    ///< 1 / smallest eigenvalue of A (displacement-rate scale)
+  double inv_min_eig = 1;    ///< 1 / smallest eigenvalue of A (largest compliance)
+  double inv_max_eig = 1;    ///< 1 / largest eigenvalue of A (the displacement-rate scale's floor)
   double max_C_T = 0;
 };
 /// Validates the system (InputError) and precomputes.
