@@ -673,11 +673,10 @@ Units step_units(const SystemStepProblem& p) {
   if (!(f > 0) || !std::isfinite(f)) f = amax;  // nothing but A: every unknown is zero
   Units u;
   u.f = f;
-  u.l = f / amax;
-  if (!(u.l > 0) || !std::isfinite(u.l)) {  // f / amax beyond double: units of 1 and A's size
-    u.f = amax;
-    u.l = 1;
-  }
+  // f / amax beyond double's range: the nearest representable length unit (the solution may
+  // still fit; from_units says when it does not)
+  u.l = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
+                 std::numeric_limits<double>::max());
   return u;
 }
 
