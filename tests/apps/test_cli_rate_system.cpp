@@ -71,3 +71,47 @@ TEST_CASE("cpkit rate --system: bad input exits 2 naming the problem", "[cli][ra
   CHECK(r.err.find("sgnPT") != std::string::npos);
   CHECK(r.out.empty());
 }
+
+TEST_CASE("cpkit rate/step/simulate --system: loads near 1e308 rescaled or refused alike",
+          "[cli][rate][step][system]") {
+  // Issue 24, item 5: `step --system coupled_grazing_points.json --DF 1e308 1 0.1 1 --all`
+  // answered "0 solution(s) (complete)" where `rate` said "not representable". The load is
+  // 1e308 (1, ~0, ~0, ~0): both grazing points separate (dP = 0, dw = A^-1 dF has dw_N < 0,
+  // checked in test_system_rate.cpp); rate and step (P = 0, g = 0, no wear: the rate problem
+  // times 1) must both say so.
+  const std::string f = "'" + std::string(CPKIT_SOURCE_DIR) + "/docs/examples/coupled_grazing_points.json'";
+  auto r = cpkit::test::run_cpkit("rate --system " + f + " --dF 1e308 1 0.1 1 --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == true);
+  CHECK(j["count"] == 1);
+  CHECK(j["solutions"][0]["types"] == nlohmann::json({"separation", "separation"}));
+  r = cpkit::test::run_cpkit("step --system " + f + " --DF 1e308 1 0.1 1 --all --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == true);
+  CHECK(j["count"] == 1);
+  CHECK(j["solutions"][0]["types"] == nlohmann::json({"separation", "separation"}));
+  CHECK(j["solutions"][0]["values"]["P_N1"][0] == 0.0);
+  // The same system 1000 x softer: dw = 1e311 A^-1 e1 is beyond double: refused by both (2),
+  // and a simulation reaching that step stops there (numerical_failure, 1), never "0 solutions".
+  const std::string soft = write_system("soft.json", R"({"A": [[0.00203, 0.00025, -0.00123, 0.00158],
+       [0.00025, 0.00376, 0.00123, 0.00026], [-0.00123, 0.00123, 0.00212, -0.00099],
+       [0.00158, 0.00026, -0.00099, 0.00205]],
+       "points": [{"state": "b", "mu": 7.71}, {"state": "b", "mu": 2.03}]})");
+  r = cpkit::test::run_cpkit("rate --system " + soft + " --dF 1e308 0 0 0");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("not representable") != std::string::npos);
+  r = cpkit::test::run_cpkit("step --system " + soft + " --DF 1e308 0 0 0 --all");
+  CHECK(r.code == 2);
+  CHECK(r.err.find("not representable") != std::string::npos);
+  const auto csv = cpkit::test::scratch_dir() / "big_load.csv";
+  std::ofstream(csv) << "t,F_T1,F_N1,F_T2,F_N2\n1,1e308,0,0,0\n";
+  r = cpkit::test::run_cpkit("simulate --system " + soft + " --load csv --load-csv '" + csv.string() + "' --json");
+  INFO(r.err);
+  CHECK(r.code == 1);
+  CHECK(nlohmann::json::parse(r.out)["outcome"] == "numerical_failure");
+  CHECK(r.out.find("not representable") != std::string::npos);
+}

@@ -124,7 +124,26 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
       q.g = cur.g[i];
     }
     sp.DF = lp.F - cur.F;
-    const SystemStepSolutionSet set = enumerate_system_step(sp, so);
+    // A step whose increment or solution double cannot represent (loads near 1e308) stops the
+    // run as numerical_failure, as an energy beyond double's range does below.
+    SystemStepSolutionSet set;
+    std::string unrepresentable;
+    if (!sp.DF.allFinite()) {  // e.g. from -1e308 to 1e308
+      unrepresentable = "the load increment F - F_prev exceeds the range of double";
+    } else {
+      try {
+        set = enumerate_system_step(sp, so);
+      } catch (const InputError& e) {
+        if (std::string(e.what()).find("not representable") == std::string::npos) throw;
+        unrepresentable = e.what();
+      }
+    }
+    if (!unrepresentable.empty()) {
+      res.outcome = SimulationResult::Outcome::kNumericalFailure;
+      res.message = "stopped before t = " + std::to_string(lp.t) + ": " + unrepresentable +
+                    ". Last state: " + describe(cur);
+      break;
+    }
     if (!set.complete) ++res.incomplete_steps;
     if (set.solutions.empty()) {
       std::ostringstream m;

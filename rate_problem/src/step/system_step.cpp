@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/Dense>
@@ -15,6 +16,14 @@ namespace cpkit::rate {
 namespace {
 
 constexpr double kDegTol = 1e-12;  // relative size under which a coefficient or pivot is zero
+constexpr double kStepLawTol = 1e-8;  // acceptance bound of the step's laws (step_laws_violation)
+/// A candidate that misses the acceptance bounds by less than kGray eps cond(A) (what rounding
+/// in the elimination can do to a true root) is undecided; empty for a well-conditioned A.
+constexpr double kGray = 1e3;
+/// Largest cond(A) (2-norm) for which the enumeration is called complete: a seeded sweep of
+/// coupled 2-point steps against a long-double brute force is right up to cond 1e10 and misses
+/// full separations from 1e11 on (the displacements of the soft mode lose their digits).
+constexpr double kMaxProvedCond = 1e9;
 
 ContactParameters block_parameters(const ContactSystem& s, int i) {
   ContactParameters p;
@@ -181,6 +190,8 @@ struct Enumerator {
   const McpProblem& mcp;
   double tol;
   double sigma;  // xi scale: v_{N+i} = sigma xi_i (force units)
+  double cond;   // cond(A), 2-norm
+  double gray;   // kGray eps cond(A): the undecided band above the acceptance bounds
   SystemStepSolutionSet& out;
   std::vector<Eigen::VectorXd> found;  // u of accepted solutions
   std::vector<int> code;
@@ -245,6 +256,69 @@ struct Enumerator {
     return r;
   }
 
+  /// Largest violation of the step's laws by the per-point values, from the data (A, DF, the
+  /// start values), unit-free: equilibrium DF - DP = A Dw row by row against its terms,
+  /// Dw_T = C_T DP_T + Dw_Ti, Dw^w = k P_N1 |Dw_Ti|, g1 = g0 + Dw_N - Dw^w, and per point
+  /// P_N1 >= 0, g1 <= 0, P_N1 g1 = 0, |P_T1| <= mu P_N1, Dw_Ti != 0 only with
+  /// P_T1 = sgn(Dw_Ti) mu P_N1; forces against the force scale, lengths against the
+  /// displacement scale (the enumeration's units make both O(1)).
+  double step_laws_violation(const std::vector<StepValues>& v) const {
+    const int N = m.N;
+    const double fs = m.fscale, ds = m.dscale;
+    auto r0 = [](double x, double sc) {
+      if (!std::isfinite(x)) return std::numeric_limits<double>::infinity();
+      return x == 0 ? 0.0 : std::abs(x) / std::max(sc, std::numeric_limits<double>::min());
+    };
+    Eigen::VectorXd DP(2 * N), Dw(2 * N);
+    for (int i = 0; i < N; ++i) {
+      const StepValues& x = v[static_cast<std::size_t>(i)];
+      DP(2 * i) = x.DP_T;
+      DP(2 * i + 1) = x.DP_N;
+      Dw(2 * i) = x.Dw_T;
+      Dw(2 * i + 1) = x.Dw_N;
+    }
+    const Eigen::MatrixXd& A = p.system.A;
+    const Eigen::VectorXd res = p.DF - DP - A * Dw;
+    const Eigen::VectorXd terms =
+        p.DF.cwiseAbs() + DP.cwiseAbs() + A.cwiseAbs() * Dw.cwiseAbs();
+    double w = 0;
+    for (int r = 0; r < 2 * N; ++r) w = std::max(w, r0(res(r), terms(r) + 1e-6 * fs));
+    for (int i = 0; i < N; ++i) {
+      const StepValues& x = v[static_cast<std::size_t>(i)];
+      const double mu = m.mu[i];
+      const double fmu = fs * (1 + mu);
+      w = std::max(w, r0(x.Dw_T - m.C_T[i] * x.DP_T - x.Dw_Ti,
+                         std::abs(x.Dw_T) + m.C_T[i] * std::abs(x.DP_T) + std::abs(x.Dw_Ti) + 1e-6 * ds));
+      w = std::max(w, r0(x.Dw_w - m.k[i] * std::max(x.P_N1, 0.0) * std::abs(x.Dw_Ti), ds));
+      w = std::max(w, r0(x.P_N1 - (m.P0[i] + x.DP_N), fs));
+      w = std::max(w, r0(x.g1 - (m.g0[i] + x.Dw_N - x.Dw_w), ds));
+      w = std::max(w, x.P_N1 < 0 ? r0(x.P_N1, fs) : 0.0);
+      w = std::max(w, x.g1 > 0 ? r0(x.g1, ds) : 0.0);
+      w = std::max(w, std::min(r0(x.P_N1, fs), r0(x.g1, ds)));  // P_N1 g1 = 0
+      w = std::max(w, std::max(0.0, std::abs(x.P_T1) - mu * x.P_N1) / fmu);
+      // slip: the friction force on the limit, in the direction of the slip
+      const double onlimit = x.Dw_Ti > 0 ? std::abs(x.P_T1 - mu * x.P_N1)
+                                         : std::abs(x.P_T1 + mu * x.P_N1);
+      if (x.Dw_Ti != 0) w = std::max(w, std::min(r0(x.Dw_Ti, ds), onlimit / fmu));
+    }
+    return w;
+  }
+
+  /// The type of point i, judged against the system's force and displacement scales (as
+  /// classify_step does for one point with that point's own scales: a point that carries no
+  /// load of its own must not have its rounding noise, e.g. P_N1 = 1e-17 of the system's
+  /// forces, judged against itself).
+  SolutionType classify(int i, const StepValues& v) const {
+    constexpr double t = 1e-9;
+    const double fs = std::max({m.fscale, std::abs(v.P_N1), std::abs(v.P_T1)});
+    if (v.P_N1 <= t * fs) {
+      if (m.g0[i] < -t * m.dscale) return SolutionType::kOpen;
+      if (v.g1 < -t * m.dscale) return SolutionType::kSeparation;
+    }
+    if (std::abs(v.Dw_Ti) <= t * m.dscale) return SolutionType::kStick;
+    return v.Dw_Ti > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
+  }
+
   /// Accepts a candidate v when the step NCP holds (unit-free residual) and it is new.
   void accept(const Eigen::VectorXd& v) {
     const int N = m.N;
@@ -266,7 +340,24 @@ struct Enumerator {
     Vec F;
     ncp_F(m, z, F);
     const Residuals res = mcp_residuals(mcp, z, F);
-    if (!res.finite || !(res.natural <= tol)) return;
+    if (!res.finite) return;
+    // Second, independent test: the step's laws from the data, point by point in their own
+    // units (step_laws_violation). A candidate must pass both; one that misses either by less
+    // than the gray factor is a root that could not be decided: not listed, not complete.
+    const std::vector<StepValues> vals = system_step_values(p, u.head(N), u.tail(N));
+    const double phys = step_laws_violation(vals);
+    const bool pass = res.natural <= tol && phys <= kStepLawTol;
+    if (!pass) {
+      if (res.natural <= std::max(tol, gray) && phys <= std::max(kStepLawTol, gray)) {
+        std::ostringstream o;
+        o << "a candidate within the rounding of the elimination (" << gray
+          << " at cond(A) = " << cond << ") of the acceptance bounds (NCP residual "
+          << res.natural << ", violation of the step laws " << phys
+          << ") could not be decided: not listed";
+        note(o.str());
+      }
+      return;
+    }
     for (const auto& f : found) {
       if ((f.head(N) - u.head(N)).cwiseAbs().maxCoeff() <= 1e-9 * m.fscale &&
           (f.tail(N) - u.tail(N)).cwiseAbs().maxCoeff() <= 1e-9 * m.dscale)
@@ -275,9 +366,8 @@ struct Enumerator {
     found.push_back(u);
     SystemStepSolution sol;
     sol.residual = res.natural;
-    sol.values = system_step_values(p, u.head(N), u.tail(N));
-    for (int i = 0; i < N; ++i)
-      sol.types.push_back(classify_step(point_step_problem(p, i), sol.values[static_cast<std::size_t>(i)]));
+    sol.values = vals;
+    for (int i = 0; i < N; ++i) sol.types.push_back(classify(i, sol.values[static_cast<std::size_t>(i)]));
     out.solutions.push_back(std::move(sol));
   }
 
@@ -562,6 +652,66 @@ struct Enumerator {
   }
 };
 
+/// The units the enumeration works in: force unit f (the largest force of the data) and length
+/// unit l = f / max|A_ij| (so that A is O(1)). The step is invariant under a change of units
+/// (forces / f, lengths / l, A l / f, C_T f / l, k_a f), so enumerating in these units makes
+/// every tolerance unit-free and keeps loads near the ends of double's range representable
+/// (issue 24, items 4 and 5).
+struct Units {
+  double f = 1, l = 1;
+};
+
+Units step_units(const SystemStepProblem& p) {
+  const ContactSystem& s = p.system;
+  const double amax = s.A.cwiseAbs().maxCoeff();
+  double f = p.DF.cwiseAbs().maxCoeff(), gmax = 0;
+  for (const auto& q : s.points) {
+    f = std::max({f, std::abs(q.P_N), std::abs(q.P_T)});
+    gmax = std::max(gmax, std::abs(q.g));
+  }
+  if (!(f > 0)) f = amax * gmax;  // no force at all: the force that closes the largest gap
+  if (!(f > 0) || !std::isfinite(f)) f = amax;  // nothing but A: every unknown is zero
+  Units u;
+  u.f = f;
+  // f / amax beyond double's range: the nearest representable length unit (the solution may
+  // still fit; from_units says when it does not)
+  u.l = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
+                 std::numeric_limits<double>::max());
+  return u;
+}
+
+[[noreturn]] void not_representable(const std::string& what) {
+  throw InputError("the step is not representable in double precision: " + what +
+                   " (rescale the data: forces and displacements beyond about 1e308 or below "
+                   "1e-308 in the units of the problem)");
+}
+
+SystemStepProblem to_units(const SystemStepProblem& p, const Units& u) {
+  SystemStepProblem q = p;
+  q.system.A = p.system.A * (u.l / u.f);
+  q.DF = p.DF / u.f;
+  for (auto& x : q.system.points) {
+    x.P_N /= u.f;
+    x.P_T /= u.f;
+    x.g /= u.l;
+    x.C_T *= u.f / u.l;
+    x.k_a *= u.f;
+  }
+  if (!q.system.A.allFinite() || !q.DF.allFinite()) not_representable("A or DF in units of the load");
+  for (const auto& x : q.system.points)
+    if (!std::isfinite(x.P_N) || !std::isfinite(x.P_T) || !std::isfinite(x.g) ||
+        !std::isfinite(x.C_T) || !std::isfinite(x.k_a))
+      not_representable("a point's data in units of the load");
+  return q;
+}
+
+void from_units(StepValues& v, const Units& u) {
+  for (double* x : {&v.DP_T, &v.DP_N, &v.P_T1, &v.P_N1}) *x *= u.f;
+  for (double* x : {&v.Dw_T, &v.Dw_N, &v.Dw_Ti, &v.Dw_w, &v.g1}) *x *= u.l;
+  for (double x : {v.DP_T, v.DP_N, v.P_T1, v.P_N1, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.g1})
+    if (!std::isfinite(x)) not_representable("a solution's forces or displacements overflow");
+}
+
 }  // namespace
 
 StepProblem point_step_problem(const SystemStepProblem& p, int i) {
@@ -648,11 +798,18 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
   if (N > opt.max_points)
     throw InputError("the N-point step enumerates 4^N active sets; " + std::to_string(N) +
                      " points exceed the limit of " + std::to_string(opt.max_points));
-  const Maps m = make_maps(p);
+  // Enumerate in the problem's own units (step_units), report in the caller's.
+  const Units units = step_units(p);
+  const SystemStepProblem ps = to_units(p, units);
+  const Maps m = make_maps(ps);
   const McpProblem mcp = make_mcp(m);
   SystemStepSolutionSet out;
-  const double amax = p.system.A.cwiseAbs().maxCoeff();
-  Enumerator e{p, m, mcp, opt.tol, amax, out, {}, std::vector<int>(static_cast<std::size_t>(N), 0)};
+  const double amax = ps.system.A.cwiseAbs().maxCoeff();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(ps.system.A, Eigen::EigenvaluesOnly);
+  const double cond = eig.eigenvalues()(2 * N - 1) / eig.eigenvalues()(0);
+  const double gray = kGray * std::numeric_limits<double>::epsilon() * cond;
+  Enumerator e{ps, m, mcp, opt.tol, amax, cond, gray, out, {},
+               std::vector<int>(static_cast<std::size_t>(N), 0)};
   long total = 1;
   for (int i = 0; i < N; ++i) total *= 4;
   for (long c = 0; c < total; ++c) {
@@ -664,6 +821,17 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
     e.run_set();
   }
   out.active_sets = total;
+  {
+    if (!(cond <= kMaxProvedCond)) {
+      std::ostringstream o;
+      o << "A is ill-conditioned (cond(A) = " << cond << " > " << kMaxProvedCond
+        << "): the listed solutions are verified, but the list is not proved complete";
+      out.complete = false;
+      out.notes.push_back(o.str());
+    }
+  }
+  for (auto& sol : out.solutions)
+    for (auto& v : sol.values) from_units(v, units);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -195,6 +196,7 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
   pre.G = G;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A, Eigen::EigenvaluesOnly);
   pre.inv_min_eig = 1.0 / eig.eigenvalues()(0);
+  pre.inv_max_eig = 1.0 / eig.eigenvalues()(eig.eigenvalues().size() - 1);
   for (const auto& P : S.points) pre.max_C_T = std::max(pre.max_C_T, P.C_T);
   return pre;
 }
@@ -245,15 +247,86 @@ Eigen::VectorXd system_q(const SystemRatePrecomputed& pre, const Eigen::VectorXd
 
 }  // namespace detail
 
-SystemRateSolutionSet solve_rate_problem(const ContactSystem& system, const Eigen::VectorXd& dF,
-                                         RateMethod method) {
+namespace {
+
+/// The rate problem in its own units: force unit f = max |dF_i|, length unit f / max |A_ij|.
+/// It is invariant under a change of units (dF / f, A / max|A_ij|, C_T max|A_ij|; kappa and the
+/// states are dimensionless or only their signs matter), so every tolerance is unit-free and
+/// loads near the ends of double's range stay representable (issue 24, item 5).
+struct RateUnits {
+  double f = 1, amax = 1;
+  /// A force rate of the scaled problem in the caller's units.
+  double force(double x) const { return x * f; }
+  /// A displacement rate of the scaled problem in the caller's units: x f / amax without an
+  /// intermediate overflow or underflow.
+  double disp(double x) const {
+    const double a = (x * f) / amax;
+    if (std::isfinite(a) && (a == 0 || std::abs(a) >= std::numeric_limits<double>::min()))
+      return x == 0 || a != 0 ? a : (x / amax) * f;
+    return (x / amax) * f;
+  }
+};
+
+[[noreturn]] void not_representable(const std::string& what) {
+  throw InputError("the rate problem's solution is not representable in double precision: " +
+                   what + " (rates beyond about 1e308 in the units of the data; rescale dF)");
+}
+
+void rates_from_units(SystemRates& r, const RateUnits& u) {
+  for (Eigen::VectorXd* v : {&r.dP_T, &r.dP_N})
+    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = u.force((*v)(k));
+  for (Eigen::VectorXd* v : {&r.dw_T, &r.dw_N, &r.dw_Ti, &r.dw_w})
+    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = u.disp((*v)(k));
+  for (const Eigen::VectorXd* v : {&r.dP_T, &r.dP_N, &r.dw_T, &r.dw_N, &r.dw_Ti, &r.dw_w})
+    if (!v->allFinite()) not_representable("a force or displacement rate overflows");
+}
+
+void set_from_units(SystemRateSolutionSet& s, const RateUnits& u) {
+  for (auto& p : s.solutions) {
+    rates_from_units(p.start, u);
+    if (p.kind == RateSolution::Kind::kSegment) rates_from_units(p.end, u);
+    if (p.kind == RateSolution::Kind::kRay) {
+      // a direction: renormalised to unit max-norm in the force components (as listed)
+      SystemRates& d = p.direction;
+      const double fmax = std::max(d.dP_T.lpNorm<Eigen::Infinity>(), d.dP_N.lpNorm<Eigen::Infinity>());
+      if (fmax > 0) {  // else a unit max-norm displacement direction: unchanged
+        RateUnits dir = u;
+        dir.f = 1;  // forces keep their unit max-norm; displacements get the length unit 1 / amax
+        rates_from_units(d, dir);
+      }
+    }
+  }
+  // the scales are sums of sizes: capped at the largest double when only they overflow
+  s.force_scale = std::min(u.force(s.force_scale), std::numeric_limits<double>::max());
+  s.disp_scale = std::min(u.disp(s.disp_scale), std::numeric_limits<double>::max());
+}
+
+}  // namespace
+
+SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
+                                         const Eigen::VectorXd& dF_in, RateMethod method) {
   if (method == RateMethod::kAnalytic)
     throw InputError("method analytic exists for one point only (use enumerate, lemke, "
                      "fb-newton or ipopt)");
+  throw_if_invalid(system_in.validate(), "contact system");
+  check_load(system_in, dF_in);
+  RateUnits units;
+  units.amax = system_in.A.cwiseAbs().maxCoeff();
+  const double fmax = dF_in.lpNorm<Eigen::Infinity>();
+  units.f = fmax > 0 ? fmax : 1.0;
+  ContactSystem system = system_in;
+  system.A /= units.amax;
+  for (auto& q : system.points) q.C_T *= units.amax;
+  for (const auto& q : system.points)
+    if (!std::isfinite(q.C_T))
+      not_representable("C_T times the stiffness overflows");
+  const Eigen::VectorXd dF = dF_in / units.f;
   const SystemRatePrecomputed pre = precompute_system_rate(system);
-  check_load(system, dF);
   SystemRateSolutionSet all = detail::enumerate_system(pre, dF);
-  if (method == RateMethod::kEnumerate) return all;
+  if (method == RateMethod::kEnumerate) {
+    set_from_units(all, units);
+    return all;
+  }
   const std::string name = solver_name(method);
   const SolverEntry* entry = find_solver(name);
   if (entry == nullptr || !entry->solve_lcp)
@@ -280,6 +353,7 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system, const Eige
   one.disagreement = !contains(all, s.start, std::max(1e-7, 1e3 * one.residual));
   if (one.disagreement) one.message += "; this solution is NOT in the enumerated set";
   one.solutions.push_back(std::move(s));
+  set_from_units(one, units);
   return one;
 }
 
@@ -291,7 +365,10 @@ SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
     return out;
   }
   try {
-    const SystemRateSolutionSet set = detail::enumerate_system(pre, dF);
+    // counts and types are positively homogeneous in dF: judge the load at unit size
+    const double f = dF.lpNorm<Eigen::Infinity>();
+    const SystemRateSolutionSet set =
+        detail::enumerate_system(pre, f > 0 ? Eigen::VectorXd(dF / f) : dF);
     out.count = set.count();
     out.reliable = set.complete;
     for (const auto& s : set.solutions) {

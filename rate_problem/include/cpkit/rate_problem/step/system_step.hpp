@@ -30,8 +30,15 @@
 ///   may exist: the result says complete = false and why.
 /// Degenerate active sets (the linear part singular and consistent: a continuum; or a
 /// resultant that vanishes identically) are not resolved: complete = false with the set named.
-/// Every candidate is verified by the unit-free residual of the step NCP
-/// (system_step_as_mcp, core/residuals.hpp) and duplicates are merged.
+/// The enumeration runs in the problem's own units (force unit: the largest force of the data;
+/// length unit: that over max|A_ij|), so its tolerances are unit-free and loads near 1e308 or
+/// subnormal ones are answered; a solution double cannot hold throws InputError ("not
+/// representable"). Every candidate is verified twice, by the unit-free residual of the step
+/// NCP (system_step_as_mcp, core/residuals.hpp) and by the step's laws checked from the data
+/// point by point (equilibrium, P_N1 >= 0, g1 <= 0, P_N1 g1 = 0, |P_T1| <= mu P_N1, slip on the
+/// limit); one that misses either bound by less than 1e3 eps cond(A) is undecided (not listed,
+/// complete = false), and beyond cond(A) = 1e9 the set is never called complete. Duplicates
+/// are merged; types are judged on the system's scales.
 #include <string>
 #include <vector>
 
@@ -62,7 +69,8 @@ struct SystemStepSolution {
 
 struct SystemStepSolutionSet {
   std::vector<SystemStepSolution> solutions;
-  /// true only when every active set was solved by a method that finds every root.
+  /// true only when every active set was solved by a method that finds every root, no
+  /// candidate was undecided, and cond(A) <= 1e9.
   bool complete = true;
   std::vector<std::string> notes;  ///< why not complete (one line per unresolved active set)
   long active_sets = 0;            ///< active sets examined (4^N)
@@ -73,7 +81,8 @@ struct SystemStepOptions {
   int max_points = 8;  ///< enumeration limit (4^N active sets)
 };
 
-/// All solutions of the step. Throws InputError for an invalid problem or N > max_points.
+/// All solutions of the step. Throws InputError for an invalid problem, N > max_points, or a
+/// problem or solution that double cannot represent even in the problem's own units.
 SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& problem,
                                             const SystemStepOptions& options = {});
 

@@ -9,7 +9,10 @@
 /// back to physical rates, deduplicated there, and split by type tuple.
 ///
 /// Units: forces and displacement rates as in A (force/length); no absolute tolerances (all
-/// tests are relative to the load and to the stiffness, docs/contact_model.md).
+/// tests are relative to the load and to the stiffness, docs/contact_model.md). The problem is
+/// solved in its own units (dF / max|dF_i|, A / max|A_ij|) and every listed piece is checked
+/// against the rate laws from the data before it is returned (a piece that fails is dropped
+/// and complete = false); beyond cond(A) = 1e8 the set is never called complete.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -47,7 +50,8 @@ struct SystemRateSolutionSet {
   bool infinite = false;  ///< some piece is a segment or a ray
   /// false for the single-solver methods, and when the enumeration could not decide every case
   /// (sign tests too close to call, time limit) or met a piece of dimension >= 2 (a "face" of
-  /// physical solutions, possible for two or more degenerate points; not listed, message says).
+  /// physical solutions, possible for two or more degenerate points; not listed, message says),
+  /// when a candidate piece failed the check of the rate laws (not listed), or cond(A) > 1e8.
   bool complete = true;
   std::string message;    ///< why complete is false, or which single solver answered
   /// Single solvers: the natural residual of the LCP solution (as RateSolutionSet::residual).
@@ -71,7 +75,8 @@ std::string types_string(const std::vector<SolutionType>& types);
 /// Solves the N-point rate problem for the load rate dF (2N). `method`: kEnumerate (every
 /// solution) or kLemke / kFbNewton / kIpopt (one solution by that LCP solver, checked against
 /// the enumerated set; complete = false). kAnalytic is for one point only: InputError.
-/// Throws InputError for an invalid system (validate()) or dF (size, NaN/Inf).
+/// Throws InputError for an invalid system (validate()) or dF (size, NaN/Inf), or when a
+/// solution's rates are beyond double's range ("not representable").
 SystemRateSolutionSet solve_rate_problem(const ContactSystem& system, const Eigen::VectorXd& dF,
                                          RateMethod method = RateMethod::kEnumerate);
 
@@ -88,7 +93,8 @@ struct SystemRatePrecomputed {
   Eigen::MatrixXd Q;         ///< m x 2N: q = Q dF
   Eigen::MatrixXd Pf, Pz;    ///< 6N x 2N, 6N x m: physical rates = Pf dF + Pz z
   Eigen::MatrixXd G;         ///< m x 6N: w = G (physical rates) (the LCP's complementary rows)
-  double inv_min_eig = 1;    ///< 1 / smallest eigenvalue of A (displacement-rate scale)
+  double inv_min_eig = 1;    ///< 1 / smallest eigenvalue of A (largest compliance)
+  double inv_max_eig = 1;    ///< 1 / largest eigenvalue of A (the displacement-rate scale's floor)
   double max_C_T = 0;
 };
 /// Validates the system (InputError) and precomputes.
@@ -101,7 +107,8 @@ struct SystemRateSummary {
   int n_tuples = 0;                 ///< distinct type tuples present (at most kCap stored)
   std::array<TypeTuple, kCap> tuples{};  ///< sorted ascending
   /// false when the enumeration met sign tests too close to call, a piece of dimension >= 2,
-  /// or more than kCap tuples: count/tuples may then be wrong.
+  /// a piece that failed the check of the rate laws, cond(A) > 1e8, or more than kCap tuples:
+  /// count/tuples may then be wrong.
   bool reliable = true;
 };
 /// Same count and tuples as solve_rate_problem(pre.system, dF). Inputs must be valid (dF of
