@@ -53,6 +53,7 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
                      std::to_string(k));
   Point3dParameters p = user_params;
   Eigen::Vector3d dF = user_dF;
+  detail::normalize_ellipse(p);  // the rates hold no multiplier: nothing to scale back
   const detail::UnitScaling scaling = detail::normalize(p, dF);
   // The polygon: vertices v_i = D (cos theta_i, sin theta_i) (counter-clockwise), facet j from
   // v_j to v_j+1 with outward unit normal n_j and support h_j = n_j . v_j > 0; friction set
