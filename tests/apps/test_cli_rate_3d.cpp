@@ -191,3 +191,31 @@ TEST_CASE("cpkit rate --system (dim 3) --facets: one time limit for the whole so
   CHECK(r.code == 0);
   CHECK(nlohmann::json::parse(r.out)["complete"] == true);
 }
+
+TEST_CASE("cpkit rate --system (dim 3): eigenvector directions singular for every load are not "
+          "critical loads", "[cli][rate3d]") {
+  // Issue 24, item 6: unique sticks (hand calculation: dP = dF for C_T = 0 with
+  // |dP_T| = 1 <= mu dP_N = 2; (I + A_TT) dP_T = dF_T, dP_N = dF_N - A_NT dP_T for C_T = 1),
+  // exit 0 and complete (was exit 5).
+  struct Case {
+    const char* fields;
+    const char* dF;
+    double dPX, dPN;
+  };
+  for (const Case& c : {Case{R"("state": "b", "mu": 2)", "1 0 1", 1.0, 1.0},
+                        Case{R"("state": "b", "mu": 1, "C_T": 1)", "0.5 0 1", 1.0 / 6, 5.0 / 6}}) {
+    const fs::path f = write("eigen3d.json", std::string(R"({"dim": 3, "A": [[2,0,1],[0,1,0.5],[1,0.5,2]], "points": [{)") +
+                                                 c.fields + "}]}");
+    const CliRun r = run_cpkit("rate --system '" + f.string() + "' --dF " + c.dF + " --json");
+    CAPTURE(c.dF, r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["complete"] == true);
+    REQUIRE(j["count"] == 1);
+    const auto& s = j["solutions"][0];
+    CHECK(s["types"][0] == "stick");
+    CHECK(s["values"]["dP_T"][0][0].get<double>() == Approx(c.dPX).epsilon(1e-12));
+    CHECK(std::abs(s["values"]["dP_T"][0][1].get<double>()) <= 1e-14);
+    CHECK(s["values"]["dP_N"][0].get<double>() == Approx(c.dPN).epsilon(1e-12));
+  }
+}

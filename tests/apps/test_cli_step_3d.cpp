@@ -334,3 +334,72 @@ TEST_CASE("cpkit step, 3-D with N > 1: refused modes and bad input exit 2", "[cl
     CHECK(r.err.find(what) != std::string::npos);
   }
 }
+
+namespace {
+/// A one-point 3-D file with a full A (row-major, 9 numbers) and point fields.
+std::string write_full(const std::string& name, const std::array<double, 9>& A,
+                       const std::string& point_fields) {
+  const auto path = scratch_dir() / (name + ".json");
+  std::ofstream f(path);
+  f << "{\"dim\": 3, \"A\": [";
+  for (int i = 0; i < 3; ++i)
+    f << (i ? ", " : "") << "[" << num(A[3 * i]) << ", " << num(A[3 * i + 1]) << ", "
+      << num(A[3 * i + 2]) << "]";
+  f << "], \"points\": [{" << point_fields << "}]}";
+  return "'" + path.string() + "'";
+}
+}  // namespace
+
+TEST_CASE("cpkit step, 3-D: ill-conditioned A (cond ~1e8), the issue's answers", "[cli][step3d]") {
+  // Issue 24, item 1: the answers stated there (hand calculation; the slip has Dw_N = 0, so it
+  // does not depend on the ill-conditioned A_NN at all).
+  const std::array<double, 9> A = {2, 0, 1, 0, 1, 0.5, 1, 0.5, 0.7500000074505806};
+  const std::string slip = write_full("cond_slip", A, "\"state\": \"b\", \"mu\": 2, \"C_T\": 0");
+  const Run r = run_cpkit("step --system " + slip + " --DF -1 0.375 0.125 --all --json");
+  CAPTURE(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == true);
+  REQUIRE(j["count"] == 1);
+  const auto& s = j["solutions"][0];
+  CHECK(s["type"] == "slip");
+  CHECK(s["P_T1"][0].get<double>() == Approx(-7.0 / 13).epsilon(1e-7));
+  CHECK(s["P_T1"][1].get<double>() == Approx(0.2625).epsilon(1e-7));
+  CHECK(s["P_N1"].get<double>() == Approx(0.29951923076923077).epsilon(1e-7));
+  CHECK(s["Dw"][0].get<double>() == Approx(-3.0 / 13).epsilon(1e-7));
+  CHECK(s["Dw"][1].get<double>() == Approx(0.1125).epsilon(1e-7));
+  CHECK(std::abs(s["Dw"][2].get<double>()) <= 1e-12);
+  // the chain's exact link answers the same
+  const Run c = run_cpkit("step --system " + slip + " --DF -1 0.375 0.125 --json");
+  REQUIRE(c.code == 0);
+  CHECK(nlohmann::json::parse(c.out)["solutions"][0]["type"] == "slip");
+
+  const std::string stick = write_full("cond_stick", A, "\"state\": \"b\", \"mu\": 1, \"C_T\": 1");
+  const Run t = run_cpkit("step --system " + stick + " --DF 0.125 0.125 1 --all --json");
+  CAPTURE(t.err);
+  REQUIRE(t.code == 0);
+  const auto k = nlohmann::json::parse(t.out);
+  CHECK(k["complete"] == true);
+  REQUIRE(k["count"] == 1);
+  CHECK(k["solutions"][0]["type"] == "stick");
+  CHECK(k["solutions"][0]["P_T1"][0].get<double>() == Approx(1.0 / 24).epsilon(1e-7));
+  CHECK(k["solutions"][0]["P_T1"][1].get<double>() == Approx(1.0 / 16).epsilon(1e-7));
+  CHECK(k["solutions"][0]["P_N1"].get<double>() == Approx(89.0 / 96).epsilon(1e-7));
+}
+
+TEST_CASE("cpkit step, 3-D: subnormal loads are refused alike by every route", "[cli][step3d]") {
+  // Issue 24, item 5: a load of 1e-320 has a solution that cannot be written to the solver's
+  // accuracy (subnormal doubles carry a few bits): exit 2, naming it, in every mode.
+  const std::string f = std::string("'") + CPKIT_SOURCE_DIR + "/docs/examples/elliptic_point_3d.json'";
+  for (const std::string mode : {" --all", "", " --chain fb-soc", " --chain ipopt", " --facets 8",
+                                 " --multistart 2"}) {
+    const Run r = run_cpkit("step --system " + f + " --DF 1e-320 0 1e-320" + mode);
+    CAPTURE(mode, r.out, r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("subnormal") != std::string::npos);
+    CHECK(r.out.empty());
+  }
+  // The same problem in units of moderate size is solved (the model is homogeneous here).
+  const Run ok = run_cpkit("step --system " + f + " --DF 1 0 1 --all");
+  CHECK(ok.code == 0);
+}

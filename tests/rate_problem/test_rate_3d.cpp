@@ -473,3 +473,70 @@ TEST_CASE("3-D rate: a direction where the slip system has rank one for every lo
   }
   CHECK(agree >= total - 4);  // the faceted slip directions are approximate near tangencies
 }
+
+TEST_CASE("3-D rate: eigenvector directions of A_TT singular for every load, not critical loads",
+          "[rate3d]") {
+  // Issue 24, item 6. A_TT = diag(2, 1) (not a I): t = e_X (eigenvalue 2 = mu A_NT . t with
+  // mu = 2) makes the slip system rank one for every load, and at dF = (1, 0, 1) the slip
+  // condition g = (sin phi - 1) sin phi has a double root at the other singular direction
+  // e_Y. No admissible slip hides there (near a rank-one direction the slips grow along B's
+  // null vector, with dP_N and lambda of opposite signs): the answer is the unique stick
+  // dP = dF (C_T = 0, |dP_T| = 1 <= mu dP_N = 2; hand calculation). With mu = 1, C_T = 1 and
+  // dF = (0.5, 0, 1), g has a double root at phi = pi whose slip has lambda = -1: the unique
+  // stick solves (I + A_TT) dP_T = dF_T, dP_N = dF_N - A_NT dP_T: dP = (1/6, 0, 5/6).
+  Point3dParameters p;
+  p.A << 2, 0, 1, 0, 1, 0.5, 1, 0.5, 2;
+  struct Case {
+    double mu, C_T;
+    Eigen::Vector3d dF, dP;
+  };
+  for (const Case& c : {Case{2, 0, {1, 0, 1}, {1, 0, 1}},
+                        Case{1, 1, {0.5, 0, 1}, {1.0 / 6, 0, 5.0 / 6}}}) {
+    p.mu = c.mu;
+    p.C_T = c.C_T;
+    CAPTURE(c.mu, c.C_T);
+    const RateSolutionSet3d s = solve_rate_3d(p, {}, c.dF);
+    INFO(s.message);
+    CHECK(s.complete);
+    REQUIRE(s.count() == 1);
+    CHECK(s.solutions[0].type == Type3d::kStick);
+    CHECK(s.solutions[0].at.dP_T(0) == Approx(c.dP(0)).epsilon(1e-12));
+    CHECK(std::abs(s.solutions[0].at.dP_T(1)) <= 1e-14);
+    CHECK(s.solutions[0].at.dP_N == Approx(c.dP(2)).epsilon(1e-12));
+    // The step from the grazing state without wear is the same problem (homogeneous).
+    Step3dProblem st;
+    st.params = p;
+    st.DF = c.dF;
+    const Step3dSolutionSet e = enumerate_step_3d(st);
+    INFO(e.message);
+    CHECK(e.complete);
+    REQUIRE(e.count() == 1);
+    CHECK(e.solutions[0].type == Type3d::kStick);
+    CHECK(e.solutions[0].values.P_T1(0) == Approx(c.dP(0)).epsilon(1e-12));
+    CHECK(e.solutions[0].values.P_N1 == Approx(c.dP(2)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("3-D rate: rank-one eigenvector directions over random loads", "[rate3d]") {
+  // A_TT = diag(a1, a2) with mu A_NT . e_X = a1: e_X is singular for every load. Loads on a
+  // circle: every answer complete must agree with the faceted route at k = 64 (an independent
+  // LCP) in count; the completeness must not be lost except near critical loads (a few).
+  std::mt19937 rng(246);
+  std::uniform_real_distribution<double> u(-1, 1), pos(0.2, 1);
+  int complete = 0, total = 0, agree = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    Point3dParameters p;
+    const double a1 = 1 + pos(rng), a2 = 0.5 + pos(rng);
+    p.mu = 0.5 + 2 * pos(rng);
+    const double ax = a1 / p.mu, ay = 0.3 * u(rng);
+    p.A << a1, 0, ax, 0, a2, ay, ax, ay, ax * ax / a1 + ay * ay / a2 + 0.2 + pos(rng);
+    const Eigen::Vector3d dF(u(rng), u(rng), u(rng));
+    const RateSolutionSet3d e = solve_rate_3d(p, {}, dF);
+    ++total;
+    complete += e.complete;
+    if (!e.complete) continue;
+    agree += solve_rate_3d_faceted(p, dF, 64).set.count() == e.count();
+  }
+  CHECK(complete >= total - 6);
+  CHECK(agree >= complete - 4);  // the faceted slip directions are approximate near tangencies
+}

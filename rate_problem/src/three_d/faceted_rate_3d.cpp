@@ -3,6 +3,7 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -53,6 +54,7 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
                      std::to_string(k));
   Point3dParameters p = user_params;
   Eigen::Vector3d dF = user_dF;
+  detail::normalize_ellipse(p);  // the rates hold no multiplier: nothing to scale back
   const detail::UnitScaling scaling = detail::normalize(p, dF);
   // The polygon: vertices v_i = D (cos theta_i, sin theta_i) (counter-clockwise), facet j from
   // v_j to v_j+1 with outward unit normal n_j and support h_j = n_j . v_j > 0; friction set
@@ -118,9 +120,19 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
   };
   // Separation (dP = 0, dw = A^-1 dF, dw_N < 0): outside the contact LCP, whose multipliers
   // would all be free there.
+  // dw_N is a forward result: its sign is read outside the rounding band of the solve
+  // (backward stable: eps |A| |dw|, carried by the row N of A^-1); inside it the separation is
+  // the contact solution with dP = 0 or undecided (as in point_rate_3d.cpp).
+  bool separation_undecided = false;
   {
-    const Eigen::Vector3d dw = p.A.ldlt().solve(dF);
-    if (dw(2) < -kTol * dw.cwiseAbs().maxCoeff()) {
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(p.A);
+    const Eigen::Vector3d dw = ldlt.solve(dF);
+    const Eigen::Vector3d row_N = ldlt.solve(Eigen::Vector3d::UnitZ());
+    const double band = std::max(kTol * dw.cwiseAbs().maxCoeff(),
+                                 64 * 2.220446049250313e-16 * row_N.cwiseAbs().sum() *
+                                     (p.A.cwiseAbs() * dw.cwiseAbs()).maxCoeff());
+    if (dw(2) >= -band && dw(2) <= band) separation_undecided = true;
+    if (dw(2) < -band) {
       RateSolution3d s;
       s.type = Type3d::kSeparation;
       s.at.dw_T = dw.head<2>();
@@ -130,6 +142,15 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
     }
   }
   for (const auto& e : zs.solutions) add(map.rates(e.z, true));
+  if (separation_undecided &&
+      !std::any_of(set.solutions.begin(), set.solutions.end(), [&](const RateSolution3d& x) {
+        return std::max(x.at.dP_T.cwiseAbs().maxCoeff(), std::abs(x.at.dP_N)) <= 1e-8 * force;
+      })) {
+    set.complete = false;
+    if (set.message.empty())
+      set.message = "the separation's normal rate dw_N is zero within the rounding of the "
+                    "stiffness: not decided";
+  }
   // A piece of the LCP's set is one physical point when its vertices coincide physically and
   // its rays move nothing physical (the non-unique facet weights of a slip with dP = 0).
   for (const auto& piece : zs.pieces) {

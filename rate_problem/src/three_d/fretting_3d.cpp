@@ -12,6 +12,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 
@@ -123,7 +124,10 @@ bool finite(const Fretting3dSample& s) noexcept {
 /// P_T1 = mu P_N1 D t(phi), equations g1 = 0 and Dw_T^i = lambda D^-1 t(phi) (equilibrium by
 /// step_3d_values). Newton with a central-difference Jacobian and backtracking; a root counts
 /// only as a slip solution with P_N1 > 0, lambda > 0 and step_3d_residual <= 1e-9.
-bool local_slip_solution(const Step3dProblem& p, Step3dSolution& out) {
+bool local_slip_solution(const Step3dProblem& user, Step3dSolution& out) {
+  // Newton works with the ellipse in its own unit (lambda / E); the answer is the user's.
+  Step3dProblem p = user;
+  const double E = detail::normalize_ellipse(p.params);
   const Eigen::Vector2d al = p.params.alpha;
   const double mu = p.params.mu;
   auto F = [&](const Eigen::Vector3d& z) -> Eigen::Vector3d {
@@ -176,8 +180,9 @@ bool local_slip_solution(const Step3dProblem& p, Step3dSolution& out) {
         z = zn;
         if (!z.allFinite()) break;
         const Eigen::Vector2d t(std::cos(z(0)), std::sin(z(0)));
-        const Step3dValues v = step_3d_values(p, mu * z(1) * (al.asDiagonal() * t), z(1), z(2));
-        const Step3dSolution sol = make_step_3d_solution(p, v);
+        Step3dValues v = step_3d_values(p, mu * z(1) * (al.asDiagonal() * t), z(1), z(2));
+        v.lambda *= E;
+        const Step3dSolution sol = make_step_3d_solution(user, v);
         if (sol.type == Type3d::kSlip && sol.residual <= 1e-9) {
           out = sol;
           return true;

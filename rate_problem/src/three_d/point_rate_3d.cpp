@@ -21,6 +21,19 @@ namespace {
 /// 2-D rate problem's kRateTol.
 constexpr double kTol = 1e-10;
 constexpr double kPi = 3.14159265358979323846;
+/// A forward result of a solve with matrix M is known to about kRound cond(M) of its size
+/// (a generous multiple of the unit roundoff): signs inside that band are not decided.
+constexpr double kRound = 64 * 2.220446049250313e-16;
+/// |g| at a root relative to g's scale (the rounding of its evaluation, with margin).
+constexpr double kRootTol = 1e-9;
+
+/// cond_2(M) by the singular values (inf when singular).
+template <class M>
+double condition_number(const M& m) {
+  const auto sv = m.jacobiSvd().singularValues();
+  const double lo = sv(sv.size() - 1);
+  return lo > 0 ? sv(0) / lo : INFINITY;
+}
 
 bool finite(const Eigen::MatrixXd& m) { return m.allFinite(); }
 
@@ -101,6 +114,12 @@ struct SlipSystem {
   }
 };
 
+/// g'' (for the width of a double root's band).
+double second_derivative(const SlipDirectionFunction& g, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  return 2 * (g.d - g.a) * (c * c - s * s) - 4 * g.b * c * s - g.e * c - g.f * s;
+}
+
 SlipSystem slip_system(const Point3dParameters& p, const Blocks& b) {
   SlipSystem s;
   s.mu = p.mu;
@@ -110,6 +129,36 @@ SlipSystem slip_system(const Point3dParameters& p, const Blocks& b) {
   return s;
 }
 
+/// True when every slip with a direction in [phi - radius, phi + radius] (sampled) is
+/// inadmissible: the least-squares (dP_N, lambda) of B(t) z = dF has dP_N or lambda clearly
+/// negative. A direction where B(t) has rank one (singular for every load) has no slip when dF
+/// is outside its range; near it the slips grow without bound along B's null vector, whose
+/// sign pattern the samples see.
+bool slips_inadmissible(const SlipSystem& sys, const Eigen::Vector3d& dF, double phi,
+                        double radius) {
+  constexpr int kSamples = 8;
+  for (int j = -kSamples; j <= kSamples; ++j) {
+    const double ph = phi + radius * j / kSamples;
+    Eigen::Matrix<double, 3, 2> B = sys.at(Eigen::Vector2d(std::cos(ph), std::sin(ph)));
+    const Eigen::Vector2d cn(B.col(0).norm(), B.col(1).norm());
+    if (!(cn(0) > 0) || !(cn(1) > 0)) return false;
+    B.col(0) /= cn(0);
+    B.col(1) /= cn(1);
+    const Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>> svd(B, Eigen::ComputeFullU |
+                                                                   Eigen::ComputeFullV);
+    const auto& sv = svd.singularValues();
+    if (!(sv(1) > 1e-9 * sv(0))) {
+      const Eigen::Vector3d fn = dF.normalized(), u0 = svd.matrixU().col(0);
+      if ((fn - u0 * u0.dot(fn)).norm() > 1e-7) continue;  // dF outside the range: no slip
+      return false;
+    }
+    const Eigen::Vector2d z = svd.solve(dF).cwiseQuotient(cn);
+    const double margin = 1e-6 * z.cwiseAbs().maxCoeff();
+    if (!z.allFinite() || !(z(0) < -margin || z(1) < -margin)) return false;
+  }
+  return true;
+}
+
 double det3(const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vector3d& w) {
   return u.dot(v.cross(w));
 }
@@ -117,23 +166,48 @@ double det3(const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vec
 void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
                    RateSolutionSet3d& set) {
   const double f_scale = dF.cwiseAbs().maxCoeff();
-  // Separation: dP = 0, dw = A^-1 dF with dw_N < 0 (3D.2).
+  auto not_proved = [&](const std::string& why) {
+    set.complete = false;
+    if (set.message.empty()) set.message = why;
+  };
+  // Separation: dP = 0, dw = A^-1 dF with dw_N < 0 (3D.2). dw_N is a forward result: its sign
+  // is decided only outside the rounding band of the solve (cond(A) eps |dw|); inside it the
+  // separation is the contact solution with dP = 0 (listed below as a slip with dP_N = 0), or
+  // undecided.
+  bool separation_undecided = false;
+  Eigen::Vector3d dw_sep = Eigen::Vector3d::Zero();
   {
-    const Eigen::Vector3d dw = p.A.ldlt().solve(dF);
-    if (dw(2) < -kTol * dw.cwiseAbs().maxCoeff()) {
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(p.A);
+    dw_sep = ldlt.solve(dF);
+    // The solve is backward stable (residual ~ eps |A| |dw|); the row N of A^-1 carries that
+    // into dw_N.
+    const Eigen::Vector3d row_N = ldlt.solve(Eigen::Vector3d::UnitZ());
+    const double band = std::max(kTol * dw_sep.cwiseAbs().maxCoeff(),
+                                 kRound * row_N.cwiseAbs().sum() *
+                                     (p.A.cwiseAbs() * dw_sep.cwiseAbs()).maxCoeff());
+    if (dw_sep(2) < -band) {
       Rates3d r;
-      r.dw_T = dw.head<2>();
-      r.dw_N = dw(2);
+      r.dw_T = dw_sep.head<2>();
+      r.dw_N = dw_sep(2);
       r.dw_Ti = r.dw_T;
       set.solutions.push_back(point_solution(Type3d::kSeparation, r));
+    } else if (dw_sep(2) <= band) {
+      separation_undecided = true;
     }
   }
-  // Stick: ||dP_T|| <= mu dP_N (closed).
+  // Stick: ||dP_T|| <= mu dP_N (closed), to the rounding of the 2x2 solve.
+  bool stick_listed = false;
   {
     const Rates3d r = stick_rates(p, b, dF);
     const double norm = Eigen::Vector2d(b.Dinv * r.dP_T).stableNorm();
-    if (norm - p.mu * r.dP_N <= kTol * (norm + p.mu * std::abs(r.dP_N)))
+    const double band = std::max(kTol * (norm + p.mu * std::abs(r.dP_N)),
+                                 kRound * condition_number(b.K) *
+                                     (b.Dinv.diagonal().maxCoeff() + p.mu * p.C_T * b.A_scale) *
+                                     r.dP_T.cwiseAbs().maxCoeff());
+    if (norm - p.mu * r.dP_N <= band) {
       set.solutions.push_back(point_solution(Type3d::kStick, r));
+      stick_listed = true;
+    }
   }
   // Slip: every root of g(phi) (3D.6), then the 3x2 system for (dP_N, lambda).
   const SlipDirectionFunction g = slip_direction_function(p, dF);
@@ -207,23 +281,37 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
                           [](double x, double y) { return std::abs(x - y) <= 1e-9; }),
               roots.end());
   // Completeness certificate (docs/contact_3d.md, "Completeness"): every root simple, g clearly
-  // away from zero where a non-real pair sits, and the signs between roots alternate.
-  auto not_proved = [&](const std::string& why) {
-    set.complete = false;
-    if (set.message.empty()) set.message = why;
+  // away from zero where a non-real pair sits, and the signs between roots alternate. A spot
+  // that fails this (a double root, a nearly real pair) is still harmless when every slip in
+  // the band of directions where its roots can lie is inadmissible (lambda < 0 or dP_N < 0):
+  // no admissible slip can be hidden there (the eigenvector directions of A_TT with
+  // mu A_NT . t = its eigenvalue, singular for every load, are such spots).
+  const SlipSystem sys = slip_system(p, b);
+  auto harmless = [&](double phi) {
+    const double g2 = std::abs(second_derivative(g, phi));
+    if (!(g2 > 1e-7 * g_scale)) return false;  // a triple root or flatter: not resolved
+    const double radius = std::sqrt(2 * kRootTol * g_scale / g2) + 1e-9;
+    return slips_inadmissible(sys, dF, phi, radius);
   };
-  for (double r : roots)
-    if (std::abs(g.derivative(r)) <= 1e-7 * g_scale || std::abs(g(r)) > 1e-9 * g_scale)
-      not_proved("a slip direction at phi = " + num(r) + " is a double root of the slip "
-                 "condition, or not resolved (a critical load direction): not proved complete");
+  if (std::any_of(roots.begin(), roots.end(), [&](double r) { return std::abs(g(r)) > kRootTol * g_scale; }))
+    not_proved("a slip direction is not resolved (the slip condition does not vanish there to "
+               "its rounding): not proved complete");
+  const std::size_t m = roots.size();
+  std::vector<bool> spot(m, false);  // a harmless double root (no sign test across it)
+  for (std::size_t k = 0; k < m; ++k)
+    if (std::abs(g.derivative(roots[k])) <= 1e-7 * g_scale) {
+      if (harmless(roots[k]))
+        spot[k] = true;
+      else
+        not_proved("a slip direction at phi = " + num(roots[k]) + " is a double root of the slip "
+                   "condition (a critical load direction): not proved complete");
+    }
   for (double x : complex_re)
-    if (std::abs(g(x)) <= 1e-7 * g_scale)
+    if (std::abs(g(x)) <= 1e-7 * g_scale && !harmless(x))
       not_proved("the slip condition nearly vanishes at phi = " + num(x) +
                  " without a root (a critical load direction): not proved complete");
-  if (roots.size() % 2 != 0)
-    not_proved("an odd number of slip directions: the slip condition is not resolved");
-  const std::size_t m = roots.size();
   for (std::size_t k = 0; m >= 2 && k < m; ++k) {
+    if (spot[k]) continue;
     // the arcs before and after roots[k] (cyclic)
     const double prev = k > 0 ? roots[k - 1] : roots[m - 1] - 2 * kPi;
     const double next = k + 1 < m ? roots[k + 1] : roots[0] + 2 * kPi;
@@ -231,8 +319,11 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
       not_proved("the slip condition does not change sign at phi = " + num(roots[k]) +
                  ": not proved complete");
   }
+  // The number of sign changes around the circle is even: an odd count of simple roots means
+  // one was lost.
+  if (std::count(spot.begin(), spot.end(), false) % 2 != 0)
+    not_proved("an odd number of slip directions: the slip condition is not resolved");
 
-  const SlipSystem sys = slip_system(p, b);
   const double lambda_scale = f_scale / b.A_scale;
   for (double phi : roots) {
     const Eigen::Vector2d t = unit(phi);
@@ -265,8 +356,18 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     }
     const Eigen::Vector2d x = svd.solve(dF).cwiseQuotient(col_norm);
     const double dP_N = x(0), lambda = x(1);
-    if (dP_N < -kTol * f_scale) continue;          // negative normal force rate
-    if (lambda <= kTol * lambda_scale) continue;   // not a slip (lambda = 0 is the stick)
+    // Signs are decided outside the rounding band of the solve (|dF| eps / sigma_min of the
+    // equilibrated B); inside it dP_N is 0 (clamped below) and lambda = 0 is the stick point.
+    const double band = std::max(kTol, kRound / sv(1)) * f_scale;
+    if (dP_N < -band / col_norm(0)) continue;         // negative normal force rate
+    if (lambda < -band / col_norm(1)) continue;       // a negative multiplier
+    if (lambda <= std::max(kTol * lambda_scale, band / col_norm(1))) {
+      // lambda = 0 within rounding: the stick on the cone's boundary, listed above, or undecided.
+      if (!stick_listed)
+        not_proved("the slip direction phi = " + num(phi) + " has a multiplier at the rounding "
+                   "level while the stick is not admissible: not resolved");
+      continue;
+    }
     Rates3d r;
     r.dP_N = std::max(dP_N, 0.0);
     r.dP_T = p.mu * r.dP_N * (b.D * t);
@@ -278,6 +379,17 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
       continue;
     }
     set.solutions.push_back(point_solution(Type3d::kSlip, r));
+  }
+  if (separation_undecided) {
+    // dw_N = 0 within rounding: the separation is then the contact solution with dP = 0.
+    const double tol = 1e-8 * f_scale;
+    const bool explained = std::any_of(set.solutions.begin(), set.solutions.end(), [&](const RateSolution3d& x) {
+      return std::max(x.at.dP_T.cwiseAbs().maxCoeff(), std::abs(x.at.dP_N)) <= tol;
+    });
+    if (!explained)
+      not_proved("the separation's normal rate dw_N = " + num(dw_sep(2)) + " is zero within the "
+                 "rounding of the stiffness (cond(A) = " + num(condition_number(p.A)) +
+                 "): not decided");
   }
 }
 
@@ -351,6 +463,12 @@ std::string Point3dParameters::validate() const {
   if (!std::isfinite(P_s) || !(P_s > 0)) return "P_s must be finite and > 0, got " + num(P_s);
   if (!alpha.allFinite() || !(alpha(0) > 0) || !(alpha(1) > 0))
     return "alpha must be two finite numbers > 0";
+  // The solvers work with the ellipse in its own unit (unit_scaling.hpp, normalize_ellipse).
+  const double c = detail::ellipse_unit(alpha);
+  if (!(mu * c > 0) || !std::isfinite(mu * c) || !std::isfinite(k_a * c) ||
+      !std::isfinite(c / alpha.minCoeff()))
+    return "mu x alpha, k_a x alpha or alpha_X / alpha_Y leaves double's range: give the "
+           "friction ellipse in units of moderate size";
   return {};
 }
 
@@ -428,6 +546,7 @@ RateSolutionSet3d solve_rate_3d(const Point3dParameters& user_params, const Poin
   if (!user_dF.allFinite()) throw InputError("dF must be finite");
   Point3dParameters params = user_params;
   Eigen::Vector3d dF = user_dF;
+  detail::normalize_ellipse(params);  // the rates hold no multiplier: nothing to scale back
   const detail::UnitScaling scaling = detail::normalize(params, dF);
   const Blocks b = blocks(params);
   RateSolutionSet3d set;

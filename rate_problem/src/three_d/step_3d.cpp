@@ -13,12 +13,16 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "step_3d_terms.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kAcceptTol = 1e-9;  ///< step_3d_residual of every listed solution
+/// A forward result of a solve with matrix M is known to about kRound cond(M) of its size (a
+/// generous multiple of the unit roundoff): inequalities inside that band are not decided.
+constexpr double kRound = 64 * 2.220446049250313e-16;
 
 std::string num(double x) {
   std::ostringstream s;
@@ -30,6 +34,7 @@ std::string num(double x) {
 /// The problem's own scales: forces by `force`, displacements by force / stiffness.
 struct Scales {
   double force = 1, stiffness = 1;
+  double ellipse = 1;  ///< detail::ellipse_unit(alpha): multipliers scale by it
   double disp() const noexcept { return force / stiffness; }
 };
 
@@ -41,6 +46,7 @@ Scales scales_of(const Step3dProblem& p) noexcept {
   s.force = std::max({p.DF.cwiseAbs().maxCoeff(), p.state.P_T0.cwiseAbs().maxCoeff(),
                       std::abs(p.state.P_N0), std::isfinite(g) ? g : 0.0});
   if (!(s.force > 0) || !std::isfinite(s.force)) s.force = 1;
+  s.ellipse = detail::ellipse_unit(p.params.alpha);
   return s;
 }
 
@@ -52,6 +58,9 @@ Step3dProblem normalized(const Step3dProblem& p, const Scales& s) noexcept {
   // c_w P_N lambda is a length: c_w scales as 1/force. Archard's k = k_a/(3 P_s) through k_a.
   n.params.k_a *= s.force;
   n.wear.k_M *= s.force;
+  // The ellipse in its own unit (alpha / c, mu c, k_a c; lambda / c); validate() has made sure
+  // that these fit a double.
+  detail::normalize_ellipse(n.params);
   n.state.P_T0 /= s.force;
   n.state.P_N0 /= s.force;
   n.state.g0 /= s.disp();
@@ -69,12 +78,12 @@ Step3dValues to_user_units(Step3dValues v, const Scales& s) noexcept {
   v.Dw_N *= s.disp();
   v.Dw_w *= s.disp();
   v.g1 *= s.disp();
-  v.lambda *= s.disp();
+  v.lambda *= s.disp() * s.ellipse;
   return v;
 }
 
 Step3dValues to_normalized(Step3dValues v, const Scales& s) noexcept {
-  Scales inv{1 / s.force, 1 / s.stiffness};
+  Scales inv{1 / s.force, 1 / s.stiffness, 1 / s.ellipse};
   return to_user_units(v, inv);
 }
 
@@ -377,13 +386,21 @@ bool trig_roots(const TrigPoly& h, double noise, std::vector<double>& roots, std
 }
 
 /// Refines (x, l, phi) of a slip candidate by Newton's method on the three equations
-/// x u(t) + l v(t) + x l m - r = 0.
-bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi) {
+/// x u(t) + l v(t) + x l m - r = 0; `sigma` is the smallest singular value of the Jacobian's
+/// (x, l) columns at the end, `error` the resulting error bound of x and l. The direction is the root's (phi
+/// moves by rounding only); x and l may move more (from a candidate computed from two rows only).
+/// False when Newton does not converge there (the start is then kept).
+bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double& sigma,
+                 double& error) {
+  const double phi0 = phi;
+  Eigen::Matrix3d J;
+  double res = INFINITY, size = 0;
   for (int it = 0; it < 30; ++it) {
     const Eigen::Vector2d t(std::cos(phi), std::sin(phi)), dt(-std::sin(phi), std::cos(phi));
     const Eigen::Vector3d U = s.u(t), V = s.v(t);
     const Eigen::Vector3d F = x * U + l * V + x * l * s.m - s.r;
-    Eigen::Matrix3d J;
+    res = F.cwiseAbs().maxCoeff();
+    size = std::abs(x) * U.norm() + std::abs(l) * V.norm() + std::abs(x * l) * s.m.norm() + s.r.norm();
     J.col(0) = U + l * s.m;
     J.col(1) = V + x * s.m;
     J.col(2) = x * s.du(dt) + l * s.v(dt);
@@ -394,7 +411,37 @@ bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi) {
     phi -= d(2);
     if (d.cwiseAbs().maxCoeff() <= 1e-15 * (1 + std::abs(x) + std::abs(l))) break;
   }
-  return std::isfinite(x) && std::isfinite(l) && std::isfinite(phi);
+  // The sensitivity of (x, l) at the polished direction: the columns of x and l.
+  sigma = J.leftCols<2>().jacobiSvd().singularValues()(1);
+  // The rounding of F and what is left of it, through the (x, l) columns: the error of x, l.
+  error = (kRound * size + res) / std::max(sigma, 1e-300);
+  return std::isfinite(x) && std::isfinite(l) && std::isfinite(phi) && res <= 1e-9 * size &&
+         std::abs(phi - phi0) <= 1e-4;
+}
+
+/// A contact solution (P_N1 >= 0, g1 = 0) from its own unknowns: Dw_T = C_T DP_T + Dw_T^i,
+/// Dw_N = -g0 + Dw^w. Equilibrium is then what the residual checks (a backward error); solving
+/// A Dw = DF - DP instead would carry cond(A) eps into g1.
+Step3dValues contact_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1, double P_N1,
+                            double lambda, const Eigen::Vector2d& Dw_Ti) noexcept {
+  Step3dValues v;
+  v.P_T1 = P_T1;
+  v.P_N1 = P_N1;
+  v.lambda = lambda;
+  v.DP_T = P_T1 - p.state.P_T0;
+  v.DP_N = P_N1 - p.state.P_N0;
+  v.Dw_Ti = Dw_Ti;
+  v.Dw_T = p.params.C_T * v.DP_T + Dw_Ti;
+  v.Dw_w = p.wear_coefficient() * P_N1 * lambda;
+  v.Dw_N = v.Dw_w - p.state.g0;
+  v.g1 = 0;
+  return v;
+}
+
+/// cond_2(M) (inf when singular).
+double condition_number(const Eigen::Matrix3d& m) {
+  const Eigen::Vector3d sv = m.jacobiSvd().singularValues();
+  return sv(2) > 0 ? sv(0) / sv(2) : INFINITY;
 }
 
 /// The (x, l) of the slip direction phi (at most two: x u + l v + x l m = r). Without wear the
@@ -443,8 +490,17 @@ bool slip_amounts(const SlipSystem& s, bool wear, double phi, std::vector<Eigen:
   // Rank one: z = z0 + sigma d (scaled variables), then the row along m is quadratic in sigma.
   const Eigen::Vector2d d = svd.matrixV().col(1);
   const Eigen::Vector2d z0 = svd.matrixV().col(0) * (svd.matrixU().col(0).dot(b) / sv(0));
-  if (std::abs(svd.matrixU().col(1).dot(b)) > 1e-7 * (b.norm() + sv(0) * z0.norm()))
-    return true;  // the two rows are inconsistent here: no slip in this direction
+  if (std::abs(svd.matrixU().col(1).dot(b)) > 1e-7 * (b.norm() + sv(0) * z0.norm())) {
+    // The two rows are inconsistent. Exactly singular (to rounding): a root that the
+    // elimination (3D.26) adds where the 2x2 determinant vanishes, no slip in this direction.
+    // Only nearly singular (an ill-conditioned stiffness): the regular solution, for Newton
+    // and the residual to judge.
+    if (sv(1) > 1e-12 * sv(0)) {
+      const Eigen::Vector2d z = svd.solve(b);
+      out.emplace_back(z(0) / nu, z(1) / nv);
+    }
+    return true;
+  }
   const double pu = mh.dot(U) / nu, pv = mh.dot(V) / nv, pr = mh.dot(s.r);
   // (z0x + sig dx) pu + (z0l + sig dl) pv + mn/(nu nv) (z0x + sig dx)(z0l + sig dl) = pr.
   const double k = mn / (nu * nv);
@@ -553,6 +609,7 @@ Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues&
 Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
   if (const std::string e = user.validate(); !e.empty()) throw InputError("step: " + e);
   const Scales sc = scales_of(user);
+  detail::require_representable(sc.force, sc.disp(), "step");
   const Step3dProblem p = normalized(user, sc);
   if (!p.params.A.allFinite() || !std::isfinite(p.params.C_T) || !std::isfinite(p.wear_coefficient()))
     throw InputError("step: the stiffness, compliance or wear constant overflows double in the "
@@ -562,19 +619,44 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
 
   std::vector<Step3dValues> found;  // normalized units
   Step3dSolutionSet set;
-  auto add = [&](const Step3dValues& v) {
+  auto not_proved = [&](const std::string& why) {
+    set.complete = false;
+    if (set.message.empty()) set.message = why;
+  };
+  // Every candidate that is not clearly inadmissible (outside the rounding band of its own
+  // computation) is either listed -- its residual is a backward error, at the rounding level
+  // for a solution whatever cond(A) is -- or makes the list incomplete: a computed root never
+  // disappears silently.
+  auto add = [&](const Step3dValues& v, const std::string& what) {
     for (const auto& f : found)
       if (distance(f, v) <= 1e-8 * (1 + std::abs(v.P_N1) + std::abs(v.lambda))) return;
-    if (step_3d_residual(p, v) <= kAcceptTol) found.push_back(v);
+    const double res = step_3d_residual(p, v);
+    if (res <= kAcceptTol)
+      found.push_back(v);
+    else
+      not_proved("the " + what + " candidate has residual " + num(res) + " > " +
+                 num(kAcceptTol) + " (cond(A) = " + num(condition_number(p.params.A)) +
+                 "): not accepted, so the list is not proved complete");
   };
 
-  // Separation / open (3D.23): P1 = 0, admissible when g1 <= 0.
+  // Separation / open (3D.23): P1 = 0, admissible when g1 <= 0. Dw = A^-1 (DF + P0) is a
+  // forward result: the sign of g1 is decided outside cond(A) eps |Dw|.
   {
     Step3dValues v = step_3d_values(p, Eigen::Vector2d::Zero(), 0, 0);
     v.lambda = alpha.cwiseProduct(v.Dw_Ti).stableNorm();  // any lambda >= |D Dw_Ti| fits P = 0
-    if (v.g1 <= 1e-12 * (1 + std::abs(p.state.g0) + std::abs(v.Dw_N))) add(v);
+    // The solve is backward stable (residual ~ eps |A| |Dw|); the row N of A^-1 carries that
+    // into Dw_N.
+    const Eigen::Vector3d Dw(v.Dw_T(0), v.Dw_T(1), v.Dw_N);
+    const Eigen::Vector3d row_N = p.params.A.ldlt().solve(Eigen::Vector3d::UnitZ());
+    const double band =
+        1e-12 * (std::abs(p.state.g0) + Dw.cwiseAbs().maxCoeff()) +
+        kRound * (std::abs(p.state.g0) +
+                  row_N.cwiseAbs().sum() * (p.params.A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff());
+    if (v.g1 <= band) add(v, "separation");
   }
   // Stick (3D.23): lambda = 0, g1 = 0: (I + A S) DP = DF + g0 A e_N, S = diag(C_T, C_T, 0).
+  // Dw is the stick's own (C_T DP_T, -g0), not A^-1 of the load: that would carry cond(A)
+  // eps into g1.
   {
     Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
     K.leftCols<2>() += p.params.C_T * p.params.A.leftCols<2>();
@@ -582,8 +664,10 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
     const Eigen::Vector2d P_T1 = p.state.P_T0 + DP.head<2>();
     const double P_N1 = p.state.P_N0 + DP(2);
     const double norm = P_T1.cwiseQuotient(alpha).stableNorm();
-    if (P_N1 >= -1e-12 && norm - mu * P_N1 <= 1e-12 * (1 + norm))
-      add(step_3d_values(p, P_T1, std::max(P_N1, 0.0), 0));
+    const double size = DP.cwiseAbs().maxCoeff() + std::abs(P_N1) + P_T1.cwiseAbs().maxCoeff();
+    const double band = std::max(1e-12, kRound * condition_number(K)) * size;
+    if (P_N1 >= -band && norm - mu * P_N1 <= band * (1 / alpha.minCoeff() + mu))
+      add(contact_values(p, P_T1, std::max(P_N1, 0.0), 0, Eigen::Vector2d::Zero()), "stick");
   }
   // Slip (3D.24)-(3D.27): every zero of the slip condition.
   const SlipSystem s = slip_system(p);
@@ -598,29 +682,56 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
   std::vector<double> roots;
   std::string why;
   if (!std::isfinite(h.scale())) {
-    set.complete = false;
-    set.message = "the slip condition overflows double: slip solutions are not resolved";
+    not_proved("the slip condition overflows double: slip solutions are not resolved");
   } else if (h.scale() <= 1e-12 * terms) {
-    set.complete = false;
-    set.message = "the slip condition vanishes for every direction (e.g. no load and no "
-                  "stored force): slip solutions are not resolved";
+    not_proved("the slip condition vanishes for every direction (e.g. no load and no "
+               "stored force): slip solutions are not resolved");
   } else if (!trig_roots(h, noise, roots, why)) {
-    set.complete = false;
-    set.message = why;
+    not_proved(why);
   }
   std::vector<Eigen::Vector2d> amounts;
   for (double root : roots) {
     if (!slip_amounts(s, wear, root, amounts)) {
-      set.complete = false;
-      set.message = "the slip system cannot be resolved at the slip direction phi = " + num(root);
+      not_proved("the slip system cannot be resolved at the slip direction phi = " + num(root));
       continue;
     }
     for (const Eigen::Vector2d& xl : amounts) {
       double x = xl(0), l = xl(1), phi = root;
-      if (wear && amounts.size() == 1 && !refine_slip(s, x, l, phi)) continue;
-      if (!(x > 1e-14) || !(l > 1e-14)) continue;  // not a slip (x, l must be positive)
+      // Newton on the three equations polishes (x, l, phi) to a backward error at the rounding
+      // level (the root of h is only as good as h's rounding); it also gives the rounding band
+      // of x and l (through the smallest singular value of its Jacobian). Two solutions sharing
+      // a direction (a double root) are taken as slip_amounts gives them.
+      double band = 1e-8 * (1 + std::abs(x) + std::abs(l));
+      bool resolved = true;  // (x, l) known well enough to read their signs
+      if (amounts.size() == 1) {
+        double x1 = x, l1 = l, phi1 = phi, sigma = 0, error = 0;
+        resolved = refine_slip(s, x1, l1, phi1, sigma, error);
+        if (resolved) {
+          x = x1, l = l1, phi = phi1;
+          band = std::max(1e-12 * (1 + std::abs(x) + std::abs(l)), error);
+        }
+      }
+      if (x < -band || l < -band) {  // not a slip (x, l must be positive)
+        if (!resolved)
+          not_proved("the slip at phi = " + num(phi) + " could not be polished by Newton's "
+                     "method (an ill-conditioned slip system): its sign is not decided");
+        continue;
+      }
+      if (x <= band) {
+        // P1 = 0 within rounding: the separation (P1 = 0, g1 = 0) listed above, or undecided.
+        const bool listed = std::any_of(found.begin(), found.end(), [](const Step3dValues& f) {
+          return f.P_N1 == 0 && f.P_T1.cwiseAbs().maxCoeff() == 0;
+        });
+        if (!listed)
+          not_proved("a slip at phi = " + num(phi) + " has P_N1 = " + num(x) + " at the "
+                     "rounding level while no separation is listed: not resolved");
+        continue;
+      }
       const Eigen::Vector2d t(std::cos(phi), std::sin(phi));
-      add(step_3d_values(p, mu * x * alpha.cwiseProduct(t), x, l));
+      x = std::max(x, 0.0);
+      l = std::max(l, 0.0);
+      add(contact_values(p, mu * x * alpha.cwiseProduct(t), x, l, l * t.cwiseQuotient(alpha)),
+          "slip at phi = " + num(phi));
     }
   }
   for (const auto& v : found) set.solutions.push_back(make_step_3d_solution(user, to_user_units(v, sc)));

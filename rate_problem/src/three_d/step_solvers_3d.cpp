@@ -21,6 +21,7 @@
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "soc_fb.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -40,6 +41,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct Normalized {
   double K0 = 1, F0 = 1, L0 = 1;
   double mu = 0.5, C = 0, cw = 0;
+  double E = 1;  ///< the ellipse's unit (unit_scaling.hpp): lambda / (L0 E) is normalized
   Eigen::Vector2d al{1, 1};
   Eigen::Matrix3d A = Eigen::Matrix3d::Identity(), Ainv = Eigen::Matrix3d::Identity();
   Eigen::Vector3d DF{0, 0, 0}, dw0{0, 0, 0};  // Dw = dw0 - Ainv P1
@@ -59,10 +61,13 @@ Normalized normalize(const Step3dProblem& pr) {
                              std::abs(pr.state.P_N0), n.K0 * std::abs(pr.state.g0)});
   n.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
   n.L0 = n.F0 / n.K0;
-  n.mu = p.mu;
+  detail::require_representable(n.F0, n.L0, "step");
+  // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
+  n.E = detail::ellipse_unit(p.alpha);
+  n.mu = p.mu * n.E;
   n.C = p.C_T * n.K0;
-  n.cw = pr.wear_coefficient() * n.F0;
-  n.al = p.alpha;
+  n.cw = pr.wear_coefficient() * n.F0 * n.E;
+  n.al = p.alpha / n.E;
   n.A = p.A / n.K0;
   if (!std::isfinite(n.C) || !std::isfinite(n.cw) || !std::isfinite(n.L0) || n.L0 == 0)
     throw InputError("the step's scales overflow double (C_T |A|, c_w F0 or F0 / |A|): give the "
@@ -147,7 +152,7 @@ bool fb_small(const Normalized& n, const Vec4& z) noexcept {
 
 /// Physical values of a normalized iterate, verified on the original problem.
 Step3dValues physical(const Step3dProblem& pr, const Normalized& n, const Vec4& z) noexcept {
-  return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * z(3));
+  return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * n.E * z(3));
 }
 
 /// Snaps a verified iterate to its canonical form when that stays verified: separation
@@ -238,7 +243,7 @@ void check(const Step3dProblem& pr) {
 
 Vec4 normalized_start(const Step3dProblem& pr, const Normalized& n, const Step3dStart* s) {
   if (s == nullptr) return Vec4(n.PT0(0), n.PT0(1), n.PN0, 0);
-  const Vec4 z(s->P_T1(0) / n.F0, s->P_T1(1) / n.F0, s->P_N1 / n.F0, s->lambda / n.L0);
+  const Vec4 z(s->P_T1(0) / n.F0, s->P_T1(1) / n.F0, s->P_N1 / n.F0, s->lambda / (n.L0 * n.E));
   if (!z.allFinite()) throw InputError("start point must be finite");
   (void)pr;
   return z;
@@ -505,7 +510,7 @@ Step3dValues facet_values(const Step3dProblem& pr, const Normalized& n, const Fa
   v.Dw_Ti = n.L0 * (Nh * lam);
   v.Dw_w = n.L0 * n.cw * PN * sum;
   v.g1 = pr.state.g0 + v.Dw_N - v.Dw_w;
-  v.lambda = n.L0 * sum;
+  v.lambda = n.L0 * n.E * sum;
   if (PN == 0) v.lambda = (pr.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
   return v;
 }
@@ -738,7 +743,7 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
     Step3dStart s;
     s.P_T1 = n.F0 * z.head<2>();
     s.P_N1 = n.F0 * z(2);
-    s.lambda = n.L0 * z(3);
+    s.lambda = n.L0 * n.E * z(3);
     const Step3dSolverResult r = solve_step_3d_fb_soc(problem, o, &s);
     ++fb_runs;
     if (r.solved) {

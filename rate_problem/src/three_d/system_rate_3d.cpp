@@ -12,6 +12,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -48,8 +49,12 @@ Polygon polygon(const Eigen::Vector2d& alpha, int k) {
 
 }  // namespace
 
-SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& sys, const Eigen::VectorXd& user_dF,
-                                             int k, double time_limit_s) {
+SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
+                                             const Eigen::VectorXd& user_dF, int k,
+                                             double time_limit_s) {
+  // Every point's friction ellipse in its own unit (the rates hold no multiplier).
+  ContactSystem3d sys = user_sys;
+  for (SystemPoint3d& pt : sys.points) detail::normalize_ellipse(pt);
   const int n = sys.n_points();
   if (n < 1 || sys.A.rows() != 3 * n || sys.A.cols() != 3 * n)
     throw InputError("system: A must be 3N x 3N for its N points");

@@ -17,6 +17,7 @@
 #include "cpkit/core/errors.hpp"
 #include "soc_fb.hpp"
 #include "step_3d_terms.hpp"
+#include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -62,6 +63,7 @@ Step3dProblem normalized_point(const SystemStep3dProblem& p, int i, const Scales
   q.params.C_T *= s.K0;
   q.params.k_a *= s.F0;
   q.wear.k_M *= s.F0;
+  detail::normalize_ellipse(q.params);  // lambda / ellipse_unit (normalized_values)
   q.state.P_T0 /= s.F0;
   q.state.P_N0 /= s.F0;
   q.state.g0 /= s.L0();
@@ -69,7 +71,8 @@ Step3dProblem normalized_point(const SystemStep3dProblem& p, int i, const Scales
   return q;
 }
 
-Step3dValues normalized_values(Step3dValues v, const Scales& s) noexcept {
+/// `ellipse`: detail::ellipse_unit of the point's alpha (the multiplier's unit).
+Step3dValues normalized_values(Step3dValues v, const Scales& s, double ellipse) noexcept {
   const double f = 1 / s.F0, d = 1 / s.L0();
   v.DP_T *= f;
   v.P_T1 *= f;
@@ -80,7 +83,7 @@ Step3dValues normalized_values(Step3dValues v, const Scales& s) noexcept {
   v.Dw_N *= d;
   v.Dw_w *= d;
   v.g1 *= d;
-  v.lambda *= d;
+  v.lambda *= d / ellipse;
   return v;
 }
 
@@ -90,6 +93,7 @@ struct Normalized {
   int N = 0;
   double K0 = 1, F0 = 1, L0 = 1;
   std::vector<double> mu, C, cw;
+  std::vector<double> E;  ///< per point: the ellipse's unit (lambda / (L0 E) is normalized)
   std::vector<Eigen::Vector2d> al;
   Mat Ainv;
   Vec z0;      ///< start state (lambda = 0)
@@ -107,6 +111,7 @@ Normalized normalize(const SystemStep3dProblem& pr) {
   n.K0 = s.K0;
   n.F0 = s.F0;
   n.L0 = s.L0();
+  detail::require_representable(n.F0, n.L0, "step");
   if (!std::isfinite(n.L0) || n.L0 == 0)
     throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
                      "of moderate size");
@@ -117,10 +122,13 @@ Normalized normalize(const SystemStep3dProblem& pr) {
   n.z0 = Vec::Zero(4 * N);
   for (int i = 0; i < N; ++i) {
     const Step3dProblem q = pr.point_problem(i);
-    n.mu.push_back(q.params.mu);
+    // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
+    const double E = detail::ellipse_unit(q.params.alpha);
+    n.E.push_back(E);
+    n.mu.push_back(q.params.mu * E);
     n.C.push_back(q.params.C_T * n.K0);
-    n.cw.push_back(q.wear_coefficient() * n.F0);
-    n.al.push_back(q.params.alpha);
+    n.cw.push_back(q.wear_coefficient() * n.F0 * E);
+    n.al.push_back(q.params.alpha / E);
     if (!std::isfinite(n.C.back()) || !std::isfinite(n.cw.back()))
       throw InputError("step: point " + std::to_string(i + 1) + ": C_T |A| or c_w F0 overflows "
                        "double: give the data in units of moderate size");
@@ -211,7 +219,7 @@ std::vector<Step3dValues> physical(const SystemStep3dProblem& pr, const Normaliz
   Vec P1(3 * n.N), lam(n.N);
   for (int i = 0; i < n.N; ++i) {
     P1.segment<3>(3 * i) = n.F0 * z.segment<3>(4 * i);
-    lam(i) = n.L0 * z(4 * i + 3);
+    lam(i) = n.L0 * n.E[static_cast<std::size_t>(i)] * z(4 * i + 3);
   }
   return system_step_3d_values(pr, P1, lam);
 }
@@ -410,7 +418,8 @@ bool residual_terms(const SystemStep3dProblem& p, const std::vector<Step3dValues
   Vec DP(3 * N), Dw(3 * N);
   local.assign(static_cast<std::size_t>(N), 0.0);
   for (int i = 0; i < N; ++i) {
-    const Step3dValues v = normalized_values(values[static_cast<std::size_t>(i)], s);
+    const Step3dValues v = normalized_values(values[static_cast<std::size_t>(i)], s,
+                                             detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
     local[static_cast<std::size_t>(i)] = detail::local_step_3d_residual(normalized_point(p, i, s), v);
     DP.segment<3>(3 * i) << v.DP_T, v.DP_N;
     Dw.segment<3>(3 * i) << v.Dw_T, v.Dw_N;
@@ -449,7 +458,8 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
   out.residual = eq;
   for (int i = 0; i < p.n_points(); ++i) {
     const Step3dValues& uv = values[static_cast<std::size_t>(i)];
-    const Step3dValues v = normalized_values(uv, s);
+    const Step3dValues v =
+        normalized_values(uv, s, detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
     Step3dSolution sol;
     sol.values = uv;
     if (v.P_N1 <= 1e-9)
@@ -483,7 +493,8 @@ SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& 
                        std::to_string(n.N) + " points");
     for (int i = 0; i < n.N; ++i) {
       const Step3dStart& s = (*start)[static_cast<std::size_t>(i)];
-      z.segment<4>(4 * i) << s.P_T1 / n.F0, s.P_N1 / n.F0, s.lambda / n.L0;
+      z.segment<4>(4 * i) << s.P_T1 / n.F0, s.P_N1 / n.F0,
+          s.lambda / (n.L0 * n.E[static_cast<std::size_t>(i)]);
     }
     if (!z.allFinite()) throw InputError("start point must be finite");
   }

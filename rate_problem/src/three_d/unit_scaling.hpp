@@ -4,15 +4,55 @@
 // cannot depend on the user's units; the solutions are scaled back (forces by |dF|, displacement
 // rates by |dF| / |A|).
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
 
 namespace cpkit::rate3d::detail {
 
+/// The unit of the friction ellipse: its larger half-axis. Multiplying alpha by c and dividing
+/// mu by c leaves the friction set ||D^-1 P_T|| <= mu P_N and the flow direction D^-2 P_T
+/// unchanged (only the plastic multiplier lambda = |D dw_T^i| scales, by c), so every 3-D
+/// solver works with max(alpha) = 1 and the verdict cannot depend on that choice of units.
+inline double ellipse_unit(const Eigen::Vector2d& alpha) noexcept {
+  const double c = alpha.maxCoeff();
+  return c > 0 && std::isfinite(c) ? c : 1.0;
+}
+
+/// Puts the friction ellipse of a point (Point3dParameters or SystemPoint3d: fields alpha, mu,
+/// k_a) in the unit c = ellipse_unit(alpha): alpha / c, mu c, k_a c (Archard's wear
+/// k P_N |D dw_T^i| = k P_N lambda keeps its value; Mroz-Stupkiewicz's c_w = k_M mu follows mu).
+/// Returns c: a plastic multiplier of the normalized problem times c is the user's.
+/// Point3dParameters::validate() refuses data whose normalized values leave double's range.
+template <class Point>
+double normalize_ellipse(Point& p) noexcept {
+  const double c = ellipse_unit(p.alpha);
+  p.alpha /= c;
+  p.mu *= c;
+  p.k_a *= c;
+  return c;
+}
+
 struct UnitScaling {
   double force = 1, disp = 1;  ///< multiply normalized forces / displacement rates by these
 };
+
+/// Refuses a problem whose own force scale or length scale (force / stiffness) is subnormal:
+/// its solution would have to be written with a few significant bits, so that no residual in
+/// the user's units could verify it (every 3-D step route calls this, so they agree).
+inline void require_representable(double force, double length, const char* what) {
+  constexpr double kMin = 2.2250738585072014e-308;  // DBL_MIN, the smallest normal double
+  if ((force != 0 && std::abs(force) < kMin) || (length != 0 && std::abs(length) < kMin))
+  {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3g, length scale %.3g", force, length);
+    throw InputError(std::string(what) + ": the force scale of the data (" + buf +
+                     ") is a subnormal double: the solution is not representable to the "
+                     "solver's accuracy; give the data in units of moderate size");
+  }
+}
 
 /// The normalized problem: A / |A|, C_T |A| (the same compliance), dF / |dF| (dF = 0 stays 0).
 inline UnitScaling normalize(Point3dParameters& p, Eigen::Vector3d& dF) {
