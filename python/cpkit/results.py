@@ -370,11 +370,16 @@ class StepSolutionSet:
     count: int
     continuous_count: int
     types: List[str]
+    # False when a candidate could be neither accepted nor rejected (`message` says which):
+    # the listed solutions are verified, but the set is not proved to hold every solution.
+    complete: bool = True
+    message: str = ""
 
     def __repr__(self):
         n = "inf" if self.count < 0 else str(self.count)
+        more = "" if self.complete else ", complete=False"
         return (f"StepSolutionSet(count={n}, types={self.types}, "
-                f"continuous_count={self.continuous_count})")
+                f"continuous_count={self.continuous_count}{more})")
 
     @classmethod
     def _from(cls, d):

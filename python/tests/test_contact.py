@@ -177,6 +177,7 @@ def test_step_hand_case():
     p = cpkit.ContactParameters(a11=1, a12=1, a22=2, mu=1)
     s = cpkit.enumerate_step(p, 0, 0, 0, (0.5, 0.5))
     assert s.count == -1 and sorted(s.types) == ["slip+", "stick"]
+    assert s.complete and s.message == ""  # a well-conditioned step is proved complete
     stick = [x for x in s.solutions if x.type == "stick"][0]
     assert stick.start["DP_T"] == pytest.approx(0.5) and stick.start["DP_N"] == pytest.approx(0.5)
     seg = [x for x in s.solutions if x.type == "slip+"][0]
