@@ -14,6 +14,7 @@
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
+#include "rounding_ties.hpp"
 
 namespace cpkit::lcp {
 
@@ -983,10 +984,44 @@ enum class Structured { kAnswered, kUndecided, kTimeLimit, kMemory };
 /// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
 /// from the dictionary in hand is reached by that pivot, any other is refactorised from the
 /// data. kUndecided on an unbounded edge, a tie, or a basic value too close to zero to call.
-Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
+Structured polytope_vertices(const Mat& D0, const Vec& b0, const std::vector<int>& var_label,
                              const std::vector<int>& row_label, int n,
                              std::vector<IndexSet>& masks, Deadline& deadline) {
-  const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
+  const int m = static_cast<int>(D0.rows()), d = static_cast<int>(D0.cols());
+  // Every constraint row (b_r, D_r) and every column of D scaled by a power of two to largest
+  // entry in [0.5, 1): exact, and the polytope's vertices and their labels are unchanged (the
+  // slacks and variables only change units). The decisions below then never compare numbers in
+  // different units: with the rows of one player in units 1e-10 of the others (the same game),
+  // the tests against column maxima called every ratio a tie or every pivot noise, and the
+  // game went to the general engine, 100x slower or to the time limit (issue 24, item 7 class).
+  Mat D = D0;
+  Vec b = b0;
+  {
+    auto exponent = [](double x) {
+      int e = 0;
+      if (x > 0) std::frexp(x, &e);
+      return e;
+    };
+    bool exact = true;
+    auto scale = [&](double& x, int e) {
+      const double y = std::ldexp(x, -e);
+      exact = exact && std::ldexp(y, e) == x;
+      x = y;
+    };
+    for (int r = 0; r < m; ++r) {
+      const int e = exponent(std::max(std::abs(b(r)), D.row(r).cwiseAbs().maxCoeff()));
+      scale(b(r), e);
+      for (int c = 0; c < d; ++c) scale(D(r, c), e);
+    }
+    for (int c = 0; c < d; ++c) {
+      const int e = exponent(D.col(c).cwiseAbs().maxCoeff());
+      for (int r = 0; r < m; ++r) scale(D(r, c), e);
+    }
+    if (!exact) {  // an entry would lose bits (subnormal): the data as given
+      D = D0;
+      b = b0;
+    }
+  }
   const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
   struct State {
     std::vector<double> T;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
@@ -1006,6 +1041,12 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   constexpr size_t kStackDictBytes = size_t(64) << 20;
   size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
   constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
+  // Ties of ratios and of perturbation entries: at the rounding level of a dictionary fresh
+  // from the data (rounding_ties.hpp), relative to the size of the terms of each number; an
+  // updated dictionary only decides what is clear beyond kTieWindow.
+  const double tau = detail::tie_level(m + 1, 0.0);
+  double b_l1 = 0;
+  for (int r = 0; r < m; ++r) b_l1 += std::abs(b(r));
   // The system s - D v = b + (perturbation): A x = P0 with A = [-D | I], P0 = [b | I]; the
   // column of a variable in A by its label.
   Mat A(m, d + m), P0 = Mat::Zero(m, w);
@@ -1060,42 +1101,90 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   // basic value 8e-8 times the largest (fresh and pivoted dictionaries agree to 1e-15).
   enum { kDecided, kNeedsFresh, kCannotDecide };
   const double gamma = 4.0 * (m + 1) * std::numeric_limits<double>::epsilon();
-  std::vector<double> cm(w), u(m);
-  auto classify = [&](const State& st, bool is_fresh, IndexSet& labels) {
+  // Scales of the current dictionary s, computed when first needed (-1: not yet): pmax[r] =
+  // max_j |A_B^-1(r, j)| (the row's perturbation part), and on a fresh dictionary u = |A_B|
+  // |x_B| + |b| and terms[r] = sum_j |A_B^-1|_rj u_j, the forward-error scale of beta_r.
+  std::vector<double> u(m), pmax(m), terms(m);
+  bool u_ready = false;
+  State s;
+  auto reset_scales = [&] {
+    std::fill(pmax.begin(), pmax.end(), -1.0);
+    std::fill(terms.begin(), terms.end(), -1.0);
+    u_ready = false;
+  };
+  auto row_pmax = [&](int r) {
+    if (pmax[size_t(r)] < 0) {
+      double x = 0;
+      for (int k = 1; k < w; ++k) x = std::max(x, std::abs(s.R[size_t(r) * w + k]));
+      pmax[size_t(r)] = x;
+    }
+    return pmax[size_t(r)];
+  };
+  auto ensure_u = [&] {
+    if (u_ready) return;
+    for (int j = 0; j < m; ++j) {
+      double sum = std::abs(b(j));
+      for (int k = 0; k < m; ++k)
+        sum += std::abs(A(j, col_of[size_t(s.bl[k])])) * std::abs(s.R[size_t(k) * w]);
+      u[size_t(j)] = sum;
+    }
+    u_ready = true;
+  };
+  auto row_terms = [&](int r) {
+    if (terms[size_t(r)] < 0) {
+      ensure_u();
+      double x = 0;
+      for (int j = 0; j < m; ++j) x += std::abs(s.R[size_t(r) * w + 1 + j]) * u[size_t(j)];
+      terms[size_t(r)] = x;
+    }
+    return terms[size_t(r)];
+  };
+  auto classify = [&](bool is_fresh, IndexSet& labels) {
     double bmax = 0;
-    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(st.R[size_t(r) * w]));
-    // column scales of the right-hand side: round-off of a column is relative to them
-    std::fill(cm.begin(), cm.end(), 0.0);
-    for (int r = 0; r < m; ++r)
-      for (int k = 0; k < w; ++k) cm[k] = std::max(cm[k], std::abs(st.R[size_t(r) * w + k]));
-    bool bound_ready = false;
+    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
     for (int r = 0; r < m; ++r) {
-      const double* row = &st.R[size_t(r) * w];
+      const double* row = &s.R[size_t(r) * w];
       const double v = row[0];
       if (v > kGrayHi * bmax) continue;  // clearly positive
       if (!is_fresh) return kNeedsFresh;
-      if (!bound_ready) {  // u = |A_B| |x_B| + |b|
-        for (int j = 0; j < m; ++j) {
-          double sum = std::abs(b(j));
-          for (int k = 0; k < m; ++k)
-            sum += std::abs(A(j, col_of[size_t(st.bl[k])])) * std::abs(st.R[size_t(k) * w]);
-          u[size_t(j)] = sum;
-        }
-        bound_ready = true;
-      }
-      double err = 0;
-      for (int j = 0; j < m; ++j) err += std::abs(row[1 + j]) * u[size_t(j)];
-      err *= gamma;
+      const double err = gamma * row_terms(r);
       if (std::abs(v) <= 10 * err) {
-        labels.set(st.bl[r]);  // degenerate: a basic variable at zero
+        labels.set(s.bl[r]);  // degenerate: a basic variable at zero
+        // lexicographically positive: the first entry of the row's perturbation part beyond
+        // its rounding (tau times the row's largest entry; the same rule as Lemke's invariant)
+        const double level = tau * row_pmax(r);
         int k = 1;
-        while (k < w && std::abs(row[k]) <= kTie * cm[k]) ++k;
+        while (k < w && std::abs(row[k]) <= level) ++k;
         if (k == w || row[k] < 0) return kCannotDecide;  // not lexicographically feasible
       } else if (!(v >= 1e4 * err)) {
         return kCannotDecide;  // negative, or too close to zero to call
       }
     }
     return kDecided;
+  };
+  // Lexicographic order of rows r and t for the entering column (pivot entries -a_r, -a_t > 0):
+  // -1 when r's row / a_r comes first, 1 when t's does, 0 when they are equal at the rounding
+  // level in every column (not for independent rows: the path gives up), 2 when the updated
+  // dictionary is too close to call (it is then recomputed from the data).
+  auto lex_order = [&](int r, double ar, int t, double at, bool is_fresh) {
+    const double* x = &s.R[size_t(r) * w];
+    const double* y = &s.R[size_t(t) * w];
+    const double pr = x[0] / ar, pt = y[0] / at, diff = pr - pt;
+    if (!is_fresh) {
+      // the terms of beta_r are at most max_j |A_B^-1(r, j)| ||b||_1: a cheap bound, O(w)
+      const double near = detail::kTieWindow * (std::abs(pr) + std::abs(pt) +
+                                        b_l1 * (row_pmax(r) / ar + row_pmax(t) / at));
+      if (std::abs(diff) > near) return diff < 0 ? -1 : 1;
+      return 2;
+    }
+    if (std::abs(diff) > tau * (std::abs(pr) + std::abs(pt) + row_terms(r) / ar + row_terms(t) / at))
+      return diff < 0 ? -1 : 1;
+    const double level = tau * (row_pmax(r) / ar + row_pmax(t) / at);
+    for (int k = 1; k < w; ++k) {
+      const double e = x[k] / ar - y[k] / at;
+      if (std::abs(e) > level) return e < 0 ? -1 : 1;
+    }
+    return 0;
   };
   FlatIndexSets seen_basis, seen_vertex;
   {
@@ -1111,13 +1200,7 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     root.s.nl = var_label;
     stack.push_back(std::move(root));
   }
-  State s;
   long long in_hand = -1, visits = 0;
-  // a < b, a == b, a > b (-1, 0, 1) for two numbers at absolute tolerance kTie * sc
-  auto cmp = [](double a, double bb, double sc) {
-    if (std::abs(a - bb) <= kTie * sc) return 0;
-    return a < bb ? -1 : 1;
-  };
   while (!stack.empty()) {
     if (deadline.passed(64)) return Structured::kTimeLimit;
     Open o = std::move(stack.back());
@@ -1134,37 +1217,48 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       if (!refactor(s)) return Structured::kUndecided;
       fresh = true;
     }
+    reset_scales();
     in_hand = visits++;
     IndexSet cob(n);
     for (int c = 0; c < d; ++c) cob.set(s.nl[c]);
     IndexSet lab = cob;
-    int verdict = classify(s, fresh, lab);
+    int verdict = classify(fresh, lab);
     if (verdict == kNeedsFresh) {  // a small value: decide it on a dictionary fresh from the data
       if (!refactor(s)) return Structured::kUndecided;
+      fresh = true;
+      reset_scales();
       lab = cob;
-      verdict = classify(s, true, lab);
+      verdict = classify(true, lab);
     }
     if (verdict != kDecided) return Structured::kUndecided;
     if (seen_vertex.insert(lab)) masks.push_back(std::move(lab));
     for (int c = 0; c < d; ++c) {
-      double tmax = 0;
-      for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
       int best = -1;
-      for (int r = 0; r < m; ++r) {
-        const double a = s.T[size_t(r) * d + c];
-        if (!(a < -kTie * tmax)) {
-          if (a < -kZero * tmax) return Structured::kUndecided;  // pivot too small to call
-          continue;
+      for (bool again = true; again;) {  // twice at most: a near tie is decided on fresh data
+        again = false;
+        double tmax = 0;
+        for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
+        best = -1;
+        for (int r = 0; r < m; ++r) {
+          const double a = s.T[size_t(r) * d + c];
+          if (!(a < -kTie * tmax)) {
+            if (a < -kZero * tmax) return Structured::kUndecided;  // pivot too small to call
+            continue;
+          }
+          if (best < 0) {
+            best = r;
+            continue;
+          }
+          const int order = lex_order(r, -a, best, -s.T[size_t(best) * d + c], fresh);
+          if (order == 2) {
+            if (!refactor(s)) return Structured::kUndecided;
+            fresh = again = true;
+            reset_scales();
+            break;
+          }
+          if (order == 0) return Structured::kUndecided;  // not for independent perturbations
+          if (order < 0) best = r;
         }
-        if (best < 0) { best = r; continue; }
-        const double ab = s.T[size_t(best) * d + c];
-        int cmp_result = 0;
-        const double amin = std::min(-a, -ab);
-        for (int k = 0; k < w && cmp_result == 0; ++k)
-          cmp_result = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab,
-                           cm[k] / amin);
-        if (cmp_result == 0) return Structured::kUndecided;  // not for independent perturbations
-        if (cmp_result < 0) best = r;
       }
       if (best < 0) return Structured::kUndecided;  // unbounded edge: not a polytope
       IndexSet nb = cob;
@@ -1202,9 +1296,15 @@ bool solve_face(const Mat& M, const Vec& q, const std::vector<int>& rows,
   if (a < c) return false;
   Mat B(a, c);
   Vec rhs(a);
+  // rows equilibrated (each equation w_i = 0 in its own units): the rank decision at the
+  // relative threshold below must not compare the equations with each other (a player's rows
+  // in units 1e-10 of the others were "rank deficient", and the game went to the general engine)
   for (int i = 0; i < a; ++i) {
-    rhs(i) = -q(rows[i]);
-    for (int j = 0; j < c; ++j) B(i, j) = M(rows[i], cols[j]);
+    double rm = 0;
+    for (int j = 0; j < c; ++j) rm = std::max(rm, std::abs(M(rows[i], cols[j])));
+    if (!(rm > 0)) rm = 1;
+    rhs(i) = -q(rows[i]) / rm;
+    for (int j = 0; j < c; ++j) B(i, j) = M(rows[i], cols[j]) / rm;
   }
   Eigen::ColPivHouseholderQR<Mat> qr(B);
   qr.setThreshold(1e-10);
