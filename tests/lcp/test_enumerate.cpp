@@ -370,3 +370,82 @@ TEST_CASE("enumerate_all: regressions found by large random sweeps", "[enumerate
           {0, 0, 0, -2, 0});
   }
 }
+
+TEST_CASE("enumerate_all: a game with rows in other units, or q spanning 1e-10..1, on the structured path",
+          "[enumerate][games]") {
+  // Issue 24, item 7 class (ties of the lexicographic ratio test at a fixed 1e-9 against column
+  // maxima): a 7 x 7 game (payoffs: Python random.Random(1).sample(range(1, 1001), 98)) whose
+  // LCP rows i are scaled by 10^-(i mod 11) (the same game, each w_i in its own units: q spans
+  // 1e-10..1) went to the general engine (5165 nodes instead of 268; a 13 x 13 game ran into the
+  // time limit with 3 of its 34 equilibria), and the same game with q_i = 10^-(7 i mod 11)
+  // likewise. Expected: the exact solutions (Python fractions, all 2^14 supports of the data's
+  // doubles), under q x 10^k and (M, q) x 10^k.
+  const int A[7][7] = {{138, 583, 868, 822, 783, 65, 262},  {121, 508, 780, 461, 484, 668, 389},
+                       {808, 215, 97, 500, 30, 915, 856},   {400, 444, 623, 781, 786, 3, 713},
+                       {457, 273, 739, 997, 235, 606, 105}, {924, 326, 32, 23, 27, 666, 555},
+                       {10, 903, 391, 703, 222, 433, 744}};
+  const int B[7][7] = {{982, 541, 228, 996, 449, 992, 567}, {239, 354, 237, 694, 225, 991, 471},
+                       {297, 962, 427, 858, 570, 658, 103}, {191, 645, 742, 881, 304, 124, 761},
+                       {341, 918, 970, 729, 513, 953, 520}, {850, 687, 195, 311, 291, 602, 904},
+                       {512, 867, 518, 403, 604, 874, 36}};
+  const int n = 14;
+  cpkit::Mat M = cpkit::Mat::Zero(n, n);
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) {
+      M(i, 7 + j) = -A[i][j];
+      M(7 + j, i) = -B[i][j];
+    }
+  const std::vector<std::vector<double>> plain = {
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+     {0.0, 0.0, 0.00025391943190062786, 0.0, 0.0, 0.0010765213752409958, 1.8638202677083985e-05, 0.0005470072957592653, 0.0007114950333577614, 0.0, 0.0, 0.0, 0.0, 0.00047318536548433983},
+     {0.0, 0.0, 2.589695969693158e-05, 0.0, 0.0, 0.0, 0.0011246679639810287, 0.0, 0.0006574370865443633, 0.0, 0.0, 0.0, 0.00093841642228739, 0.0},
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0009215848143590702, 0.00042315021053669985, 0.000694250594384391, 0.001099731444137493, 0.0, 0.0, 0.0, 0.0, 0.0}
+  };
+  const std::vector<std::vector<double>> qonly = {
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+     {0.0, 0.0, 0.0, 1.3477088948787062e-11, 0.0, 0.0, 0.0, 0.0, 0.0, 1.605136436597111e-13, 0.0, 0.0, 0.0, 0.0}
+  };
+  auto check = [&](const cpkit::Mat& Ms, const cpkit::Vec& qs,
+                   const std::vector<std::vector<double>>& expected, double zscale) {
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(Ms, qs));
+    CHECK(s.structured);
+    CHECK(s.complete);
+    CHECK(s.ambiguous == 0);
+    REQUIRE(s.solutions.size() == expected.size());
+    for (const auto& z : expected) {
+      int hits = 0;
+      for (const auto& e : s.solutions) {
+        double d = 0, big = 0;
+        for (int j = 0; j < n; ++j) {
+          d = std::max(d, std::abs(e.z(j) - zscale * z[size_t(j)]));
+          big = std::max(big, zscale * std::abs(z[size_t(j)]));
+        }
+        hits += d <= 1e-9 * big;
+      }
+      CHECK(hits == 1);
+    }
+  };
+  for (int variant = 0; variant < 2; ++variant) {
+    CAPTURE(variant);
+    cpkit::Mat Mv = M;
+    cpkit::Vec qv = cpkit::Vec::Ones(n);
+    for (int i = 0; i < n; ++i) {
+      if (variant == 0) {  // row i in units 10^-(i mod 11): z unchanged
+        const double sc = std::pow(10.0, -(i % 11));
+        Mv.row(i) *= sc;
+        qv(i) *= sc;
+      } else {
+        qv(i) = std::pow(10.0, -((7 * i) % 11));
+      }
+    }
+    const auto& expected = variant == 0 ? plain : qonly;
+    for (int k = -8; k <= 8; k += 4) {
+      CAPTURE(k);
+      check(Mv, std::pow(10.0, k) * qv, expected, std::pow(10.0, k));  // q x 10^k: z x 10^k
+    }
+    for (int k = -6; k <= 6; k += 3) {
+      CAPTURE(k);
+      check(std::pow(10.0, k) * Mv, std::pow(10.0, k) * qv, expected, 1.0);  // (M, q) x 10^k
+    }
+  }
+}
