@@ -1040,10 +1040,15 @@ Structured polytope_vertices(const Mat& D0, const Vec& b0, const std::vector<int
   const size_t dict_bytes = sizeof(double) * size_t(m) * size_t(d + w);
   constexpr size_t kStackDictBytes = size_t(64) << 20;
   size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
+  // Pivot entries: a candidate below -kTie times its column's largest entry, too small to call
+  // between kZero and kTie (the columns are in one unit after the scaling above). A basic value
+  // above kGrayHi times the largest is positive on an updated dictionary (smaller ones are
+  // decided on a fresh one, see classify).
   constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
   // Ties of ratios and of perturbation entries: at the rounding level of a dictionary fresh
-  // from the data (rounding_ties.hpp), relative to the size of the terms of each number; an
-  // updated dictionary only decides what is clear beyond kTieWindow.
+  // from the data (rounding_ties.hpp; a fresh LU's backward error is at the rounding floor),
+  // relative to the size of the terms of each number; an updated dictionary only decides what
+  // is clear beyond kTieWindow, anything nearer is decided on a dictionary fresh from the data.
   const double tau = detail::tie_level(m + 1, 0.0);
   double b_l1 = 0;
   for (int r = 0; r < m; ++r) b_l1 += std::abs(b(r));
