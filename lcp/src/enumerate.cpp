@@ -1493,20 +1493,53 @@ int scale_exponent(double x) {
   return e;
 }
 
-/// (M, q) / (2^eM, 2^eq) when that is exact (no entry loses bits by underflow).
-bool normalize(const Mat& M, const Vec& q, int eM, int eq, Mat& Mn, Vec& qn) {
+/// Powers of two that put the data in one unit per row, per column and for q: M~_ij =
+/// M_ij 2^-(r_i + c_j) (every row, then every column, of largest entry in [0.5, 1)), q~_i =
+/// q_i 2^-(r_i + e) (largest in [0.5, 1)). LCP(M~, q~) has the solutions z~_j = z_j 2^(c_j - e),
+/// w~_i = w_i 2^-(r_i + e): the same problem with each z_j and each w_i in its own unit.
+struct Equilibration {
+  std::vector<int> r, c;
+  int e = 0;
+  bool exact = true;  // false: an entry would lose bits (subnormal); the data are used as given
+};
+
+Equilibration equilibrate(const Mat& M, const Vec& q, Mat& Mn, Vec& qn) {
+  const Eigen::Index n = q.size();
+  Equilibration s;
+  s.r.assign(size_t(n), 0);
+  s.c.assign(size_t(n), 0);
   Mn = M;
   qn = q;
-  bool exact = true;
-  for (Eigen::Index k = 0; k < Mn.size(); ++k) {
-    Mn.data()[k] = std::ldexp(M.data()[k], -eM);
-    exact = exact && std::ldexp(Mn.data()[k], eM) == M.data()[k];
+  auto scale = [&](double& x, int e) {
+    const double y = std::ldexp(x, -e);
+    s.exact = s.exact && std::ldexp(y, e) == x;
+    x = y;
+  };
+  for (Eigen::Index i = 0; i < n; ++i) {
+    s.r[size_t(i)] = scale_exponent(Mn.row(i).cwiseAbs().maxCoeff());
+    for (Eigen::Index j = 0; j < n; ++j) scale(Mn(i, j), s.r[size_t(i)]);
   }
-  for (Eigen::Index k = 0; k < qn.size(); ++k) {
-    qn(k) = std::ldexp(q(k), -eq);
-    exact = exact && std::ldexp(qn(k), eq) == q(k);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    s.c[size_t(j)] = scale_exponent(Mn.col(j).cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 0; i < n; ++i) scale(Mn(i, j), s.c[size_t(j)]);
   }
-  return exact;
+  // q_i 2^-(r_i + e) in one step (q_i 2^-r_i alone may overflow): e from the exponents
+  bool any = false;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (q(i) == 0) continue;
+    const int x = scale_exponent(std::abs(q(i))) - s.r[size_t(i)];
+    s.e = any ? std::max(s.e, x) : x;
+    any = true;
+  }
+  for (Eigen::Index i = 0; i < n; ++i) scale(qn(i), s.r[size_t(i)] + s.e);
+  if (!s.exact) {
+    Mn = M;
+    qn = q;
+    std::fill(s.r.begin(), s.r.end(), 0);
+    std::fill(s.c.begin(), s.c.end(), 0);
+    s.e = 0;
+  }
+  return s;
 }
 
 /// The final check of every listed solution against the original data (M, q), with the
@@ -1570,20 +1603,17 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
     out.seconds = clock.seconds();
     return out;
   }
-  // Every decision is made on (M / 2^eM, q / 2^eq), max entries in [0.5, 1): the same problem
-  // in other units (q -> a q, (M, q) -> b (M, q)) then takes the same decisions, bit for bit
-  // when a and b are powers of two. z = 2^(eq - eM) z~, w = 2^eq w~ are exact unless they
-  // overflow or underflow, which the final check from the data catches.
-  const int eM = scale_exponent(out.M.cwiseAbs().maxCoeff());
-  const int eq = scale_exponent(out.q.cwiseAbs().maxCoeff());
+  // Every decision is made on the equilibrated data (equilibrate(): each row w_i, each z_j and
+  // q in a unit of their own, by powers of two): the same problem in other units (q -> a q,
+  // (M, q) -> b (M, q), any row or column scaling) then takes the same decisions, bit for bit
+  // when the factors are powers of two. With only one scale for M and one for q, a problem
+  // whose rows were in units 1e-10..1e10 of each other (a bimatrix game, each w_i in its own
+  // unit) lost solutions in the search and said complete (issue 24, item 7 class). The results
+  // are scaled back exactly unless they overflow or underflow, which the final check catches.
   SolutionSet work;
   work.tol = options.tol;
-  const bool exact = normalize(out.M, out.q, eM, eq, work.M, work.q);
-  if (!exact) {  // entries beyond double's exponent range of each other: use the data as given
-    work.M = out.M;
-    work.q = out.q;
-  }
-  const int ez = exact ? eq - eM : 0, ew = exact ? eq : 0;
+  const Equilibration eq = equilibrate(out.M, out.q, work.M, work.q);
+  const bool exact = eq.exact;
   switch (n) {
     case 1: run_small<1>(work); break;
     case 2: run_small<2>(work); break;
@@ -1617,10 +1647,16 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
   out.message = work.message;
   for (ExtremeSolution& e : out.solutions) {
     for (Eigen::Index j = 0; j < n; ++j) {
-      e.z(j) = std::ldexp(e.z(j), ez);
-      e.w(j) = std::ldexp(e.w(j), ew);
+      e.z(j) = std::ldexp(e.z(j), eq.e - eq.c[size_t(j)]);
+      e.w(j) = std::ldexp(e.w(j), eq.e + eq.r[size_t(j)]);
     }
   }
+  for (SolutionPiece& pc : out.pieces)
+    for (Vec& d : pc.rays) {  // directions of z: per column, then ||d||_inf = 1 again
+      for (Eigen::Index j = 0; j < n; ++j) d(j) = std::ldexp(d(j), -eq.c[size_t(j)]);
+      const double big = d.cwiseAbs().maxCoeff();
+      if (big > 0 && std::isfinite(big)) d /= big;
+    }
   out.unrepresentable += recheck(out);
   if (out.unrepresentable > 0) {
     out.complete = false;
