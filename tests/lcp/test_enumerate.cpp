@@ -449,3 +449,67 @@ TEST_CASE("enumerate_all: a game with rows in other units, or q spanning 1e-10..
     }
   }
 }
+
+TEST_CASE("enumerate_all: DART's Lemke_12D contact LCP with its rows and columns in other units",
+          "[enumerate][data]") {
+  // DART's Lemke_12D (q spans 0.01 and 1e-10): exactly 3 solutions (Python fractions over all
+  // 2^12 supports of the data's doubles). The same problem with w_i in units s_i = 10^(-10..10)
+  // and z_j in units t_j = 10^(-6..6) (rows times s_i, columns times t_j: z_j -> z_j / t_j) was
+  // enumerated with one scale for M and one for q, and its tests in mixed units said complete
+  // with 2, 1 or 0 of the 3 solutions (issue 24, item 7 class). Also q x 10^k, (M, q) x 10^k.
+  const cpkit::LcpProblem p = cpkit::read_lcp_json(CPKIT_TEST_DATA_DIR "/lemke/engine_dart_lemke_12d.json");
+  const int n = 12;
+  const std::vector<std::vector<double>> exact = {
+      {0.004857321734444363, 0.0, 2.707475274724607e-07, 0.0, 1.8405904801614171e-06,
+       3.830368557635335e-07, 4.8571385109348565e-05, 0.0, 1.2497871471080244e-06,
+       0.004904049318704329, 0.0, 0.0},
+      {0.004857321666320138, 7.457180097411183e-07, 1.0065491705851868e-06, 0.0, 0.0,
+       6.339208009725584e-07, 4.857104125256793e-05, 1.0941288669244174e-06,
+       2.627390890163576e-07, 0.004904049730496409, 0.0, 0.0},
+      {0.004857321674268123, 7.085960316390152e-07, 9.7654901534666e-07, 0.0,
+       4.554656678575741e-08, 6.44794074388813e-07, 4.8571028501655795e-05,
+       1.0856906539524313e-06, 2.8187834903025197e-07, 0.004904049735296752, 0.0, 0.0}};
+  const cpkit::Mat M = p.dense_M();
+  auto check = [&](const cpkit::Mat& Ms, const cpkit::Vec& qs, const cpkit::Vec& zscale) {
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(Ms, qs));
+    CHECK(s.complete);
+    REQUIRE(s.solutions.size() == exact.size());
+    for (const auto& z : exact) {
+      int hits = 0;
+      for (const auto& e : s.solutions) {
+        bool same = true;
+        for (int j = 0; j < n; ++j) {
+          const double x = z[size_t(j)] * zscale(j);
+          // support exact; values to 1e-7 relative (the solves of this q: 1e-10 next to 0.01)
+          same = same && (x == 0 ? e.z(j) == 0 : std::abs(e.z(j) - x) <= 1e-7 * std::abs(x));
+        }
+        hits += same;
+      }
+      CHECK(hits == 1);
+    }
+  };
+  std::mt19937 rng(24);
+  std::uniform_int_distribution<int> row_exp(-10, 10), col_exp(-6, 6);
+  for (int rep = 0; rep < 6; ++rep) {
+    CAPTURE(rep);
+    cpkit::Mat Ms = M;
+    cpkit::Vec qs = p.q, zscale = cpkit::Vec::Ones(n);
+    for (int i = 0; i < n; ++i) {
+      const double si = std::pow(10.0, row_exp(rng));
+      Ms.row(i) *= si;
+      qs(i) *= si;
+    }
+    for (int j = 0; rep >= 3 && j < n; ++j) {
+      const double tj = std::pow(10.0, col_exp(rng));
+      Ms.col(j) *= tj;
+      zscale(j) = 1 / tj;
+    }
+    check(Ms, qs, zscale);
+  }
+  for (int k = -8; k <= 8; k += 4) {
+    CAPTURE(k);
+    const double a = std::pow(10.0, k);
+    check(M, a * p.q, cpkit::Vec::Constant(n, a));
+    if (std::abs(k) <= 6) check(a * M, a * p.q, cpkit::Vec::Ones(n));
+  }
+}
