@@ -984,44 +984,12 @@ enum class Structured { kAnswered, kUndecided, kTimeLimit, kMemory };
 /// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
 /// from the dictionary in hand is reached by that pivot, any other is refactorised from the
 /// data. kUndecided on an unbounded edge, a tie, or a basic value too close to zero to call.
-Structured polytope_vertices(const Mat& D0, const Vec& b0, const std::vector<int>& var_label,
+Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
                              const std::vector<int>& row_label, int n,
                              std::vector<IndexSet>& masks, Deadline& deadline) {
-  const int m = static_cast<int>(D0.rows()), d = static_cast<int>(D0.cols());
-  // Every constraint row (b_r, D_r) and every column of D scaled by a power of two to largest
-  // entry in [0.5, 1): exact, and the polytope's vertices and their labels are unchanged (the
-  // slacks and variables only change units). The decisions below then never compare numbers in
-  // different units: with the rows of one player in units 1e-10 of the others (the same game),
-  // the tests against column maxima called every ratio a tie or every pivot noise, and the
-  // game went to the general engine, 100x slower or to the time limit (issue 24, item 7 class).
-  Mat D = D0;
-  Vec b = b0;
-  {
-    auto exponent = [](double x) {
-      int e = 0;
-      if (x > 0) std::frexp(x, &e);
-      return e;
-    };
-    bool exact = true;
-    auto scale = [&](double& x, int e) {
-      const double y = std::ldexp(x, -e);
-      exact = exact && std::ldexp(y, e) == x;
-      x = y;
-    };
-    for (int r = 0; r < m; ++r) {
-      const int e = exponent(std::max(std::abs(b(r)), D.row(r).cwiseAbs().maxCoeff()));
-      scale(b(r), e);
-      for (int c = 0; c < d; ++c) scale(D(r, c), e);
-    }
-    for (int c = 0; c < d; ++c) {
-      const int e = exponent(D.col(c).cwiseAbs().maxCoeff());
-      for (int r = 0; r < m; ++r) scale(D(r, c), e);
-    }
-    if (!exact) {  // an entry would lose bits (subnormal): the data as given
-      D = D0;
-      b = b0;
-    }
-  }
+  // (D, b) come from enumerate_all's equilibrated data: each row and each column of D in a unit
+  // of its own, so the column maxima below compare numbers of one unit.
+  const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
   const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
   struct State {
     std::vector<double> T;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
@@ -1041,7 +1009,7 @@ Structured polytope_vertices(const Mat& D0, const Vec& b0, const std::vector<int
   constexpr size_t kStackDictBytes = size_t(64) << 20;
   size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
   // Pivot entries: a candidate below -kTie times its column's largest entry, too small to call
-  // between kZero and kTie (the columns are in one unit after the scaling above). A basic value
+  // between kZero and kTie. A basic value
   // above kGrayHi times the largest is positive on an updated dictionary (smaller ones are
   // decided on a fresh one, see classify).
   constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
