@@ -1146,12 +1146,12 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     if (!is_fresh) {
       // the terms of beta_r are at most max_j |A_B^-1(r, j)| ||b||_1: a cheap bound, O(w)
       const double near = detail::kTieWindow * (std::abs(pr) + std::abs(pt) +
-                                        b_l1 * (row_pmax(r) / ar + row_pmax(t) / at));
+                                                b_l1 * (row_pmax(r) / ar + row_pmax(t) / at));
       if (std::abs(diff) > near) return diff < 0 ? -1 : 1;
       return 2;
     }
-    if (std::abs(diff) > tau * (std::abs(pr) + std::abs(pt) + row_terms(r) / ar + row_terms(t) / at))
-      return diff < 0 ? -1 : 1;
+    const double sizes = std::abs(pr) + std::abs(pt) + row_terms(r) / ar + row_terms(t) / at;
+    if (std::abs(diff) > tau * sizes) return diff < 0 ? -1 : 1;
     const double level = tau * (row_pmax(r) / ar + row_pmax(t) / at);
     for (int k = 1; k < w; ++k) {
       const double e = x[k] / ar - y[k] / at;
