@@ -14,6 +14,7 @@
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
+#include "rounding_ties.hpp"
 
 namespace cpkit::lcp {
 
@@ -986,6 +987,8 @@ enum class Structured { kAnswered, kUndecided, kTimeLimit, kMemory };
 Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
                              const std::vector<int>& row_label, int n,
                              std::vector<IndexSet>& masks, Deadline& deadline) {
+  // (D, b) come from enumerate_all's equilibrated data: each row and each column of D in a unit
+  // of its own, so the column maxima below compare numbers of one unit.
   const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
   const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
   struct State {
@@ -1005,7 +1008,18 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   const size_t dict_bytes = sizeof(double) * size_t(m) * size_t(d + w);
   constexpr size_t kStackDictBytes = size_t(64) << 20;
   size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
+  // Pivot entries: a candidate below -kTie times its column's largest entry, too small to call
+  // between kZero and kTie. A basic value
+  // above kGrayHi times the largest is positive on an updated dictionary (smaller ones are
+  // decided on a fresh one, see classify).
   constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
+  // Ties of ratios and of perturbation entries: at the rounding level of a dictionary fresh
+  // from the data (rounding_ties.hpp; a fresh LU's backward error is at the rounding floor),
+  // relative to the size of the terms of each number; an updated dictionary only decides what
+  // is clear beyond kTieWindow, anything nearer is decided on a dictionary fresh from the data.
+  const double tau = detail::tie_level(m + 1, 0.0);
+  double b_l1 = 0;
+  for (int r = 0; r < m; ++r) b_l1 += std::abs(b(r));
   // The system s - D v = b + (perturbation): A x = P0 with A = [-D | I], P0 = [b | I]; the
   // column of a variable in A by its label.
   Mat A(m, d + m), P0 = Mat::Zero(m, w);
@@ -1060,42 +1074,90 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
   // basic value 8e-8 times the largest (fresh and pivoted dictionaries agree to 1e-15).
   enum { kDecided, kNeedsFresh, kCannotDecide };
   const double gamma = 4.0 * (m + 1) * std::numeric_limits<double>::epsilon();
-  std::vector<double> cm(w), u(m);
-  auto classify = [&](const State& st, bool is_fresh, IndexSet& labels) {
+  // Scales of the current dictionary s, computed when first needed (-1: not yet): pmax[r] =
+  // max_j |A_B^-1(r, j)| (the row's perturbation part), and on a fresh dictionary u = |A_B|
+  // |x_B| + |b| and terms[r] = sum_j |A_B^-1|_rj u_j, the forward-error scale of beta_r.
+  std::vector<double> u(m), pmax(m), terms(m);
+  bool u_ready = false;
+  State s;
+  auto reset_scales = [&] {
+    std::fill(pmax.begin(), pmax.end(), -1.0);
+    std::fill(terms.begin(), terms.end(), -1.0);
+    u_ready = false;
+  };
+  auto row_pmax = [&](int r) {
+    if (pmax[size_t(r)] < 0) {
+      double x = 0;
+      for (int k = 1; k < w; ++k) x = std::max(x, std::abs(s.R[size_t(r) * w + k]));
+      pmax[size_t(r)] = x;
+    }
+    return pmax[size_t(r)];
+  };
+  auto ensure_u = [&] {
+    if (u_ready) return;
+    for (int j = 0; j < m; ++j) {
+      double sum = std::abs(b(j));
+      for (int k = 0; k < m; ++k)
+        sum += std::abs(A(j, col_of[size_t(s.bl[k])])) * std::abs(s.R[size_t(k) * w]);
+      u[size_t(j)] = sum;
+    }
+    u_ready = true;
+  };
+  auto row_terms = [&](int r) {
+    if (terms[size_t(r)] < 0) {
+      ensure_u();
+      double x = 0;
+      for (int j = 0; j < m; ++j) x += std::abs(s.R[size_t(r) * w + 1 + j]) * u[size_t(j)];
+      terms[size_t(r)] = x;
+    }
+    return terms[size_t(r)];
+  };
+  auto classify = [&](bool is_fresh, IndexSet& labels) {
     double bmax = 0;
-    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(st.R[size_t(r) * w]));
-    // column scales of the right-hand side: round-off of a column is relative to them
-    std::fill(cm.begin(), cm.end(), 0.0);
-    for (int r = 0; r < m; ++r)
-      for (int k = 0; k < w; ++k) cm[k] = std::max(cm[k], std::abs(st.R[size_t(r) * w + k]));
-    bool bound_ready = false;
+    for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
     for (int r = 0; r < m; ++r) {
-      const double* row = &st.R[size_t(r) * w];
+      const double* row = &s.R[size_t(r) * w];
       const double v = row[0];
       if (v > kGrayHi * bmax) continue;  // clearly positive
       if (!is_fresh) return kNeedsFresh;
-      if (!bound_ready) {  // u = |A_B| |x_B| + |b|
-        for (int j = 0; j < m; ++j) {
-          double sum = std::abs(b(j));
-          for (int k = 0; k < m; ++k)
-            sum += std::abs(A(j, col_of[size_t(st.bl[k])])) * std::abs(st.R[size_t(k) * w]);
-          u[size_t(j)] = sum;
-        }
-        bound_ready = true;
-      }
-      double err = 0;
-      for (int j = 0; j < m; ++j) err += std::abs(row[1 + j]) * u[size_t(j)];
-      err *= gamma;
+      const double err = gamma * row_terms(r);
       if (std::abs(v) <= 10 * err) {
-        labels.set(st.bl[r]);  // degenerate: a basic variable at zero
+        labels.set(s.bl[r]);  // degenerate: a basic variable at zero
+        // lexicographically positive: the first entry of the row's perturbation part beyond
+        // its rounding (tau times the row's largest entry; the same rule as Lemke's invariant)
+        const double level = tau * row_pmax(r);
         int k = 1;
-        while (k < w && std::abs(row[k]) <= kTie * cm[k]) ++k;
+        while (k < w && std::abs(row[k]) <= level) ++k;
         if (k == w || row[k] < 0) return kCannotDecide;  // not lexicographically feasible
       } else if (!(v >= 1e4 * err)) {
         return kCannotDecide;  // negative, or too close to zero to call
       }
     }
     return kDecided;
+  };
+  // Lexicographic order of rows r and t for the entering column (pivot entries -a_r, -a_t > 0):
+  // -1 when r's row / a_r comes first, 1 when t's does, 0 when they are equal at the rounding
+  // level in every column (not for independent rows: the path gives up), 2 when the updated
+  // dictionary is too close to call (it is then recomputed from the data).
+  auto lex_order = [&](int r, double ar, int t, double at, bool is_fresh) {
+    const double* x = &s.R[size_t(r) * w];
+    const double* y = &s.R[size_t(t) * w];
+    const double pr = x[0] / ar, pt = y[0] / at, diff = pr - pt;
+    if (!is_fresh) {
+      // the terms of beta_r are at most max_j |A_B^-1(r, j)| ||b||_1: a cheap bound, O(w)
+      const double near = detail::kTieWindow * (std::abs(pr) + std::abs(pt) +
+                                                b_l1 * (row_pmax(r) / ar + row_pmax(t) / at));
+      if (std::abs(diff) > near) return diff < 0 ? -1 : 1;
+      return 2;
+    }
+    const double sizes = std::abs(pr) + std::abs(pt) + row_terms(r) / ar + row_terms(t) / at;
+    if (std::abs(diff) > tau * sizes) return diff < 0 ? -1 : 1;
+    const double level = tau * (row_pmax(r) / ar + row_pmax(t) / at);
+    for (int k = 1; k < w; ++k) {
+      const double e = x[k] / ar - y[k] / at;
+      if (std::abs(e) > level) return e < 0 ? -1 : 1;
+    }
+    return 0;
   };
   FlatIndexSets seen_basis, seen_vertex;
   {
@@ -1111,13 +1173,7 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     root.s.nl = var_label;
     stack.push_back(std::move(root));
   }
-  State s;
   long long in_hand = -1, visits = 0;
-  // a < b, a == b, a > b (-1, 0, 1) for two numbers at absolute tolerance kTie * sc
-  auto cmp = [](double a, double bb, double sc) {
-    if (std::abs(a - bb) <= kTie * sc) return 0;
-    return a < bb ? -1 : 1;
-  };
   while (!stack.empty()) {
     if (deadline.passed(64)) return Structured::kTimeLimit;
     Open o = std::move(stack.back());
@@ -1134,37 +1190,48 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       if (!refactor(s)) return Structured::kUndecided;
       fresh = true;
     }
+    reset_scales();
     in_hand = visits++;
     IndexSet cob(n);
     for (int c = 0; c < d; ++c) cob.set(s.nl[c]);
     IndexSet lab = cob;
-    int verdict = classify(s, fresh, lab);
+    int verdict = classify(fresh, lab);
     if (verdict == kNeedsFresh) {  // a small value: decide it on a dictionary fresh from the data
       if (!refactor(s)) return Structured::kUndecided;
+      fresh = true;
+      reset_scales();
       lab = cob;
-      verdict = classify(s, true, lab);
+      verdict = classify(true, lab);
     }
     if (verdict != kDecided) return Structured::kUndecided;
     if (seen_vertex.insert(lab)) masks.push_back(std::move(lab));
     for (int c = 0; c < d; ++c) {
-      double tmax = 0;
-      for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
       int best = -1;
-      for (int r = 0; r < m; ++r) {
-        const double a = s.T[size_t(r) * d + c];
-        if (!(a < -kTie * tmax)) {
-          if (a < -kZero * tmax) return Structured::kUndecided;  // pivot too small to call
-          continue;
+      for (bool again = true; again;) {  // twice at most: a near tie is decided on fresh data
+        again = false;
+        double tmax = 0;
+        for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
+        best = -1;
+        for (int r = 0; r < m; ++r) {
+          const double a = s.T[size_t(r) * d + c];
+          if (!(a < -kTie * tmax)) {
+            if (a < -kZero * tmax) return Structured::kUndecided;  // pivot too small to call
+            continue;
+          }
+          if (best < 0) {
+            best = r;
+            continue;
+          }
+          const int order = lex_order(r, -a, best, -s.T[size_t(best) * d + c], fresh);
+          if (order == 2) {
+            if (!refactor(s)) return Structured::kUndecided;
+            fresh = again = true;
+            reset_scales();
+            break;
+          }
+          if (order == 0) return Structured::kUndecided;  // not for independent perturbations
+          if (order < 0) best = r;
         }
-        if (best < 0) { best = r; continue; }
-        const double ab = s.T[size_t(best) * d + c];
-        int cmp_result = 0;
-        const double amin = std::min(-a, -ab);
-        for (int k = 0; k < w && cmp_result == 0; ++k)
-          cmp_result = cmp(s.R[size_t(r) * w + k] / -a, s.R[size_t(best) * w + k] / -ab,
-                           cm[k] / amin);
-        if (cmp_result == 0) return Structured::kUndecided;  // not for independent perturbations
-        if (cmp_result < 0) best = r;
       }
       if (best < 0) return Structured::kUndecided;  // unbounded edge: not a polytope
       IndexSet nb = cob;
@@ -1202,9 +1269,15 @@ bool solve_face(const Mat& M, const Vec& q, const std::vector<int>& rows,
   if (a < c) return false;
   Mat B(a, c);
   Vec rhs(a);
+  // rows equilibrated (each equation w_i = 0 in its own units): the rank decision at the
+  // relative threshold below must not compare the equations with each other (a player's rows
+  // in units 1e-10 of the others were "rank deficient", and the game went to the general engine)
   for (int i = 0; i < a; ++i) {
-    rhs(i) = -q(rows[i]);
-    for (int j = 0; j < c; ++j) B(i, j) = M(rows[i], cols[j]);
+    double rm = 0;
+    for (int j = 0; j < c; ++j) rm = std::max(rm, std::abs(M(rows[i], cols[j])));
+    if (!(rm > 0)) rm = 1;
+    rhs(i) = -q(rows[i]) / rm;
+    for (int j = 0; j < c; ++j) B(i, j) = M(rows[i], cols[j]) / rm;
   }
   Eigen::ColPivHouseholderQR<Mat> qr(B);
   qr.setThreshold(1e-10);
@@ -1388,20 +1461,53 @@ int scale_exponent(double x) {
   return e;
 }
 
-/// (M, q) / (2^eM, 2^eq) when that is exact (no entry loses bits by underflow).
-bool normalize(const Mat& M, const Vec& q, int eM, int eq, Mat& Mn, Vec& qn) {
+/// Powers of two that put the data in one unit per row, per column and for q: M~_ij =
+/// M_ij 2^-(r_i + c_j) (every row, then every column, of largest entry in [0.5, 1)), q~_i =
+/// q_i 2^-(r_i + e) (largest in [0.5, 1)). LCP(M~, q~) has the solutions z~_j = z_j 2^(c_j - e),
+/// w~_i = w_i 2^-(r_i + e): the same problem with each z_j and each w_i in its own unit.
+struct Equilibration {
+  std::vector<int> r, c;
+  int e = 0;
+  bool exact = true;  // false: an entry would lose bits (subnormal); the data are used as given
+};
+
+Equilibration equilibrate(const Mat& M, const Vec& q, Mat& Mn, Vec& qn) {
+  const Eigen::Index n = q.size();
+  Equilibration s;
+  s.r.assign(size_t(n), 0);
+  s.c.assign(size_t(n), 0);
   Mn = M;
   qn = q;
-  bool exact = true;
-  for (Eigen::Index k = 0; k < Mn.size(); ++k) {
-    Mn.data()[k] = std::ldexp(M.data()[k], -eM);
-    exact = exact && std::ldexp(Mn.data()[k], eM) == M.data()[k];
+  auto scale = [&](double& x, int e) {
+    const double y = std::ldexp(x, -e);
+    s.exact = s.exact && std::ldexp(y, e) == x;
+    x = y;
+  };
+  for (Eigen::Index i = 0; i < n; ++i) {
+    s.r[size_t(i)] = scale_exponent(Mn.row(i).cwiseAbs().maxCoeff());
+    for (Eigen::Index j = 0; j < n; ++j) scale(Mn(i, j), s.r[size_t(i)]);
   }
-  for (Eigen::Index k = 0; k < qn.size(); ++k) {
-    qn(k) = std::ldexp(q(k), -eq);
-    exact = exact && std::ldexp(qn(k), eq) == q(k);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    s.c[size_t(j)] = scale_exponent(Mn.col(j).cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 0; i < n; ++i) scale(Mn(i, j), s.c[size_t(j)]);
   }
-  return exact;
+  // q_i 2^-(r_i + e) in one step (q_i 2^-r_i alone may overflow): e from the exponents
+  bool any = false;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (q(i) == 0) continue;
+    const int x = scale_exponent(std::abs(q(i))) - s.r[size_t(i)];
+    s.e = any ? std::max(s.e, x) : x;
+    any = true;
+  }
+  for (Eigen::Index i = 0; i < n; ++i) scale(qn(i), s.r[size_t(i)] + s.e);
+  if (!s.exact) {
+    Mn = M;
+    qn = q;
+    std::fill(s.r.begin(), s.r.end(), 0);
+    std::fill(s.c.begin(), s.c.end(), 0);
+    s.e = 0;
+  }
+  return s;
 }
 
 /// The final check of every listed solution against the original data (M, q), with the
@@ -1465,20 +1571,17 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
     out.seconds = clock.seconds();
     return out;
   }
-  // Every decision is made on (M / 2^eM, q / 2^eq), max entries in [0.5, 1): the same problem
-  // in other units (q -> a q, (M, q) -> b (M, q)) then takes the same decisions, bit for bit
-  // when a and b are powers of two. z = 2^(eq - eM) z~, w = 2^eq w~ are exact unless they
-  // overflow or underflow, which the final check from the data catches.
-  const int eM = scale_exponent(out.M.cwiseAbs().maxCoeff());
-  const int eq = scale_exponent(out.q.cwiseAbs().maxCoeff());
+  // Every decision is made on the equilibrated data (equilibrate(): each row w_i, each z_j and
+  // q in a unit of their own, by powers of two): the same problem in other units (q -> a q,
+  // (M, q) -> b (M, q), any row or column scaling) then takes the same decisions, bit for bit
+  // when the factors are powers of two. With only one scale for M and one for q, a problem
+  // whose rows were in units 1e-10..1e10 of each other (a bimatrix game, each w_i in its own
+  // unit) lost solutions in the search and said complete (issue 24, item 7 class). The results
+  // are scaled back exactly unless they overflow or underflow, which the final check catches.
   SolutionSet work;
   work.tol = options.tol;
-  const bool exact = normalize(out.M, out.q, eM, eq, work.M, work.q);
-  if (!exact) {  // entries beyond double's exponent range of each other: use the data as given
-    work.M = out.M;
-    work.q = out.q;
-  }
-  const int ez = exact ? eq - eM : 0, ew = exact ? eq : 0;
+  const Equilibration eq = equilibrate(out.M, out.q, work.M, work.q);
+  const bool exact = eq.exact;
   switch (n) {
     case 1: run_small<1>(work); break;
     case 2: run_small<2>(work); break;
@@ -1512,10 +1615,16 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
   out.message = work.message;
   for (ExtremeSolution& e : out.solutions) {
     for (Eigen::Index j = 0; j < n; ++j) {
-      e.z(j) = std::ldexp(e.z(j), ez);
-      e.w(j) = std::ldexp(e.w(j), ew);
+      e.z(j) = std::ldexp(e.z(j), eq.e - eq.c[size_t(j)]);
+      e.w(j) = std::ldexp(e.w(j), eq.e + eq.r[size_t(j)]);
     }
   }
+  for (SolutionPiece& pc : out.pieces)
+    for (Vec& d : pc.rays) {  // directions of z: per column, then ||d||_inf = 1 again
+      for (Eigen::Index j = 0; j < n; ++j) d(j) = std::ldexp(d(j), -eq.c[size_t(j)]);
+      const double big = d.cwiseAbs().maxCoeff();
+      if (big > 0 && std::isfinite(big)) d /= big;
+    }
   out.unrepresentable += recheck(out);
   if (out.unrepresentable > 0) {
     out.complete = false;

@@ -370,3 +370,146 @@ TEST_CASE("enumerate_all: regressions found by large random sweeps", "[enumerate
           {0, 0, 0, -2, 0});
   }
 }
+
+TEST_CASE("enumerate_all: a game with rows in other units, or q spanning 1e-10..1, on the structured path",
+          "[enumerate][games]") {
+  // Issue 24, item 7 class (ties of the lexicographic ratio test at a fixed 1e-9 against column
+  // maxima): a 7 x 7 game (payoffs: Python random.Random(1).sample(range(1, 1001), 98)) whose
+  // LCP rows i are scaled by 10^-(i mod 11) (the same game, each w_i in its own units: q spans
+  // 1e-10..1) went to the general engine (5165 nodes instead of 268; a 13 x 13 game ran into the
+  // time limit with 3 of its 34 equilibria), and the same game with q_i = 10^-(7 i mod 11)
+  // likewise. Expected: the exact solutions (Python fractions, all 2^14 supports of the data's
+  // doubles), under q x 10^k and (M, q) x 10^k.
+  const int A[7][7] = {{138, 583, 868, 822, 783, 65, 262},  {121, 508, 780, 461, 484, 668, 389},
+                       {808, 215, 97, 500, 30, 915, 856},   {400, 444, 623, 781, 786, 3, 713},
+                       {457, 273, 739, 997, 235, 606, 105}, {924, 326, 32, 23, 27, 666, 555},
+                       {10, 903, 391, 703, 222, 433, 744}};
+  const int B[7][7] = {{982, 541, 228, 996, 449, 992, 567}, {239, 354, 237, 694, 225, 991, 471},
+                       {297, 962, 427, 858, 570, 658, 103}, {191, 645, 742, 881, 304, 124, 761},
+                       {341, 918, 970, 729, 513, 953, 520}, {850, 687, 195, 311, 291, 602, 904},
+                       {512, 867, 518, 403, 604, 874, 36}};
+  const int n = 14;
+  cpkit::Mat M = cpkit::Mat::Zero(n, n);
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) {
+      M(i, 7 + j) = -A[i][j];
+      M(7 + j, i) = -B[i][j];
+    }
+  const std::vector<std::vector<double>> plain = {
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+     {0.0, 0.0, 0.00025391943190062786, 0.0, 0.0, 0.0010765213752409958, 1.8638202677083985e-05, 0.0005470072957592653, 0.0007114950333577614, 0.0, 0.0, 0.0, 0.0, 0.00047318536548433983},
+     {0.0, 0.0, 2.589695969693158e-05, 0.0, 0.0, 0.0, 0.0011246679639810287, 0.0, 0.0006574370865443633, 0.0, 0.0, 0.0, 0.00093841642228739, 0.0},
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0009215848143590702, 0.00042315021053669985, 0.000694250594384391, 0.001099731444137493, 0.0, 0.0, 0.0, 0.0, 0.0}
+  };
+  const std::vector<std::vector<double>> qonly = {
+     {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+     {0.0, 0.0, 0.0, 1.3477088948787062e-11, 0.0, 0.0, 0.0, 0.0, 0.0, 1.605136436597111e-13, 0.0, 0.0, 0.0, 0.0}
+  };
+  auto check = [&](const cpkit::Mat& Ms, const cpkit::Vec& qs,
+                   const std::vector<std::vector<double>>& expected, double zscale) {
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(Ms, qs));
+    CHECK(s.structured);
+    CHECK(s.complete);
+    CHECK(s.ambiguous == 0);
+    REQUIRE(s.solutions.size() == expected.size());
+    for (const auto& z : expected) {
+      int hits = 0;
+      for (const auto& e : s.solutions) {
+        double d = 0, big = 0;
+        for (int j = 0; j < n; ++j) {
+          d = std::max(d, std::abs(e.z(j) - zscale * z[size_t(j)]));
+          big = std::max(big, zscale * std::abs(z[size_t(j)]));
+        }
+        hits += d <= 1e-9 * big;
+      }
+      CHECK(hits == 1);
+    }
+  };
+  for (int variant = 0; variant < 2; ++variant) {
+    CAPTURE(variant);
+    cpkit::Mat Mv = M;
+    cpkit::Vec qv = cpkit::Vec::Ones(n);
+    for (int i = 0; i < n; ++i) {
+      if (variant == 0) {  // row i in units 10^-(i mod 11): z unchanged
+        const double sc = std::pow(10.0, -(i % 11));
+        Mv.row(i) *= sc;
+        qv(i) *= sc;
+      } else {
+        qv(i) = std::pow(10.0, -((7 * i) % 11));
+      }
+    }
+    const auto& expected = variant == 0 ? plain : qonly;
+    for (int k = -8; k <= 8; k += 4) {
+      CAPTURE(k);
+      check(Mv, std::pow(10.0, k) * qv, expected, std::pow(10.0, k));  // q x 10^k: z x 10^k
+    }
+    for (int k = -6; k <= 6; k += 3) {
+      CAPTURE(k);
+      check(std::pow(10.0, k) * Mv, std::pow(10.0, k) * qv, expected, 1.0);  // (M, q) x 10^k
+    }
+  }
+}
+
+TEST_CASE("enumerate_all: DART's Lemke_12D contact LCP with its rows and columns in other units",
+          "[enumerate][data]") {
+  // DART's Lemke_12D (q spans 0.01 and 1e-10): exactly 3 solutions (Python fractions over all
+  // 2^12 supports of the data's doubles). The same problem with w_i in units s_i = 10^(-10..10)
+  // and z_j in units t_j = 10^(-6..6) (rows times s_i, columns times t_j: z_j -> z_j / t_j) was
+  // enumerated with one scale for M and one for q, and its tests in mixed units said complete
+  // with 2, 1 or 0 of the 3 solutions (issue 24, item 7 class). Also q x 10^k, (M, q) x 10^k.
+  const cpkit::LcpProblem p = cpkit::read_lcp_json(CPKIT_TEST_DATA_DIR "/lemke/engine_dart_lemke_12d.json");
+  const int n = 12;
+  const std::vector<std::vector<double>> exact = {
+      {0.004857321734444363, 0.0, 2.707475274724607e-07, 0.0, 1.8405904801614171e-06,
+       3.830368557635335e-07, 4.8571385109348565e-05, 0.0, 1.2497871471080244e-06,
+       0.004904049318704329, 0.0, 0.0},
+      {0.004857321666320138, 7.457180097411183e-07, 1.0065491705851868e-06, 0.0, 0.0,
+       6.339208009725584e-07, 4.857104125256793e-05, 1.0941288669244174e-06,
+       2.627390890163576e-07, 0.004904049730496409, 0.0, 0.0},
+      {0.004857321674268123, 7.085960316390152e-07, 9.7654901534666e-07, 0.0,
+       4.554656678575741e-08, 6.44794074388813e-07, 4.8571028501655795e-05,
+       1.0856906539524313e-06, 2.8187834903025197e-07, 0.004904049735296752, 0.0, 0.0}};
+  const cpkit::Mat M = p.dense_M();
+  auto check = [&](const cpkit::Mat& Ms, const cpkit::Vec& qs, const cpkit::Vec& zscale) {
+    const SolutionSet s = enumerate_all(cpkit::LcpProblem(Ms, qs));
+    CHECK(s.complete);
+    REQUIRE(s.solutions.size() == exact.size());
+    for (const auto& z : exact) {
+      int hits = 0;
+      for (const auto& e : s.solutions) {
+        bool same = true;
+        for (int j = 0; j < n; ++j) {
+          const double x = z[size_t(j)] * zscale(j);
+          // support exact; values to 1e-7 relative (the solves of this q: 1e-10 next to 0.01)
+          same = same && (x == 0 ? e.z(j) == 0 : std::abs(e.z(j) - x) <= 1e-7 * std::abs(x));
+        }
+        hits += same;
+      }
+      CHECK(hits == 1);
+    }
+  };
+  std::mt19937 rng(24);
+  std::uniform_int_distribution<int> row_exp(-10, 10), col_exp(-6, 6);
+  for (int rep = 0; rep < 6; ++rep) {
+    CAPTURE(rep);
+    cpkit::Mat Ms = M;
+    cpkit::Vec qs = p.q, zscale = cpkit::Vec::Ones(n);
+    for (int i = 0; i < n; ++i) {
+      const double si = std::pow(10.0, row_exp(rng));
+      Ms.row(i) *= si;
+      qs(i) *= si;
+    }
+    for (int j = 0; rep >= 3 && j < n; ++j) {
+      const double tj = std::pow(10.0, col_exp(rng));
+      Ms.col(j) *= tj;
+      zscale(j) = 1 / tj;
+    }
+    check(Ms, qs, zscale);
+  }
+  for (int k = -8; k <= 8; k += 4) {
+    CAPTURE(k);
+    const double a = std::pow(10.0, k);
+    check(M, a * p.q, cpkit::Vec::Constant(n, a));
+    if (std::abs(k) <= 6) check(a * M, a * p.q, cpkit::Vec::Ones(n));
+  }
+}
