@@ -13,6 +13,7 @@
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 #include "lemke_basis.hpp"
+#include "rounding_ties.hpp"
 
 namespace cpkit::lcp {
 namespace {
@@ -30,9 +31,8 @@ using detail::LemkeBasis;
 // lexicographic minimum: a basic variable went negative, the invariant broke and degenerate
 // pivots cycled (issue 24, item 7). A fixed pivot tolerance of 1e-11 likewise dropped real
 // pivot entries (a P-matrix with det 3 * 2^-40 ended on a false secondary ray).
-constexpr double kTieTol = 1e-9;     // window for near ties (times ratio + value terms)
-constexpr double kTieUlps = 64;      // rounding floor: kTieUlps * eps * (k + 1)
-constexpr double kTieGrowth = 4;     // times the inverse's measured backward error
+// The rule is shared with the enumeration's lexicographic simplex (rounding_ties.hpp).
+constexpr double kTieTol = detail::kTieWindow;  // window for near ties (times ratio + terms)
 constexpr int kCheckEvery = 16;       // pivots between accuracy checks of the basis inverse
 constexpr double kRefactorTol = 1e-10;  // relative residual that triggers a refactorization
 
@@ -249,11 +249,7 @@ double LemkeRun::tie_level() {
   // per term, k + 1 terms), and of the inverse itself when it has drifted: its componentwise
   // backward error as measured at the last accuracy check (every kCheckEvery pivots; the
   // check refactorizes beyond kRefactorTol) times a margin.
-  if (tie_level_ < 0) {
-    const double eps = std::numeric_limits<double>::epsilon();
-    tie_level_ = std::min(kTieTol, std::max(kTieUlps * eps * (basis_.k() + 1),
-                                            kTieGrowth * quality_));
-  }
+  if (tie_level_ < 0) tie_level_ = detail::tie_level(basis_.k() + 1, quality_);
   return tie_level_;
 }
 
