@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/json_read.hpp"
 #include "mpi_session.hpp"
 
 namespace cpkit::cli {
@@ -119,18 +120,15 @@ std::vector<char> open_checkpoint(const ChunkRun& run, ChunkRunStats& stats) {
     if (!fs::exists(manifest))
       throw InputError("--resume: no checkpoint in '" + dir.string() + "' (nothing to resume: run "
                        "without --resume)");
-    nlohmann::json old;
-    try {
-      old = nlohmann::json::parse(read_file(manifest.string()));
-    } catch (const nlohmann::json::exception&) {
-      throw InputError("--resume: '" + manifest.string() + "' is not a checkpoint manifest");
-    }
+    const nlohmann::json old = parse_checkpoint_manifest(read_file(manifest.string()),
+                                                         manifest.string());
     for (const auto& [key, value] : run.manifest.items())
       if (!old.contains(key) || old[key] != value)
         throw InputError("--resume: the checkpoint in '" + dir.string() + "' was made for a "
                          "different map (" + key + " differs: " +
-                         (old.contains(key) ? old[key].dump() : std::string("absent")) + " there, " +
-                         value.dump() + " now); remove it or run without --resume");
+                         (old.contains(key) ? json_excerpt(old[key], 80) : std::string("absent")) +
+                         " there, " + json_excerpt(value, 80) + " now); remove it or run without "
+                         "--resume");
     for (int k = 0; k < run.plan.chunks; ++k)
       if (fs::exists(chunk_path(run.checkpoint, k))) {
         have[static_cast<std::size_t>(k)] = 1;
@@ -181,10 +179,10 @@ MapChunk parse_chunk(const std::string& b) {
   c.rank = static_cast<int>(get_u64(b, at));
   const uint64_t jn = get_u64(b, at);
   if (jn > b.size() - at) throw InputError("truncated map chunk");
-  try {
-    c.summary = nlohmann::json::parse(b.substr(at, jn));
-  } catch (const nlohmann::json::exception&) {
-    throw InputError("corrupt map chunk summary");
+  try {  // the one bounded JSON parser (nesting, numbers): a hostile file cannot crash it
+    c.summary = parse_json_bounded(b.substr(at, jn), "map chunk summary");
+  } catch (const InputError& e) {
+    throw InputError(std::string("corrupt map chunk summary: ") + e.what());
   }
   at += jn;
   const uint64_t na = get_u64(b, at);
@@ -197,6 +195,18 @@ MapChunk parse_chunk(const std::string& b) {
   }
   if (at != b.size()) throw InputError("corrupt map chunk (trailing bytes)");
   return c;
+}
+
+nlohmann::json parse_checkpoint_manifest(const std::string& text, const std::string& origin) {
+  nlohmann::json j;
+  try {
+    j = parse_json_bounded(text, origin);
+  } catch (const InputError& e) {
+    throw InputError("--resume: '" + origin + "' is not a checkpoint manifest: " + e.what());
+  }
+  if (!j.is_object())
+    throw InputError("--resume: '" + origin + "' is not a checkpoint manifest (not a JSON object)");
+  return j;
 }
 
 ChunkPlan plan_chunks(int rows, int64_t columns) {

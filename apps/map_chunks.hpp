@@ -30,6 +30,10 @@ struct MapChunk {
 /// InputError when the bytes are not a chunk (a truncated or foreign file).
 std::string serialize_chunk(const MapChunk& c);
 MapChunk parse_chunk(const std::string& bytes);
+/// The checkpoint manifest PREFIX.parts/manifest.json (what the map is), parsed with the limits
+/// of every JSON reader (core/json_read.hpp: nesting, numbers, duplicate keys). InputError
+/// "--resume: 'origin' is not a checkpoint manifest: ..." for anything but a JSON object.
+nlohmann::json parse_checkpoint_manifest(const std::string& text, const std::string& origin);
 
 /// The cut of a map with `rows` rows of `columns` cells: about 64 chunks (one row each for
 /// small maps), at most about 2^20 cells a chunk.

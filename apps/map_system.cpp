@@ -258,7 +258,7 @@ ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const nlohmann::json& i
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
 int run_param_direction(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = read_contact_system(r.path);
+  const ContactSystem sys = parse_contact_system(r.file);
   const int N = sys.n_points();
   SystemMapAxis axis;
   axis.param = parse_system_map_parameter(r.param, N);
@@ -382,7 +382,7 @@ int run_param_direction(const SystemMapRequest& r) {
 /// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
 int run_param_param(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = read_contact_system(r.path);
+  const ContactSystem sys = parse_contact_system(r.file);
   const int N = sys.n_points();
   SystemMapAxis a1, a2;
   a1.param = parse_system_map_parameter(r.param, N);
@@ -523,7 +523,7 @@ int run_map_system(const SystemMapRequest& r) {
   const std::string& path = r.path;
   const std::string& out = r.out;
   const bool json = r.json;
-  const ContactSystem sys = read_contact_system(path);
+  const ContactSystem sys = parse_contact_system(r.file);
   const int N = sys.n_points();
   MapOptions options;
   options.threads = r.threads;

@@ -169,7 +169,7 @@ int run_map_system_3d(const Map3dRequest& r) {
   if (!r.out.empty()) prepare_out_prefix(r.out);
   const Stopwatch clock;
   Plan p;
-  p.sys = read_contact_system_3d(r.path);
+  p.sys = parse_contact_system_3d(r.file);
   const int N = p.sys.n_points();
   Map3dOptions& o = p.options;
   if (r.has("--facets")) {
