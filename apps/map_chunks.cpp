@@ -22,6 +22,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
+#include "cpkit/core/json_read.hpp"
 #include "mpi_session.hpp"
 
 namespace cpkit::cli {
@@ -105,16 +106,12 @@ std::string read_checkpoint_file(const std::string& path, uint64_t max_bytes,
 }  // namespace
 
 nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what) {
+  // The one bounded JSON parser of every cpkit input (core/json_read.hpp: nesting, numbers,
+  // duplicate keys): a hostile checkpoint file cannot crash the program.
   try {
-    return nlohmann::json::parse(text, [&](int depth, nlohmann::json::parse_event_t,
-                                           nlohmann::json&) {
-      if (depth > kMaxJsonDepth)
-        throw InputError(what + " is nested deeper than " + std::to_string(kMaxJsonDepth) +
-                         " levels: not one cpkit wrote");
-      return true;
-    });
-  } catch (const nlohmann::json::exception&) {
-    throw InputError(what + " is not valid JSON: not one cpkit wrote");
+    return parse_json_bounded(text, what);
+  } catch (const InputError& e) {
+    throw InputError(what + " is not a checkpoint file cpkit wrote: " + e.what());
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <filesystem>
 #include <fstream>
@@ -460,9 +461,13 @@ int run_map(const MapArgs& a) {
       std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
     return kExitOk;
   }
-  if (a.given("--system") && rate3d::is_3d_system_file(a.system)) {
+  // The system file is read once (a pipe can be read only once) and dispatched on its dim.
+  std::optional<rate::SystemFile> file;
+  if (a.given("--system")) file = rate::read_system_file(a.system);
+  if (file && file->dim == 3) {
     Map3dRequest r;
     r.path = a.system;
+    r.file = *file;
     r.kind = a.given("--kind") ? a.kind : "";
     r.out = a.out;
     r.param = a.param;
@@ -538,6 +543,7 @@ int run_map(const MapArgs& a) {
                        std::to_string(a.threads));
     SystemMapRequest r;
     r.path = a.system;
+    r.file = *file;
     r.kind = kind;
     r.out = a.out;
     r.json = a.json;

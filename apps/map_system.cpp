@@ -284,7 +284,7 @@ ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const ContactSystem& sy
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
 int run_param_direction(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = read_contact_system(r.path);
+  const ContactSystem sys = parse_contact_system(r.file);
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
@@ -410,7 +410,7 @@ int run_param_direction(const SystemMapRequest& r) {
 /// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
 int run_param_param(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = read_contact_system(r.path);
+  const ContactSystem sys = parse_contact_system(r.file);
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
@@ -553,7 +553,7 @@ int run_map_system(const SystemMapRequest& r) {
   const std::string& path = r.path;
   const std::string& out = r.out;
   const bool json = r.json;
-  const ContactSystem sys = read_contact_system(path);
+  const ContactSystem sys = parse_contact_system(r.file);
   check_system_map_lcp_size(sys, "the direction map");
   const int N = sys.n_points();
   MapOptions options;

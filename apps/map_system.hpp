@@ -2,11 +2,14 @@
 // `cpkit map --system FILE` (map_system.cpp): the maps of N contact points.
 #include <string>
 
+#include "cpkit/rate_problem/system/system_file.hpp"
+
 namespace cpkit::cli {
 
 /// What `cpkit map --system` was asked (filled by map_command.cpp from the options).
 struct SystemMapRequest {
   std::string path, kind, out, param, param2;  ///< --system, --kind, --out, --param, --param2
+  rate::SystemFile file;                       ///< the --system file, read once (dim 2)
   std::string format = "npy";                  ///< --format (grid maps written with --out)
   bool json = false, plot = false;
   bool resume = false;  ///< --resume: reuse the finished chunks in PREFIX.parts

@@ -195,7 +195,7 @@ int run_map_system_3d(const Map3dRequest& r) {
   if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
   const Stopwatch clock;
   Plan p;
-  p.sys = read_contact_system_3d(r.path);
+  p.sys = parse_contact_system_3d(r.file);
   const int N = p.sys.n_points();
   Map3dOptions& o = p.options;
   if (r.has("--facets")) {

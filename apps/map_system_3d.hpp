@@ -5,11 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/system/system_file.hpp"
+
 namespace cpkit::cli {
 
 /// What `cpkit map --system FILE` (dim 3) was asked (filled by map_command.cpp).
 struct Map3dRequest {
   std::string path, kind, out, param, param2, others;
+  rate::SystemFile file;  ///< the --system file, read once (its dim is 3)
   bool json = false, plot = false;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0, gamma = 0;
   double time_limit = 600;

@@ -56,22 +56,23 @@ nlohmann::json types_json(const std::vector<rate::SolutionType>& t) {
 }  // namespace
 
 /// `cpkit rate --system FILE` with "dim": 3 (rate_system_3d.cpp).
-int run_rate_system_3d(const std::string& path, const std::vector<double>& dF,
+int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& dF,
                        const std::string& method, int facets, bool json,
                        std::optional<double> time_limit);
 
 int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
                     const std::string& method_name, int facets, bool json,
                     std::optional<double> time_limit) {
-  if (rate3d::is_3d_system_file(path))
-    return run_rate_system_3d(path, dF_arg, method_name, facets, json, time_limit);
+  // read once (a pipe can be read only once), then by its dimension
+  const rate::SystemFile file = rate::read_system_file(path);
+  if (file.dim == 3) return run_rate_system_3d(file, dF_arg, method_name, facets, json, time_limit);
   if (time_limit)
     throw InputError("--time-limit applies to the faceted 3-D rate problems (\"dim\": 3 and "
                      "--facets K); " + path + " is a 2-D system");
   if (facets != 0)
     throw InputError("--facets applies to 3-D points (\"dim\": 3 in the system file, "
                      "docs/contact_3d.md); " + path + " is a 2-D system");
-  const rate::ContactSystem sys = rate::read_contact_system(path);
+  const rate::ContactSystem sys = rate::parse_contact_system(file);
   const int N = sys.n_points();
   Eigen::VectorXd dF;
   if (!dF_arg.empty()) {

@@ -99,7 +99,7 @@ void slip_json(const Row& r, nlohmann::json& e) {
 
 }  // namespace
 
-int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_arg,
+int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& dF_arg,
                        const std::string& method, int facets, bool json,
                        std::optional<double> time_limit_arg) {
   if (time_limit_arg && !(*time_limit_arg > 0 && *time_limit_arg <= 1e9))
@@ -110,7 +110,8 @@ int run_rate_system_3d(const std::string& path, const std::vector<double>& dF_ar
                      "one-point route is solved in bounded time");
   // One budget for the whole solve (every separation case of the N-point problem).
   const double time_limit = time_limit_arg.value_or(60.0);
-  const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(path);
+  const std::string& path = file.source;
+  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(file);
   const int N = sys.n_points();
   if (method != "enumerate")
     throw InputError("--method " + method + " is not available for 3-D points: the solution set "

@@ -1,7 +1,9 @@
 // `cpkit simulate --system FILE` with a "dim": 3 file (simulate_3d.hpp).
 #include "simulate_3d.hpp"
 
+#include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -9,6 +11,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/fretting_3d.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "simulate_config.hpp"
 #include "simulation_outputs.hpp"
 
 namespace cpkit::cli {
@@ -59,7 +62,7 @@ nlohmann::json sample_json(const rate3d::Fretting3dSample& s) {
 }  // namespace
 
 int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
-  const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(c.system);
+  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(c.file);
   if (sys.n_points() != 1)
     throw InputError(c.system + ": " + std::to_string(sys.n_points()) +
                      " points; the 3-D simulation (fretting with an elliptic load orbit) is for "
@@ -92,10 +95,9 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   orbit.steps_per_cycle = count_option(c, "steps-per-cycle", orbit.steps_per_cycle);
   orbit.ramp_steps = count_option(c, "ramp-steps", orbit.ramp_steps);
   throw_if_invalid(orbit.validate(), "orbit");
-  // Bounded like the 2-D command: at most 2^31 steps.
-  if (orbit.size() > static_cast<std::size_t>(INT_MAX))
-    throw InputError("the run would take " + std::to_string(orbit.size()) +
-                     " steps; at most " + std::to_string(INT_MAX) + " are allowed");
+  // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
+  check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
+                         true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
 
   rate3d::Fretting3dOptions o;
   o.params = sys.point_parameters(0);

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/system/system_file.hpp"
+
 #include "cli_common.hpp"
 
 namespace cpkit::cli {
@@ -34,6 +36,7 @@ struct Simulate3dArgs {
 /// What the 3-D run takes from the 2-D command's parsed options.
 struct Simulate3dCommon {
   std::string system;
+  rate::SystemFile file;  ///< the system file, read once (its dim is 3)
   std::map<std::string, double> num;  ///< numeric options given (key without "--")
   std::string wear_law, branch_rule, csv, summary, plot;
   int every = 1;

@@ -21,6 +21,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@
 #include "simulate_system.hpp"
 #include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -232,9 +233,10 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
 
 /// A "dim": 3 system: one 3-D point under an elliptic load orbit (simulate_3d.cpp); the options
 /// of the 2-D simulation are passed on to be refused there.
-int run_3d(const SimArgs& a) {
+int run_3d(const SimArgs& a, const rate::SystemFile& file) {
   Simulate3dCommon c;
   c.system = a.system;
+  c.file = file;
   c.num = a.num;
   c.wear_law = a.wear_law;
   c.branch_rule = a.branch_rule;
@@ -264,7 +266,12 @@ int run(const SimArgs& a) {
   refuse_outputs_over_inputs("cpkit simulate", simulation_output_files(a.csv, a.summary, a.plot),
                              {{"--config", a.config}, {"--system", a.system},
                               {"--load-csv", a.load_csv}});
-  if (!a.system.empty() && rate3d::is_3d_system_file(a.system)) return run_3d(a);
+  // A system file is read once (a pipe can be read only once) and dispatched on its dimension.
+  std::optional<rate::SystemFile> file;
+  if (!a.system.empty()) {
+    file = rate::read_system_file(a.system);
+    if (file->dim == 3) return run_3d(a, *file);
+  }
   if (const std::string o = a.three_d.first_given(); !o.empty())
     throw InputError(o + " needs a \"dim\": 3 system file (--system FILE; docs/contact_3d.md)");
   Settings s;
@@ -274,7 +281,8 @@ int run(const SimArgs& a) {
   refuse_outputs_over_inputs("cpkit simulate", simulation_output_files(s.csv, s.summary, s.plot),
                              {{"--config", a.config}, {"system", s.system},
                               {"load csv", s.load_csv}});
-  if (!s.system.empty() && rate3d::is_3d_system_file(s.system))
+  if (!s.system.empty() && !file) file = rate::read_system_file(s.system);  // the config's
+  if (file && file->dim == 3)
     throw InputError("the config's system '" + s.system + "' has \"dim\": 3: simulate it from the "
                      "command line (cpkit simulate --system FILE --orbit aX aY ...)");
   // Command-line options of another load type, or heat options without --heat, would have no
@@ -311,7 +319,7 @@ int run(const SimArgs& a) {
                      "constant is k_M");
   // Everything is checked (model, load, sizes) before the history is allocated.
   validate_simulate_settings(s);
-  if (!s.system.empty()) return run_system_simulation(s, a.json);
+  if (file) return run_system_simulation(s, *file, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
   std::vector<std::string> written;  // named at the end: the user sees what the run produced

@@ -7,18 +7,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/json_read.hpp"
 
 namespace cpkit::cli {
 namespace {
 
 using nlohmann::json;
 
-/// Dumps a JSON value for a message (invalid UTF-8 replaced, long values cut).
-std::string shown(const json& v) {
-  std::string t = v.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (t.size() > 40) t = t.substr(0, 37) + "...";
-  return t;
-}
+/// A JSON value for a message (invalid UTF-8 replaced, long values cut, at bounded cost).
+std::string shown(const json& v) { return json_excerpt(v, 40); }
 
 double get_num(const json& v, const std::string& field) {
   if (!v.is_number()) throw InputError(field + " must be a number, got " + shown(v));
@@ -193,51 +190,14 @@ double run_bytes(double steps, double cycles, bool stored_history) {
   return (stored_history ? steps * sizeof(rate::LoadPoint) : 0.0) + 2 * cycles * sizeof(double);
 }
 
-/// Nesting depth of the JSON text (brackets outside strings): a config is at most 3 deep, and
-/// a bound keeps a hostile file from exhausting the stack of a recursive parser or destructor.
-constexpr int kMaxDepth = 32;
-bool too_deep(const std::string& text) {
-  int depth = 0;
-  bool in_string = false, escaped = false;
-  for (char c : text) {
-    if (in_string) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxDepth) return true;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 void parse_simulate_config(const std::string& text, const std::string& origin,
                            const std::string& dir, SimulateSettings& s) {
-  if (too_deep(text))
-    throw InputError("config '" + origin + "' nests deeper than " + std::to_string(kMaxDepth) +
-                     " levels");
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::out_of_range& e) {
-    // In the user's words, not the JSON library's ("[json.exception.out_of_range.406] ...").
-    const std::string w = e.what();
-    const auto q = w.find('\'');
-    const std::string number = q == std::string::npos ? std::string() : w.substr(q);
-    throw InputError("config '" + origin + "': the number " + number +
-                     " is beyond the range of double (|x| > 1.8e308)");
-  } catch (const std::exception& e) {
-    std::string w = e.what();
-    if (w.rfind("[json.exception.", 0) == 0 && w.find("] ") != std::string::npos)
-      w = w.substr(w.find("] ") + 2);  // drop the library's error code
-    throw InputError("config '" + origin + "' is not valid JSON: " + w);
-  }
+  // The one JSON parser of the readers (core/json_read.hpp): nesting, number range (1e400,
+  // 1e-400) and duplicate keys are refused with the line.
+  const json j = parse_json_bounded(text, "config '" + origin + "'",
+                                    "a config needs 3: {\"heat\": {\"T_body\": [...]}}");
   if (!j.is_object()) throw InputError("config '" + origin + "': the top level must be an object");
   try {
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -292,6 +252,16 @@ void read_simulate_config(const std::string& path, SimulateSettings& s) {
   parse_simulate_config(text, path, dir.empty() ? std::string("/") : dir, s);
 }
 
+void check_simulation_steps(std::int64_t steps, bool system, const std::string& what) {
+  const std::int64_t cap = system ? kMaxSystemSimulationSteps : kMaxSimulationSteps;
+  if (steps > cap)
+    throw InputError("the run would take " + std::to_string(steps) + " steps (" + what +
+                     "); the cap is " + std::to_string(cap) + " steps (" +
+                     (system ? "kMaxSystemSimulationSteps, N points or a 3-D point"
+                             : "kMaxSimulationSteps") +
+                     "): use fewer steps or cycles");
+}
+
 void check_history_memory(std::int64_t steps, const SimulateSettings& s) {
   const double cycles =
       s.load_type == "fretting" ? static_cast<double>(s.fretting.cycles) : 0.0;
@@ -342,9 +312,13 @@ void validate_simulate_settings(const SimulateSettings& s) {
     check_history_memory(std::int64_t{s.fretting.ramp_steps} +
                              std::int64_t{s.fretting.cycles} * s.fretting.steps_per_cycle,
                          s);
+    check_simulation_steps(std::int64_t{s.fretting.ramp_steps} +
+                               std::int64_t{s.fretting.cycles} * s.fretting.steps_per_cycle,
+                           !s.system.empty(), "ramp_steps + cycles x steps_per_cycle");
   } else if (s.load_type == "ramp") {
     throw_if_invalid(s.ramp.validate(), "ramp");
     check_history_memory(std::int64_t{s.ramp.steps} + 1, s);
+    check_simulation_steps(std::int64_t{s.ramp.steps} + 1, !s.system.empty(), "the ramp's steps");
   } else if (s.load_type == "csv") {
     if (s.load_csv.empty()) throw InputError("load type csv needs a file (--load-csv or load.file)");
     if (!(std::isfinite(s.csv_period) && s.csv_period >= 0))
@@ -369,6 +343,7 @@ rate::LoadHistory make_simulate_history(const SimulateSettings& s) {
     rate::LoadHistory h =
         rate::parse_load_csv(read_bounded(s.load_csv, kMaxLoadCsvBytes, "load history"), s.load_csv);
     check_history_memory(static_cast<std::int64_t>(h.points.size()), s);
+    check_simulation_steps(static_cast<std::int64_t>(h.points.size()), false, "the rows of the CSV");
     h.period = s.csv_period;
     h.cycle_start = 0;
     return h;

@@ -41,6 +41,19 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
 constexpr std::size_t kMaxConfigBytes = std::size_t{1} << 20;     // 1 MiB
 constexpr std::size_t kMaxLoadCsvBytes = std::size_t{64} << 20;   // 64 MiB
 
+/// Most steps a simulation may take (`cpkit simulate`; docs/simulation.md, "Length cap"): the
+/// steps run one after the other, so a count such as --ramp-steps 1e9 would run for hours with
+/// no answer; it is refused up front, naming the cap. One 2-D point: about 0.4 us a step, so
+/// 10^8 steps take under a minute. N points or a 3-D point: 0.1-0.2 ms a step (two points, one
+/// 3-D point), so 10^6 steps take a few minutes (more points take longer per step).
+constexpr std::int64_t kMaxSimulationSteps = 100'000'000;
+constexpr std::int64_t kMaxSystemSimulationSteps = 1'000'000;
+
+/// InputError naming the cap when `steps` exceeds it: kMaxSimulationSteps, or with `system`
+/// (N points, a 3-D point) kMaxSystemSimulationSteps. `what` says where the steps come from
+/// ("ramp_steps + cycles x steps_per_cycle").
+void check_simulation_steps(std::int64_t steps, bool system, const std::string& what);
+
 /// Reads at most `max_bytes` of a file (any kind: regular, pipe, device); InputError naming
 /// `what` and the path when it cannot be opened or is larger.
 std::string read_bounded(const std::string& path, std::size_t max_bytes, const std::string& what);

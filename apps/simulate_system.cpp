@@ -21,35 +21,17 @@ std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int 
   std::string line;
   int lineno = 0;
   bool header_allowed = true;
+  std::vector<double> v;
   while (std::getline(in, line)) {
     ++lineno;
-    if (const auto h = line.find('#'); h != std::string::npos) line.erase(h);
-    for (char& c : line)
-      if (c == ',' || c == ';' || c == '\t') c = ' ';
-    std::istringstream ls(line);
-    std::vector<double> v;
-    std::string tok;
-    bool numeric = true;
-    while (ls >> tok) {
-      try {
-        std::size_t used = 0;
-        v.push_back(std::stod(tok, &used));
-        if (used != tok.size()) numeric = false;
-      } catch (const std::exception&) {
-        numeric = false;
-      }
-    }
-    if (v.empty() && numeric) continue;  // blank
-    if (!numeric) {
-      if (header_allowed) {
-        header_allowed = false;
-        continue;
-      }
-      throw InputError(path + ":" + std::to_string(lineno) + ": not a number");
-    }
+    // numbers parsed strictly, as the one-point load CSV (rate::parse_csv_row)
+    const std::string where = path + ":" + std::to_string(lineno);
+    const rate::CsvRow row = rate::parse_csv_row(line, header_allowed, where, v);
+    if (row == rate::CsvRow::kBlank) continue;
     header_allowed = false;
+    if (row == rate::CsvRow::kHeader) continue;
     if (static_cast<int>(v.size()) != 2 * N + 1)
-      throw InputError(path + ":" + std::to_string(lineno) + ": " + std::to_string(v.size()) +
+      throw InputError(where + ": " + std::to_string(v.size()) +
                        " values; a system of " + std::to_string(N) + " points needs t and " +
                        std::to_string(2 * N) + " forces");
     rate::SystemLoadPoint p;
@@ -65,8 +47,9 @@ std::vector<double> vec(const Eigen::VectorXd& v) { return {v.data(), v.data() +
 
 }  // namespace
 
-int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
-  const rate::ContactSystem sys = rate::read_contact_system(s.system);
+int run_system_simulation(const SimulateSettings& s, const rate::SystemFile& file,
+                          bool print_json_summary) {
+  const rate::ContactSystem sys = rate::parse_contact_system(file);
   const int N = sys.n_points();
   rate::SystemLoadSource load;
   std::vector<rate::SystemLoadPoint> stored;
@@ -77,6 +60,7 @@ int run_system_simulation(const SimulateSettings& s, bool print_json_summary) {
     load = rate::system_fretting_source(s.fretting, *sys.pattern1, *sys.pattern2);
   } else {
     stored = read_system_csv(s.load_csv, N);
+    check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
     load = rate::system_history_source(stored, s.csv_period);
   }
   rate::SystemSimulationOptions o;

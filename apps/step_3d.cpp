@@ -22,6 +22,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/step_3d.hpp"
 #include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/three_d/multistart_cap.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
 #include "cpkit/rate_problem/three_d/system_step_3d.hpp"
 
@@ -215,7 +216,8 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     if (cmd.count(o) > 0)
       throw InputError(std::string(o) + " cannot be combined with a \"dim\": 3 --system file (the "
                        "file gives the point's parameters and state)");
-  const rate3d::ContactSystem3d sys = rate3d::read_contact_system_3d(a.system);
+  if (cmd.count("--multistart") > 0) rate3d::check_multistart_cap(a.multistart, "--multistart");
+  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(a.file);
   if (sys.n_points() != 1) return run_system_step_3d(a, cmd, sys);
   const bool chain_given = cmd.count("--chain") > 0;
   const int modes = (a.all ? 1 : 0) + (chain_given ? 1 : 0) + (cmd.count("--facets") > 0 ? 1 : 0) +

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/system/system_file.hpp"
+
 namespace cpkit::cli {
 
 struct Step3dCliArgs {
@@ -18,6 +20,7 @@ struct Step3dCliArgs {
   std::string chain;        ///< --chain (empty: the default exact,fb-soc,ipopt)
   int facets = 0;           ///< --facets K
   int multistart = 0;       ///< --multistart N
+  rate::SystemFile file;    ///< the file, read once (its dim is 3)
 };
 
 /// Runs the 3-D step; `cmd` tells which options were given (options without effect are

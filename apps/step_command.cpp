@@ -15,6 +15,7 @@
 // complete.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -202,7 +203,7 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
 }
 
 /// `--system`: every solution of the N-point step (system_step.hpp).
-int run_system(const StepArgs& a, const CLI::App& cmd) {
+int run_system(const StepArgs& a, const CLI::App& cmd, const rate::SystemFile& file) {
   // The one-point options describe one point; with a system file they would be ignored.
   for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s",
                         "--criterion", "--wear-law", "--k_M", "--P_T0", "--P_N0", "--g0",
@@ -213,7 +214,7 @@ int run_system(const StepArgs& a, const CLI::App& cmd) {
   if (!a.all)
     throw InputError("--system needs --all (the N-point step reports every solution)");
   rate::SystemStepProblem p;
-  p.system = rate::read_contact_system(a.system);
+  p.system = rate::parse_contact_system(file);
   const int N = p.system.n_points();
   if (static_cast<int>(a.DF.size()) != 2 * N)
     throw InputError("--DF needs " + std::to_string(2 * N) + " numbers (DF_T, DF_N per point, " +
@@ -319,9 +320,12 @@ void add_step_command(CLI::App& app, Context& ctx) {
       throw InputError("--wear-law mroz needs --k_M (the Mroz-Stupkiewicz wear constant)");
     if (mroz && cmd->count("--k_a") > 0)
       throw InputError("--k_a (Archard) has no effect with --wear-law mroz: give --k_M instead");
-    if (!args->system.empty() && rate3d::is_3d_system_file(args->system)) {
+    // The file is read once (a pipe can be read only once) and dispatched on its dimension.
+    std::optional<rate::SystemFile> file;
+    if (!args->system.empty()) file = rate::read_system_file(args->system);
+    if (file && file->dim == 3) {
       Step3dCliArgs a3{args->system, args->DF, args->wear_law, args->k_M, args->g0, args->all,
-                       args->json, args->chain, args->facets, args->multistart};
+                       args->json, args->chain, args->facets, args->multistart, *file};
       ctx.exit_code = run_step_3d(a3, *cmd);  // step_3d.cpp
       return;
     }
@@ -331,8 +335,8 @@ void add_step_command(CLI::App& app, Context& ctx) {
     if (args->all && cmd->count("--chain") > 0)
       throw InputError("--chain has no effect with --all (every solution comes from the complete "
                        "active-set enumeration)");
-    if (!args->system.empty()) {
-      ctx.exit_code = run_system(*args, *cmd);
+    if (file) {
+      ctx.exit_code = run_system(*args, *cmd, *file);
       return;
     }
     for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--P_T0", "--P_N0", "--g0"})

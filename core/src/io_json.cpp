@@ -2,7 +2,7 @@
 // Two readers with one meaning: the fast one (simdjson, for the dense files of every size that
 // users time) answers every well-formed dense file it can fully vouch for; anything else - an
 // error, Matrix Market fields, a number that might underflow - goes to the reference reader
-// (nlohmann's SAX parser with the checks below), which gives every message.
+// (parse_json_bounded, json_read.hpp, with the checks below), which gives every message.
 #include <simdjson.h>
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
+#include "cpkit/core/json_read.hpp"
 #include "io_text.hpp"
 
 namespace cpkit {
@@ -25,125 +26,8 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-/// 1-based line of byte `position` in `text`.
-int line_at(const std::string& text, std::size_t position) {
-  const auto end = text.begin() + static_cast<std::ptrdiff_t>(std::min(position, text.size()));
-  return 1 + static_cast<int>(std::count(text.begin(), end, '\n'));
-}
-
-/// Builds the document as nlohmann's own DOM parser does, with three refusals: nesting deeper
-/// than kMaxJsonDepth (the DOM's destructor and dump() recurse, so depth is bounded here, before
-/// the stack is), numbers that overflow or underflow to 0, and duplicate keys (which value
-/// would be meant?). Every refusal is an InputError naming the line.
-class BoundedDomBuilder final : public json::json_sax_t {
- public:
-  BoundedDomBuilder(json& root, const std::string& text, const std::string& origin)
-      : root_(root), text_(text), origin_(origin) {}
-
-  bool null() override { return put(json(nullptr)) != nullptr; }
-  bool boolean(bool b) override { return put(json(b)) != nullptr; }
-  bool number_integer(number_integer_t v) override { return put(json(v)) != nullptr; }
-  bool number_unsigned(number_unsigned_t v) override { return put(json(v)) != nullptr; }
-  bool number_float(number_float_t v, const string_t& raw) override {
-    double parsed = 0;
-    if (const auto r = io_text::parse_real(raw, parsed); r == io_text::Number::kUnderflow)
-      fail(io_text::describe(r, raw));
-    return put(json(v)) != nullptr;
-  }
-  bool string(string_t& s) override { return put(json(std::move(s))) != nullptr; }
-  bool binary(binary_t&) override { fail("binary values are not JSON text"); }
-  bool start_object(std::size_t) override { return open(json::object()); }
-  bool key(string_t& k) override {
-    if (stack_.back()->contains(k)) fail("duplicate field \"" + io_text::quoted(k) + "\"");
-    key_ = std::move(k);
-    return true;
-  }
-  bool end_object() override { return close(); }
-  bool start_array(std::size_t) override { return open(json::array()); }
-  bool end_array() override { return close(); }
-  bool parse_error(std::size_t position, const std::string& last_token,
-                   const nlohmann::detail::exception& ex) override {
-    position_ = position;
-    if (ex.id == 406)  // out_of_range.406: a number beyond the range of double
-      fail(io_text::describe(io_text::Number::kOverflow, last_token));
-    fail("malformed JSON: " + io_text::valid_utf8(ex.what()));
-  }
-  /// Bytes the lexer has read so far (updated by CountingIterator): the position of messages.
-  std::size_t position_ = 0;
-
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(origin_ + ":" + std::to_string(line_at(text_, position_)) + ": " + what);
-  }
-  /// Stores v where the parser is (root, next array element, or the current key).
-  json* put(json&& v) {
-    if (stack_.empty()) {
-      root_ = std::move(v);
-      return &root_;
-    }
-    json& top = *stack_.back();
-    if (top.is_array()) {
-      top.push_back(std::move(v));
-      return &top.back();
-    }
-    json& slot = top[key_];
-    slot = std::move(v);
-    return &slot;
-  }
-  bool open(json&& container) {
-    if (static_cast<int>(stack_.size()) >= kMaxJsonDepth)
-      fail("nesting deeper than " + std::to_string(kMaxJsonDepth) +
-           " levels (an LCP file needs 3: {\"M\": [[...]]})");
-    stack_.push_back(put(std::move(container)));
-    return true;
-  }
-  bool close() {
-    stack_.pop_back();
-    return true;
-  }
-
-  json& root_;
-  const std::string& text_;
-  const std::string& origin_;
-  std::vector<json*> stack_;  // open containers; a parent never grows while its child is open
-  string_t key_;
-};
-
-/// A character iterator that records how far the lexer has read, so that the builder's
-/// messages can name the line.
-struct CountingIterator {
-  using iterator_category = std::input_iterator_tag;
-  using value_type = char;
-  using difference_type = std::ptrdiff_t;
-  using pointer = const char*;
-  using reference = const char&;
-  const char* at = nullptr;
-  const char* begin = nullptr;
-  std::size_t* consumed = nullptr;
-  reference operator*() const { return *at; }
-  CountingIterator& operator++() {
-    ++at;
-    *consumed = static_cast<std::size_t>(at - begin);
-    return *this;
-  }
-  bool operator==(const CountingIterator& o) const { return at == o.at; }
-  bool operator!=(const CountingIterator& o) const { return at != o.at; }
-};
-
-json parse_bounded(const std::string& text, const std::string& origin) {
-  json root;
-  BoundedDomBuilder builder(root, text, origin);
-  const char* b = text.data();
-  const CountingIterator first{b, b, &builder.position_};
-  const CountingIterator last{b + text.size(), b, &builder.position_};
-  json::sax_parse(first, last, &builder);
-  return root;
-}
-
-/// A JSON value for a message: its dump, shortened.
-std::string shown(const json& v) {
-  return io_text::quoted(v.dump(-1, ' ', false, json::error_handler_t::replace));
-}
+/// A JSON value for a message: its dump, shortened (at bounded cost, whatever its size).
+std::string shown(const json& v) { return io_text::quoted(json_dump_prefix(v, 41)); }
 
 /// v as a double; `where()` names it in the message (made only on failure: loops stay cheap).
 template <class Where>
@@ -340,7 +224,7 @@ LcpProblem parse_lcp_json(const std::string& text, const std::string& origin_in)
 
 LcpProblem parse_lcp_json_reference(const std::string& text, const std::string& origin_in) {
   const std::string origin = io_text::valid_utf8(origin_in);
-  const json j = parse_bounded(text, origin);
+  const json j = parse_json_bounded(text, origin, "an LCP file needs 3: {\"M\": [[...]]}");
   if (!j.is_object()) throw InputError(origin + ": top level must be an object with \"M\" and \"q\"");
   check_fields(j, origin);
   LcpProblem p = (j.contains("M_mtx") || j.contains("q_mtx")) ? from_matrix_market_fields(j, origin)

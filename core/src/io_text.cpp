@@ -89,7 +89,12 @@ std::string quoted(std::string_view token) {
   return valid_utf8(token.substr(0, kMax)) + "...";
 }
 
-Number parse_real(std::string_view token, double& value) {
+}  // namespace cpkit::io_text
+
+namespace cpkit {
+
+NumberText parse_decimal(std::string_view token, double& value) {
+  using Number = NumberText;
   std::string_view t = token;
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);  // as fscanf("%le") and strtod accept
   if (token.size() != t.size() && (t.empty() || t.front() == '-')) return Number::kNotANumber;
@@ -107,8 +112,9 @@ Number parse_real(std::string_view token, double& value) {
   return Number::kOk;
 }
 
-std::string describe(Number outcome, std::string_view token) {
-  const std::string q = "'" + quoted(token) + "'";
+std::string describe_number(NumberText outcome, std::string_view token) {
+  using Number = NumberText;
+  const std::string q = "'" + io_text::quoted(token) + "'";
   switch (outcome) {
     case Number::kOk:
       return {};
@@ -123,6 +129,10 @@ std::string describe(Number outcome, std::string_view token) {
   }
   return "bad number " + q;
 }
+
+}  // namespace cpkit
+
+namespace cpkit::io_text {
 
 bool parse_integer(std::string_view token, std::int64_t& value) {
   std::string_view t = token;

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "cpkit/core/number_text.hpp"
+
 namespace cpkit::io_text {
 
 /// Largest problem file read (bytes). Larger files are rejected before they are read whole.
@@ -23,18 +25,14 @@ std::string valid_utf8(std::string_view s);
 /// A token for a message: valid UTF-8, at most 40 bytes (longer ones end with "...").
 std::string quoted(std::string_view token);
 
-/// Outcome of parsing one number.
-enum class Number { kOk, kNotANumber, kNotFinite, kOverflow, kUnderflow };
-
-/// Parses the whole token as a double (decimal, optional sign and exponent; locale-free).
-/// kNotFinite for nan/inf; kOverflow when |x| exceeds the largest double; kUnderflow when a
-/// non-zero literal is below the smallest subnormal (it would silently become 0). Subnormal
-/// values are accepted (they are doubles, with reduced precision).
-Number parse_real(std::string_view token, double& value);
-
-/// What is wrong with a token that parse_real rejected, e.g. "expected a number, got 'x'" or
-/// "'1e400' is outside the range of double".
-std::string describe(Number outcome, std::string_view token);
+/// The strict decimal numbers of number_text.hpp, under the names the readers use.
+using Number = NumberText;
+inline Number parse_real(std::string_view token, double& value) {
+  return parse_decimal(token, value);
+}
+inline std::string describe(Number outcome, std::string_view token) {
+  return describe_number(outcome, token);
+}
 
 /// Parses the whole token as a decimal integer (optional sign). False when it is not an integer
 /// or does not fit in int64.

@@ -12,6 +12,7 @@
 #include "point3d_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/fretting_3d.hpp"
+#include "cpkit/rate_problem/three_d/multistart_cap.hpp"
 #include "cpkit/rate_problem/three_d/sphere_map_3d.hpp"
 #include "cpkit/rate_problem/three_d/step_3d.hpp"
 #include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
@@ -208,6 +209,7 @@ pyb::dict multistart_step_3d(const pyb::object& point, const pyb::object& P_T0, 
                              double k_M, int n_starts, std::uint64_t seed) {
   const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 0) throw InputError("n_starts must be >= 0, got " + std::to_string(n_starts));
+  rate3d::check_multistart_cap(n_starts, "n_starts");
   rate3d::Step3dSolutionSet set;
   {
     pyb::gil_scoped_release release;
@@ -221,6 +223,7 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
                                 double k_M, int facets, int n_starts, std::uint64_t seed) {
   const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 1) throw InputError("n_starts must be >= 1, got " + std::to_string(n_starts));
+  rate3d::check_multistart_cap(n_starts, "n_starts");
   rate3d::FacetedStep3dResult r;
   {
     pyb::gil_scoped_release release;

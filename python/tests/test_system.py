@@ -116,3 +116,13 @@ def test_system_rate_agrees_with_the_cli(name, dF):
         if theirs["kind"] == "point":
             for key, values in theirs["values"].items():
                 np.testing.assert_allclose(mine.start[key], values, atol=1e-12)
+
+
+def test_deeply_nested_file_is_a_value_error(tmp_path):
+    # issue 24, item 15: 10^6 nested brackets (2 MB) crashed the interpreter (SIGSEGV)
+    deep = "[" * 1_000_000 + "]" * 1_000_000
+    for text in (deep, '{"A": ' + deep + '}', '{"dim": 3, "A": ' + deep + '}'):
+        path = tmp_path / "deep.json"
+        path.write_text(text)
+        with pytest.raises(ValueError, match="nesting deeper than 64 levels"):
+            cpkit.ContactSystem.from_file(str(path))

@@ -127,3 +127,12 @@ def test_bad_input_is_a_value_error():
         cpkit.solve_rate_3d(p, "b", (1, 0, 1), facets=0)
     with pytest.raises(ValueError, match="state b"):
         cpkit.solve_rate_3d(p, "a", (1, 0, 1), facets=8)
+
+
+def test_multistart_count_is_capped():
+    # issue 24, item 16: n_starts = 10**9 ran for days; refused up front, naming the cap
+    p = cpkit.Point3d(A=np.eye(3), mu=0.5)
+    with pytest.raises(ValueError, match="exceeds the cap of 10000"):
+        cpkit.multistart_step_3d(p, (1, 0, 1), n_starts=10**9)
+    with pytest.raises(ValueError, match="exceeds the cap of 10000"):
+        cpkit.solve_step_3d_faceted(p, (1, 0, 1), facets=8, k_M=0.0, n_starts=10**9)

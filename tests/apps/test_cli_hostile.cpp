@@ -1,10 +1,13 @@
 // Hostile and extreme command-line input (issue 11, sec. 5): no input may run code, crash the
 // program (exit 4 = internal error) or be silently converted. Every case expects exit 2 with a
 // message naming the problem and nothing on stdout, unless stated otherwise. Runs the binary.
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
 
 #include "cli_runner.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -91,8 +94,8 @@ TEST_CASE("simulate: config integers must be integers in range", "[cli][simulate
       {"{" + params + "}, \"output\": {\"every\": -1}}", "output.every"},
       {"{" + params + "}, \"output\": {\"every\": 1e300}}", "output.every"},
       {"{" + params + "}, \"heat\": {\"T_body\": [300, \"hot\"]}}", "heat.T_body[1]"},
-      {"{" + params + "}, \"load\": {\"F_N\": 1e999}}", "beyond the range of double"},
-      {"{\"name\": " + std::string(100, '[') + std::string(100, ']') + "}", "nests deeper"},
+      {"{" + params + "}, \"load\": {\"F_N\": 1e999}}", "outside the range of double"},
+      {"{\"name\": " + std::string(100, '[') + std::string(100, ']') + "}", "nesting deeper than 64"},
   };
   int k = 0;
   for (const auto& c : cases) {
@@ -230,4 +233,149 @@ TEST_CASE("siblings: typos, meaningless tolerances, unwritable outputs, overflow
   CHECK(r.out.find("null") == std::string::npos);
   for (const char* k : {"external_work", "stored", "dissipation", "balance_error_rel"})
     CHECK(j["energy"][k].is_number());
+}
+
+// ---- issue 24, items 13-16: the input readers and the limits around them ----
+
+namespace {
+
+const std::string kExamples = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/";
+
+/// `cpkit ARGS` run by bash (for `<(...)`, which /bin/sh lacks), bounded by `timeout`: a reader
+/// that opened a pipe twice would wait forever for a second writer.
+Run run_bash(const std::string& args) {
+  const fs::path script = scratch_dir() / "run_bash.sh";
+  const fs::path out = scratch_dir() / "bash_out.txt", err = scratch_dir() / "bash_err.txt";
+  write(script, "exec timeout 60 '" + std::string(CPKIT_BINARY_DIR) + "/apps/cpkit' " + args +
+                    " > '" + out.string() + "' 2> '" + err.string() + "'\n");
+  const int status = std::system(("bash '" + script.string() + "'").c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = cpkit::test::slurp(out);
+  r.err = cpkit::test::slurp(err);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a system file or an LCP given as a pipe is read once (item 13)", "[cli][hostile]") {
+  struct Case {
+    std::string command, file, rest;
+  };
+  const std::vector<Case> cases = {
+      {"rate", kExamples + "elliptic_point_3d.json", "--json"},             // dim 3
+      {"rate", kExamples + "two_point_system.json", "--json"},              // dim 2
+      {"step", kExamples + "two_point_system.json", "--DF 0.1 0.2 0.1 0.3 --all --json"},
+      {"step", kExamples + "elliptic_point_3d.json", "--DF 0.1 0.05 0.2 --all --json"}};
+  for (const auto& c : cases) {
+    CAPTURE(c.command, c.file);
+    const Run file = run_cpkit(c.command + " --system '" + c.file + "' " + c.rest);
+    const Run pipe = run_bash(c.command + " --system <(cat '" + c.file + "') " + c.rest);
+    CAPTURE(file.err, pipe.err);
+    REQUIRE(file.code == 0);
+    CHECK(pipe.code == 0);
+    // The same answer; only the file's name (echoed in "input") differs.
+    auto jf = nlohmann::json::parse(file.out), jp = nlohmann::json::parse(pipe.out);
+    for (auto* j : {&jf, &jp}) {
+      j->erase("input");
+      j->erase("run");
+      j->erase("system");
+    }
+    CHECK(jf.dump() == jp.dump());
+  }
+  // An LCP file without an extension: the format is told by the content.
+  const std::string lcp = std::string(CPKIT_TEST_DATA_DIR) + "/lcp/cps_4_qp.json";
+  const Run json_pipe = run_bash("lcp solve <(cat '" + lcp + "') --json");
+  INFO(json_pipe.err);
+  CHECK(json_pipe.code == 0);
+  CHECK(nlohmann::json::parse(json_pipe.out)["status"] == "solved");
+  const Run garbage = run_bash("lcp solve <(echo 'hello') --json");
+  CHECK(garbage.code == 2);
+  CHECK(garbage.err.find("not a known problem format") != std::string::npos);
+}
+
+TEST_CASE("a broken 3-D system file is reported as such, not read as 2-D (item 13)",
+          "[cli][hostile]") {
+  const fs::path dir = scratch_dir() / "broken3d";
+  fs::create_directories(dir);
+  const std::string syntax = write(dir / "syntax.json", R"({"dim": 3, "A": [[1, 0, 0], )");
+  const std::string tiny = write(
+      dir / "tiny.json",
+      R"({"dim": 3, "A": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "points": [{"state": "b", "mu": 1e-400}]})");
+  const std::string dim = write(dir / "dim.json", R"({"dim": "3", "A": [[1]], "points": []})");
+  for (const char* cmd : {"rate --system ", "step --DF 1 0 1 --all --system ",
+                          "simulate --orbit 1 1 --system ", "map --system "}) {
+    expect_bad_input(cmd + ("'" + syntax + "'"), "not valid JSON");
+    expect_bad_input(cmd + ("'" + tiny + "'"), "'1e-400' is below the smallest double");
+    expect_bad_input(cmd + ("'" + dim + "'"), "dim must be 2 (2-D points) or 3 (3-D points), got \"3\"");
+  }
+}
+
+TEST_CASE("10^6 nested brackets in a system file or a checkpoint manifest: exit 2 (item 15)",
+          "[cli][hostile]") {
+  const fs::path dir = scratch_dir() / "deep";
+  fs::create_directories(dir);
+  const std::string deep = std::string(1'000'000, '[') + std::string(1'000'000, ']');
+  const std::string f2 = write(dir / "deep2.json", "{\"A\": " + deep + "}");
+  const std::string f3 = write(dir / "deep3.json", "{\"dim\": 3, \"A\": " + deep + "}");
+  for (const std::string& f : {f2, f3}) {
+    expect_bad_input("rate --system '" + f + "'", "nesting deeper than 64 levels");
+    expect_bad_input("map --system '" + f + "'", "nesting deeper than 64 levels");
+  }
+  // A checkpoint whose manifest is 10^6 brackets deep: --resume refuses it.
+  const fs::path prefix = dir / "map";
+  fs::create_directories(prefix.string() + ".parts");
+  write(prefix.string() + ".parts/manifest.json", deep);
+  expect_bad_input("map --system '" + kExamples + "coupled_grazing_points.json' --kind "
+                   "param-direction --param coupling --from 0 --to 1 --n 2 --theta-n 8 --threads 1 "
+                   "--out '" + prefix.string() + "' --resume",
+                   "nesting deeper than 64 levels");
+}
+
+TEST_CASE("load CSVs: strict decimals, no hexadecimal, no underflow to 0 (item 16)",
+          "[cli][hostile]") {
+  const fs::path dir = scratch_dir() / "csv";
+  fs::create_directories(dir);
+  struct Case {
+    std::string rows, names;
+  };
+  const std::vector<Case> one_point = {
+      {"t,F_T,F_N\n0.5,0,1\n1,0x1,1\n", "expected a number, got '0x1'"},
+      {"0x1p-1,0,1\n1,0,1\n", "expected a number, got '0x1p-1'"},  // first line: not a header
+      {"0.5,0,1\n1,1e-400,1\n", "'1e-400' is below the smallest double"},
+      {"0.5,0,1\n1,0,1e400\n", "'1e400' is outside the range of double"},
+      {"0.5,0,1\n1,inf,1\n", "'inf' is not a finite number"}};
+  int k = 0;
+  for (const auto& c : one_point) {
+    const std::string f = write(dir / ("l" + std::to_string(k++) + ".csv"), c.rows);
+    expect_bad_input("simulate " + kModel + "--load-csv '" + f + "'", c.names);
+  }
+  // The N-point load CSV (t and 2N forces per row) reads numbers the same way.
+  const std::string sys = kExamples + "two_point_system.json";
+  const std::string hex = write(dir / "n_hex.csv", "t,a,b,c,d\n1,0,0x10,0,1\n");
+  expect_bad_input("simulate --system '" + sys + "' --load-csv '" + hex + "'", "got '0x10'");
+  const std::string tiny = write(dir / "n_tiny.csv", "1,0,1e-400,0,1\n");
+  expect_bad_input("simulate --system '" + sys + "' --load-csv '" + tiny + "'", "'1e-400' is below");
+  // A config file refuses 1e-400 as a system file does.
+  const std::string cfg = write(dir / "tiny.json", R"({"parameters": {"a11": 1, "a12": 0, "a22": 1, "mu": 1e-400}})");
+  expect_bad_input("simulate --config '" + cfg + "'", "'1e-400' is below the smallest double");
+}
+
+TEST_CASE("multistart and simulation lengths have documented caps (item 16)", "[cli][hostile]") {
+  const std::string p3 = kExamples + "elliptic_point_3d.json";
+  expect_bad_input("step --system '" + p3 + "' --DF 0.1 0.05 0.2 --multistart 1000000000",
+                   "--multistart = 1000000000 starts exceeds the cap of 10000");
+  const std::string p6 = kExamples + "two_point_system_3d.json";
+  expect_bad_input("step --system '" + p6 + "' --DF 0 0 1 0 0 1 --multistart 1000000000",
+                   "exceeds the cap of 10000");
+  expect_bad_input("simulate " + kModel + "--ramp-steps 1e9",
+                   "the cap is 100000000 steps (kMaxSimulationSteps)");
+  expect_bad_input("simulate " + kModel + "--load ramp --F_N1 1 --steps 1e9", "kMaxSimulationSteps");
+  // N points and 3-D points: 0.1-0.2 ms a step, capped at 10^6 steps.
+  expect_bad_input("simulate --system '" + kExamples + "fretting_point_3d.json' --orbit 1 1 "
+                   "--cycles 1e6 --steps-per-cycle 1000",
+                   "the cap is 1000000 steps (kMaxSystemSimulationSteps");
+  expect_bad_input("simulate --system '" + kExamples + "two_point_system.json' --cycles 1e4 "
+                   "--steps-per-cycle 1000",
+                   "the cap is 1000000 steps (kMaxSystemSimulationSteps");
 }

@@ -102,7 +102,7 @@ TEST_CASE("a simulate config with a number beyond double or bad JSON: the user's
           "[cli][options]") {
   const fs::path f = scratch_dir() / "big_cfg.json";
   std::ofstream(f) << R"({"parameters": {"a11": 1e400, "a12": 0, "a22": 1, "mu": 0.5}})";
-  bad("simulate --config '" + f.string() + "'", {"1e400", "beyond the range of double"},
+  bad("simulate --config '" + f.string() + "'", {"1e400", "outside the range of double"},
       {"json.exception"});
   const fs::path g = scratch_dir() / "broken_cfg.json";
   std::ofstream(g) << R"({"parameters": )";

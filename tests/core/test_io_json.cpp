@@ -43,7 +43,7 @@ TEST_CASE("JSON problems", "[io][json]") {
 }
 
 TEST_CASE("Malformed JSON problems name the field", "[io][json]") {
-  fails_with(R"({"M": [[1]], "q": [1)", "malformed JSON");
+  fails_with(R"({"M": [[1]], "q": [1)", "not valid JSON");
   fails_with(R"([1, 2])", "top level must be an object");
   fails_with(R"({"q": [1]})", "missing field \"M\"");
   fails_with(R"({"M": [[1]]})", "missing field \"q\"");
@@ -70,9 +70,9 @@ TEST_CASE("JSON: unknown fields, duplicates, NaN and Inf are errors", "[io][json
   fails_with(R"({"M": [[1]], "q": [1], "nmae": "x"})", "unknown field \"nmae\"");
   fails_with("{\"M\": [[1]],\n \"q\": [1],\n \"q\": [2]}", "f.json:3: duplicate field \"q\"");
   // JSON has no NaN or Infinity literals: nlohmann's parser refuses them.
-  fails_with(R"({"M": [[NaN]], "q": [1]})", "f.json:1: malformed JSON");
-  fails_with(R"({"M": [[1]], "q": [Infinity]})", "malformed JSON");
-  fails_with(R"({"M": [[1]], "q": [-Infinity]})", "malformed JSON");
+  fails_with(R"({"M": [[NaN]], "q": [1]})", "f.json:1: not valid JSON");
+  fails_with(R"({"M": [[1]], "q": [Infinity]})", "not valid JSON");
+  fails_with(R"({"M": [[1]], "q": [-Infinity]})", "not valid JSON");
 }
 
 TEST_CASE("JSON numbers beyond the range of double are input errors", "[io][json]") {
@@ -104,7 +104,7 @@ TEST_CASE("JSON nesting is bounded (no stack overflow)", "[io][json]") {
 }
 
 TEST_CASE("JSON that is not UTF-8 is refused, messages stay UTF-8", "[io][json]") {
-  fails_with("{\"M\": [[1]], \"q\": [1], \"note\": \"\xff\"}", "malformed JSON");
+  fails_with("{\"M\": [[1]], \"q\": [1], \"note\": \"\xff\"}", "not valid JSON");
   // The origin (a file name) may hold any bytes; the message is valid UTF-8.
   CHECK_THROWS_WITH(cpkit::parse_lcp_json("[", "\xff.json"), Contains("\xEF\xBF\xBD.json"));
 }

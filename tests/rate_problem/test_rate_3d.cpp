@@ -283,7 +283,7 @@ TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates it
     Q.topLeftCorner<2, 2>() = R;
     Point3dParameters pr = p;
     pr.A = Q * p.A * Q.transpose();
-    pr.A = (pr.A + pr.A.transpose()) / 2;
+    pr.A = ((pr.A + pr.A.transpose()) / 2).eval();  // no aliasing
     Point3dState sr = st;
     sr.P_T = R * st.P_T;
     const RateSolutionSet3d a = solve_rate_3d(p, st, dF);

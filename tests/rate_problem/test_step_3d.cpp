@@ -284,7 +284,7 @@ TEST_CASE("3-D step: rotating the tangential plane of an isotropic problem", "[s
     Q.topLeftCorner<2, 2>() = R;
     Step3dProblem r = p;
     r.params.A = Q * p.params.A * Q.transpose();
-    r.params.A = (r.params.A + r.params.A.transpose()) / 2;
+    r.params.A = ((r.params.A + r.params.A.transpose()) / 2).eval();  // no aliasing
     r.state.P_T0 = R * p.state.P_T0;
     r.DF = Q * p.DF;
     const Step3dSolutionSet a = enumerate_step_3d(p), b = enumerate_step_3d(r);

@@ -1,5 +1,6 @@
 #include "cpkit/rate_problem/model/parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -32,8 +33,13 @@ std::string ContactParameters::validate() const {
     }
   }
   // A symmetric positive definite: a11 > 0, a22 > 0 and det A > 0 (Sylvester). The determinant
-  // is judged relative to a11 a22 so that a nearly singular A is reported, not divided by.
-  if (!(a11 > 0) || !(a22 > 0) || !(detA() > 1e-14 * a11 * a22)) {
+  // is judged relative to a11 a22 so that a nearly singular A is reported, not divided by; and
+  // on A scaled by a power of two (exact) to a largest entry in [1, 2), so that the verdict does
+  // not depend on units (unscaled, a11 a22 overflows at 1e300 and underflows at 1e-300).
+  const double amax = std::max({std::abs(a11), std::abs(a12), std::abs(a22)});
+  const double f = amax > 0 ? std::ldexp(1.0, -std::ilogb(amax)) : 1.0;
+  const double b11 = f * a11, b12 = f * a12, b22 = f * a22;
+  if (!(b11 > 0) || !(b22 > 0) || !(b11 * b22 - b12 * b12 > 1e-14 * b11 * b22)) {
     msg << "A = [[" << a11 << ", " << a12 << "], [" << a12 << ", " << a22
         << "]] is not symmetric positive definite (need a11 > 0, a22 > 0, a11 a22 - a12^2 > 0; "
         << "det A = " << detA() << ")";

@@ -1,10 +1,12 @@
 #include "cpkit/rate_problem/simulation/load_history.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 
 namespace cpkit::rate {
 
@@ -28,45 +30,55 @@ std::string LoadHistory::validate() const {
   return {};
 }
 
+CsvRow parse_csv_row(const std::string& line_in, bool header_allowed, const std::string& where,
+                     std::vector<double>& out) {
+  out.clear();
+  std::string line = line_in.substr(0, line_in.find('#'));
+  for (char& ch : line)
+    if (ch == ',' || ch == ';' || ch == '\t' || ch == '\r') ch = ' ';
+  std::istringstream ls(line);
+  std::vector<std::string> tokens;
+  for (std::string t; ls >> t;) tokens.push_back(t);
+  if (tokens.empty()) return CsvRow::kBlank;
+  // A header names the columns: none of its tokens starts like a number (so that "0x10, 1, 2"
+  // or "1e-400, 0, 1" on the first line is an error, not a header skipped in silence).
+  const auto number_like = [](const std::string& t) {
+    const char c = t[0];
+    return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.';
+  };
+  std::vector<double> values;
+  for (const std::string& t : tokens) {
+    double v = 0;
+    const NumberText r = parse_decimal(t, v);
+    if (r == NumberText::kOk) {
+      values.push_back(v);
+      continue;
+    }
+    if (header_allowed && r == NumberText::kNotANumber &&
+        std::none_of(tokens.begin(), tokens.end(), number_like))
+      return CsvRow::kHeader;
+    throw InputError(where + ": " + describe_number(r, t));
+  }
+  out = std::move(values);
+  return CsvRow::kNumbers;
+}
+
 LoadHistory parse_load_csv(const std::string& text, const std::string& origin) {
   LoadHistory h;
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
   bool header_allowed = true;
+  std::vector<double> v;
   while (std::getline(in, line)) {
     ++lineno;
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    for (char& ch : line)
-      if (ch == ',' || ch == ';' || ch == '\t' || ch == '\r') ch = ' ';
-    std::istringstream ls(line);
-    std::string a, b, c, extra;
-    if (!(ls >> a)) continue;
-    if (!(ls >> b >> c) || (ls >> extra)) {
-      throw InputError(origin + ":" + std::to_string(lineno) +
-                       ": expected three columns t, F_T, F_N");
-    }
-    auto num = [&](const std::string& s, double& v) {
-      try {
-        std::size_t pos = 0;
-        v = std::stod(s, &pos);
-        return pos == s.size();
-      } catch (const std::exception&) {
-        return false;
-      }
-    };
-    LoadPoint p;
-    if (!num(a, p.t) || !num(b, p.F_T) || !num(c, p.F_N)) {
-      if (header_allowed) {
-        header_allowed = false;
-        continue;  // a header line
-      }
-      throw InputError(origin + ":" + std::to_string(lineno) + ": not a number in '" + a + " " +
-                       b + " " + c + "'");
-    }
+    const std::string where = origin + ":" + std::to_string(lineno);
+    const CsvRow row = parse_csv_row(line, header_allowed, where, v);
+    if (row == CsvRow::kBlank) continue;
     header_allowed = false;
-    h.points.push_back(p);
+    if (row == CsvRow::kHeader) continue;
+    if (v.size() != 3) throw InputError(where + ": expected three columns t, F_T, F_N");
+    h.points.push_back({v[0], v[1], v[2]});
   }
   const std::string m = h.validate();
   if (!m.empty()) throw InputError(origin + ": " + m);

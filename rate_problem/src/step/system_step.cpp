@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/spd.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 
@@ -742,11 +743,8 @@ std::string SystemStepProblem::validate() const {
   }
   if (!s.A.allFinite()) return "A has a value that is not finite";
   if (!DF.allFinite()) return "DF has a value that is not finite";
-  const double amax = s.A.cwiseAbs().maxCoeff();
-  if (!((s.A - s.A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * amax))
-    return "A is not symmetric";
-  Eigen::LLT<Eigen::MatrixXd> llt(s.A);
-  if (llt.info() != Eigen::Success || !(amax > 0)) return "A is not positive definite";
+  // symmetric to 1e-12 relative, positive definite judged scale-free (core/spd.hpp)
+  if (const SpdVerdict spd = check_spd(s.A, 1e-12, 0.0); !spd.message.empty()) return spd.message;
   if (s.criterion != Criterion::kCoulomb)
     return "the N-point step supports only the Coulomb criterion (38)";
   for (int i = 0; i < N; ++i) {

@@ -9,7 +9,8 @@
 #include <stdexcept>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/core/io.hpp"
+#include "cpkit/core/spd.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
 #include "json_fields.hpp"
 
 namespace cpkit::rate {
@@ -215,17 +216,9 @@ std::string ContactSystem::validate() const {
             << "][" << r << "] = " << A(c, r) << " (rows and columns 0-based)";
         return msg.str();
       }
-  {
-    const Eigen::MatrixXd S = 0.5 * (A + A.transpose());
-    Eigen::LLT<Eigen::MatrixXd> llt(S);
-    if (llt.info() != Eigen::Success)
-      return "A is not positive definite (Cholesky factorisation failed)";
-    const double rc = llt.rcond();
-    if (!(rc > kRcondMin)) {
-      msg << "A is numerically singular (reciprocal condition number estimate " << rc << ")";
-      return msg.str();
-    }
-  }
+  // scale-free: A and A x 1e-300 get the same verdict (spd.hpp)
+  if (const SpdVerdict spd = check_spd(A, kSymTol, kRcondMin); !spd.message.empty())
+    return spd.message;
   for (int i = 0; i < n; ++i) {
     const SystemPoint& p = points[static_cast<std::size_t>(i)];
     const std::string pn = point_name(static_cast<std::size_t>(i));
@@ -274,14 +267,9 @@ std::string ContactSystem::validate() const {
   return {};
 }
 
-ContactSystem parse_contact_system(const std::string& json_text, const std::string& source) {
-  json doc;
-  try {
-    doc = json::parse(json_text, nullptr, true, false);
-  } catch (const json::exception& e) {  // syntax errors, numbers out of double's range
-    throw InputError(source + ": not valid JSON: " + e.what());
-  }
-  if (!doc.is_object()) throw InputError(source + ": the system file must be a JSON object");
+ContactSystem parse_contact_system(const SystemFile& file) {
+  const json& doc = file.document;
+  const std::string& source = file.source;
   try {
     ContactSystem sys;
     for (auto it = doc.begin(); it != doc.end(); ++it) {
@@ -291,12 +279,9 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
         throw InputError("unknown key \"" + k +
                          "\" (known: name, dim, A, points, dF, patterns, criterion)");
     }
-    if (doc.contains("dim") && !(doc["dim"].is_number() && doc["dim"].get<double>() == 2))
-      throw InputError(doc["dim"].is_number() && doc["dim"].get<double>() == 3
-                           ? std::string("dim 3: three-dimensional points are read by `cpkit rate "
-                                         "--system` (one point, docs/contact_3d.md); this command "
-                                         "takes 2-D systems (dim 2) only")
-                           : "dim must be 2 (2-D points) or 3 (3-D points), got " + shown(doc["dim"]));
+    if (file.dim != 2)
+      throw InputError("dim 3: three-dimensional points are read by the 3-D reader "
+                       "(docs/contact_3d.md); this command takes 2-D systems (dim 2) only");
     if (doc.contains("name")) {
       if (!doc["name"].is_string()) throw InputError("name must be a string");
       sys.name = doc["name"].get<std::string>();
@@ -328,15 +313,19 @@ ContactSystem parse_contact_system(const std::string& json_text, const std::stri
       sys.pattern2 = get_vector(p[1], 2 * n, "patterns[1]");
     }
     throw_if_invalid(sys.validate());
-    sys.A = 0.5 * sys.A + 0.5 * sys.A.transpose();  // no overflow near the largest double  // remove rounding asymmetry (kSymTol)
+    symmetrize(sys.A);  // remove the rounding asymmetry kSymTol allows
     return sys;
   } catch (const InputError& e) {
     throw InputError(source + ": " + e.what());
   }
 }
 
+ContactSystem parse_contact_system(const std::string& json_text, const std::string& source) {
+  return parse_contact_system(parse_system_file(json_text, source));
+}
+
 ContactSystem read_contact_system(const std::string& path) {
-  return parse_contact_system(detail::read_system_file(path), path);
+  return parse_contact_system(read_system_file(path));
 }
 
 }  // namespace cpkit::rate

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/spd.hpp"
 #include "unit_scaling.hpp"
 
 namespace cpkit::rate3d {
@@ -453,10 +454,8 @@ void solve_state_d(const Point3dParameters& p, const Point3dState& st, const Blo
 
 std::string Point3dParameters::validate() const {
   if (!finite(A)) return "A has a non-finite entry";
-  const double s = A.cwiseAbs().maxCoeff();
-  if ((A - A.transpose()).cwiseAbs().maxCoeff() > 1e-12 * s) return "A is not symmetric";
-  const Eigen::LLT<Eigen::Matrix3d> llt(A);
-  if (llt.info() != Eigen::Success || !(s > 0)) return "A is not positive definite";
+  // symmetric to 1e-12 relative, positive definite judged scale-free (core/spd.hpp)
+  if (const SpdVerdict spd = check_spd(A, 1e-12, 0.0); !spd.message.empty()) return spd.message;
   if (!std::isfinite(mu) || !(mu > 0)) return "mu must be finite and > 0, got " + num(mu);
   if (!std::isfinite(C_T) || C_T < 0) return "C_T must be finite and >= 0, got " + num(C_T);
   if (!std::isfinite(k_a) || k_a < 0) return "k_a must be finite and >= 0, got " + num(k_a);

@@ -1,11 +1,11 @@
 // The "dim": 3 system file (system_3d.hpp).
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
 
-#include <Eigen/Cholesky>
 #include <nlohmann/json.hpp>
 
 #include "../system/json_fields.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/spd.hpp"
 
 namespace cpkit::rate3d {
 namespace {
@@ -14,6 +14,11 @@ using nlohmann::json;
 using rate::detail::get_num;
 using rate::detail::point_name;
 using rate::detail::shown;
+
+/// Relative asymmetry of A tolerated (rounding of a condensed FE stiffness; as the 2-D file).
+constexpr double kSymTol = 1e-10;
+/// Reciprocal condition estimate below which A is called numerically singular (as the 2-D file).
+constexpr double kRcondMin = 1e-13;
 
 Eigen::VectorXd get_vector(const json& v, std::size_t n, const std::string& field,
                            const char* layout) {
@@ -80,31 +85,9 @@ Point3dParameters ContactSystem3d::point_parameters(int i) const {
   return p;
 }
 
-bool is_3d_system(const std::string& json_text) noexcept {
-  try {
-    const json doc = json::parse(json_text, nullptr, false, false);
-    return doc.is_object() && doc.contains("dim") && doc["dim"].is_number() &&
-           doc["dim"].get<double>() == 3;
-  } catch (...) {
-    return false;
-  }
-}
-
-bool is_3d_system_file(const std::string& path) noexcept {
-  try {
-    return is_3d_system(rate::detail::read_system_file(path));
-  } catch (...) {
-    return false;
-  }
-}
-
-ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std::string& source) {
-  json doc;
-  try {
-    doc = json::parse(json_text, nullptr, true, false);
-  } catch (const json::exception& e) {
-    throw InputError(source + ": not valid JSON: " + e.what());
-  }
+ContactSystem3d parse_contact_system_3d(const rate::SystemFile& file) {
+  const json& doc = file.document;
+  const std::string& source = file.source;
   try {
     if (!doc.is_object()) throw InputError("the system file must be a JSON object");
     for (auto it = doc.begin(); it != doc.end(); ++it) {
@@ -112,8 +95,7 @@ ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std:
       if (k != "name" && k != "dim" && k != "A" && k != "points" && k != "dF")
         throw InputError("unknown key \"" + k + "\" (known for dim 3: name, dim, A, points, dF)");
     }
-    if (!doc.contains("dim") || !doc["dim"].is_number() || doc["dim"].get<double>() != 3)
-      throw InputError("dim must be 3 here");
+    if (file.dim != 3) throw InputError("dim must be 3 here (the 3-D reader)");
     ContactSystem3d sys;
     if (doc.contains("name")) {
       if (!doc["name"].is_string()) throw InputError("name must be a string");
@@ -132,12 +114,9 @@ ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std:
     for (std::size_t r = 0; r < n; ++r)
       sys.A.row(static_cast<Eigen::Index>(r)) =
           get_vector(Aj[r], n, "A[" + std::to_string(r) + "]", "a row of A").transpose();
-    const double s = sys.A.cwiseAbs().maxCoeff();
-    if ((sys.A - sys.A.transpose()).cwiseAbs().maxCoeff() > 1e-10 * s)
-      throw InputError("A is not symmetric");
-    sys.A = 0.5 * sys.A + 0.5 * sys.A.transpose();  // no overflow near the largest double
-    const Eigen::LLT<Eigen::MatrixXd> llt(sys.A);
-    if (!(s > 0) || llt.info() != Eigen::Success) throw InputError("A is not positive definite");
+    // as the 2-D file: symmetric to 1e-10 relative, positive definite judged scale-free (spd.hpp)
+    throw_if_invalid(check_spd(sys.A, kSymTol, kRcondMin).message);
+    symmetrize(sys.A);  // remove the rounding asymmetry kSymTol allows
     for (std::size_t i = 0; i < pts.size(); ++i) sys.points.push_back(parse_point(pts[i], i));
     if (doc.contains("dF")) sys.dF = get_vector(doc["dF"], n, "dF", "T_X, T_Y, N per point");
     return sys;
@@ -146,8 +125,12 @@ ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std:
   }
 }
 
+ContactSystem3d parse_contact_system_3d(const std::string& json_text, const std::string& source) {
+  return parse_contact_system_3d(rate::parse_system_file(json_text, source));
+}
+
 ContactSystem3d read_contact_system_3d(const std::string& path) {
-  return parse_contact_system_3d(rate::detail::read_system_file(path), path);
+  return parse_contact_system_3d(rate::read_system_file(path));
 }
 
 }  // namespace cpkit::rate3d

@@ -15,12 +15,11 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "cpkit/core/json_read.hpp"  // kMaxJsonDepth
 #include "cpkit/core/problem.hpp"
 
 namespace cpkit {
 
-/// Deepest JSON nesting read ({"M": [[1]]} has depth 3); deeper files are an InputError.
-inline constexpr int kMaxJsonDepth = 64;
 /// Largest number of rows or columns a Matrix Market file may declare. A sparse file declares
 /// sizes that its entries do not back, and q is stored densely: this bounds that allocation.
 inline constexpr Eigen::Index kMaxMatrixMarketDimension = 10'000'000;
@@ -53,8 +52,10 @@ Vec parse_npy_vector(const std::string& bytes, const std::string& origin = "<str
 /// matrix_market_q_path(m_path) ("dir/M.npy" -> "dir/M.q.npy").
 LcpProblem read_lcp_npy(const std::string& m_path, const std::string& q_path = {});
 
-/// Dispatches on the extension (case-insensitive): .json, .dat, .mtx or .npy; otherwise
-/// InputError. `q_path` (the q of a Matrix Market or .npy M) is accepted only with .mtx, .npy.
+/// Dispatches on the extension (case-insensitive): .json, .dat, .mtx or .npy. A path without an
+/// extension (a pipe such as `<(cat f.json)`, /dev/fd/63) is read once and its format told by its
+/// content: the .npy magic, the Matrix Market banner %%MatrixMarket, '{' (JSON), a number or '#'
+/// (Siconos .dat). Any other extension is an InputError. `q_path` (the q of a Matrix Market or .npy M) is accepted only with .mtx, .npy.
 LcpProblem read_lcp_file(const std::string& path, const std::string& q_path = {});
 
 void write_lcp_json(const LcpProblem& p, const std::string& path);

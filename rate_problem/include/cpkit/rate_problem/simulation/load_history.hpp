@@ -22,8 +22,20 @@ struct LoadHistory {
   std::string validate() const;
 };
 
-/// CSV with columns t, F_T, F_N (a header line naming them is optional; '#' starts a comment).
-/// Throws InputError naming the file and line for malformed input.
+/// What one line of a load CSV holds (parse_csv_row).
+enum class CsvRow { kBlank, kNumbers, kHeader };
+
+/// The numbers of one line of a load CSV (`,`, `;`, tabs or spaces between them; `#` starts a
+/// comment), each parsed as a strict decimal (core/number_text.hpp: no hexadecimal `0x10`, no
+/// nan/inf, and `1e400` or `1e-400`, which do not fit a double, refused). kHeader when
+/// `header_allowed` and no token starts like a number (a line `t, F_T, F_N`). Anything else is an
+/// InputError "where: ..." naming the token.
+CsvRow parse_csv_row(const std::string& line, bool header_allowed, const std::string& where,
+                     std::vector<double>& out);
+
+/// CSV with columns t, F_T, F_N (a header line naming them is optional; '#' starts a comment;
+/// numbers as parse_csv_row reads them). Throws InputError naming the file and line for
+/// malformed input.
 LoadHistory read_load_csv(const std::string& path);
 LoadHistory parse_load_csv(const std::string& text, const std::string& origin = "<string>");
 

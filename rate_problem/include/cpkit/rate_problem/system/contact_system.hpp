@@ -17,6 +17,7 @@
 
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {
 
@@ -54,9 +55,11 @@ struct ContactSystem {
   std::string validate() const;
 };
 
-/// Reads a system file (JSON). Throws cpkit::InputError naming the field and point for every
-/// inconsistency, unknown keys included.
+/// Reads a system file (JSON, read once: system_file.hpp). Throws cpkit::InputError naming the
+/// field and point for every inconsistency, unknown keys and a "dim": 3 file included.
 ContactSystem read_contact_system(const std::string& path);
 ContactSystem parse_contact_system(const std::string& json_text, const std::string& source = "system");
+/// The 2-D system of a file already read (read_system_file; its dim must be 2).
+ContactSystem parse_contact_system(const SystemFile& file);
 
 }  // namespace cpkit::rate

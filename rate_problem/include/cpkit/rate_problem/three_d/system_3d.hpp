@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/system/system_file.hpp"
 #include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
 
 namespace cpkit::rate3d {
@@ -32,17 +33,14 @@ struct ContactSystem3d {
   Point3dParameters point_parameters(int i) const;
 };
 
-/// True when the JSON text is an object with "dim": 3 (then it is read here, not by the 2-D
-/// reader); false for anything else (the 2-D reader then reports what is wrong).
-bool is_3d_system(const std::string& json_text) noexcept;
-/// is_3d_system of a file's text (false when it cannot be read: the 2-D reader reports that).
-bool is_3d_system_file(const std::string& path) noexcept;
-
-/// Reads a "dim": 3 system file. Throws cpkit::InputError naming the field and point for every
-/// inconsistency (unknown keys, sizes, A not symmetric / not positive definite, NaN, a state d
-/// point off its ellipse, ...).
+/// Reads a "dim": 3 system file (read once: system_file.hpp tells its dimension). Throws
+/// cpkit::InputError naming the field and point for every inconsistency (unknown keys, sizes, A
+/// not symmetric to 1e-10 relative / not positive definite / numerically singular, NaN, a state
+/// d point off its ellipse, ...). A is returned exactly symmetric.
 ContactSystem3d parse_contact_system_3d(const std::string& json_text,
                                         const std::string& source = "system");
 ContactSystem3d read_contact_system_3d(const std::string& path);
+/// The 3-D system of a file already read (rate::read_system_file; its dim must be 3).
+ContactSystem3d parse_contact_system_3d(const rate::SystemFile& file);
 
 }  // namespace cpkit::rate3d
