@@ -322,14 +322,18 @@ TEST_CASE("10^6 nested brackets in a system file or a checkpoint manifest: exit 
     expect_bad_input("rate --system '" + f + "'", "nesting deeper than 64 levels");
     expect_bad_input("map --system '" + f + "'", "nesting deeper than 64 levels");
   }
-  // A checkpoint whose manifest is 10^6 brackets deep: --resume refuses it.
+  // A checkpoint whose manifest is 10^6 brackets deep (2 MB): --resume refuses it by its size
+  // (a manifest is at most 1 MiB); 10^5 deep (200 kB): by its nesting, before any DOM exists.
   const fs::path prefix = dir / "map";
   fs::create_directories(prefix.string() + ".parts");
+  const std::string resume = "map --system '" + kExamples + "coupled_grazing_points.json' --kind "
+                             "param-direction --param coupling --from 0 --to 1 --n 2 --theta-n 8 "
+                             "--threads 1 --out '" + prefix.string() + "' --resume";
   write(prefix.string() + ".parts/manifest.json", deep);
-  expect_bad_input("map --system '" + kExamples + "coupled_grazing_points.json' --kind "
-                   "param-direction --param coupling --from 0 --to 1 --n 2 --theta-n 8 --threads 1 "
-                   "--out '" + prefix.string() + "' --resume",
-                   "nesting deeper than 64 levels");
+  expect_bad_input(resume, "more than the 1048576 a file of this map can have");
+  write(prefix.string() + ".parts/manifest.json",
+        std::string(100'000, '[') + std::string(100'000, ']'));
+  expect_bad_input(resume, "nesting deeper than 64 levels");
 }
 
 TEST_CASE("load CSVs: strict decimals, no hexadecimal, no underflow to 0 (item 16)",

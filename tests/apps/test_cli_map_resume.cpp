@@ -280,6 +280,6 @@ TEST_CASE("--resume reads only regular checkpoint files of bounded size (issue 2
     }
     r = run_cpkit(kMapA + " --out '" + p.string() + "' --resume");
     CHECK(r.code == 2);
-    CHECK(r.err.find(depth == 1000000 ? "more than the" : "nested deeper") != std::string::npos);
+    CHECK(r.err.find(depth == 1000000 ? "more than the" : "nesting deeper than") != std::string::npos);
   }
 }

@@ -36,7 +36,7 @@ TEST_CASE("read_lcp_file dispatches on the extension", "[io]") {
   const auto d = write("b.dat", "1\n0\n1\n1\n1\t1\n3\n-1\n");
   CHECK(cpkit::read_lcp_file(d).M(0, 0) == 3);
   CHECK_THROWS_WITH(cpkit::read_lcp_file(write("c.txt", "1")),
-                    Contains("unknown file type '.txt' (expected .json, .dat, .mtx or .npy)"));
+                    Contains("unknown file type '.txt' (expected .json, .dat, .mtx or .npy, or no extension"));
   CHECK_THROWS_WITH(cpkit::read_lcp_file(j, "q.mtx"),
                     Contains("a separate q file is only read with a Matrix Market (.mtx) or numpy (.npy) M"));
   CHECK_THROWS_WITH(cpkit::read_lcp_file(d, "q.mtx"), Contains("a separate q file"));
