@@ -16,6 +16,7 @@
 
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/lemke.hpp"
+#include "lcp/lcp_solution_check.hpp"
 
 namespace {
 
@@ -26,18 +27,7 @@ using cpkit::Vec;
 using cpkit::lcp::LemkeOptions;
 using cpkit::lcp::solve_lemke;
 
-// Componentwise check done here: z >= 0, w = M z + q >= 0 and min(z_i, w_i) = 0, each up to
-// rel times the size of the terms of row i, (|M| |z|)_i + |q_i| (unit-free: invariant under
-// q -> a q and (M, q) -> b (M, q)).
-bool is_solution_here(const Mat& M, const Vec& q, const Vec& z, double rel = 1e-9) {
-  const Vec w = M * z + q;
-  const Vec scale = M.cwiseAbs() * z.cwiseAbs() + q.cwiseAbs();
-  for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const double t = rel * scale[i];
-    if (z[i] < -t || w[i] < -t || std::min(z[i], w[i]) > t) return false;
-  }
-  return true;
-}
+using lcp_test::is_solution_here;
 
 // y >= 0, M^T y <= 0, q^T y < 0, evaluated here (the candidates below are exact small integers).
 bool is_certificate_here(const Mat& M, const Vec& q, const Vec& y) {

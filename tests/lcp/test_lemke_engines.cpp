@@ -17,6 +17,7 @@
 
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/lemke.hpp"
+#include "lcp/lcp_solution_check.hpp"
 
 namespace {
 
@@ -27,16 +28,7 @@ using cpkit::Vec;
 using cpkit::lcp::LemkeOptions;
 using cpkit::lcp::solve_lemke;
 
-// z >= 0, w = M z + q >= 0, min(z_i, w_i) = 0, each up to rel times (|M| |z| + |q|)_i.
-bool is_solution_here(const Mat& M, const Vec& q, const Vec& z, double rel = 1e-9) {
-  const Vec w = M * z + q;
-  const Vec scale = M.cwiseAbs() * z.cwiseAbs() + q.cwiseAbs();
-  for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const double t = rel * scale[i];
-    if (z[i] < -t || w[i] < -t || std::min(z[i], w[i]) > t) return false;
-  }
-  return true;
-}
+using lcp_test::is_solution_here;
 
 std::string lemke_data(const std::string& name) {
   return std::string(CPKIT_TEST_DATA_DIR) + "/lemke/" + name;
