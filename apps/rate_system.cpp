@@ -11,6 +11,8 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
 
@@ -89,6 +91,14 @@ int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
   if (!method || *method == rate::RateMethod::kAnalytic)
     throw InputError("--method with --system must be enumerate, lemke, fb-newton or ipopt, got '" +
                      method_name + "'");
+  // A limit that depends on N and the states, checked before the N^3 precomputation (a
+  // 1000-point system was refused only after minutes; issue 24, item 12).
+  if (const int m = rate::system_map_lcp_size(sys);
+      *method == rate::RateMethod::kEnumerate && m > lcp::kMaxEnumerationSize)
+    throw InputError(path + ": the rate LCP has size " + std::to_string(m) +
+                     " (3 per point in state b, 1 per point in state d); the complete "
+                     "enumeration takes at most " + std::to_string(lcp::kMaxEnumerationSize) +
+                     " (--method lemke, fb-newton or ipopt find one verified solution)");
   const rate::SystemRateSolutionSet s = rate::solve_rate_problem(sys, dF, *method);
   const bool single = *method != rate::RateMethod::kEnumerate;
   int code = s.solutions.empty() ? kExitNoSolution : kExitOk;

@@ -1,5 +1,6 @@
 // `cpkit rate --system FILE`: JSON layout, values from a hand case, exit codes on bad input.
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -114,4 +115,29 @@ TEST_CASE("cpkit rate/step/simulate --system: loads near 1e308 rescaled or refus
   CHECK(r.code == 1);
   CHECK(nlohmann::json::parse(r.out)["outcome"] == "numerical_failure");
   CHECK(r.out.find("not representable") != std::string::npos);
+}
+
+TEST_CASE("cpkit rate --system: a 1000-point enumeration is refused right after reading "
+          "(issue 24, item 12)", "[cli][rate][system]") {
+  // 1000 grazing points (state b), A = 2 I: the rate LCP has 3 * 1000 = 3000 variables (hand
+  // count), beyond the enumeration's 64. It used to run the N^3 precomputation for minutes.
+  const int N = 1000;
+  std::string a = "[", pts = "[", dF = "[";
+  for (int i = 0; i < 2 * N; ++i) {
+    a += std::string(i ? "," : "") + "[";
+    for (int j = 0; j < 2 * N; ++j) a += std::string(j ? "," : "") + (i == j ? "2" : "0");
+    a += "]";
+    dF += std::string(i ? "," : "") + (i % 2 ? "1" : "0.1");
+  }
+  for (int i = 0; i < N; ++i) pts += std::string(i ? "," : "") + R"({"state": "b", "mu": 0.5})";
+  const std::string f = write_system("thousand.json", R"({"A": )" + a + "], \"points\": " + pts +
+                                                          "], \"dF\": " + dF + "]}");
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = cpkit::test::run_cpkit("rate --system " + f);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.err.find("the rate LCP has size 3000") != std::string::npos);
+  CHECK(r.err.find("at most 64") != std::string::npos);
+  CHECK(s < 60);  // bound for a sanitizer build; reading the 8 MB file is most of it
 }
