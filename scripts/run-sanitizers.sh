@@ -10,15 +10,24 @@ build="${CPKIT_SANITIZER_BUILD_DIR:-$root/build-sanitize}"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+# -O1 -g1 (line tables), and no -DNDEBUG: assert() and Eigen's own checks (aliasing as in
+# A = A + A.transpose(), sizes, indices) run here, where the release build compiles them out.
+# -O1 -g1 compiles in half the time of RelWithDebInfo's -O2 -g (measured on system_step.cpp:
+# 56 s against 113 s, objects of 19 MB against 73 MB) and keeps file:line in every report.
 # The Python module is not built here: an ASan-instrumented extension cannot be loaded into
 # the uninstrumented /usr/bin/python3 (the ASan runtime must come first).
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCPKIT_BUILD_BENCH=OFF \
   -DCPKIT_BUILD_PYTHON=OFF \
-  "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" \
+  "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
+  "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" \
   "${launcher[@]}" "$@" >/dev/null
 cmake --build "$build" -j "$(nproc)"
 cd "$build"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# docs/simulation.md's flat-punch fretting run (55 s of CPU in Release, 4^7 active sets per step)
+# would take a quarter of an hour here; its code runs under the sanitizers in
+# rate_problem.test_system_simulation, and the Release suite runs the example itself.
+export CPKIT_DOCS_CHECK_SKIP="flat_punch_fretting.json"
 # The consumer test installs and rebuilds the package without sanitizers: run in the main suite.
 ctest --output-on-failure -j "$(nproc)" --timeout 1200 -E '^install\.'
