@@ -13,10 +13,9 @@ from .results import (Attempt, BatchResult, Certificate, CrossVerifyReport, Resi
 __all__ = ["solve", "solve_batch", "enumerate", "cross_verify", "solve_mcp", "solvers"]
 
 _INF = math.inf
-_F64 = np.dtype(np.float64)
-_NDARRAY = np.ndarray
 # The extension builds these result objects itself on the quick route of solve().
 _cpkit._set_result_classes(SolveResult, Residuals, Attempt, Certificate)
+_quick_solve = _cpkit.solve_dense_fast
 
 
 def _is_sparse(M) -> bool:
@@ -71,13 +70,11 @@ def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: flo
     default; time_limit in seconds. Outcomes are statuses; bad input raises ValueError/TypeError.
     """
     # Quick route (issue 27: a tiny LCP costs no more than Siconos' call): float64 numpy
-    # arrays go straight to the extension, which reads them in place and checks ranks, shapes
-    # and values with the messages of the general route.
-    if (type(M) is _NDARRAY and type(q) is _NDARRAY and M.dtype is _F64 and q.dtype is _F64
-            and type(tol) is float and type(tol_acceptable) is float
-            and type(max_iterations) is int and type(time_limit) is float):
-        return _cpkit.solve_dense_fast(M, q, solver, tol, tol_acceptable, max_iterations,
-                                       time_limit)
+    # arrays readable in place and plain option types are solved by the extension directly;
+    # anything else comes back as NotImplemented and takes the general route below.
+    r = _quick_solve(M, q, solver, tol, tol_acceptable, max_iterations, time_limit)
+    if r is not NotImplemented:
+        return r
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.solve_sparse if sparse else _cpkit.solve_dense
     return SolveResult._from(fn(M, q, solver, float(tol), float(tol_acceptable),

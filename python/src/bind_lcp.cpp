@@ -59,8 +59,6 @@ pyb::dict solve_problem(const LcpProblem& p, const std::string& solver, const Co
   return to_dict(solve_checked(p, solver, o));
 }
 
-using CArray = pyb::array_t<double, pyb::array::c_style | pyb::array::forcecast>;
-
 /// The data of `h` when it is an aligned, C-contiguous, native float64 ndarray of rank `nd`
 /// (read in place: no conversion object per call), else nullptr.
 const double* direct_data(pyb::handle h, int nd, pyb::ssize_t* shape) {
@@ -76,61 +74,36 @@ const double* direct_data(pyb::handle h, int nd, pyb::ssize_t* shape) {
   return reinterpret_cast<const double*>(a->data);
 }
 
-std::string shape_of(pyb::handle h) {
-  return pyb::str(h.attr("shape")).cast<std::string>();
-}
-
-/// The quick route of cpkit.solve for dense float64 arrays: the numpy data copied straight
-/// into the problem, the result object built directly (result_objects.hpp).
-pyb::object solve_dense_fast(pyb::handle M, pyb::handle q, const std::string& solver, double tol,
-                             double tol_acceptable, int max_iterations, double time_limit) {
-  pyb::ssize_t ms[2] = {0, 0}, qs[1] = {0};
-  pyb::object Mk, qk;  // conversions, only for arrays that cannot be read in place
-  const double* Md = direct_data(M, 2, ms);
-  const double* qd = direct_data(q, 1, qs);
-  if (Md == nullptr) {
-    CArray Mc = CArray::ensure(M);
-    Mk = Mc;
-    if (!Mc || Mc.ndim() != 2)
-      throw InputError("M must be a 2-D array, got shape " + shape_of(M));
-    Md = Mc.data();
-    ms[0] = Mc.shape(0);
-    ms[1] = Mc.shape(1);
-  }
-  if (qd == nullptr) {
-    CArray qc = CArray::ensure(q);
-    qk = qc;
-    if (!qc || qc.ndim() != 1)
-      throw InputError("q must be a 1-D array, got shape " + shape_of(q));
-    qd = qc.data();
-    qs[0] = qc.shape(0);
-  }
-  const CommonOptions o = common_options(tol, tol_acceptable, max_iterations, time_limit);
-  LcpProblem p;
-  p.M = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      Md, static_cast<Eigen::Index>(ms[0]), static_cast<Eigen::Index>(ms[1]));
-  p.q = Eigen::Map<const Vec>(qd, static_cast<Eigen::Index>(qs[0]));
-  return make_solve_result(solve_checked(p, solver, o));
-}
-
-/// solve_dense_fast as a METH_FASTCALL function: pybind11's general dispatcher costs about
-/// as much as the rest of a tiny call. Arguments: M, q, solver, tol, tol_acceptable,
-/// max_iterations, time_limit (the Python layer passes exactly these types).
+/// The quick route as a METH_FASTCALL function (pybind11's general dispatcher costs about as
+/// much as the rest of a tiny call): solve_dense_fast(M, q, solver, tol, tol_acceptable,
+/// max_iterations, time_limit) returns NotImplemented unless M and q are float64 ndarrays of
+/// ranks 2 and 1 readable in place, solver a str, tol, tol_acceptable and time_limit floats and
+/// max_iterations an int; cpkit.solve then takes its general route (same results, same errors).
 PyObject* solve_dense_fast_raw(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
   try {
     if (nargs != 7) throw InputError("solve_dense_fast takes 7 arguments");
+    pyb::ssize_t ms[2] = {0, 0}, qs[1] = {0};
+    const double* Md = direct_data(args[0], 2, ms);
+    const double* qd = direct_data(args[1], 1, qs);
+    if (Md == nullptr || qd == nullptr || !PyUnicode_CheckExact(args[2]) ||
+        !PyFloat_CheckExact(args[3]) || !PyFloat_CheckExact(args[4]) ||
+        !PyLong_CheckExact(args[5]) || !PyFloat_CheckExact(args[6]))
+      Py_RETURN_NOTIMPLEMENTED;
     Py_ssize_t len = 0;
     const char* name = PyUnicode_AsUTF8AndSize(args[2], &len);
     if (name == nullptr) throw pyb::error_already_set();
-    const double tol = PyFloat_AsDouble(args[3]);
-    const double tol_acceptable = PyFloat_AsDouble(args[4]);
     const long max_iterations = PyLong_AsLong(args[5]);
-    const double time_limit = PyFloat_AsDouble(args[6]);
-    if (PyErr_Occurred()) throw pyb::error_already_set();
-    if (max_iterations < 0 || max_iterations > 2147483647L)
-      throw InputError("max_iterations must be in [0, 2147483647]");
-    return solve_dense_fast(args[0], args[1], std::string(name, static_cast<std::size_t>(len)),
-                            tol, tol_acceptable, static_cast<int>(max_iterations), time_limit)
+    if (max_iterations == -1 && PyErr_Occurred()) throw pyb::error_already_set();
+    if (max_iterations < 0 || max_iterations > 2147483647L) Py_RETURN_NOTIMPLEMENTED;
+    const CommonOptions o =
+        common_options(PyFloat_AS_DOUBLE(args[3]), PyFloat_AS_DOUBLE(args[4]),
+                       static_cast<int>(max_iterations), PyFloat_AS_DOUBLE(args[6]));
+    LcpProblem p;
+    p.M = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        Md, static_cast<Eigen::Index>(ms[0]), static_cast<Eigen::Index>(ms[1]));
+    p.q = Eigen::Map<const Vec>(qd, static_cast<Eigen::Index>(qs[0]));
+    return make_solve_result(
+               solve_checked(p, std::string(name, static_cast<std::size_t>(len)), o))
         .release()
         .ptr();
   } catch (pyb::error_already_set& e) {
@@ -148,7 +121,8 @@ PyObject* solve_dense_fast_raw(PyObject*, PyObject* const* args, Py_ssize_t narg
 PyMethodDef kFastMethods[] = {
     {"solve_dense_fast", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&solve_dense_fast_raw)),
      METH_FASTCALL, "solve_dense_fast(M, q, solver, tol, tol_acceptable, max_iterations, "
-                    "time_limit) -> cpkit.SolveResult (the quick route of cpkit.solve)"},
+                    "time_limit) -> cpkit.SolveResult, or NotImplemented when the arguments "
+                    "need the general route (the quick route of cpkit.solve)"},
     {nullptr, nullptr, 0, nullptr}};
 
 LcpProblem dense_problem(const Mat& M, const Vec& q) { return LcpProblem(M, q); }
