@@ -1,6 +1,7 @@
 // LCP bindings: solve (any registered solver, "auto" included), enumerate, cross_verify.
 // Dense M arrives as an Eigen matrix, sparse M (scipy.sparse, converted to CSC by the Python
 // layer) as an Eigen sparse matrix; the C++ validators name every bad input (ValueError).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,7 +99,12 @@ PyObject* solve_dense_fast_raw(PyObject*, PyObject* const* args, Py_ssize_t narg
     const CommonOptions o =
         common_options(PyFloat_AS_DOUBLE(args[3]), PyFloat_AS_DOUBLE(args[4]),
                        static_cast<int>(max_iterations), PyFloat_AS_DOUBLE(args[6]));
-    LcpProblem p;
+    // Small problems: one problem object per thread, its storage reused from call to call
+    // (the GIL is released during the solve, so other threads need their own); a large one is
+    // not kept alive after its call.
+    thread_local LcpProblem small;
+    std::optional<LcpProblem> large;
+    LcpProblem& p = ms[0] <= 64 && ms[1] <= 64 ? small : large.emplace();
     p.M = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
         Md, static_cast<Eigen::Index>(ms[0]), static_cast<Eigen::Index>(ms[1]));
     p.q = Eigen::Map<const Vec>(qd, static_cast<Eigen::Index>(qs[0]));

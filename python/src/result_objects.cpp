@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 
 #include "cpkit/core/status.hpp"
@@ -56,7 +57,9 @@ PyObject* status_name(Status s) {
 /// their hashes are cached), then given to the instance as its __dict__.
 class Fields {
  public:
-  explicit Fields(Py_ssize_t n) : d_(_PyDict_NewPresized(n)) {
+  /// Starts from a copy of `keys` (every field once, values None): a copy of a dict without
+  /// deleted entries is one block copy, and each put then replaces a value in place.
+  explicit Fields(PyObject* keys) : d_(PyDict_Copy(keys)) {
     if (d_ == nullptr) throw pyb::error_already_set();
   }
   ~Fields() { Py_XDECREF(d_); }
@@ -86,6 +89,13 @@ class Fields {
  private:
   PyObject* d_;
 };
+
+/// A dict holding `keys` (values None), made once: the template of a result object's fields.
+PyObject* key_template(std::initializer_list<Key> keys) {
+  PyObject* d = PyDict_New();
+  for (Key k : keys) PyDict_SetItem(d, key(k), Py_None);
+  return d;
+}
 
 /// A new float64 numpy vector holding v (the numpy C API directly: no shape containers).
 PyObject* numpy_vector(const Vec& v) {
@@ -124,13 +134,21 @@ void set_result_classes(pyb::object solve_result, pyb::object residuals, pyb::ob
 pyb::object make_solve_result(const SolveResult& r) {
   const Classes& c = classes();
   if (!c.solve_result) return to_dict(r);
-  Fields d(14);
+  static PyObject* const result_keys = key_template(
+      {kStatus, kSolver, kZ, kW, kResiduals, kIterations, kFunctionEvals, kJacobianEvals,
+       kSeconds, kCertificate, kRay, kBasis, kAttempts, kMessage});
+  static PyObject* const residual_keys =
+      key_template({kNatural, kNaturalAbs, kComplementarity, kMinZ, kMinW, kWorstIndex, kScale,
+                    kZScale, kRounding, kFinite});
+  static PyObject* const attempt_keys =
+      key_template({kSolver, kStatus, kResidual, kSeconds, kMessage});
+  Fields d(result_keys);
   d.put(kStatus, new_ref(status_name(r.status)));
   d.put(kSolver, text(r.solver));
   d.put(kZ, numpy_vector(r.z));
   d.put(kW, numpy_vector(r.w));
   {
-    Fields rd(10);
+    Fields rd(residual_keys);
     const Residuals& x = r.residuals;
     rd.put(kNatural, PyFloat_FromDouble(x.natural));
     rd.put(kNaturalAbs, PyFloat_FromDouble(x.natural_abs));
@@ -165,7 +183,7 @@ pyb::object make_solve_result(const SolveResult& r) {
   d.put(kAttempts, new_ref(attempts));  // filled below (the dict holds one reference)
   for (std::size_t i = 0; i < r.attempts.size(); ++i) {
     const Attempt& a = r.attempts[i];
-    Fields ad(5);
+    Fields ad(attempt_keys);
     ad.put(kSolver, text(a.solver));
     ad.put(kStatus, new_ref(status_name(a.status)));
     ad.put(kResidual, PyFloat_FromDouble(a.residual));
