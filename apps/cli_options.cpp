@@ -73,6 +73,8 @@ CLI::Validator decimal_integer(long long lo, long long hi) {
 void check_options_of(CLI::App& app) {
   for (CLI::Option* opt : app.get_options()) {
     if (opt->get_type_size_max() == 0) continue;  // a flag
+    // An empty list is no default: --help shows none (and the run echo omits the option).
+    if (opt->get_default_str() == "[]") opt->default_str("");
     const std::string type = opt->get_type_name();
     if (type == "FLOAT") {
       opt->check(CLI::Validator(finite_number, "", "finite number"));
@@ -145,9 +147,11 @@ std::string check_command_words(const CLI::App& app, const std::vector<std::stri
     if (t == "--") break;  // the rest are values
     if (is_long_option(t)) {
       const std::string name = t.substr(0, t.find('='));
+      // --DF is the accepted alias of --dF (main.cpp rewrites it before parsing).
+      const std::string lookup = name == "--DF" ? std::string("--dF") : name;
       bool known = false;
       for (const CLI::App* a = cur; a != nullptr && !known; a = a->get_parent())
-        known = a->get_option_no_throw(name) != nullptr || (a == cur && name == "--help");
+        known = a->get_option_no_throw(lookup) != nullptr || (a == cur && name == "--help");
       if (!known)
         return "unknown option " + name + " for '" + command_path(cur) + "' (see '" +
                command_path(cur) + " --help')";

@@ -206,7 +206,8 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
                   "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");
   cmd->add_option("--max-iter", args->max_iter,
                   "iteration/pivot limit (0: the solver's documented default)");
-  cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds");
+  cmd->add_option("--time-limit", args->time_limit_s, "wall-clock limit in seconds (default: none)")
+      ->default_str("");
   cmd->add_flag("--trace", args->trace, "record and print the per-iteration (pivot) trace");
   cmd->add_flag("--all-solvers", args->all_solvers,
                 "run every registered solver and print the outcomes side by side (JSON: one "

@@ -37,7 +37,19 @@ int run(int argc, char** argv) {
       return kExitBadInput;
     }
     remember_command_line(app, std::vector<std::string>(argv + 1, argv + argc));
-    app.parse(argc, argv);
+    // One spelling of the load increment, --dF (rate, step); --DF stays an accepted alias so
+    // that scripts written for `cpkit step --DF` keep working (issue 27).
+    std::vector<std::string> words(argv, argv + argc);
+    std::vector<char*> word_ptrs;
+    for (std::size_t k = 0; k < words.size(); ++k) {
+      std::string& w = words[k];
+      if (k > 0 && (w == "--DF" || w.rfind("--DF=", 0) == 0)) w.replace(0, 4, "--dF");
+      word_ptrs.push_back(w.data());
+      if (w == "--") {  // the rest are values
+        for (++k; k < words.size(); ++k) word_ptrs.push_back(words[k].data());
+      }
+    }
+    app.parse(argc, word_ptrs.data());
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

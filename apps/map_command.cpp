@@ -51,14 +51,17 @@ struct MapArgs {
   std::string system;  // --system FILE: the N-point direction map (map_system.cpp)
   std::string format = "npy";
   double time_limit = 600;  // seconds of cells the estimate may reach (--time-limit)
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 0, P_N = 0;
+  // The defaults shown by --help are the values used (a test compares them with the run echo);
+  // options whose default depends on the map (--n, --theta-to, ...) show none.
+  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 1, P_N = 0;
   int sgnPT = 1;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
-  int n = 0, n2 = 0, theta_n = 0, threads = 0;
+  int n = 0, n2 = 0, theta_n = 360, threads = 0;
+  std::string max_output = "4G";  // --max-output SIZE (byte_size.hpp)
   bool plot = false, json = false, list_presets = false, resume = false;
   // 3-D systems only (map_system_3d.cpp): --facets K, --point i, --others zero|file, --gamma G
   int facets = 0, point = 1;
-  std::string others = "zero";
+  std::string others;  // --others: zero or file (default: file when the file has dF)
   double gamma = 0;
   // Which options were given (CLI11 Option pointers).
   std::map<std::string, CLI::Option*> opt;
@@ -137,10 +140,16 @@ void check_options_have_effect(const MapArgs& a, const MapSetup& s) {
     none_of({"--param2", "--from2", "--to2", "--n2"},
             "in a param-direction map (one parameter axis; use --kind param-param)");
   const StateLabel st = s.state.label;
-  if (st == StateLabel::kA || st == StateLabel::kB)
-    none_of({"--P_N", "--k_a", "--P_s"},
-            std::string("in state ") + std::string(to_string(st)) +
-                " (P_N = 0 there: the normal force and wear enter only states c and d)");
+  if (st == StateLabel::kA || st == StateLabel::kB) {
+    none_of({"--P_N"}, std::string("in state ") + std::string(to_string(st)) +
+                           " (P_N = 0 there: the normal force enters only states c and d)");
+    // Material parameters a user describes once and sweeps over states: accepted and echoed.
+    for (const char* o : {"--k_a", "--P_s"})
+      if (a.given(o) && mpi::rank() == 0)
+        std::cerr << "cpkit map: note: " << o << " does not enter state " << to_string(st)
+                  << " (P_N = 0 there, so no wear: kappa = k_a P_N / (3 P_s) enters states c "
+                     "and d); accepted and echoed in the model\n";
+  }
   if (st != StateLabel::kD) none_of({"--sgnPT"}, "outside state d (the sliding state)");
 }
 
@@ -423,7 +432,7 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
 
 /// Refuses (exit 2) a grid map that cannot fit this machine's memory or the output's disk.
 void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string& out_dir,
-                     bool csv, double time_limit) {
+                     bool csv, double time_limit, double max_output) {
   // Rank 0 decides for the job (an estimate differs between ranks); if it refuses, mpirun
   // ends the others.
   if (mpi::rank() != 0) return;
@@ -444,6 +453,12 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
   if (e.memory > limit)
     throw InputError("the map has " + cells + " and would need about " + byte_text(e.memory) +
                      " of memory; " + byte_text(limit) + " is available: " + fewer);
+  if (e.output > max_output)
+    throw InputError("the map has " + cells + " and its output would take about " +
+                     byte_text(e.output) + " (estimated), more than --max-output " +
+                     byte_text(max_output) + ": " + fewer +
+                     (csv ? ", drop --format csv (the .npy output takes 1-5 bytes per cell)" : "") +
+                     ", or raise --max-output");
   if (e.output > 0) {
     const double free = free_disk_bytes(out_dir);
     if (free >= 0 && e.output > 0.95 * free)
@@ -484,6 +499,7 @@ int run_map(const MapArgs& a) {
     r.theta_to = a.theta_to;
     r.gamma = a.gamma;
     r.time_limit = a.time_limit;
+    r.max_output = parse_byte_size(a.max_output, "--max-output");
     r.n = a.n;
     r.n2 = a.n2;
     r.theta_n = a.theta_n;
@@ -501,6 +517,7 @@ int run_map(const MapArgs& a) {
   if (a.given("--system")) {
     const std::string kind = a.given("--kind") ? a.kind : "direction";
     std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
+    const double max_output = parse_byte_size(a.max_output, "--max-output");
     std::vector<std::string> needed;
     if (kind == "param-direction")
       needed = {"--param", "--from", "--to"};
@@ -511,7 +528,8 @@ int run_map(const MapArgs& a) {
                        "got '" + kind + "'");
     allowed.insert(allowed.end(), needed.begin(), needed.end());
     if (kind != "direction")
-      for (const char* o : {"--n", "--format", "--time-limit", "--resume"}) allowed.push_back(o);
+      for (const char* o : {"--n", "--format", "--time-limit", "--max-output", "--resume"})
+        allowed.push_back(o);
     if (kind == "param-direction")
       for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
     if (kind == "param-param") allowed.push_back("--n2");
@@ -552,6 +570,7 @@ int run_map(const MapArgs& a) {
     r.format = a.format;
     r.threads = a.threads;
     r.time_limit = a.time_limit;
+    r.max_output = max_output;
     r.param = a.param;
     r.from = a.from;
     r.to = a.to;
@@ -569,6 +588,7 @@ int run_map(const MapArgs& a) {
     return run_map_system(r);
   }
   const MapSetup s = build_setup(a);
+  const double max_output = parse_byte_size(a.max_output, "--max-output");
   if (s.kind == MapKind::kDirection && mpi::size() > 1)
     throw InputError("a direction map is one exact computation, not a grid of cells: run it "
                      "without mpirun");
@@ -645,7 +665,7 @@ int run_map(const MapArgs& a) {
     GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
     est.seconds /= mpi::size();  // the ranks share the cells
     check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv,
-                    a.time_limit);
+                    a.time_limit, max_output);
     // Every grid value next (cheaper than a cell; after the refusals, which need no pass over
     // the grid): the first invalid one is named before any cell is computed, whichever rank
     // or chunk would meet it first.
@@ -990,37 +1010,46 @@ void add_map_command(CLI::App& app, Context& ctx) {
   cmd->add_flag("--list-presets", args->list_presets, "list the presets and exit");
   o["--kind"] = cmd->add_option("--kind", args->kind, "direction | param-direction | param-param | sphere (3-D systems)");
   o["--state"] = cmd->add_option("--state", args->state, "contact state a|b|c|d (default b)");
-  o["--a11"] = cmd->add_option("--a11", args->a11, "stiffness a11");
-  o["--a12"] = cmd->add_option("--a12", args->a12, "stiffness a12");
-  o["--a22"] = cmd->add_option("--a22", args->a22, "stiffness a22");
-  o["--mu"] = cmd->add_option("--mu", args->mu, "friction coefficient");
-  o["--C_T"] = cmd->add_option("--C_T", args->C_T, "tangential compliance");
-  o["--k_a"] = cmd->add_option("--k_a", args->k_a, "Archard wear coefficient");
-  o["--P_s"] = cmd->add_option("--P_s", args->P_s, "hardness");
-  o["--P_N"] = cmd->add_option("--P_N", args->P_N, "normal force (states c, d)");
+  o["--a11"] = cmd->add_option("--a11", args->a11, "stiffness a11 (or the preset's)")->default_str("");
+  o["--a12"] = cmd->add_option("--a12", args->a12, "stiffness a12 (or the preset's)")->default_str("");
+  o["--a22"] = cmd->add_option("--a22", args->a22, "stiffness a22 (or the preset's)")->default_str("");
+  o["--mu"] = cmd->add_option("--mu", args->mu, "friction coefficient (or the preset's)")
+                   ->default_str("");
+  o["--C_T"] = cmd->add_option("--C_T", args->C_T, "tangential compliance (with --preset: the preset's)");
+  o["--k_a"] = cmd->add_option("--k_a", args->k_a, "Archard wear coefficient (with --preset: the preset's)");
+  o["--P_s"] = cmd->add_option("--P_s", args->P_s, "hardness (with --preset: the preset's)");
+  o["--P_N"] = cmd->add_option("--P_N", args->P_N, "normal force (states c, d; with --preset: the preset's)")
+                    ->default_str("");
   o["--sgnPT"] = cmd->add_option("--sgnPT", args->sgnPT, "sign of P_T in state d (+1/-1)");
   o["--criterion"] = cmd->add_option("--criterion", args->criterion,
                                      "friction-and-wear criterion: 38 (Coulomb, default) or 35 "
                                      "(softening; state d uses mu_eff = mu - 2 kappa)");
   o["--param"] = cmd->add_option("--param", args->param,
                                  "first axis: mu, a11, a12, a22, a12/a11, C_T, k_a, P_s, P_N, kappa");
-  o["--from"] = cmd->add_option("--from", args->from, "first axis start");
-  o["--to"] = cmd->add_option("--to", args->to, "first axis end");
-  o["--n"] = cmd->add_option("--n", args->n, "first axis values (default 200)");
+  o["--from"] = cmd->add_option("--from", args->from, "first axis start")->default_str("");
+  o["--to"] = cmd->add_option("--to", args->to, "first axis end")->default_str("");
+  o["--n"] = cmd->add_option("--n", args->n,
+                             "first axis values (default 200, with --preset the preset's; "
+                             "--system: 100; 3-D --kind sphere: 91 elevations)")
+                 ->default_str("");
   o["--param2"] = cmd->add_option("--param2", args->param2, "second axis (param-param)");
-  o["--from2"] = cmd->add_option("--from2", args->from2, "second axis start");
-  o["--to2"] = cmd->add_option("--to2", args->to2, "second axis end");
-  o["--n2"] = cmd->add_option("--n2", args->n2, "second axis values (default 200)");
+  o["--from2"] = cmd->add_option("--from2", args->from2, "second axis start")->default_str("");
+  o["--to2"] = cmd->add_option("--to2", args->to2, "second axis end")->default_str("");
+  o["--n2"] = cmd->add_option("--n2", args->n2,
+                              "second axis values (default 200, with --preset the preset's; "
+                              "--system: 100; 3-D --kind sphere: 180 azimuths)")
+                  ->default_str("");
   o["--theta-n"] = cmd->add_option("--theta-n", args->theta_n,
-                                   "directions of a param-direction map (default 360; "
-                                   "rejected for the other kinds)");
+                                   "directions of a param-direction map (rejected for the "
+                                   "other kinds)");
   o["--theta-from"] = cmd->add_option("--theta-from", args->theta_from,
-                                      "param-direction: first direction sampled, rad (default 0)");
+                                      "param-direction: first direction sampled, rad");
   o["--theta-to"] = cmd->add_option("--theta-to", args->theta_to,
                                     "param-direction: last direction sampled, rad (default 2 pi; "
-                                    "at most --theta-from + 2 pi)");
+                                    "at most --theta-from + 2 pi)")
+                        ->default_str("");
   o["--method"] = cmd->add_option("--method", args->method,
-                                  "enumerate (default) | analytic (also cross-checks with enumerate)");
+                                  "enumerate | analytic (also cross-checks with enumerate)");
   o["--threads"] = cmd->add_option("--threads", args->threads, "worker threads (0: all cores)");
   o["--out"] = cmd->add_option("--out", args->out,
                                "write PREFIX.json and the cells: grid maps PREFIX_<array>.npy "
@@ -1029,9 +1058,14 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--time-limit"] = cmd->add_option(
       "--time-limit", args->time_limit,
       "grid maps: refuse up front when the estimated time of the cells exceeds this many "
-      "seconds (default 600)");
+      "seconds");
+  o["--max-output"] = cmd->add_option(
+      "--max-output", args->max_output,
+      "grid maps written with --out: refuse up front when the estimated output exceeds SIZE "
+      "bytes (suffix K, M, G, T: powers of 1024; e.g. 500M, 10G)")
+                             ->type_name("SIZE");
   o["--format"] = cmd->add_option("--format", args->format,
-                                  "cells of a grid map: npy (default; numpy arrays of codes + axis "
+                                  "cells of a grid map: npy (numpy arrays of codes + axis "
                                   "vectors) | csv (one line per cell)");
   o["--system"] = cmd->add_option("--system", args->system,
                                   "N-point system file (docs/file_formats.md): maps of "
@@ -1040,16 +1074,18 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                   "coupling or mu@i, ...");
   o["--facets"] = cmd->add_option("--facets", args->facets,
                                   "3-D systems: the faceted route with K facets (3..64; required "
-                                  "for N > 1 points; default for one point: exact)");
+                                  "for N > 1 points; default for one point: exact)")
+                        ->default_str("");
   o["--point"] = cmd->add_option("--point", args->point,
                                  "3-D systems: the loaded point of --kind sphere/param-direction "
-                                 "and the point whose types are mapped (1..N, default 1)");
+                                 "and the point whose types are mapped (1..N)");
   o["--others"] = cmd->add_option("--others", args->others,
                                   "3-D systems, N > 1: the other points' load rates, zero "
-                                  "or file (the file's dF; the default when it has one)");
+                                  "or file (the file's dF; default: file when the file has a "
+                                  "dF, else zero)");
   o["--gamma"] = cmd->add_option("--gamma", args->gamma,
                                  "3-D param-direction: azimuth G of the meridian plane of load "
-                                 "directions, dF = (cos t cos G, cos t sin G, sin t) (default 0)");
+                                 "directions, dF = (cos t cos G, cos t sin G, sin t)");
   cmd->add_flag("--plot", args->plot, "also draw PREFIX.png and PREFIX.svg (needs --out, matplotlib)");
   cmd->add_flag("--json", args->json, "print the JSON summary on stdout");
   o["--resume"] = cmd->add_flag("--resume", args->resume,

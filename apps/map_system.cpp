@@ -26,6 +26,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
+#include "memory_limit.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
 
@@ -100,6 +101,11 @@ nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest
     // The finished chunks are kept in PREFIX.parts until the outputs are complete: twice.
     const double output = 2 * e.cells * (r.format == "csv" ? 45.0 : npy_bytes_per_cell);
     const std::string dir = std::filesystem::path(r.out).parent_path().string();
+    if (output > r.max_output)
+      throw InputError("the map has " + cells + " and its output would take about " +
+                       byte_text(output) + " (estimated), more than --max-output " +
+                       byte_text(r.max_output) + ": " + fewer +
+                       (r.format == "csv" ? ", drop --format csv" : "") + ", or raise --max-output");
     const double free = free_disk_bytes(dir);
     if (free >= 0 && output > 0.95 * free)
       throw InputError("the map has " + cells + " and its output would take about " +

@@ -19,6 +19,7 @@ struct SystemMapRequest {
   bool theta_range = false;                     ///< --theta-from/--theta-to given
   double theta_from = 0, theta_to = 6.283185307179586;
   double time_limit = 600;                      ///< --time-limit (grid maps)
+  double max_output = 4.0 * 1024 * 1024 * 1024;  ///< --max-output in bytes (grid maps, --out)
 };
 
 /// Runs the map; returns the exit code (0; 5 when not proved complete; 4 when a requested

@@ -60,7 +60,7 @@ std::string count_text(int count) {
 /// Options that apply to a kind; every other option given is refused (no silent defaults).
 std::vector<std::string> allowed_options(const std::string& kind) {
   std::vector<std::string> a = {"--system", "--kind",   "--out",   "--threads",
-                                "--time-limit", "--facets", "--point", "--format"};
+                                "--time-limit", "--max-output", "--facets", "--point", "--format"};
   const std::vector<std::string> extra =
       kind == "sphere"
           ? std::vector<std::string>{"--n", "--n2", "--from", "--to", "--others"}
@@ -326,6 +326,10 @@ int run_map_system_3d(const Map3dRequest& r) {
                                                       : p.a1.n + p.a2.n;
     const double output = 3.0 * static_cast<double>(cells) + 8.0 * axes + 5 * 4096;
     const std::string dir = fs::path(r.out).parent_path().string();
+    if (output > r.max_output)
+      throw InputError("the map has " + cells_text + " and its output would take about " +
+                       byte_text(output) + " (estimated), more than --max-output " +
+                       byte_text(r.max_output) + ": " + fewer + ", or raise --max-output");
     const double free = free_disk_bytes(dir);
     if (free >= 0 && output > 0.95 * free)
       throw InputError("the map has " + cells_text + " and its output would take about " +

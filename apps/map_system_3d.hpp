@@ -16,6 +16,7 @@ struct Map3dRequest {
   bool json = false, plot = false;
   double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0, gamma = 0;
   double time_limit = 600;
+  double max_output = 4.0 * 1024 * 1024 * 1024;  ///< --max-output in bytes (written outputs)
   int n = 0, n2 = 0, theta_n = 0, threads = 0, facets = 0, point = 1;
   std::string format;
   std::vector<std::string> given;  ///< the options given (names as "--n")

@@ -5,15 +5,16 @@
 namespace cpkit::cli {
 
 void add_model_options(CLI::App& cmd, ModelArgs& m) {
-  cmd.add_option("--a11", m.a11, "stiffness A11")->required();
-  cmd.add_option("--a12", m.a12, "stiffness A12")->required();
-  cmd.add_option("--a22", m.a22, "stiffness A22")->required();
-  cmd.add_option("--mu", m.mu, "friction coefficient (> 0)")->required();
-  cmd.add_option("--C_T", m.C_T, "tangential compliance (>= 0; default 0)");
-  cmd.add_option("--k_a", m.k_a, "Archard wear coefficient (>= 0; default 0)");
-  cmd.add_option("--P_s", m.P_s, "hardness (> 0; default 1)");
+  // Required values have no default to show (--help shows only defaults that are used).
+  cmd.add_option("--a11", m.a11, "stiffness A11")->required()->default_str("");
+  cmd.add_option("--a12", m.a12, "stiffness A12")->required()->default_str("");
+  cmd.add_option("--a22", m.a22, "stiffness A22")->required()->default_str("");
+  cmd.add_option("--mu", m.mu, "friction coefficient (> 0)")->required()->default_str("");
+  cmd.add_option("--C_T", m.C_T, "tangential compliance (>= 0)");
+  cmd.add_option("--k_a", m.k_a, "Archard wear coefficient (>= 0)");
+  cmd.add_option("--P_s", m.P_s, "hardness (> 0)");
   cmd.add_option("--criterion", m.criterion,
-                 "friction-and-wear criterion: 38 (Coulomb, default) or 35 (softening)");
+                 "friction-and-wear criterion: 38 (Coulomb) or 35 (softening)");
 }
 
 rate::ContactParameters model_parameters(const ModelArgs& m) {

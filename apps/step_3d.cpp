@@ -1,9 +1,9 @@
-// `cpkit step --system FILE --DF X Y N` with a "dim": 3 file: one implicit step of a 3-D contact
+// `cpkit step --system FILE --dF X Y N` with a "dim": 3 file: one implicit step of a 3-D contact
 // point with the elliptic friction-and-wear law (docs/contact_3d.md, "Solvers of the 3-D step");
 // with N > 1 points the coupled step by FB-SOC Newton (--chain fb-soc, default) or --multistart
 // (system_step_3d.hpp; --all and --facets are refused: no complete enumeration).
 //
-//   cpkit step --system FILE --DF DFX DFY DFN [--g0 G (state a)] [--wear-law archard|mroz --k_M X]
+//   cpkit step --system FILE --dF DFX DFY DFN [--g0 G (state a)] [--wear-law archard|mroz --k_M X]
 //              [--all | --chain exact,fb-soc,ipopt | --facets K | --multistart N] [--json]
 //
 // The start state is the file's point: state a (open: P = 0, --g0 < 0 required), b (grazing:
@@ -86,7 +86,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     throw InputError("--chain '" + a.chain + "': for " + std::to_string(N) + " coupled 3-D points "
                      "the only link is fb-soc (exact and ipopt are one-point solvers)");
   if (a.DF.size() != static_cast<std::size_t>(3 * N))
-    throw InputError("--DF needs 3N = " + std::to_string(3 * N) + " numbers for " +
+    throw InputError("--dF needs 3N = " + std::to_string(3 * N) + " numbers for " +
                      std::to_string(N) + " 3-D points (DF_TX DF_TY DF_N per point), got " +
                      std::to_string(a.DF.size()));
   rate3d::SystemStep3dProblem p;
@@ -226,7 +226,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     throw InputError("--all, --chain, --facets and --multistart are alternative modes: give at "
                      "most one");
   if (a.DF.size() != 3)
-    throw InputError("--DF needs 3 numbers for a 3-D point (DF_TX DF_TY DF_N), got " +
+    throw InputError("--dF needs 3 numbers for a 3-D point (DF_TX DF_TY DF_N), got " +
                      std::to_string(a.DF.size()));
   rate3d::Step3dProblem p;
   p.params = sys.point_parameters(0);

@@ -2,10 +2,10 @@
 // problem, docs/model.md Sec. 3, docs/simulation.md).
 //
 //   cpkit step --a11 X --a12 X --a22 X --mu X [--C_T X] [--k_a X --P_s X] [--criterion 38|35]
-//              [--wear-law archard|mroz --k_M X] --P_T0 X --P_N0 X --g0 X --DF DFT DFN
+//              [--wear-law archard|mroz --k_M X] --P_T0 X --P_N0 X --g0 X --dF DFT DFN
 //              [--all] [--chain active-set,lemke,fb-newton,ipopt] [--json]
-//   cpkit step --system FILE --DF <2N numbers> --all [--json]      (N points, system_step.hpp)
-//   cpkit step --system FILE3D --DF X Y N [--all|--chain|--facets K|--multistart N]
+//   cpkit step --system FILE --dF <2N numbers> --all [--json]      (N points, system_step.hpp)
+//   cpkit step --system FILE3D --dF X Y N [--all|--chain|--facets K|--multistart N]
 //                                        ("dim": 3, one point: step_3d.cpp)
 //
 // --all: every solution (complete active-set enumeration; continua as segments/rays, jumps
@@ -83,7 +83,7 @@ rate::StepProblem make_problem(const StepArgs& a) {
   p.wear.law = *law;
   p.wear.k_M = a.k_M;
   p.state = {a.P_T0, a.P_N0, a.g0};
-  if (a.DF.size() != 2) throw InputError("--DF needs two values: DFT DFN");
+  if (a.DF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
   p.load = {a.DF[0], a.DF[1]};
   throw_if_invalid(p.validate(), "step");
   return p;
@@ -176,6 +176,14 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
   }
   const rate::StepSolveResult r = rate::solve_step(p, o);
   const bool ok = is_solution(r.result.status);
+  // The active-set link picked one point out of an exact enumeration: say out of how many
+  // (the same enumeration as --all, so that "--all lists them" holds; issue 27).
+  std::optional<rate::StepSolutionSet> all;
+  if (ok && r.result.solver == "active-set") all = rate::enumerate_step(p);
+  const std::string found_text =
+      !all ? std::string()
+           : all->count() < 0 ? std::string("infinitely many")
+                              : std::to_string(all->count());
   if (json) {
     nlohmann::json j;
     j["status"] = std::string(to_string(r.result.status));
@@ -191,6 +199,11 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
                     {"residual", a.residual}, {"seconds", a.seconds}, {"message", a.message}});
     j["attempts"] = at;
     j["message"] = r.result.message;
+    if (all) {
+      if (all->count() < 0) j["solutions_found"] = "inf"; else j["solutions_found"] = all->count();
+      j["listed"] = 1;
+      j["enumeration_complete"] = all->complete;
+    }
     print_json(j);
   } else {
     std::cout << "status: " << to_string(r.result.status) << " (solver " << r.result.solver
@@ -198,6 +211,10 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
     if (ok)
       std::cout << "  " << rate::to_string(r.type) << ": " << values_text(r.values) << "\n";
     if (!r.result.message.empty()) std::cout << "note: " << r.result.message << "\n";
+    if (all)
+      std::cout << "1 of " << found_text << (all->count() == 1 ? " solution" : " solutions")
+                << (all->complete ? "" : " found (the enumeration is NOT proved complete)")
+                << (all->count() == 1 ? "" : "; --all lists them") << "\n";
   }
   return ok ? kExitOk : kExitNoSolution;
 }
@@ -217,7 +234,7 @@ int run_system(const StepArgs& a, const CLI::App& cmd, const rate::SystemFile& f
   p.system = rate::parse_contact_system(file);
   const int N = p.system.n_points();
   if (static_cast<int>(a.DF.size()) != 2 * N)
-    throw InputError("--DF needs " + std::to_string(2 * N) + " numbers (DF_T, DF_N per point, " +
+    throw InputError("--dF needs " + std::to_string(2 * N) + " numbers (DF_T, DF_N per point, " +
                      std::to_string(N) + " points), got " + std::to_string(a.DF.size()));
   p.DF = Eigen::Map<const Eigen::VectorXd>(a.DF.data(), static_cast<Eigen::Index>(a.DF.size()));
   throw_if_invalid(p.validate(), "step");
@@ -292,25 +309,30 @@ void add_step_command(CLI::App& app, Context& ctx) {
   // With --system the file gives the model: the one-point options are checked in the callback.
   for (const char* o : {"--a11", "--a12", "--a22", "--mu"}) cmd->get_option(o)->required(false);
   cmd->add_option("--system", args->system,
-                  "N-point system file (JSON, docs/file_formats.md); needs --all and 2N --DF values");
+                  "N-point system file (JSON, docs/file_formats.md); needs --all and 2N --dF values");
   cmd->add_option("--wear-law", args->wear_law,
-                  "archard (37, default) or mroz (Mroz-Stupkiewicz (41), with --k_M)");
-  cmd->add_option("--k_M", args->k_M, "Mroz-Stupkiewicz wear constant (>= 0)");
-  cmd->add_option("--P_T0", args->P_T0, "tangential force at the start of the step");
-  cmd->add_option("--P_N0", args->P_N0, "normal force at the start (>= 0)");
-  cmd->add_option("--g0", args->g0, "gap function w_N - w^w at the start (<= 0; 0 in contact)");
-  cmd->add_option("--DF", args->DF, "load increment: DFT DFN (2N values with --system)")
+                  "archard (37) or mroz (Mroz-Stupkiewicz (41), with --k_M)");
+  cmd->add_option("--k_M", args->k_M, "Mroz-Stupkiewicz wear constant (>= 0)")->default_str("");
+  cmd->add_option("--P_T0", args->P_T0, "tangential force at the start of the step")
+      ->default_str("");
+  cmd->add_option("--P_N0", args->P_N0, "normal force at the start (>= 0)")->default_str("");
+  cmd->add_option("--g0", args->g0, "gap function w_N - w^w at the start (<= 0; 0 in contact)")
+      ->default_str("");
+  cmd->add_option("--dF", args->DF,
+                  "load increment: DFT DFN (2N values with --system); --DF is accepted too")
       ->expected(1, 1 << 20)
       ->required();
   cmd->add_flag("--all", args->all, "every solution (complete active-set enumeration)");
   cmd->add_option("--chain", args->chain,
-                  "solver chain for one solution (comma-separated; default "
-                  "active-set,lemke,fb-newton,ipopt)");
+                  "solver chain for one solution (comma-separated; a 3-D file has its own "
+                  "chains, docs/contact_3d.md)");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->add_option("--facets", args->facets,
-                  "3-D file: every solution of the faceted step with K facets (no wear)");
+                  "3-D file: every solution of the faceted step with K facets (no wear)")
+      ->default_str("");
   cmd->add_option("--multistart", args->multistart,
-                  "3-D file: distinct verified solutions from N + 1 starts (FB-SOC, Ipopt)");
+                  "3-D file: distinct verified solutions from N + 1 starts (FB-SOC, Ipopt)")
+      ->default_str("");
   cmd->callback([args, &ctx, cmd]() {
     // Options that would have no effect in this context are errors, never silence.
     const bool mroz = args->wear_law == "mroz";

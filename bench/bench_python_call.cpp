@@ -1,8 +1,8 @@
 // Benchmark: the overhead of a Python call. The same tiny LCP (M = [[2, 1], [1, 2]],
 // q = (-5, -6), Lemke: 2 pivots) solved through the solver registry in C++ (the path the Python
 // binding takes) and from Python: cpkit.solve(M, q, "lemke") (argument checks, numpy <-> Eigen,
-// the result as a dataclass) and the bare extension call cpkit._cpkit.solve_dense (no
-// pure-Python layer). Each figure is the median per-call time of 15 batches.
+// the result object) and the bare extension call cpkit._cpkit.solve_dense_fast (no
+// pure-Python layer). bench/bench_python_siconos.py compares with Siconos' module. Each figure is the median per-call time of 15 batches.
 // Usage: bench_python_call [--quick]. Needs the Python module of this build
 // (CPKIT_PYTHON_DIR; skipped with a message otherwise). Numbers: docs/python.md.
 #include <algorithm>
@@ -53,7 +53,7 @@ bool python_calls(int calls, double& wrapper, double& bare) {
       "assert cpkit.solve(M, q, 'lemke').status == 'solved'\n"
       "inf = float('inf')\n"
       "w = [timeit.timeit(lambda: cpkit.solve(M, q, 'lemke'), number=n) / n for _ in range(15)]\n"
-      "b = [timeit.timeit(lambda: cpkit._cpkit.solve_dense(M, q, 'lemke', 1e-10, 1e-6, 0, inf),"
+      "b = [timeit.timeit(lambda: cpkit._cpkit.solve_dense_fast(M, q, 'lemke', 1e-10, 1e-6, 0, inf),"
       " number=n) / n for _ in range(15)]\n"
       "print(statistics.median(w), statistics.median(b))\n";
   const std::string cmd = std::string("PYTHONPATH=") + CPKIT_PYTHON_DIR + " " +
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     std::printf("Python module not available in this build: Python rows skipped\n");
     return 0;
   }
-  std::printf("| Python: cpkit._cpkit.solve_dense (extension only) | %.2f us | %.1fx |\n",
+  std::printf("| Python: cpkit._cpkit.solve_dense_fast (extension only) | %.2f us | %.1fx |\n",
               bare * 1e6, bare / cpp);
   std::printf("| Python: cpkit.solve(M, q, \"lemke\") | %.2f us | %.1fx |\n", wrapper * 1e6,
               wrapper / cpp);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -37,8 +38,8 @@ double json_number(const json& v, const std::string& origin, const Where& where)
   return v.get<double>();  // finite: the builder refused overflow; JSON has no nan/inf
 }
 
-const std::array<const char*, 8> kKnownFields = {"M", "q", "M_mtx", "q_mtx", "name",
-                                                 "note", "source", "expected"};
+const std::array<const char*, 9> kKnownFields = {"M", "q", "M_mtx", "q_mtx", "name",
+                                                 "note", "source", "expected", "n"};
 
 void check_fields(const json& j, const std::string& origin) {
   for (const auto& item : j.items()) {
@@ -47,7 +48,7 @@ void check_fields(const json& j, const std::string& origin) {
     if (!known)
       throw InputError(origin + ": unknown field \"" + io_text::quoted(item.key()) +
                        "\" (an LCP file has \"M\" and \"q\", or \"M_mtx\" and \"q_mtx\"; optional "
-                       "\"name\", \"note\", \"source\", \"expected\")");
+                       "\"n\", \"name\", \"note\", \"source\", \"expected\")");
   }
   for (const char* k : {"name", "note"})
     if (j.contains(k) && !j[k].is_string())
@@ -56,6 +57,18 @@ void check_fields(const json& j, const std::string& origin) {
   const bool files = j.contains("M_mtx") || j.contains("q_mtx");
   if (dense && files)
     throw InputError(origin + ": give either \"M\" and \"q\" or \"M_mtx\" and \"q_mtx\", not both");
+}
+
+/// The optional "n" (the size, as many tools write it): a whole number equal to the size of M.
+void check_size_field(const json& jn, Eigen::Index size, const std::string& origin) {
+  const bool whole = jn.is_number_integer() || jn.is_number_unsigned() ||
+                     (jn.is_number_float() && jn.get<double>() == std::floor(jn.get<double>()));
+  if (!whole || jn.get<double>() < 0)
+    throw InputError(origin + ": field \"n\" must be the problem's size, a whole number (got " +
+                     shown(jn) + ")");
+  if (jn.get<double>() != static_cast<double>(size))
+    throw InputError(origin + ": field \"n\" is " + shown(jn) + " but M is " +
+                     std::to_string(size) + " x " + std::to_string(size));
 }
 
 LcpProblem from_matrix_market_fields(const json& j, const std::string& origin) {
@@ -173,7 +186,7 @@ bool parse_dense_fast(const std::string& text, LcpProblem& p) {
     } else if (k == "source" || k == "expected") {
       if (!distinct_keys(field.value)) return false;
     } else {
-      return false;  // unknown field, or the Matrix Market form
+      return false;  // "n" (checked by the reference reader), unknown, or Matrix Market
     }
   }
   if (!has_m || !has_q) return false;
@@ -231,6 +244,7 @@ LcpProblem parse_lcp_json_reference(const std::string& text, const std::string& 
                                                               : from_dense_fields(j, origin);
   p.name = j.contains("name") ? j["name"].get<std::string>() : std::string();
   p.note = j.contains("note") ? j["note"].get<std::string>() : std::string();
+  if (j.contains("n")) check_size_field(j["n"], p.q.size(), origin);
   throw_if_invalid(p.validate(), origin);
   return p;
 }

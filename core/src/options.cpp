@@ -6,6 +6,11 @@
 namespace cpkit {
 
 std::string CommonOptions::validate() const {
+  // Runs on every solve: the stream is made only when there is something to say.
+  const bool bad = !(tol > 0) || !std::isfinite(tol) || !(tol_acceptable >= tol) ||
+                   !std::isfinite(tol_acceptable) || max_iterations < 0 || !(time_limit_s > 0) ||
+                   verbosity < 0 || verbosity > 3;
+  if (!bad) return {};
   std::ostringstream msg;
   if (!(tol > 0) || !std::isfinite(tol)) {
     msg << "tol must be a positive finite number (got " << tol << ")";

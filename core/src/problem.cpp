@@ -52,29 +52,20 @@ double LcpProblem::max_abs_entry() const {
 Mat LcpProblem::dense_M() const { return is_sparse() ? Mat(M_sparse) : M; }
 
 std::string LcpProblem::validate() const {
-  std::ostringstream msg;
+  // Runs on every solve: the message (and its stream) is built only for bad data.
   const Eigen::Index n = q.size();
   if (n == 0) return "q is empty (an LCP needs n >= 1)";
-  if (is_sparse()) {
-    if (M_sparse.rows() != M_sparse.cols())
-      msg << "M is not square (" << M_sparse.rows() << " x " << M_sparse.cols() << ")";
-    else if (M_sparse.rows() != n)
-      msg << "size mismatch: M is " << M_sparse.rows() << " x " << M_sparse.cols()
-          << " but q has " << n << " entries";
-    else if (auto at = first_nonfinite(M_sparse); !at.empty())
-      msg << "M has a non-finite entry at " << at;
-  } else {
-    if (M.rows() != M.cols())
-      msg << "M is not square (" << M.rows() << " x " << M.cols() << ")";
-    else if (M.rows() != n)
-      msg << "size mismatch: M is " << M.rows() << " x " << M.cols() << " but q has " << n
-          << " entries";
-    else if (auto at = first_nonfinite(M); !at.empty())
-      msg << "M has a non-finite entry at " << at;
-  }
-  if (msg.tellp() == 0)
-    if (auto at = first_nonfinite(q); !at.empty()) msg << "q has a non-finite entry at " << at;
-  return msg.str();
+  const Eigen::Index rows = is_sparse() ? M_sparse.rows() : M.rows();
+  const Eigen::Index cols = is_sparse() ? M_sparse.cols() : M.cols();
+  if (rows != cols)
+    return "M is not square (" + std::to_string(rows) + " x " + std::to_string(cols) + ")";
+  if (rows != n)
+    return "size mismatch: M is " + std::to_string(rows) + " x " + std::to_string(cols) +
+           " but q has " + std::to_string(n) + " entries";
+  if (auto at = is_sparse() ? first_nonfinite(M_sparse) : first_nonfinite(M); !at.empty())
+    return "M has a non-finite entry at " + at;
+  if (auto at = first_nonfinite(q); !at.empty()) return "q has a non-finite entry at " + at;
+  return {};
 }
 
 std::string BoxLcpProblem::validate() const {

@@ -34,8 +34,9 @@ Checks (exit code 1 when one fails):
 - the same node through the N-point route (its 3 x 3 Schur-complement LCP) gives the one-point
   map's counts cell by cell.
 
-Run: python3 docs/examples/getfem_punch.py [--quick]   (PYTHONPATH=<build>/python for a build
-tree). Needs Debian's python3-getfem; exits 77 saying so when GetFEM is not installed.
+Run: python3 docs/examples/getfem_punch.py [--quick] [--plot PNG]   (PYTHONPATH=<build>/python
+for a build tree). --plot draws the body (mesh, punch, foundation, contact nodes, load
+direction) and both thresholds against the mesh (docs/images/getfem_punch.png; matplotlib). Needs Debian's python3-getfem; exits 77 saying so when GetFEM is not installed.
 """
 import argparse
 import math
@@ -125,7 +126,7 @@ def one_node_threshold_from_map(A, mus, theta_n):
 def check_one_node(args, failures):
     print("== one contact node (bottom-left corner) ==")
     print(f"{'nx':>4} {'a11':>10} {'a12':>10} {'a22':>10} {'mu* = a11/|a12|':>16}")
-    thresholds = []
+    thresholds, sampled = [], []
     for nx in args.meshes:
         A, e_T, e_N, _ = body(nx, args, contact="corner")
         # One node: a uniform motion of the top is a rigid motion relative to the node, so the
@@ -142,6 +143,7 @@ def check_one_node(args, failures):
         h = 0.01
         mus = mu_star + h * (np.arange(-20, 21) + 0.5)
         first, m = one_node_threshold_from_map(A, mus, args.theta_n)
+        sampled.append(first)
         crit = [c["x"] for c in m.critical_values if c["name"] in ("D+=0", "D-=0")]
         ok = (first is None or first > mu_star) and \
             len(crit) == 1 and abs(crit[0] - mu_star) <= 1e-12 * mu_star
@@ -162,7 +164,7 @@ def check_one_node(args, failures):
     print("changes under refinement:", " ".join(f"{d:.4f}" for d in diffs))
     if len(diffs) >= 2 and not (diffs[1:] < diffs[:-1]).all():
         failures.append(f"one-node threshold does not settle under refinement: {thresholds}")
-    return thresholds
+    return thresholds, sampled
 
 
 def system_of(A, mu, patterns):
@@ -230,7 +232,7 @@ def check_body(args, failures):
         failures.append("one node: the N-point counts differ from the one-point map")
     print(f"{'nx':>4} {'N':>3} {'first mu with several solutions':>32} "
           f"{'min_i a11/|a12| (blocks)':>25}  undecided cells below it")
-    firsts = []
+    firsts, block_values = [], []
     for nx in args.body_meshes:
         A, e_T, e_N, x = body(nx, args, contact="bottom")
         mu1, undecided = threshold(A, e_T, e_N, theta, mu_grid, 1e-3)
@@ -239,9 +241,90 @@ def check_body(args, failures):
         # (the other contact nodes held fixed).
         blocks = min(A[2 * i, 2 * i] / abs(A[2 * i, 2 * i + 1]) if A[2 * i, 2 * i + 1] != 0
                      else math.inf for i in range(len(x)))
+        block_values.append(blocks)
         print(f"{nx:4d} {len(x):3d} {('%.3f' % mu1) if mu1 is not None else 'none <= 3':>32} "
               f"{blocks:25.3f}  {undecided}")
-    return firsts
+    return firsts, block_values
+
+
+def plot(path, args, one_node, whole):
+    """The body as meshed (the finest whole-bottom mesh), its contact nodes and the load, and
+    both thresholds against the mesh: what a user wants to see before trusting the numbers."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import FancyArrowPatch, Rectangle
+
+    fig, (ax0, ax1, ax2) = plt.subplots(1, 3, figsize=(16, 6.6), constrained_layout=True,
+                                        gridspec_kw={"width_ratios": [1.3, 1, 1]})
+    nx = args.body_meshes[-1]
+    ny = max(1, int(round(nx * args.height / args.width)))
+    W, H = args.width, args.height
+    for x in np.linspace(0, W, nx + 1):
+        ax0.plot([x, x], [0, H], color="0.55", lw=0.8)
+    for y in np.linspace(0, H, ny + 1):
+        ax0.plot([0, W], [y, y], color="0.55", lw=0.8)
+    ax0.add_patch(Rectangle((-0.1 * W, H), 1.2 * W, 0.12 * H, facecolor="0.3", edgecolor="k",
+                            hatch="///", label="rigid punch (clamped top, moves)"))
+    ax0.add_patch(Rectangle((-0.1 * W, -0.12 * H), 1.2 * W, 0.12 * H, facecolor="0.85",
+                            edgecolor="k", hatch="\\\\", label="rigid foundation"))
+    xs = np.linspace(0, W, nx + 1)
+    ax0.plot(xs, np.zeros_like(xs), "o", color="tab:blue", ms=8, zorder=5,
+             label=f"contact nodes, whole bottom (N = {nx + 1})")
+    ax0.plot([0], [0], "s", color="tab:red", ms=12, mfc="none", mew=2.5, zorder=6,
+             label="one contact node (corner)")
+    t = math.radians(60)
+    ax0.add_patch(FancyArrowPatch((0.5 * W, 1.3 * H), (0.5 * W + 0.35 * math.cos(t),
+                                                       1.3 * H - 0.35 * math.sin(t)),
+                                  arrowstyle="-|>", mutation_scale=18, color="tab:green",
+                                  lw=2, label="punch motion (cos theta, -sin theta)"))
+    ax0.set_xlim(-0.15 * W, 1.15 * W)
+    ax0.set_ylim(-0.2 * H, 1.55 * H)
+    ax0.set_aspect("equal")
+    ax0.set_xticks([])
+    ax0.set_yticks([])
+    ax0.set_title(f"the body: {W:g} x {H:g}, plane strain, E = {args.E:g}, nu = {args.nu:g},\n"
+                  f"Q1 mesh {nx} x {ny} (GetFEM), condensed onto the contact nodes")
+    ax0.legend(loc="upper center", bbox_to_anchor=(0.5, -0.02), ncol=2, fontsize=8.5,
+               frameon=False)
+
+    thresholds, sampled = one_node
+    ax1.plot(args.meshes, thresholds, "o-", color="tab:red",
+             label="exact: mu* = a11/|a12| (= critical value of the map)")
+    s = [(m, v) for m, v in zip(args.meshes, sampled) if v is not None]
+    if s:
+        ax1.plot(*zip(*s), "x--", color="0.4", ms=8,
+                 label=f"first non-unique row of a sampled map ({args.theta_n} directions):\n"
+                       "the wedge is seen only once wider than a cell")
+    missing = [m for m, v in zip(args.meshes, sampled) if v is None]
+    if missing:
+        ax1.plot([], [], " ", label=f"sampled map ({args.theta_n} directions): no non-unique row "
+                                    f"up to mu* + 0.2 at {', '.join(map(str, missing))} elements")
+    ax1.set_xscale("log", base=2)
+    ax1.set_xticks(args.meshes)
+    ax1.set_xticklabels([str(m) for m in args.meshes])
+    ax1.set_xlabel("elements along the width")
+    ax1.set_ylabel("mu threshold (several solutions above)")
+    ax1.set_title("one contact node (corner):\nthreshold under mesh refinement")
+    ax1.legend(fontsize=8.5, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
+    ax1.grid(alpha=0.3)
+
+    firsts, blocks = whole
+    pts = [(m, v) for m, v in zip(args.body_meshes, firsts) if v is not None]
+    if pts:
+        ax2.plot(*zip(*pts), "o-", color="tab:blue",
+                 label="N-point rate problem: first mu with\nseveral solutions (sampled, bisected)")
+    ax2.plot(args.body_meshes, blocks, "s--", color="0.45",
+             label="min over points of a11/|a12|\nof their own 2 x 2 blocks")
+    ax2.set_xticks(args.body_meshes)
+    ax2.set_xticklabels([f"{m}\n(N = {m + 1})" for m in args.body_meshes])
+    ax2.set_xlabel("elements along the width (contact nodes N)")
+    ax2.set_ylabel("mu threshold")
+    ax2.set_title("the whole bottom in contact:\ncoupling lowers the threshold")
+    ax2.legend(fontsize=8.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), frameon=False)
+    ax2.grid(alpha=0.3)
+    fig.savefig(path, dpi=100)
+    print(f"wrote {path}")
 
 
 def main(argv=None):
@@ -257,14 +340,17 @@ def main(argv=None):
                     help="elements along the width for the whole-bottom contact (N = value + 1; "
                          "the enumeration grows fast with N: N = 6 takes minutes per mesh)")
     ap.add_argument("--quick", action="store_true", help="smaller meshes and maps (the test)")
+    ap.add_argument("--plot", metavar="PNG", help="draw the body and the thresholds (matplotlib)")
     args = ap.parse_args(argv)
     if args.quick:
         args.meshes = [4, 8, 16, 32]
         args.body_meshes = [2, 3]
         args.theta_n = 72
     failures = []
-    check_one_node(args, failures)
-    check_body(args, failures)
+    one_node = check_one_node(args, failures)
+    whole = check_body(args, failures)
+    if args.plot:
+        plot(args.plot, args, one_node, whole)
     for f in failures:
         print("CHECK FAILED:", f)
     print("all checks passed" if not failures else f"{len(failures)} check(s) failed")

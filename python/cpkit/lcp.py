@@ -7,11 +7,15 @@ from typing import Callable, Iterable, Optional
 import numpy as np
 
 from . import _cpkit
-from .results import CrossVerifyReport, SolutionSet, SolveResult
+from .results import (Attempt, BatchResult, Certificate, CrossVerifyReport, Residuals,
+                      SolutionSet, SolveResult)
 
-__all__ = ["solve", "enumerate", "cross_verify", "solve_mcp", "solvers"]
+__all__ = ["solve", "solve_batch", "enumerate", "cross_verify", "solve_mcp", "solvers"]
 
 _INF = math.inf
+# The extension builds these result objects itself on the quick route of solve().
+_cpkit._set_result_classes(SolveResult, Residuals, Attempt, Certificate)
+_quick_solve = _cpkit.solve_dense_fast
 
 
 def _is_sparse(M) -> bool:
@@ -65,10 +69,38 @@ def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: flo
     for "solved" / "solved_inaccurate" (docs/conventions.md); max_iterations 0 is the solver's
     default; time_limit in seconds. Outcomes are statuses; bad input raises ValueError/TypeError.
     """
+    # Quick route (issue 27: a tiny LCP costs no more than Siconos' call): float64 numpy
+    # arrays readable in place and plain option types are solved by the extension directly;
+    # anything else comes back as NotImplemented and takes the general route below.
+    r = _quick_solve(M, q, solver, tol, tol_acceptable, max_iterations, time_limit)
+    if r is not NotImplemented:
+        return r
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.solve_sparse if sparse else _cpkit.solve_dense
     return SolveResult._from(fn(M, q, solver, float(tol), float(tol_acceptable),
                                 int(max_iterations), float(time_limit)))
+
+
+def solve_batch(Ms, qs, solver: str = "lemke", *, tol: float = 1e-10,
+                tol_acceptable: float = 1e-6, max_iterations: int = 0,
+                time_limit: float = _INF) -> BatchResult:
+    """One solution of each of k LCPs (Ms[i], qs[i]) in one call: Ms of shape (k, n, n), qs of
+    shape (k, n) (dense, float64 or convertible). The problems are solved in C++ one after the
+    other without the GIL and without Python objects per problem, each answer decided from its
+    data as by solve() (same solver names and tolerances; time_limit is per problem).
+
+    Returns a BatchResult of arrays: z and w (k, n), status (k,) names, residual (k,), and
+    is_solution (k,) booleans. A bad shape or a non-finite entry raises ValueError naming the
+    first bad problem, before any problem is solved.
+    """
+    try:
+        Ms = np.ascontiguousarray(Ms, dtype=float)
+        qs = np.ascontiguousarray(qs, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"Ms and qs must be arrays of numbers ({e})") from None
+    d = _cpkit.solve_batch(Ms, qs, str(solver), float(tol), float(tol_acceptable),
+                           int(max_iterations), float(time_limit))
+    return BatchResult._from(d)
 
 
 def enumerate(M, q, *, max_size: int = 64, time_limit: float = 60.0) -> SolutionSet:

@@ -1,11 +1,13 @@
 // LCP bindings: solve (any registered solver, "auto" included), enumerate, cross_verify.
 // Dense M arrives as an Eigen matrix, sparse M (scipy.sparse, converted to CSC by the Python
 // layer) as an Eigen sparse matrix; the C++ validators name every bad input (ValueError).
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "result_objects.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
@@ -39,7 +41,7 @@ const SolverEntry& find_solver(const std::string& name, ProblemKind kind) {
   return *e;
 }
 
-pyb::dict solve_problem(const LcpProblem& p, const std::string& solver, const CommonOptions& o) {
+SolveResult solve_checked(const LcpProblem& p, const std::string& solver, const CommonOptions& o) {
   throw_if_invalid(p.validate(), "LCP");
   const SolverEntry& e = find_solver(solver, ProblemKind::kLcp);
   if (!e.accepts(p))
@@ -51,8 +53,83 @@ pyb::dict solve_problem(const LcpProblem& p, const std::string& solver, const Co
     r = e.solve_lcp(p, o);
   }
   if (r.solver.empty()) r.solver = e.info.name;
-  return to_dict(r);
+  return r;
 }
+
+pyb::dict solve_problem(const LcpProblem& p, const std::string& solver, const CommonOptions& o) {
+  return to_dict(solve_checked(p, solver, o));
+}
+
+/// The data of `h` when it is an aligned, C-contiguous, native float64 ndarray of rank `nd`
+/// (read in place: no conversion object per call), else nullptr.
+const double* direct_data(pyb::handle h, int nd, pyb::ssize_t* shape) {
+  namespace d = pyb::detail;
+  if (!d::npy_api::get().PyArray_Check_(h.ptr())) return nullptr;
+  const d::PyArray_Proxy* a = d::array_proxy(h.ptr());
+  if (a->nd != nd) return nullptr;
+  const d::PyArrayDescr_Proxy* t = d::array_descriptor_proxy(a->descr);
+  if (t->type_num != d::npy_api::NPY_DOUBLE_ || t->byteorder == '>') return nullptr;
+  constexpr int need = d::npy_api::NPY_ARRAY_C_CONTIGUOUS_ | d::npy_api::NPY_ARRAY_ALIGNED_;
+  if ((a->flags & need) != need) return nullptr;
+  for (int k = 0; k < nd; ++k) shape[k] = a->dimensions[k];
+  return reinterpret_cast<const double*>(a->data);
+}
+
+/// The quick route as a METH_FASTCALL function (pybind11's general dispatcher costs about as
+/// much as the rest of a tiny call): solve_dense_fast(M, q, solver, tol, tol_acceptable,
+/// max_iterations, time_limit) returns NotImplemented unless M and q are float64 ndarrays of
+/// ranks 2 and 1 readable in place, solver a str, tol, tol_acceptable and time_limit floats and
+/// max_iterations an int; cpkit.solve then takes its general route (same results, same errors).
+PyObject* solve_dense_fast_raw(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
+  try {
+    if (nargs != 7) throw InputError("solve_dense_fast takes 7 arguments");
+    pyb::ssize_t ms[2] = {0, 0}, qs[1] = {0};
+    const double* Md = direct_data(args[0], 2, ms);
+    const double* qd = direct_data(args[1], 1, qs);
+    if (Md == nullptr || qd == nullptr || !PyUnicode_CheckExact(args[2]) ||
+        !PyFloat_CheckExact(args[3]) || !PyFloat_CheckExact(args[4]) ||
+        !PyLong_CheckExact(args[5]) || !PyFloat_CheckExact(args[6]))
+      Py_RETURN_NOTIMPLEMENTED;
+    Py_ssize_t len = 0;
+    const char* name = PyUnicode_AsUTF8AndSize(args[2], &len);
+    if (name == nullptr) throw pyb::error_already_set();
+    const long max_iterations = PyLong_AsLong(args[5]);
+    if (max_iterations == -1 && PyErr_Occurred()) throw pyb::error_already_set();
+    if (max_iterations < 0 || max_iterations > 2147483647L) Py_RETURN_NOTIMPLEMENTED;
+    const CommonOptions o =
+        common_options(PyFloat_AS_DOUBLE(args[3]), PyFloat_AS_DOUBLE(args[4]),
+                       static_cast<int>(max_iterations), PyFloat_AS_DOUBLE(args[6]));
+    // Small problems: one problem object per thread, its storage reused from call to call
+    // (the GIL is released during the solve, so other threads need their own); a large one is
+    // not kept alive after its call.
+    thread_local LcpProblem small;
+    std::optional<LcpProblem> large;
+    LcpProblem& p = ms[0] <= 64 && ms[1] <= 64 ? small : large.emplace();
+    p.M = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        Md, static_cast<Eigen::Index>(ms[0]), static_cast<Eigen::Index>(ms[1]));
+    p.q = Eigen::Map<const Vec>(qd, static_cast<Eigen::Index>(qs[0]));
+    return make_solve_result(
+               solve_checked(p, std::string(name, static_cast<std::size_t>(len)), o))
+        .release()
+        .ptr();
+  } catch (pyb::error_already_set& e) {
+    e.restore();
+  } catch (const std::invalid_argument& e) {  // InputError: ValueError, as pybind11 maps it
+    PyErr_SetString(PyExc_ValueError, e.what());
+  } catch (const std::bad_alloc&) {
+    PyErr_NoMemory();
+  } catch (const std::exception& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
+  }
+  return nullptr;
+}
+
+PyMethodDef kFastMethods[] = {
+    {"solve_dense_fast", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&solve_dense_fast_raw)),
+     METH_FASTCALL, "solve_dense_fast(M, q, solver, tol, tol_acceptable, max_iterations, "
+                    "time_limit) -> cpkit.SolveResult, or NotImplemented when the arguments "
+                    "need the general route (the quick route of cpkit.solve)"},
+    {nullptr, nullptr, 0, nullptr}};
 
 LcpProblem dense_problem(const Mat& M, const Vec& q) { return LcpProblem(M, q); }
 LcpProblem sparse_problem(const SparseMat& M, const Vec& q) {
@@ -167,6 +244,8 @@ void bind_lcp(pyb::module_& m) {
           return solve_problem(dense_problem(M, q), solver,
                                common_options(tol, tol_acceptable, max_iterations, time_limit));
         });
+  if (PyModule_AddFunctions(m.ptr(), kFastMethods) != 0) throw pyb::error_already_set();
+  m.def("_set_result_classes", &set_result_classes);
   m.def("solve_sparse",
         [](const SparseMat& M, const Vec& q, const std::string& solver, double tol,
            double tol_acceptable, int max_iterations, double time_limit) {

@@ -4,6 +4,7 @@
 
 namespace cpkit::py {
 void bind_lcp(pybind11::module_& m);
+void bind_lcp_batch(pybind11::module_& m);  // solve_batch (bind_lcp_batch.cpp)
 void bind_mcp(pybind11::module_& m);
 void bind_rate(pybind11::module_& m);
 void bind_maps(pybind11::module_& m);

@@ -10,6 +10,7 @@ PYBIND11_MODULE(_cpkit, m) {
   m.doc() = "cpkit: complementarity problems and the contact/friction/wear model (compiled part)";
   m.attr("__version__") = CPKIT_VERSION;
   cpkit::py::bind_lcp(m);
+  cpkit::py::bind_lcp_batch(m);
   cpkit::py::bind_mcp(m);
   cpkit::py::bind_rate(m);
   cpkit::py::bind_maps(m);

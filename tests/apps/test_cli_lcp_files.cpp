@@ -111,6 +111,8 @@ TEST_CASE("cli: bad problem files exit 2 with the reason, never 4", "[cli][io]")
       {"big.json", R"({"M": [[1]], "q": [1e400]})", "'1e400' is outside the range of double"},
       {"deep.json", std::string(10000, '[') + std::string(10000, ']'), "nesting deeper than 64"},
       {"unknown.json", R"({"M": [[1]], "q": [1], "Q": 1})", "unknown field \"Q\""},
+      {"size.json", R"({"n": 3, "M": [[2, 1], [1, 2]], "q": [-5, -6]})",
+       "field \"n\" is 3 but M is 2 x 2"},
       {"storage2.dat", "2\n2\n2\n2\n0\n1 2\n", "storage2.dat:2: storage type 2"},
       {"old.dat", "2\n1 2\n3 4\n5 6\n", "old.dat:3:"},
       {"sym.mtx", "%%MatrixMarket matrix coordinate real symmetric\n2 3 1\n1 3 1\n",
@@ -124,6 +126,18 @@ TEST_CASE("cli: bad problem files exit 2 with the reason, never 4", "[cli][io]")
     CHECK(r.out.empty());
     CHECK_THAT(r.err, Contains(c.message));
   }
+}
+
+TEST_CASE("cli: an LCP file with its size \"n\" is read", "[cli][io]") {
+  // Issue 27. M = [[2, 1], [1, 2]], q = (-5, -6): w = 0 gives z = M^-1 (5, 6) = (4/3, 7/3) by hand.
+  const auto r =
+      run_cpkit("lcp solve " + write("with_n.json", R"({"n": 2, "M": [[2, 1], [1, 2]], "q": [-5, -6]})") +
+                " --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const auto z = nlohmann::json::parse(r.out)["z"];
+  CHECK(std::abs(z[0].get<double>() - 4.0 / 3) < 1e-12);
+  CHECK(std::abs(z[1].get<double>() - 7.0 / 3) < 1e-12);
 }
 
 TEST_CASE("cli: a file name that is not UTF-8 is printed as valid JSON", "[cli][io]") {

@@ -299,7 +299,8 @@ assert len(rows) == s["cells"]
 }
 
 // A grid whose output cannot fit the disk is refused before any cell is computed, naming the
-// options that make it fit (--time-limit raised: the time check would refuse it first). Without
+// options that make it fit (--time-limit and --max-output raised: their checks would refuse it
+// first). Without
 // --time-limit, the same map is refused by its time estimate.
 TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
   const fs::path prefix = scratch_dir() / "huge";
@@ -312,7 +313,8 @@ TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
     return;
   }
   const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
-                    "--n 100000 --theta-n 1000000 --time-limit 1e9 --out " + prefix.string());
+                    "--n 100000 --theta-n 1000000 --time-limit 1e9 --max-output 1T --out " +
+                    prefix.string());
   CHECK(r.code == 2);
   CHECK(r.err.find("--theta-n") != std::string::npos);
   CHECK(r.err.find("free") != std::string::npos);

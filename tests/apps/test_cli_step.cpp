@@ -232,7 +232,7 @@ TEST_CASE("CliStepSystemBadInput", "[cli][step][system]") {
   Run r = run_cli("step --system '" + sys + "' --DF 0.2 0.1 --all");
   CHECK(r.code == 2);
   CHECK(r.out.empty());
-  CHECK(r.err.find("--DF needs 6 numbers") != std::string::npos);
+  CHECK(r.err.find("--dF needs 6 numbers") != std::string::npos);
   r = run_cli("step --system '" + sys + "' --DF 0 0 0 0 0 0 --all --mu 3");
   CHECK(r.code == 2);
   CHECK(r.err.find("--mu cannot be combined with --system") != std::string::npos);

@@ -75,6 +75,21 @@ TEST_CASE("JSON: unknown fields, duplicates, NaN and Inf are errors", "[io][json
   fails_with(R"({"M": [[1]], "q": [-Infinity]})", "not valid JSON");
 }
 
+TEST_CASE("JSON: the size field \"n\" is accepted and checked against M", "[io][json]") {
+  // Issue 27: many tools write the size. The 2 x 2 problem of the docs, with "n": 2.
+  const auto p = cpkit::parse_lcp_json(R"({"n": 2, "M": [[2, 1], [1, 2]], "q": [-5, -6]})");
+  CHECK(p.M == Mat{{2, 1}, {1, 2}});
+  CHECK(p.q == Vec{{-5, -6}});
+  CHECK(cpkit::parse_lcp_json(R"({"M": [[3]], "q": [1], "n": 1.0})").M(0, 0) == 3);
+  // A mismatch names both sizes; a size that is not a whole number is refused.
+  fails_with(R"({"n": 3, "M": [[2, 1], [1, 2]], "q": [-5, -6]})",
+             "field \"n\" is 3 but M is 2 x 2");
+  fails_with(R"({"n": 1, "M": [[2, 1], [1, 2]], "q": [-5, -6]})", "but M is 2 x 2");
+  fails_with(R"({"n": 2.5, "M": [[2, 1], [1, 2]], "q": [-5, -6]})", "\"n\" must be");
+  fails_with(R"({"n": "2", "M": [[2, 1], [1, 2]], "q": [-5, -6]})", "\"n\" must be");
+  fails_with(R"({"n": -2, "M": [[2, 1], [1, 2]], "q": [-5, -6]})", "\"n\" must be");
+}
+
 TEST_CASE("JSON numbers beyond the range of double are input errors", "[io][json]") {
   // 1e400 used to escape as nlohmann's out_of_range exception (exit 4, "internal error").
   fails_with("{\"M\": [[1]],\n \"q\": [1e400]}", "f.json:2: '1e400' is outside the range of double");
