@@ -2,6 +2,7 @@
 
 #include "cpkit/lcp/auto_chain.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
+#include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
@@ -17,6 +18,7 @@ SolverRegistry build() {
   r.add(nlopt_entry());
   r.add(auto_entry());
   r.add(friction::nsgs_entry());  // friction problems (issue 26)
+  r.add(friction::fb_soc_entry());
   // Each solver module adds its entry here, in the order of the automatic chain.
   return r;
 }
