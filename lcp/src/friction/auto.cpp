@@ -81,6 +81,18 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
       }
       continue;
     }
+    if (name == "fb-soc") {
+      record(name, e->solve_fc(p, common()));
+      if (best.status != Status::kSolved && left() > 0) {
+        FbSocOptions fo;  // the other line search (fb_soc.hpp), from r = 0 again
+        fo.common = common();
+        fo.nonmonotone_memory = 1;
+        SolveResult r = solve_fb_soc(p, fo);
+        r.message = "monotone line search" + (r.message.empty() ? "" : "; " + r.message);
+        record(name, std::move(r));
+      }
+      continue;
+    }
     record(name, e->solve_fc(p, common()));
   }
   best.attempts = std::move(attempts);

@@ -1,6 +1,7 @@
 // Semismooth Newton on the SOC Fischer-Burmeister reformulation (fb_soc.hpp).
 #include "cpkit/lcp/friction/fb_soc.hpp"
 
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -114,8 +115,13 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   res.solver = "fb-soc";
   Status stop = best_res <= o.common.tol ? Status::kSolved : Status::kIterationLimit;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
+  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
   SpMat I(n, n);
   I.setIdentity();
+  // Non-monotone Armijo reference for Newton steps: the largest Psi of the last `memory`
+  // iterates [Grippo, Lampariello, Lucidi 1986].
+  const int memory = std::max(1, o.nonmonotone_memory);
+  std::vector<double> history{psi};
   int it = 0;
   for (; it < max_it && stop != Status::kSolved; ++it) {
     if (o.common.time_limit_s < 1e300 && clock.exceeded(o.common.time_limit_s)) {
@@ -138,43 +144,52 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
       if (lu.info() == Eigen::Success && d.allFinite()) break;
       d.resize(0);
     }
-    bool newton = d.size() == n && grad.dot(d) < 0;
-    std::string kind = "newton";
-    double t = 1;
-    bool accepted = false;
-    for (int attempt = 0; attempt < 2 && !accepted; ++attempt) {
-      if (!newton) {
-        d = -grad;
-        kind = "gradient";
-        ++res.gradient_steps;
-        // A first step of the size a unit Newton step would have on a quadratic model.
-        const VectorXd Jd = J * d;
-        const double jd2 = Jd.squaredNorm();
-        t = jd2 > 0 ? d.squaredNorm() / jd2 : 1.0;
-      } else {
-        t = 1;
-      }
-      const double slope = grad.dot(d);
-      while (t > 1e-14) {
-        trial_r = r + t * d;
+    // Line search along d from t0 down to t_min against the reference ref; 0 when it fails.
+    auto search = [&](const VectorXd& dir, double t0, double t_min, double ref) {
+      const double slope = grad.dot(dir);
+      for (double tt = t0; tt >= t_min; tt *= 0.5) {
+        trial_r = r + tt * dir;
         trial_u.noalias() = p.W * trial_r;
         trial_u += p.q;
         model.eval(trial_r, trial_u, trial_phi, nullptr, nullptr);
         const double tpsi = 0.5 * trial_phi.squaredNorm();
         ++res.function_evals;
-        if (std::isfinite(tpsi) && tpsi <= psi + 1e-4 * t * slope) {
-          accepted = true;
-          break;
-        }
-        t *= 0.5;
+        if (std::isfinite(tpsi) && tpsi <= ref + 1e-4 * tt * slope) return tt;
         ++res.line_search_steps;
       }
-      if (!accepted && newton) newton = false;  // retry along the gradient
-      else break;
+      return 0.0;
+    };
+    const double psi_ref = *std::max_element(history.begin(), history.end());
+    std::string kind = "newton";
+    double t = 0;
+    // 1. Newton, against the non-monotone reference.
+    if (d.size() == n && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi_ref);
+    // 2. Levenberg-Marquardt, (J^T J + lambda I) d = -J^T Phi with lambda = |Phi| (the scaled
+    //    problem's units): a descent direction that stays bounded where J is singular
+    //    (non-isolated solutions of rank-deficient W) [Fan, Yuan 2005].
+    if (t == 0) {
+      kind = "lm";
+      const double lambda = std::max(phi.norm(), 1e-14);
+      SpMat N = SpMat(J.transpose() * J) + lambda * I;
+      ldlt.compute(N);
+      if (ldlt.info() == Eigen::Success) {
+        d = ldlt.solve(-grad);
+        if (d.allFinite() && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi);
+      }
     }
+    // 3. Steepest descent.
+    if (t == 0) {
+      kind = "gradient";
+      ++res.gradient_steps;
+      d = -grad;
+      const VectorXd Jd = J * d;
+      const double jd2 = Jd.squaredNorm();
+      t = search(d, jd2 > 0 ? d.squaredNorm() / jd2 : 1.0, 1e-14, psi);
+    }
+    const bool accepted = t > 0;
     if (!accepted) {
       stop = Status::kStalled;
-      res.message = "fb-soc: line search failed along the Newton and gradient directions";
+      res.message = "fb-soc: line search failed along the Newton, Levenberg-Marquardt and gradient directions";
       break;
     }
     r.swap(trial_r);
@@ -182,6 +197,8 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
     model.eval(r, u, phi, &A, &B);
     ++res.jacobian_evals;
     psi = 0.5 * phi.squaredNorm();
+    history.push_back(psi);
+    if (static_cast<int>(history.size()) > memory) history.erase(history.begin());
     const double rs = friction_residuals(p, units, r, u).natural;
     if (o.common.record_trace) res.trace.push_back({it + 1, rs, t, kind, -1, -1});
     if (rs < best_res) {

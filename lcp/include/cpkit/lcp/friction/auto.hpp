@@ -4,8 +4,9 @@
 /// friction solvers, tried in this order until one returns kSolved:
 ///   fb-soc, nsgs, prox, lemke-faceted, lemke, ipopt-fc, ipopt
 /// (names looked up in cpkit::lcp::solvers() at call time; a name not registered, or whose entry
-/// has no solve_fc, is recorded as skipped). fb-soc (Newton: fast when it converges) comes first;
-/// nsgs then starts from the best r seen so far (the smallest unit-free residual), as does a
+/// has no solve_fc, is recorded as skipped). fb-soc (Newton: fast when it converges) comes first,
+/// with its non-monotone line search and, when that fails, again from r = 0 with the monotone
+/// one (fb_soc.hpp: neither wins on every FCLIB file); nsgs then starts from the best r seen so far (the smallest unit-free residual), as does a
 /// second fb-soc run after nsgs when nsgs ends short of tol (Newton polishing a Gauss-Seidel
 /// iterate). Every attempt is recorded in SolveResult::attempts (solver, status, unit-free
 /// residual, seconds, message). A kSolvedInaccurate answer is kept while later solvers try for

@@ -14,9 +14,14 @@
 /// (the derivatives of phi with respect to r and u; at u_T = 0 the element d|u_T| = 0),
 /// factorised by Eigen's SparseLU (COLAMD); a J that does not factorise is shifted,
 /// J + delta I with delta = 1e-10, 1e-8, ... 1e-2 times |J|_max (rank-deficient W makes J singular
-/// at sticking contacts). Armijo backtracking on Psi = |Phi|^2 / 2 (sigma = 1e-4, factor 1/2),
-/// and a step along -grad Psi = -J^T Phi when the Newton direction is not a descent direction or
-/// its line search fails.
+/// at sticking contacts). Line search: Armijo backtracking on Psi = |Phi|^2 / 2 (sigma = 1e-4,
+/// factor 1/2), non-monotone for the Newton direction (reference: the largest Psi of the last
+/// nonmonotone_memory iterates [Grippo, Lampariello, Lucidi 1986]); when the Newton direction is
+/// not a descent direction or its search fails, a Levenberg-Marquardt direction
+/// (J^T J + |Phi| I) d = -J^T Phi (SimplicialLDLT; bounded where J is singular, as at the
+/// non-isolated solutions of rank-deficient W [Fan, Yuan 2005]), then -grad Psi = -J^T Phi, both
+/// with monotone Armijo. On the FCLIB files neither reference wins everywhere (BoxesStack1 needs
+/// the non-monotone one, Capsules-i100-889 the monotone one): "auto" runs both.
 ///
 /// The problem is first scaled by powers of two (exactly) so that |q|_inf and |W|_max are in
 /// [1, 2): the iterates do not depend on the problem's units. Stopping: the verdict's unit-free
@@ -36,6 +41,8 @@ struct FbSocOptions {
   CommonOptions common;
   /// Warm start r (size 3 n_c, finite); empty: r = 0.
   Eigen::VectorXd r0;
+  /// Non-monotone memory of the Newton line search; 1 = monotone Armijo.
+  int nonmonotone_memory = 8;
 };
 
 /// Solves the problem; throws InputError when it (or r0) is invalid.
