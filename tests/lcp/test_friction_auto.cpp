@@ -63,9 +63,13 @@ TEST_CASE("auto: when fb-soc is stopped short, nsgs continues from its best iter
   cpkit::CommonOptions o;
   o.max_iterations = 1;  // every solver gets one iteration / sweep: the chain must go on
   const auto r = cpkit::lcp::friction::solve_auto(p, o);
-  REQUIRE(r.attempts.size() >= 2);
+  // fb-soc (non-monotone), fb-soc (monotone, from r = 0), nsgs from the best r, fb-soc polishing.
+  REQUIRE(r.attempts.size() >= 4);
   CHECK(r.attempts[0].solver == "fb-soc");
-  CHECK(r.attempts[1].solver == "nsgs");
+  CHECK(r.attempts[1].solver == "fb-soc");
+  CHECK(r.attempts[1].message.find("monotone line search") == 0);
+  CHECK(r.attempts[2].solver == "nsgs");
+  CHECK(r.attempts[3].solver == "fb-soc");
   for (const auto& a : r.attempts) CHECK(!a.solver.empty());
   if (cpkit::is_solution(r.status))
     CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, r.z) < 1e-6);
