@@ -121,6 +121,11 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   // Non-monotone Armijo reference for Newton steps: the largest Psi of the last `memory`
   // iterates [Grippo, Lampariello, Lucidi 1986].
   const int memory = std::max(1, o.nonmonotone_memory);
+  // Stagnation: the best residual has not halved within kStagnation iterations (on the FCLIB
+  // files a converging run halves it at least every ~30 iterations).
+  constexpr int kStagnation = 50;
+  double progress_res = best_res;
+  int progress_it = 0;
   std::vector<double> history{psi};
   int it = 0;
   for (; it < max_it && stop != Status::kSolved; ++it) {
@@ -205,7 +210,19 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
       best_res = rs;
       best = r;
     }
-    if (rs <= o.common.tol) stop = Status::kSolved;
+    if (rs <= 0.5 * progress_res) {
+      progress_res = rs;
+      progress_it = it;
+    }
+    if (rs <= o.common.tol) {
+      stop = Status::kSolved;
+    } else if (it - progress_it >= kStagnation) {
+      stop = Status::kStalled;
+      res.message = "fb-soc: the residual did not halve in " + std::to_string(kStagnation) +
+                    " iterations (stagnation)";
+      ++it;
+      break;
+    }
   }
   res.iterations = it;
   res.z = best * sr;
