@@ -2,6 +2,7 @@
 
 #include "cpkit/lcp/auto_chain.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
+#include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
 
@@ -15,6 +16,7 @@ SolverRegistry build() {
   r.add(ipopt_entry());
   r.add(nlopt_entry());
   r.add(auto_entry());
+  r.add(prox_entry());
   // Each solver module adds its entry here, in the order of the automatic chain.
   return r;
 }
