@@ -2,6 +2,7 @@
 
 #include "cpkit/lcp/auto_chain.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
+#include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
@@ -16,7 +17,8 @@ SolverRegistry build() {
   r.add(ipopt_entry());
   r.add(nlopt_entry());
   r.add(auto_entry());
-  r.add(prox_entry());
+  r.add(friction::nsgs_entry());  // friction problems (issue 26)
+  r.add(friction::prox_entry());
   // Each solver module adds its entry here, in the order of the automatic chain.
   return r;
 }

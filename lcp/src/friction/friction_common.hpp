@@ -1,56 +1,36 @@
 #pragma once
-// Small helpers shared by h16's friction solvers (prox, faceted Lemke, Ipopt, solutions).
+// Internal helpers shared by h13's friction solvers (nsgs.cpp, fb_soc.cpp, auto.cpp).
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
-
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_problem.hpp"
-#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/options.hpp"
 
-namespace cpkit::lcp::detail {
+namespace cpkit::lcp::friction::detail {
 
-inline void check_problem(const FrictionContactProblem& p) {
-  throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
+/// Throws InputError for an invalid problem, options or warm start (size 3 n_c, finite).
+inline void check_input(const FrictionContactProblem& p, const CommonOptions& o,
+                        const Eigen::VectorXd& r0) {
+  const std::string ctx = "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'");
+  throw_if_invalid(p.validate(), ctx);
+  throw_if_invalid(o.validate(), "solver options");
+  if (r0.size() != 0 && (r0.size() != p.q.size() || !r0.allFinite()))
+    throw InputError("warm start r0 must have " + std::to_string(p.q.size()) +
+                     " finite entries (3 per contact), got " + std::to_string(r0.size()));
 }
 
 /// The 3x3 diagonal blocks W_ii.
 inline std::vector<Mat3> diagonal_blocks(const Eigen::SparseMatrix<double>& W) {
-  const Eigen::Index nc = W.cols() / 3;
-  std::vector<Mat3> D(static_cast<std::size_t>(nc), Mat3::Zero());
-  for (Eigen::Index c = 0; c < W.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(W, c); it; ++it)
-      if (it.row() / 3 == c / 3) D[c / 3](it.row() % 3, c % 3) = it.value();
-  return D;
-}
-
-/// W's own size: largest |W_kk|, else ||W||_max, else 1 (W = 0).
-inline double w_scale(const Eigen::SparseMatrix<double>& W, const FrictionUnits& units) {
-  double s = 0;
+  std::vector<Mat3> b(static_cast<size_t>(W.rows() / 3), Mat3::Zero());
   for (Eigen::Index k = 0; k < W.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(W, k); it; ++it)
-      if (it.row() == it.col()) s = std::max(s, std::abs(it.value()));
-  if (!(s > 0)) s = units.w_max;
-  return s > 0 ? s : 1.0;
-}
-
-/// u += W(:, c0..c0+2) d, allocation-free.
-inline void add_columns(const Eigen::SparseMatrix<double>& W, Eigen::Index c0, const Vec3& d,
-                        Eigen::VectorXd& u) {
-  for (int j = 0; j < 3; ++j) {
-    if (d[j] == 0) continue;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(W, c0 + j); it; ++it)
-      u[it.row()] += it.value() * d[j];
-  }
-}
-
-inline std::string short_number(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
+      if (it.row() / 3 == it.col() / 3)
+        b[static_cast<size_t>(it.row() / 3)](it.row() % 3, it.col() % 3) = it.value();
   return b;
 }
 
-}  // namespace cpkit::lcp::detail
+}  // namespace cpkit::lcp::friction::detail

@@ -12,9 +12,9 @@
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
-#include "friction_common.hpp"
+#include "friction_helpers.hpp"
 
-namespace cpkit::lcp {
+namespace cpkit::lcp::friction {
 
 std::string ProxOptions::validate(Eigen::Index n) const {
   if (const std::string e = common.validate(); !e.empty()) return e;
@@ -30,12 +30,12 @@ std::string ProxOptions::validate(Eigen::Index n) const {
 
 SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   Stopwatch clock;
-  detail::check_problem(p);
+  helpers::check_problem(p);
   const Eigen::Index nc = p.contacts(), n = 3 * nc;
   throw_if_invalid(o.validate(n), "prox options");
   const FrictionUnits units = friction_units(p);
-  const std::vector<Mat3> D = detail::diagonal_blocks(p.W);
-  const double w_scale = detail::w_scale(p.W, units);
+  const std::vector<Mat3> D = helpers::diagonal_blocks(p.W);
+  const double w_scale = helpers::w_scale(p.W, units);
   const double r_ref = (units.q_inf > 0 && units.w_max > 0) ? units.q_inf / units.w_max : 0.0;
   const int max_outer = o.common.max_iterations > 0 ? o.common.max_iterations : 500;
   const int max_sweeps = o.max_sweeps > 0 ? o.max_sweeps : 200;
@@ -98,7 +98,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
         const Vec3 dr = x - ri;
         if (dr.cwiseAbs().maxCoeff() > 0) {
           r.segment<3>(3 * i) = x;
-          detail::add_columns(p.W, 3 * i, dr, u);
+          helpers::add_columns(p.W, 3 * i, dr, u);
           change = std::max(change, dr.lpNorm<Eigen::Infinity>());
         }
       }
@@ -140,7 +140,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   out.message = "proximal point: " + std::to_string(out.iterations) + " outer iterations, " +
                 std::to_string(out.function_evals) + " Gauss-Seidel sweeps, " +
                 std::to_string(inner_failures) + " inner solves not converged, last alpha " +
-                detail::short_number(alpha / w_scale) + " w_scale";
+                helpers::short_number(alpha / w_scale) + " w_scale";
   out.seconds = clock.seconds();
   SolveResult res = finalize(p, std::move(out), o.common);
   res.seconds = clock.seconds();
@@ -163,4 +163,4 @@ SolverEntry prox_entry() {
   return e;
 }
 
-}  // namespace cpkit::lcp
+}  // namespace cpkit::lcp::friction

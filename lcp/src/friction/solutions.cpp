@@ -11,9 +11,9 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "friction_common.hpp"
+#include "friction_helpers.hpp"
 
-namespace cpkit::lcp {
+namespace cpkit::lcp::friction {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -57,7 +57,7 @@ std::string FrictionSolutionsOptions::validate() const {
 FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
                                        const FrictionSolutionsOptions& o) {
   Stopwatch clock;
-  detail::check_problem(p);
+  helpers::check_problem(p);
   throw_if_invalid(o.validate(), "friction solutions options");
   const Eigen::Index nc = p.contacts(), n = 3 * nc;
   const FrictionUnits units = friction_units(p);
@@ -105,4 +105,4 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   return set;
 }
 
-}  // namespace cpkit::lcp
+}  // namespace cpkit::lcp::friction

@@ -30,7 +30,7 @@
 #include "cpkit/core/registry.hpp"
 #include "cpkit/core/result.hpp"
 
-namespace cpkit::lcp {
+namespace cpkit::lcp::friction {
 
 struct ProxOptions {
   CommonOptions common;  ///< max_iterations: outer iterations (0: 500)
@@ -49,4 +49,4 @@ SolveResult solve_prox(const FrictionContactProblem& problem, const ProxOptions&
 /// Registry entry "prox" (friction problems only).
 SolverEntry prox_entry();
 
-}  // namespace cpkit::lcp
+}  // namespace cpkit::lcp::friction

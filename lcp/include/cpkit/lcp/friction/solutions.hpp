@@ -25,7 +25,7 @@
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/result.hpp"
 
-namespace cpkit::lcp {
+namespace cpkit::lcp::friction {
 
 struct FrictionSolutionSet {
   std::vector<SolveResult> solutions;  ///< distinct verified solutions, in the order found
@@ -46,4 +46,4 @@ struct FrictionSolutionsOptions {
 FrictionSolutionSet friction_solutions(const FrictionContactProblem& problem,
                                        const FrictionSolutionsOptions& options);
 
-}  // namespace cpkit::lcp
+}  // namespace cpkit::lcp::friction
