@@ -1,8 +1,6 @@
 // Proximal point method for frictional contact (prox.hpp).
 #include "cpkit/lcp/friction/prox.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +10,7 @@
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/friction/one_contact.hpp"
 #include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -24,7 +23,6 @@ std::string ProxOptions::validate(Eigen::Index n) const {
   if (!(sigma > 0) || !std::isfinite(sigma)) return "sigma must be positive and finite";
   if (!(nu >= 0) || !std::isfinite(nu)) return "nu must be >= 0 and finite";
   if (max_sweeps < 0) return "max_sweeps must be >= 0";
-  if (local_iterations < 1) return "local_iterations must be >= 1";
   return {};
 }
 
@@ -39,13 +37,6 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   const double r_ref = (units.q_inf > 0 && units.w_max > 0) ? units.q_inf / units.w_max : 0.0;
   const int max_outer = o.common.max_iterations > 0 ? o.common.max_iterations : 500;
   const int max_sweeps = o.max_sweeps > 0 ? o.max_sweeps : 200;
-  std::vector<double> lmax(static_cast<std::size_t>(nc));
-  for (Eigen::Index i = 0; i < nc; ++i) {
-    const Mat3 S = 0.5 * (D[i] + D[i].transpose());
-    Eigen::SelfAdjointEigenSolver<Mat3> es;
-    es.computeDirect(S, Eigen::EigenvaluesOnly);
-    lmax[i] = std::max(es.eigenvalues().maxCoeff(), 0.0);
-  }
 
   Eigen::VectorXd r = o.r0.size() ? o.r0 : Eigen::VectorXd::Zero(n);
   // Start inside the cones: the iteration keeps r there.
@@ -84,17 +75,10 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       for (Eigen::Index i = 0; i < nc; ++i) {
         const Vec3 ri = r.segment<3>(3 * i), rki = rk.segment<3>(3 * i);
         const Vec3 ui = u.segment<3>(3 * i);
-        const double rho = 1.0 / (lmax[i] + alpha);
-        const double mu = p.mu[i];
-        Vec3 x = ri;
-        const double xs = std::max(ri.lpNorm<Eigen::Infinity>(), r_ref);
-        for (int l = 0; l < o.local_iterations; ++l) {
-          const Vec3 ul = ui + D[i] * (x - ri) + alpha * (x - rki);
-          const Vec3 xn = project_on_cone(x - rho * de_saxce(ul, mu), mu);
-          const double dx = (xn - x).lpNorm<Eigen::Infinity>();
-          x = xn;
-          if (!(dx > 1e-3 * inner_tol * xs)) break;
-        }
+        // Contact i's problem of the regularised system, solved exactly (one_contact.hpp):
+        // u'_i = (W_ii + alpha I) x + b, b = u_i - W_ii r_i - alpha rk_i.
+        const Vec3 b = ui - D[i] * ri - alpha * rki;
+        const Vec3 x = one_contact_nearest(D[i] + alpha * Mat3::Identity(), b, p.mu[i], ri);
         const Vec3 dr = x - ri;
         if (dr.cwiseAbs().maxCoeff() > 0) {
           r.segment<3>(3 * i) = x;

@@ -13,9 +13,9 @@
 /// |diag W| (||W||_max when the diagonal is zero; 1 for W = 0), so that alpha has W's units;
 /// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha never drops
 /// below 1e-10 w_scale (a floor in W's units).
-/// Inner solver: block Gauss-Seidel over the contacts on the regularised problem; each contact's
-/// 3x3 problem by the projected fixed point r_i <- P_K(r_i - rho_i u_hat_i) (rho_i = 1 /
-/// lambda_max of the regularised block), a few local iterations per visit. The inner solve
+/// Inner solver: block Gauss-Seidel over the contacts on the regularised problem, each
+/// contact's 3x3 problem (block W_ii + alpha I) solved exactly by one_contact_nearest()
+/// (one_contact.hpp: the solution nearest the current r_i). The inner solve
 /// stops when a sweep changes r by at most max(e_k / 10, tol / 10) relative to the size of r
 /// (the internal tolerance adapted to the outer error, as PROX does).
 ///
@@ -38,7 +38,6 @@ struct ProxOptions {
   double sigma = 5;      ///< alpha = sigma e^nu w_scale (PROX's defaults sigma = 5, nu = 1)
   double nu = 1;
   int max_sweeps = 0;    ///< Gauss-Seidel sweeps per inner solve (0: 200)
-  int local_iterations = 20;  ///< projected fixed-point steps per contact visit
   /// Empty when usable for a problem with n = 3 n_c rows; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };
