@@ -2,6 +2,7 @@
 
 #include "cpkit/lcp/auto_chain.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
+#include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
@@ -12,7 +13,7 @@ namespace {
 
 SolverRegistry build() {
   SolverRegistry r;
-  r.add(lemke_entry());
+  r.add(friction::with_faceted_lemke(lemke_entry()));  // + friction problems, faceted cone
   r.add(fb_newton_entry());
   r.add(ipopt_entry());
   r.add(nlopt_entry());
