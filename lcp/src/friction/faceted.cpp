@@ -124,6 +124,7 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
   po.common = o.common;
   po.common.time_limit_s = o.common.time_limit_s - clock.seconds();
   po.r0 = faceted.z;
+  po.sigma = 1e-3;  // small proximal weight: the true solution near the faceted one
   SolveResult polished = solve_prox(p, po);
   const std::string head = faceted.message;
   SolveResult& best =

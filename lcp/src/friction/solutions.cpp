@@ -9,6 +9,8 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_helpers.hpp"
@@ -18,6 +20,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDistinct = 1e-6;
+// The enumeration route's faceting: 4 facets keep the LCP at 6 unknowns per contact, which is
+// what complete enumeration can afford (8 facets: the 4-contact box of the tests did not finish
+// in 60 s); the regularisation makes a stick contact's facet weights unique (faceted.hpp).
+constexpr int kEnumerationFacets = 4;
+constexpr double kEnumerationRegularisation = 1e-8;
+// Polishing a faceted solution wants the true solution NEAR it: a small proximal weight keeps
+// each step close to the original problem (PROX's sigma = 5 lets early steps wander).
+constexpr double kPolishSigma = 1e-3;
 
 // 53-bit uniform in [0, 1): the same sequence on every platform (std::uniform_real_distribution
 // is not specified bit for bit).
@@ -67,6 +77,48 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
 
   CommonOptions local = o.common;
   auto remaining = [&] { return o.common.time_limit_s - clock.seconds(); };
+  std::string faceted_note;
+  // 0. Small problems: every solution of the (regularised) faceted problem, each polished on
+  //    the true cone.
+  const int k = kEnumerationFacets;
+  if (nc >= 1 && nc <= o.max_enumeration_contacts && nc * (k + 2) <= kMaxEnumerationSize) {
+    const FacetedSolutionList fs = faceted_solutions(
+        p, k, kEnumerationRegularisation, std::min(20.0, std::max(0.0, remaining() / 2)));
+    for (const Eigen::VectorXd& r : fs.r) {
+      if (remaining() <= 0) break;
+      SolveResult claim;
+      claim.solver = "faceted-enumeration";
+      claim.z = r;
+      SolveResult exact = finalize(p, claim, o.common);
+      if (exact.status == Status::kSolved) {
+        exact.message = "a faceted solution that is exact on the true cone";
+        col.add(std::move(exact));
+        continue;
+      }
+      ProxOptions po;
+      po.common = o.common;
+      po.common.time_limit_s = remaining();
+      po.r0 = r;
+      po.sigma = kPolishSigma;
+      SolveResult s = solve_prox(p, po);
+      s.solver = "faceted-enumeration+prox";
+      s.message = "polished by prox from a faceted solution; " + s.message;
+      col.add(std::move(s));
+    }
+    faceted_note =
+        "faceted problem (" + std::to_string(k) + " facets, facet error " +
+        helpers::short_number(100 * fs.faceted.facet_error) + " %, regularised by " +
+        helpers::short_number(kEnumerationRegularisation) + " w_scale on the force diagonal; LCP of " +
+        std::to_string(fs.faceted.lcp.size()) + " unknowns): " + std::to_string(fs.extreme) +
+        " extreme LCP solutions, " + std::to_string(fs.r.size()) + " distinct r, enumeration " +
+        (fs.complete ? "complete for the faceted problem" : "NOT complete (" + fs.message + ")") +
+        (fs.infinite ? ", with continua (listed by their vertices)" : "") + "; " +
+        std::to_string(col.verified) + " of them verified on the true cone (exact or polished); "
+        "complete for the faceted problem is not complete for the true cone; ";
+  } else if (nc > o.max_enumeration_contacts) {
+    faceted_note = std::to_string(nc) + " contacts > max_enumeration_contacts = " +
+                   std::to_string(o.max_enumeration_contacts) + ": no enumeration; ";
+  }
   // 1. Every registered friction solver once (its own start), except chains.
   for (const SolverEntry& e : solvers().entries()) {
     if (!e.solve_fc || e.info.name == "auto") continue;
@@ -95,7 +147,7 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
   set.complete = false;
-  set.message = "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
+  set.message = faceted_note + "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
                 "solvers once, proximal point from " + std::to_string(runs) +
                 " seeded starts, seed " + std::to_string(o.seed) + "), " +
                 std::to_string(col.verified) + " verified, " +

@@ -50,7 +50,8 @@ FacetedLcp faceted_lcp(const FrictionContactProblem& problem, int facets);
 struct FacetedLemkeOptions {
   CommonOptions common;  ///< tol: the verdict on the TRUE problem; max_iterations: Lemke's pivots
   int facets = 8;        ///< k >= 3
-  /// Polish the faceted answer on the true cone with the proximal point method (prox.hpp)
+  /// Polish the faceted answer on the true cone with the proximal point method (prox.hpp,
+  /// sigma = 1e-3: small proximal weights keep it near the faceted answer)
   /// started from it, and return the polished r when the verdict accepts it.
   bool polish = true;
   Eigen::VectorXd covering;  ///< Lemke's covering vector (empty: all ones), n_c (k + 2)
@@ -69,5 +70,31 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& problem,
 /// `entry` (the LCP "lemke" entry) with solve_fc set to solve_faceted_lemke (default options,
 /// polished): "lemke" then accepts friction problems too.
 SolverEntry with_faceted_lemke(SolverEntry entry);
+
+}  // namespace cpkit::lcp::friction
+
+namespace cpkit::lcp::friction {
+
+/// Every solution of the faceted problem, by complete enumeration of its LCP (enumerate.hpp),
+/// as distinct r. `regularisation` (>= 0, relative to W's size: the largest |W_kk|) is added to
+/// the diagonal of the LCP's r_N and beta rows: with it a stick contact's facet weights are
+/// unique (without it they form a (k - 2)-dimensional polytope for ONE r, which the
+/// enumeration has to walk). The list then belongs to the regularised faceted problem (its
+/// solutions move by O(regularisation) relative to the faceted ones). Enumeration costs up to
+/// 2^(n_c (k + 2)) bases: only small problems finish (measured: 2 contacts, k = 4: ms; the
+/// 4-contact rigid box of the tests: ~60 s; friction_solutions() gives it at most 20 s).
+struct FacetedSolutionList {
+  FacetedLcp faceted;               ///< the (regularised) LCP enumerated
+  std::vector<Eigen::VectorXd> r;   ///< its solutions in r = G z, distinct (unit-free, 1e-6)
+  int extreme = 0;                  ///< extreme LCP solutions (several may share one r)
+  bool complete = false;            ///< the LCP enumeration was complete (faceted problem only)
+  bool infinite = false;            ///< the LCP's set has pieces of positive dimension
+  std::string message;              ///< the enumeration's account when not complete
+};
+
+/// Throws InputError on an invalid problem, facets outside [3, 64], n_c (k + 2) > 64 or a
+/// negative regularisation.
+FacetedSolutionList faceted_solutions(const FrictionContactProblem& problem, int facets,
+                                      double regularisation, double time_limit_s);
 
 }  // namespace cpkit::lcp::friction
