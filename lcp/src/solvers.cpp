@@ -3,6 +3,7 @@
 #include "cpkit/lcp/auto_chain.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
+#include "cpkit/lcp/friction/ipopt_fc.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
@@ -15,7 +16,7 @@ SolverRegistry build() {
   SolverRegistry r;
   r.add(friction::with_faceted_lemke(lemke_entry()));  // + friction problems, faceted cone
   r.add(fb_newton_entry());
-  r.add(ipopt_entry());
+  r.add(friction::with_ipopt_fc(ipopt_entry()));  // + friction problems (MPCC)
   r.add(nlopt_entry());
   r.add(auto_entry());
   r.add(friction::nsgs_entry());  // friction problems (issue 26)

@@ -1,6 +1,6 @@
 // Tests of friction_solutions() (friction/solutions.hpp). Expected values: closed forms
 // (friction_examples.hpp), the rigid box's equilibrium (Newton's law: H r = -f at rest), and
-// every listed r re-checked by the independent De Saxce check of friction_check.hpp.
+// every listed r re-checked by the independent check violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -9,7 +9,6 @@
 #include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/friction/one_contact.hpp"
 #include "cpkit/lcp/friction/solutions.hpp"
-#include "friction_check.hpp"
 #include "friction_examples.hpp"
 
 namespace {
@@ -41,7 +40,7 @@ TEST_CASE("solutions: a rigid box on 4 corners has a continuum: distinct verifie
   f[2] = -box.h * box.m * box.g;
   for (const auto& s : set.solutions) {
     CHECK(s.status == Status::kSolved);
-    CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, s.z) <= 1e-8);
+    CHECK(cpkit::test::violation(p, s.z) <= 1e-8);
     CHECK((H * s.z + f).lpNorm<Eigen::Infinity>() <= 1e-8 * box.h * box.m * box.g);
   }
   for (std::size_t i = 0; i < set.solutions.size(); ++i)
@@ -175,5 +174,5 @@ TEST_CASE("solutions: every exact one-contact solution is found and verified",
     CHECK(best <= 1e-8);
   }
   for (const auto& s : set.solutions)
-    CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, s.z) <= 1e-8);
+    CHECK(cpkit::test::violation(p, s.z) <= 1e-8);
 }
