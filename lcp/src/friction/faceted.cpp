@@ -107,8 +107,9 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
     return res;
   }
   claim.z = f.G * lcp.z;
-  claim.status = Status::kStalled;  // not claimed: the faceted answer is only a candidate
+  claim.status = Status::kNotRun;  // not claimed: the faceted answer is only a candidate
   SolveResult faceted = finalize(p, claim, o.common);
+  if (faceted.status == Status::kNotRun) faceted.status = Status::kStalled;
   const FrictionErrors fe = friction_errors(p, faceted.z);
   faceted.message = "the faceted answer (" + facets + ", " + std::to_string(lcp.iterations) +
                     " pivots) on the true cone: unit-free error " +

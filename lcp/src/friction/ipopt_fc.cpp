@@ -157,13 +157,15 @@ SolveResult solve_ipopt_fc(const FrictionContactProblem& p, const IpoptFcOptions
   const MpccResult mr = solve_mpcc(m, mo);
   out.z = mr.x.size() == n ? Eigen::VectorXd(R * mr.x.head(n3)) : Eigen::VectorXd();
   // The MPCC's own verdict is in its unit-free variables; only finalize() decides.
-  out.status = mr.status == Status::kTimeLimit ? Status::kTimeLimit : Status::kStalled;
+  out.status = Status::kNotRun;  // no claim: finalize() decides
   out.iterations = mr.iterations;
   out.message = "MPCC of the true cone by Ipopt (" + std::to_string(mr.subproblems.size()) +
                 " NLPs, " + std::to_string(mr.iterations) + " iterations" +
                 (mr.stopped_early ? ", stopped at the first verified iterate" : "") +
                 "): " + std::string(to_string(mr.status)) + (mr.message.empty() ? "" : ", " + mr.message);
   SolveResult res = out.z.size() ? finalize(p, std::move(out), o.common) : out;
+  if (res.status == Status::kNotRun)
+    res.status = mr.status == Status::kTimeLimit ? Status::kTimeLimit : Status::kStalled;
   res.seconds = clock.seconds();
   return res;
 }

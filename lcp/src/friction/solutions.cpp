@@ -20,10 +20,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDistinct = 1e-6;
-// The enumeration route's faceting: 4 facets keep the LCP at 6 unknowns per contact, which is
-// what complete enumeration can afford (8 facets: the 4-contact box of the tests did not finish
-// in 60 s); the regularisation makes a stick contact's facet weights unique (faceted.hpp).
-constexpr int kEnumerationFacets = 4;
+// The enumeration route's faceting: complete enumeration costs up to 2^(n_c (k + 2)) bases, so
+// the pyramid is coarse: 4 facets up to 3 contacts, 3 facets (a triangle, facet error 50 %)
+// beyond. Measured (Rover1039, 4 contacts): 4 facets did not finish in 10 s, 3 facets 0.7 s;
+// Rover3865 (5 contacts) does not finish with 3 either (8 facets: not even the 4-contact box
+// in 60 s). The faceted solutions are only starting points of the polish on the true cone.
+inline int enumeration_facets(Eigen::Index nc) { return nc <= 3 ? 4 : 3; }
+constexpr double kEnumerationSeconds = 10;
 constexpr double kEnumerationRegularisation = 1e-8;
 // Polishing a faceted solution wants the true solution NEAR it: a small proximal weight keeps
 // each step close to the original problem (PROX's sigma = 5 lets early steps wander).
@@ -80,10 +83,10 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   std::string faceted_note;
   // 0. Small problems: every solution of the (regularised) faceted problem, each polished on
   //    the true cone.
-  const int k = kEnumerationFacets;
+  const int k = enumeration_facets(nc);
   if (nc >= 1 && nc <= o.max_enumeration_contacts && nc * (k + 2) <= kMaxEnumerationSize) {
     const FacetedSolutionList fs = faceted_solutions(
-        p, k, kEnumerationRegularisation, std::min(20.0, std::max(0.0, remaining() / 2)));
+        p, k, kEnumerationRegularisation, std::min(kEnumerationSeconds, std::max(0.0, remaining() / 2)));
     for (const Eigen::VectorXd& r : fs.r) {
       if (remaining() <= 0) break;
       SolveResult claim;
