@@ -11,6 +11,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
+#include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_helpers.hpp"
@@ -130,8 +131,10 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     SolveResult r = e.solve_fc(p, local);
     col.add(std::move(r));
   }
-  // 2. Proximal point from seeded starts in the cones, of the data's own size r_ref:
-  //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N.
+  // 2. NSGS and proximal point from seeded starts in the cones, of the data's own size r_ref:
+  //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N. NSGS stays near
+  //    its start (each contact takes its solution nearest the current r_i); PROX's large early
+  //    proximal steps reach farther.
   std::mt19937_64 gen(o.seed);
   int runs = 0;
   for (int k = 0; k < o.starts; ++k) {
@@ -146,12 +149,18 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
       po.r0.segment<3>(3 * i) = Vec3(rn, rad * std::cos(th), rad * std::sin(th));
     }
     ++runs;
+    NsgsOptions no;
+    no.common = po.common;
+    no.r0 = po.r0;
+    col.add(solve_nsgs(p, no));
+    if (remaining() <= 0) break;
+    po.common.time_limit_s = remaining();
     col.add(solve_prox(p, po));
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
   set.complete = false;
   set.message = faceted_note + "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
-                "solvers once, proximal point from " + std::to_string(runs) +
+                "solvers once, nsgs and prox from " + std::to_string(runs) +
                 " seeded starts, seed " + std::to_string(o.seed) + "), " +
                 std::to_string(col.verified) + " verified, " +
                 std::to_string(set.solutions.size()) +
