@@ -29,9 +29,6 @@ constexpr double kDistinct = 1e-6;
 inline int enumeration_facets(Eigen::Index nc) { return nc <= 3 ? 4 : 3; }
 constexpr double kEnumerationSeconds = 10;
 constexpr double kEnumerationRegularisation = 1e-8;
-// Polishing a faceted solution wants the true solution NEAR it: a small proximal weight keeps
-// each step close to the original problem (PROX's sigma = 5 lets early steps wander).
-constexpr double kPolishSigma = 1e-3;
 
 // 53-bit uniform in [0, 1): the same sequence on every platform (std::uniform_real_distribution
 // is not specified bit for bit).
@@ -99,14 +96,11 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
         col.add(std::move(exact));
         continue;
       }
-      ProxOptions po;
-      po.common = o.common;
-      po.common.time_limit_s = remaining();
-      po.r0 = r;
-      po.sigma = kPolishSigma;
-      SolveResult s = solve_prox(p, po);
-      s.solver = "faceted-enumeration+prox";
-      s.message = "polished by prox from a faceted solution; " + s.message;
+      CommonOptions pc = o.common;
+      pc.time_limit_s = remaining();
+      SolveResult s = polish_on_true_cone(p, r, pc);
+      s.solver = "faceted-enumeration+polish";
+      s.message = "polished from a faceted solution; " + s.message;
       col.add(std::move(s));
     }
     faceted_note =

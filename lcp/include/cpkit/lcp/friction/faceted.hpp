@@ -50,8 +50,8 @@ FacetedLcp faceted_lcp(const FrictionContactProblem& problem, int facets);
 struct FacetedLemkeOptions {
   CommonOptions common;  ///< tol: the verdict on the TRUE problem; max_iterations: Lemke's pivots
   int facets = 8;        ///< k >= 3
-  /// Polish the faceted answer on the true cone with the proximal point method (prox.hpp,
-  /// sigma = 1e-3: small proximal weights keep it near the faceted answer)
+  /// Polish the faceted answer on the true cone (polish_on_true_cone()) when the verdict does
+  /// not accept it as it is
   /// started from it, and return the polished r when the verdict accepts it.
   bool polish = true;
   Eigen::VectorXd covering;  ///< Lemke's covering vector (empty: all ones), n_c (k + 2)
@@ -66,6 +66,14 @@ struct FacetedLemkeOptions {
 /// an invalid problem or options.
 SolveResult solve_faceted_lemke(const FrictionContactProblem& problem,
                                 const FacetedLemkeOptions& options = {});
+
+/// The solution of the TRUE problem near a candidate r0 (a faceted answer): prox from r0 with
+/// Gauss-Seidel inner solves and sigma = 1e-3 (small proximal weights and nearest one-contact
+/// solutions keep each step near the previous iterate; at most 40 x 50 sweeps), then, when
+/// that is not verified, fb-soc from r0. Returns the first kSolved result, else the one with
+/// the smaller residual; solver = "polish".
+SolveResult polish_on_true_cone(const FrictionContactProblem& problem, const Eigen::VectorXd& r0,
+                                const CommonOptions& options);
 
 /// `entry` (the LCP "lemke" entry) with solve_fc set to solve_faceted_lemke (default options,
 /// polished): "lemke" then accepts friction problems too.
