@@ -11,6 +11,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
+#include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -28,6 +29,7 @@ constexpr double kDistinct = 1e-6;
 // in 60 s). The faceted solutions are only starting points of the polish on the true cone.
 inline int enumeration_facets(Eigen::Index nc) { return nc <= 3 ? 4 : 3; }
 constexpr double kEnumerationSeconds = 10;
+constexpr Eigen::Index kIpoptContacts = 10;
 constexpr double kEnumerationRegularisation = 1e-8;
 
 // 53-bit uniform in [0, 1): the same sequence on every platform (std::uniform_real_distribution
@@ -117,15 +119,22 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     faceted_note = std::to_string(nc) + " contacts > max_enumeration_contacts = " +
                    std::to_string(o.max_enumeration_contacts) + ": no enumeration; ";
   }
-  // 1. Every registered friction solver once (its own start), except chains.
+  // 1. Every registered friction solver once (its own start), except chains; each gets at
+  //    most a fair share of the remaining time (the seeded phase counting as one more), so
+  //    that one slow solver (NSGS on a rank-deficient stack) cannot starve the others.
+  std::vector<const SolverEntry*> first;
   for (const SolverEntry& e : solvers().entries()) {
     if (!e.solve_fc || e.info.name == "auto") continue;
-    if (remaining() <= 0) break;
-    local.time_limit_s = remaining();
-    SolveResult r = e.solve_fc(p, local);
-    col.add(std::move(r));
+    // Ipopt's dense MPCC is the slow fallback (52 contacts: no answer in 20 s): small only.
+    if (e.info.name == "ipopt" && nc > kIpoptContacts) continue;
+    first.push_back(&e);
   }
-  // 2. NSGS and proximal point from seeded starts in the cones, of the data's own size r_ref:
+  for (std::size_t j = 0; j < first.size(); ++j) {
+    if (remaining() <= 0) break;
+    local.time_limit_s = remaining() / static_cast<double>(first.size() - j + 1);
+    col.add(first[j]->solve_fc(p, local));
+  }
+  // 2. NSGS, fb-soc and proximal point from seeded starts in the cones, of the data's own size r_ref:
   //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N. NSGS stays near
   //    its start (each contact takes its solution nearest the current r_i); PROX's large early
   //    proximal steps reach farther.
@@ -148,13 +157,19 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     no.r0 = po.r0;
     col.add(solve_nsgs(p, no));
     if (remaining() <= 0) break;
+    FbSocOptions fo;
+    fo.common = po.common;
+    fo.common.time_limit_s = remaining();
+    fo.r0 = po.r0;
+    col.add(solve_fb_soc(p, fo));
+    if (remaining() <= 0) break;
     po.common.time_limit_s = remaining();
     col.add(solve_prox(p, po));
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
   set.complete = false;
   set.message = faceted_note + "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
-                "solvers once, nsgs and prox from " + std::to_string(runs) +
+                "solvers once (ipopt only up to " + std::to_string(kIpoptContacts) + " contacts), nsgs, fb-soc and prox from " + std::to_string(runs) +
                 " seeded starts, seed " + std::to_string(o.seed) + "), " +
                 std::to_string(col.verified) + " verified, " +
                 std::to_string(set.solutions.size()) +
