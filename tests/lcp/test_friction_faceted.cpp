@@ -100,3 +100,20 @@ TEST_CASE("faceted Lemke: rank-deficient box, registry, refusals", "[friction][f
   bad.facets = 2;
   CHECK_THROWS_AS(solve_faceted_lemke(p, bad), cpkit::InputError);
 }
+
+TEST_CASE("faceted Lemke: the same answer in other units", "[friction][faceted]") {
+  const std::vector<DiagContact> cs = {{2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},
+                                       {1.0, 4.0, 0.2, Eigen::Vector3d(-1.0, 6.0, 8.0)}};
+  Eigen::VectorXd expect(6);
+  expect << cpkit::test::diagonal_closed_form(cs[0]), cpkit::test::diagonal_closed_form(cs[1]);
+  for (const double a : {1e-10, 1e10})
+    for (const double b : {1e-8, 1e8}) {
+      auto p = cpkit::test::diagonal_problem(cs);
+      p.q *= a * b;  // r -> a r
+      p.W *= b;
+      const auto res = solve_faceted_lemke(p);
+      INFO("a = " << a << ", b = " << b << ": " << res.message);
+      REQUIRE(res.status == Status::kSolved);
+      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <= 1e-8 * expect.lpNorm<Eigen::Infinity>());
+    }
+}

@@ -176,3 +176,27 @@ TEST_CASE("solutions: every exact one-contact solution is found and verified",
   for (const auto& s : set.solutions)
     CHECK(cpkit::test::violation(p, s.z) <= 1e-8);
 }
+
+TEST_CASE("solutions: the same three solutions in other units", "[friction][solutions]") {
+  const auto base = three_solution_contact(false);
+  const Eigen::Matrix3d W = Eigen::MatrixXd(base.W);
+  const auto exact = cpkit::lcp::friction::one_contact_solutions(W, base.q.head<3>(), base.mu[0]);
+  REQUIRE(exact.count == 3);
+  for (const double a : {1e-9, 1e9})
+    for (const double b : {1e-6, 1e6}) {
+      auto p = base;
+      p.q *= a * b;  // r -> a r
+      p.W *= b;
+      FrictionSolutionsOptions o;
+      o.starts = 4;
+      const auto set = friction_solutions(p, o);
+      INFO("a = " << a << ", b = " << b << ": " << set.message);
+      REQUIRE(set.solutions.size() == 3);
+      for (int i = 0; i < exact.count; ++i) {
+        double best = 1e300;
+        for (const auto& s : set.solutions)
+          best = std::min(best, rel_distance(s.z / a, exact.r[i]));
+        CHECK(best <= 1e-8);
+      }
+    }
+}
