@@ -31,6 +31,12 @@ if(NOT TARGET simdjson::simdjson)
   message(FATAL_ERROR "simdjson not found: install the Debian package 'libsimdjson-dev'")
 endif()
 
+# fclib: reader and writer of FCLIB frictional contact problems (HDF5; brings HDF5 with it).
+find_package(fclib QUIET CONFIG)
+if(NOT TARGET FCLIB::fclib)
+  message(FATAL_ERROR "fclib not found: install the Debian package 'libfclib-dev'")
+endif()
+
 if(CPKIT_BUILD_APPS)
   find_package(CLI11 CONFIG QUIET)
   if(NOT TARGET CLI11::CLI11)
