@@ -31,10 +31,12 @@ if(NOT TARGET simdjson::simdjson)
   message(FATAL_ERROR "simdjson not found: install the Debian package 'libsimdjson-dev'")
 endif()
 
-# fclib: reader and writer of FCLIB frictional contact problems (HDF5; brings HDF5 with it).
-find_package(fclib QUIET CONFIG)
-if(NOT TARGET FCLIB::fclib)
-  message(FATAL_ERROR "fclib not found: install the Debian package 'libfclib-dev'")
+# fclib: reader and writer of FCLIB frictional contact problems (HDF5). Found through its
+# pkg-config file (which brings HDF5's): its CMake package (find_package(fclib CONFIG)) calls
+# FindHDF5 with the C language, which this C++-only project (and its consumers) do not enable.
+pkg_check_modules(FCLIB QUIET IMPORTED_TARGET GLOBAL fclib)
+if(NOT FCLIB_FOUND)
+  message(FATAL_ERROR "fclib not found via pkg-config: install the Debian package 'libfclib-dev'")
 endif()
 
 if(CPKIT_BUILD_APPS)
