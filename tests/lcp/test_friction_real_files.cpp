@@ -4,7 +4,9 @@
 // physics of the file is not assumed; files are read by the test's own reader (friction_dat.hpp).
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "cpkit/core/friction_verdict.hpp"
@@ -72,4 +74,29 @@ TEST_CASE("real files: BoxesStack1 (52 contacts, rank 78 of 156) has distinct ve
   std::cout << "BoxesStack1: " << set.solutions.size()
             << " distinct verified solutions, largest relative difference " << widest << "\n";
   CHECK(widest > 0.1);  // not rounding: the solutions differ in the first digits
+}
+
+TEST_CASE("real files: prox solves every local Siconos .dat file", "[friction][real]") {
+  // The FCLIB HDF5 files are read by cpkit's reader only (h12's tests); this test reads the
+  // .dat ones by its own route.
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(kDir)) {
+    if (e.path().extension() != ".dat") continue;
+    ++files;
+    const std::string path = e.path().string();
+    const auto p = cpkit::test::read_dat(path);
+    INFO(path << " (" << p.contacts() << " contacts)");
+    cpkit::lcp::friction::ProxOptions o;
+    o.common.tol = 1e-8;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = cpkit::lcp::friction::solve_prox(p, o);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::cout << e.path().filename().string() << ": " << p.contacts() << " contacts, prox "
+              << cpkit::to_string(r.status) << " in " << s << " s, unit-free "
+              << r.residuals.natural << "\n";
+    INFO(r.message);
+    CHECK(r.status == Status::kSolved);
+    CHECK(cpkit::test::violation(p, r.z) <= 1e-6);
+  }
+  CHECK(files == 10);  // the .dat files of tests/data/fclib/local (MANIFEST.txt)
 }
