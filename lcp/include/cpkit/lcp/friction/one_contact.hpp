@@ -11,7 +11,7 @@
 /// Slip: with d = (cos phi, sin phi), the normal row gives r_N = -b_N / (W e)_N, e = (1, -mu d),
 /// and the tangential rows must be parallel to d: (-b_N (W e)_T + (W e)_N b_T) x d = 0, a
 /// trigonometric polynomial of degree 2 in phi, i.e. z^2 f = a polynomial of degree 4 in
-/// z = e^{i phi}: its roots on the unit circle (companion matrix eigenvalues, refined by Newton's
+/// z = e^{i phi}: its roots on the unit circle (Aberth-Ehrlich iteration, refined by Newton's
 /// method in phi) are the candidate slip directions, at most 4. mu = 0 is solved directly
 /// (r = (max(0, -b_N / W_NN), 0, 0) when W_NN > 0).
 /// Every candidate is kept when its natural-map residual, in the local units
