@@ -67,7 +67,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
     }
     const double ec = std::isfinite(e) ? std::min(e, 1.0) : 1.0;
     alpha = failed ? 10 * alpha : o.sigma * std::pow(ec, o.nu) * w_scale;
-    alpha = std::max(alpha, 1e-10 * w_scale);
+    alpha = std::clamp(alpha, 1e-10 * w_scale, 1e10 * w_scale);  // floor and cap in W's units
     rk = r;
     u = p.W * r + p.q;  // fresh each outer step: no drift of the incremental updates
     const double inner_tol = std::max(ec / 10, o.common.tol / 10);

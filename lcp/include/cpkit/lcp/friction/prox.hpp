@@ -11,8 +11,8 @@
 /// alpha_k (PROX's rule, made unit-free): alpha_k = sigma e_k^nu w_scale, with e_k the verdict's
 /// unit-free error of r_k (friction_verdict.hpp, capped at 1) and w_scale the largest entry of
 /// |diag W| (||W||_max when the diagonal is zero; 1 for W = 0), so that alpha has W's units;
-/// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha never drops
-/// below 1e-10 w_scale (a floor in W's units).
+/// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha stays in
+/// [1e-10, 1e10] w_scale (a floor and a cap in W's units).
 /// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised problem, each
 /// contact's 3x3 problem (block W_ii + alpha I) solved exactly by one_contact_nearest()
 /// (one_contact.hpp: the solution nearest the current r_i). The inner solve
