@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
@@ -28,7 +29,7 @@ constexpr double kDistinct = 1e-6;
 // Rover3865 (5 contacts) does not finish with 3 either (8 facets: not even the 4-contact box
 // in 60 s). The faceted solutions are only starting points of the polish on the true cone.
 inline int enumeration_facets(Eigen::Index nc) { return nc <= 3 ? 4 : 3; }
-constexpr double kEnumerationSeconds = 10;
+constexpr double kEnumerationSeconds = 5;
 constexpr Eigen::Index kIpoptContacts = 10;
 constexpr double kEnumerationRegularisation = 1e-8;
 
@@ -123,6 +124,7 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   //    most a fair share of the remaining time (the seeded phase counting as one more), so
   //    that one slow solver (NSGS on a rank-deficient stack) cannot starve the others.
   std::vector<const SolverEntry*> first;
+  std::set<std::string> failed_first;
   for (const SolverEntry& e : solvers().entries()) {
     if (!e.solve_fc || e.info.name == "auto") continue;
     // Ipopt's dense MPCC is the slow fallback (52 contacts: no answer in 20 s): small only.
@@ -132,8 +134,13 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   for (std::size_t j = 0; j < first.size(); ++j) {
     if (remaining() <= 0) break;
     local.time_limit_s = remaining() / static_cast<double>(first.size() - j + 1);
-    col.add(first[j]->solve_fc(p, local));
+    SolveResult r = first[j]->solve_fc(p, local);
+    if (r.status != Status::kSolved) failed_first.insert(first[j]->info.name);
+    col.add(std::move(r));
   }
+  // A solver that failed from its own start on this problem is not run from the seeds (NSGS
+  // on a rank-deficient stack would spend its 2000 sweeps at every start).
+  const bool seed_nsgs = !failed_first.count("nsgs"), seed_fb = !failed_first.count("fb-soc");
   // 2. NSGS, fb-soc and proximal point from seeded starts in the cones, of the data's own size r_ref:
   //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N. NSGS stays near
   //    its start (each contact takes its solution nearest the current r_i); PROX's large early
@@ -152,17 +159,21 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
       po.r0.segment<3>(3 * i) = Vec3(rn, rad * std::cos(th), rad * std::sin(th));
     }
     ++runs;
-    NsgsOptions no;
-    no.common = po.common;
-    no.r0 = po.r0;
-    col.add(solve_nsgs(p, no));
-    if (remaining() <= 0) break;
-    FbSocOptions fo;
-    fo.common = po.common;
-    fo.common.time_limit_s = remaining();
-    fo.r0 = po.r0;
-    col.add(solve_fb_soc(p, fo));
-    if (remaining() <= 0) break;
+    if (seed_nsgs) {
+      NsgsOptions no;
+      no.common = po.common;
+      no.r0 = po.r0;
+      col.add(solve_nsgs(p, no));
+      if (remaining() <= 0) break;
+    }
+    if (seed_fb) {
+      FbSocOptions fo;
+      fo.common = po.common;
+      fo.common.time_limit_s = remaining();
+      fo.r0 = po.r0;
+      col.add(solve_fb_soc(p, fo));
+      if (remaining() <= 0) break;
+    }
     po.common.time_limit_s = remaining();
     col.add(solve_prox(p, po));
   }
@@ -170,7 +181,12 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   set.complete = false;
   set.message = faceted_note + "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
                 "solvers once (ipopt only up to " + std::to_string(kIpoptContacts) + " contacts), nsgs, fb-soc and prox from " + std::to_string(runs) +
-                " seeded starts, seed " + std::to_string(o.seed) + "), " +
+                " seeded starts, seed " + std::to_string(o.seed) +
+                (seed_nsgs && seed_fb ? std::string()
+                                      : std::string("; not from the seeds: ") +
+                                            (seed_nsgs ? "" : "nsgs ") + (seed_fb ? "" : "fb-soc ") +
+                                            "(failed from their own start)") +
+                "), " +
                 std::to_string(col.verified) + " verified, " +
                 std::to_string(set.solutions.size()) +
                 " distinct; complete: false (a solution no start led to is not found)";

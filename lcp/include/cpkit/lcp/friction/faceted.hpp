@@ -91,7 +91,7 @@ namespace cpkit::lcp::friction {
 /// solutions move by O(regularisation) relative to the faceted ones). Enumeration costs up to
 /// 2^(n_c (k + 2)) bases: only small problems finish (measured: 2 contacts, k = 4: ms; the
 /// 4-contact rigid box of the tests, k = 4: ~60 s; k = 8 does not finish for 4 contacts).
-/// friction_solutions() uses k = 4 up to 3 contacts, k = 3 beyond, and at most 10 s.
+/// friction_solutions() uses k = 4 up to 3 contacts, k = 3 beyond, and at most 5 s.
 struct FacetedSolutionList {
   FacetedLcp faceted;               ///< the (regularised) LCP enumerated
   std::vector<Eigen::VectorXd> r;   ///< its solutions in r = G z, distinct (unit-free, 1e-6)
