@@ -117,3 +117,16 @@ TEST_CASE("faceted Lemke: the same answer in other units", "[friction][faceted]"
       CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <= 1e-8 * expect.lpNorm<Eigen::Infinity>());
     }
 }
+
+TEST_CASE("faceted Lemke: an infeasible problem is reported, never solved", "[friction][faceted]") {
+  // W = 0, q_N = -1: u_N = -1 < 0 for every r (hand check): no solution.
+  cpkit::FrictionContactProblem p;
+  p.W.resize(3, 3);
+  p.q = Eigen::Vector3d(-1, 0.2, 0);
+  p.mu = Eigen::VectorXd::Constant(1, 0.5);
+  const auto res = solve_faceted_lemke(p);
+  INFO(res.message);
+  CHECK_FALSE(cpkit::is_solution(res.status));
+  CHECK(res.status != Status::kInfeasible);  // no certificate for the true cone
+  CHECK(res.message.find("faceted problem has no solution") != std::string::npos);
+}

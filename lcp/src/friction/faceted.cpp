@@ -101,6 +101,15 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
     claim.status = lcp.status;
     claim.message = "Lemke on the faceted cone (" + facets + ") ended with " +
                     std::string(to_string(lcp.status)) + ": " + lcp.message;
+    if (lcp.status == Status::kInfeasible) {
+      // Lemke's certificate proves the FACETED problem infeasible; K_k is inside K_mu, so this
+      // says nothing certain about the true cone: reported, never granted as kInfeasible.
+      claim.status = Status::kStalled;
+      claim.message += "; the faceted problem has no solution (certificate checked for the "
+                       "faceted LCP), which proves nothing for the true cone";
+      claim.seconds = clock.seconds();
+      return claim;
+    }
     claim.z = lcp.z.size() == f.lcp.size() ? Eigen::VectorXd(f.G * lcp.z) : Eigen::VectorXd();
     SolveResult res = claim.z.size() ? finalize(p, claim, o.common) : claim;
     if (is_solution(res.status)) res.message += "; the true verdict accepts this r";
