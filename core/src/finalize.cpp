@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "finalize_decide.hpp"
 
 namespace cpkit {
 namespace {
@@ -15,6 +16,10 @@ std::string fmt(double v) {
   s << v;
   return s.str();
 }
+
+}  // namespace
+
+namespace detail {
 
 void append(std::string& message, const std::string& text) {
   if (!message.empty()) message += "; ";
@@ -55,7 +60,11 @@ bool usable_point(SolveResult& r, Eigen::Index n, bool claimed_solution) {
   return false;
 }
 
-}  // namespace
+}  // namespace detail
+
+using detail::append;
+using detail::decide;
+using detail::usable_point;
 
 SolveResult finalize(const LcpProblem& p, SolveResult r, const CommonOptions& o) {
   const bool claimed_solution = is_solution(r.status);

@@ -9,6 +9,7 @@ bool SolverEntry::accepts(ProblemKind kind) const {
     case ProblemKind::kLcp: return static_cast<bool>(solve_lcp);
     case ProblemKind::kBoxLcp: return static_cast<bool>(solve_box_lcp);
     case ProblemKind::kMcp: return static_cast<bool>(solve_mcp);
+    case ProblemKind::kFrictionContact: return static_cast<bool>(solve_fc);
   }
   return false;
 }

@@ -3,6 +3,8 @@
 /// Convenience header: everything in cpkit::core.
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/finalize.hpp"
+#include "cpkit/core/friction_problem.hpp"
+#include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/core/log.hpp"
 #include "cpkit/core/options.hpp"

@@ -6,13 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/result.hpp"
 
 namespace cpkit {
 
-enum class ProblemKind { kLcp, kBoxLcp, kMcp };
+/// kFrictionContact: the local 3-D frictional contact problem (friction_problem.hpp).
+enum class ProblemKind { kLcp, kBoxLcp, kMcp, kFrictionContact };
 
 struct SolverInfo {
   std::string name;          ///< registry key, e.g. "lemke", "fb-newton"
@@ -25,6 +27,10 @@ struct SolverInfo {
 using LcpSolveFn = std::function<SolveResult(const LcpProblem&, const CommonOptions&)>;
 using BoxLcpSolveFn = std::function<SolveResult(const BoxLcpProblem&, const CommonOptions&)>;
 using McpSolveFn = std::function<SolveResult(const McpProblem&, const CommonOptions&)>;
+/// Friction solvers return r in SolveResult::z (3 per contact, normal first) and u = W r + q in
+/// w, through finalize(const FrictionContactProblem&, ...) (friction_verdict.hpp).
+using FrictionSolveFn =
+    std::function<SolveResult(const FrictionContactProblem&, const CommonOptions&)>;
 
 /// One registered solver. Entry points that are empty mean "does not accept that kind".
 struct SolverEntry {
@@ -32,6 +38,7 @@ struct SolverEntry {
   LcpSolveFn solve_lcp;
   BoxLcpSolveFn solve_box_lcp;
   McpSolveFn solve_mcp;
+  FrictionSolveFn solve_fc;
   bool accepts(ProblemKind kind) const;
   /// Accepts this LCP (kind and storage).
   bool accepts(const LcpProblem& p) const;

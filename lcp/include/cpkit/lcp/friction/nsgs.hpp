@@ -1,0 +1,40 @@
+#pragma once
+/// \file nsgs.hpp
+/// Nonsmooth Gauss-Seidel ("nsgs") for the local 3-D frictional contact problem
+/// (friction_problem.hpp) [Jean 1999; Acary, Bremond, Huber 2018, Sec. 4]: sweeps over the
+/// contacts in order; contact i's step solves its one-contact problem u_i = W_ii r_i + b_i,
+/// b_i = q_i + sum_{j != i} W_ij r_j, EXACTLY (one_contact.hpp: every solution is known) and takes
+/// the solution closest to the current r_i. u = W r + q is kept up to date column by column
+/// (W need not be symmetric), and recomputed from the data at every convergence test.
+///
+/// Rank-deficient W: a block W_ii whose smallest singular value is below 1e-10 times its largest
+/// (or W_ii = 0) is regularised by a proximal term: the step solves u = (W_ii + rho I) r +
+/// (b_i - rho r_i^old), rho = 1e-2 max(|W_ii|_max, |W|_max) (the proximal-point local solve
+/// [Acary et al. 2018, Sec. 4.3]); its fixed points are exactly the solutions.
+///
+/// Stopping: after every sweep, the unit-free residual of friction_verdict.hpp (the verdict's
+/// own number) <= tol. Every result comes from finalize(const FrictionContactProblem&, ...):
+/// z = r, w = u. On failure z holds the iterate with the smallest residual.
+/// Defaults: common.max_iterations = 0 means 2000 sweeps. Deterministic; allocation-free sweeps.
+#include <Eigen/Core>
+
+#include "cpkit/core/friction_problem.hpp"
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/registry.hpp"
+#include "cpkit/core/result.hpp"
+
+namespace cpkit::lcp::friction {
+
+struct NsgsOptions {
+  CommonOptions common;
+  /// Warm start r (size 3 n_c, finite); empty: r = 0.
+  Eigen::VectorXd r0;
+};
+
+/// Solves the problem; throws InputError when it (or r0) is invalid.
+SolveResult solve_nsgs(const FrictionContactProblem& problem, const NsgsOptions& options = {});
+
+/// Registry entry "nsgs" (friction problems only).
+SolverEntry nsgs_entry();
+
+}  // namespace cpkit::lcp::friction

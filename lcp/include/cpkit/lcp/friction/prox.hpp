@@ -1,0 +1,51 @@
+#pragma once
+/// \file prox.hpp
+/// Proximal point method for the local 3-D frictional contact problem (friction_problem.hpp),
+/// as Acary-Bremond-Huber's PROX [Acary, Bremond, Huber, INRIA RR-9118, 2018, Sec. 8] and
+/// Siconos' fc3d_proximal:
+///   r_{k+1} solves the problem with (W + alpha_k I, q - alpha_k r_k),
+/// whose fixed points are exactly the solutions (u = W r + q when r_{k+1} = r_k). The added
+/// alpha I makes every 3x3 diagonal block positive definite, so a rank-deficient (or zero) W
+/// is normal input.
+///
+/// alpha_k (PROX's rule, made unit-free): alpha_k = sigma e_k^nu w_scale, with e_k the verdict's
+/// unit-free error of r_k (friction_verdict.hpp, capped at 1) and w_scale the largest entry of
+/// |diag W| (||W||_max when the diagonal is zero; 1 for W = 0), so that alpha has W's units;
+/// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha never drops
+/// below 1e-10 w_scale (a floor in W's units).
+/// Inner solver: block Gauss-Seidel over the contacts on the regularised problem, each
+/// contact's 3x3 problem (block W_ii + alpha I) solved exactly by one_contact_nearest()
+/// (one_contact.hpp: the solution nearest the current r_i). The inner solve
+/// stops when a sweep changes r by at most max(e_k / 10, tol / 10) relative to the size of r
+/// (the internal tolerance adapted to the outer error, as PROX does).
+///
+/// Units: r in the problem's units (u per W); every test is relative (unit-free): the same
+/// problem in other units gives the same iterates, scaled. Result through finalize().
+/// Deterministic. result.iterations = outer (proximal) iterations; function_evals = sweeps.
+#include <Eigen/Core>
+#include <string>
+
+#include "cpkit/core/friction_problem.hpp"
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/registry.hpp"
+#include "cpkit/core/result.hpp"
+
+namespace cpkit::lcp::friction {
+
+struct ProxOptions {
+  CommonOptions common;  ///< max_iterations: outer iterations (0: 500)
+  Eigen::VectorXd r0;    ///< starting r (empty: r = 0), 3 per contact
+  double sigma = 5;      ///< alpha = sigma e^nu w_scale (PROX's defaults sigma = 5, nu = 1)
+  double nu = 1;
+  int max_sweeps = 0;    ///< Gauss-Seidel sweeps per inner solve (0: 200)
+  /// Empty when usable for a problem with n = 3 n_c rows; otherwise names the bad field.
+  std::string validate(Eigen::Index n) const;
+};
+
+/// Solves the problem; throws InputError on an invalid problem or options.
+SolveResult solve_prox(const FrictionContactProblem& problem, const ProxOptions& options = {});
+
+/// Registry entry "prox" (friction problems only).
+SolverEntry prox_entry();
+
+}  // namespace cpkit::lcp::friction

@@ -1,0 +1,255 @@
+// Semismooth Newton on the SOC Fischer-Burmeister reformulation (fb_soc.hpp).
+#include "cpkit/lcp/friction/fb_soc.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/detail/soc_fb.hpp"
+#include "friction_common.hpp"
+
+namespace cpkit::lcp::friction {
+namespace {
+
+using SpMat = Eigen::SparseMatrix<double>;
+using Eigen::VectorXd;
+
+// 2^e with 2^e <= v < 2^(e+1) (v > 0), else 1.
+double pow2_below(double v) {
+  if (!(v > 0) || !std::isfinite(v)) return 1.0;
+  int e;
+  std::frexp(v, &e);
+  return std::ldexp(1.0, e - 1);
+}
+
+struct Model {
+  const FrictionContactProblem& p;  // the scaled problem
+  // Phi at r (u = W r + q given); with `jac`, the blocks A_i = dPhi_i/dr_i, B_i = dPhi_i/du_i.
+  void eval(const VectorXd& r, const VectorXd& u, VectorXd& phi, std::vector<Mat3>* A,
+            std::vector<Mat3>* B) const {
+    const Eigen::Index nc = p.contacts();
+    for (Eigen::Index i = 0; i < nc; ++i) {
+      const double mu = p.mu[i];
+      const Vec3 ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
+      if (mu == 0) {
+        double da, db;
+        phi[3 * i] = lcp::detail::fb_scalar(ri[0], ui[0], da, db);
+        phi[3 * i + 1] = ri[1];
+        phi[3 * i + 2] = ri[2];
+        if (A) {
+          (*A)[i] = Vec3(da, 1, 1).asDiagonal();
+          (*B)[i].setZero();
+          (*B)[i](0, 0) = db;
+        }
+        continue;
+      }
+      const double nt = std::hypot(ui[1], ui[2]);
+      const Vec3 x(mu * ri[0], ri[1], ri[2]);
+      const Vec3 y(ui[0] + mu * nt, mu * ui[1], mu * ui[2]);
+      Vec3 ph;
+      Mat3 Jx, Jy;
+      lcp::detail::fb_soc(x, y, ph, Jx, Jy);
+      phi.segment<3>(3 * i) = ph;
+      if (A) {
+        (*A)[i] = Jx * Vec3(mu, 1, 1).asDiagonal();
+        Mat3 Dy = Mat3::Zero();
+        Dy(0, 0) = 1;
+        if (nt > 0) {
+          Dy(0, 1) = mu * ui[1] / nt;
+          Dy(0, 2) = mu * ui[2] / nt;
+        }
+        Dy(1, 1) = Dy(2, 2) = mu;
+        (*B)[i] = Jy * Dy;
+      }
+    }
+  }
+};
+
+SpMat block_diagonal(const std::vector<Mat3>& blocks) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(blocks.size() * 9);
+  for (size_t i = 0; i < blocks.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (blocks[i](a, b) != 0)
+          t.emplace_back(static_cast<int>(3 * i) + a, static_cast<int>(3 * i) + b, blocks[i](a, b));
+  const Eigen::Index n = static_cast<Eigen::Index>(3 * blocks.size());
+  SpMat m(n, n);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+}  // namespace
+
+SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o) {
+  const Stopwatch clock;
+  detail::check_input(p0, o.common, o.r0);
+  const Eigen::Index nc = p0.contacts(), n = 3 * nc;
+  const int max_it = o.common.max_iterations > 0 ? o.common.max_iterations : 200;
+
+  // Exact power-of-two scaling: u = su u', r = sr r', W' = W sr / su, q' = q / su.
+  double w_max = 0;
+  for (Eigen::Index k = 0; k < p0.W.outerSize(); ++k)
+    for (SpMat::InnerIterator it(p0.W, k); it; ++it) w_max = std::max(w_max, std::abs(it.value()));
+  const double q_inf = p0.q.lpNorm<Eigen::Infinity>();
+  const double su = pow2_below(q_inf), sw = pow2_below(w_max), sr = su / sw;
+  FrictionContactProblem p = p0;
+  p.W = p0.W * (1.0 / sw);  // sr / su = 1 / sw
+  p.q = p0.q * (1.0 / su);
+  const Model model{p};
+  const FrictionUnits units = friction_units(p);
+
+  VectorXd r = o.r0.size() ? VectorXd(o.r0 / sr) : VectorXd::Zero(n);
+  VectorXd u = p.W * r + p.q, phi(n), trial_r(n), trial_u(n), trial_phi(n);
+  std::vector<Mat3> A(static_cast<size_t>(nc)), B(static_cast<size_t>(nc));
+  model.eval(r, u, phi, &A, &B);
+  double psi = 0.5 * phi.squaredNorm();
+  VectorXd best = r;
+  double best_res = friction_residuals(p, units, r, u).natural;
+
+  SolveResult res;
+  res.solver = "fb-soc";
+  Status stop = best_res <= o.common.tol ? Status::kSolved : Status::kIterationLimit;
+  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
+  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  SpMat I(n, n);
+  I.setIdentity();
+  // Non-monotone Armijo reference for Newton steps: the largest Psi of the last `memory`
+  // iterates [Grippo, Lampariello, Lucidi 1986].
+  const int memory = std::max(1, o.nonmonotone_memory);
+  // Stagnation: the best residual has not halved within kStagnation iterations (on the FCLIB
+  // files a converging run halves it at least every ~30 iterations).
+  constexpr int kStagnation = 50;
+  double progress_res = best_res;
+  int progress_it = 0;
+  std::vector<double> history{psi};
+  int it = 0;
+  for (; it < max_it && stop != Status::kSolved; ++it) {
+    if (o.common.time_limit_s < 1e300 && clock.exceeded(o.common.time_limit_s)) {
+      stop = Status::kTimeLimit;
+      break;
+    }
+    SpMat J = block_diagonal(A) + block_diagonal(B) * p.W;
+    J.makeCompressed();
+    const VectorXd grad = J.transpose() * phi;
+    VectorXd d;
+    double jmax = 0;
+    for (Eigen::Index k = 0; k < J.outerSize(); ++k)
+      for (SpMat::InnerIterator jt(J, k); jt; ++jt) jmax = std::max(jmax, std::abs(jt.value()));
+    // Newton direction, with a shift when J does not factorise.
+    for (double shift : {0.0, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2}) {
+      const SpMat Js = shift == 0 ? J : SpMat(J + (shift * jmax) * I);
+      lu.compute(Js);
+      if (lu.info() != Eigen::Success) continue;
+      d = lu.solve(-phi);
+      if (lu.info() == Eigen::Success && d.allFinite()) break;
+      d.resize(0);
+    }
+    // Line search along d from t0 down to t_min against the reference ref; 0 when it fails.
+    auto search = [&](const VectorXd& dir, double t0, double t_min, double ref) {
+      const double slope = grad.dot(dir);
+      for (double tt = t0; tt >= t_min; tt *= 0.5) {
+        trial_r = r + tt * dir;
+        trial_u.noalias() = p.W * trial_r;
+        trial_u += p.q;
+        model.eval(trial_r, trial_u, trial_phi, nullptr, nullptr);
+        const double tpsi = 0.5 * trial_phi.squaredNorm();
+        ++res.function_evals;
+        if (std::isfinite(tpsi) && tpsi <= ref + 1e-4 * tt * slope) return tt;
+        ++res.line_search_steps;
+      }
+      return 0.0;
+    };
+    const double psi_ref = *std::max_element(history.begin(), history.end());
+    std::string kind = "newton";
+    double t = 0;
+    // 1. Newton, against the non-monotone reference.
+    if (d.size() == n && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi_ref);
+    // 2. Levenberg-Marquardt, (J^T J + lambda I) d = -J^T Phi with lambda = |Phi| (the scaled
+    //    problem's units): a descent direction that stays bounded where J is singular
+    //    (non-isolated solutions of rank-deficient W) [Fan, Yuan 2005].
+    if (t == 0) {
+      kind = "lm";
+      const double lambda = std::max(phi.norm(), 1e-14);
+      SpMat N = SpMat(J.transpose() * J) + lambda * I;
+      ldlt.compute(N);
+      if (ldlt.info() == Eigen::Success) {
+        d = ldlt.solve(-grad);
+        if (d.allFinite() && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi);
+      }
+    }
+    // 3. Steepest descent.
+    if (t == 0) {
+      kind = "gradient";
+      ++res.gradient_steps;
+      d = -grad;
+      const VectorXd Jd = J * d;
+      const double jd2 = Jd.squaredNorm();
+      t = search(d, jd2 > 0 ? d.squaredNorm() / jd2 : 1.0, 1e-14, psi);
+    }
+    const bool accepted = t > 0;
+    if (!accepted) {
+      stop = Status::kStalled;
+      res.message = "fb-soc: line search failed along the Newton, Levenberg-Marquardt and gradient directions";
+      break;
+    }
+    r.swap(trial_r);
+    u.swap(trial_u);
+    model.eval(r, u, phi, &A, &B);
+    ++res.jacobian_evals;
+    psi = 0.5 * phi.squaredNorm();
+    history.push_back(psi);
+    if (static_cast<int>(history.size()) > memory) history.erase(history.begin());
+    const double rs = friction_residuals(p, units, r, u).natural;
+    if (o.common.record_trace) res.trace.push_back({it + 1, rs, t, kind, -1, -1});
+    if (rs < best_res) {
+      best_res = rs;
+      best = r;
+    }
+    if (rs <= 0.5 * progress_res) {
+      progress_res = rs;
+      progress_it = it;
+    }
+    if (rs <= o.common.tol) {
+      stop = Status::kSolved;
+    } else if (it - progress_it >= kStagnation) {
+      stop = Status::kStalled;
+      res.message = "fb-soc: the residual did not halve in " + std::to_string(kStagnation) +
+                    " iterations (stagnation)";
+      ++it;
+      break;
+    }
+  }
+  res.iterations = it;
+  res.z = best * sr;
+  res.status = stop;
+  if (stop == Status::kIterationLimit || stop == Status::kTimeLimit)
+    res.message = "fb-soc: " +
+                  std::string(stop == Status::kTimeLimit ? "time limit" : "iteration limit") +
+                  " reached after " + std::to_string(it) + " iterations";
+  res = finalize(p0, std::move(res), o.common);
+  res.seconds = clock.seconds();
+  return res;
+}
+
+SolverEntry fb_soc_entry() {
+  SolverEntry e;
+  e.info.name = "fb-soc";
+  e.info.description =
+      "semismooth Newton on the SOC Fischer-Burmeister reformulation, sparse LU, Armijo line "
+      "search with gradient fallback [Fukushima-Luo-Tseng 2001; Acary-Bremond-Huber 2018]";
+  e.info.dense = false;
+  e.info.sparse = true;
+  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
+    FbSocOptions o;
+    o.common = c;
+    return solve_fb_soc(p, o);
+  };
+  return e;
+}
+
+}  // namespace cpkit::lcp::friction

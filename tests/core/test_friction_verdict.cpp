@@ -1,0 +1,335 @@
+// The verdict on frictional contact candidates (friction_verdict.hpp): hand-computed one-contact
+// cases (stick, slip, separation: closed forms in the comments), unit invariance, refusals
+// (r = 0 where a force is needed, a wrong r, NaN), and the two published relative errors against
+// Siconos' own fc3d_compute_error through python3-siconos (skipped, exit 77, when missing).
+#include <catch2/catch.hpp>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_cone.hpp"
+#include "cpkit/core/friction_verdict.hpp"
+#include "scratch_files.hpp"
+
+namespace {
+
+using cpkit::CommonOptions;
+using cpkit::FrictionContactProblem;
+using cpkit::SolveResult;
+using cpkit::Status;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+FrictionContactProblem make(const MatrixXd& W, const VectorXd& q, const VectorXd& mu) {
+  FrictionContactProblem p;
+  p.W = W.sparseView();
+  p.q = q;
+  p.mu = mu;
+  return p;
+}
+
+VectorXd v3(double a, double b, double c) { return (VectorXd(3) << a, b, c).finished(); }
+VectorXd v1(double a) { return (VectorXd(1) << a).finished(); }
+
+SolveResult claim(const VectorXd& r) {
+  SolveResult s;
+  s.status = Status::kSolved;
+  s.z = r;
+  return s;
+}
+
+// A random rank-deficient Delassus operator W = J J^T (J: 3 nc x m, m < 3 nc when asked) and
+// a q whose normal entries have both signs.
+FrictionContactProblem random_problem(std::mt19937& rng, int nc, int m) {
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> U(0.1, 1.0);
+  MatrixXd J(3 * nc, m);
+  for (int i = 0; i < J.rows(); ++i)
+    for (int j = 0; j < m; ++j) J(i, j) = g(rng);
+  VectorXd q(3 * nc), mu(nc);
+  for (int i = 0; i < 3 * nc; ++i) q[i] = g(rng);
+  for (int i = 0; i < nc; ++i) mu[i] = U(rng);
+  return make(J * J.transpose(), q, mu);
+}
+
+}  // namespace
+
+TEST_CASE("cone projection and De Saxce map: closed forms", "[friction][verdict]") {
+  using cpkit::Vec3;
+  // In K_0.5: unchanged. In the polar cone (0.5 * 2 <= 1): zero.
+  CHECK(cpkit::project_on_cone(Vec3(1, 0.3, 0.4), 0.5) == Vec3(1, 0.3, 0.4));
+  CHECK(cpkit::project_on_cone(Vec3(-1, 2, 0), 0.5) == Vec3::Zero());
+  // (0.5, -1, 0), mu = 0.5: n = (0.5 + 0.5) / 1.25 = 0.8, r_T = 0.5 * 0.8 * (-1) = -0.4.
+  const Vec3 p = cpkit::project_on_cone(Vec3(0.5, -1, 0), 0.5);
+  CHECK(p[0] == Approx(0.8));
+  CHECK(p[1] == Approx(-0.4));
+  CHECK(p[2] == 0.0);
+  // mu = 0: the ray; (2, 3, 4) -> (2, 0, 0).
+  CHECK(cpkit::project_on_cone(Vec3(2, 3, 4), 0.0) == Vec3(2, 0, 0));
+  // u_hat = u + (mu |u_T|, 0, 0): (1, 3, 4), mu = 0.5 -> (3.5, 3, 4).
+  CHECK(cpkit::de_saxce(Vec3(1, 3, 4), 0.5) == Vec3(3.5, 3, 4));
+}
+
+TEST_CASE("one contact, W = I, mu = 0.5: stick, slip and separation solutions accepted",
+          "[friction][verdict]") {
+  const MatrixXd W = MatrixXd::Identity(3, 3);
+  CommonOptions o;
+  SECTION("stick: q = (-1, 0.2, 0), r = -q = (1, -0.2, 0) (|r_T| = 0.2 <= 0.5), u = 0") {
+    const auto p = make(W, v3(-1, 0.2, 0), v1(0.5));
+    const auto e = cpkit::friction_errors(p, v3(1, -0.2, 0));
+    CHECK(e.unit_free == 0.0);
+    CHECK(e.relative_q == 0.0);
+    CHECK(e.relative_max == 0.0);
+    const auto s = cpkit::finalize(p, claim(v3(1, -0.2, 0)), o);
+    CHECK(s.status == Status::kSolved);
+    CHECK(s.w == VectorXd::Zero(3));
+  }
+  SECTION("slip: q = (-1, 1, 0), r = (1, -0.5, 0), u = (0, 0.5, 0), u_hat = (0.25, 0.5, 0)") {
+    // r on the boundary, r_T opposite to u_T, r . u_hat = 0.25 - 0.25 = 0.
+    const auto p = make(W, v3(-1, 1, 0), v1(0.5));
+    const auto s = cpkit::finalize(p, claim(v3(1, -0.5, 0)), o);
+    CHECK(s.status == Status::kSolved);
+    CHECK(s.w[1] == 0.5);
+    CHECK(s.residuals.natural == 0.0);
+  }
+  SECTION("separation: q = (1, 3, -2), r = 0, u = q") {
+    const auto p = make(W, v3(1, 3, -2), v1(0.5));
+    const auto s = cpkit::finalize(p, claim(VectorXd::Zero(3)), o);
+    CHECK(s.status == Status::kSolved);
+    CHECK(s.w == v3(1, 3, -2));
+  }
+  SECTION("frictionless (mu = 0) slip: q = (-2, 1, 0), r = (2, 0, 0), u = (0, 1, 0)") {
+    const auto p = make(W, v3(-2, 1, 0), v1(0.0));
+    CHECK(cpkit::finalize(p, claim(v3(2, 0, 0)), o).status == Status::kSolved);
+  }
+}
+
+TEST_CASE("wrong candidates are refuted, with the published errors computed by hand",
+          "[friction][verdict]") {
+  const MatrixXd W = MatrixXd::Identity(3, 3);
+  const auto p = make(W, v3(-1, 1, 0), v1(0.5));
+  SECTION("r = (1, 0, 0): u = (0, 1, 0), u_hat = (0.5, 1, 0), r - u_hat = (0.5, -1, 0)") {
+    // P_K(0.5, -1, 0) = (0.8, -0.4, 0); map = (0.2, 0.4, 0), E = sqrt(0.2);
+    // relative_q = E / sqrt(2) = sqrt(0.1); relative_max = E / max(sqrt 2, 1, 1), the same.
+    const auto e = cpkit::friction_errors(p, v3(1, 0, 0));
+    CHECK(e.relative_q == Approx(std::sqrt(0.1)).epsilon(1e-14));
+    CHECK(e.relative_max == Approx(std::sqrt(0.1)).epsilon(1e-14));
+    CHECK(e.unit_free > 0.05);
+    const auto s = cpkit::finalize(p, claim(v3(1, 0, 0)), {});
+    CHECK(s.status == Status::kNumericalFailure);
+    CHECK(s.message.find("refuted") != std::string::npos);
+  }
+  SECTION("r = (3, 0, 0): u = (2, 1, 0), u_hat = (2.5, 1, 0), same projection") {
+    // map = (2.2, 0.4, 0), E = sqrt(5); relative_q = sqrt(5 / 2); relative_max = sqrt(5) / 3.
+    const auto e = cpkit::friction_errors(p, v3(3, 0, 0));
+    CHECK(e.relative_q == Approx(std::sqrt(2.5)).epsilon(1e-14));
+    CHECK(e.relative_max == Approx(std::sqrt(5.0) / 3).epsilon(1e-14));
+  }
+  SECTION("a point outside the cone with u = 0 is refuted: q = (-1, -1, 0), r = (1, 1, 0)") {
+    const auto p2 = make(W, v3(-1, -1, 0), v1(0.5));
+    CHECK(cpkit::finalize(p2, claim(v3(1, 1, 0)), {}).status == Status::kNumericalFailure);
+  }
+  SECTION("slightly wrong: the slip solution with r_T off by 1e-6 relative") {
+    // r = (1, -0.5 (1 + 1e-6), 0) is outside K by ~4.5e-7 in r's unit R = 1.
+    const auto e = cpkit::friction_errors(p, v3(1, -0.5 * (1 + 1e-6), 0));
+    CHECK(e.unit_free > 1e-7);
+    CHECK(e.unit_free < 1e-5);
+    CommonOptions o;
+    o.tol = 1e-10;
+    o.tol_acceptable = 1e-8;
+    CHECK(cpkit::finalize(p, claim(v3(1, -0.5 * (1 + 1e-6), 0)), o).status ==
+          Status::kNumericalFailure);
+  }
+}
+
+TEST_CASE("r = 0 is refused whenever some contact needs a force (q_N < 0)", "[friction][verdict]") {
+  const MatrixXd W = MatrixXd::Identity(6, 6);
+  // Contact 2's q_N is 1e-12 of its q_T: the cone test alone would see ~1e-12 there; the normal
+  // row in its own units (s_N = |q_N| at r = 0) gives |min(0, -1)| = 1.
+  VectorXd q(6);
+  q << 1, 0, 0, -1e-12, 1, 0;
+  const auto p = make(W, q, (VectorXd(2) << 0.5, 0.5).finished());
+  const auto e = cpkit::friction_errors(p, VectorXd::Zero(6));
+  CHECK(e.unit_free == Approx(1.0).epsilon(1e-14));  // less the rounding allowance of u = q
+  CHECK(cpkit::finalize(p, claim(VectorXd::Zero(6)), {}).status == Status::kNumericalFailure);
+  // The same at every scale of q and of (W, q).
+  for (double a : {1e-12, 1e-6, 1e6, 1e12}) {
+    const auto pa = make(W * a, q * a, p.mu);
+    CHECK(cpkit::friction_errors(pa, VectorXd::Zero(6)).unit_free == Approx(1.0));
+    const auto pb = make(W, q * a, p.mu);
+    CHECK(cpkit::friction_errors(pb, VectorXd::Zero(6)).unit_free == Approx(1.0));
+  }
+  // q = (-1, 0.2, 0), W = I, r = 0: normal |min(0, -1)| = 1 (the cone part: sqrt(0.85 / 1.04)).
+  const auto p1 = make(MatrixXd::Identity(3, 3), v3(-1, 0.2, 0), v1(0.5));
+  CHECK(cpkit::friction_errors(p1, VectorXd::Zero(3)).unit_free == Approx(1.0).epsilon(1e-14));
+}
+
+TEST_CASE("non-finite or mis-sized candidates are refused; invalid problems throw",
+          "[friction][verdict]") {
+  const auto p = make(MatrixXd::Identity(3, 3), v3(-1, 1, 0), v1(0.5));
+  VectorXd r = v3(1, -0.5, 0);
+  r[1] = std::nan("");
+  CHECK(std::isinf(cpkit::friction_errors(p, r).unit_free));
+  auto s = cpkit::finalize(p, claim(r), {});
+  CHECK(s.status == Status::kNumericalFailure);
+  CHECK(s.message.find("non-finite") != std::string::npos);
+  s = cpkit::finalize(p, claim(VectorXd::Zero(4)), {});
+  CHECK(s.status == Status::kNumericalFailure);
+  CHECK(s.message.find("size 4") != std::string::npos);
+  CHECK_THROWS_AS(cpkit::friction_errors(p, VectorXd::Zero(4)), cpkit::InputError);
+  auto bad = p;
+  bad.mu[0] = -1;
+  CHECK_THROWS_AS(cpkit::friction_errors(bad, v3(0, 0, 0)), cpkit::InputError);
+  // An overflowing r: never accepted.
+  CHECK(cpkit::finalize(p, claim(v3(1e308, 0, 0)), {}).status == Status::kNumericalFailure);
+  // An infeasibility claim without a certificate is not granted.
+  SolveResult inf;
+  inf.status = Status::kInfeasible;
+  CHECK(cpkit::finalize(p, inf, {}).status == Status::kNumericalFailure);
+}
+
+TEST_CASE("a diverging r is never accepted", "[friction][verdict]") {
+  // W = [[1, -1], [-1, 1]] on the normals of two contacts (tangents decoupled, W_T = I),
+  // q_N = (-1, -1): r_N = (t, t) has u_N = (-1, -1) for every t. Units (t > 1): r_ref = 1,
+  // R = t, rn = (1, 0, 0); c_N = ||W_N||_1 min(t, r_ref) = 2, s_N = S = 1 + 2 = 3, so
+  // un = (-1/3, 0, 0): normal |min(1, -1/3)| = 1/3, cone |(1,0,0) - P(4/3, 0, 0)| = 1/3, less
+  // the rounding allowance gamma_3 (2 t + 1) / 3 (0.02 at t = 1e14).
+  MatrixXd W = MatrixXd::Identity(6, 6);
+  W(0, 0) = W(3, 3) = 1;
+  W(0, 3) = W(3, 0) = -1;
+  VectorXd q = VectorXd::Zero(6);
+  q[0] = q[3] = -1;
+  const auto p = make(W, q, (VectorXd(2) << 0.5, 0.5).finished());
+  for (double t : {1e3, 1e8, 1e14}) {
+    VectorXd r = VectorXd::Zero(6);
+    r[0] = r[3] = t;
+    const double g3 = 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
+    CHECK(cpkit::friction_errors(p, r).unit_free ==
+          Approx((1 - g3 * (2 * t + 1)) / 3).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("unit invariance: same verdict under q -> a q and (W, q) -> b (W, q)",
+          "[friction][verdict]") {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 20; ++trial) {
+    const int nc = 1 + trial % 5;
+    const auto p = random_problem(rng, nc, trial % 2 ? 3 * nc : std::max(1, 2 * nc - 1));
+    // Candidates: the solution of every contact's separation (r = 0), a random r in the cone,
+    // and small perturbations of it.
+    std::vector<VectorXd> cands{VectorXd::Zero(3 * nc)};
+    VectorXd r(3 * nc);
+    for (int i = 0; i < nc; ++i) {
+      const double n = std::abs(g(rng));
+      r.segment<3>(3 * i) << n, 0.5 * p.mu[i] * n * g(rng) / 2, 0.5 * p.mu[i] * n * g(rng) / 2;
+    }
+    cands.push_back(r);
+    cands.push_back(r + 1e-9 * VectorXd::Random(3 * nc));
+    for (const VectorXd& c : cands) {
+      const double base = cpkit::friction_errors(p, c).unit_free;
+      // Powers of two: exactly the same number.
+      for (int k : {-40, -20, -7, 9, 20, 40}) {
+        const double a = std::ldexp(1.0, k);
+        CHECK(cpkit::friction_errors(make(p.W * a, p.q * a, p.mu), c).unit_free == base);
+        CHECK(cpkit::friction_errors(make(p.W, p.q * a, p.mu), c * a).unit_free == base);
+      }
+      // Other factors in 1e-12..1e12: the same to rounding.
+      for (double a : {1e-12, 3.7e-5, 0.3, 7.0, 1.9e6, 1e12}) {
+        CHECK(cpkit::friction_errors(make(p.W * a, p.q * a, p.mu), c).unit_free ==
+              Approx(base).epsilon(1e-9).margin(1e-14));
+        CHECK(cpkit::friction_errors(make(p.W, p.q * a, p.mu), c * a).unit_free ==
+              Approx(base).epsilon(1e-9).margin(1e-14));
+      }
+    }
+  }
+}
+
+namespace {
+
+std::string python() {
+  if (const char* env = std::getenv("CPKIT_PYTHON")) return env;
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+// Siconos' own errors for (W, q, mu, r): fc3d_compute_error with norm = ||q|| (what Siconos'
+// solvers pass; it divides by max(norm, ||r||, ||u||)), and E itself from the same function
+// with a norm larger than every vector, times that norm.
+const char* kPeer = R"(
+import sys, numpy as np
+try:
+    import siconos.numerics as sn
+except Exception as e:
+    print("python3-siconos not importable:", e); sys.exit(77)
+d = [np.array([float(x) for x in l.split()]) for l in open(sys.argv[1]).read().strip().split("\n")]
+nc = len(d[2]); n = 3 * nc
+W = d[0].reshape(n, n); q = d[1]; mu = d[2]
+p = sn.FrictionContactProblem(3, nc, W, q, mu)
+so = sn.SolverOptions(sn.SICONOS_FRICTION_3D_NSGS)
+for r in d[3:]:
+    u = np.zeros(n)
+    rel_max = sn.fc3d_compute_error(p, r.copy(), u, 1e-8, so, np.linalg.norm(q))[1]
+    big = 4.0 * max(np.linalg.norm(q), np.linalg.norm(r), np.linalg.norm(W @ r + q), 1.0)
+    E = sn.fc3d_compute_error(p, r.copy(), u, 1e-8, so, big)[1] * big
+    print(repr(E / np.linalg.norm(q)), repr(rel_max))
+)";
+
+}  // namespace
+
+TEST_CASE("relative_q and relative_max agree with Siconos' fc3d_compute_error",
+          "[friction][verdict][siconos]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = cpkit::test::scratch_dir("cpkit_test_friction_verdict_");
+  const std::string script = cpkit::test::write_file(dir, "peer.py", kPeer);
+  std::mt19937 rng(17);
+  std::normal_distribution<double> g;
+  int compared = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    const int nc = 1 + 2 * trial;
+    const auto p = random_problem(rng, nc, 2 * nc);
+    std::vector<VectorXd> cands;
+    for (int k = 0; k < 4; ++k) {
+      VectorXd r(3 * nc);
+      for (int i = 0; i < 3 * nc; ++i) r[i] = g(rng) * std::pow(10.0, k - 2);
+      cands.push_back(r);
+    }
+    std::ostringstream text;
+    text.precision(17);
+    const MatrixXd Wd = MatrixXd(p.W);
+    for (int i = 0; i < Wd.rows(); ++i)
+      for (int j = 0; j < Wd.cols(); ++j) text << Wd(i, j) << ' ';  // row-major for numpy
+    text << '\n' << p.q.transpose() << '\n' << p.mu.transpose() << '\n';
+    for (const auto& c : cands) text << c.transpose() << '\n';
+    const std::string in = cpkit::test::write_file(dir, "in.txt", text.str());
+    const std::string out = (dir / "out.txt").string();
+    const int status = std::system(("'" + python() + "' '" + script + "' '" + in + "' > '" + out +
+                                    "' 2>&1").c_str());
+    const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream res(out);
+    if (rc == 77 || rc == 127) {
+      std::cout << "skipped: " << std::string(std::istreambuf_iterator<char>(res), {}) << "\n";
+      std::exit(77);  // ctest SKIP_RETURN_CODE (tests/CMakeLists.txt)
+    }
+    REQUIRE(rc == 0);
+    for (const auto& c : cands) {
+      double rel_q = 0, rel_max = 0;
+      REQUIRE(res >> rel_q >> rel_max);
+      const auto e = cpkit::friction_errors(p, c);
+      CHECK(e.relative_q == Approx(rel_q).epsilon(1e-10));
+      CHECK(e.relative_max == Approx(rel_max).epsilon(1e-10));
+      ++compared;
+    }
+  }
+  CHECK(compared == 16);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
