@@ -4,9 +4,12 @@
 // first with HDF5's own API (exists, class, one dimension, extent equal to what libfclib will
 // allocate, a plausible size for the file's length); only then is fclib_read_local/global called.
 // fclib_read_solution is never called (it aborts on files without /solution).
+extern "C" {  // fclib.h has no C++ guards
 #include <fclib.h>
+}
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -61,8 +64,10 @@ class Checker {
   }
 
   /// The dataset's number of elements; fails unless it exists, has class `cls`, rank <= 1 and
-  /// (when expected >= 0) exactly `expected` elements, stored in a plausible number of bytes.
-  std::uint64_t dataset(const std::string& path, H5T_class_t cls, std::int64_t expected) const {
+  /// (when expected >= 0) exactly `expected` elements (at most, when `at_most`: libfclib reads a
+  /// whole dataset into a buffer of the declared size), stored in a plausible number of bytes.
+  std::uint64_t dataset(const std::string& path, H5T_class_t cls, std::int64_t expected,
+                        bool at_most = false) const {
     if (!exists(path)) fail("the FCLIB dataset " + path + " is missing");
     const hid_t d = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
     if (d < 0) fail(path + " is not a dataset");
@@ -81,9 +86,10 @@ class Checker {
       fail(path + " has the wrong type (expected " +
            (cls == H5T_INTEGER ? "integers" : cls == H5T_FLOAT ? "floating-point numbers" : "a string") + ")");
     if (rank != 0 && rank != 1) fail(path + " is not a vector (rank " + std::to_string(rank) + ")");
-    if (expected >= 0 && count != static_cast<std::uint64_t>(expected))
+    if (expected >= 0 && (at_most ? count > static_cast<std::uint64_t>(expected)
+                                  : count != static_cast<std::uint64_t>(expected)))
       fail(path + " holds " + std::to_string(count) + " entries, the header declares " +
-           std::to_string(expected));
+           (at_most ? "at most " : "") + std::to_string(expected));
     // A declared extent whose data is not in the file (unallocated or absurdly compressed)
     // would make libfclib allocate gigabytes for a small file: 8 bytes per entry, at most
     // 1000 entries per stored byte (deflate's limit is ~1032).
@@ -105,8 +111,13 @@ class Checker {
     return v;
   }
 
-  /// A matrix group as libfclib's read_matrix will read it; returns {m, n}.
-  std::pair<int, int> matrix(const std::string& g) const {
+  /// A matrix group as libfclib's read_matrix will read it: its sizes, and how many entries of
+  /// i and x the file really holds (libfclib leaves the rest of its nzmax buffers unset).
+  struct Shape {
+    int m = 0, n = 0;
+    std::uint64_t stored = 0;
+  };
+  Shape matrix(const std::string& g) const {
     const int nzmax = scalar_int(g + "/nzmax");
     const int m = scalar_int(g + "/m");
     const int n = scalar_int(g + "/n");
@@ -114,25 +125,33 @@ class Checker {
     if (m < 0 || n < 0 || nzmax < 0)
       fail(g + " declares negative sizes (m " + std::to_string(m) + ", n " + std::to_string(n) +
            ", nzmax " + std::to_string(nzmax) + ")");
+    std::uint64_t stored = 0;
     if (nz >= 0) {
       if (nz > nzmax) fail(g + ": nz " + std::to_string(nz) + " exceeds nzmax " + std::to_string(nzmax));
       dataset(g + "/p", H5T_INTEGER, nz);
-      dataset(g + "/i", H5T_INTEGER, nz);
+      stored = dataset(g + "/i", H5T_INTEGER, nz);
     } else if (nz == -1 || nz == -2) {
       dataset(g + "/p", H5T_INTEGER, static_cast<std::int64_t>(nz == -1 ? n : m) + 1);
-      dataset(g + "/i", H5T_INTEGER, nzmax);
+      stored = dataset(g + "/i", H5T_INTEGER, nzmax, true);
     } else {
       fail(g + ": nz = " + std::to_string(nz) +
            " is no FCLIB storage (>= 0 triplet, -1 compressed columns, -2 compressed rows)");
     }
-    dataset(g + "/x", H5T_FLOAT, nzmax);
+    stored = std::min(stored, dataset(g + "/x", H5T_FLOAT, nzmax, true));
+    if (nz >= 0 && stored < static_cast<std::uint64_t>(nz))
+      fail(g + "/x holds " + std::to_string(stored) + " entries, nz declares " + std::to_string(nz));
+    // libfclib allocates nzmax entries: a declared nzmax far beyond the stored entries would
+    // allocate memory the file does not justify.
+    if (static_cast<std::uint64_t>(nzmax) > 4 * stored + 1024)
+      fail(g + ": nzmax " + std::to_string(nzmax) + " is far larger than the " +
+           std::to_string(stored) + " entries stored");
     if (exists(g + "/conditioning")) {
       if (exists(g + "/comment")) dataset(g + "/comment", H5T_STRING, -1);
       dataset(g + "/conditioning", H5T_FLOAT, 1);
       dataset(g + "/determinant", H5T_FLOAT, 1);
       dataset(g + "/rank", H5T_INTEGER, 1);
     }
-    return {m, n};
+    return {m, n, stored};
   }
 
   void info(const std::string& g) const {
@@ -148,8 +167,8 @@ class Checker {
 
 /// An fclib_matrix (triplet, CSC or CSR; CSparse's layout: in triplet form i holds rows and p
 /// columns) as an Eigen matrix, every index checked.
-Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& a, const std::string& name,
-                                     const std::string& origin) {
+Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& a, std::uint64_t stored,
+                                     const std::string& name, const std::string& origin) {
   auto fail = [&](const std::string& what) { throw InputError(origin + ": " + name + ": " + what); };
   std::vector<Eigen::Triplet<double>> t;
   auto add = [&](long long row, long long col, double v) {
@@ -167,9 +186,9 @@ Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& a, const std::string& n
     const int outer = a.nz == -1 ? a.n : a.m;  // -1: compressed columns, -2: compressed rows
     if (a.p[0] != 0) fail("the first pointer is " + std::to_string(a.p[0]) + ", not 0");
     for (int k = 0; k < outer; ++k)
-      if (a.p[k + 1] < a.p[k] || a.p[k + 1] > a.nzmax)
+      if (a.p[k + 1] < a.p[k] || static_cast<std::uint64_t>(a.p[k + 1]) > stored)
         fail("pointer " + std::to_string(k + 1) + " = " + std::to_string(a.p[k + 1]) +
-             " decreases or exceeds nzmax " + std::to_string(a.nzmax));
+             " decreases or exceeds the " + std::to_string(stored) + " entries stored");
     t.reserve(static_cast<std::size_t>(a.p[outer]));
     for (int k = 0; k < outer; ++k)
       for (int e = a.p[k]; e < a.p[k + 1]; ++e)
@@ -220,6 +239,7 @@ FrictionContactProblem read_local(const std::string& path) {
   const std::string origin = io_text::valid_utf8(path);
   QuietHdf5 quiet;
   int rows = 0;
+  std::uint64_t w_stored = 0;
   precheck(path, origin, [&](const Checker& c) {
     if (!c.exists("/fclib_local")) {
       if (c.exists("/fclib_global"))
@@ -229,7 +249,8 @@ FrictionContactProblem read_local(const std::string& path) {
     }
     const int dim = c.scalar_int("/fclib_local/spacedim");
     if (dim != 3) c.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
-    const auto [m, n] = c.matrix("/fclib_local/W");
+    const auto [m, n, stored] = c.matrix("/fclib_local/W");
+    w_stored = stored;
     if (m != n || m % 3 != 0 || m == 0)
       c.fail("W is " + std::to_string(m) + " x " + std::to_string(n) +
              ", expected square with 3 rows per contact");
@@ -244,7 +265,7 @@ FrictionContactProblem read_local(const std::string& path) {
                                                            fclib_delete_local);
   if (!raw) throw InputError(origin + ": libfclib could not read the local problem");
   FrictionContactProblem p;
-  p.W = to_eigen(*raw->W, "W", origin);
+  p.W = to_eigen(*raw->W, w_stored, "W", origin);
   p.q = to_vector(raw->q, rows);
   p.mu = to_vector(raw->mu, rows / 3);
   p.name = title_of(raw->info);
@@ -258,6 +279,7 @@ GlobalFrictionContactProblem read_global(const std::string& path) {
   const std::string origin = io_text::valid_utf8(path);
   QuietHdf5 quiet;
   int dofs = 0, cols = 0;
+  std::uint64_t m_stored = 0, h_stored = 0;
   precheck(path, origin, [&](const Checker& c) {
     if (!c.exists("/fclib_global")) {
       if (c.exists("/fclib_local"))
@@ -267,10 +289,12 @@ GlobalFrictionContactProblem read_global(const std::string& path) {
     }
     const int dim = c.scalar_int("/fclib_global/spacedim");
     if (dim != 3) c.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
-    const auto [mm, mn] = c.matrix("/fclib_global/M");
+    const auto [mm, mn, ms] = c.matrix("/fclib_global/M");
+    m_stored = ms;
     if (mm != mn || mm == 0)
       c.fail("M is " + std::to_string(mm) + " x " + std::to_string(mn) + ", expected square");
-    const auto [hm, hn] = c.matrix("/fclib_global/H");
+    const auto [hm, hn, hs] = c.matrix("/fclib_global/H");
+    h_stored = hs;
     if (hm != mm || hn % 3 != 0 || hn == 0)
       c.fail("H is " + std::to_string(hm) + " x " + std::to_string(hn) + ", expected " +
              std::to_string(mm) + " x 3 n_c");
@@ -287,8 +311,8 @@ GlobalFrictionContactProblem read_global(const std::string& path) {
                                                              fclib_delete_global);
   if (!raw) throw InputError(origin + ": libfclib could not read the global problem");
   GlobalFrictionContactProblem p;
-  p.M = to_eigen(*raw->M, "M", origin);
-  p.H = to_eigen(*raw->H, "H", origin);
+  p.M = to_eigen(*raw->M, m_stored, "M", origin);
+  p.H = to_eigen(*raw->H, h_stored, "H", origin);
   p.f = to_vector(raw->f, dofs);
   p.w = to_vector(raw->w, cols);
   p.mu = to_vector(raw->mu, cols / 3);
