@@ -3,7 +3,9 @@
 // storage 0 and sparse-block storage 1), written here from the files' layout so that h16's
 // tests can load real problems by a route independent of cpkit's own reader:
 //   dim, n_c, storage, then
-//   storage 0: rows, cols, "rows cols", the matrix row by row;
+//   storage 0: rows, cols, "rows cols", the entries, read in column-major order as Siconos
+//              4.4's reader does (its writer prints a row per line: the Rover files' W, not
+//              symmetric to ~1e-6, are transposed by the round trip; cpkit follows the reader);
 //   storage 1: rows, cols, number of blocks, block rows, block cols, the cumulative row and
 //              column block sizes, filled1, filled2, index1 (filled1), index2 (filled2), then
 //              per block its number and 9 values (column-major);
@@ -29,8 +31,8 @@ inline FrictionContactProblem read_dat(const std::string& path) {
   if (storage == 0) {
     int rows = 0, cols = 0, r2 = 0, c2 = 0;
     in >> rows >> cols >> r2 >> c2;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < n; ++j)  // column-major, as Siconos 4.4's reader fills it
+      for (int i = 0; i < n; ++i) {
         double v = 0;
         in >> v;
         if (v != 0) t.emplace_back(i, j, v);

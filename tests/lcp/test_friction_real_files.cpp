@@ -1,7 +1,8 @@
 // h16's friction solvers on real FCLIB / Siconos files (tests/data/fclib, copies of
 // ../shared/problems/fclib with the checksums of its MANIFEST.txt). The files ship no
 // solution: every r is re-checked by the test's own violation() (friction_examples.hpp) and the
-// physics of the file is not assumed; files are read by the test's own reader (friction_dat.hpp).
+// physics of the file is not assumed; .dat files are read by the test's own reader
+// (friction_dat.hpp), compared with cpkit's read_friction_problem (which also reads the HDF5 ones).
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cpkit/core/friction_io.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/friction/ipopt_fc.hpp"
@@ -76,16 +78,20 @@ TEST_CASE("real files: BoxesStack1 (52 contacts, rank 78 of 156) has distinct ve
   CHECK(widest > 0.1);  // not rounding: the solutions differ in the first digits
 }
 
-TEST_CASE("real files: prox solves every local Siconos .dat file", "[friction][real]") {
-  // The FCLIB HDF5 files are read by cpkit's reader only (h12's tests); this test reads the
-  // .dat ones by its own route.
+TEST_CASE("real files: prox on every local file; the test's .dat reader agrees with cpkit's",
+          "[friction][real]") {
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(kDir)) {
-    if (e.path().extension() != ".dat") continue;
     ++files;
     const std::string path = e.path().string();
-    const auto p = cpkit::test::read_dat(path);
+    const auto p = cpkit::read_friction_problem(path);
     INFO(path << " (" << p.contacts() << " contacts)");
+    if (e.path().extension() == ".dat") {  // a second route to the same data
+      const auto t = cpkit::test::read_dat(path);
+      CHECK((Eigen::MatrixXd(t.W) - Eigen::MatrixXd(p.W)).cwiseAbs().maxCoeff() == 0);
+      CHECK((t.q - p.q).cwiseAbs().maxCoeff() == 0);
+      CHECK((t.mu - p.mu).cwiseAbs().maxCoeff() == 0);
+    }
     cpkit::lcp::friction::ProxOptions o;
     o.common.tol = 1e-8;
     const auto t0 = std::chrono::steady_clock::now();
@@ -98,5 +104,5 @@ TEST_CASE("real files: prox solves every local Siconos .dat file", "[friction][r
     CHECK(r.status == Status::kSolved);
     CHECK(cpkit::test::violation(p, r.z) <= 1e-6);
   }
-  CHECK(files == 10);  // the .dat files of tests/data/fclib/local (MANIFEST.txt)
+  CHECK(files == 12);  // the local files of tests/data/fclib (MANIFEST.txt)
 }
