@@ -37,10 +37,15 @@ TEST_CASE("real files: prox, faceted Lemke and Ipopt solve small Siconos problem
     const auto p = cpkit::test::read_dat(kDir + f);
     cpkit::CommonOptions c;
     c.tol = 1e-8;
-    const cpkit::SolveResult results[] = {
-        cpkit::lcp::friction::solve_prox(p, {c}),
-        cpkit::lcp::friction::solve_faceted_lemke(p, {c}),
-        cpkit::lcp::friction::solve_ipopt_fc(p, {c})};
+    cpkit::lcp::friction::ProxOptions po;
+    po.common = c;
+    cpkit::lcp::friction::FacetedLemkeOptions lo;
+    lo.common = c;
+    cpkit::lcp::friction::IpoptFcOptions io;
+    io.common = c;
+    const cpkit::SolveResult results[] = {cpkit::lcp::friction::solve_prox(p, po),
+                                          cpkit::lcp::friction::solve_faceted_lemke(p, lo),
+                                          cpkit::lcp::friction::solve_ipopt_fc(p, io)};
     for (const auto& r : results) {
       INFO(f << ": " << r.solver << ": " << r.message);
       REQUIRE(r.status == Status::kSolved);

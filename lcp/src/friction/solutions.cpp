@@ -147,7 +147,7 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   //    proximal steps reach farther.
   std::mt19937_64 gen(o.seed);
   int runs = 0;
-  for (int k = 0; k < o.starts; ++k) {
+  for (int start = 0; start < o.starts; ++start) {
     if (remaining() <= 0) break;
     ProxOptions po;
     po.common = o.common;
