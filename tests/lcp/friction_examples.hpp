@@ -105,19 +105,19 @@ inline double violation(const FrictionContactProblem& p, const Eigen::VectorXd& 
   const Eigen::MatrixXd W(p.W);
   const Eigen::VectorXd u = W * r + p.q;
   const double wmax = W.cwiseAbs().maxCoeff();
-  const double R = std::max(r.lpNorm<Eigen::Infinity>(),
-                            wmax > 0 ? p.q.lpNorm<Eigen::Infinity>() / wmax : 0.0);
+  const double R =
+      std::max(r.lpNorm<Eigen::Infinity>(), wmax > 0 ? p.q.lpNorm<Eigen::Infinity>() / wmax : 0.0);
   double worst = 0;
   for (Eigen::Index i = 0; i < p.mu.size(); ++i) {
     const Eigen::Vector3d ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
     const double m = p.mu[i], rT = ri.tail<2>().norm(), uT = ui.tail<2>().norm();
-    const double S = p.q.segment<3>(3 * i).norm() + W.middleRows(3 * i, 3).cwiseAbs().maxCoeff() * R;
+    const double S =
+        p.q.segment<3>(3 * i).norm() + W.middleRows(3 * i, 3).cwiseAbs().maxCoeff() * R;
     if (!(R > 0) || !(S > 0)) continue;
     double v = std::max({0.0, -ri[0] / R, (rT - m * ri[0]) / R, -ui[0] / S});
     v = std::max(v, std::abs(ri[0] * ui[0]) / (R * S));
     v = std::max(v, std::abs(ri[0] * (ui[0] + m * uT) + ri.tail<2>().dot(ui.tail<2>())) / (R * S));
-    if (uT > 1e-6 * S)
-      v = std::max(v, (ri.tail<2>() + m * ri[0] * ui.tail<2>() / uT).norm() / R);
+    if (uT > 1e-6 * S) v = std::max(v, (ri.tail<2>() + m * ri[0] * ui.tail<2>() / uT).norm() / R);
     worst = std::max(worst, v);
   }
   return worst;

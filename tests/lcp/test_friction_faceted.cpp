@@ -2,7 +2,6 @@
 // closed forms of friction_examples.hpp, the faceted closed form derived below by hand, the
 // LCP conditions recomputed here, and every r re-checked by violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
@@ -50,7 +49,8 @@ TEST_CASE("faceted Lemke: stick and separation are exact; slip is the faceted cl
     const auto res = solve_faceted_lemke(p, raw);
     INFO(res.message);
     REQUIRE(res.status == Status::kSolved);
-    CHECK((res.z - cpkit::test::diagonal_closed_form(c)).norm() <= 1e-12 * std::max(1.0, res.z.norm()));
+    CHECK((res.z - cpkit::test::diagonal_closed_form(c)).norm() <=
+          1e-12 * std::max(1.0, res.z.norm()));
   }
   // Slip with q_T along the middle of a facet, e = (cos pi/k, sin pi/k): the faceted solution
   // is the facet's midpoint, r = r_N (1, -mu cos(pi/k) e), r_N = -q_N / wn (u_T = (|q_T| -
@@ -114,7 +114,8 @@ TEST_CASE("faceted Lemke: the same answer in other units", "[friction][faceted]"
       const auto res = solve_faceted_lemke(p);
       INFO("a = " << a << ", b = " << b << ": " << res.message);
       REQUIRE(res.status == Status::kSolved);
-      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <= 1e-8 * expect.lpNorm<Eigen::Infinity>());
+      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <=
+            1e-8 * expect.lpNorm<Eigen::Infinity>());
     }
 }
 

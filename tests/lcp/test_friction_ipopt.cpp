@@ -2,7 +2,6 @@
 // forms of friction_examples.hpp, the rigid box's equilibrium (H r = -f at rest), and every r
 // re-checked by the independent check violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
@@ -22,9 +21,9 @@ using cpkit::test::DiagContact;
 TEST_CASE("ipopt fc: one contact closed forms, two decoupled contacts in other units",
           "[friction][ipopt]") {
   const DiagContact cases[] = {
-      {2.0, 1.0, 0.3, Eigen::Vector3d(0.5, 1.0, -2.0)},    // separation
-      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},   // stick
-      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 3.0, -4.0)},   // slip
+      {2.0, 1.0, 0.3, Eigen::Vector3d(0.5, 1.0, -2.0)},   // separation
+      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},  // stick
+      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 3.0, -4.0)},  // slip
   };
   for (const DiagContact& c : cases) {
     const auto p = cpkit::test::diagonal_problem({c});

@@ -3,7 +3,6 @@
 // equilibrium (total impulses from Newton's law), and every result re-checked by the
 // independent check violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
@@ -22,10 +21,10 @@ using cpkit::test::DiagContact;
 
 TEST_CASE("prox: one contact, the three closed forms", "[friction][prox]") {
   const DiagContact cases[] = {
-      {2.0, 1.0, 0.3, Eigen::Vector3d(0.5, 1.0, -2.0)},    // separation
-      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},   // stick: |q_T|/wt = 0.5 <= 0.5*2
-      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 3.0, -4.0)},   // slip: 5 > 1
-      {1.0, 3.0, 0.0, Eigen::Vector3d(-1.0, 3.0, -4.0)},   // frictionless
+      {2.0, 1.0, 0.3, Eigen::Vector3d(0.5, 1.0, -2.0)},   // separation
+      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},  // stick: |q_T|/wt = 0.5 <= 0.5*2
+      {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 3.0, -4.0)},  // slip: 5 > 1
+      {1.0, 3.0, 0.0, Eigen::Vector3d(-1.0, 3.0, -4.0)},  // frictionless
   };
   for (const DiagContact& c : cases) {
     const auto p = cpkit::test::diagonal_problem({c});
@@ -52,13 +51,15 @@ TEST_CASE("prox: two decoupled contacts, and the same problem in other units", "
       const auto res = solve_prox(p);
       INFO("a = " << a << ", b = " << b << ": " << res.message);
       REQUIRE(res.status == Status::kSolved);
-      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <= 1e-8 * expect.lpNorm<Eigen::Infinity>());
+      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <=
+            1e-8 * expect.lpNorm<Eigen::Infinity>());
       CHECK(cpkit::test::violation(p, res.z) <= 1e-8);
     }
   }
 }
 
-TEST_CASE("prox: rank-deficient W of a rigid box on 4 corners (12 rows, rank 6)", "[friction][prox]") {
+TEST_CASE("prox: rank-deficient W of a rigid box on 4 corners (12 rows, rank 6)",
+          "[friction][prox]") {
   cpkit::test::Box box;
   box.push = Eigen::Vector2d(1.0, -0.5);  // mu m g = 9.8 > |push|: the box sticks
   Eigen::MatrixXd H;

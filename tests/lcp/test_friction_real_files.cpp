@@ -4,7 +4,6 @@
 // physics of the file is not assumed; .dat files are read by the test's own reader
 // (friction_dat.hpp), compared with cpkit's read_friction_problem (which also reads the HDF5 ones).
 #include <catch2/catch.hpp>
-
 #include <chrono>
 #include <cmath>
 #include <filesystem>

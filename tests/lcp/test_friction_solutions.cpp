@@ -2,7 +2,6 @@
 // (friction_examples.hpp), the rigid box's equilibrium (Newton's law: H r = -f at rest), and
 // every listed r re-checked by the independent check violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
@@ -48,7 +47,8 @@ TEST_CASE("solutions: a rigid box on 4 corners has a continuum: distinct verifie
       CHECK(rel_distance(set.solutions[i].z, set.solutions[j].z) > 1e-6);
 }
 
-TEST_CASE("solutions: unique problems give one solution, the closed form", "[friction][solutions]") {
+TEST_CASE("solutions: unique problems give one solution, the closed form",
+          "[friction][solutions]") {
   const std::vector<cpkit::test::DiagContact> cs = {
       {2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},
       {1.0, 4.0, 0.2, Eigen::Vector3d(-1.0, 6.0, 8.0)}};
@@ -69,7 +69,6 @@ TEST_CASE("solutions: bad options are refused", "[friction][solutions]") {
   o.starts = 0;
   CHECK_THROWS_AS(friction_solutions(p, o), cpkit::InputError);
 }
-
 
 namespace {
 
@@ -122,13 +121,15 @@ std::vector<Eigen::VectorXd> brute_force_r(const cpkit::lcp::friction::FacetedLc
     }
     const Eigen::VectorXd w = M * z + q;
     const double zs = std::max(z.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (z.minCoeff() < -1e-9 * zs || w.minCoeff() < -1e-9 * std::max(1.0, q.lpNorm<Eigen::Infinity>()))
+    if (z.minCoeff() < -1e-9 * zs ||
+        w.minCoeff() < -1e-9 * std::max(1.0, q.lpNorm<Eigen::Infinity>()))
       continue;
     const Eigen::VectorXd r = f.G * z;
     bool seen = false;
     for (const auto& y : out)
-      seen = seen || (r - y).lpNorm<Eigen::Infinity>() <=
-                         1e-6 * std::max({r.lpNorm<Eigen::Infinity>(), y.lpNorm<Eigen::Infinity>(), 1.0});
+      seen = seen ||
+             (r - y).lpNorm<Eigen::Infinity>() <=
+                 1e-6 * std::max({r.lpNorm<Eigen::Infinity>(), y.lpNorm<Eigen::Infinity>(), 1.0});
     if (!seen) out.push_back(r);
   }
   return out;
@@ -148,7 +149,7 @@ TEST_CASE("faceted enumeration: the count and the r's match a brute force over a
     REQUIRE(fs.r.size() == bf.size());
     for (const auto& r : fs.r) {
       double best = 1e300;
-      for (const auto& y : bf) best = std::min(best, rel_distance(r, y) );
+      for (const auto& y : bf) best = std::min(best, rel_distance(r, y));
       CHECK(best <= 1e-9);
     }
   }
@@ -173,8 +174,7 @@ TEST_CASE("solutions: every exact one-contact solution is found and verified",
     for (const auto& s : set.solutions) best = std::min(best, rel_distance(s.z, exact.r[i]));
     CHECK(best <= 1e-8);
   }
-  for (const auto& s : set.solutions)
-    CHECK(cpkit::test::violation(p, s.z) <= 1e-8);
+  for (const auto& s : set.solutions) CHECK(cpkit::test::violation(p, s.z) <= 1e-8);
 }
 
 TEST_CASE("solutions: the same three solutions in other units", "[friction][solutions]") {

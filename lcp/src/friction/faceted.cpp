@@ -49,7 +49,7 @@ FacetedLcp faceted_lcp(const FrictionContactProblem& p, int k) {
       M(o + 1 + j, l) = 1;   // w_beta_j += lambda
       M(l, o + 1 + j) = -1;  // w_lambda -= beta_j
     }
-    M(l, o) = p.mu[i];       // w_lambda = mu r_N - ...
+    M(l, o) = p.mu[i];  // w_lambda = mu r_N - ...
   }
   f.lcp.M = std::move(M);
   f.lcp.q = f.G.transpose() * p.q;
@@ -92,8 +92,8 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
   }
   const SolveResult lcp = solve_lemke(f.lcp, lo);
   const std::string facets = std::to_string(o.facets) + " facets, facet error 1 - cos(pi/" +
-                             std::to_string(o.facets) + ") = " +
-                             helpers::short_number(100 * f.facet_error) + " %";
+                             std::to_string(o.facets) +
+                             ") = " + helpers::short_number(100 * f.facet_error) + " %";
   SolveResult claim;
   claim.solver = "lemke";
   claim.iterations = lcp.iterations;
@@ -105,8 +105,9 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
       // Lemke's certificate proves the FACETED problem infeasible; K_k is inside K_mu, so this
       // says nothing certain about the true cone: reported, never granted as kInfeasible.
       claim.status = Status::kStalled;
-      claim.message += "; the faceted problem has no solution (certificate checked for the "
-                       "faceted LCP), which proves nothing for the true cone";
+      claim.message +=
+          "; the faceted problem has no solution (certificate checked for the "
+          "faceted LCP), which proves nothing for the true cone";
       claim.seconds = clock.seconds();
       return claim;
     }

@@ -10,8 +10,8 @@
 
 namespace cpkit::lcp::friction {
 
-FacetedSolutionList faceted_solutions(const FrictionContactProblem& p, int k,
-                                      double regularisation, double time_limit_s) {
+FacetedSolutionList faceted_solutions(const FrictionContactProblem& p, int k, double regularisation,
+                                      double time_limit_s) {
   helpers::check_problem(p);
   const Eigen::Index nc = p.contacts();
   if (nc * (k + 2) > kMaxEnumerationSize)

@@ -16,7 +16,8 @@ namespace cpkit::lcp::friction {
 std::string IpoptFcOptions::validate(Eigen::Index n) const {
   if (const std::string e = common.validate(); !e.empty()) return e;
   if (r0.size() != 0 && (r0.size() != n || !r0.allFinite()))
-    return "r0 must have " + std::to_string(n) + " finite entries, got " + std::to_string(r0.size());
+    return "r0 must have " + std::to_string(n) + " finite entries, got " +
+           std::to_string(r0.size());
   return {};
 }
 
@@ -30,8 +31,10 @@ SolveResult solve_ipopt_fc(const FrictionContactProblem& p, const IpoptFcOptions
   if (nc > kIpoptFcMaxContacts) {
     out.status = Status::kUnsupported;
     out.message = "the Ipopt friction fallback takes at most " +
-                  std::to_string(kIpoptFcMaxContacts) + " contacts (dense derivatives of 4 n_c "
-                  "unknowns); this problem has " + std::to_string(nc) + ": use nsgs, fb-soc or prox";
+                  std::to_string(kIpoptFcMaxContacts) +
+                  " contacts (dense derivatives of 4 n_c "
+                  "unknowns); this problem has " +
+                  std::to_string(nc) + ": use nsgs, fb-soc or prox";
     return out;
   }
   const FrictionUnits units = friction_units(p);
@@ -162,7 +165,8 @@ SolveResult solve_ipopt_fc(const FrictionContactProblem& p, const IpoptFcOptions
   out.message = "MPCC of the true cone by Ipopt (" + std::to_string(mr.subproblems.size()) +
                 " NLPs, " + std::to_string(mr.iterations) + " iterations" +
                 (mr.stopped_early ? ", stopped at the first verified iterate" : "") +
-                "): " + std::string(to_string(mr.status)) + (mr.message.empty() ? "" : ", " + mr.message);
+                "): " + std::string(to_string(mr.status)) +
+                (mr.message.empty() ? "" : ", " + mr.message);
   SolveResult res = out.z.size() ? finalize(p, std::move(out), o.common) : out;
   if (res.status == Status::kNotRun)
     res.status = mr.status == Status::kTimeLimit ? Status::kTimeLimit : Status::kStalled;

@@ -86,8 +86,9 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   //    the true cone.
   const int k = enumeration_facets(nc);
   if (nc >= 1 && nc <= o.max_enumeration_contacts && nc * (k + 2) <= kMaxEnumerationSize) {
-    const FacetedSolutionList fs = faceted_solutions(
-        p, k, kEnumerationRegularisation, std::min(kEnumerationSeconds, std::max(0.0, remaining() / 2)));
+    const FacetedSolutionList fs =
+        faceted_solutions(p, k, kEnumerationRegularisation,
+                          std::min(kEnumerationSeconds, std::max(0.0, remaining() / 2)));
     for (const Eigen::VectorXd& r : fs.r) {
       if (remaining() <= 0) break;
       SolveResult claim;
@@ -109,12 +110,14 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     faceted_note =
         "faceted problem (" + std::to_string(k) + " facets, facet error " +
         helpers::short_number(100 * fs.faceted.facet_error) + " %, regularised by " +
-        helpers::short_number(kEnumerationRegularisation) + " w_scale on the force diagonal; LCP of " +
-        std::to_string(fs.faceted.lcp.size()) + " unknowns): " + std::to_string(fs.extreme) +
-        " extreme LCP solutions, " + std::to_string(fs.r.size()) + " distinct r, enumeration " +
+        helpers::short_number(kEnumerationRegularisation) +
+        " w_scale on the force diagonal; LCP of " + std::to_string(fs.faceted.lcp.size()) +
+        " unknowns): " + std::to_string(fs.extreme) + " extreme LCP solutions, " +
+        std::to_string(fs.r.size()) + " distinct r, enumeration " +
         (fs.complete ? "complete for the faceted problem" : "NOT complete (" + fs.message + ")") +
         (fs.infinite ? ", with continua (listed by their vertices)" : "") + "; " +
-        std::to_string(col.verified) + " of them verified on the true cone (exact or polished); "
+        std::to_string(col.verified) +
+        " of them verified on the true cone (exact or polished); "
         "complete for the faceted problem is not complete for the true cone; ";
   } else if (nc > o.max_enumeration_contacts) {
     faceted_note = std::to_string(nc) + " contacts > max_enumeration_contacts = " +
@@ -141,7 +144,8 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   // A solver that failed from its own start on this problem is not run from the seeds (NSGS
   // on a rank-deficient stack would spend its 2000 sweeps at every start).
   const bool seed_nsgs = !failed_first.count("nsgs"), seed_fb = !failed_first.count("fb-soc");
-  // 2. NSGS, fb-soc and proximal point from seeded starts in the cones, of the data's own size r_ref:
+  // 2. NSGS, fb-soc and proximal point from seeded starts in the cones, of the data's own size
+  // r_ref:
   //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N. NSGS stays near
   //    its start (each contact takes its solution nearest the current r_i); PROX's large early
   //    proximal steps reach farther.
@@ -179,17 +183,17 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
   set.complete = false;
-  set.message = faceted_note + "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
-                "solvers once (ipopt only up to " + std::to_string(kIpoptContacts) + " contacts), nsgs, fb-soc and prox from " + std::to_string(runs) +
-                " seeded starts, seed " + std::to_string(o.seed) +
-                (seed_nsgs && seed_fb ? std::string()
-                                      : std::string("; not from the seeds: ") +
-                                            (seed_nsgs ? "" : "nsgs ") + (seed_fb ? "" : "fb-soc ") +
-                                            "(failed from their own start)") +
-                "), " +
-                std::to_string(col.verified) + " verified, " +
-                std::to_string(set.solutions.size()) +
-                " distinct; complete: false (a solution no start led to is not found)";
+  set.message =
+      faceted_note + "multistart: " + std::to_string(col.tried) +
+      " solves (the registered friction "
+      "solvers once (ipopt only up to " +
+      std::to_string(kIpoptContacts) + " contacts), nsgs, fb-soc and prox from " +
+      std::to_string(runs) + " seeded starts, seed " + std::to_string(o.seed) +
+      (seed_nsgs && seed_fb ? std::string()
+                            : std::string("; not from the seeds: ") + (seed_nsgs ? "" : "nsgs ") +
+                                  (seed_fb ? "" : "fb-soc ") + "(failed from their own start)") +
+      "), " + std::to_string(col.verified) + " verified, " + std::to_string(set.solutions.size()) +
+      " distinct; complete: false (a solution no start led to is not found)";
   if (remaining() <= 0) set.message += "; the time limit stopped the search";
   return set;
 }

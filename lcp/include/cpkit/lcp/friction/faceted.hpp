@@ -93,12 +93,12 @@ namespace cpkit::lcp::friction {
 /// 4-contact rigid box of the tests, k = 4: ~60 s; k = 8 does not finish for 4 contacts).
 /// friction_solutions() uses k = 4 up to 3 contacts, k = 3 beyond, and at most 5 s.
 struct FacetedSolutionList {
-  FacetedLcp faceted;               ///< the (regularised) LCP enumerated
-  std::vector<Eigen::VectorXd> r;   ///< its solutions in r = G z, distinct (unit-free, 1e-6)
-  int extreme = 0;                  ///< extreme LCP solutions (several may share one r)
-  bool complete = false;            ///< the LCP enumeration was complete (faceted problem only)
-  bool infinite = false;            ///< the LCP's set has pieces of positive dimension
-  std::string message;              ///< the enumeration's account when not complete
+  FacetedLcp faceted;              ///< the (regularised) LCP enumerated
+  std::vector<Eigen::VectorXd> r;  ///< its solutions in r = G z, distinct (unit-free, 1e-6)
+  int extreme = 0;                 ///< extreme LCP solutions (several may share one r)
+  bool complete = false;           ///< the LCP enumeration was complete (faceted problem only)
+  bool infinite = false;           ///< the LCP's set has pieces of positive dimension
+  std::string message;             ///< the enumeration's account when not complete
 };
 
 /// Throws InputError on an invalid problem, facets outside [3, 64], n_c (k + 2) > 64 or a

@@ -13,9 +13,9 @@
 /// |diag W| (||W||_max when the diagonal is zero; 1 for W = 0), so that alpha has W's units;
 /// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha stays in
 /// [1e-10, 1e10] w_scale (a floor and a cap in W's units).
-/// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised problem, each
-/// contact's 3x3 problem (block W_ii + alpha I) solved exactly by one_contact_nearest()
-/// (one_contact.hpp: the solution nearest the current r_i). The inner solve
+/// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised
+/// problem, each contact's 3x3 problem (block W_ii + alpha I) solved exactly by
+/// one_contact_nearest() (one_contact.hpp: the solution nearest the current r_i). The inner solve
 /// stops when a sweep changes r by at most max(e_k / 10, tol / 10) relative to the size of r
 /// (the internal tolerance adapted to the outer error, as PROX does). ProxInner::kFbSoc solves
 /// each regularised problem by fb-soc from r_k to the outer tol instead (its unit-free verdict
@@ -48,7 +48,7 @@ struct ProxOptions {
   Eigen::VectorXd r0;    ///< starting r (empty: r = 0), 3 per contact
   double sigma = 5;      ///< alpha = sigma e^nu w_scale (PROX's defaults sigma = 5, nu = 1)
   double nu = 1;
-  int max_sweeps = 0;    ///< Gauss-Seidel sweeps per inner solve (0: 200)
+  int max_sweeps = 0;  ///< Gauss-Seidel sweeps per inner solve (0: 200)
   ProxInner inner = ProxInner::kFbSoc;
   /// Empty when usable for a problem with n = 3 n_c rows; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;

@@ -16,11 +16,11 @@
 ///   too unless every contact's solution is proved unique by other means (not attempted yet);
 ///   the message reports the faceted count and whether that enumeration was complete.
 /// - All problems (after the enumeration when it ran): multistart (seeded, deterministic): the
-///   registered friction solvers once each ("auto" excluded, "ipopt" only up to 10 contacts), then NSGS, fb-soc and proximal
-///   point from each of `starts` seeded points in the cones (r_N uniform in [0, 2 r_ref], r_T
-///   uniform in the disc of radius mu r_N; std::mt19937_64(seed), 53-bit uniforms: the same
-///   on every platform; nsgs and fb-soc only when they solved the problem from their own start);
-///   complete = false always.
+///   registered friction solvers once each ("auto" excluded, "ipopt" only up to 10 contacts), then
+///   NSGS, fb-soc and proximal point from each of `starts` seeded points in the cones (r_N uniform
+///   in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N; std::mt19937_64(seed), 53-bit
+///   uniforms: the same on every platform; nsgs and fb-soc only when they solved the problem from
+///   their own start); complete = false always.
 /// Distinct: two verified r are the same solution when
 ///   ||r_a - r_b||_inf <= 1e-6 max(||r_a||_inf, ||r_b||_inf, r_ref),  r_ref = ||q||_inf/||W||_max
 /// (unit-free: unchanged when q is scaled, or W and q together). Only finalize() verdicts of
