@@ -31,6 +31,7 @@ void add_map_command(CLI::App& app, Context& ctx);  ///< `cpkit map`
 void add_rate_command(CLI::App& app, Context& ctx);
 void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step`
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate`
+void add_fc_command(CLI::App& app, Context& ctx);        ///< `cpkit fc` (friction problems)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
 
 /// A number for messages ("1e+300", "0.25"; std::to_string prints 300 digits or 0.000000).

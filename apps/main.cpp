@@ -29,6 +29,7 @@ int run(int argc, char** argv) {
   add_rate_command(app, ctx);
   add_step_command(app, ctx);
   add_simulate_command(app, ctx);
+  add_fc_command(app, ctx);
   check_all_option_values(app);  // no empty, non-finite or malformed numbers (cli_options.hpp)
   try {
     const std::string wrong = check_command_words(app, std::vector<std::string>(argv + 1, argv + argc));

@@ -31,6 +31,14 @@ if(NOT TARGET simdjson::simdjson)
   message(FATAL_ERROR "simdjson not found: install the Debian package 'libsimdjson-dev'")
 endif()
 
+# fclib: reader and writer of FCLIB frictional contact problems (HDF5). Found through its
+# pkg-config file (which brings HDF5's): its CMake package (find_package(fclib CONFIG)) calls
+# FindHDF5 with the C language, which this C++-only project (and its consumers) do not enable.
+pkg_check_modules(FCLIB QUIET IMPORTED_TARGET GLOBAL fclib)
+if(NOT FCLIB_FOUND)
+  message(FATAL_ERROR "fclib not found via pkg-config: install the Debian package 'libfclib-dev'")
+endif()
+
 if(CPKIT_BUILD_APPS)
   find_package(CLI11 CONFIG QUIET)
   if(NOT TARGET CLI11::CLI11)

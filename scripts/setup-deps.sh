@@ -8,13 +8,14 @@
 #            lrslib (lrsnash: the peer of the bimatrix-game enumeration test), and Open MPI
 #            (libopenmpi-dev, openmpi-bin) for the distributed maps (docs/cluster.md).
 #            Without them those tests are skipped, saying why.
-# The base set includes pybind11-dev and python3-dev: the Python module `cpkit` (python/).
+# The base set includes pybind11-dev and python3-dev: the Python module `cpkit` (python/), and
+# libfclib-dev (with HDF5): the FCLIB frictional contact problem reader (docs/friction_contact.md).
 # Runs `apt-get update` once, and only when something is missing. Needs root (or sudo).
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev
           catch2 libcli11-dev nlohmann-json3-dev libsimdjson-dev python3-matplotlib python3-numpy
-          pybind11-dev python3-dev)
+          pybind11-dev python3-dev libfclib-dev)
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(libsiconos-numerics-dev lrslib) ;;

@@ -21,106 +21,21 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
+#include "io_dat_matrix.hpp"
 #include "io_text.hpp"
 
 namespace cpkit {
+namespace io_dat {
 namespace {
 
-using io_text::Token;
-
-constexpr std::int64_t kMaxIndex = std::numeric_limits<int>::max();  // Eigen's index type
-
-/// Reads the tokens of a .dat file in order. Every error names the file and the line.
-class DatReader {
- public:
-  DatReader(const std::vector<Token>& tokens, const std::string& origin)
-      : tokens_(tokens), origin_(origin) {}
-
-  bool done() const { return next_ == tokens_.size(); }
-  std::size_t position() const { return next_; }
-  std::uint64_t remaining() const { return tokens_.size() - next_; }
-  /// Line of the next token (of the last one at the end of the file).
-  int line() const {
-    if (tokens_.empty()) return 1;
-    return tokens_[std::min(next_, tokens_.size() - 1)].line;
-  }
-
-  [[noreturn]] void fail(int line, const std::string& message) const {
-    throw InputError(origin_ + ":" + std::to_string(line) + ": " + message);
-  }
-
-  /// The next token as an integer in [lo, hi]. `what` names it: a string, or a callable that
-  /// makes the string (only called for a message, so that loops over entries stay cheap).
-  template <class What>
-  std::int64_t integer(const What& what, std::int64_t lo, std::int64_t hi) {
-    const Token& t = take(what);
-    std::int64_t v = 0;
-    if (!io_text::parse_integer(t.text, v))
-      fail(t.line, "expected " + name(what) + " (an integer), got '" + io_text::quoted(t.text) + "'");
-    if (v < lo || v > hi)
-      fail(t.line, name(what) + " is " + std::to_string(v) + ", expected " + range(lo, hi));
-    return v;
-  }
-
-  /// The next token as a finite double; `what` names it (as for integer()).
-  template <class What>
-  double real(const What& what) {
-    const Token& t = take(what);
-    double v = 0;
-    if (const auto r = io_text::parse_real(t.text, v); r != io_text::Number::kOk)
-      fail(t.line, name(what) + ": " + io_text::describe(r, t.text));
-    return v;
-  }
-
-  /// InputError unless `count` more tokens are in the file; checked before allocating for them.
-  void need(std::uint64_t count, const std::string& what) const {
-    if (count > remaining())
-      fail(tokens_.back().line, "the file ends too early: " + what + " need " + std::to_string(count) +
-                       " more numbers, the file has " + std::to_string(remaining()));
-  }
-
- private:
-  template <class What>
-  static std::string name(const What& what) {
-    if constexpr (std::is_invocable_v<const What&>)
-      return what();
-    else
-      return std::string(what);
-  }
-  template <class What>
-  const Token& take(const What& what) {
-    if (done()) fail(line(), "the file ends where " + name(what) + " was expected");
-    return tokens_[next_++];
-  }
-  static std::string range(std::int64_t lo, std::int64_t hi) {
-    if (lo == hi) return std::to_string(lo);
-    if (hi == std::numeric_limits<std::int64_t>::max()) return ">= " + std::to_string(lo);
-    return "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  }
-
-  const std::vector<Token>& tokens_;
-  const std::string& origin_;
-  std::size_t next_ = 0;
-};
-
-/// Storage 0: "size0 size1" repeated, then the n * n entries column-major.
-Mat read_dense(DatReader& r, std::int64_t n) {
-  const std::string ns = std::to_string(n);
-  r.integer("the number of rows of the dense M (repeated)", n, n);
-  r.integer("the number of columns of the dense M (repeated)", n, n);
-  const auto count = static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n);
-  r.need(count + static_cast<std::uint64_t>(n),
-         "the " + ns + " x " + ns + " entries of M and the " + ns + " entries of q");
-  Mat M(n, n);
-  for (std::int64_t c = 0; c < n; ++c)  // column-major: Siconos' matrix0 storage order
-    for (std::int64_t i = 0; i < n; ++i)
-      M(i, c) = r.real([&] { return "M(" + std::to_string(i) + ", " + std::to_string(c) + ")"; });
-  return M;
+std::string size_text(std::int64_t rows, std::int64_t cols) {
+  return std::to_string(rows) + " x " + std::to_string(cols);
 }
 
 /// Cumulative block sizes: strictly increasing, the last equal to n.
 std::vector<std::int64_t> read_cumulative_sizes(DatReader& r, std::int64_t blocks, std::int64_t n,
-                                                const std::string& what) {
+                                                const std::string& what, const std::string& name,
+                                                const std::string& size) {
   std::vector<std::int64_t> sizes;
   sizes.reserve(static_cast<std::size_t>(blocks));  // blocks <= remaining tokens (checked)
   std::int64_t previous = 0;
@@ -136,22 +51,41 @@ std::vector<std::int64_t> read_cumulative_sizes(DatReader& r, std::int64_t block
     previous = s;
   }
   if (previous != n)
-    r.fail(line, "the " + what + " sizes add up to " + std::to_string(previous) + ", but M is " +
-                         std::to_string(n) + " x " + std::to_string(n));
+    r.fail(line, "the " + what + " sizes add up to " + std::to_string(previous) + ", but " + name +
+                     " is " + size);
   return sizes;
 }
 
-/// Storage 1: a SparseBlockStructuredMatrix (SBM_new_from_file), as sparse storage.
-SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
-  SparseMat M(n, n);
+}  // namespace
+
+Eigen::MatrixXd read_dense(DatReader& r, std::int64_t n_rows, std::int64_t n_cols,
+                           std::uint64_t after, const std::string& name,
+                           const std::string& after_what) {
+  r.integer("the number of rows of the dense " + name + " (repeated)", n_rows, n_rows);
+  r.integer("the number of columns of the dense " + name + " (repeated)", n_cols, n_cols);
+  const auto count = static_cast<std::uint64_t>(n_rows) * static_cast<std::uint64_t>(n_cols);
+  r.need(count + after, "the " + size_text(n_rows, n_cols) + " entries of " + name + " and the " +
+                            std::to_string(after) + " entries of " + after_what);
+  Eigen::MatrixXd M(n_rows, n_cols);
+  for (std::int64_t c = 0; c < n_cols; ++c)  // column-major: Siconos' matrix0 storage order
+    for (std::int64_t i = 0; i < n_rows; ++i)
+      M(i, c) = r.real(
+          [&] { return name + "(" + std::to_string(i) + ", " + std::to_string(c) + ")"; });
+  return M;
+}
+
+Eigen::SparseMatrix<double> read_sparse_block(DatReader& r, std::int64_t n_rows,
+                                              std::int64_t n_cols, const std::string& name) {
+  const std::string size = size_text(n_rows, n_cols);
+  Eigen::SparseMatrix<double> M(n_rows, n_cols);
   const std::int64_t nbblocks =
       r.integer("the number of non-zero blocks", 0, static_cast<std::int64_t>(r.remaining()));
   if (nbblocks == 0) return M;  // Siconos writes only "0" for a matrix without blocks
-  const std::int64_t rows = r.integer("the number of block rows", 1, n);
-  const std::int64_t cols = r.integer("the number of block columns", 1, n);
+  const std::int64_t rows = r.integer("the number of block rows", 1, n_rows);
+  const std::int64_t cols = r.integer("the number of block columns", 1, n_cols);
   r.need(static_cast<std::uint64_t>(rows + cols), "the cumulative block sizes");
-  const auto row_end = read_cumulative_sizes(r, rows, n, "block row");
-  const auto col_end = read_cumulative_sizes(r, cols, n, "block column");
+  const auto row_end = read_cumulative_sizes(r, rows, n_rows, "block row", name, size);
+  const auto col_end = read_cumulative_sizes(r, cols, n_cols, "block column", name, size);
   // filled1 = number of block-row pointers: trailing empty block rows may be left out.
   const std::int64_t filled1 = r.integer("filled1 (the number of block-row pointers)", 1, rows + 1);
   r.integer("filled2 (the number of non-zero blocks, as nbblocks)", nbblocks, nbblocks);
@@ -174,7 +108,7 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
                   0, cols - 1);
 
   std::vector<Eigen::Triplet<double>> entries;
-  std::vector<std::int64_t> seen_in_row(static_cast<std::size_t>(cols), -1);  // cols <= n
+  std::vector<std::int64_t> seen_in_row(static_cast<std::size_t>(cols), -1);  // cols <= n_cols
   for (std::int64_t br = 0; br + 1 < filled1; ++br) {
     const std::int64_t r0 = br == 0 ? 0 : row_end[static_cast<std::size_t>(br - 1)];
     const std::int64_t nr = row_end[static_cast<std::size_t>(br)] - r0;
@@ -195,7 +129,7 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
       for (std::int64_t k = 0; k < nr * nc; ++k) {  // column-major within the block
         const std::int64_t i = r0 + k % nr, j = c0 + k / nr;
         const double v = r.real([&] {
-          return "M(" + std::to_string(i) + ", " + std::to_string(j) + ") in block " +
+          return name + "(" + std::to_string(i) + ", " + std::to_string(j) + ") in block " +
                  std::to_string(b);
         });
         entries.emplace_back(static_cast<int>(i), static_cast<int>(j), v);
@@ -206,6 +140,13 @@ SparseMat read_sparse_block(DatReader& r, std::int64_t n) {
   M.makeCompressed();
   return M;
 }
+
+}  // namespace io_dat
+
+namespace {
+
+using io_dat::DatReader;
+using io_text::Token;
 
 bool starts_with_number(const std::vector<Token>& tokens, std::size_t k) {
   double v = 0;
@@ -221,7 +162,7 @@ LcpProblem parse_lcp_dat(const std::string& text, const std::string& origin_in) 
   if (tokens.empty())
     throw InputError(origin + ": empty file (expected n, the storage type of M, M, then q)");
   DatReader r(tokens, origin);
-  const std::int64_t n = r.integer("the problem size n", 1, kMaxIndex);
+  const std::int64_t n = r.integer("the problem size n", 1, io_dat::kMaxIndex);
   // Whatever M's storage, the file must still hold its type, two sizes and the n entries of q.
   r.need(3 + static_cast<std::uint64_t>(n), "the storage type and sizes of M and the entries of q");
   const int storage_line = r.line();
@@ -239,9 +180,9 @@ LcpProblem parse_lcp_dat(const std::string& text, const std::string& origin_in) 
   r.integer("the number of columns of M" + need_n, n, n);
   LcpProblem p;
   if (storage == 0)
-    p.M = read_dense(r, n);
+    p.M = io_dat::read_dense(r, n, n, static_cast<std::uint64_t>(n));
   else
-    p.M_sparse = read_sparse_block(r, n);
+    p.M_sparse = io_dat::read_sparse_block(r, n, n);
   r.need(static_cast<std::uint64_t>(n), "the " + std::to_string(n) + " entries of q");
   p.q.resize(n);
   for (std::int64_t i = 0; i < n; ++i)

@@ -5,6 +5,7 @@
 #include "cpkit/lcp/friction/auto.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/friction/fb_soc.hpp"
+#include "cpkit/lcp/friction/ipopt_fc.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
@@ -17,7 +18,7 @@ SolverRegistry build() {
   SolverRegistry r;
   r.add(friction::with_faceted_lemke(lemke_entry()));  // + friction problems, faceted cone
   r.add(fb_newton_entry());
-  r.add(ipopt_entry());
+  r.add(friction::with_ipopt_fc(ipopt_entry()));  // + friction problems (MPCC)
   r.add(nlopt_entry());
   SolverEntry automatic = auto_entry();  // one "auto": LCP/box/MCP chain and the friction chain
   automatic.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& o) {

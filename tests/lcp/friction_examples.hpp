@@ -3,6 +3,8 @@
 // closed forms their tests assert.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "cpkit/core/friction_problem.hpp"
@@ -92,6 +94,33 @@ inline FrictionContactProblem box_problem(const Box& box, Eigen::MatrixXd* H_out
   p.name = "box on 4 corners";
   if (H_out) *H_out = H;
   return p;
+}
+
+/// An independent check of a frictional contact solution (written here, no cpkit cone code):
+/// per contact r in K_mu, u_N >= 0, u_hat . r = 0, Signorini r_N u_N = 0, and Coulomb's
+/// direction r_T = -mu r_N u_T/|u_T| when sliding; forces relative to
+/// R = max(||r||_inf, ||q||_inf/||W||_max) (so that r = 0 plus rounding is judged at the data's
+/// size), velocities to the contact's |q_i| + ||W_i,:||_max R. Returns the largest violation.
+inline double violation(const FrictionContactProblem& p, const Eigen::VectorXd& r) {
+  const Eigen::MatrixXd W(p.W);
+  const Eigen::VectorXd u = W * r + p.q;
+  const double wmax = W.cwiseAbs().maxCoeff();
+  const double R =
+      std::max(r.lpNorm<Eigen::Infinity>(), wmax > 0 ? p.q.lpNorm<Eigen::Infinity>() / wmax : 0.0);
+  double worst = 0;
+  for (Eigen::Index i = 0; i < p.mu.size(); ++i) {
+    const Eigen::Vector3d ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
+    const double m = p.mu[i], rT = ri.tail<2>().norm(), uT = ui.tail<2>().norm();
+    const double S =
+        p.q.segment<3>(3 * i).norm() + W.middleRows(3 * i, 3).cwiseAbs().maxCoeff() * R;
+    if (!(R > 0) || !(S > 0)) continue;
+    double v = std::max({0.0, -ri[0] / R, (rT - m * ri[0]) / R, -ui[0] / S});
+    v = std::max(v, std::abs(ri[0] * ui[0]) / (R * S));
+    v = std::max(v, std::abs(ri[0] * (ui[0] + m * uT) + ri.tail<2>().dot(ui.tail<2>())) / (R * S));
+    if (uT > 1e-6 * S) v = std::max(v, (ri.tail<2>() + m * ri[0] * ui.tail<2>() / uT).norm() / R);
+    worst = std::max(worst, v);
+  }
+  return worst;
 }
 
 }  // namespace cpkit::test

@@ -1,14 +1,12 @@
 // Tests of the faceted LCP and Lemke on it (friction/faceted.hpp). Expected values: the
 // closed forms of friction_examples.hpp, the faceted closed form derived below by hand, the
-// LCP conditions recomputed here, and every r re-checked by friction_check.hpp.
+// LCP conditions recomputed here, and every r re-checked by violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "friction_check.hpp"
 #include "friction_examples.hpp"
 
 namespace {
@@ -51,7 +49,8 @@ TEST_CASE("faceted Lemke: stick and separation are exact; slip is the faceted cl
     const auto res = solve_faceted_lemke(p, raw);
     INFO(res.message);
     REQUIRE(res.status == Status::kSolved);
-    CHECK((res.z - cpkit::test::diagonal_closed_form(c)).norm() <= 1e-12 * std::max(1.0, res.z.norm()));
+    CHECK((res.z - cpkit::test::diagonal_closed_form(c)).norm() <=
+          1e-12 * std::max(1.0, res.z.norm()));
   }
   // Slip with q_T along the middle of a facet, e = (cos pi/k, sin pi/k): the faceted solution
   // is the facet's midpoint, r = r_N (1, -mu cos(pi/k) e), r_N = -q_N / wn (u_T = (|q_T| -
@@ -73,7 +72,7 @@ TEST_CASE("faceted Lemke: stick and separation are exact; slip is the faceted cl
   INFO(pol.message);
   REQUIRE(pol.status == Status::kSolved);
   CHECK((pol.z - cpkit::test::diagonal_closed_form(c)).norm() <= 1e-8);
-  CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, pol.z) <= 1e-8);
+  CHECK(cpkit::test::violation(p, pol.z) <= 1e-8);
 }
 
 TEST_CASE("faceted Lemke: rank-deficient box, registry, refusals", "[friction][faceted]") {
@@ -88,7 +87,7 @@ TEST_CASE("faceted Lemke: rank-deficient box, registry, refusals", "[friction][f
   const auto res = e->solve_fc(p, {});
   INFO(res.message);
   REQUIRE(res.status == Status::kSolved);
-  CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, res.z) <= 1e-8);
+  CHECK(cpkit::test::violation(p, res.z) <= 1e-8);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(6);
   f << box.h * box.push[0], box.h * box.push[1], -box.h * box.m * box.g, 0, 0, 0;
   CHECK((H * res.z + f).lpNorm<Eigen::Infinity>() <= 1e-8 * box.h * box.m * box.g);
@@ -100,4 +99,35 @@ TEST_CASE("faceted Lemke: rank-deficient box, registry, refusals", "[friction][f
   FacetedLemkeOptions bad;
   bad.facets = 2;
   CHECK_THROWS_AS(solve_faceted_lemke(p, bad), cpkit::InputError);
+}
+
+TEST_CASE("faceted Lemke: the same answer in other units", "[friction][faceted]") {
+  const std::vector<DiagContact> cs = {{2.0, 1.0, 0.5, Eigen::Vector3d(-4.0, 0.3, -0.4)},
+                                       {1.0, 4.0, 0.2, Eigen::Vector3d(-1.0, 6.0, 8.0)}};
+  Eigen::VectorXd expect(6);
+  expect << cpkit::test::diagonal_closed_form(cs[0]), cpkit::test::diagonal_closed_form(cs[1]);
+  for (const double a : {1e-10, 1e10})
+    for (const double b : {1e-8, 1e8}) {
+      auto p = cpkit::test::diagonal_problem(cs);
+      p.q *= a * b;  // r -> a r
+      p.W *= b;
+      const auto res = solve_faceted_lemke(p);
+      INFO("a = " << a << ", b = " << b << ": " << res.message);
+      REQUIRE(res.status == Status::kSolved);
+      CHECK((res.z / a - expect).lpNorm<Eigen::Infinity>() <=
+            1e-8 * expect.lpNorm<Eigen::Infinity>());
+    }
+}
+
+TEST_CASE("faceted Lemke: an infeasible problem is reported, never solved", "[friction][faceted]") {
+  // W = 0, q_N = -1: u_N = -1 < 0 for every r (hand check): no solution.
+  cpkit::FrictionContactProblem p;
+  p.W.resize(3, 3);
+  p.q = Eigen::Vector3d(-1, 0.2, 0);
+  p.mu = Eigen::VectorXd::Constant(1, 0.5);
+  const auto res = solve_faceted_lemke(p);
+  INFO(res.message);
+  CHECK_FALSE(cpkit::is_solution(res.status));
+  CHECK(res.status != Status::kInfeasible);  // no certificate for the true cone
+  CHECK(res.message.find("faceted problem has no solution") != std::string::npos);
 }

@@ -1,7 +1,6 @@
 #pragma once
 // Small helpers shared by h16's friction solvers (prox, faceted Lemke, Ipopt, solutions).
 #include <Eigen/SparseCore>
-
 #include <cstdio>
 #include <string>
 #include <vector>

@@ -4,11 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/lcp/friction/faceted.hpp"
+#include "cpkit/lcp/friction/fb_soc.hpp"
+#include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_helpers.hpp"
@@ -18,6 +23,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDistinct = 1e-6;
+// The enumeration route's faceting: complete enumeration costs up to 2^(n_c (k + 2)) bases, so
+// the pyramid is coarse: 4 facets up to 3 contacts, 3 facets (a triangle, facet error 50 %)
+// beyond. Measured (Rover1039, 4 contacts): 4 facets did not finish in 10 s, 3 facets 0.7 s;
+// Rover3865 (5 contacts) does not finish with 3 either (8 facets: not even the 4-contact box
+// in 60 s). The faceted solutions are only starting points of the polish on the true cone.
+inline int enumeration_facets(Eigen::Index nc) { return nc <= 3 ? 4 : 3; }
+constexpr double kEnumerationSeconds = 5;
+constexpr Eigen::Index kIpoptContacts = 10;
+constexpr double kEnumerationRegularisation = 1e-8;
 
 // 53-bit uniform in [0, 1): the same sequence on every platform (std::uniform_real_distribution
 // is not specified bit for bit).
@@ -67,19 +81,77 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
 
   CommonOptions local = o.common;
   auto remaining = [&] { return o.common.time_limit_s - clock.seconds(); };
-  // 1. Every registered friction solver once (its own start), except chains.
+  std::string faceted_note;
+  // 0. Small problems: every solution of the (regularised) faceted problem, each polished on
+  //    the true cone.
+  const int k = enumeration_facets(nc);
+  if (nc >= 1 && nc <= o.max_enumeration_contacts && nc * (k + 2) <= kMaxEnumerationSize) {
+    const FacetedSolutionList fs =
+        faceted_solutions(p, k, kEnumerationRegularisation,
+                          std::min(kEnumerationSeconds, std::max(0.0, remaining() / 2)));
+    for (const Eigen::VectorXd& r : fs.r) {
+      if (remaining() <= 0) break;
+      SolveResult claim;
+      claim.solver = "faceted-enumeration";
+      claim.z = r;
+      SolveResult exact = finalize(p, claim, o.common);
+      if (exact.status == Status::kSolved) {
+        exact.message = "a faceted solution that is exact on the true cone";
+        col.add(std::move(exact));
+        continue;
+      }
+      CommonOptions pc = o.common;
+      pc.time_limit_s = remaining();
+      SolveResult s = polish_on_true_cone(p, r, pc);
+      s.solver = "faceted-enumeration+polish";
+      s.message = "polished from a faceted solution; " + s.message;
+      col.add(std::move(s));
+    }
+    faceted_note =
+        "faceted problem (" + std::to_string(k) + " facets, facet error " +
+        helpers::short_number(100 * fs.faceted.facet_error) + " %, regularised by " +
+        helpers::short_number(kEnumerationRegularisation) +
+        " w_scale on the force diagonal; LCP of " + std::to_string(fs.faceted.lcp.size()) +
+        " unknowns): " + std::to_string(fs.extreme) + " extreme LCP solutions, " +
+        std::to_string(fs.r.size()) + " distinct r, enumeration " +
+        (fs.complete ? "complete for the faceted problem" : "NOT complete (" + fs.message + ")") +
+        (fs.infinite ? ", with continua (listed by their vertices)" : "") + "; " +
+        std::to_string(col.verified) +
+        " of them verified on the true cone (exact or polished); "
+        "complete for the faceted problem is not complete for the true cone; ";
+  } else if (nc > o.max_enumeration_contacts) {
+    faceted_note = std::to_string(nc) + " contacts > max_enumeration_contacts = " +
+                   std::to_string(o.max_enumeration_contacts) + ": no enumeration; ";
+  }
+  // 1. Every registered friction solver once (its own start), except chains; each gets at
+  //    most a fair share of the remaining time (the seeded phase counting as one more), so
+  //    that one slow solver (NSGS on a rank-deficient stack) cannot starve the others.
+  std::vector<const SolverEntry*> first;
+  std::set<std::string> failed_first;
   for (const SolverEntry& e : solvers().entries()) {
     if (!e.solve_fc || e.info.name == "auto") continue;
+    // Ipopt's dense MPCC is the slow fallback (52 contacts: no answer in 20 s): small only.
+    if (e.info.name == "ipopt" && nc > kIpoptContacts) continue;
+    first.push_back(&e);
+  }
+  for (std::size_t j = 0; j < first.size(); ++j) {
     if (remaining() <= 0) break;
-    local.time_limit_s = remaining();
-    SolveResult r = e.solve_fc(p, local);
+    local.time_limit_s = remaining() / static_cast<double>(first.size() - j + 1);
+    SolveResult r = first[j]->solve_fc(p, local);
+    if (r.status != Status::kSolved) failed_first.insert(first[j]->info.name);
     col.add(std::move(r));
   }
-  // 2. Proximal point from seeded starts in the cones, of the data's own size r_ref:
-  //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N.
+  // A solver that failed from its own start on this problem is not run from the seeds (NSGS
+  // on a rank-deficient stack would spend its 2000 sweeps at every start).
+  const bool seed_nsgs = !failed_first.count("nsgs"), seed_fb = !failed_first.count("fb-soc");
+  // 2. NSGS, fb-soc and proximal point from seeded starts in the cones, of the data's own size
+  // r_ref:
+  //    r_N uniform in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N. NSGS stays near
+  //    its start (each contact takes its solution nearest the current r_i); PROX's large early
+  //    proximal steps reach farther.
   std::mt19937_64 gen(o.seed);
   int runs = 0;
-  for (int k = 0; k < o.starts; ++k) {
+  for (int start = 0; start < o.starts; ++start) {
     if (remaining() <= 0) break;
     ProxOptions po;
     po.common = o.common;
@@ -91,16 +163,37 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
       po.r0.segment<3>(3 * i) = Vec3(rn, rad * std::cos(th), rad * std::sin(th));
     }
     ++runs;
+    if (seed_nsgs) {
+      NsgsOptions no;
+      no.common = po.common;
+      no.r0 = po.r0;
+      col.add(solve_nsgs(p, no));
+      if (remaining() <= 0) break;
+    }
+    if (seed_fb) {
+      FbSocOptions fo;
+      fo.common = po.common;
+      fo.common.time_limit_s = remaining();
+      fo.r0 = po.r0;
+      col.add(solve_fb_soc(p, fo));
+      if (remaining() <= 0) break;
+    }
+    po.common.time_limit_s = remaining();
     col.add(solve_prox(p, po));
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
   set.complete = false;
-  set.message = "multistart: " + std::to_string(col.tried) + " solves (the registered friction "
-                "solvers once, proximal point from " + std::to_string(runs) +
-                " seeded starts, seed " + std::to_string(o.seed) + "), " +
-                std::to_string(col.verified) + " verified, " +
-                std::to_string(set.solutions.size()) +
-                " distinct; complete: false (a solution no start led to is not found)";
+  set.message =
+      faceted_note + "multistart: " + std::to_string(col.tried) +
+      " solves (the registered friction "
+      "solvers once (ipopt only up to " +
+      std::to_string(kIpoptContacts) + " contacts), nsgs, fb-soc and prox from " +
+      std::to_string(runs) + " seeded starts, seed " + std::to_string(o.seed) +
+      (seed_nsgs && seed_fb ? std::string()
+                            : std::string("; not from the seeds: ") + (seed_nsgs ? "" : "nsgs ") +
+                                  (seed_fb ? "" : "fb-soc ") + "(failed from their own start)") +
+      "), " + std::to_string(col.verified) + " verified, " + std::to_string(set.solutions.size()) +
+      " distinct; complete: false (a solution no start led to is not found)";
   if (remaining() <= 0) set.message += "; the time limit stopped the search";
   return set;
 }

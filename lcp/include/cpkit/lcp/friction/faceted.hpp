@@ -50,7 +50,8 @@ FacetedLcp faceted_lcp(const FrictionContactProblem& problem, int facets);
 struct FacetedLemkeOptions {
   CommonOptions common;  ///< tol: the verdict on the TRUE problem; max_iterations: Lemke's pivots
   int facets = 8;        ///< k >= 3
-  /// Polish the faceted answer on the true cone with the proximal point method (prox.hpp)
+  /// Polish the faceted answer on the true cone (polish_on_true_cone()) when the verdict does
+  /// not accept it as it is
   /// started from it, and return the polished r when the verdict accepts it.
   bool polish = true;
   Eigen::VectorXd covering;  ///< Lemke's covering vector (empty: all ones), n_c (k + 2)
@@ -66,8 +67,43 @@ struct FacetedLemkeOptions {
 SolveResult solve_faceted_lemke(const FrictionContactProblem& problem,
                                 const FacetedLemkeOptions& options = {});
 
+/// The solution of the TRUE problem near a candidate r0 (a faceted answer): prox from r0 with
+/// Gauss-Seidel inner solves and sigma = 1e-3 (small proximal weights and nearest one-contact
+/// solutions keep each step near the previous iterate; at most 40 x 50 sweeps), then, when
+/// that is not verified, fb-soc from r0. Returns the first kSolved result, else the one with
+/// the smaller residual; solver = "polish".
+SolveResult polish_on_true_cone(const FrictionContactProblem& problem, const Eigen::VectorXd& r0,
+                                const CommonOptions& options);
+
 /// `entry` (the LCP "lemke" entry) with solve_fc set to solve_faceted_lemke (default options,
 /// polished): "lemke" then accepts friction problems too.
 SolverEntry with_faceted_lemke(SolverEntry entry);
+
+}  // namespace cpkit::lcp::friction
+
+namespace cpkit::lcp::friction {
+
+/// Every solution of the faceted problem, by complete enumeration of its LCP (enumerate.hpp),
+/// as distinct r. `regularisation` (>= 0, relative to W's size: the largest |W_kk|) is added to
+/// the diagonal of the LCP's r_N and beta rows: with it a stick contact's facet weights are
+/// unique (without it they form a (k - 2)-dimensional polytope for ONE r, which the
+/// enumeration has to walk). The list then belongs to the regularised faceted problem (its
+/// solutions move by O(regularisation) relative to the faceted ones). Enumeration costs up to
+/// 2^(n_c (k + 2)) bases: only small problems finish (measured: 2 contacts, k = 4: ms; the
+/// 4-contact rigid box of the tests, k = 4: ~60 s; k = 8 does not finish for 4 contacts).
+/// friction_solutions() uses k = 4 up to 3 contacts, k = 3 beyond, and at most 5 s.
+struct FacetedSolutionList {
+  FacetedLcp faceted;              ///< the (regularised) LCP enumerated
+  std::vector<Eigen::VectorXd> r;  ///< its solutions in r = G z, distinct (unit-free, 1e-6)
+  int extreme = 0;                 ///< extreme LCP solutions (several may share one r)
+  bool complete = false;           ///< the LCP enumeration was complete (faceted problem only)
+  bool infinite = false;           ///< the LCP's set has pieces of positive dimension
+  std::string message;             ///< the enumeration's account when not complete
+};
+
+/// Throws InputError on an invalid problem, facets outside [3, 64], n_c (k + 2) > 64 or a
+/// negative regularisation.
+FacetedSolutionList faceted_solutions(const FrictionContactProblem& problem, int facets,
+                                      double regularisation, double time_limit_s);
 
 }  // namespace cpkit::lcp::friction

@@ -11,13 +11,16 @@
 /// alpha_k (PROX's rule, made unit-free): alpha_k = sigma e_k^nu w_scale, with e_k the verdict's
 /// unit-free error of r_k (friction_verdict.hpp, capped at 1) and w_scale the largest entry of
 /// |diag W| (||W||_max when the diagonal is zero; 1 for W = 0), so that alpha has W's units;
-/// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha never drops
-/// below 1e-10 w_scale (a floor in W's units).
-/// Inner solver: block Gauss-Seidel over the contacts on the regularised problem, each
-/// contact's 3x3 problem (block W_ii + alpha I) solved exactly by one_contact_nearest()
-/// (one_contact.hpp: the solution nearest the current r_i). The inner solve
+/// when the inner solve fails alpha_k is multiplied by 10 (PROX's rule). alpha stays in
+/// [1e-10, 1e10] w_scale (a floor and a cap in W's units).
+/// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised
+/// problem, each contact's 3x3 problem (block W_ii + alpha I) solved exactly by
+/// one_contact_nearest() (one_contact.hpp: the solution nearest the current r_i). The inner solve
 /// stops when a sweep changes r by at most max(e_k / 10, tol / 10) relative to the size of r
-/// (the internal tolerance adapted to the outer error, as PROX does).
+/// (the internal tolerance adapted to the outer error, as PROX does). ProxInner::kFbSoc solves
+/// each regularised problem by fb-soc from r_k to the outer tol instead (its unit-free verdict
+/// is relative to q - alpha r_k, which a large alpha inflates) (PROX's own choice is
+/// a Newton method [Acary et al. 2018]).
 ///
 /// Units: r in the problem's units (u per W); every test is relative (unit-free): the same
 /// problem in other units gives the same iterates, scaled. Result through finalize().
@@ -32,12 +35,21 @@
 
 namespace cpkit::lcp::friction {
 
+/// The solver of each regularised problem.
+enum class ProxInner {
+  kGaussSeidel,  ///< block Gauss-Seidel, exact one-contact steps
+  kFbSoc,        ///< semismooth Newton fb-soc (fb_soc.hpp) from r_k, as PROX's internal NSN
+                 ///< (the default: BoxesStack1, 52 contacts, rank 78/156: 0.14 s; Gauss-Seidel
+                 ///< had not converged after 20 s)
+};
+
 struct ProxOptions {
   CommonOptions common;  ///< max_iterations: outer iterations (0: 500)
   Eigen::VectorXd r0;    ///< starting r (empty: r = 0), 3 per contact
   double sigma = 5;      ///< alpha = sigma e^nu w_scale (PROX's defaults sigma = 5, nu = 1)
   double nu = 1;
-  int max_sweeps = 0;    ///< Gauss-Seidel sweeps per inner solve (0: 200)
+  int max_sweeps = 0;  ///< Gauss-Seidel sweeps per inner solve (0: 200)
+  ProxInner inner = ProxInner::kFbSoc;
   /// Empty when usable for a problem with n = 3 n_c rows; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };

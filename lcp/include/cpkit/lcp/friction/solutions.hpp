@@ -5,15 +5,22 @@
 ///
 /// Two routes (the message of the set says which ran and what "complete" means for it):
 /// - Small problems (n_c <= max_enumeration_contacts): every solution of the FACETED problem
-///   (the cone K_mu replaced by an inscribed pyramid, faceted.hpp) by complete enumeration of
-///   its LCP (enumerate.hpp); each is then polished on the true cone and kept when the true
-///   verdict (finalize) accepts it. Completeness of the faceted enumeration is NOT completeness
+///   (the cone K_mu replaced by an inscribed pyramid of 4 facets up to 3 contacts, 3 facets
+///   beyond, regularised: faceted.hpp, faceted_solutions()) by complete enumeration of its LCP
+///   (enumerate.hpp, at most 5 s: 5 contacts usually do not finish, the message says so);
+///   each is verified on the true cone as it is (stick and separation are exact) or polished
+///   there by prox (sigma = 1e-3) from it, and kept when the true verdict accepts it; then the
+///   multistart below runs as well. Completeness of the faceted enumeration is NOT completeness
 ///   for the true problem (a solution of the true cone need not be near a faceted one, and two
 ///   faceted solutions may polish to the same true one), so `complete` is false on this route
 ///   too unless every contact's solution is proved unique by other means (not attempted yet);
 ///   the message reports the faceted count and whether that enumeration was complete.
-/// - Larger problems: multistart (seeded, deterministic) with the registered friction solvers
-///   and proximal point runs from seeded starts in the cones; complete = false always.
+/// - All problems (after the enumeration when it ran): multistart (seeded, deterministic): the
+///   registered friction solvers once each ("auto" excluded, "ipopt" only up to 10 contacts), then
+///   NSGS, fb-soc and proximal point from each of `starts` seeded points in the cones (r_N uniform
+///   in [0, 2 r_ref], r_T uniform in the disc of radius mu r_N; std::mt19937_64(seed), 53-bit
+///   uniforms: the same on every platform; nsgs and fb-soc only when they solved the problem from
+///   their own start); complete = false always.
 /// Distinct: two verified r are the same solution when
 ///   ||r_a - r_b||_inf <= 1e-6 max(||r_a||_inf, ||r_b||_inf, r_ref),  r_ref = ||q||_inf/||W||_max
 /// (unit-free: unchanged when q is scaled, or W and q together). Only finalize() verdicts of

@@ -1,0 +1,183 @@
+// `cpkit fc solve FILE [--solver S] [--tol T] [--max-iter K] [--time-limit S] [--json]`
+// `cpkit fc solutions FILE [--starts K] [--seed N] [--tol T] [--time-limit S] [--json]`
+// 3-D frictional contact problems from FCLIB (HDF5) or Siconos FrictionContact .dat files
+// (cpkit/core/friction_io.hpp). `solve` runs one solver of cpkit::lcp::solvers() that accepts
+// friction problems; `solutions` lists distinct verified solutions (lcp/friction/solutions.hpp).
+// Exit codes: 0 solved (at least one solution), 1 proved no solution (a re-checked certificate),
+// 2 bad input or usage, 5 not solved (nothing proved).
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "cli_common.hpp"
+#include "cli_options.hpp"
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/report.hpp"
+#include "cpkit/core/result.hpp"
+#include "cpkit/lcp/friction/solutions.hpp"
+#include "cpkit/lcp/solvers.hpp"
+
+namespace cpkit::cli {
+namespace {
+
+struct FcArgs {
+  std::string file;
+  std::string solver = "auto";
+  bool json = false;
+  double tol = CommonOptions{}.tol;
+  int max_iter = 0;
+  double time_limit_s = std::numeric_limits<double>::infinity();
+  int starts = lcp::friction::FrictionSolutionsOptions{}.starts;
+  unsigned seed = lcp::friction::FrictionSolutionsOptions{}.seed;
+};
+
+std::string fc_solver_list() {
+  std::string out;
+  for (const auto& name : cpkit::lcp::solvers().names(ProblemKind::kFrictionContact))
+    out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+CommonOptions common_options(const FcArgs& a) {
+  CommonOptions o;
+  if (!(a.tol > 0 && a.tol <= 1e-3))
+    throw InputError("--tol must be in (0, 1e-3] (the unit-free residual: a larger tolerance "
+                     "would call almost any r solved), got " + num_text(a.tol));
+  o.tol = a.tol;
+  if (o.tol_acceptable < o.tol) o.tol_acceptable = o.tol;
+  o.max_iterations = a.max_iter;
+  o.time_limit_s = a.time_limit_s;
+  throw_if_invalid_option(o.validate(), {{"tol", "--tol"},
+                                         {"max_iterations", "--max-iter"},
+                                         {"time_limit_s", "--time-limit"}});
+  return o;
+}
+
+/// One result as the fc commands print it: r and u flat (contact by contact, normal first),
+/// the three errors of friction_verdict.hpp recomputed from the data, and the solver's counts.
+nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem& p) {
+  const nlohmann::json full = to_json(r);
+  nlohmann::json j;
+  j["status"] = full["status"];
+  j["solver"] = r.solver;
+  j["r"] = full["z"];
+  j["u"] = full["w"];
+  const bool sized = r.z.size() == p.W.rows();
+  const FrictionErrors e = sized ? friction_errors(p, r.z)
+                                 : FrictionErrors{std::numeric_limits<double>::infinity(),
+                                                  std::numeric_limits<double>::quiet_NaN(),
+                                                  std::numeric_limits<double>::quiet_NaN()};
+  j["errors"] = {{"unit_free", e.unit_free}, {"relative_q", e.relative_q},
+                 {"relative_max", e.relative_max}};
+  j["iterations"] = r.iterations;
+  j["seconds"] = r.seconds;
+  j["message"] = r.message;
+  if (full.contains("attempts")) j["attempts"] = full["attempts"];
+  return j;
+}
+
+nlohmann::json problem_json(const FcArgs& a, const FrictionContactProblem& p) {
+  return {{"file", a.file}, {"problem", p.name}, {"contacts", p.contacts()},
+          {"W_nonzeros", p.W.nonZeros()}};
+}
+
+std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
+  std::ostringstream s;
+  s << "status:     " << to_string(r.status) << "\nsolver:     " << r.solver;
+  if (r.z.size() == p.W.rows()) {
+    const FrictionErrors e = friction_errors(p, r.z);
+    s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
+      << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
+  }
+  s << "\niterations: " << r.iterations << "\nseconds:    " << r.seconds;
+  if (!r.message.empty()) s << "\nmessage:    " << r.message;
+  s << '\n';
+  return s.str();
+}
+
+int run_fc_solve(const FcArgs& a) {
+  const FrictionContactProblem p = read_friction_problem(a.file);  // validates; names the file
+  const CommonOptions options = common_options(a);
+  const SolverEntry* entry = cpkit::lcp::solvers().find(a.solver);
+  if (entry == nullptr || !entry->accepts(ProblemKind::kFrictionContact))
+    throw InputError("unknown friction solver '" + a.solver + "' (valid: " + fc_solver_list() + ")");
+  SolveResult r = entry->solve_fc(p, options);
+  if (r.solver.empty()) r.solver = entry->info.name;
+  if (a.json) {
+    nlohmann::json j = problem_json(a, p);
+    j.update(fc_result_json(r, p));
+    print_json(j);
+  } else {
+    std::cout << "problem:    " << p.name << " (" << p.contacts() << " contacts)\n"
+              << result_line(r, p) << std::flush;
+  }
+  if (is_solution(r.status)) return kExitOk;
+  return r.status == Status::kInfeasible ? kExitNoSolution : kExitInconclusive;
+}
+
+int run_fc_solutions(const FcArgs& a) {
+  const FrictionContactProblem p = read_friction_problem(a.file);
+  lcp::friction::FrictionSolutionsOptions o;
+  o.common = common_options(a);
+  if (a.starts < 1) throw InputError("--starts must be at least 1, got " + std::to_string(a.starts));
+  o.starts = a.starts;
+  o.seed = a.seed;
+  throw_if_invalid(o.validate(), "fc solutions");
+  const auto set = lcp::friction::friction_solutions(p, o);
+  if (a.json) {
+    nlohmann::json j = problem_json(a, p);
+    auto& list = j["solutions"] = nlohmann::json::array();
+    for (const auto& s : set.solutions) list.push_back(fc_result_json(s, p));
+    j["complete"] = set.complete;
+    j["message"] = set.message;
+    print_json(j);
+  } else {
+    std::cout << "problem:    " << p.name << " (" << p.contacts() << " contacts)\n"
+              << set.solutions.size() << " distinct verified solution(s), complete: "
+              << (set.complete ? "yes" : "no") << "\n" << set.message << '\n';
+    for (std::size_t k = 0; k < set.solutions.size(); ++k)
+      std::cout << "-- solution " << k + 1 << '\n' << result_line(set.solutions[k], p);
+    std::cout << std::flush;
+  }
+  return set.solutions.empty() ? kExitInconclusive : kExitOk;
+}
+
+void add_common(CLI::App* cmd, FcArgs& a) {
+  cmd->add_option("FILE", a.file, "problem file: FCLIB local problem (HDF5) or Siconos "
+                                  "FrictionContact .dat (chosen by content)")
+      ->required();
+  cmd->add_flag("--json", a.json, "print one JSON object on stdout");
+  cmd->add_option("--tol", a.tol, "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");
+  cmd->add_option("--time-limit", a.time_limit_s, "wall-clock limit in seconds");
+}
+
+}  // namespace
+
+void add_fc_command(CLI::App& app, Context& ctx) {
+  auto* fc = app.add_subcommand("fc", "3-D frictional contact problems (FCLIB, Siconos .dat)");
+  fc->require_subcommand(1);
+  auto solve = std::make_shared<FcArgs>();
+  auto* s = fc->add_subcommand("solve", "Solve a frictional contact problem u = W r + q, "
+                                        "r in K_mu, u_hat in K*_mu, r . u_hat = 0");
+  add_common(s, *solve);
+  s->add_option("--solver", solve->solver,
+                "solver name from the registry (default auto; valid: " + fc_solver_list() + ")");
+  s->add_option("--max-iter", solve->max_iter, "iteration limit (0: the solver's default)");
+  s->callback([solve, &ctx]() { ctx.exit_code = run_fc_solve(*solve); });
+
+  auto sols = std::make_shared<FcArgs>();
+  auto* l = fc->add_subcommand("solutions", "List distinct verified solutions (every solution of "
+                                            "the faceted problem for small n_c; multistart, "
+                                            "complete: false, otherwise)");
+  add_common(l, *sols);
+  l->add_option("--starts", sols->starts, "seeded starts of the multistart route (default 20)");
+  l->add_option("--seed", sols->seed, "seed of the starts (default 1)");
+  l->callback([sols, &ctx]() { ctx.exit_code = run_fc_solutions(*sols); });
+}
+
+}  // namespace cpkit::cli

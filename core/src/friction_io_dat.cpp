@@ -1,0 +1,137 @@
+// Siconos FrictionContact / GlobalFrictionContact .dat files, read as Siconos numerics 4.4 reads
+// them (frictionContact_newFromFile, globalFrictionContact_newFromFile):
+//   local:  d, nc, W (NM_new_from_file: storage, size0, size1, then dense or sparse block), then
+//           q (size1 numbers), then mu (nc numbers);
+//   global: d, nc, M, H (each NM_new_from_file), then q (M's size1), b (H's size1), mu (nc).
+// Siconos' q and b are cpkit's f and w (M v = H r + q, u = H^T v + b). Siconos ignores whatever
+// follows mu; so does cpkit (kept as the note). Every count is checked against what is left in
+// the file before anything is allocated for it (io_dat_matrix.hpp).
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+#include <filesystem>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
+#include "io_dat_matrix.hpp"
+#include "io_text.hpp"
+
+namespace cpkit {
+namespace {
+
+using io_dat::DatReader;
+
+/// One NumericsMatrix (storage 0 or 1) of the given size; `after` numbers must follow it.
+Eigen::SparseMatrix<double> read_matrix(DatReader& r, std::int64_t rows, std::int64_t cols,
+                                        std::uint64_t after, const std::string& name,
+                                        const std::string& after_what, const std::string& why) {
+  const int storage_line = r.line();
+  const std::int64_t storage = r.integer("the storage type of " + name,
+                                         std::numeric_limits<std::int64_t>::min(),
+                                         std::numeric_limits<std::int64_t>::max());
+  if (storage != 0 && storage != 1)
+    r.fail(storage_line, "storage type " + std::to_string(storage) + " of " + name +
+                             " is not read (Siconos: 0 dense, 1 sparse block, 2 sparse; cpkit "
+                             "reads 0 and 1)");
+  r.integer("the number of rows of " + name + why, rows, rows);
+  r.integer("the number of columns of " + name + why, cols, cols);
+  if (storage == 0) return io_dat::read_dense(r, rows, cols, after, name, after_what).sparseView(0.0, 0.0);
+  return io_dat::read_sparse_block(r, rows, cols, name);
+}
+
+Eigen::VectorXd read_vector(DatReader& r, std::int64_t n, const std::string& name) {
+  r.need(static_cast<std::uint64_t>(n), "the " + std::to_string(n) + " entries of " + name);
+  Eigen::VectorXd v(n);
+  for (std::int64_t i = 0; i < n; ++i)
+    v[i] = r.real([&] { return name + "[" + std::to_string(i) + "]"; });
+  return v;
+}
+
+/// d (must be 3) and nc (at least 1, at most what the file can hold).
+std::int64_t read_header(DatReader& r) {
+  r.integer("the contact dimension d (cpkit reads 3-D problems)", 3, 3);
+  return r.integer("the number of contacts nc", 1,
+                   std::min<std::int64_t>(io_dat::kMaxIndex / 3,
+                                          static_cast<std::int64_t>(r.remaining())));
+}
+
+std::string trailing_note(DatReader& r, const std::vector<io_text::Token>& tokens,
+                          const std::string& text) {
+  if (r.done()) return {};
+  std::string note = text.substr(tokens[r.position()].offset);
+  note.erase(note.find_last_not_of(" \t\r\n\v\f") + 1);
+  return io_text::valid_utf8(note);
+}
+
+std::vector<io_text::Token> tokens_of(const std::string& text, const std::string& origin,
+                                      const char* expected) {
+  auto tokens = io_text::tokenize(text);
+  if (tokens.empty()) throw InputError(origin + ": empty file (expected " + expected + ")");
+  return tokens;
+}
+
+}  // namespace
+
+FrictionContactProblem parse_friction_dat(const std::string& text, const std::string& origin_in) {
+  const std::string origin = io_text::valid_utf8(origin_in);
+  const auto tokens = tokens_of(text, origin, "d, nc, W, q, mu");
+  DatReader r(tokens, origin);
+  const std::int64_t nc = read_header(r);
+  const std::int64_t n = 3 * nc;
+  // Whatever W's storage, the file must still hold its type, sizes, q and mu.
+  r.need(3 + static_cast<std::uint64_t>(n + nc), "the storage type and sizes of W, q and mu");
+  const std::string why = " (3 nc = " + std::to_string(n) + ")";
+  FrictionContactProblem p;
+  p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + nc), "W", "q and mu", why);
+  p.q = read_vector(r, n, "q");
+  p.mu = read_vector(r, nc, "mu");
+  p.note = trailing_note(r, tokens, text);
+  p.W.makeCompressed();
+  p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());
+  throw_if_invalid(p.validate(), origin);
+  return p;
+}
+
+GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
+                                                       const std::string& origin_in) {
+  const std::string origin = io_text::valid_utf8(origin_in);
+  const auto tokens = tokens_of(text, origin, "d, nc, M, H, q, b, mu");
+  DatReader r(tokens, origin);
+  const std::int64_t nc = read_header(r);
+  const std::int64_t n = 3 * nc;
+  r.need(6 + static_cast<std::uint64_t>(n + nc), "the storage types and sizes of M and H, b and mu");
+  // M's size is the number of degrees of freedom m; it is read before M's storage is known.
+  const int storage_line = r.line();
+  const std::int64_t storage = r.integer("the storage type of M",
+                                         std::numeric_limits<std::int64_t>::min(),
+                                         std::numeric_limits<std::int64_t>::max());
+  if (storage != 0 && storage != 1)
+    r.fail(storage_line, "storage type " + std::to_string(storage) +
+                             " of M is not read (Siconos: 0 dense, 1 sparse block, 2 sparse; "
+                             "cpkit reads 0 and 1)");
+  const std::int64_t m = r.integer(
+      "the number of rows of M (the degrees of freedom)", 1,
+      std::min<std::int64_t>(io_dat::kMaxIndex, static_cast<std::int64_t>(r.remaining())));
+  const std::string why = " (M is m x m, m = " + std::to_string(m) + ")";
+  r.integer("the number of columns of M" + why, m, m);
+  GlobalFrictionContactProblem p;
+  const auto after_M = static_cast<std::uint64_t>(3 + m + n + nc);  // H's header, q, b, mu
+  p.M = storage == 0 ? Eigen::SparseMatrix<double>(
+                           io_dat::read_dense(r, m, m, after_M, "M", "H, q, b and mu").sparseView(0.0, 0.0))
+                     : io_dat::read_sparse_block(r, m, m, "M");
+  p.H = read_matrix(r, m, n, static_cast<std::uint64_t>(m + n + nc), "H", "q, b and mu",
+                    " (H is m x 3 nc = " + std::to_string(m) + " x " + std::to_string(n) + ")");
+  p.f = read_vector(r, m, "q (cpkit's f)");
+  p.w = read_vector(r, n, "b (cpkit's w)");
+  p.mu = read_vector(r, nc, "mu");
+  p.note = trailing_note(r, tokens, text);
+  p.M.makeCompressed();
+  p.H.makeCompressed();
+  p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());
+  throw_if_invalid(p.validate(), origin);
+  return p;
+}
+
+}  // namespace cpkit

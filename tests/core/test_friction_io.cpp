@@ -1,0 +1,309 @@
+// The friction problem readers (core/friction_io.hpp) on the real files of tests/data/fclib and
+// on broken copies of them. Independent sources: the smallest .dat file's numbers stated by hand
+// from its text; FCLIB files read a second way, straight from their HDF5 datasets with HDF5's C
+// API (not through libfclib, which cpkit uses); solutions written by cpkit read back by libfclib's
+// fclib_read_solution. Siconos' reader on every .dat file: test_friction_io_siconos_peer.cpp.
+#include <catch2/catch.hpp>
+extern "C" {  // fclib.h has no C++ guards
+#include <fclib.h>
+}
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
+#include "scratch_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using cpkit::InputError;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+fs::path data(const std::string& rel) { return fs::path(CPKIT_TEST_DATA_DIR) / "fclib" / rel; }
+
+fs::path scratch() {
+  static const fs::path dir = cpkit::test::scratch_dir("cpkit_test_friction_io_");
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+fs::path write_bytes(const std::string& name, const std::string& bytes) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p, std::ios::binary) << bytes;
+  return p;
+}
+
+// ---- a second route into FCLIB files: HDF5's C API, dataset by dataset ----------------------
+
+template <class T>
+std::vector<T> read_dataset(hid_t file, const std::string& path, hid_t type) {
+  const hid_t d = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  REQUIRE(d >= 0);
+  const hid_t s = H5Dget_space(d);
+  const hssize_t n = H5Sget_simple_extent_npoints(s);
+  std::vector<T> v(static_cast<std::size_t>(n));
+  REQUIRE(H5Dread(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  H5Sclose(s);
+  H5Dclose(d);
+  return v;
+}
+std::vector<int> ints(hid_t f, const std::string& p) { return read_dataset<int>(f, p, H5T_NATIVE_INT); }
+VectorXd doubles(hid_t f, const std::string& p) {
+  const auto v = read_dataset<double>(f, p, H5T_NATIVE_DOUBLE);
+  return Eigen::Map<const VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+/// The matrix group `g` as a dense matrix, decoded by hand: nz >= 0 triplet (CSparse: i rows,
+/// p columns), -1 compressed columns, -2 compressed rows.
+MatrixXd raw_matrix(hid_t f, const std::string& g) {
+  const int m = ints(f, g + "/m")[0], n = ints(f, g + "/n")[0], nz = ints(f, g + "/nz")[0];
+  const auto p = ints(f, g + "/p"), i = ints(f, g + "/i");
+  const VectorXd x = doubles(f, g + "/x");
+  MatrixXd a = MatrixXd::Zero(m, n);
+  if (nz >= 0) {
+    for (int k = 0; k < nz; ++k) a(i[k], p[k]) += x[k];
+  } else {
+    const int outer = nz == -1 ? n : m;
+    for (int k = 0; k < outer; ++k)
+      for (int e = p[k]; e < p[k + 1]; ++e) (nz == -1 ? a(i[e], k) : a(k, i[e])) += x[e];
+  }
+  return a;
+}
+
+struct H5File {
+  hid_t id;
+  explicit H5File(const fs::path& p, unsigned flags = H5F_ACC_RDONLY)
+      : id(H5Fopen(p.string().c_str(), flags, H5P_DEFAULT)) {
+    REQUIRE(id >= 0);
+  }
+  ~H5File() { H5Fclose(id); }
+};
+
+/// InputError whose message names the file (or part of it) and contains `what`.
+template <class F>
+void require_input_error(F&& f, const std::string& file, const std::string& what = "") {
+  try {
+    f();
+    FAIL("no InputError for " << file);
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find(file) != std::string::npos);
+    if (!what.empty()) CHECK(std::string(e.what()).find(what) != std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("FrictionContact3D_1c.dat holds the numbers its text shows", "[friction][io]") {
+  // The file: d 3, nc 1, dense 3 x 3 W column by column, q, mu (read by eye).
+  const auto p = cpkit::read_friction_problem(data("local/FrictionContact3D_1c.dat").string());
+  REQUIRE(p.contacts() == 1);
+  MatrixXd W(3, 3);
+  W << 15, -1, -2, -1, 14, 1, -2, 1, 16;
+  CHECK(MatrixXd(p.W) == W);
+  CHECK(p.q == Eigen::Vector3d(-1, 2, 3));
+  CHECK(p.mu[0] == 0.1);
+  CHECK(p.name == "FrictionContact3D_1c");
+}
+
+TEST_CASE("every local and global file of tests/data/fclib reads", "[friction][io]") {
+  int local = 0, global = 0;
+  for (const auto& e : fs::directory_iterator(data("local"))) {
+    INFO(e.path());
+    const auto p = cpkit::read_friction_problem(e.path().string());
+    CHECK(p.contacts() >= 1);
+    CHECK(p.validate().empty());
+    // W is a Delassus operator: nearly symmetric (these files: to 1e-3 of its largest entry).
+    const MatrixXd W = p.W;
+    CHECK((W - W.transpose()).cwiseAbs().maxCoeff() <= 1e-2 * W.cwiseAbs().maxCoeff());
+    ++local;
+  }
+  for (const auto& e : fs::directory_iterator(data("global"))) {
+    INFO(e.path());
+    const auto p = cpkit::read_global_friction_problem(e.path().string());
+    CHECK(p.contacts() >= 1);
+    CHECK(p.validate().empty());
+    ++global;
+  }
+  CHECK(local == 12);
+  CHECK(global == 3);
+}
+
+TEST_CASE("FCLIB files read as their HDF5 datasets say", "[friction][io][fclib]") {
+  for (const char* name : {"local/Capsules-i125-1213.hdf5", "local/fclib_local_problem_test.hdf5"}) {
+    INFO(name);
+    const auto p = cpkit::read_friction_problem(data(name).string());
+    H5File f(data(name));
+    const MatrixXd W = raw_matrix(f.id, "/fclib_local/W");
+    const VectorXd q = doubles(f.id, "/fclib_local/vectors/q");
+    const VectorXd mu = doubles(f.id, "/fclib_local/vectors/mu");
+    REQUIRE(p.contacts() == mu.size());
+    CHECK(p.W.nonZeros() == (W.array() != 0).count());
+    CHECK(MatrixXd(p.W) == W);
+    CHECK(p.q == q);
+    CHECK(p.mu == mu);
+  }
+  const auto name = "global/Box_Stacks-i0122-82-5.hdf5";
+  const auto p = cpkit::read_global_friction_problem(data(name).string());
+  H5File f(data(name));
+  CHECK(MatrixXd(p.M) == raw_matrix(f.id, "/fclib_global/M"));
+  CHECK(MatrixXd(p.H) == raw_matrix(f.id, "/fclib_global/H"));
+  CHECK(p.f == doubles(f.id, "/fclib_global/vectors/f"));
+  CHECK(p.w == doubles(f.id, "/fclib_global/vectors/w"));
+  CHECK(p.mu == doubles(f.id, "/fclib_global/vectors/mu"));
+  // A global file is not a local one, and the other way round: said, not crashed.
+  require_input_error([&] { cpkit::read_friction_problem(data(name).string()); }, name, "global");
+  require_input_error(
+      [&] { cpkit::read_global_friction_problem(data("local/Capsules-i125-1213.hdf5").string()); },
+      "Capsules-i125-1213.hdf5", "local");
+}
+
+TEST_CASE("a solution written by cpkit reads back through libfclib", "[friction][io][fclib]") {
+  const auto p = cpkit::read_friction_problem(data("local/Rover4396.dat").string());
+  VectorXd r(p.W.rows());
+  for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = 0.25 * static_cast<double>(i) - 1.0 / 3.0;
+  const VectorXd u = p.W * r + p.q;
+  const fs::path out = scratch() / "solution.hdf5";
+  cpkit::write_friction_solution(out.string(), p, r, u);
+  cpkit::write_friction_solution(out.string(), p, r, u);  // an existing file is replaced
+  const auto back = cpkit::read_friction_problem(out.string());
+  CHECK(MatrixXd(back.W) == MatrixXd(p.W));
+  CHECK(back.q == p.q);
+  CHECK(back.mu == p.mu);
+  fclib_solution* s = fclib_read_solution(out.string().c_str());  // the file has /solution
+  REQUIRE(s != nullptr);
+  CHECK(Eigen::Map<const VectorXd>(s->r, r.size()) == r);
+  CHECK(Eigen::Map<const VectorXd>(s->u, u.size()) == u);
+  fclib_delete_solutions(s, 1);
+  require_input_error([&] { cpkit::write_friction_solution(out.string(), p, r.head(3), u); },
+                      "write_friction_solution", "entries");
+}
+
+TEST_CASE("truncated .dat files are input errors at every cut", "[friction][io][bad]") {
+  // Siconos' test files end with one token after mu (Siconos ignores it; so does cpkit): a cut
+  // that keeps every token up to mu is a complete file, every shorter one an input error.
+  const std::pair<const char*, int> files[] = {{"local/FrictionContact3D_1c.dat", 0},
+                                               {"local/Rover4396.dat", 1},
+                                               {"global/GFC3D_Example1.dat", 1}};
+  for (const auto& [name, trailing] : files) {
+    const std::string text = slurp(data(name));
+    const bool global = std::string(name).rfind("global", 0) == 0;
+    auto tokens = [](const std::string& t) {
+      std::istringstream in(t);
+      std::string w;
+      int n = 0;
+      while (in >> w) ++n;
+      return n;
+    };
+    const int needed = tokens(text) - trailing;
+    int cuts = 0;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+      if (!std::isspace(static_cast<unsigned char>(text[k]))) continue;
+      const std::string cut = text.substr(0, k);
+      if (tokens(cut) >= needed) break;
+      INFO(name << " cut at byte " << k);
+      if (global)
+        CHECK_THROWS_AS(cpkit::parse_global_friction_dat(cut, name), InputError);
+      else
+        CHECK_THROWS_AS(cpkit::parse_friction_dat(cut, name), InputError);
+      ++cuts;
+    }
+    CHECK(cuts >= needed - 1);
+  }
+}
+
+TEST_CASE("corrupted .dat files name what is wrong", "[friction][io][bad]") {
+  const std::string f = "bad.dat";
+  auto bad = [&](const std::string& text, const std::string& what) {
+    INFO(text);
+    require_input_error([&] { cpkit::parse_friction_dat(text, f); }, f, what);
+  };
+  const std::string W = " 0 3 3 3 3  15 -1 -2 -1 14 1 -2 1 16 ";
+  // The valid file these are made from (FrictionContact3D_1c.dat's numbers).
+  CHECK(cpkit::parse_friction_dat("3 1" + W + "-1 2 3 0.1", f).contacts() == 1);
+  bad("3 1" + W + "-1 nan 3 0.1", "q[1]");
+  bad("3 1" + W + "-1 2 3 -0.1", "mu[0]");
+  bad("3 1 0 3 3 3 3  15 -1 -2 -1 1e999 1 -2 1 16 -1 2 3 0.1", "W(1, 1)");
+  bad("3 1 0 3 3 3 3  15 -1 -2 -1 14 1 -2 1 16 -1 2 3", "ends");  // no mu
+  bad("2 1" + W + "-1 2 3 0.1", "dimension");                     // a 2-D problem
+  bad("3 2" + W + "-1 2 3 0.1", "rows of W");                     // W is 3 x 3, not 6 x 6
+  bad("3 999999999" + W + "-1 2 3 0.1", "contacts");              // huge nc: refused, not allocated
+  bad("3 1 0 3 3 3 3 15", "ends too early");
+  bad("3 1 2 3 3 3 3 15 1 2 3 4 5 6 7 8 9 10", "storage type 2");
+  bad("3 1 1 3 3 2147483647 1 1 3 3 2 1 0 1 0 0 1 2 3 4 5 6 7 8 9 -1 2 3 0.1", "blocks");
+  bad("", "empty");
+  bad("hello world", "contact dimension");
+  require_input_error(
+      [&] { cpkit::parse_global_friction_dat("3 1 0 1000000000 1000000000 1 2 3", f); }, f, "M");
+}
+
+TEST_CASE("files in neither format, and broken FCLIB files, are input errors", "[friction][io][bad]") {
+  const std::string binary("\x01\x02\xff\xfe\x00garbage", 12);
+  const auto junk = write_bytes("junk.bin", binary);
+  require_input_error([&] { cpkit::read_friction_problem(junk.string()); }, "junk.bin");
+  require_input_error([&] { cpkit::read_friction_problem((scratch() / "missing.dat").string()); },
+                      "missing.dat");
+  // Truncated HDF5: the signature is there, the rest is not.
+  const std::string h5 = slurp(data("local/Capsules-i125-1213.hdf5"));
+  for (std::size_t cut : {std::size_t{8}, std::size_t{100}, h5.size() / 2, h5.size() - 1}) {
+    const auto p = write_bytes("cut.hdf5", h5.substr(0, cut));
+    INFO("cut at " << cut);
+    require_input_error([&] { cpkit::read_friction_problem(p.string()); }, "cut.hdf5");
+  }
+  // Valid HDF5, broken FCLIB content: edited with HDF5's API in a copy of a written file.
+  const auto p = cpkit::read_friction_problem(data("local/FrictionContact3D_1c.dat").string());
+  const VectorXd r = VectorXd::Ones(3), u = p.W * r + p.q;
+  auto edited = [&](const std::string& name, auto edit) {
+    const fs::path path = scratch() / name;
+    cpkit::write_friction_solution(path.string(), p, r, u);
+    {
+      H5File f(path, H5F_ACC_RDWR);
+      edit(f.id);
+    }
+    return path.string();
+  };
+  auto set_int = [](hid_t f, const char* path, int v) {
+    const hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
+    REQUIRE(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &v) >= 0);
+    H5Dclose(d);
+  };
+  auto set_doubles = [](hid_t f, const char* path, std::vector<double> v) {
+    const hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
+    REQUIRE(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+    H5Dclose(d);
+  };
+  require_input_error([&] { cpkit::read_friction_problem(edited("huge.hdf5", [&](hid_t f) {
+                        set_int(f, "/fclib_local/W/nzmax", 2000000000);
+                      })); }, "huge.hdf5", "nzmax");
+  require_input_error([&] { cpkit::read_friction_problem(edited("nz.hdf5", [&](hid_t f) {
+                        set_int(f, "/fclib_local/W/nz", -3);
+                      })); }, "nz.hdf5", "nz = -3");
+  require_input_error([&] { cpkit::read_friction_problem(edited("rows.hdf5", [&](hid_t f) {
+                        set_int(f, "/fclib_local/W/m", 6);
+                      })); }, "rows.hdf5", "W");
+  require_input_error([&] { cpkit::read_friction_problem(edited("noq.hdf5", [&](hid_t f) {
+                        REQUIRE(H5Ldelete(f, "/fclib_local/vectors/q", H5P_DEFAULT) >= 0);
+                      })); }, "noq.hdf5", "vectors/q");
+  require_input_error([&] { cpkit::read_friction_problem(edited("mu.hdf5", [&](hid_t f) {
+                        set_doubles(f, "/fclib_local/vectors/mu", {-0.5});
+                      })); }, "mu.hdf5", "mu[0]");
+  require_input_error([&] { cpkit::read_friction_problem(edited("nan.hdf5", [&](hid_t f) {
+                        set_doubles(f, "/fclib_local/W/x", std::vector<double>(9, NAN));
+                      })); }, "nan.hdf5", "not finite");
+  require_input_error([&] { cpkit::read_friction_problem(edited("index.hdf5", [&](hid_t f) {
+                        set_int(f, "/fclib_local/W/i", 0);  // row indices: first one ok, still valid
+                        set_int(f, "/fclib_local/spacedim", 2);
+                      })); }, "index.hdf5", "spacedim");
+}
