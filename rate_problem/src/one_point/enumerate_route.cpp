@@ -350,10 +350,15 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
   RatePrecomputed pre;
   pre.params = params;
   pre.state = state;
+  // the LCP data in the normalised units of the summaries (rate_detail.hpp: normalise)
+  ContactParameters pn;
+  LoadRate unused;
+  int eA = 0, eF = 0;
+  detail::normalise(params, LoadRate{}, pn, unused, eA, eF);
   if (state.label == StateLabel::kB) {
-    const StateBLcp l0 = state_b_lcp(params, LoadRate{});  // M does not depend on the load
-    const StateBLcp lT = state_b_lcp(params, LoadRate{1.0, 0.0});
-    const StateBLcp lN = state_b_lcp(params, LoadRate{0.0, 1.0});
+    const StateBLcp l0 = state_b_lcp(pn, LoadRate{});  // M does not depend on the load
+    const StateBLcp lT = state_b_lcp(pn, LoadRate{1.0, 0.0});
+    const StateBLcp lN = state_b_lcp(pn, LoadRate{0.0, 1.0});
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) pre.M_b[i][j] = l0.M(i, j);
       pre.qT_b[i] = lT.q(i);
@@ -361,9 +366,9 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
     }
     pre.b_fast = b_blocks_regular(l0.M);
   } else if (state.label == StateLabel::kD) {
-    pre.M_d = state_d_lcp(params, state, LoadRate{}).M;  // snapped, load-independent
-    const Rates rT = state_d_rates(params, state, LoadRate{1.0, 0.0}, 0.0);
-    const Rates rN = state_d_rates(params, state, LoadRate{0.0, 1.0}, 0.0);
+    pre.M_d = state_d_lcp(pn, state, LoadRate{}).M;  // snapped, load-independent
+    const Rates rT = state_d_rates(pn, state, LoadRate{1.0, 0.0}, 0.0);
+    const Rates rN = state_d_rates(pn, state, LoadRate{0.0, 1.0}, 0.0);
     pre.dPN_T = rT.dP_N;
     pre.dPN_N = rN.dP_N;
     pre.dPT_T = rT.dP_T;
@@ -372,11 +377,15 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
   return pre;
 }
 
-RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& f,
+RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& load,
                                    RateMethod method) noexcept {
-  const ContactParameters& p = pre.params;
   const ContactState& st = pre.state;
-  if (method != RateMethod::kEnumerate) return summarize_rate_problem(p, st, f, method);
+  if (method != RateMethod::kEnumerate) return summarize_rate_problem(pre.params, st, load, method);
+  // judged in normalised units, as the LCP data were precomputed (exact powers of two)
+  ContactParameters p;
+  LoadRate f;
+  int eA = 0, eF = 0;
+  detail::normalise(pre.params, load, p, f, eA, eF);
   if (st.label == StateLabel::kB && pre.b_fast) {
     Eigen::Matrix3d M;
     Eigen::Vector3d q;
@@ -401,7 +410,7 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& f
     if (std::abs(l.q) <= 1e-10 * c1 * (std::abs(m * dPN) + std::abs(dPT))) l.q = 0;
     return summarize_d_core(st, l);
   }
-  return summarize_rate_problem(p, st, f, method);
+  return summarize_rate_problem(pre.params, st, load, method);
 }
 
 }  // namespace cpkit::rate
