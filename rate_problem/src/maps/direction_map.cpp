@@ -27,8 +27,10 @@ struct Evaluator {
     const RateSummary s = summarize_rate_problem(pre, load, method);
     check = cross ? summarize_rate_problem(pre, load, RateMethod::kEnumerate) : s;
     ++evaluations;
+    // a route that could not decide (a sign within its rounding, e.g. the analytic route on a
+    // rounded critical load) does not disagree: it is counted as unreliable
     if (!s.reliable || !check.reliable) ++unreliable;
-    if (!same_solution_set(s, check)) ++disagreements;
+    else if (!same_solution_set(s, check)) ++disagreements;
     return s;
   }
 };

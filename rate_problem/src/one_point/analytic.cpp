@@ -18,7 +18,22 @@ using detail::sign3;
 
 /// Existence of a piece whose condition `pred` depends on up to three signs, some of which may
 /// be undecided (kUndecided: any of -1, 0, +1 is possible): 1 when pred holds for every
-/// possible combination, 0 when for none, kUndecided otherwise.
+/// possible combination, 0 when for none, kUndecided otherwise. An undecided piece is listed
+/// when pred holds with the undecided signs taken as 0 (the load on the critical line, the
+/// former behaviour), and the set is then marked not complete.
+template <class Pred>
+int decide(int a, int b, int c, const Pred& pred);
+
+int zero_if_undecided(int x) noexcept { return x == kUndecided ? 0 : x; }
+
+/// 1 (list the piece), 0 (do not), after decide()'s rule for undecided signs.
+template <class Pred>
+int listed(int a, int b, int c, const Pred& pred) {
+  const int d = decide(a, b, c, pred);
+  if (d != kUndecided) return d;
+  return pred(zero_if_undecided(a), zero_if_undecided(b), zero_if_undecided(c)) ? 1 : 0;
+}
+
 template <class Pred>
 int decide(int a, int b, int c, const Pred& pred) {
   const auto lo = [](int x) { return x == kUndecided ? -1 : x; };
@@ -97,15 +112,15 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
     sL[k] = sign3(L[k]);
     sD[k] = sign3(D[k]);
   }
-  const auto add = [&](int exists, const RateSolution& piece) {
-    if (exists == kUndecided) out.undecided = true;
-    else if (exists == 1) out.push(piece);
+  const auto add = [&](int a, int b, auto pred, const RateSolution& piece) {
+    if (decide(a, b, 0, pred) == kUndecided) out.undecided = true;
+    if (listed(a, b, 0, pred) == 1) out.push(piece);
   };
   // b.i separation: N < 0.
-  add(decide(sN, 0, 0, [](int n, int, int) { return n < 0; }),
+  add(sN, 0, [](int n, int, int) { return n < 0; },
       point(SolutionType::kSeparation, zero_force_rates(p, f)));
   // b.ii stick: L_+ <= 0 and L_- <= 0 (equivalently |dF_T| <= mu S; implies S >= 0).
-  add(decide(sL[0], sL[1], 0, [](int lp, int lm, int) { return lp <= 0 && lm <= 0; }),
+  add(sL[0], sL[1], [](int lp, int lm, int) { return lp <= 0 && lm <= 0; },
       point(SolutionType::kStick, stick_rates(p, f)));
   // b.iii slip of sign s: dP_N = N / D_s >= 0, lambda = L_s / D_s > 0; on the degenerate line
   // D_s = 0 (a11 = s mu a12, so s = sgn a12) solutions exist only on N = 0, where the
@@ -115,19 +130,18 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
   for (int k = 0; k < 2; ++k) {
     const int s = k == 0 ? 1 : -1;
     const bool FN_pos = f.dF_N > 0;  // an input: its sign is exact
-    const int point_exists = decide(sD[k], sL[k], sN, [](int d, int l, int n) {
+    const auto point_pred = [](int d, int l, int n) {
       return d != 0 && l == d && (n == 0 || n == d);
-    });
-    const int segment_exists = decide(sD[k], sN, 0, [FN_pos](int d, int n, int) {
-      return d == 0 && n == 0 && FN_pos;
-    });
-    if (point_exists == 1) {
-      const double dP_N = sN == 0 ? 0.0 : N.v / D[k].v;
-      out.push(point(slip_type(s), slip_rates(p, s, p.mu, 0.0, dP_N, L[k].v / D[k].v)));
-    } else if (point_exists == kUndecided) {
+    };
+    const auto segment_pred = [FN_pos](int d, int n, int) { return d == 0 && n == 0 && FN_pos; };
+    if (decide(sD[k], sL[k], sN, point_pred) == kUndecided ||
+        decide(sD[k], sN, 0, segment_pred) == kUndecided)
       out.undecided = true;
+    if (listed(sD[k], sL[k], sN, point_pred) == 1) {
+      const double dP_N = sN == 0 || sN == kUndecided ? 0.0 : N.v / D[k].v;
+      out.push(point(slip_type(s), slip_rates(p, s, p.mu, 0.0, dP_N, L[k].v / D[k].v)));
     }
-    if (segment_exists == 1) {
+    if (listed(sD[k], sN, 0, segment_pred) == 1) {
       const double c1v = 1.0 + p.a11 * p.C_T;
       RateSolution seg;
       seg.type = slip_type(s);
@@ -138,8 +152,6 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
       seg.end_closed = true;
       out.push(seg);
       out.infinite = true;
-    } else if (segment_exists == kUndecided) {
-      out.undecided = true;
     }
   }
 }
@@ -173,14 +185,17 @@ void state_d(const ContactParameters& p, const ContactState& st, const LoadRate&
   const double Lambda = Lam.v;
   const int sL = sign3(L), sLam = sign3(Lam);
   // d.i stick: L_s <= 0.
-  const int stick = decide(sL, 0, 0, [](int l, int, int) { return l <= 0; });
-  if (stick == 1) out.push(point(SolutionType::kStick, stick_rates(p, f)));
+  const auto stick_pred = [](int l, int, int) { return l <= 0; };
+  const auto slip_pred = [](int lam, int l, int) { return lam != 0 && l == lam; };
+  const auto ray_pred = [](int lam, int l, int) { return lam == 0 && l == 0; };
+  if (decide(sL, 0, 0, stick_pred) == kUndecided || decide(sLam, sL, 0, slip_pred) == kUndecided ||
+      decide(sLam, sL, 0, ray_pred) == kUndecided)
+    out.undecided = true;
+  if (listed(sL, 0, 0, stick_pred) == 1) out.push(point(SolutionType::kStick, stick_rates(p, f)));
   // d.ii slip: lambda = L_s / Lambda > 0 (a point when Lambda != 0); Lambda = 0: the slip
   // equations have rank one, consistent iff L_s = 0, and then a ray.
-  const int slip = decide(sLam, sL, 0, [](int lam, int l, int) { return lam != 0 && l == lam; });
-  const int ray_exists = decide(sLam, sL, 0, [](int lam, int l, int) { return lam == 0 && l == 0; });
-  if (stick == kUndecided || slip == kUndecided || ray_exists == kUndecided) out.undecided = true;
-  if (slip == 1) {
+  const int ray_exists = listed(sLam, sL, 0, ray_pred);
+  if (listed(sLam, sL, 0, slip_pred) == 1) {
     const double dP_N =
         ((p.a11 + s * p.a12 * kappa) * f.dF_N - (p.a12 + s * p.a22 * kappa) * f.dF_T) / Lambda;
     out.push(point(slip_type(s), slip_rates(p, s, m, kappa, dP_N, L.v / Lambda)));

@@ -96,9 +96,15 @@ StateDLcp state_d_lcp(const ContactParameters& p, const ContactState& st,
   // A 1x1 block has no relative size of its own: judge M and q against the size of the terms
   // they are made of (the cancellation that makes Lambda = 0 or L_s = 0 leaves rounding noise
   // of that size), and snap such noise to an exact zero for the enumeration.
-  constexpr double kSnap = 1e-10;  // = kRateTol of the analytic route
-  if (std::abs(l.q) <= kSnap * c1 * (std::abs(m * r0.dP_N) + std::abs(r0.dP_T))) l.q = 0;
-  if (std::abs(l.M) <= kSnap * c1 * (std::abs(m * r1.dP_N) + std::abs(r1.dP_T))) l.M = 0;
+  constexpr double kSnap = 1e-10;  // a nonzero value snapped here is reported (`snapped`)
+  if (std::abs(l.q) <= kSnap * c1 * (std::abs(m * r0.dP_N) + std::abs(r0.dP_T))) {
+    l.snapped = l.snapped || l.q != 0;
+    l.q = 0;
+  }
+  if (std::abs(l.M) <= kSnap * c1 * (std::abs(m * r1.dP_N) + std::abs(r1.dP_T))) {
+    l.snapped = l.snapped || l.M != 0;
+    l.M = 0;
+  }
   return l;
 }
 

@@ -140,12 +140,6 @@ const char* single_solver_name(RateMethod m) {
 
 namespace {
 
-int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
-  int e = 0;
-  std::frexp(v, &e);
-  return e - 1;
-}
-
 Rates scaled_rates(const Rates& r, int eF, int eL) noexcept {
   Rates s;
   s.dP_T = std::ldexp(r.dP_T, eF);
