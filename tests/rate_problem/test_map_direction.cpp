@@ -209,10 +209,7 @@ TEST_CASE("StateDSofteningCriterionUsesMuEff", "[map][direction]") {
       opt.method = RateMethod::kAnalytic;  // cross-checked by the enumeration on every sample
       const DirectionMap map = compute_direction_map(p, s, opt);
       CHECK(map.disagreements == 0);
-      // only the two critical loads may be undecided: (cos t, sin t) is the critical direction
-      // rounded, and with m = mu - 2 kappa rounded (1.6 - 1 != 0.6) the analytic route sees
-      // L_s within its rounding there (issue 24: three-valued signs)
-      CHECK(map.unreliable <= 2);
+      CHECK(map.unreliable == 0);
       REQUIRE(map.critical.size() == 2);
       CHECK(map.critical[0].theta == Approx(std::min(t1, t2)).margin(1e-13));
       CHECK(map.critical[1].theta == Approx(std::max(t1, t2)).margin(1e-13));
