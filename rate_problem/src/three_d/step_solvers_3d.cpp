@@ -548,7 +548,11 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
       // P_T1 = 0 requires DP_T = -P_T0; equilibrium with P1 = 0 gives Dw = A^-1 (DF + P0)
       const double gN1 = n.gc;  // g1 at P1 = 0
       (void)s;
-      if (gN1 <= 1e-12) {
+      // g1 = g0 + (A^-1 (DF + P0))_N in normalised units: "<= 0" up to the rounding of that
+      // sum (its terms' size, not a fixed 1e-12)
+      const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
+      const double g_terms = std::abs(n.g0) + n.gN.cwiseAbs().dot((n.DF + P0).cwiseAbs());
+      if (gN1 <= 64 * 2.220446049250313e-16 * g_terms) {
         Step3dValues v = step_3d_values(problem, Eigen::Vector2d::Zero(), 0.0, 0.0);
         v.lambda = (problem.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
         sols.push_back(make_step_3d_solution(problem, v));
