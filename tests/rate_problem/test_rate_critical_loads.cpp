@@ -152,6 +152,22 @@ TEST_CASE("critical loads at cond(A) 1e2..1e12: the exact set or not complete (i
   CHECK(enumerate_complete >= 1);
 }
 
+TEST_CASE("critical loads: the analytic separation's rates at cond(A) 1e11", "[rate][critical]") {
+  // Row 1: dw = A^-1 dF in exact rational arithmetic (Python fractions on these doubles):
+  // det A = 1.3542869208596867e-11, dw_T = 0.9999858308912642, dw_N = -2.0359567963063563e-05.
+  // The former plain Cramer formula gave dw_N = -1.64e-05 (cancellation in a11 dF_N - a12 dF_T).
+  const Row& r = kRows[0];
+  const RateSolutionSet s =
+      solve_rate_problem(params_of(r), state_of(r), LoadRate{r.dF_T, r.dF_N}, RateMethod::kAnalytic);
+  REQUIRE(s.complete);
+  REQUIRE(s.solutions.size() == 1);
+  REQUIRE(s.solutions[0].type == SolutionType::kSeparation);
+  CHECK(s.solutions[0].start.dw_T == Approx(0.9999858308912642).epsilon(1e-12));
+  CHECK(s.solutions[0].start.dw_N == Approx(-2.0359567963063563e-05).epsilon(1e-10));
+  CHECK(s.solutions[0].start.dP_T == 0);
+  CHECK(s.solutions[0].start.dP_N == 0);
+}
+
 TEST_CASE("critical loads: the enumeration route's known wrong rows (issue 24, open)",
           "[rate][critical][!shouldfail]") {
   int n = 0;
