@@ -11,6 +11,7 @@
 namespace cpkit::rate {
 namespace {
 
+using detail::diff_of_products;
 using detail::exact;
 using detail::kUndecided;
 using detail::Rounded;
@@ -57,15 +58,6 @@ RateSolution point(SolutionType type, const Rates& r) noexcept {
   p.start = r;
   p.start_closed = true;
   return p;
-}
-
-/// a b - c d to within 2 ulps (Kahan's algorithm with fma): the cancellation of an
-/// ill-conditioned A or of a load near N = 0 leaves no rounding noise in the result.
-double diff_of_products(double a, double b, double c, double d) noexcept {
-  const double w = c * d;
-  const double e = std::fma(-c, d, w);  // exact: w - c d
-  const double f = std::fma(a, b, -w);
-  return f + e;
 }
 
 /// dP = 0: dw = A^-1 dF (state a, and separation in state b); dw_T^i = dw_T, no wear.

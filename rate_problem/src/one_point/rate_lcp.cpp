@@ -7,15 +7,18 @@
 
 #include "cpkit/core/errors.hpp"
 #include "rate_detail.hpp"
+#include "rounded.hpp"
 
 namespace cpkit::rate {
 
 StateBLcp state_b_lcp(const ContactParameters& p, const LoadRate& f) noexcept {
-  const double det = p.detA();
+  // det A and r to 2 ulps (detail::diff_of_products): at cond(A) 1e11 their plain evaluation
+  // lost 5 digits, and the separation's rates with them (issue 24)
+  const double det = detail::diff_of_products(p.a11, p.a22, p.a12, p.a12);
   const double D0 = p.a22 + p.C_T * det;
   const double c1 = 1.0 + p.a11 * p.C_T;
   const double S = c1 * f.dF_N - p.a12 * p.C_T * f.dF_T;
-  const double r = p.a22 * f.dF_T - p.a12 * f.dF_N;
+  const double r = detail::diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N);
   StateBLcp l;
   l.M << c1, p.a12, -p.a12,                 //
       p.mu * D0 - p.a12, det, -det,          //
@@ -26,14 +29,14 @@ StateBLcp state_b_lcp(const ContactParameters& p, const LoadRate& f) noexcept {
 
 Rates state_b_rates(const ContactParameters& p, const LoadRate& f,
                     const Eigen::Vector3d& z) noexcept {
-  const double det = p.detA();
+  const double det = detail::diff_of_products(p.a11, p.a22, p.a12, p.a12);
   const double D0 = p.a22 + p.C_T * det;
   const double c1 = 1.0 + p.a11 * p.C_T;
   const double S = c1 * f.dF_N - p.a12 * p.C_T * f.dF_T;
   const double xi = z(1) - z(2);
   Rates r;
   r.dP_N = z(0);
-  r.dP_T = (p.a22 * f.dF_T - p.a12 * f.dF_N + p.a12 * z(0) - det * xi) / D0;
+  r.dP_T = (detail::diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N) + p.a12 * z(0) - det * xi) / D0;
   r.dw_N = (S - c1 * z(0) - p.a12 * xi) / D0;
   r.dw_T = p.C_T * r.dP_T + xi;
   r.dw_Ti = xi;

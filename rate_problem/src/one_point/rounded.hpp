@@ -40,6 +40,15 @@ inline Rounded operator/(Rounded a, Rounded b) noexcept {
   return {q, (std::abs(rem) + a.e + std::abs(q) * b.e) / den};
 }
 
+/// a b - c d to within 2 ulps (Kahan's algorithm with fma): the cancellation of an
+/// ill-conditioned A (det A) or of a load near a critical direction leaves no rounding noise.
+inline double diff_of_products(double a, double b, double c, double d) noexcept {
+  const double w = c * d;
+  const double e = std::fma(-c, d, w);  // exact: w - c d
+  const double f = std::fma(a, b, -w);
+  return f + e;
+}
+
 /// Three-valued sign: -1, 0, +1 when decided, kUndecided when |v| is within the bound.
 inline constexpr int kUndecided = 2;
 inline int sign3(Rounded x) noexcept {
