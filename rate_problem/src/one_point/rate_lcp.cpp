@@ -104,9 +104,16 @@ StateDLcp state_d_lcp(const ContactParameters& p, const ContactState& st,
     l.snapped = l.snapped || l.q != 0;
     l.q = 0;
   }
-  // M ~ Lambda depends on the parameters only: its band is the parameter degeneracy
-  // Lambda = 0 of the map presets and tests (exact there, computed with LU noise); not flagged
-  if (std::abs(l.M) <= kSnap * c1 * (std::abs(m * r1.dP_N) + std::abs(r1.dP_T))) l.M = 0;
+  // M ~ Lambda depends on the parameters only. Within the rounding of its LU evaluation
+  // (64 u of its terms) it is the degenerate line Lambda = 0 of the presets and tests (exact
+  // there, computed with noise) and snapped silently; above that, still inside the band, the
+  // data say Lambda != 0 and snapping it is reported (issue 24: mu = a11/|a12| (1 + 1e-12)
+  // lost the slip with its large lambda and said complete)
+  const double M_terms = c1 * (std::abs(m * r1.dP_N) + std::abs(r1.dP_T));
+  if (std::abs(l.M) <= kSnap * M_terms) {
+    l.snapped = l.snapped || std::abs(l.M) > 64 * 2.220446049250313e-16 * M_terms;
+    l.M = 0;
+  }
   return l;
 }
 
