@@ -132,7 +132,10 @@ void run_small(SolutionSet& out) {
   out.infinite = s.infinite;
   out.ambiguous = s.ambiguous;
   out.unrepresentable = s.unrepresentable;
-  out.complete = s.dropped == 0;
+  out.complete = s.dropped == 0 && s.ambiguous == 0;  // an ambiguous candidate was left out
+  if (s.ambiguous > 0)
+    out.message = std::to_string(s.ambiguous) +
+                  " candidate(s) with a sign test too close to call: not listed";
   if (s.dropped > s.unrepresentable)
     out.message = "fixed-size capacity exceeded (" + std::to_string(s.dropped - s.unrepresentable) +
                   " dropped)";
@@ -1610,6 +1613,14 @@ SolutionSet enumerate_all(const LcpProblem& problem, const EnumerationOptions& o
   out.ambiguous = work.ambiguous;
   out.unrepresentable = work.unrepresentable;
   out.nodes = work.nodes;
+  // a candidate whose sign test was too close to call was left out: the list may lack it
+  // (issue 24: the DART 12-D LCP printed ambiguous: 1 with complete: true)
+  if (work.ambiguous > 0) {
+    out.complete = false;
+    const std::string msg = std::to_string(work.ambiguous) +
+                            " candidate(s) with a sign test too close to call: not listed";
+    work.message = work.message.empty() ? msg : work.message + "; " + msg;
+  }
   out.leaves = work.leaves;
   out.structured = work.structured;
   out.message = work.message;

@@ -72,6 +72,7 @@ class LemkeRun {
         row_cand_(n_) {
     mmax_ = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
     qmax_ = problem.q.lpNorm<Eigen::Infinity>();
+    row_max_ = n_ > 0 ? Vec(M.cwiseAbs().rowwise().maxCoeff()) : Vec();
     cands_.resize(static_cast<size_t>(n_ + 1));
     tied_.reserve(static_cast<size_t>(n_ + 1));
     tied_scale_.reserve(static_cast<size_t>(n_ + 1));
@@ -152,6 +153,32 @@ class LemkeRun {
   double gmax_ = 1;            // max |[M | c]_ij| (set with the artificial column c)
   double qmax_ = 0;            // ||q||_inf
   double beta_ = 1;            // internal z0 = user z0 / beta_ (see run())
+  Vec row_max_;                // max_j |M_ij| per row (default_covering)
+
+  /// The default covering vector: all ones when the rows of [M q] have comparable sizes
+  /// (within kRowSpread), else each row in its own units, d_i = r_i / max r (r_i = max_j
+  /// |M_ij|, or |q_i| for a zero row, or max r for a zero row and q_i = 0). With d = 1 a row
+  /// scaled by 1e-16 gets a z0 rate 1e16 times its own entries, and the bases along the path
+  /// mix those units until one is numerically singular (issue 24: a 40x40 SPD matrix with
+  /// rows scaled by 10^-(i mod 17) ended in numerical_failure). Row scaling M -> D M,
+  /// q -> D q then scales d by D and leaves the path unchanged.
+  Vec default_covering() const {
+    constexpr double kRowSpread = 1024;
+    Vec r(n_);
+    double rmax = 0;
+    for (Eigen::Index i = 0; i < n_; ++i) {
+      r[i] = row_max_[i];
+      if (!(r[i] > 0)) r[i] = std::abs(problem_.q[i]);
+      rmax = std::max(rmax, r[i]);
+    }
+    if (!(rmax > 0) || !std::isfinite(rmax)) return Vec::Ones(n_);
+    double rmin = rmax;
+    for (Eigen::Index i = 0; i < n_; ++i)
+      if (r[i] > 0) rmin = std::min(rmin, r[i]);
+    if (rmax <= kRowSpread * rmin) return Vec::Ones(n_);
+    for (Eigen::Index i = 0; i < n_; ++i) r[i] = r[i] > 0 ? r[i] / rmax : 1.0;
+    return r;
+  }
   int entering_ = -1;          // the variable entering at the current pivot
   double tie_level_ = -1;      // tie_level() of the current ratio test (-1: not computed)
   double drift_ = 0;           // rounding bound of the updated values since recomputed
@@ -569,8 +596,8 @@ SolveResult LemkeRun::run() {
   // the units of z (the w-rates are d_i * beta_ with beta_ = max |M_ij|), so that z and z0
   // share the scale-aware tolerances; this rescales z0 only and leaves the path unchanged.
   // User-facing values of z0 (trace, ray) are converted back to the units of d.
-  const Vec d = o_.covering.size() ? o_.covering : Vec::Ones(n_);
   beta_ = mmax_ > 0 ? mmax_ : 1.0;
+  const Vec d = o_.covering.size() ? o_.covering : default_covering();
   Vec rate0(n_);
   Vec c = Vec::Zero(n_);
   for (Eigen::Index i = 0; i < n_; ++i) {

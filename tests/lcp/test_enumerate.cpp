@@ -472,7 +472,9 @@ TEST_CASE("enumerate_all: DART's Lemke_12D contact LCP with its rows and columns
   const cpkit::Mat M = p.dense_M();
   auto check = [&](const cpkit::Mat& Ms, const cpkit::Vec& qs, const cpkit::Vec& zscale) {
     const SolutionSet s = enumerate_all(cpkit::LcpProblem(Ms, qs));
-    CHECK(s.complete);
+    // a candidate left out as too close to call makes the list not complete (issue 24: this
+    // problem printed ambiguous: 1 with complete: true); the exact 3 are listed either way
+    CHECK(s.complete == (s.ambiguous == 0));
     REQUIRE(s.solutions.size() == exact.size());
     for (const auto& z : exact) {
       int hits = 0;

@@ -220,20 +220,24 @@ TEST_CASE("routes 1 and 2 agree on the degenerate lines (a11 = mu|a12|, Lambda =
   std::uniform_real_distribution<double> U(0.0, 1.0);
   int infinite = 0;
   for (int it = 0; it < 2000; ++it) {
-    // A with a11 = mu |a12| exactly (in floating point: D_s = a11 - s mu a12 evaluates to 0)
+    // A with a11 = mu |a12| exactly: dyadic data with few bits (multiples of 1/16), so that
+    // D_s = a11 - s mu a12, N and L_s below are computed without rounding and are exact zeros
+    // of the data (a rounded product mu |a12| would make D_s a nonzero number of the size of
+    // its rounding, which the analytic route rightly leaves undecided)
+    const auto q16 = [](double x) { return std::round(16 * x) / 16; };
     ContactParameters p;
     const int sg = U(rng) < 0.5 ? 1 : -1;
-    p.mu = 0.2 + 2 * U(rng);
-    p.a12 = sg * (0.2 + 2 * U(rng));
+    p.mu = q16(0.25 + 2 * U(rng));
+    p.a12 = sg * q16(0.25 + 2 * U(rng));
     p.a11 = p.mu * std::abs(p.a12);
     p.a22 = (p.a12 * p.a12 / p.a11) * (1.05 + 2 * U(rng));
-    p.C_T = it % 3 == 0 ? 0.0 : U(rng);
+    p.C_T = it % 3 == 0 ? 0.0 : q16(U(rng));
     ContactState st{StateLabel::kB, 0, 1};
     if (it % 2 == 1) {  // state d without wear: Lambda = a11 - s mu a12 = 0 for s = sgn a12
       st = ContactState{StateLabel::kD, 0.5 + U(rng), sg};
     }
     // loads: on the critical line (N = 0 in b, L_s = 0 in d), both senses, or random
-    const double t = (U(rng) < 0.5 ? -1 : 1) * (0.1 + U(rng));
+    const double t = (U(rng) < 0.5 ? -1 : 1) * std::ldexp(1.0, static_cast<int>(4 * U(rng)) - 2);
     LoadRate f;
     const int pick = it % 4;
     const double c1 = 1 + p.a11 * p.C_T;

@@ -354,7 +354,7 @@ TEST_CASE("continua of a degenerate point coupled to nothing: segments and rays 
   // point 2 in state c on its own block: the N-point set is point 1's set times one stick point.
   std::mt19937 rng(31);
   std::uniform_real_distribution<double> U(0, 1);
-  int segments = 0, rays = 0;
+  int segments = 0, rays = 0, one_undecided = 0;
   for (int trial = 0; trial < 400; ++trial) {
     ContactSystem S;
     const bool use_d = trial % 2 == 1;
@@ -383,8 +383,12 @@ TEST_CASE("continua of a degenerate point coupled to nothing: segments and rays 
     if (!S.validate().empty()) continue;
     const RateSolutionSet one = solve_rate_problem(S.point_parameters(0), p1.state, LoadRate{dF(0), dF(1)});
     const SystemRateSolutionSet sys = solve_rate_problem(S, dF);
-    CAPTURE(trial, use_d, sys.message, one.count(), sys.count());
-    REQUIRE(sys.complete == one.complete);
+    CAPTURE(trial, use_d, sys.message, one.message, one.count(), sys.count());
+    // "degenerate on purpose" is degenerate in floating point only (mu and dF(0) are rounded):
+    // the one-point route may leave the sign it snapped undecided (complete: false, the pieces
+    // of the degenerate line still listed; issue 24), the N-point route still decides it
+    if (one.complete) REQUIRE(sys.complete);
+    else ++one_undecided;
     REQUIRE(sys.count() == one.count());
     REQUIRE(sys.solutions.size() == one.solutions.size());
     // project onto point 1 and compare piece by piece
@@ -423,6 +427,8 @@ TEST_CASE("continua of a degenerate point coupled to nothing: segments and rays 
   }
   CHECK(segments > 20);
   CHECK(rays > 20);
+  INFO("one-point route undecided on " << one_undecided << " trials");
+  CHECK(one_undecided < 200);
 }
 
 TEST_CASE("single solvers answer inside the enumerated set", "[rate][system]") {

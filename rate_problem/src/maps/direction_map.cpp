@@ -23,12 +23,20 @@ struct Evaluator {
   int disagreements = 0;
   int unreliable = 0;
 
-  RateSummary operator()(const LoadRate& load, RateSummary& check) {
+  /// `on_line`: the load is a candidate critical direction, a tie by construction. There the
+  /// routes' critical sign is within its rounding (the direction is rounded), both list the
+  /// pieces of the load taken on the line (the summary the map wants) and flag it unreliable;
+  /// that flag is expected and not counted.
+  RateSummary operator()(const LoadRate& load, RateSummary& check, bool on_line = false) {
     const RateSummary s = summarize_rate_problem(pre, load, method);
     check = cross ? summarize_rate_problem(pre, load, RateMethod::kEnumerate) : s;
     ++evaluations;
-    if (!s.reliable || !check.reliable) ++unreliable;
-    if (!same_solution_set(s, check)) ++disagreements;
+    // a route that could not decide does not disagree: it is counted as unreliable
+    if (!s.reliable || !check.reliable) {
+      if (!on_line) ++unreliable;
+    } else if (!same_solution_set(s, check)) {
+      ++disagreements;
+    }
     return s;
   }
 };
@@ -96,7 +104,7 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
     cand[i].theta = candidates[i].theta;
     cand[i].load = candidates[i].load;
     cand[i].conditions = candidates[i].conditions;
-    cand[i].summary = eval(candidates[i].load, cand[i].check);
+    cand[i].summary = eval(candidates[i].load, cand[i].check, true);
     const Arc& before = arcs[(i + m - 1) % m];
     const Arc& after = arcs[i];
     is_critical[i] = !same_solution_set(cand[i].summary, before.summary) ||

@@ -39,6 +39,13 @@ struct TypeB {
     if (x.v < -kGeoTol * V) return SolutionType::kSlipMinus;
     return SolutionType::kStick;
   }
+  /// A vertex typed stick with a nonzero v: its slip rate is within the band, not a proved 0
+  /// (at a vertex v is either basic, a computed value, or exactly 0).
+  bool undecided(detail::P2 x) const noexcept {
+    return x.v != 0 && std::abs(x.v) <= kGeoTol * V && !(S - c1 * x.u - a12 * x.v <
+                                                          -kGeoTol * (S_terms + c1 * std::abs(x.u) +
+                                                                      std::abs(a12 * x.v)));
+  }
 };
 
 /// State d: type from the sign of v = dw_T^i = s lambda.
@@ -49,6 +56,7 @@ struct TypeD {
     if (x.v < -kGeoTol * V) return SolutionType::kSlipMinus;
     return SolutionType::kStick;
   }
+  bool undecided(detail::P2 x) const noexcept { return x.v != 0 && std::abs(x.v) <= kGeoTol * V; }
 };
 
 double load_scale(const LoadRate& f) noexcept {
@@ -94,6 +102,7 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   res.infinite = plane.num_lines() > 0;
   res.n = plane.finish(type, res.pieces);
   res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
 }
 
 void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
@@ -102,7 +111,7 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
   lcp::SmallSolutionSet<1> set;
   lcp::enumerate_small<1>(Eigen::Matrix<double, 1, 1>(l.M), Eigen::Matrix<double, 1, 1>(l.q), set,
                           kEnumTol);
-  res.ambiguous = set.ambiguous;
+  res.ambiguous = set.ambiguous + (l.snapped ? 1 : 0);
   res.dropped = set.dropped;
   const int s = st.sgn_PT;
   // u = dP_N is affine in lambda: u = u0 + u1 lambda.
@@ -138,6 +147,7 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
   res.infinite = plane.num_lines() > 0;
   res.n = plane.finish(type, res.pieces);
   res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
 }
 
 /// Physical rates of the plane point x (affine) and of a plane direction (linear part).
@@ -224,6 +234,7 @@ void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen
   sum.count = 0;
   sum.types = 0;
   for (int k = 0; k < np; ++k) {
+    if (type.undecided(pts[k])) sum.reliable = false;
     bool dup = false;
     for (int j = 0; j < k && !dup; ++j)
       dup = std::abs(pts[k].u - pts[j].u) <= kGeoTol * U && std::abs(pts[k].v - pts[j].v) <= kGeoTol * V;
@@ -231,7 +242,6 @@ void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen
     ++sum.count;
     sum.types |= 1u << static_cast<unsigned>(type(pts[k]));
   }
-  sum.reliable = true;
 }
 
 bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
@@ -249,6 +259,7 @@ RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcep
   const unsigned slip = 1u << static_cast<unsigned>(st.sgn_PT > 0 ? SolutionType::kSlipPlus
                                                                    : SolutionType::kSlipMinus);
   RateSummary sum;
+  sum.reliable = !l.snapped;
   if (l.M == 0) {
     if (l.q == 0) {
       sum.count = -1;
@@ -350,10 +361,15 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
   RatePrecomputed pre;
   pre.params = params;
   pre.state = state;
+  // the LCP data in the normalised units of the summaries (rate_detail.hpp: normalise)
+  ContactParameters pn;
+  LoadRate unused;
+  int eA = 0, eF = 0;
+  detail::normalise(params, LoadRate{}, pn, unused, eA, eF);
   if (state.label == StateLabel::kB) {
-    const StateBLcp l0 = state_b_lcp(params, LoadRate{});  // M does not depend on the load
-    const StateBLcp lT = state_b_lcp(params, LoadRate{1.0, 0.0});
-    const StateBLcp lN = state_b_lcp(params, LoadRate{0.0, 1.0});
+    const StateBLcp l0 = state_b_lcp(pn, LoadRate{});  // M does not depend on the load
+    const StateBLcp lT = state_b_lcp(pn, LoadRate{1.0, 0.0});
+    const StateBLcp lN = state_b_lcp(pn, LoadRate{0.0, 1.0});
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) pre.M_b[i][j] = l0.M(i, j);
       pre.qT_b[i] = lT.q(i);
@@ -361,9 +377,11 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
     }
     pre.b_fast = b_blocks_regular(l0.M);
   } else if (state.label == StateLabel::kD) {
-    pre.M_d = state_d_lcp(params, state, LoadRate{}).M;  // snapped, load-independent
-    const Rates rT = state_d_rates(params, state, LoadRate{1.0, 0.0}, 0.0);
-    const Rates rN = state_d_rates(params, state, LoadRate{0.0, 1.0}, 0.0);
+    const StateDLcp l0 = state_d_lcp(pn, state, LoadRate{});  // M: load-independent
+    pre.M_d = l0.M;
+    pre.d_snapped = l0.snapped;
+    const Rates rT = state_d_rates(pn, state, LoadRate{1.0, 0.0}, 0.0);
+    const Rates rN = state_d_rates(pn, state, LoadRate{0.0, 1.0}, 0.0);
     pre.dPN_T = rT.dP_N;
     pre.dPN_N = rN.dP_N;
     pre.dPT_T = rT.dP_T;
@@ -372,11 +390,15 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
   return pre;
 }
 
-RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& f,
+RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& load,
                                    RateMethod method) noexcept {
-  const ContactParameters& p = pre.params;
   const ContactState& st = pre.state;
-  if (method != RateMethod::kEnumerate) return summarize_rate_problem(p, st, f, method);
+  if (method != RateMethod::kEnumerate) return summarize_rate_problem(pre.params, st, load, method);
+  // judged in normalised units, as the LCP data were precomputed (exact powers of two)
+  ContactParameters p;
+  LoadRate f;
+  int eA = 0, eF = 0;
+  detail::normalise(pre.params, load, p, f, eA, eF);
   if (st.label == StateLabel::kB && pre.b_fast) {
     Eigen::Matrix3d M;
     Eigen::Vector3d q;
@@ -398,10 +420,14 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& f
     StateDLcp l;
     l.M = pre.M_d;
     l.q = c1 * (m * dPN - st.sgn_PT * dPT);
-    if (std::abs(l.q) <= 1e-10 * c1 * (std::abs(m * dPN) + std::abs(dPT))) l.q = 0;
+    if (std::abs(l.q) <= 1e-10 * c1 * (std::abs(m * dPN) + std::abs(dPT))) {
+      l.snapped = l.q != 0;
+      l.q = 0;
+    }
+    l.snapped = l.snapped || pre.d_snapped;
     return summarize_d_core(st, l);
   }
-  return summarize_rate_problem(p, st, f, method);
+  return summarize_rate_problem(pre.params, st, load, method);
 }
 
 }  // namespace cpkit::rate

@@ -100,6 +100,7 @@ class PlaneSet {
       bool on = false;
       for (int l = 0; l < nl_ && !on; ++l) on = on_line(l, pts_[i]);
       if (!on) {
+        if (type_of.undecided(pts_[i])) ++undecided_;
         TypedPiece2 p;
         p.type = type_of(pts_[i]);
         p.a = pts_[i];
@@ -131,6 +132,8 @@ class PlaneSet {
   }
 
   bool bad() const noexcept { return bad_; }
+  /// Isolated points whose type the type function could not decide (TypeFn::undecided).
+  int undecided() const noexcept { return undecided_; }
   int num_lines() const noexcept { return nl_; }
 
  private:
@@ -294,6 +297,7 @@ class PlaneSet {
   std::array<Affine, 4> fn_{};
   int nf_ = 0;
   bool bad_ = false;
+  int undecided_ = 0;
 };
 
 }  // namespace cpkit::rate::detail

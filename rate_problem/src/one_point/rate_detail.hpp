@@ -19,6 +19,9 @@ struct PieceListN {
   int n = 0;
   bool infinite = false;
   bool overflow = false;  ///< more pieces than kCapacity (never expected; reported as an error)
+  /// some piece's existence hangs on a sign within the rounding error of its expression: the
+  /// list is not complete (analytic route; issue 24)
+  bool undecided = false;
   void push(const RateSolution& s) noexcept {
     if (n < kCapacity) {
       p[n++] = s;
@@ -35,6 +38,11 @@ using SmallPieceList = PieceListN<4>;
 void validate_inputs(const ContactParameters& params, const ContactState& state,
                      const LoadRate& load);
 
+/// The exact power-of-two normalisation in which every route and summary judges: A / 2^eA
+/// (eA from max(a11, a22)), C_T 2^eA, the load / 2^eF (eF from its largest component).
+void normalise(const ContactParameters& params, const LoadRate& load, ContactParameters& pn,
+               LoadRate& fn, int& eA, int& eF) noexcept;
+
 /// Route 1 into a PieceList (analytic.cpp).
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
                      SmallPieceList& out) noexcept;
@@ -48,7 +56,7 @@ RateSolutionSet make_solution_set(const ContactParameters& params, const Contact
                                   const LoadRate& load, const PieceListN<Cap>& list,
                                   bool complete) {
   return make_solution_set(params, state, load, list.p.data(), list.n, list.infinite,
-                           complete && !list.overflow);
+                           complete && !list.overflow && !list.undecided);
 }
 
 /// States a and c (no LCP): the unique rates by a numerical solve of the linear system.
@@ -68,6 +76,7 @@ RateSummary summarize(const PieceListN<Cap>& list) noexcept {
   RateSummary s;
   for (int i = 0; i < list.n; ++i) s.types |= 1u << static_cast<unsigned>(list.p[i].type);
   s.count = list.infinite ? -1 : list.n;
+  s.reliable = !list.undecided && !list.overflow;
   return s;
 }
 

@@ -96,6 +96,32 @@ RateSolutionSet make_solution_set(const ContactParameters& params, const Contact
 }  // namespace detail
 
 namespace {
+int exponent_of_(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
+  int e = 0;
+  std::frexp(v, &e);
+  return e - 1;
+}
+}  // namespace
+
+namespace detail {
+
+/// The exact power-of-two normalisation of solve_rate_problem: A / 2^eA, C_T 2^eA, load / 2^eF.
+void normalise(const ContactParameters& params, const LoadRate& load, ContactParameters& pn,
+               LoadRate& fn, int& eA, int& eF) noexcept {
+  eA = exponent_of_(std::max(params.a11, params.a22));
+  const double fmax = std::max(std::abs(load.dF_T), std::abs(load.dF_N));
+  eF = fmax > 0 && std::isfinite(fmax) ? exponent_of_(fmax) : 0;
+  pn = params;
+  pn.a11 = std::ldexp(params.a11, -eA);
+  pn.a12 = std::ldexp(params.a12, -eA);
+  pn.a22 = std::ldexp(params.a22, -eA);
+  pn.C_T = std::ldexp(params.C_T, eA);
+  fn = LoadRate{std::ldexp(load.dF_T, -eF), std::ldexp(load.dF_N, -eF)};
+}
+
+}  // namespace detail
+
+namespace {
 
 const char* single_solver_name(RateMethod m) {
   switch (m) {
@@ -113,12 +139,6 @@ const char* single_solver_name(RateMethod m) {
 }  // namespace
 
 namespace {
-
-int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
-  int e = 0;
-  std::frexp(v, &e);
-  return e - 1;
-}
 
 Rates scaled_rates(const Rates& r, int eF, int eL) noexcept {
   Rates s;
@@ -162,15 +182,10 @@ RateSolutionSet solve_rate_problem(const ContactParameters& params, const Contac
   // load, and loads near 1e308 or subnormal ones are solved like loads of order 1 (issue 24).
   // The state (P_N) and the wear and softening constants keep their units: with forces
   // unscaled, kappa = k_a P_N / (3 P_s) is unchanged.
-  const int eA = exponent_of(std::max(params.a11, params.a22));
-  const double fmax = std::max(std::abs(load.dF_T), std::abs(load.dF_N));
-  const int eF = fmax > 0 ? exponent_of(fmax) : 0;
-  ContactParameters pn = params;
-  pn.a11 = std::ldexp(params.a11, -eA);
-  pn.a12 = std::ldexp(params.a12, -eA);
-  pn.a22 = std::ldexp(params.a22, -eA);
-  pn.C_T = std::ldexp(params.C_T, eA);
-  const LoadRate fn{std::ldexp(load.dF_T, -eF), std::ldexp(load.dF_N, -eF)};
+  int eA = 0, eF = 0;
+  ContactParameters pn;
+  LoadRate fn;
+  detail::normalise(params, load, pn, fn, eA, eF);
   RateSolutionSet out = dispatch(pn, state, fn, method);
   const int eL = eF - eA;
   for (auto& s : out.solutions) {
@@ -194,11 +209,17 @@ RateSolutionSet solve_rate_problem(const ContactParameters& params, const Contac
 
 RateSummary summarize_rate_problem(const ContactParameters& params, const ContactState& state,
                                    const LoadRate& load, RateMethod method) noexcept {
+  // judged in the normalised units of solve_rate_problem (exact; the count and types do not
+  // depend on the units of A or of the load)
+  int eA = 0, eF = 0;
+  ContactParameters pn;
+  LoadRate fn;
+  detail::normalise(params, load, pn, fn, eA, eF);
   switch (method) {
     case RateMethod::kEnumerate:
-      return summarize_rate_enumerate(params, state, load);
+      return summarize_rate_enumerate(pn, state, fn);
     case RateMethod::kAnalytic:
-      return summarize_rate_analytic(params, state, load);
+      return summarize_rate_analytic(pn, state, fn);
     case RateMethod::kLemke:
     case RateMethod::kFbNewton:
     case RateMethod::kIpopt:

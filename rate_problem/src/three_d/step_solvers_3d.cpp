@@ -43,8 +43,8 @@ struct Normalized {
   double mu = 0.5, C = 0, cw = 0;
   double E = 1;  ///< the ellipse's unit (unit_scaling.hpp): lambda / (L0 E) is normalized
   Eigen::Vector2d al{1, 1};
-  Eigen::Matrix3d A = Eigen::Matrix3d::Identity(), Ainv = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d DF{0, 0, 0}, dw0{0, 0, 0};  // Dw = dw0 - Ainv P1
+  Eigen::Matrix3d A = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d DF{0, 0, 0}, dw0{0, 0, 0};  // Dw = dw0 - A^-1 P1
   Eigen::Vector2d PT0{0, 0};
   double PN0 = 0, g0 = 0;
   Eigen::Vector2d ui0{0, 0};
@@ -72,19 +72,21 @@ Normalized normalize(const Step3dProblem& pr) {
   if (!std::isfinite(n.C) || !std::isfinite(n.cw) || !std::isfinite(n.L0) || n.L0 == 0)
     throw InputError("the step's scales overflow double (C_T |A|, c_w F0 or F0 / |A|): give the "
                      "data in units of moderate size");
-  n.Ainv = n.A.ldlt().solve(Eigen::Matrix3d::Identity());
+  // The factorisation, not an explicit inverse: dw0 by a direct solve; the affine maps of P1
+  // (rows of A^-1, A symmetric: A^-1 e_k) by solves with unit vectors.
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(n.A);
   n.DF = pr.DF / n.F0;
   n.PT0 = pr.state.P_T0 / n.F0;
   n.PN0 = pr.state.P_N0 / n.F0;
   n.g0 = pr.state.g0 / n.L0;
   const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
-  n.dw0 = n.Ainv * (n.DF + P0);
+  n.dw0 = ldlt.solve(n.DF + P0);
   n.ui0 = n.dw0.head<2>() + n.C * n.PT0;
-  n.Ui = -n.Ainv.topRows<2>();
+  for (int k = 0; k < 2; ++k) n.Ui.row(k) = -ldlt.solve(Eigen::Vector3d::Unit(k)).transpose();
   n.Ui(0, 0) -= n.C;
   n.Ui(1, 1) -= n.C;
   n.gc = n.g0 + n.dw0(2);
-  n.gN = -n.Ainv.row(2);
+  n.gN = -ldlt.solve(Eigen::Vector3d::UnitZ()).transpose();
   return n;
 }
 
@@ -546,7 +548,11 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
       // P_T1 = 0 requires DP_T = -P_T0; equilibrium with P1 = 0 gives Dw = A^-1 (DF + P0)
       const double gN1 = n.gc;  // g1 at P1 = 0
       (void)s;
-      if (gN1 <= 1e-12) {
+      // g1 = g0 + (A^-1 (DF + P0))_N in normalised units: "<= 0" up to the rounding of that
+      // sum (its terms' size, not a fixed 1e-12)
+      const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
+      const double g_terms = std::abs(n.g0) + n.gN.cwiseAbs().dot((n.DF + P0).cwiseAbs());
+      if (gN1 <= 64 * 2.220446049250313e-16 * g_terms) {
         Step3dValues v = step_3d_values(problem, Eigen::Vector2d::Zero(), 0.0, 0.0);
         v.lambda = (problem.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
         sols.push_back(make_step_3d_solution(problem, v));

@@ -107,6 +107,7 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
     out.complete = false;
     if (out.message.empty()) out.message = m;
   };
+  std::vector<SystemSolution3d> pending;  // separation candidates with an undecided dw_N
   for (unsigned mask = 0; mask < (1u << nb); ++mask) {  // bit b set: grazing point b separates
     if (clock.seconds() >= time_limit_s) {
       out.timed_out = true;
@@ -217,10 +218,21 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
     }
     for (const Eigen::VectorXd& z : zs) {
       const Eigen::VectorXd x = m == 0 ? x0 : Eigen::VectorXd(x0 + X * z);
-      // separated grazing points must open: dw_N < 0
-      bool ok = true;
-      for (int b = 0; b < nb; ++b)
-        if ((mask >> b) & 1u) ok = ok && x(3 * n + 3 * grazing[b] + 2) < -kTol * (1 + x.cwiseAbs().maxCoeff());
+      // separated grazing points must open: dw_N < 0, read outside the rounding band of the
+      // solve K x = r (backward stable: eps |K| |x| + |r|, carried by the row of K^-1 that
+      // gives dw_N; faceted_rate_3d.cpp, commit 3197885): no fixed band, no "1 +" (issue 24)
+      bool ok = true, undecided = false;
+      for (int b = 0; b < nb && ok; ++b) {
+        if (!((mask >> b) & 1u)) continue;
+        const int iN = 3 * n + 3 * grazing[b] + 2;
+        const Eigen::VectorXd rowN = lu.transpose().solve(Eigen::VectorXd::Unit(dim, iN));
+        Eigen::VectorXd terms = K.cwiseAbs() * x.cwiseAbs() + r0.cwiseAbs();
+        if (m > 0) terms += R.cwiseAbs() * z.cwiseAbs();
+        const double band = 64 * 2.220446049250313e-16 * rowN.cwiseAbs().dot(terms);
+        const double dwN = x(iN);
+        if (dwN < -band) continue;
+        if (dwN <= band) undecided = true; else ok = false;
+      }
       if (!ok) continue;
       SystemSolution3d sol;
       for (int i = 0; i < n; ++i) {
@@ -266,7 +278,31 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
         }
         seen = seen || d <= 1e-8;
       }
+      if (undecided) {
+        // decided only if the same rates come from the contact case (the point closed with
+        // dP = 0 and dw_N = 0); checked once every case is done
+        pending.push_back(std::move(sol));
+        continue;
+      }
       if (!seen) out.solutions.push_back(std::move(sol));
+    }
+  }
+  for (const SystemSolution3d& sol : pending) {
+    bool seen = false;
+    for (const auto& o : out.solutions) {
+      double d = 0;
+      for (int i = 0; i < n; ++i)
+        d = std::max({d, (o.rates[i].dP_T - sol.rates[i].dP_T).cwiseAbs().maxCoeff() / force_back,
+                      std::abs(o.rates[i].dP_N - sol.rates[i].dP_N) / force_back,
+                      (o.rates[i].dw_T - sol.rates[i].dw_T).cwiseAbs().maxCoeff() / disp_back,
+                      std::abs(o.rates[i].dw_N - sol.rates[i].dw_N) / disp_back});
+      seen = seen || d <= 1e-8;
+    }
+    if (!seen) {
+      out.complete = false;
+      if (out.message.empty())
+        out.message = "a separated point's normal rate dw_N is zero within the rounding of the "
+                      "rate equations and no contact solution has the same rates: not decided";
     }
   }
   return out;

@@ -95,7 +95,6 @@ struct Normalized {
   std::vector<double> mu, C, cw;
   std::vector<double> E;  ///< per point: the ellipse's unit (lambda / (L0 E) is normalized)
   std::vector<Eigen::Vector2d> al;
-  Mat Ainv;
   Vec z0;      ///< start state (lambda = 0)
   Mat Ui;      ///< 2N x 4N
   Vec ui0;     ///< 2N
@@ -116,7 +115,7 @@ Normalized normalize(const SystemStep3dProblem& pr) {
     throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
                      "of moderate size");
   const Mat A = pr.system.A / n.K0;
-  n.Ainv = A.ldlt().solve(Mat::Identity(3 * N, 3 * N));
+  const Eigen::LDLT<Mat> ldlt(A);
   const Vec DF = pr.DF / n.F0;
   Vec P0(3 * N);
   n.z0 = Vec::Zero(4 * N);
@@ -135,11 +134,15 @@ Normalized normalize(const SystemStep3dProblem& pr) {
     P0.segment<3>(3 * i) << q.state.P_T0 / n.F0, q.state.P_N0 / n.F0;
     n.z0.segment<3>(4 * i) = P0.segment<3>(3 * i);
   }
-  if (!n.Ainv.allFinite()) throw InputError("step: A cannot be inverted in double precision");
-  const Vec dw0 = n.Ainv * (DF + P0);  // Dw = dw0 - Ainv P1
-  // Ainv with its columns spread over z (column 3j + k -> 4j + k).
-  Mat Az = Mat::Zero(3 * N, 4 * N);
-  for (int j = 0; j < N; ++j) Az.middleCols(4 * j, 3) = n.Ainv.middleCols(3 * j, 3);
+  // Dw = dw0 - A^-1 P1 by the factorisation (no explicit inverse): dw0 by a direct solve, the
+  // linear map of z (A^-1 applied to the spreading of z's force part) by a solve with it.
+  const Vec dw0 = ldlt.solve(DF + P0);
+  Mat Sz = Mat::Zero(3 * N, 4 * N);  // P1 = Sz z (column 4j + k <- row 3j + k, k < 3)
+  for (int j = 0; j < N; ++j)
+    for (int k = 0; k < 3; ++k) Sz(3 * j + k, 4 * j + k) = 1;
+  const Mat Az = ldlt.solve(Sz);
+  if (ldlt.info() != Eigen::Success || !dw0.allFinite() || !Az.allFinite())
+    throw InputError("step: A cannot be factorised in double precision");
   n.Ui = Mat::Zero(2 * N, 4 * N);
   n.ui0 = Vec::Zero(2 * N);
   n.gz = Mat::Zero(N, 4 * N);

@@ -53,7 +53,10 @@ constexpr Eigen::Index kLemkeMaxDensify = 2000;
 
 struct LemkeOptions {
   CommonOptions common;  ///< max_iterations = 0: pivot limit 50 * (n + 1) + 1000 (documented)
-  Vec covering;          ///< covering vector d > 0 for z0 (empty: all ones), size n
+  /// Covering vector d > 0 for z0, size n. Empty: all ones when the rows of M have comparable
+  /// sizes (max_j |M_ij| within a factor 1024 of each other), else d_i = max_j |M_ij| / max |M|
+  /// (each row in its own units: the path does not depend on the units of the rows).
+  Vec covering;
   /// Optional warm start: a complementary basis, basis[i] = i (z_i basic) or ~i (w_i basic),
   /// e.g. SolveResult::basis of a previous solve of a nearby problem. When its basic solution
   /// is a solution it is returned (after verification) with 0 pivots; otherwise Lemke starts

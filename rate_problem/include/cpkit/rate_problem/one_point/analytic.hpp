@@ -17,9 +17,10 @@
 
 namespace cpkit::rate {
 
-/// Relative tolerance for "is zero" decisions of the rate problem: a quantity computed as a sum
-/// of terms t_i is zero when |sum| <= kRateTol * sum |t_i| (D_s, Lambda, N, S, L_s). The same
-/// value is used by the enumeration route (docs/contact_model.md, Sec. 5).
+/// Relative band of the enumeration route's snapping of its 1x1 state-d LCP (a nonzero value
+/// snapped is reported: the set is then not complete). The analytic route no longer uses a
+/// band: each sign it decides (D_s, Lambda, N, L_s) carries the bound of its own rounding, and
+/// a value within that bound leaves the set not complete (issue 24).
 inline constexpr double kRateTol = 1e-10;
 
 /// The parameter-and-state quantities that decide existence and uniqueness.

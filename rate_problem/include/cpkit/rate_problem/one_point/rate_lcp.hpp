@@ -36,6 +36,10 @@ Rates state_b_rates(const ContactParameters& p, const LoadRate& f, const Eigen::
 /// State d's 1x1 LCP, built numerically from the rate equations (50).
 struct StateDLcp {
   double M = 0, q = 0;
+  /// A nonzero q (the load's L_s), or an M (Lambda) above its rounding, within the snapping
+  /// band was set to zero: this route cannot tell its sign from zero, so an answer built on it
+  /// is not proved complete (issue 24).
+  bool snapped = false;
 };
 StateDLcp state_d_lcp(const ContactParameters& p, const ContactState& st, const LoadRate& f) noexcept;
 /// Physical rates of state d for the multiplier lambda (slip if lambda > 0, stick if 0), by a

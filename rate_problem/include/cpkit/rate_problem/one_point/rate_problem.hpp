@@ -87,6 +87,7 @@ struct RatePrecomputed {
   double qT_b[3] = {}, qN_b[3] = {};       ///< state b: q = qT dF_T + qN dF_N
   bool b_fast = false;                     ///< state b: D_+, D_- clearly nonzero
   double M_d = 0;                          ///< state d: the 1x1 LCP matrix (snapped)
+  bool d_snapped = false;                  ///< state d: a nonzero M_d was snapped to zero
   double dPN_T = 0, dPN_N = 0, dPT_T = 0, dPT_N = 0;  ///< state d: stick rates per unit load
 };
 /// Validates (InputError) and precomputes.
