@@ -18,6 +18,16 @@
 #include "simulation_outputs.hpp"
 
 namespace cpkit::cli {
+namespace {
+
+/// A CSV field in quotes (file and problem names may hold commas or quotes).
+std::string quoted(const std::string& v) {
+  std::string out = "\"";
+  for (char c : v) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + '"';
+}
+
+}  // namespace
 
 int run_fc_bench(const FcBenchArgs& a) {
   if (a.out.empty()) throw InputError("fc bench: --out PREFIX is required");
@@ -56,7 +66,7 @@ int run_fc_bench(const FcBenchArgs& a) {
       const double nan = std::nan("");
       const FrictionErrors e = r.z.size() == p.W.rows() ? friction_errors(p, r.z)
                                                         : FrictionErrors{nan, nan, nan};
-      f << '"' << a.files[i] << "\"," << p.name << ',' << p.contacts() << ',' << names[k] << ','
+      f << quoted(a.files[i]) << ',' << quoted(p.name) << ',' << p.contacts() << ',' << names[k] << ','
         << to_string(r.status) << ',' << r.iterations << ',' << s << ',' << e.unit_free << ','
         << e.relative_q << ',' << e.relative_max << '\n';
       std::cerr << p.name << " " << names[k] << ": " << to_string(r.status) << " in " << s
