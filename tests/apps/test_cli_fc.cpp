@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -133,4 +135,31 @@ TEST_CASE("fc solutions --json lists verified solutions and says whether complet
     CHECK(s.at("errors").at("unit_free").get<double>() <= 1e-10);
     require_friction_solution(p, s);
   }
+}
+
+TEST_CASE("fc bench writes one CSV row per file and solver", "[cli][fc][bench]") {
+  const auto dir = cpkit::test::scratch_dir() / "bench";
+  const std::string prefix = (dir / "b").string();
+  const auto run = run_cpkit("fc bench " + data("local/Rover4396.dat") + " " +
+                             data("local/FrictionContact3D_1c.dat") +
+                             " --solvers nsgs,fb-soc --no-plot --out '" + prefix + "'");
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  std::istringstream csv(cpkit::test::slurp(prefix + ".csv"));
+  std::string line;
+  REQUIRE(std::getline(csv, line));
+  CHECK(line.find("status") != std::string::npos);
+  CHECK(line.find("relative_q") != std::string::npos);
+  int rows = 0, solved = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    solved += line.find(",solved,") != std::string::npos ? 1 : 0;
+  }
+  CHECK(rows == 4);    // 2 files x 2 solvers
+  CHECK(solved == 4);  // both solve these two (fc solve above re-checks their r)
+  // A bad solver name is refused before anything runs or is written.
+  const auto bad = run_cpkit("fc bench " + data("local/Rover4396.dat") + " --solvers nope --out '" +
+                             (dir / "x").string() + "'");
+  CHECK(bad.code == 2);
+  CHECK(!std::filesystem::exists(dir / "x.csv"));
 }
