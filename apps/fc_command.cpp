@@ -1,5 +1,6 @@
 // `cpkit fc solve FILE [--solver S] [--tol T] [--max-iter K] [--time-limit S] [--json]`
 // `cpkit fc solutions FILE [--starts K] [--seed N] [--tol T] [--time-limit S] [--json]`
+// `cpkit fc bench FILE... [--solvers a,b] --out PREFIX` (fc_bench.hpp)
 // 3-D frictional contact problems from FCLIB (HDF5) or Siconos FrictionContact .dat files
 // (cpkit/core/friction_io.hpp). `solve` runs one solver of cpkit::lcp::solvers() that accepts
 // friction problems; `solutions` lists distinct verified solutions (lcp/friction/solutions.hpp).
@@ -13,6 +14,7 @@
 
 #include "cli_common.hpp"
 #include "cli_options.hpp"
+#include "fc_bench.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
 #include "cpkit/core/friction_verdict.hpp"
@@ -178,6 +180,22 @@ void add_fc_command(CLI::App& app, Context& ctx) {
   l->add_option("--starts", sols->starts, "seeded starts of the multistart route (default 20)");
   l->add_option("--seed", sols->seed, "seed of the starts (default 1)");
   l->callback([sols, &ctx]() { ctx.exit_code = run_fc_solutions(*sols); });
+
+  auto bench = std::make_shared<FcBenchArgs>();
+  auto* b = fc->add_subcommand("bench", "Every solver on every file: PREFIX.csv (status, "
+                                        "iterations, seconds, the three errors) and PREFIX.png "
+                                        "(Dolan-More performance profile)");
+  b->add_option("FILE", bench->files, "problem files (FCLIB local HDF5 or Siconos .dat)")
+      ->required();
+  b->add_option("--solvers", bench->solvers,
+                "comma-separated solver names (default: every friction solver: " +
+                    fc_solver_list() + ")")
+      ->delimiter(',');
+  b->add_option("--out", bench->out, "prefix of PREFIX.csv and PREFIX.png")->required();
+  b->add_option("--tol", bench->tol, "tolerance on the unit-free residual (default 1e-10)");
+  b->add_option("--time-limit", bench->time_limit_s, "seconds per solve (default 60)");
+  b->add_flag("--no-plot", bench->no_plot, "write the CSV only");
+  b->callback([bench, &ctx]() { ctx.exit_code = run_fc_bench(*bench); });
 }
 
 }  // namespace cpkit::cli

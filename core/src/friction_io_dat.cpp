@@ -4,7 +4,8 @@
 //           q (size1 numbers), then mu (nc numbers);
 //   global: d, nc, M, H (each NM_new_from_file), then q (M's size1), b (H's size1), mu (nc).
 // Siconos' q and b are cpkit's f and w (M v = H r + q, u = H^T v + b). Siconos ignores whatever
-// follows mu; so does cpkit (kept as the note). Every count is checked against what is left in
+// follows mu; cpkit keeps one trailing number or text as the note and refuses more numbers
+// (a global file read as a local one would otherwise pass). Every count is checked against what is left in
 // the file before anything is allocated for it (io_dat_matrix.hpp).
 #include <algorithm>
 #include <cstdint>
@@ -57,9 +58,20 @@ std::int64_t read_header(DatReader& r) {
                                           static_cast<std::int64_t>(r.remaining())));
 }
 
+/// What follows mu, as a note. Siconos' own files end with at most one number there (ignored,
+/// as Siconos does); more numbers mean the header does not describe the file (a
+/// GlobalFrictionContact file read as a local one, for one): an InputError, not a silent misread.
 std::string trailing_note(DatReader& r, const std::vector<io_text::Token>& tokens,
-                          const std::string& text) {
+                          const std::string& text, const char* other) {
   if (r.done()) return {};
+  int numbers = 0;
+  for (std::size_t k = r.position(); k < tokens.size() && numbers < 2; ++k) {
+    double v = 0;
+    if (io_text::parse_real(tokens[k].text, v) != io_text::Number::kNotANumber) ++numbers;
+  }
+  if (numbers >= 2)
+    r.fail(r.line(), "more numbers follow mu than the header announces (Siconos' files end with "
+                     "at most one): not a " + std::string(other) + " file, or a wrong header");
   std::string note = text.substr(tokens[r.position()].offset);
   note.erase(note.find_last_not_of(" \t\r\n\v\f") + 1);
   return io_text::valid_utf8(note);
@@ -87,7 +99,7 @@ FrictionContactProblem parse_friction_dat(const std::string& text, const std::st
   p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + nc), "W", "q and mu", why);
   p.q = read_vector(r, n, "q");
   p.mu = read_vector(r, nc, "mu");
-  p.note = trailing_note(r, tokens, text);
+  p.note = trailing_note(r, tokens, text, "FrictionContact (local problem)");
   p.W.makeCompressed();
   p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());
   throw_if_invalid(p.validate(), origin);
@@ -126,7 +138,7 @@ GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
   p.f = read_vector(r, m, "q (cpkit's f)");
   p.w = read_vector(r, n, "b (cpkit's w)");
   p.mu = read_vector(r, nc, "mu");
-  p.note = trailing_note(r, tokens, text);
+  p.note = trailing_note(r, tokens, text, "GlobalFrictionContact");
   p.M.makeCompressed();
   p.H.makeCompressed();
   p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());

@@ -243,6 +243,11 @@ TEST_CASE("corrupted .dat files name what is wrong", "[friction][io][bad]") {
   bad("3 1 0 3 3 3 3 15", "ends too early");
   bad("3 1 2 3 3 3 3 15 1 2 3 4 5 6 7 8 9 10", "storage type 2");
   bad("3 1 1 3 3 2147483647 1 1 3 3 2 1 0 1 0 0 1 2 3 4 5 6 7 8 9 -1 2 3 0.1", "blocks");
+  bad("3 1" + W + "-1 2 3 0.1 7 8", "more numbers follow mu");
+  // A global file is not a local one (its M would pass for W): refused, not misread.
+  require_input_error(
+      [&] { cpkit::read_friction_problem(data("global/GFC3D_Example1.dat").string()); },
+      "GFC3D_Example1.dat", "more numbers follow mu");
   bad("", "empty");
   bad("hello world", "contact dimension");
   require_input_error(
