@@ -111,7 +111,9 @@ def siconos_problem(path):
     import siconos.numerics as sn
     if path.endswith(".hdf5"):
         W, q, mu = read_fclib_local(path)
-        return sn.FrictionContactProblem(3, W.tocsc(), q, mu)
+        W = W.tocsc()
+        W.indices, W.indptr = W.indices.astype(np.int64), W.indptr.astype(np.int64)
+        return sn.FrictionContactProblem(3, W, q, mu)  # int64 indices: Siconos' own width
     return sn.frictionContact_new_from_filename(path)
 
 
@@ -132,14 +134,26 @@ def project_cone(z, mu):
     zn, zt = z[:, 0], z[:, 1:]
     nt = np.linalg.norm(zt, axis=1)
     out = np.zeros_like(z)
-    inside = mu * nt <= zn
+    inside = nt <= mu * zn
     out[inside] = z[inside]
-    polar = (~inside) & (nt * mu <= -zn)  # the polar cone projects to 0
+    polar = (~inside) & (mu * nt <= -zn)  # the polar cone -K* = {mu |z_T| <= -z_N} goes to 0
     side = ~(inside | polar)
     a = (zn[side] + mu[side] * nt[side]) / (1.0 + mu[side] ** 2)
     out[side, 0] = a
     out[side, 1:] = (mu[side] * a / nt[side])[:, None] * zt[side]
     return out
+
+
+def self_check_projection():
+    """Moreau's decomposition on random points: P idempotent, z - P(z) orthogonal to P(z) and
+    in the polar cone {mu |d_T| <= -d_N}. Guards the one formula every verdict here rests on."""
+    rng = np.random.default_rng(1)
+    z, mu = rng.normal(size=(2000, 3)), rng.uniform(0.05, 3.0, 2000)
+    P = project_cone(z, mu)
+    d = z - P
+    assert np.abs(project_cone(P, mu) - P).max() < 1e-12
+    assert np.abs((d * P).sum(axis=1)).max() < 1e-12
+    assert (mu * np.linalg.norm(d[:, 1:], axis=1) + d[:, 0]).max() < 1e-12
 
 
 def check(W, q, mu, r):
@@ -299,8 +313,16 @@ def main():
     files = a.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "fclib", "local", "*")))
     files = [f for f in files if f.endswith((".dat", ".hdf5"))]
     T = a.tol
+    self_check_projection()
     print(f"tolerance T = {T:g} on |r - P_K(r - u_hat)| / |q| (checked here with numpy); "
           f"timeout {a.timeout:g} s per solve; load {os.getloadavg()[0]:.1f}")
+    # Fixed start-up costs, for reading the process times: an empty Siconos child (Python,
+    # numpy, scipy, siconos.numerics imported) and `cpkit --version`.
+    base_s = sorted(run([sys.executable, "-c", "import numpy, scipy.sparse, siconos.numerics"],
+                        a.timeout)[2] for _ in range(3))[1]
+    base_c = sorted(run([a.cpkit, "--version"], a.timeout)[2] for _ in range(3))[1]
+    print(f"start-up alone (median of 3): Python + siconos.numerics import {fmt_t(base_s)}, "
+          f"`cpkit --version` {fmt_t(base_c)}")
     rows, per_file = [], []
     for path in files:
         name = os.path.basename(path)
