@@ -253,6 +253,33 @@ def fmt_e(x):
         "inf" if math.isinf(x) else f"{x:.1e}")
 
 
+def profile_ratios(rows, key):
+    """Per solver, its time / the best time on each file (inf on failure): Dolan-More."""
+    files = sorted({r["file"] for r in rows})
+    solvers = list(dict.fromkeys(f"{r['code']}:{r['solver']}" for r in rows))
+    t = {(r["file"], f"{r['code']}:{r['solver']}"):
+         (max(r[key], 1e-7) if r["success"] and math.isfinite(r[key]) else math.inf) for r in rows}
+    ratios = {s: [] for s in solvers}
+    for f in files:
+        best = min(t[(f, s)] for s in solvers)
+        for s in solvers:
+            ratios[s].append(t[(f, s)] / best if math.isfinite(best) else math.inf)
+    return files, solvers, ratios
+
+
+def profile_table(rows, key):
+    files, solvers, ratios = profile_ratios(rows, key)
+    taus = [1, 1.5, 2, 5, 10, 100]
+    print(f"\n## Dolan-More profile of the {key} time: fraction of the {len(files)} files solved "
+          "within tau x the best")
+    print("| solver | " + " | ".join(f"tau = {t:g}" for t in taus) + " |")
+    print("|---|" + "---|" * len(taus))
+    for s in solvers:
+        print(f"| {s} | " + " | ".join(
+            f"{sum(1 for x in ratios[s] if x <= t * (1 + 1e-12)) / len(files):.2f}" for t in taus)
+            + " |")
+
+
 def profile_png(rows, prefix):
     """Dolan-More profile of whole-process times (failures never count)."""
     try:
@@ -262,15 +289,7 @@ def profile_png(rows, prefix):
     except ImportError:
         print("(no matplotlib: profile PNG not written)")
         return
-    files = sorted({r["file"] for r in rows})
-    solvers = list(dict.fromkeys(f"{r['code']}:{r['solver']}" for r in rows))
-    t = {(r["file"], f"{r['code']}:{r['solver']}"): (r["process"] if r["success"] else math.inf)
-         for r in rows}
-    ratios = {s: [] for s in solvers}
-    for f in files:
-        best = min(t[(f, s)] for s in solvers)
-        for s in solvers:
-            ratios[s].append(t[(f, s)] / best if math.isfinite(best) else math.inf)
+    files, solvers, ratios = profile_ratios(rows, "process")
     finite = [x for v in ratios.values() for x in v if math.isfinite(x)]
     tau_max = max(finite + [2.0]) * 1.1
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -385,6 +404,9 @@ def main():
         rsv = f"{cs['solve'] / ss['solve']:.2f}" if cs and ss and ss["solve"] > 0 else "-"
         flag = " **(>= 50)**" if nc >= 50 else ""
         print(f"| {name} | {nc}{flag} | {desc(cp, cs)} | {desc(sp_, ss)} | {rp} | {rsv} |")
+
+    profile_table(rows, "process")
+    profile_table(rows, "solve")
 
     if a.out:
         with open(a.out + ".csv", "w", newline="") as f:
