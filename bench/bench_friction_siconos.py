@@ -25,7 +25,7 @@ Per file: ratio best cpkit / best Siconos (successful solves only) for both time
 contacts or more are flagged (issue 26's target: ratio <= 1 on those, whole process).
 
 Usage: /usr/bin/python3 bench/bench_friction_siconos.py [--cpkit build/apps/cpkit] [--tol 1e-8]
-       [--timeout 20] [--out PREFIX] [FILE...]
+       [--timeout 20] [--repeat 3] [--out PREFIX] [FILE...]
 --out PREFIX writes PREFIX.csv (one row per file and solver) and, when matplotlib is there,
 PREFIX_profile.png (Dolan-More profile of the whole-process times). Exit 77 when siconos is
 not importable. Numbers: docs/benchmarks.md ("3-D frictional contact against Siconos").
@@ -242,6 +242,18 @@ def run_siconos(path, solver, tol, timeout):
     return res
 
 
+def repeated(solve, k):
+    """The last of k runs (the solvers are deterministic) with the median process and solve
+    times: on a shared machine one sample can be off by 2x. A timeout is not repeated."""
+    runs = [solve()]
+    while len(runs) < k and runs[-1]["exit"] is not None:
+        runs.append(solve())
+    res = dict(runs[-1])
+    res["process"] = float(np.median([r["process"] for r in runs]))
+    res["solve"] = float(np.median([r["solve"] for r in runs]))
+    return res
+
+
 def fmt_t(x):
     if x is None or not math.isfinite(x):
         return "-"
@@ -319,6 +331,7 @@ def main():
     ap.add_argument("--cpkit", default=os.path.join(ROOT, "build", "apps", "cpkit"))
     ap.add_argument("--tol", type=float, default=1e-8)
     ap.add_argument("--timeout", type=float, default=20.0, help="seconds per solve (process)")
+    ap.add_argument("--repeat", type=int, default=3, help="runs per solve (median times)")
     ap.add_argument("--out", default="", help="PREFIX for PREFIX.csv and PREFIX_profile.png")
     a = ap.parse_args()
     try:
@@ -334,7 +347,7 @@ def main():
     T = a.tol
     self_check_projection()
     print(f"tolerance T = {T:g} on |r - P_K(r - u_hat)| / |q| (checked here with numpy); "
-          f"timeout {a.timeout:g} s per solve; load {os.getloadavg()[0]:.1f}")
+          f"timeout {a.timeout:g} s per solve; median of {a.repeat} runs; load {os.getloadavg()[0]:.1f}")
     # Fixed start-up costs, for reading the process times: an empty Siconos child (Python,
     # numpy, scipy, siconos.numerics imported) and `cpkit --version`.
     base_s = sorted(run([sys.executable, "-c", "import numpy, scipy.sparse, siconos.numerics"],
@@ -352,15 +365,19 @@ def main():
         print("| code | solver | claim | check: rel. to |q| | rel. to max | cpkit unit-free | "
               "success | iterations | process | solve | note |")
         print("|---|---|---|---|---|---|---|---|---|---|---|")
-        runs = [("cpkit", s, run_cpkit(a.cpkit, path, s, T, a.timeout)) for s in CPKIT_SOLVERS]
-        runs += [("siconos", s, run_siconos(path, s, T, a.timeout)) for s in SICONOS_SOLVERS]
+        runs = [("cpkit", s, repeated(lambda: run_cpkit(a.cpkit, path, s, T, a.timeout), a.repeat))
+                for s in CPKIT_SOLVERS]
+        runs += [("siconos", s, repeated(lambda: run_siconos(path, s, T, a.timeout), a.repeat))
+                 for s in SICONOS_SOLVERS]
         for code, s, res in runs:
             rq, rm = check(W, q, mu, res["r"])
             ok = rq <= T
             claimed = res["claim"] in ("solved", "info 0")
             note = res["note"]
             if claimed and not ok:
-                note = (note + "; " if note else "") + "CLAIMED SUCCESS, CHECK REFUSES"
+                note = (note + "; " if note else "") + "CLAIMED SUCCESS, CHECK REFUSES" + (
+                    " (passes relative to max(|q|,|r|,|u|): |q| is the stricter unit here)"
+                    if rm <= T else "")
             print(f"| {code} | {s} | {res['claim']} | {fmt_e(rq)} | {fmt_e(rm)} | "
                   f"{fmt_e(res['unit_free']) if code == 'cpkit' else ''} | "
                   f"{'yes' if ok else 'NO'} | {res['iterations']} | {fmt_t(res['process'])} | "
