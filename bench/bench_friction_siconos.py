@@ -312,8 +312,8 @@ def profile_png(rows, prefix):
         ax.step(taus, frac, where="post", label=s,
                 linestyle="-" if s.startswith("cpkit") else "--")
     ax.set_xscale("log")
-    ax.set_xlabel("tau (whole-process time / best on the file)")
-    ax.set_ylabel(f"fraction of the {len(files)} files solved (|q|-relative natural map <= T)")
+    ax.set_xlabel("tau (whole-process time / best on the file; solved: |q|-relative natural map <= T)")
+    ax.set_ylabel(f"fraction of the {len(files)} files solved")
     ax.set_ylim(0, 1.02)
     ax.legend(fontsize=8, loc="lower right")
     ax.grid(True, which="both", alpha=0.3)
