@@ -343,6 +343,10 @@ def main():
         print(f"SKIPPED: no cpkit program at {a.cpkit} (build cpkit_cli or pass --cpkit)")
         return 77
     files = a.files or sorted(glob.glob(os.path.join(ROOT, "tests", "data", "fclib", "local", "*")))
+    missing = [f for f in files if not os.path.isfile(f)]
+    if missing:
+        print(f"bench_friction_siconos: no such file: {', '.join(missing)}", file=sys.stderr)
+        return 2
     files = [f for f in files if f.endswith((".dat", ".hdf5"))]
     T = a.tol
     self_check_projection()
