@@ -19,4 +19,5 @@ PYBIND11_MODULE(_cpkit, m) {
   cpkit::py::bind_system_rate(m);
   cpkit::py::bind_three_d(m);
   cpkit::py::bind_three_d_more(m);
+  cpkit::py::bind_friction(m);
 }
