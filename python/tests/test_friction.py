@@ -225,6 +225,37 @@ def test_any_sparse_format_and_dense_give_the_same_answer():
         np.testing.assert_array_equal(a, answers[0])
 
 
+def test_unsorted_and_duplicate_csc_entries_are_summed_and_the_callers_matrix_kept():
+    # W1 with each diagonal entry stored as two halves, row indices in reverse order: scipy's
+    # meaning is the sum; the answer must be the slip answer derived by hand above.
+    data = np.array([1.0, 1.0, 0.5, 0.5, 0.5, 0.5])
+    indices = np.array([0, 0, 1, 1, 2, 2])
+    W = scipy.sparse.csc_matrix((data, indices, np.array([0, 2, 4, 6])), shape=(3, 3))
+    order = np.array([1, 0, 3, 2, 5, 4])
+    W.data, W.indices = W.data[order], W.indices[order]
+    W.has_canonical_format = False
+    kept = (W.data.copy(), W.indices.copy())
+    q, r_hand, _ = HAND["slip"]
+    res = cpkit.solve_friction(W, q, MU1)
+    np.testing.assert_allclose(res.r, r_hand, atol=1e-8)
+    np.testing.assert_array_equal(W.data, kept[0])
+    np.testing.assert_array_equal(W.indices, kept[1])
+
+
+@pytest.mark.parametrize("scale", [1e-12, 1e-6, 1e6, 1e12])
+def test_verdict_and_answer_follow_any_scaling(scale):
+    # q -> a q scales r by a (u = W r + q is linear, the cones are cones); (W, q) -> b (W, q)
+    # leaves r unchanged. The verdict is unit-free: "solved" either way.
+    q, r_hand, u_hand = HAND["slip"]
+    a = cpkit.solve_friction(W1, scale * q, MU1)
+    assert a.status == "solved", a
+    np.testing.assert_allclose(a.r, scale * r_hand, rtol=0, atol=1e-8 * scale)
+    b = cpkit.solve_friction(scipy.sparse.csc_matrix(scale * W1), scale * q, MU1)
+    assert b.status == "solved", b
+    np.testing.assert_allclose(b.r, r_hand, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(b.u, scale * u_hand, rtol=0, atol=1e-8 * scale)
+
+
 def test_errors_of_a_wrong_r_match_this_files_natural_map():
     # r = 0 on the slip problem: u = q, natural map = -P_K(-u_hat), computed here.
     q = HAND["slip"][0]
