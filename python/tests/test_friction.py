@@ -204,6 +204,15 @@ def test_one_contact_matches_the_hand_answer(case, solver):
     assert res.iterations >= 0 and res.seconds >= 0
 
 
+def test_a_problem_without_solution_is_never_solved():
+    # W = 0 and q_N = -1: u_N = -1 whatever r is, so u_hat_N = -1 + mu |u_T| < 0 = never in K*.
+    for solver in ("auto", "nsgs", "fb-soc", "prox"):
+        res = cpkit.solve_friction(np.zeros((3, 3)), [-1.0, 0.0, 0.0], [0.5], solver=solver,
+                                   max_iterations=200, time_limit=10)
+        assert not res.is_solution, (solver, res)
+        assert res.errors.unit_free > 1e-3, (solver, res.errors)
+
+
 def test_stick_with_a_coupled_W_is_the_linear_solution():
     # A full SPD W: stick means u = 0, so r solves W r = -q; q chosen so that r = (1, 0.1, -0.2)
     # (|r_T| = 0.224 <= mu r_N = 0.6). numpy's solve is the second route.
