@@ -16,7 +16,9 @@ from .three_d_more import (FacetedStep3dSolutionSet, Fretting3dResult, Map3d, St
                            multistart_step_3d, param_direction_map_3d, param_param_map_3d,
                            simulate_fretting_3d, solve_step_3d, solve_step_3d_faceted,
                            sphere_map_3d)
-from .friction import FrictionProblem, FrictionResult, read_fclib, solve_friction
+from .friction import (FrictionErrors, FrictionProblem, FrictionResult, FrictionSolutionSet,
+                       friction_errors, friction_solutions, friction_solvers, read_fclib,
+                       solve_friction)
 from .lcp import cross_verify, enumerate, solve, solve_batch, solve_mcp, solvers
 from .results import (TYPE_BITS, BatchResult, CrossVerifyReport, DirectionMap, ParamDirectionMap,
                       ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,

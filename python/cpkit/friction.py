@@ -1,23 +1,33 @@
-"""3-D frictional contact problems (docs/friction_contact.md): u = W r + q, r_i in the Coulomb
-cone K_{mu_i}, u_hat_i = u_i + (mu_i |u_T,i|, 0, 0) in its dual, r_i . u_hat_i = 0; contact i owns
-entries 3i..3i+2, normal first."""
+"""3-D frictional contact problems (issue 26; docs/python.md, docs/friction_contact.md):
+u = W r + q, r_i in K_{mu_i}, u_hat_i = u_i + (mu_i |u_T,i|, 0, 0) in K*_{mu_i}, r_i . u_hat_i = 0,
+contact i owning rows 3i..3i+2, normal first (FCLIB's and Siconos' convention).
+
+W is a scipy.sparse matrix (any format; converted once to CSC, whose index and value arrays the
+extension reads directly) or a dense array. Bad input raises ValueError (TypeError for things
+that are not numbers), with the C++ validator's or reader's message."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import Any, Dict, List, Optional
 
 import numpy as np
 
 from . import _cpkit
+from .results import Attempt, Residuals, _short
 
-__all__ = ["FrictionProblem", "FrictionResult", "read_fclib", "solve_friction"]
+__all__ = ["FrictionProblem", "FrictionErrors", "FrictionResult", "FrictionSolutionSet",
+           "read_fclib", "solve_friction", "friction_solutions", "friction_errors",
+           "friction_solvers"]
+
+_INF = math.inf
 
 
-@dataclass
+@dataclass(repr=False)
 class FrictionProblem:
-    """W (scipy.sparse CSC, 3 n_c x 3 n_c), q (3 n_c), mu (n_c)."""
-    W: object
+    """A local problem as read from a file: W (scipy.sparse.csc_matrix, 3 n_c square), q (3 n_c),
+    mu (n_c), name (file stem or the file's own label), note (free text of the file)."""
+    W: Any
     q: np.ndarray
     mu: np.ndarray
     name: str = ""
@@ -27,44 +37,155 @@ class FrictionProblem:
     def contacts(self) -> int:
         return int(self.mu.size)
 
+    def __repr__(self):
+        return (f"FrictionProblem(name={self.name!r}, contacts={self.contacts}, "
+                f"W_nonzeros={self.W.nnz})")
+
 
 @dataclass
+class FrictionErrors:
+    """unit_free decides "solved" (<= tol; unchanged when q, or W and q together, are scaled);
+    relative_q (natural-map norm / |q|, Acary-Bremond-Huber) and relative_max (/ max(|q|, |r|, |u|),
+    Siconos' fc3d_compute_error) are the published normalisations, for comparison."""
+    unit_free: float
+    relative_q: float
+    relative_max: float
+
+
+@dataclass(repr=False)
 class FrictionResult:
+    """What solve_friction returns (the fields of `cpkit fc solve --json`): status ("solved",
+    "solved_inaccurate", or why not), r and u = W r + q (recomputed from the data), errors,
+    the solver's iterations and seconds, residuals (as SolveResult's), attempts of "auto"."""
     status: str
-    solved: bool
     solver: str
     r: np.ndarray
     u: np.ndarray
-    errors: dict = field(default_factory=dict)  # unit_free, relative_q, relative_max
+    errors: FrictionErrors
+    residuals: Residuals
     iterations: int = 0
     seconds: float = 0.0
+    attempts: List[Attempt] = field(default_factory=list)
     message: str = ""
+
+    @property
+    def is_solution(self) -> bool:
+        return self.status in ("solved", "solved_inaccurate")
+
+    def __repr__(self):
+        s = (f"FrictionResult(status={self.status!r}, solver={self.solver!r}, r={_short(self.r)}, "
+             f"unit_free={self.errors.unit_free:.3g}, iterations={self.iterations}")
+        if self.message:
+            s += f", message={self.message!r}"
+        return s + ")"
+
+    @classmethod
+    def _from(cls, d: Dict[str, Any]) -> "FrictionResult":
+        d = dict(d)
+        d["errors"] = FrictionErrors(**d["errors"])
+        d["residuals"] = Residuals(**d["residuals"])
+        d["attempts"] = [Attempt(**a) for a in d["attempts"]]
+        return cls(**d)
+
+
+@dataclass(repr=False)
+class FrictionSolutionSet:
+    """Distinct verified solutions (each a FrictionResult with status "solved") and whether the
+    list is proved `complete` (it is not, so far, on any route: message says what ran)."""
+    solutions: List[FrictionResult]
+    complete: bool
+    message: str = ""
+
+    def __len__(self):
+        return len(self.solutions)
+
+    def __repr__(self):
+        return (f"FrictionSolutionSet({len(self.solutions)} solutions, "
+                f"complete={self.complete})")
+
+
+def _vector(v, name: str) -> np.ndarray:
+    try:
+        a = np.asarray(v, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name} must be a vector of numbers ({e})") from None
+    if a.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array, got shape {a.shape}")
+    return np.ascontiguousarray(a)
+
+
+def _data(W, q, mu):
+    """(W as float64 CSC with sorted, summed indices, q, mu); sizes and values are checked by
+    the C++ validator (FrictionContactProblem::validate), which names what is wrong."""
+    import scipy.sparse
+    q = _vector(q, "q")
+    mu = _vector(mu, "mu")
+    if scipy.sparse.issparse(W):
+        W = scipy.sparse.csc_matrix(W, dtype=float)  # may share the caller's arrays
+    else:
+        try:
+            a = np.asarray(W, dtype=float)
+        except (TypeError, ValueError) as e:
+            raise TypeError(f"W must be a matrix of numbers (numpy array or scipy.sparse) "
+                            f"({e})") from None
+        if a.ndim != 2:
+            raise ValueError(f"W must be a 2-D array, got shape {a.shape}")
+        W = scipy.sparse.csc_matrix(a)
+    if W.shape[0] != W.shape[1]:
+        raise ValueError(f"W must be square (3 n_c x 3 n_c), got shape {W.shape}")
+    if W.shape[0] != q.size or q.size != 3 * mu.size:
+        raise ValueError(f"sizes disagree: W is {W.shape[0]} x {W.shape[1]}, q has {q.size} "
+                         f"entries, mu has {mu.size} (need 3 n_c, 3 n_c, n_c)")
+    if not W.has_canonical_format:  # Eigen's CSC map needs sorted row indices, no duplicates
+        W = W.copy()  # the caller's matrix is left as it was
+        W.sum_duplicates()
+    return W, q, mu
 
 
 def read_fclib(path) -> FrictionProblem:
-    """A local problem from an FCLIB file (HDF5) or a Siconos FrictionContact .dat file (chosen
-    by content). ValueError naming the file and what is wrong for a bad file."""
+    """A local problem from an FCLIB HDF5 file (/fclib_local) or a Siconos FrictionContact .dat
+    file (chosen by content). An unreadable or malformed file raises ValueError naming it."""
     d = _cpkit.read_fclib(str(path))
-    return FrictionProblem(W=d["W"], q=np.asarray(d["q"]), mu=np.asarray(d["mu"]),
-                           name=d["name"], note=d["note"])
+    return FrictionProblem(W=d["W"], q=d["q"], mu=d["mu"], name=d["name"], note=d["note"])
 
 
-def solve_friction(problem_or_W, q=None, mu=None, *, solver: str = "auto", tol: float = 1e-10,
-                   time_limit: Optional[float] = None) -> FrictionResult:
-    """Solves a FrictionProblem (or W, q, mu; W dense or scipy.sparse) with a registered
-    friction solver ("auto", "fb-soc", "nsgs", "prox", ...). `solved` only when cpkit's
-    unit-free verdict accepts r."""
-    if isinstance(problem_or_W, FrictionProblem):
-        W, q, mu = problem_or_W.W, problem_or_W.q, problem_or_W.mu
-    else:
-        W = problem_or_W
-    try:
-        import scipy.sparse
-        W = scipy.sparse.csc_matrix(W, dtype=float)
-    except ImportError:
-        raise ImportError("solve_friction needs scipy (python3-scipy) for the sparse W") from None
-    d = _cpkit.solve_friction(W, np.asarray(q, dtype=float), np.asarray(mu, dtype=float), solver,
-                              float(tol), math.inf if time_limit is None else float(time_limit))
-    return FrictionResult(status=d["status"], solved=d["solved"], solver=d["solver"],
-                          r=np.asarray(d["r"]), u=np.asarray(d["u"]), errors=d.get("errors", {}),
-                          iterations=d["iterations"], seconds=d["seconds"], message=d["message"])
+def _tol(tol) -> float:
+    return 1e-10 if tol is None else float(tol)
+
+
+def solve_friction(W, q, mu, solver: str = "auto", tol: Optional[float] = None, *,
+                   tol_acceptable: float = 1e-6, max_iterations: int = 0,
+                   time_limit: float = _INF) -> FrictionResult:
+    """One solution of the local problem (W, q, mu), judged from the data.
+
+    solver: "auto" or one of friction_solvers() (nsgs, fb-soc, prox, lemke on the faceted cone,
+    ipopt). tol (default 1e-10, at most 1e-3) bounds the unit-free error for "solved";
+    tol_acceptable for "solved_inaccurate". The GIL is released during the solve."""
+    W, q, mu = _data(W, q, mu)
+    return FrictionResult._from(_cpkit.solve_friction(
+        W, q, mu, str(solver), _tol(tol), float(tol_acceptable), int(max_iterations),
+        float(time_limit)))
+
+
+def friction_solutions(W, q, mu, starts: int = 20, seed: int = 1, *, tol: Optional[float] = None,
+                       time_limit: float = _INF) -> FrictionSolutionSet:
+    """Distinct verified solutions: every solution of the faceted problem checked on the true
+    cone (up to 5 contacts), then a seeded multistart of `starts` points (deterministic for a
+    seed). complete is False unless proved (lcp/friction/solutions.hpp)."""
+    W, q, mu = _data(W, q, mu)
+    if int(seed) < 0 or int(seed) > 2**32 - 1:
+        raise ValueError(f"seed must be in [0, 2^32 - 1], got {seed}")
+    d = _cpkit.friction_solutions(W, q, mu, int(starts), int(seed), _tol(tol), float(time_limit))
+    return FrictionSolutionSet([FrictionResult._from(s) for s in d["solutions"]], d["complete"],
+                               d["message"])
+
+
+def friction_errors(W, q, mu, r) -> FrictionErrors:
+    """The verdict's errors of a candidate r (3 n_c), whatever produced it."""
+    W, q, mu = _data(W, q, mu)
+    return FrictionErrors(**_cpkit.friction_errors(W, q, mu, _vector(r, "r")))
+
+
+def friction_solvers() -> List[str]:
+    """Names of the solvers that accept friction problems ("auto" included)."""
+    return list(_cpkit.friction_solvers())

@@ -1,85 +1,161 @@
-// 3-D frictional contact problems (issue 26): the FCLIB / Siconos readers and the registered
-// friction solvers. W crosses as an Eigen sparse matrix (scipy.sparse CSC on the Python side,
-// converted by pybind11/eigen.h).
-#include <pybind11/eigen.h>
-#include <pybind11/stl.h>
-
+// 3-D frictional contact bindings (issue 26): read_fclib, solve_friction, friction_solutions,
+// friction_errors. W arrives as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
+// (data, indices, indptr) of the scipy matrix the Python layer prepared, with no Python loop.
+// Invalid problems, unknown solvers and unreadable files raise ValueError (InputError) with the
+// C++ message; every solve runs without the GIL.
+#include <limits>
 #include <string>
 
 #include "bindings.hpp"
+#include "convert.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/registry.hpp"
-#include "cpkit/core/result.hpp"
+#include "cpkit/lcp/friction/solutions.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::py {
 namespace {
 
-namespace pyb = pybind11;
+using SparseMat = Eigen::SparseMatrix<double>;
+
+FrictionContactProblem make_problem(const SparseMat& W, const Vec& q, const Vec& mu) {
+  FrictionContactProblem p;
+  p.W = W;
+  p.q = q;
+  p.mu = mu;
+  throw_if_invalid(p.validate(), "friction problem");
+  return p;
+}
+
+CommonOptions fc_options(double tol, double tol_acceptable, int max_iterations,
+                         double time_limit) {
+  // The command line's bound (apps/fc_command.cpp): a larger tolerance would call almost any r
+  // solved.
+  if (!(tol > 0 && tol <= 1e-3))
+    throw InputError("tol must be in (0, 1e-3] (the unit-free residual), got " +
+                     std::to_string(tol));
+  CommonOptions o;
+  o.tol = tol;
+  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
+  o.max_iterations = max_iterations;
+  o.time_limit_s = time_limit;
+  throw_if_invalid(o.validate(), "options");
+  return o;
+}
+
+std::string fc_solver_list() {
+  std::string out;
+  for (const auto& n : lcp::solvers().names(ProblemKind::kFrictionContact))
+    out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+pyb::dict errors_dict(const FrictionErrors& e) {
+  pyb::dict d;
+  d["unit_free"] = e.unit_free;
+  d["relative_q"] = e.relative_q;
+  d["relative_max"] = e.relative_max;
+  return d;
+}
+
+/// A result as `cpkit fc solve --json` prints it (r, u, errors recomputed from the data), plus
+/// the residuals and attempts of SolveResult.
+pyb::dict fc_result_dict(const SolveResult& r, const FrictionContactProblem& p) {
+  pyb::dict full = to_dict(r);
+  pyb::dict d;
+  d["status"] = full["status"];
+  d["solver"] = r.solver;
+  d["r"] = full["z"];
+  d["u"] = full["w"];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const FrictionErrors e = r.z.size() == p.W.rows()
+                               ? friction_errors(p, r.z)
+                               : FrictionErrors{std::numeric_limits<double>::infinity(), nan, nan};
+  d["errors"] = errors_dict(e);
+  d["residuals"] = full["residuals"];
+  d["iterations"] = r.iterations;
+  d["seconds"] = r.seconds;
+  d["attempts"] = full["attempts"];
+  d["message"] = r.message;
+  return d;
+}
 
 pyb::dict read_fclib(const std::string& path) {
-  const FrictionContactProblem p = read_friction_problem(path);
+  FrictionContactProblem p;
+  {
+    pyb::gil_scoped_release release;
+    p = read_friction_problem(path);
+  }
   pyb::dict d;
-  d["W"] = p.W;
-  d["q"] = p.q;
-  d["mu"] = p.mu;
+  d["W"] = p.W;  // scipy.sparse.csc_matrix (pybind11's Eigen caster)
+  d["q"] = to_numpy(p.q);
+  d["mu"] = to_numpy(p.mu);
   d["name"] = p.name;
   d["note"] = p.note;
   return d;
 }
 
-pyb::dict solve_friction(const Eigen::SparseMatrix<double>& W, const Eigen::VectorXd& q,
-                         const Eigen::VectorXd& mu, const std::string& solver, double tol,
-                         double time_limit) {
-  FrictionContactProblem p;
-  p.W = W;
-  p.q = q;
-  p.mu = mu;
-  throw_if_invalid(p.validate(), "solve_friction");
-  const SolverEntry* entry = cpkit::lcp::solvers().find(solver);
-  if (entry == nullptr || !entry->accepts(ProblemKind::kFrictionContact)) {
-    std::string names;
-    for (const auto& n : cpkit::lcp::solvers().names(ProblemKind::kFrictionContact))
-      names += (names.empty() ? "" : ", ") + n;
-    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " + names + ")");
-  }
-  CommonOptions o;
-  o.tol = tol;
-  if (o.tol_acceptable < o.tol) o.tol_acceptable = o.tol;
-  o.time_limit_s = time_limit;
-  throw_if_invalid(o.validate(), "solve_friction");
+pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
+                         const std::string& solver, double tol, double tol_acceptable,
+                         int max_iterations, double time_limit) {
+  const FrictionContactProblem p = make_problem(W, q, mu);
+  const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
+  const SolverEntry* e = lcp::solvers().find(solver);
+  if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
+    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " +
+                     fc_solver_list() + ")");
   SolveResult r;
   {
     pyb::gil_scoped_release release;
-    r = entry->solve_fc(p, o);
+    r = e->solve_fc(p, o);
   }
-  if (r.solver.empty()) r.solver = entry->info.name;
+  if (r.solver.empty()) r.solver = e->info.name;
+  return fc_result_dict(r, p);
+}
+
+pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, int starts,
+                             unsigned seed, double tol, double time_limit) {
+  const FrictionContactProblem p = make_problem(W, q, mu);
+  lcp::friction::FrictionSolutionsOptions o;
+  o.common = fc_options(tol, CommonOptions{}.tol_acceptable, 0, time_limit);
+  if (starts < 1) throw InputError("starts must be at least 1, got " + std::to_string(starts));
+  o.starts = starts;
+  o.seed = seed;
+  throw_if_invalid(o.validate(), "friction_solutions options");
+  lcp::friction::FrictionSolutionSet s;
+  {
+    pyb::gil_scoped_release release;
+    s = lcp::friction::friction_solutions(p, o);
+  }
   pyb::dict d;
-  d["status"] = std::string(to_string(r.status));
-  d["solved"] = is_solution(r.status);
-  d["solver"] = r.solver;
-  d["r"] = r.z;
-  d["u"] = r.w;
-  if (r.z.size() == p.W.rows()) {
-    const FrictionErrors e = friction_errors(p, r.z);
-    d["errors"] = pyb::dict(pyb::arg("unit_free") = e.unit_free,
-                            pyb::arg("relative_q") = e.relative_q,
-                            pyb::arg("relative_max") = e.relative_max);
-  }
-  d["iterations"] = r.iterations;
-  d["seconds"] = r.seconds;
-  d["message"] = r.message;
+  pyb::list sols;
+  for (const auto& r : s.solutions) sols.append(fc_result_dict(r, p));
+  d["solutions"] = sols;
+  d["complete"] = s.complete;
+  d["message"] = s.message;
   return d;
+}
+
+pyb::dict errors_of(const SparseMat& W, const Vec& q, const Vec& mu, const Vec& r) {
+  const FrictionContactProblem p = make_problem(W, q, mu);
+  if (r.size() != p.W.rows())
+    throw InputError("r must have 3 n_c = " + std::to_string(p.W.rows()) + " entries, got " +
+                     std::to_string(r.size()));
+  return errors_dict(friction_errors(p, r));
 }
 
 }  // namespace
 
 void bind_friction(pyb::module_& m) {
-  m.def("read_fclib", &read_fclib, pyb::arg("path"));
-  m.def("solve_friction", &solve_friction, pyb::arg("W"), pyb::arg("q"), pyb::arg("mu"),
-        pyb::arg("solver"), pyb::arg("tol"), pyb::arg("time_limit"));
+  m.def("read_fclib", &read_fclib);
+  m.def("solve_friction", &solve_friction);
+  m.def("friction_solutions", &friction_solutions);
+  m.def("friction_errors", &errors_of);
+  m.def("friction_solvers",
+        []() { return lcp::solvers().names(ProblemKind::kFrictionContact); });
 }
 
 }  // namespace cpkit::py

@@ -13,5 +13,5 @@ void bind_system(pybind11::module_& m);
 void bind_system_rate(pybind11::module_& m);
 void bind_three_d(pybind11::module_& m);
 void bind_three_d_more(pybind11::module_& m);
-void bind_friction(pybind11::module_& m);  ///< FCLIB / Siconos friction problems (issue 26)
+void bind_friction(pybind11::module_& m);  // 3-D frictional contact (bind_friction.cpp)
 }  // namespace cpkit::py

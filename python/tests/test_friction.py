@@ -1,71 +1,386 @@
-"""Friction problems from FCLIB / Siconos files (cpkit.read_fclib, cpkit.solve_friction): the
-reader against Siconos' own (python3-siconos; skipped without it) and numbers read by eye; the
-solver's r re-checked here with numpy (cone, dual cone, complementarity on u = W r + q)."""
+"""3-D frictional contact from Python (issue 26): read_fclib against Siconos' own reader (.dat)
+and libfclib read here through ctypes (HDF5), solve_friction against hand-derived one-contact
+answers, and real files solved with r re-checked by this file's own numpy code."""
+import ctypes
+import ctypes.util
 import os
+import pickle
+import threading
+import time
 
 import numpy as np
 import pytest
+import scipy.sparse
 
 import cpkit
 from conftest import DATA_DIR
 
-FCLIB = os.path.join(DATA_DIR, "fclib", "local")
-DAT_FILES = sorted(f for f in os.listdir(FCLIB) if f.endswith(".dat"))
+LOCAL = os.path.join(DATA_DIR, "fclib", "local")
+FILES = sorted(os.listdir(LOCAL))
+DAT = [f for f in FILES if f.endswith(".dat")]
+HDF5 = [f for f in FILES if f.endswith(".hdf5")]
 
 
-def test_numbers_read_by_eye():
-    p = cpkit.read_fclib(os.path.join(FCLIB, "FrictionContact3D_1c.dat"))
-    np.testing.assert_array_equal(p.W.toarray(), [[15, -1, -2], [-1, 14, 1], [-2, 1, 16]])
-    np.testing.assert_array_equal(p.q, [-1, 2, 3])
-    np.testing.assert_array_equal(p.mu, [0.1])
-    assert p.contacts == 1 and p.name == "FrictionContact3D_1c"
+def test_the_data_directory_has_both_formats():
+    assert len(DAT) >= 10 and len(HDF5) >= 2, FILES  # nothing below is vacuous
 
 
-@pytest.mark.parametrize("name", DAT_FILES)
+# ---- reading: Siconos' reader (.dat) ---------------------------------------------------------
+
+def siconos_numerics():
+    try:
+        import siconos.numerics as sn
+    except Exception as e:  # noqa: BLE001 -- any failure means: no peer here
+        pytest.skip(f"python3-siconos (siconos.numerics) not importable: {e}")
+    return sn
+
+
+def siconos_dense(sn, M):
+    if M.storageType == 1:  # NM_SPARSE_BLOCK
+        return np.asarray(sn.SBM_to_dense(M.matrix1), dtype=float)
+    D = np.zeros((M.size0, M.size1))  # dense storage (small files here): entry by entry
+    for i in range(M.size0):
+        for j in range(M.size1):
+            D[i, j] = sn.NM_get_value(M, i, j)
+    return D
+
+
+@pytest.mark.parametrize("name", DAT)
 def test_dat_files_read_as_siconos_reads_them(name):
-    sn = pytest.importorskip("siconos.numerics", reason="python3-siconos is not installed")
-    path = os.path.join(FCLIB, name)
-    s = sn.frictionContact_new_from_filename(path)
-    M = s.M
-    W = np.array([[sn.NM_get_value(M, i, j) for j in range(M.size1)] for i in range(M.size0)])
+    sn = siconos_numerics()
+    path = os.path.join(LOCAL, name)
+    ref = sn.frictionContact_new_from_filename(path)
     p = cpkit.read_fclib(path)
-    assert p.contacts == s.numberOfContacts
+    assert ref.dimension == 3
+    assert isinstance(p.W, scipy.sparse.csc_matrix)
+    n = 3 * ref.numberOfContacts
+    assert p.W.shape == (n, n) and p.q.shape == (n,) and p.mu.shape == (ref.numberOfContacts,)
+    assert p.contacts == ref.numberOfContacts
+    # Both parse the same decimal text: the same doubles, bit for bit.
+    np.testing.assert_array_equal(p.W.toarray(), siconos_dense(sn, ref.M))
+    np.testing.assert_array_equal(p.q, np.asarray(ref.q, dtype=float))
+    np.testing.assert_array_equal(p.mu, np.asarray(ref.mu, dtype=float))
+    assert p.name
+
+
+# ---- reading: HDF5 through libfclib called here with ctypes ----------------------------------
+# Siconos 4.4 as packaged cannot read HDF5 ("fclib interface is not active") and h5py is not
+# installed: the second route is libfclib's fclib_read_local called from ctypes, with the
+# matrix decoded here (compressed rows, columns or triplets), not by cpkit's C++ conversion.
+
+class _FclibMatrix(ctypes.Structure):
+    _fields_ = [("nzmax", ctypes.c_int), ("m", ctypes.c_int), ("n", ctypes.c_int),
+                ("p", ctypes.POINTER(ctypes.c_int)), ("i", ctypes.POINTER(ctypes.c_int)),
+                ("x", ctypes.POINTER(ctypes.c_double)), ("nz", ctypes.c_int),
+                ("info", ctypes.c_void_p)]
+
+
+class _FclibLocal(ctypes.Structure):
+    _fields_ = [("W", ctypes.POINTER(_FclibMatrix)), ("V", ctypes.POINTER(_FclibMatrix)),
+                ("R", ctypes.POINTER(_FclibMatrix)), ("mu", ctypes.POINTER(ctypes.c_double)),
+                ("q", ctypes.POINTER(ctypes.c_double)), ("s", ctypes.POINTER(ctypes.c_double)),
+                ("spacedim", ctypes.c_int), ("info", ctypes.c_void_p)]
+
+
+def fclib_by_ctypes(path):
+    lib_name = ctypes.util.find_library("fclib")
+    if lib_name is None:
+        pytest.skip("libfclib (Debian libfclib0/libfclib-dev) not found by ctypes")
+    lib = ctypes.CDLL(lib_name)
+    lib.fclib_read_local.restype = ctypes.POINTER(_FclibLocal)
+    lib.fclib_read_local.argtypes = [ctypes.c_char_p]
+    lib.fclib_delete_local.argtypes = [ctypes.POINTER(_FclibLocal)]
+    ptr = lib.fclib_read_local(path.encode())
+    assert ptr, f"libfclib could not read {path}"
+    try:
+        loc = ptr.contents
+        assert loc.spacedim == 3
+        w = loc.W.contents
+        m, n, nz = w.m, w.n, w.nz
+        if nz == -1:  # compressed columns
+            indptr = np.ctypeslib.as_array(w.p, (n + 1,)).copy()
+            nnz = int(indptr[-1])
+            W = scipy.sparse.csc_matrix((np.ctypeslib.as_array(w.x, (nnz,)).copy(),
+                                         np.ctypeslib.as_array(w.i, (nnz,)).copy(), indptr),
+                                        shape=(m, n))
+        elif nz == -2:  # compressed rows
+            indptr = np.ctypeslib.as_array(w.p, (m + 1,)).copy()
+            nnz = int(indptr[-1])
+            W = scipy.sparse.csr_matrix((np.ctypeslib.as_array(w.x, (nnz,)).copy(),
+                                         np.ctypeslib.as_array(w.i, (nnz,)).copy(), indptr),
+                                        shape=(m, n))
+        else:  # triplets: p = rows, i = columns (duplicates add up)
+            W = scipy.sparse.coo_matrix((np.ctypeslib.as_array(w.x, (nz,)).copy(),
+                                         (np.ctypeslib.as_array(w.p, (nz,)).copy(),
+                                          np.ctypeslib.as_array(w.i, (nz,)).copy())),
+                                        shape=(m, n))
+        q = np.ctypeslib.as_array(loc.q, (m,)).copy()
+        mu = np.ctypeslib.as_array(loc.mu, (m // 3,)).copy()
+        has_vr = bool(loc.V) or bool(loc.R)
+    finally:
+        lib.fclib_delete_local(ptr)
+    return W.toarray(), q, mu, has_vr
+
+
+@pytest.mark.parametrize("name", HDF5)
+def test_hdf5_files_read_as_libfclib_reads_them(name):
+    path = os.path.join(LOCAL, name)
+    W, q, mu, has_vr = fclib_by_ctypes(path)
+    assert not has_vr
+    p = cpkit.read_fclib(path)
     np.testing.assert_array_equal(p.W.toarray(), W)
-    np.testing.assert_array_equal(p.q, np.asarray(s.q))
-    np.testing.assert_array_equal(p.mu, np.asarray(s.mu))
+    np.testing.assert_array_equal(p.q, q)
+    np.testing.assert_array_equal(p.mu, mu)
 
 
-def check_solution(W, q, mu, r, tol=1e-8):
+# ---- the test's own verdict ------------------------------------------------------------------
+
+def project_cone(x, mu):
+    """Euclidean projection of x = (x_N, x_T) onto K_mu = {|x_T| <= mu x_N}."""
+    xn, xt = x[0], x[1:]
+    t = np.linalg.norm(xt)
+    if t <= mu * xn:
+        return x.copy()
+    if mu * t <= -xn:
+        return np.zeros(3)
+    a = (xn + mu * t) / (1.0 + mu * mu)
+    return np.concatenate(([a], mu * a * xt / t))
+
+
+def natural_map(W, q, mu, r):
+    """Per contact r_i - P_K(r_i - u_hat_i), with u = W r + q and De Saxce's u_hat."""
     u = W @ r + q
-    rs, us = max(abs(r).max(), 1e-300), abs(u).max() + abs(q).max()
+    out = np.zeros_like(r)
     for i, m in enumerate(mu):
-        rn, rt = r[3 * i], np.hypot(*r[3 * i + 1:3 * i + 3])
-        ut = np.hypot(*u[3 * i + 1:3 * i + 3])
-        hn = u[3 * i] + m * ut  # De Saxce's u_hat
-        assert rt <= m * rn + tol * rs
-        assert m * ut <= hn + tol * us
-        assert abs(rn * hn + r[3 * i + 1:3 * i + 3] @ u[3 * i + 1:3 * i + 3]) <= tol * rs * us
+        ri, ui = r[3 * i:3 * i + 3], u[3 * i:3 * i + 3]
+        uhat = ui + np.array([m * np.linalg.norm(ui[1:]), 0.0, 0.0])
+        out[3 * i:3 * i + 3] = ri - project_cone(ri - uhat, m)
+    return out
 
 
-@pytest.mark.parametrize("name", ["FrictionContact3D_1c.dat", "Rover4396.dat",
+def assert_is_solution(W, q, mu, r, u, rel=1e-6):
+    """r solves the problem, judged here: u = W r + q, r_i in K, u_hat_i in K*, r_i . u_hat_i = 0
+    and the natural map, each relative to r's and u's own sizes."""
+    Wd = W.toarray() if scipy.sparse.issparse(W) else np.asarray(W)
+    u_here = Wd @ r + q
+    R = max(np.abs(r).max(), 1e-300)
+    S = np.abs(q).max() + np.abs(Wd).max() * R
+    np.testing.assert_allclose(u, u_here, rtol=0, atol=1e-12 * S)
+    for i, m in enumerate(mu):
+        ri, ui = r[3 * i:3 * i + 3], u_here[3 * i:3 * i + 3]
+        uhat = ui + np.array([m * np.linalg.norm(ui[1:]), 0.0, 0.0])
+        assert np.linalg.norm(ri[1:]) <= m * ri[0] + rel * R, (i, ri)       # r_i in K_mu
+        assert m * np.linalg.norm(uhat[1:]) <= uhat[0] + rel * S, (i, uhat)  # u_hat_i in K*_mu
+        assert abs(ri @ uhat) <= rel * R * S, (i, ri @ uhat)                # r_i . u_hat_i = 0
+    # natural map in unit-free variables (r / R, u / S)
+    assert np.abs(natural_map(Wd / S * R, q / S, mu, r / R)).max() <= rel
+
+
+# ---- one contact, answers derived by hand ----------------------------------------------------
+# W = diag(2, 1, 1) (no normal-tangential coupling), mu = 0.5. r_N follows from Signorini alone
+# (u_N = 2 r_N + q_N), then the tangential part is a projection: each answer is unique.
+W1 = np.diag([2.0, 1.0, 1.0])
+MU1 = np.array([0.5])
+HAND = {
+    # q_N > 0: separation, r = 0, u = q
+    "separation": (np.array([1.0, 0.3, -0.2]), np.zeros(3), np.array([1.0, 0.3, -0.2])),
+    # q_N = -2: r_N = 1; r_T = -q_T = (-0.1, 0) has |r_T| = 0.1 <= mu r_N = 0.5: stick, u = 0
+    "stick": (np.array([-2.0, 0.1, 0.0]), np.array([1.0, -0.1, 0.0]), np.zeros(3)),
+    # q_N = -2: r_N = 1; |q_T| = 5 > 0.5: slip, r_T = -0.5 q_T/5 = (-0.3, -0.4),
+    # u_T = q_T + r_T = (2.7, 3.6), u_N = 0
+    "slip": (np.array([-2.0, 3.0, 4.0]), np.array([1.0, -0.3, -0.4]), np.array([0.0, 2.7, 3.6])),
+}
+
+
+@pytest.mark.parametrize("case", sorted(HAND))
+@pytest.mark.parametrize("solver", ["auto", "nsgs", "fb-soc", "prox"])
+def test_one_contact_matches_the_hand_answer(case, solver):
+    q, r_hand, u_hand = HAND[case]
+    res = cpkit.solve_friction(W1, q, MU1, solver=solver)
+    assert res.status == "solved", res
+    np.testing.assert_allclose(res.r, r_hand, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(res.u, u_hand, rtol=0, atol=1e-8)
+    assert res.errors.unit_free <= 1e-10
+    assert res.iterations >= 0 and res.seconds >= 0
+
+
+def test_a_problem_without_solution_is_never_solved():
+    # W = 0 and q_N = -1: u_N = -1 whatever r is, so u_hat_N = -1 + mu |u_T| < 0 = never in K*.
+    for solver in ("auto", "nsgs", "fb-soc", "prox"):
+        res = cpkit.solve_friction(np.zeros((3, 3)), [-1.0, 0.0, 0.0], [0.5], solver=solver,
+                                   max_iterations=200, time_limit=10)
+        assert not res.is_solution, (solver, res)
+        assert res.errors.unit_free > 1e-3, (solver, res.errors)
+
+
+def test_stick_with_a_coupled_W_is_the_linear_solution():
+    # A full SPD W: stick means u = 0, so r solves W r = -q; q chosen so that r = (1, 0.1, -0.2)
+    # (|r_T| = 0.224 <= mu r_N = 0.6). numpy's solve is the second route.
+    W = np.array([[3.0, 0.5, -0.2], [0.5, 2.0, 0.3], [-0.2, 0.3, 1.5]])
+    r_true = np.array([1.0, 0.1, -0.2])
+    q = -W @ r_true
+    res = cpkit.solve_friction(scipy.sparse.coo_matrix(W), q, [0.6])
+    assert res.is_solution, res
+    np.testing.assert_allclose(res.r, np.linalg.solve(W, -q), rtol=0, atol=1e-8)
+    assert_is_solution(W, q, [0.6], res.r, res.u)
+
+
+def test_any_sparse_format_and_dense_give_the_same_answer():
+    q = HAND["slip"][0]
+    answers = [cpkit.solve_friction(M, q, MU1, solver="fb-soc").r
+               for M in (W1, scipy.sparse.csr_matrix(W1), scipy.sparse.coo_matrix(W1),
+                         scipy.sparse.lil_matrix(W1), scipy.sparse.csc_array(W1))]
+    for a in answers:
+        np.testing.assert_array_equal(a, answers[0])
+
+
+def test_unsorted_and_duplicate_csc_entries_are_summed_and_the_callers_matrix_kept():
+    # W1 with each diagonal entry stored as two halves, row indices in reverse order: scipy's
+    # meaning is the sum; the answer must be the slip answer derived by hand above.
+    data = np.array([1.0, 1.0, 0.5, 0.5, 0.5, 0.5])
+    indices = np.array([0, 0, 1, 1, 2, 2])
+    W = scipy.sparse.csc_matrix((data, indices, np.array([0, 2, 4, 6])), shape=(3, 3))
+    order = np.array([1, 0, 3, 2, 5, 4])
+    W.data, W.indices = W.data[order], W.indices[order]
+    W.has_canonical_format = False
+    kept = (W.data.copy(), W.indices.copy())
+    q, r_hand, _ = HAND["slip"]
+    res = cpkit.solve_friction(W, q, MU1)
+    np.testing.assert_allclose(res.r, r_hand, atol=1e-8)
+    np.testing.assert_array_equal(W.data, kept[0])
+    np.testing.assert_array_equal(W.indices, kept[1])
+
+
+@pytest.mark.parametrize("scale", [1e-12, 1e-6, 1e6, 1e12])
+def test_verdict_and_answer_follow_any_scaling(scale):
+    # q -> a q scales r by a (u = W r + q is linear, the cones are cones); (W, q) -> b (W, q)
+    # leaves r unchanged. The verdict is unit-free: "solved" either way.
+    q, r_hand, u_hand = HAND["slip"]
+    a = cpkit.solve_friction(W1, scale * q, MU1)
+    assert a.status == "solved", a
+    np.testing.assert_allclose(a.r, scale * r_hand, rtol=0, atol=1e-8 * scale)
+    b = cpkit.solve_friction(scipy.sparse.csc_matrix(scale * W1), scale * q, MU1)
+    assert b.status == "solved", b
+    np.testing.assert_allclose(b.r, r_hand, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(b.u, scale * u_hand, rtol=0, atol=1e-8 * scale)
+
+
+def test_errors_of_a_wrong_r_match_this_files_natural_map():
+    # r = 0 on the slip problem: u = q, natural map = -P_K(-u_hat), computed here.
+    q = HAND["slip"][0]
+    e = cpkit.friction_errors(W1, q, MU1, np.zeros(3))
+    E = np.linalg.norm(natural_map(W1, q, MU1, np.zeros(3)))
+    assert E > 0.1
+    np.testing.assert_allclose(e.relative_q, E / np.linalg.norm(q), rtol=1e-12)
+    np.testing.assert_allclose(e.relative_max, E / np.linalg.norm(q), rtol=1e-12)  # |u| = |q|
+    assert e.unit_free > 0.1
+
+
+def test_result_repr_and_pickle():
+    res = cpkit.solve_friction(W1, HAND["stick"][0], MU1)
+    back = pickle.loads(pickle.dumps(res))
+    np.testing.assert_array_equal(back.r, res.r)
+    assert back.errors == res.errors and back.status == "solved"
+    assert "status='solved'" in repr(res)
+    assert "nsgs" in cpkit.friction_solvers() and "auto" in cpkit.friction_solvers()
+
+
+# ---- real files, r re-checked here -----------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["FC3D_Example1.dat", "Confeti-ex03-Fc3D-SBM.dat",
                                   "fclib_local_problem_test.hdf5"])
-def test_solve_friction_gives_a_checked_solution(name):
-    p = cpkit.read_fclib(os.path.join(FCLIB, name))
-    res = cpkit.solve_friction(p)
-    assert res.solved and res.status == "solved", res
-    assert res.errors["unit_free"] <= 1e-10
-    check_solution(p.W, p.q, p.mu, res.r)
-    # W, q, mu given directly (a dense W is accepted too)
-    res2 = cpkit.solve_friction(p.W.toarray(), p.q, p.mu, solver="fb-soc")
-    if res2.solved:
-        check_solution(p.W, p.q, p.mu, res2.r)
+def test_real_files_solve_and_recheck(name):
+    p = cpkit.read_fclib(os.path.join(LOCAL, name))
+    res = cpkit.solve_friction(p.W, p.q, p.mu, tol=1e-8)
+    assert res.is_solution, res
+    assert_is_solution(p.W, p.q, p.mu, res.r, res.u)
+    # The published normalisation recomputed here: |natural map| / |q|.
+    E = np.linalg.norm(natural_map(p.W.toarray(), p.q, p.mu, res.r))
+    np.testing.assert_allclose(res.errors.relative_q, E / np.linalg.norm(p.q),
+                               rtol=1e-6, atol=1e-14)
 
 
-def test_bad_files_and_solvers_are_value_errors(tmp_path):
-    bad = tmp_path / "bad.dat"
-    bad.write_text("3 1 0 3 3 3 3 1 2 3")
-    with pytest.raises(ValueError, match="bad.dat"):
-        cpkit.read_fclib(bad)
-    p = cpkit.read_fclib(os.path.join(FCLIB, "Rover4396.dat"))
-    with pytest.raises(ValueError, match="nope"):
-        cpkit.solve_friction(p, solver="nope")
+def test_solutions_are_each_verified_here():
+    p = cpkit.read_fclib(os.path.join(LOCAL, "FC3D_Example1.dat"))
+    s = cpkit.friction_solutions(p.W, p.q, p.mu, starts=3, seed=1)
+    assert len(s) >= 1 and s.complete is False and s.message
+    for res in s.solutions:
+        assert res.status == "solved"
+        assert_is_solution(p.W, p.q, p.mu, res.r, res.u)
+    # distinct, as the documented rule says
+    for a in range(len(s)):
+        for b in range(a):
+            ra, rb = s.solutions[a].r, s.solutions[b].r
+            assert np.abs(ra - rb).max() > 1e-7 * max(np.abs(ra).max(), np.abs(rb).max())
+
+
+def test_the_one_contact_solution_set_has_the_hand_answer():
+    q, r_hand, _ = HAND["slip"]
+    s = cpkit.friction_solutions(W1, q, MU1, starts=2)
+    assert len(s) == 1  # unique (see HAND), so distinct solutions cannot be more than one
+    np.testing.assert_allclose(s.solutions[0].r, r_hand, atol=1e-8)
+
+
+def test_solves_release_the_gil():
+    # While a worker thread is inside one friction solve (NSGS on a 48-contact FCLIB file, about
+    # 0.3 s), the main thread keeps running Python: some of its time stamps fall strictly inside
+    # the call. With the GIL held there would be none (at most one at a switch).
+    p = cpkit.read_fclib(os.path.join(LOCAL, "fclib_local_problem_test.hdf5"))
+    span = {}
+
+    def work():
+        span["enter"] = time.perf_counter()
+        span["result"] = cpkit.solve_friction(p.W, p.q, p.mu, solver="nsgs")
+        span["exit"] = time.perf_counter()
+
+    t = threading.Thread(target=work)
+    stamps = []
+    t.start()
+    while t.is_alive():
+        stamps.append(time.perf_counter())
+        time.sleep(0.001)
+    t.join()
+    inside = [s for s in stamps if span["enter"] < s < span["exit"]]
+    assert len(inside) >= 5, (len(inside), span)
+    assert span["result"].r.shape == (3 * p.contacts,)
+
+
+# ---- bad input -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("W, q, mu, solver, words", [
+    (np.eye(3), [1.0, 0.0, 0.0], [-0.5], "auto", "mu"),
+    (np.eye(3), [np.nan, 0.0, 0.0], [0.5], "auto", ""),
+    (np.array([[np.nan, 0, 0], [0, 1, 0], [0, 0, 1]]), [1.0, 0.0, 0.0], [0.5], "auto", ""),
+    (np.eye(3), [1.0, 0.0], [0.5], "auto", "sizes"),
+    (np.eye(6), [1.0] * 6, [0.5], "auto", "sizes"),
+    (np.ones((3, 4)), [1.0, 0.0, 0.0], [0.5], "auto", "square"),
+    (np.eye(3), [1.0, 0.0, 0.0], [0.5], "no-such-solver", "no-such-solver"),
+    (np.eye(3), [1.0, 0.0, 0.0], [0.5], "fb-newton", "valid"),  # an LCP/MCP solver only
+])
+def test_bad_problems_raise_value_error(W, q, mu, solver, words):
+    with pytest.raises(ValueError, match=words):
+        cpkit.solve_friction(W, q, mu, solver=solver)
+
+
+def test_bad_options_raise_value_error():
+    with pytest.raises(ValueError, match="tol"):
+        cpkit.solve_friction(W1, HAND["stick"][0], MU1, tol=0.5)
+    with pytest.raises(ValueError, match="starts"):
+        cpkit.friction_solutions(W1, HAND["stick"][0], MU1, starts=0)
+    with pytest.raises(TypeError):
+        cpkit.solve_friction(W1, ["a", "b", "c"], MU1)
+
+
+def test_bad_files_raise_value_error_naming_the_file(tmp_path):
+    missing = tmp_path / "missing.dat"
+    with pytest.raises(ValueError, match="missing.dat"):
+        cpkit.read_fclib(missing)
+    junk = tmp_path / "junk.hdf5"
+    junk.write_text("3\n1\nnot a number\n")
+    with pytest.raises(ValueError, match="junk.hdf5"):
+        cpkit.read_fclib(junk)
+    truncated = tmp_path / "truncated.dat"
+    with open(os.path.join(LOCAL, "FC3D_Example1.dat")) as f:
+        truncated.write_text(f.read()[:200])
+    with pytest.raises(ValueError, match="truncated.dat"):
+        cpkit.read_fclib(truncated)
