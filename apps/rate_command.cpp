@@ -220,9 +220,15 @@ int run_rate(const RateArgs& a) {
     if (!s.complete) {
       problem = "the enumeration is not conclusive: " + s.message;
       inconclusive = true;
+    } else if (!analytic.complete) {
+      problem = "the analytic route cannot decide a sign: " + analytic.message;
+      inconclusive = true;
     } else if (!rate::same_solution_sets(s, analytic, 1e-7, &why)) {
       problem = "enumeration and analytic routes disagree: " + why;
     }
+  } else if (*method == rate::RateMethod::kAnalytic && !s.complete) {
+    problem = "the analytic route cannot decide a sign: " + s.message;
+    inconclusive = true;
   } else if (single) {
     ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
     // the solver's point is accurate to its residual (solved_inaccurate allows up to 1e-6)

@@ -192,3 +192,19 @@ TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 it
   CHECK(j["complete"] == false);
   CHECK_FALSE(j.contains("count"));
 }
+
+TEST_CASE("cpkit rate: an analytic sign inside its rounding band exits 5 (issue 24)",
+          "[cli][rate]") {
+  // cond(A) ~ 1e12, state d, dF_T = mu dF_N (1 + 8.6e-10): the analytic route's signs are
+  // formed with rounding bounds (rate_problem/src/one_point/rounded.hpp); one falls inside its
+  // band, so neither the analytic route alone nor the cross-check may give a definite answer.
+  const std::string args = "--state d --a11 0.2688879234934807 --a12 -0.7829714099955822 "
+                           "--a22 2.279924749596601 --mu 2.6918374157340192 "
+                           "--dF 2.6918374180398685 1 --P_N 1";
+  for (const std::string method : {"", " --method analytic"}) {
+    const Run r = run_rate(args + method + " --json");
+    CAPTURE(method, r.err);
+    CHECK(r.code == 5);
+    CHECK(nlohmann::json::parse(r.out)["complete"] == false);
+  }
+}
