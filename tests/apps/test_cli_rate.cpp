@@ -193,18 +193,30 @@ TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 it
   CHECK_FALSE(j.contains("count"));
 }
 
-TEST_CASE("cpkit rate: an analytic sign inside its rounding band exits 5 (issue 24)",
+TEST_CASE("cpkit rate: near a critical load at cond 1e12, exact or inconclusive (issue 24)",
           "[cli][rate]") {
-  // cond(A) ~ 1e12, state d, dF_T = mu dF_N (1 + 8.6e-10): the analytic route's signs are
-  // formed with rounding bounds (rate_problem/src/one_point/rounded.hpp); one falls inside its
-  // band, so neither the analytic route alone nor the cross-check may give a definite answer.
+  // cond(A) ~ 1e12, state d (sliding, C_T = 0), dF_T = mu dF_N (1 + 8.6e-10). By hand: stick
+  // (dw = 0, dP = dF) needs dP_T <= mu dP_N, violated by 2.3e-9 (no A^-1 involved, far above
+  // rounding); slip+ has dw = (x, 0), dP = dF - A dw, dP_T = mu dP_N, so
+  // x = (dF_T - mu dF_N) / (a11 - mu a12) > 0: one slip+. The analytic route must give exactly
+  // that; the enumeration may not call its sign test (then exit 5, never 3 or a wrong answer).
+  const long double a11 = 0.2688879234934807L, a12 = -0.7829714099955822L,
+                    mu = 2.6918374157340192L, dFT = 2.6918374180398685L, dFN = 1;
+  const long double x = (dFT - mu * dFN) / (a11 - mu * a12);
   const std::string args = "--state d --a11 0.2688879234934807 --a12 -0.7829714099955822 "
                            "--a22 2.279924749596601 --mu 2.6918374157340192 "
-                           "--dF 2.6918374180398685 1 --P_N 1";
-  for (const std::string method : {"", " --method analytic"}) {
-    const Run r = run_rate(args + method + " --json");
-    CAPTURE(method, r.err);
-    CHECK(r.code == 5);
-    CHECK(nlohmann::json::parse(r.out)["complete"] == false);
-  }
+                           "--dF 2.6918374180398685 1 --P_N 1 --json";
+  const Run an = run_rate(args + " --method analytic");
+  REQUIRE(an.code == 0);
+  const auto j = nlohmann::json::parse(an.out);
+  CHECK(j["complete"] == true);
+  CHECK(j["types"] == nlohmann::json({"slip+"}));
+  CHECK(j["solutions"][0]["rates"]["dw_T"].get<double>() ==
+        Approx(static_cast<double>(x)).epsilon(1e-6));
+  const Run en = run_rate(args);
+  CAPTURE(en.err);
+  CHECK((en.code == 0 || en.code == 5));
+  const auto k = nlohmann::json::parse(en.out);
+  if (en.code == 5) CHECK(k["complete"] == false);
+  else CHECK(k["types"] == nlohmann::json({"slip+"}));
 }
