@@ -279,13 +279,25 @@ TEST_CASE("files in neither format, and broken FCLIB files, are input errors", "
     }
     return path.string();
   };
-  auto set_int = [](hid_t f, const char* path, int v) {
+  // H5S_ALL writes the whole dataset: the buffer must hold as many elements as it has (libfclib
+  // stores a scalar as a dataset of a few elements; one int on the stack overflowed under ASan).
+  auto elements = [](hid_t d) {
+    const hid_t space = H5Dget_space(d);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    H5Sclose(space);
+    return n;
+  };
+  auto set_int = [&](hid_t f, const char* path, int v) {
     const hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
-    REQUIRE(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &v) >= 0);
+    const hssize_t n = elements(d);
+    REQUIRE(n >= 1);
+    const std::vector<int> all(static_cast<std::size_t>(n), v);
+    REQUIRE(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, all.data()) >= 0);
     H5Dclose(d);
   };
-  auto set_doubles = [](hid_t f, const char* path, std::vector<double> v) {
+  auto set_doubles = [&](hid_t f, const char* path, std::vector<double> v) {
     const hid_t d = H5Dopen2(f, path, H5P_DEFAULT);
+    REQUIRE(elements(d) == static_cast<hssize_t>(v.size()));
     REQUIRE(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
     H5Dclose(d);
   };
