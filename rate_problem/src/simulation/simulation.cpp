@@ -96,6 +96,163 @@ std::string describe(const SimulationSample& s) {
   return o.str();
 }
 
+/// Checks the first load point; returns the index of the first point to march to (1 when point
+/// 0 is the unloaded start at t <= 0, whose t then becomes the start time of `cur`).
+std::size_t start_of_run(const LoadPoint& front, SimulationSample& cur, double& t_prev) {
+  if (!std::isfinite(front.t) || !std::isfinite(front.F_T) || !std::isfinite(front.F_N))
+    throw InputError("load history: load point 0 (t = " + std::to_string(front.t) +
+                     ") has a non-finite value");
+  if (front.t > 0) return 0;
+  // A leading unloaded point at t <= 0 is the start of the run; any other load needs t > 0.
+  if (front.F_T != 0 || front.F_N != 0)
+    throw InputError("load history: the run starts unloaded at t = 0, so the first point "
+                     "needs t > 0 unless it is the unloaded start (F = 0); got t = " +
+                     std::to_string(front.t));
+  t_prev = front.t;
+  cur.t = front.t;
+  return 1;
+}
+
+/// Points of a generated history are checked as they are reached.
+void check_load_point(const LoadPoint& lp, std::size_t k, double t_last) {
+  if (!std::isfinite(lp.t) || !std::isfinite(lp.F_T) || !std::isfinite(lp.F_N))
+    throw InputError("load history: load point " + std::to_string(k) + " (t = " +
+                     std::to_string(lp.t) + ") has a non-finite value");
+  if (!(lp.t > t_last))
+    throw InputError("load history: load point " + std::to_string(k) + ": t = " +
+                     std::to_string(lp.t) + " does not increase (previous " +
+                     std::to_string(t_last) + ")");
+}
+
+/// The outcome and message of a step with no solution to march on (pts.n == 0).
+std::string no_solution_stop(const StepPoints& pts, const StepProblem& sp, const LoadPoint& lp,
+                             const SimulationSample& cur, SimulationResult::Outcome& outcome) {
+  std::ostringstream m;
+  m << "stopped before t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N << ")): ";
+  if (pts.infinite) {
+    outcome = SimulationResult::Outcome::kContinuum;
+    m << "the step's solutions form a continuum (degenerate data); no rule can choose. ";
+  } else {
+    outcome = SimulationResult::Outcome::kNoSolution;
+    if (pts.undecided > 0)
+      m << "no step solution was verified, and " << pts.undecided
+        << " candidate(s) could be neither verified nor rejected (ill-conditioned data: "
+           "inconclusive). ";
+    else
+      m << "the step has no solution (complete active-set enumeration: no separation, "
+           "stick or slip solution satisfies the step NCP). ";
+    if (sp.params.criterion == Criterion::kSoftening && sp.params.k() > 0)
+      m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << sp.params.mu / sp.params.k()
+        << " (condition (46)). ";
+  }
+  m << "Last state: " << describe(cur);
+  return m.str();
+}
+
+/// The branch rule 'closest': the solution with the smallest |DP_T| + |DP_N| + (detA/D0)|Dw_Ti|.
+int closest_solution(const StepPoints& pts, double xi_weight) {
+  int best = 0;
+  double bd = INFINITY;
+  for (int i = 0; i < pts.n; ++i) {
+    const StepValues& v = pts.points[i].values;
+    const double d = std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight * std::abs(v.Dw_Ti);
+    if (d < bd) {
+      bd = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// The state after a step to `lp` along `chosen`, placed exactly on its active constraints, with
+/// the step's dissipation and the energy totals (no check of finiteness here); dW is the work
+/// of the external load over the step (trapezoidal rule).
+SimulationSample advance(const SimulationSample& cur, const LoadPoint& lp, const StepPoint& chosen,
+                         int count, const ContactParameters& a, double kc, double& dW) {
+  const StepValues& v = chosen.values;
+  SimulationSample nx = cur;
+  nx.t = lp.t;
+  nx.F_T = lp.F_T;
+  nx.F_N = lp.F_N;
+  nx.type = chosen.type;
+  nx.count = count;
+  nx.w_T = cur.w_T + v.Dw_T;
+  nx.w_N = cur.w_N + v.Dw_N;
+  nx.w_w = cur.w_w + v.Dw_w;
+  nx.w_Ti = cur.w_Ti + v.Dw_Ti;
+  nx.P_N = v.P_N1;
+  nx.P_T = v.P_T1;
+  nx.g = v.g1;
+  if (nx.P_N <= 0 || chosen.type == SolutionType::kSeparation ||
+      chosen.type == SolutionType::kOpen) {
+    nx.P_N = 0;
+    nx.P_T = 0;
+    nx.g = std::min(v.g1, 0.0);
+  } else {
+    nx.g = 0;
+    const double Y = a.mu * nx.P_N - kc * nx.P_N * nx.P_N;
+    if (chosen.type == SolutionType::kSlipPlus) nx.P_T = Y;
+    if (chosen.type == SolutionType::kSlipMinus) nx.P_T = -Y;
+    nx.P_T = std::clamp(nx.P_T, -Y, Y);
+  }
+  nx.state = step_state_label(a, nx.P_T, nx.P_N, nx.g);
+  // Thermodynamics.
+  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+  nx.dissipation = D;
+  dW = 0.5 * (cur.F_T + lp.F_T) * v.Dw_T + 0.5 * (cur.F_N + lp.F_N) * v.Dw_N;
+  nx.work_total = cur.work_total + dW;
+  nx.dissipation_total = cur.dissipation_total + D;
+  nx.stored = 0.5 * (a.a11 * nx.w_T * nx.w_T + 2 * a.a12 * nx.w_T * nx.w_N +
+                     a.a22 * nx.w_N * nx.w_N) +
+              0.5 * a.C_T * nx.P_T * nx.P_T;
+  return nx;
+}
+
+/// The step's dissipation relative to its own scale (negative only through rounding or a
+/// non-dissipative law; the run reports the most negative).
+double relative_dissipation(const StepValues& v, double mu) {
+  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+  const double D_scale =
+      (std::abs(v.P_T1) + mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
+  return D / std::max(D_scale, 1e-300);
+}
+
+/// Slip and wear of a step of a cyclic history, added to the cycle its midpoint falls in.
+void add_to_cycle(SimulationResult& res, const LoadSource& history, double t_prev, double t,
+                  const StepValues& v) {
+  if (!(history.period > 0) || !(t > history.cycle_start)) return;
+  const double tc = 0.5 * (t_prev + t) - history.cycle_start;
+  if (tc < 0) return;
+  const std::size_t c = static_cast<std::size_t>(std::floor(tc / history.period));
+  if (c >= res.slip_per_cycle.size()) {
+    res.slip_per_cycle.resize(c + 1, 0.0);
+    res.wear_per_cycle.resize(c + 1, 0.0);
+  }
+  res.slip_per_cycle[c] += std::abs(v.Dw_Ti);  // <= total_slip: finite
+  res.wear_per_cycle[c] += v.Dw_w;              // <= w_w - w_w(0): finite
+}
+
+/// The totals of the result from the last state and the running sums.
+void finish(SimulationResult& res, const SimulationSample& cur, const Sums& sums, double min_D) {
+  res.work_abs = sums.work_abs;
+  res.wear_integral = sums.wear_integral;
+  res.total_slip = sums.total_slip;
+  res.thermal_dissipation = sums.thermal;
+  res.final_state = cur;
+  res.wear_depth = cur.w_w;
+  res.external_work = cur.work_total;
+  res.stored_energy = cur.stored;
+  res.dissipation = cur.dissipation_total;
+  res.min_step_dissipation = min_D;
+  res.energy_error = std::abs(res.external_work - res.stored_energy - res.dissipation) /
+                     std::max(res.work_abs, 1e-300);
+  if (res.outcome == SimulationResult::Outcome::kCompleted) {
+    std::ostringstream m;
+    m << "completed " << res.steps << " steps; final " << describe(cur);
+    res.message = m.str();
+  }
+}
+
 }  // namespace
 
 SimulationResult simulate(const LoadHistory& history, const SimulationOptions& opt) {
@@ -111,8 +268,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
   if (!std::isfinite(history.cycle_start))
     throw InputError("load history: cycle_start must be finite");
   const ContactParameters& a = opt.params;
-  const double detA = a.detA(), D0 = a.D0();
-  const double xi_weight = detA / D0;
+  const double xi_weight = a.detA() / a.D0();
   SimulationResult res;
   StepProblem sp;
   sp.params = a;
@@ -134,43 +290,17 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     else res.series.push_back(smp);
   };
   if (opt.record_every > 0 && !streaming) res.series.reserve(n / opt.record_every + 2);
-  // The start sample waits for the first point (a leading unloaded point sets its t).
-  bool start_pending = opt.record_every > 0;
-  const bool cycles = history.period > 0;
   double t_prev = 0;
-  std::size_t first = 0;
-  const LoadPoint front = history.at(0);
-  if (!std::isfinite(front.t) || !std::isfinite(front.F_T) || !std::isfinite(front.F_N))
-    throw InputError("load history: load point 0 (t = " + std::to_string(front.t) +
-                     ") has a non-finite value");
-  if (!(front.t > 0)) {
-    // A leading unloaded point at t <= 0 is the start of the run; any other load needs t > 0.
-    const LoadPoint& p0 = front;
-    if (p0.F_T != 0 || p0.F_N != 0)
-      throw InputError("load history: the run starts unloaded at t = 0, so the first point "
-                       "needs t > 0 unless it is the unloaded start (F = 0); got t = " +
-                       std::to_string(p0.t));
-    t_prev = p0.t;
-    cur.t = p0.t;
-    first = 1;
-  }
-  if (start_pending) record(cur);
+  // The start sample waits for the first point (a leading unloaded point sets its t).
+  const std::size_t first = start_of_run(history.at(0), cur, t_prev);
+  if (opt.record_every > 0) record(cur);
   double t_last = cur.t;
   double min_D = 0;
   Sums sums;
   StepPoints pts;
   for (std::size_t k = first; k < n; ++k) {
     const LoadPoint lp = history.at(k);
-    if (k > 0) {
-      // Points of a generated history are checked as they are reached.
-      if (!std::isfinite(lp.t) || !std::isfinite(lp.F_T) || !std::isfinite(lp.F_N))
-        throw InputError("load history: load point " + std::to_string(k) + " (t = " +
-                         std::to_string(lp.t) + ") has a non-finite value");
-      if (!(lp.t > t_last))
-        throw InputError("load history: load point " + std::to_string(k) + ": t = " +
-                         std::to_string(lp.t) + " does not increase (previous " +
-                         std::to_string(t_last) + ")");
-    }
+    if (k > 0) check_load_point(lp, k, t_last);
     t_last = lp.t;
     sp.state.P_T0 = cur.P_T;
     sp.state.P_N0 = cur.P_N;
@@ -188,40 +318,12 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       throw InputError(m.str());
     }
     if (pts.n == 0) {
-      std::ostringstream m;
-      m << "stopped before t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N
-        << ")): ";
-      if (pts.infinite) {
-        res.outcome = SimulationResult::Outcome::kContinuum;
-        m << "the step's solutions form a continuum (degenerate data); no rule can choose. ";
-      } else {
-        res.outcome = SimulationResult::Outcome::kNoSolution;
-        if (pts.undecided > 0)
-          m << "no step solution was verified, and " << pts.undecided
-            << " candidate(s) could be neither verified nor rejected (ill-conditioned data: "
-               "inconclusive). ";
-        else
-          m << "the step has no solution (complete active-set enumeration: no separation, "
-               "stick or slip solution satisfies the step NCP). ";
-        if (a.criterion == Criterion::kSoftening && sp.params.k() > 0)
-          m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << a.mu / sp.params.k()
-            << " (condition (46)). ";
-      }
-      m << "Last state: " << describe(cur);
-      res.message = m.str();
+      res.message = no_solution_stop(pts, sp, lp, cur, res.outcome);
       break;
     }
     int best = 0;
     if (pts.n > 1) {
-      double bd = INFINITY;
-      for (int i = 0; i < pts.n; ++i) {
-        const StepValues& v = pts.points[i].values;
-        const double d = std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight * std::abs(v.Dw_Ti);
-        if (d < bd) {
-          bd = d;
-          best = i;
-        }
-      }
+      best = closest_solution(pts, xi_weight);
       ++res.branch_steps;
       if (static_cast<int>(res.branch_points.size()) < opt.max_branch_records) {
         BranchPoint bp;
@@ -244,46 +346,10 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     const StepPoint& chosen = pts.points[best];
     const StepValues& v = chosen.values;
     res.max_residual = std::max(res.max_residual, ncp.residual(step_unknowns(v)));
-    SimulationSample nx = cur;
+    double dW = 0;
+    SimulationSample nx = advance(cur, lp, chosen, pts.n, a, kc, dW);
     nx.step = res.steps + 1;
-    nx.t = lp.t;
-    nx.F_T = lp.F_T;
-    nx.F_N = lp.F_N;
-    nx.type = chosen.type;
-    nx.count = pts.n;
-    nx.w_T = cur.w_T + v.Dw_T;
-    nx.w_N = cur.w_N + v.Dw_N;
-    nx.w_w = cur.w_w + v.Dw_w;
-    nx.w_Ti = cur.w_Ti + v.Dw_Ti;
-    // Put the state exactly on its active constraints.
-    nx.P_N = v.P_N1;
-    nx.P_T = v.P_T1;
-    nx.g = v.g1;
-    if (nx.P_N <= 0 || chosen.type == SolutionType::kSeparation ||
-        chosen.type == SolutionType::kOpen) {
-      nx.P_N = 0;
-      nx.P_T = 0;
-      nx.g = std::min(v.g1, 0.0);
-    } else {
-      nx.g = 0;
-      const double Y = a.mu * nx.P_N - kc * nx.P_N * nx.P_N;
-      if (chosen.type == SolutionType::kSlipPlus) nx.P_T = Y;
-      if (chosen.type == SolutionType::kSlipMinus) nx.P_T = -Y;
-      nx.P_T = std::clamp(nx.P_T, -Y, Y);
-    }
-    nx.state = step_state_label(a, nx.P_T, nx.P_N, nx.g);
-    // Thermodynamics.
-    const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
-    const double D_scale = (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) +
-                           std::abs(v.P_N1 * v.Dw_w);
-    if (D < 0) min_D = std::min(min_D, D / std::max(D_scale, 1e-300));
-    nx.dissipation = D;
-    const double dW = 0.5 * (cur.F_T + lp.F_T) * v.Dw_T + 0.5 * (cur.F_N + lp.F_N) * v.Dw_N;
-    nx.work_total = cur.work_total + dW;
-    nx.dissipation_total = cur.dissipation_total + D;
-    nx.stored = 0.5 * (a.a11 * nx.w_T * nx.w_T + 2 * a.a12 * nx.w_T * nx.w_N +
-                       a.a22 * nx.w_N * nx.w_N) +
-                0.5 * a.C_T * nx.P_T * nx.P_T;
+    if (nx.dissipation < 0) min_D = std::min(min_D, relative_dissipation(v, a.mu));
     // The running sums after this step (committed below once everything is finite).
     Sums next = sums;
     next.work_abs += std::abs(dW);
@@ -293,7 +359,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     if (opt.heat.enabled) {
       const double dt = lp.t - t_prev;
       next.thermal += thermal_dissipation(opt.heat, T, dt);
-      T_next = heat_step(opt.heat, T, std::max(D, 0.0), dt);
+      T_next = heat_step(opt.heat, T, std::max(nx.dissipation, 0.0), dt);
     }
     nx.temperature = T_next;
     if (const char* bad = first_non_finite(nx, next)) {
@@ -311,41 +377,14 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     sums = next;
     T = T_next;
     res.max_temperature = std::max(res.max_temperature, T);
-    if (cycles && lp.t > history.cycle_start) {
-      const double tc = 0.5 * (t_prev + lp.t) - history.cycle_start;
-      if (tc >= 0) {
-        const std::size_t c = static_cast<std::size_t>(std::floor(tc / history.period));
-        if (c >= res.slip_per_cycle.size()) {
-          res.slip_per_cycle.resize(c + 1, 0.0);
-          res.wear_per_cycle.resize(c + 1, 0.0);
-        }
-        res.slip_per_cycle[c] += std::abs(v.Dw_Ti);  // <= total_slip: finite
-        res.wear_per_cycle[c] += v.Dw_w;              // <= w_w - w_w(0): finite
-      }
-    }
+    add_to_cycle(res, history, t_prev, lp.t, v);
     t_prev = lp.t;
     cur = nx;
     ++res.steps;
     if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == n))
       record(cur);
   }
-  res.work_abs = sums.work_abs;
-  res.wear_integral = sums.wear_integral;
-  res.total_slip = sums.total_slip;
-  res.thermal_dissipation = sums.thermal;
-  res.final_state = cur;
-  res.wear_depth = cur.w_w;
-  res.external_work = cur.work_total;
-  res.stored_energy = cur.stored;
-  res.dissipation = cur.dissipation_total;
-  res.min_step_dissipation = min_D;
-  res.energy_error = std::abs(res.external_work - res.stored_energy - res.dissipation) /
-                     std::max(res.work_abs, 1e-300);
-  if (res.outcome == SimulationResult::Outcome::kCompleted) {
-    std::ostringstream m;
-    m << "completed " << res.steps << " steps; final " << describe(cur);
-    res.message = m.str();
-  }
+  finish(res, cur, sums, min_D);
   return res;
 }
 

@@ -55,6 +55,181 @@ std::string describe(const SystemSimulationSample& s) {
   return o.str();
 }
 
+/// Per point: Archard k, the weight of the slip in the branch distance, C_T.
+struct PointConstants {
+  Eigen::VectorXd k, xi_weight, C_T;
+};
+
+PointConstants point_constants(const SystemStepProblem& sp, int N) {
+  PointConstants c{Eigen::VectorXd(N), Eigen::VectorXd(N), Eigen::VectorXd(N)};
+  for (int i = 0; i < N; ++i) {
+    const StepProblem one = point_step_problem(sp, i);
+    c.k[i] = one.params.k();
+    c.xi_weight[i] = one.params.detA() / one.params.D0();
+    c.C_T[i] = one.params.C_T;
+  }
+  return c;
+}
+
+/// The state the run starts from: the points' P and g of the system file, w = 0, F = 0.
+SystemSimulationSample initial_sample(const ContactSystem& system, const SystemStepProblem& sp,
+                                      const SystemSimulationOptions& opt) {
+  const int N = system.n_points();
+  SystemSimulationSample cur;
+  cur.F = Eigen::VectorXd::Zero(2 * N);
+  cur.w = Eigen::VectorXd::Zero(2 * N);
+  cur.P_T.resize(N);
+  cur.P_N.resize(N);
+  cur.g.resize(N);
+  for (int i = 0; i < N; ++i) {
+    const SystemPoint& q = system.points[static_cast<std::size_t>(i)];
+    cur.P_T[i] = q.P_T;
+    cur.P_N[i] = q.P_N;
+    cur.g[i] = q.g;
+    cur.state.push_back(step_state_label(point_step_problem(sp, i).params, q.P_T, q.P_N, q.g));
+  }
+  cur.type.assign(static_cast<std::size_t>(N), SolutionType::kStick);
+  cur.w_w = cur.w_Ti = Eigen::VectorXd::Zero(N);
+  cur.temperature = Eigen::VectorXd::Constant(N, opt.heat.T_initial);
+  return cur;
+}
+
+void check_load_point(const SystemLoadPoint& lp, std::size_t step, int N, double t_prev) {
+  if (lp.F.size() != 2 * N)
+    throw InputError("load point " + std::to_string(step) + " has " +
+                     std::to_string(lp.F.size()) + " numbers; " + std::to_string(N) +
+                     " points need " + std::to_string(2 * N));
+  if (!std::isfinite(lp.t) || !lp.F.allFinite())
+    throw InputError("load point " + std::to_string(step) + " has a non-finite value");
+  if (!(lp.t > t_prev))
+    throw InputError("load point " + std::to_string(step) + ": t = " + std::to_string(lp.t) +
+                     " does not increase (previous " + std::to_string(t_prev) + ")");
+}
+
+/// Enumerates the step's solutions into `set`; returns why a value is not representable in
+/// double (loads near 1e308), or an empty string.
+std::string enumerate_or_unrepresentable(const SystemStepProblem& sp, const SystemStepOptions& so,
+                                         SystemStepSolutionSet& set) {
+  if (!sp.DF.allFinite())  // e.g. from -1e308 to 1e308
+    return "the load increment F - F_prev exceeds the range of double";
+  try {
+    set = enumerate_system_step(sp, so);
+  } catch (const InputError& e) {
+    if (std::string(e.what()).find("not representable") == std::string::npos) throw;
+    return e.what();
+  }
+  return {};
+}
+
+/// The stop message of a step without solutions; sets outcome and inconclusive.
+std::string no_solution_stop(const SystemStepSolutionSet& set, double t,
+                             const SystemSimulationSample& cur, SystemSimulationResult& res) {
+  std::ostringstream m;
+  m << "stopped before t = " << t << ": ";
+  res.outcome = SimulationResult::Outcome::kNoSolution;
+  if (set.complete) {
+    m << "the step has no solution (complete enumeration of its 4^N active sets). ";
+  } else {
+    res.inconclusive = true;
+    m << "no solution was found and the enumeration is not complete ("
+      << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
+  }
+  m << "Last state: " << describe(cur);
+  return m.str();
+}
+
+/// The branch rule 'closest', summed over the points.
+std::size_t closest_solution(const SystemStepSolutionSet& set, const Eigen::VectorXd& xi_weight) {
+  std::size_t best = 0;
+  double bd = INFINITY;
+  for (std::size_t j = 0; j < set.solutions.size(); ++j) {
+    double d = 0;
+    for (int i = 0; i < xi_weight.size(); ++i) {
+      const StepValues& v = set.solutions[j].values[static_cast<std::size_t>(i)];
+      d += std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight[i] * std::abs(v.Dw_Ti);
+    }
+    if (d < bd) {
+      bd = d;
+      best = j;
+    }
+  }
+  return best;
+}
+
+/// Point i of `nx` after the step along `sol`, placed exactly on its active constraints, with
+/// its dissipation, wear and heat added to `nx` and `res`. Returns the point's external work.
+double advance_point(int i, const SystemStepSolution& sol, const SystemStepProblem& sp,
+                     const PointConstants& pc, const SystemSimulationSample& cur,
+                     const SystemLoadPoint& lp, double dt, const SystemSimulationOptions& opt,
+                     SystemSimulationSample& nx, SystemSimulationResult& res) {
+  const StepValues& v = sol.values[static_cast<std::size_t>(i)];
+  const SolutionType ty = sol.types[static_cast<std::size_t>(i)];
+  const ContactParameters a = point_step_problem(sp, i).params;
+  nx.type[static_cast<std::size_t>(i)] = ty;
+  nx.w[2 * i] += v.Dw_T;
+  nx.w[2 * i + 1] += v.Dw_N;
+  nx.w_w[i] += v.Dw_w;
+  nx.w_Ti[i] += v.Dw_Ti;
+  const double dW = 0.5 * (cur.F[2 * i] + lp.F[2 * i]) * v.Dw_T +
+                    0.5 * (cur.F[2 * i + 1] + lp.F[2 * i + 1]) * v.Dw_N;
+  if (v.P_N1 <= 0 || ty == SolutionType::kSeparation || ty == SolutionType::kOpen) {
+    nx.P_N[i] = 0;
+    nx.P_T[i] = 0;
+    nx.g[i] = std::min(v.g1, 0.0);
+  } else {
+    nx.P_N[i] = v.P_N1;
+    nx.g[i] = 0;
+    const double Y = a.mu * v.P_N1;
+    nx.P_T[i] = ty == SolutionType::kSlipPlus    ? Y
+                : ty == SolutionType::kSlipMinus ? -Y
+                                                 : std::clamp(v.P_T1, -Y, Y);
+  }
+  nx.state[static_cast<std::size_t>(i)] = step_state_label(a, nx.P_T[i], nx.P_N[i], nx.g[i]);
+  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+  const double D_scale =
+      (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
+  if (D < 0)
+    res.min_step_dissipation[i] =
+        std::min(res.min_step_dissipation[i], D / std::max(D_scale, 1e-300));
+  res.dissipation[i] += D;
+  nx.dissipation_total += D;
+  res.wear_integral[i] += pc.k[i] * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
+  res.total_slip[i] += std::abs(v.Dw_Ti);
+  if (opt.heat.enabled)
+    nx.temperature[i] = heat_step(opt.heat, cur.temperature[i], std::max(D, 0.0), dt);
+  res.max_temperature[i] = std::max(res.max_temperature[i], nx.temperature[i]);
+  return dW;
+}
+
+/// Wear of a step of a cyclic history, added per point to the cycle its midpoint falls in.
+void add_to_cycle(SystemSimulationResult& res, const SystemLoadSource& load, double t_prev,
+                  double t, const SystemStepSolution& sol) {
+  if (!(load.period > 0) || !(t > load.cycle_start)) return;
+  const double tc = 0.5 * (t_prev + t) - load.cycle_start;
+  if (tc < 0) return;
+  const auto c = static_cast<std::size_t>(std::floor(tc / load.period));
+  const auto N = static_cast<Eigen::Index>(sol.values.size());
+  while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N));
+  for (Eigen::Index i = 0; i < N; ++i)
+    res.wear_per_cycle[c][i] += sol.values[static_cast<std::size_t>(i)].Dw_w;
+}
+
+void finish(SystemSimulationResult& res, const SystemSimulationSample& cur, double E0) {
+  res.final_state = cur;
+  res.external_work = cur.work_total;
+  res.stored_energy = cur.stored;
+  res.energy_error = std::abs(res.external_work - (res.stored_energy - E0) - cur.dissipation_total) /
+                     std::max(res.work_abs, 1e-300);
+  if (res.outcome == SimulationResult::Outcome::kCompleted) {
+    std::ostringstream m;
+    m << "completed " << res.steps << " steps; final " << describe(cur);
+    if (res.incomplete_steps > 0)
+      m << "; " << res.incomplete_steps
+        << " steps had an enumeration not proved complete (m >= 3 points slipping with wear)";
+    res.message = m.str();
+  }
+}
+
 }  // namespace
 
 SystemSimulationResult simulate_system(const ContactSystem& system, const SystemLoadSource& load,
@@ -74,32 +249,10 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
   so.tol = opt.tol;
   so.max_points = opt.max_points;
 
-  // Per point: Archard k, the weight of the slip in the branch distance.
-  Eigen::VectorXd k(N), xi_weight(N), C_T(N);
-  for (int i = 0; i < N; ++i) {
-    const StepProblem one = point_step_problem(sp, i);
-    k[i] = one.params.k();
-    xi_weight[i] = one.params.detA() / one.params.D0();
-    C_T[i] = one.params.C_T;
-  }
+  const PointConstants pc = point_constants(sp, N);
   SystemSimulationResult res;
-  SystemSimulationSample cur;
-  cur.F = Eigen::VectorXd::Zero(2 * N);
-  cur.w = Eigen::VectorXd::Zero(2 * N);
-  cur.P_T.resize(N);
-  cur.P_N.resize(N);
-  cur.g.resize(N);
-  for (int i = 0; i < N; ++i) {
-    const SystemPoint& q = system.points[static_cast<std::size_t>(i)];
-    cur.P_T[i] = q.P_T;
-    cur.P_N[i] = q.P_N;
-    cur.g[i] = q.g;
-    cur.state.push_back(step_state_label(point_step_problem(sp, i).params, q.P_T, q.P_N, q.g));
-  }
-  cur.type.assign(static_cast<std::size_t>(N), SolutionType::kStick);
-  cur.w_w = cur.w_Ti = Eigen::VectorXd::Zero(N);
-  cur.temperature = Eigen::VectorXd::Constant(N, opt.heat.T_initial);
-  auto ct_energy = [&](const Eigen::VectorXd& P_T) { return C_T.dot(P_T.cwiseProduct(P_T)); };
+  SystemSimulationSample cur = initial_sample(system, sp, opt);
+  auto ct_energy = [&](const Eigen::VectorXd& P_T) { return pc.C_T.dot(P_T.cwiseProduct(P_T)); };
   const double E0 = 0.5 * ct_energy(cur.P_T);
   res.wear_integral = res.total_slip = res.dissipation = res.min_step_dissipation =
       Eigen::VectorXd::Zero(N);
@@ -108,15 +261,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
   double t_prev = 0;
   for (std::size_t step = 0; step < load.size; ++step) {
     const SystemLoadPoint lp = load.at(step);
-    if (lp.F.size() != 2 * N)
-      throw InputError("load point " + std::to_string(step) + " has " +
-                       std::to_string(lp.F.size()) + " numbers; " + std::to_string(N) +
-                       " points need " + std::to_string(2 * N));
-    if (!std::isfinite(lp.t) || !lp.F.allFinite())
-      throw InputError("load point " + std::to_string(step) + " has a non-finite value");
-    if (!(lp.t > t_prev))
-      throw InputError("load point " + std::to_string(step) + ": t = " + std::to_string(lp.t) +
-                       " does not increase (previous " + std::to_string(t_prev) + ")");
+    check_load_point(lp, step, N, t_prev);
     for (int i = 0; i < N; ++i) {
       SystemPoint& q = sp.system.points[static_cast<std::size_t>(i)];
       q.P_T = cur.P_T[i];
@@ -127,17 +272,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
     // A step whose increment or solution double cannot represent (loads near 1e308) stops the
     // run as numerical_failure, as an energy beyond double's range does below.
     SystemStepSolutionSet set;
-    std::string unrepresentable;
-    if (!sp.DF.allFinite()) {  // e.g. from -1e308 to 1e308
-      unrepresentable = "the load increment F - F_prev exceeds the range of double";
-    } else {
-      try {
-        set = enumerate_system_step(sp, so);
-      } catch (const InputError& e) {
-        if (std::string(e.what()).find("not representable") == std::string::npos) throw;
-        unrepresentable = e.what();
-      }
-    }
+    const std::string unrepresentable = enumerate_or_unrepresentable(sp, so, set);
     if (!unrepresentable.empty()) {
       res.outcome = SimulationResult::Outcome::kNumericalFailure;
       res.message = "stopped before t = " + std::to_string(lp.t) + ": " + unrepresentable +
@@ -146,19 +281,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
     }
     if (!set.complete) ++res.incomplete_steps;
     if (set.solutions.empty()) {
-      std::ostringstream m;
-      m << "stopped before t = " << lp.t << ": ";
-      if (set.complete) {
-        res.outcome = SimulationResult::Outcome::kNoSolution;
-        m << "the step has no solution (complete enumeration of its 4^N active sets). ";
-      } else {
-        res.outcome = SimulationResult::Outcome::kNoSolution;
-        res.inconclusive = true;
-        m << "no solution was found and the enumeration is not complete ("
-          << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
-      }
-      m << "Last state: " << describe(cur);
-      res.message = m.str();
+      res.message = no_solution_stop(set, lp.t, cur, res);
       break;
     }
     std::size_t best = 0;
@@ -172,18 +295,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
         res.message = m.str();
         break;
       }
-      double bd = INFINITY;
-      for (std::size_t j = 0; j < set.solutions.size(); ++j) {
-        double d = 0;
-        for (int i = 0; i < N; ++i) {
-          const StepValues& v = set.solutions[j].values[static_cast<std::size_t>(i)];
-          d += std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight[i] * std::abs(v.Dw_Ti);
-        }
-        if (d < bd) {
-          bd = d;
-          best = j;
-        }
-      }
+      best = closest_solution(set, pc.xi_weight);
     }
     const SystemStepSolution& sol = set.solutions[best];
     res.max_residual = std::max(res.max_residual, sol.residual);
@@ -195,45 +307,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
     nx.complete = set.complete;
     double dW = 0;
     const double dt = lp.t - t_prev;
-    for (int i = 0; i < N; ++i) {
-      const StepValues& v = sol.values[static_cast<std::size_t>(i)];
-      const SolutionType ty = sol.types[static_cast<std::size_t>(i)];
-      const ContactParameters a = point_step_problem(sp, i).params;
-      nx.type[static_cast<std::size_t>(i)] = ty;
-      nx.w[2 * i] += v.Dw_T;
-      nx.w[2 * i + 1] += v.Dw_N;
-      nx.w_w[i] += v.Dw_w;
-      nx.w_Ti[i] += v.Dw_Ti;
-      dW += 0.5 * (cur.F[2 * i] + lp.F[2 * i]) * v.Dw_T +
-            0.5 * (cur.F[2 * i + 1] + lp.F[2 * i + 1]) * v.Dw_N;
-      // Put the point exactly on its active constraints.
-      if (v.P_N1 <= 0 || ty == SolutionType::kSeparation || ty == SolutionType::kOpen) {
-        nx.P_N[i] = 0;
-        nx.P_T[i] = 0;
-        nx.g[i] = std::min(v.g1, 0.0);
-      } else {
-        nx.P_N[i] = v.P_N1;
-        nx.g[i] = 0;
-        const double Y = a.mu * v.P_N1;
-        nx.P_T[i] = ty == SolutionType::kSlipPlus    ? Y
-                    : ty == SolutionType::kSlipMinus ? -Y
-                                                     : std::clamp(v.P_T1, -Y, Y);
-      }
-      nx.state[static_cast<std::size_t>(i)] = step_state_label(a, nx.P_T[i], nx.P_N[i], nx.g[i]);
-      const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
-      const double D_scale =
-          (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
-      if (D < 0)
-        res.min_step_dissipation[i] =
-            std::min(res.min_step_dissipation[i], D / std::max(D_scale, 1e-300));
-      res.dissipation[i] += D;
-      nx.dissipation_total += D;
-      res.wear_integral[i] += k[i] * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
-      res.total_slip[i] += std::abs(v.Dw_Ti);
-      if (opt.heat.enabled)
-        nx.temperature[i] = heat_step(opt.heat, cur.temperature[i], std::max(D, 0.0), dt);
-      res.max_temperature[i] = std::max(res.max_temperature[i], nx.temperature[i]);
-    }
+    for (int i = 0; i < N; ++i) dW += advance_point(i, sol, sp, pc, cur, lp, dt, opt, nx, res);
     nx.work_total += dW;
     res.work_abs += std::abs(dW);
     nx.stored = 0.5 * nx.w.dot(system.A * nx.w) + 0.5 * ct_energy(nx.P_T);
@@ -243,15 +317,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
                     ": the values exceed the range of double. Last state: " + describe(cur);
       break;
     }
-    if (load.period > 0 && lp.t > load.cycle_start) {
-      const double tc = 0.5 * (t_prev + lp.t) - load.cycle_start;
-      if (tc >= 0) {
-        const auto c = static_cast<std::size_t>(std::floor(tc / load.period));
-        while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N));
-        for (int i = 0; i < N; ++i)
-          res.wear_per_cycle[c][i] += sol.values[static_cast<std::size_t>(i)].Dw_w;
-      }
-    }
+    add_to_cycle(res, load, t_prev, lp.t, sol);
     t_prev = lp.t;
     cur = nx;
     ++res.steps;
@@ -259,19 +325,7 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
         (res.steps % opt.record_every == 0 || step + 1 == load.size))
       opt.on_sample(cur);
   }
-  res.final_state = cur;
-  res.external_work = cur.work_total;
-  res.stored_energy = cur.stored;
-  res.energy_error = std::abs(res.external_work - (res.stored_energy - E0) - cur.dissipation_total) /
-                     std::max(res.work_abs, 1e-300);
-  if (res.outcome == SimulationResult::Outcome::kCompleted) {
-    std::ostringstream m;
-    m << "completed " << res.steps << " steps; final " << describe(cur);
-    if (res.incomplete_steps > 0)
-      m << "; " << res.incomplete_steps
-        << " steps had an enumeration not proved complete (m >= 3 points slipping with wear)";
-    res.message = m.str();
-  }
+  finish(res, cur, E0);
   return res;
 }
 

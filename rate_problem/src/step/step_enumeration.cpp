@@ -8,13 +8,12 @@
 #include <Eigen/LU>
 
 #include "cpkit/core/errors.hpp"
+#include "polynomial_roots.hpp"
 
 namespace cpkit::rate {
 namespace {
 
 constexpr double kDegTol = 1e-12;  // relative size under which a coefficient is zero
-
-double sgn1(double v) noexcept { return v < 0 ? -1.0 : 1.0; }
 
 /// Everything the pieces need, computed once per problem.
 struct Setup {
@@ -45,69 +44,6 @@ Setup make_setup(const StepProblem& p) noexcept {
                        std::numeric_limits<double>::min()});
   s.dscale = std::abs(s.g0) + s.fscale * ((s.a11 + s.a22) / s.detA + s.C_T);
   return s;
-}
-
-/// Horner evaluation of c[3] x^3 + ... + c[0] and of the bound on its rounding.
-double poly(const double c[4], double x) noexcept {
-  return ((c[3] * x + c[2]) * x + c[1]) * x + c[0];
-}
-double poly_scale(const double s[4], double x) noexcept {
-  const double ax = std::abs(x);
-  return ((s[3] * ax + s[2]) * ax + s[1]) * ax + s[0];
-}
-
-/// Real roots of the cubic (c[3] != 0) in [lo, hi], by bracketing between critical points.
-int cubic_roots_in(const double c[4], const double sc[4], double lo, double hi,
-                   double roots[4]) noexcept {
-  double crit[2];
-  const double dc2 = 3 * c[3], dc1 = 2 * c[2], dc0 = c[1];
-  int nc = stable_quadratic_roots(dc2, dc1, dc0, 3 * sc[3], 2 * sc[2], sc[1], 0.0, crit);
-  if (nc < 0) nc = 0;
-  double brk[4];
-  int nb = 0;
-  brk[nb++] = lo;
-  if (nc == 2 && crit[0] > crit[1]) std::swap(crit[0], crit[1]);
-  for (int i = 0; i < nc; ++i)
-    if (crit[i] > lo && crit[i] < hi) brk[nb++] = crit[i];
-  brk[nb++] = hi;
-  int n = 0;
-  auto add = [&](double x) {
-    for (int i = 0; i < n; ++i)
-      if (std::abs(roots[i] - x) <= 1e-12 * (1 + std::abs(x))) return;
-    if (n < 4) roots[n++] = x;
-  };
-  for (int i = 0; i < nb; ++i) {
-    const double fx = poly(c, brk[i]);
-    if (std::abs(fx) <= 1e-13 * poly_scale(sc, brk[i])) add(brk[i]);
-  }
-  for (int i = 0; i + 1 < nb; ++i) {
-    double u = brk[i], v = brk[i + 1];
-    double fu = poly(c, u), fv = poly(c, v);
-    if (fu == 0 || fv == 0 || (fu < 0) == (fv < 0)) continue;
-    // Safeguarded Newton (rtsafe): keep the bracket, fall back to bisection.
-    double x = 0.5 * (u + v);
-    for (int it = 0; it < 200; ++it) {
-      const double fx = poly(c, x);
-      if (fx == 0) break;
-      if ((fx < 0) == (fu < 0)) {
-        u = x;
-        fu = fx;
-      } else {
-        v = x;
-      }
-      const double dfx = (3 * c[3] * x + 2 * c[2]) * x + c[1];
-      double xn = (dfx != 0) ? x - fx / dfx : 0.5 * (u + v);
-      if (!(xn > u && xn < v)) xn = 0.5 * (u + v);
-      if (std::abs(xn - x) <= 4 * std::numeric_limits<double>::epsilon() * std::abs(x) ||
-          v - u <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(u), std::abs(v))) {
-        x = xn;
-        break;
-      }
-      x = xn;
-    }
-    add(x);
-  }
-  return n;
 }
 
 struct Continuum {
@@ -563,7 +499,7 @@ void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
     const double x_lo = -st.P0;
     if (c[3] != 0) {
       const double x_hi = st.mu / st.kc - st.P0;  // Y(P_N1) >= 0, condition (46)
-      nr = cubic_roots_in(c, sc, x_lo, x_hi, roots);
+      nr = detail::cubic_roots_in(c, sc, x_lo, x_hi, roots);
     } else {
       nr = stable_quadratic_roots(c[2], c[1], c[0], sc[2], sc[1], sc[0], kDegTol, roots);
     }
@@ -603,35 +539,127 @@ void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
 
 double distance(const StepValues& v) noexcept { return std::abs(v.DP_N) + std::abs(v.DP_T); }
 
-}  // namespace
-
-int stable_quadratic_roots(double c2, double c1, double c0, double scale2, double scale1,
-                           double scale0, double deg_tol, double roots[2]) noexcept {
-  const bool z2 = std::abs(c2) <= deg_tol * scale2;
-  if (z2) {
-    const bool z1 = std::abs(c1) <= deg_tol * scale1;
-    if (z1) return (std::abs(c0) <= deg_tol * scale0) ? -1 : 0;
-    roots[0] = -c0 / c1;
-    return 1;
-  }
-  double disc = c1 * c1 - 4 * c2 * c0;
-  if (disc < 0) {
-    if (disc >= -1e-12 * (c1 * c1 + 4 * std::abs(c2 * c0))) {
-      disc = 0;
+/// The continua of `w` as segments or rays of the set (conts), and their ends that are open
+/// (of another type: stick where xi = 0, open where P_N1 = 0 after an open start), which are
+/// listed as points of their own type (the partition of piece_geometry.hpp).
+void continuum_solutions(const StepProblem& n, const Setup& st, Work& w,
+                         std::vector<StepSolution>& conts, std::vector<StepValues>& open_ends) {
+  for (int i = 0; i < w.ncont; ++i) {
+    const Continuum& c = w.cont[i];
+    const int piece = c.s > 0 ? kPieceSlipPlus : kPieceSlipMinus;
+    // An end judged without polishing (the piece's Jacobian is singular along a continuum).
+    auto judge = [&](double x, StepValues& v) {
+      v = step_values(n, x, c.s * (c.b0 + c.b1 * x) / st.detA);
+      Candidate k;
+      k.piece = piece;
+      k.ftol = 1e-9;
+      const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
+      std::copy(u, u + 5, k.u);
+      scales_of(n, k.u, k.fs, k.ds);
+      k.backward = std::max(equation_error(n, piece, k.u), sign_error(n, piece, k.u));
+      if (!(k.backward <= kAccept)) ++w.pts.undecided;  // an end not verified
+      return k;
+    };
+    StepSolution sol;
+    sol.type = c.type;
+    const Candidate k0 = judge(c.x_lo, sol.start);
+    sol.residual = k0.backward;
+    sol.start_closed = type_of(n, k0) == c.type;
+    if (!sol.start_closed) open_ends.push_back(sol.start);
+    if (std::isfinite(c.x_hi)) {
+      sol.kind = RateSolution::Kind::kSegment;
+      const Candidate k1 = judge(c.x_hi, sol.end);
+      sol.residual = std::max(sol.residual, k1.backward);
+      sol.end_closed = type_of(n, k1) == c.type;
+      if (!sol.end_closed) open_ends.push_back(sol.end);
     } else {
-      return 0;
+      sol.kind = RateSolution::Kind::kRay;
+      const StepValues v1 = step_values(n, c.x_lo + 1.0, c.s * (c.b0 + c.b1 * (c.x_lo + 1.0)) / st.detA);
+      sol.direction.DP_T = v1.DP_T - sol.start.DP_T;
+      sol.direction.DP_N = v1.DP_N - sol.start.DP_N;
+      sol.direction.Dw_T = v1.Dw_T - sol.start.Dw_T;
+      sol.direction.Dw_N = v1.Dw_N - sol.start.Dw_N;
+      sol.direction.Dw_Ti = v1.Dw_Ti - sol.start.Dw_Ti;
+      sol.direction.Dw_w = v1.Dw_w - sol.start.Dw_w;
+      sol.direction.P_T1 = sol.direction.DP_T;
+      sol.direction.P_N1 = sol.direction.DP_N;
+      sol.direction.g1 = v1.g1 - sol.start.g1;
+    }
+    conts.push_back(sol);
+  }
+}
+
+/// Marks the solutions of the set reached continuously from the start state (detect_jumps).
+void mark_jumps(const StepProblem& n, const Setup& st, double tol, StepSolutionSet& set) {
+  // Homotopy in t: follow the solutions of the step with increment t (DF_T, DF_N) from t = 0
+  // (where the start state itself is a solution) to t = 1, linking each solution to its
+  // nearest neighbour at the previous t. A solution is continuous (rate-consistent) when its
+  // chain leads back to the start state; jumps stay O(1) away from every such chain.
+  constexpr int kSteps = 128;
+  const double link = 0.1 * st.fscale;
+  auto dist = [&](const StepValues& a, const StepValues& b) {
+    return std::abs(a.DP_N - b.DP_N) + std::abs(a.DP_T - b.DP_T) +
+           st.detA / st.D0 * std::abs(a.Dw_Ti - b.Dw_Ti);
+  };
+  std::vector<StepValues> prev_v, cur_v;
+  std::vector<char> prev_r, cur_r;
+  bool ok = true;
+  for (int k = 0; k <= kSteps && ok; ++k) {
+    const double t = static_cast<double>(k) / kSteps;
+    StepProblem pt = n;
+    pt.load.dF_T *= t;
+    pt.load.dF_N *= t;
+    Work wt;
+    enumerate_core(pt, tol, wt);
+    if (wt.pts.infinite) {
+      ok = false;
+      break;
+    }
+    cur_v.clear();
+    cur_r.clear();
+    for (int i = 0; i < wt.pts.n; ++i) {
+      const StepValues v = values_of(pt, wt.cand[i].u);
+      bool r = false;
+      if (k == 0) {
+        r = distance(v) + st.detA / st.D0 * std::abs(v.Dw_Ti) <= 1e-9 * st.fscale;
+      } else {
+        double best = INFINITY;
+        int bi = -1;
+        for (std::size_t j = 0; j < prev_v.size(); ++j) {
+          const double d = dist(v, prev_v[j]);
+          if (d < best) {
+            best = d;
+            bi = static_cast<int>(j);
+          }
+        }
+        r = bi >= 0 && prev_r[bi] && best <= link;
+      }
+      cur_v.push_back(v);
+      cur_r.push_back(r ? 1 : 0);
+    }
+    std::swap(prev_v, cur_v);
+    std::swap(prev_r, cur_r);
+  }
+  if (ok) {
+    // prev_v now holds the t = 1 solutions: match them to the reported points.
+    set.continuous_count = 0;
+    for (auto& sol : set.solutions) {
+      double best = INFINITY;
+      int bi = -1;
+      for (std::size_t j = 0; j < prev_v.size(); ++j) {
+        const double d = dist(sol.start, prev_v[j]);
+        if (d < best) {
+          best = d;
+          bi = static_cast<int>(j);
+        }
+      }
+      sol.jump = !(bi >= 0 && prev_r[bi]);
+      if (!sol.jump) ++set.continuous_count;
     }
   }
-  const double q = -0.5 * (c1 + sgn1(c1) * std::sqrt(disc));
-  if (q == 0) {  // c1 = 0 and c0 = 0: double root at 0
-    roots[0] = 0;
-    return 1;
-  }
-  roots[0] = q / c2;
-  if (disc == 0) return 1;
-  roots[1] = c0 / q;
-  return 2;
 }
+
+}  // namespace
 
 void enumerate_step_points(const StepProblem& problem, const StepNcp& /*ncp*/, StepPoints& out,
                            double tol) noexcept {
@@ -686,49 +714,7 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
   std::vector<StepSolution> conts;
   std::vector<StepValues> open_ends;
   const Setup st = make_setup(n);
-  for (int i = 0; i < w.ncont; ++i) {
-    const Continuum& c = w.cont[i];
-    const int piece = c.s > 0 ? kPieceSlipPlus : kPieceSlipMinus;
-    // An end judged without polishing (the piece's Jacobian is singular along a continuum).
-    auto judge = [&](double x, StepValues& v) {
-      v = step_values(n, x, c.s * (c.b0 + c.b1 * x) / st.detA);
-      Candidate k;
-      k.piece = piece;
-      k.ftol = 1e-9;
-      const double u[5] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti};
-      std::copy(u, u + 5, k.u);
-      scales_of(n, k.u, k.fs, k.ds);
-      k.backward = std::max(equation_error(n, piece, k.u), sign_error(n, piece, k.u));
-      if (!(k.backward <= kAccept)) ++w.pts.undecided;  // an end not verified
-      return k;
-    };
-    StepSolution sol;
-    sol.type = c.type;
-    const Candidate k0 = judge(c.x_lo, sol.start);
-    sol.residual = k0.backward;
-    sol.start_closed = type_of(n, k0) == c.type;
-    if (!sol.start_closed) open_ends.push_back(sol.start);
-    if (std::isfinite(c.x_hi)) {
-      sol.kind = RateSolution::Kind::kSegment;
-      const Candidate k1 = judge(c.x_hi, sol.end);
-      sol.residual = std::max(sol.residual, k1.backward);
-      sol.end_closed = type_of(n, k1) == c.type;
-      if (!sol.end_closed) open_ends.push_back(sol.end);
-    } else {
-      sol.kind = RateSolution::Kind::kRay;
-      const StepValues v1 = step_values(n, c.x_lo + 1.0, c.s * (c.b0 + c.b1 * (c.x_lo + 1.0)) / st.detA);
-      sol.direction.DP_T = v1.DP_T - sol.start.DP_T;
-      sol.direction.DP_N = v1.DP_N - sol.start.DP_N;
-      sol.direction.Dw_T = v1.Dw_T - sol.start.Dw_T;
-      sol.direction.Dw_N = v1.Dw_N - sol.start.Dw_N;
-      sol.direction.Dw_Ti = v1.Dw_Ti - sol.start.Dw_Ti;
-      sol.direction.Dw_w = v1.Dw_w - sol.start.Dw_w;
-      sol.direction.P_T1 = sol.direction.DP_T;
-      sol.direction.P_N1 = sol.direction.DP_N;
-      sol.direction.g1 = v1.g1 - sol.start.g1;
-    }
-    conts.push_back(sol);
-  }
+  continuum_solutions(n, st, w, conts, open_ends);
   auto same_point = [&](double DP_N, double xi, const StepValues& v) {
     return std::abs(v.DP_N - DP_N) <= 1e-9 * st.fscale && std::abs(v.Dw_Ti - xi) <= 1e-9 * st.dscale;
   };
@@ -779,74 +765,7 @@ StepSolutionSet enumerate_step(const StepProblem& problem, const StepEnumeration
                      return static_cast<int>(a.type) < static_cast<int>(b.type);
                    });
   set.continuous_count = -1;
-  if (opt.detect_jumps && !set.infinite) {
-    // Homotopy in t: follow the solutions of the step with increment t (DF_T, DF_N) from t = 0
-    // (where the start state itself is a solution) to t = 1, linking each solution to its
-    // nearest neighbour at the previous t. A solution is continuous (rate-consistent) when its
-    // chain leads back to the start state; jumps stay O(1) away from every such chain.
-    constexpr int kSteps = 128;
-    const double link = 0.1 * st.fscale;
-    auto dist = [&](const StepValues& a, const StepValues& b) {
-      return std::abs(a.DP_N - b.DP_N) + std::abs(a.DP_T - b.DP_T) +
-             st.detA / st.D0 * std::abs(a.Dw_Ti - b.Dw_Ti);
-    };
-    std::vector<StepValues> prev_v, cur_v;
-    std::vector<char> prev_r, cur_r;
-    bool ok = true;
-    for (int k = 0; k <= kSteps && ok; ++k) {
-      const double t = static_cast<double>(k) / kSteps;
-      StepProblem pt = n;
-      pt.load.dF_T *= t;
-      pt.load.dF_N *= t;
-      Work wt;
-      enumerate_core(pt, opt.tol, wt);
-      if (wt.pts.infinite) {
-        ok = false;
-        break;
-      }
-      cur_v.clear();
-      cur_r.clear();
-      for (int i = 0; i < wt.pts.n; ++i) {
-        const StepValues v = values_of(pt, wt.cand[i].u);
-        bool r = false;
-        if (k == 0) {
-          r = distance(v) + st.detA / st.D0 * std::abs(v.Dw_Ti) <= 1e-9 * st.fscale;
-        } else {
-          double best = INFINITY;
-          int bi = -1;
-          for (std::size_t j = 0; j < prev_v.size(); ++j) {
-            const double d = dist(v, prev_v[j]);
-            if (d < best) {
-              best = d;
-              bi = static_cast<int>(j);
-            }
-          }
-          r = bi >= 0 && prev_r[bi] && best <= link;
-        }
-        cur_v.push_back(v);
-        cur_r.push_back(r ? 1 : 0);
-      }
-      std::swap(prev_v, cur_v);
-      std::swap(prev_r, cur_r);
-    }
-    if (ok) {
-      // prev_v now holds the t = 1 solutions: match them to the reported points.
-      set.continuous_count = 0;
-      for (auto& sol : set.solutions) {
-        double best = INFINITY;
-        int bi = -1;
-        for (std::size_t j = 0; j < prev_v.size(); ++j) {
-          const double d = dist(sol.start, prev_v[j]);
-          if (d < best) {
-            best = d;
-            bi = static_cast<int>(j);
-          }
-        }
-        sol.jump = !(bi >= 0 && prev_r[bi]);
-        if (!sol.jump) ++set.continuous_count;
-      }
-    }
-  }
+  if (opt.detect_jumps && !set.infinite) mark_jumps(n, st, opt.tol, set);
   // Back to the caller's units; a solution that does not fit in double is not listed.
   std::vector<StepSolution> listed;
   for (auto sol : set.solutions) {
