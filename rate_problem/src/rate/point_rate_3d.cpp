@@ -164,65 +164,72 @@ double det3(const Eigen::Vector3d& u, const Eigen::Vector3d& v, const Eigen::Vec
   return u.dot(v.cross(w));
 }
 
-void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
-                   RateSolutionSet3d& set) {
-  const double f_scale = dF.cwiseAbs().maxCoeff();
-  auto not_proved = [&](const std::string& why) {
-    set.complete = false;
-    if (set.message.empty()) set.message = why;
-  };
+void not_proved(RateSolutionSet3d& set, const std::string& why) {
+  set.complete = false;
+  if (set.message.empty()) set.message = why;
+}
+
+/// The separation of state b, appended to `set` when dw_N < 0 beyond rounding; `undecided`
+/// when dw_N is 0 within the rounding of the solve. Returns dw = A^-1 dF.
+Eigen::Vector3d separation_solution(const Point3dParameters& p, const Eigen::Vector3d& dF,
+                                    RateSolutionSet3d& set, bool& undecided) {
   // Separation: dP = 0, dw = A^-1 dF with dw_N < 0 (3D.2). dw_N is a forward result: its sign
   // is decided only outside the rounding band of the solve (cond(A) eps |dw|); inside it the
   // separation is the contact solution with dP = 0 (listed below as a slip with dP_N = 0), or
   // undecided.
-  bool separation_undecided = false;
-  Eigen::Vector3d dw_sep = Eigen::Vector3d::Zero();
-  {
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(p.A);
-    dw_sep = ldlt.solve(dF);
-    // The solve is backward stable (residual ~ eps |A| |dw|); the row N of A^-1 carries that
-    // into dw_N.
-    const Eigen::Vector3d row_N = ldlt.solve(Eigen::Vector3d::UnitZ());
-    const double band = std::max(kTol * dw_sep.cwiseAbs().maxCoeff(),
-                                 kRound * row_N.cwiseAbs().sum() *
-                                     (p.A.cwiseAbs() * dw_sep.cwiseAbs()).maxCoeff());
-    if (dw_sep(2) < -band) {
-      Rates3d r;
-      r.dw_T = dw_sep.head<2>();
-      r.dw_N = dw_sep(2);
-      r.dw_Ti = r.dw_T;
-      set.solutions.push_back(point_solution(Type3d::kSeparation, r));
-    } else if (dw_sep(2) <= band) {
-      separation_undecided = true;
-    }
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(p.A);
+  const Eigen::Vector3d dw_sep = ldlt.solve(dF);
+  // The solve is backward stable (residual ~ eps |A| |dw|); the row N of A^-1 carries that
+  // into dw_N.
+  const Eigen::Vector3d row_N = ldlt.solve(Eigen::Vector3d::UnitZ());
+  const double band = std::max(kTol * dw_sep.cwiseAbs().maxCoeff(),
+                               kRound * row_N.cwiseAbs().sum() *
+                                   (p.A.cwiseAbs() * dw_sep.cwiseAbs()).maxCoeff());
+  if (dw_sep(2) < -band) {
+    Rates3d r;
+    r.dw_T = dw_sep.head<2>();
+    r.dw_N = dw_sep(2);
+    r.dw_Ti = r.dw_T;
+    set.solutions.push_back(point_solution(Type3d::kSeparation, r));
+  } else if (dw_sep(2) <= band) {
+    undecided = true;
   }
+  return dw_sep;
+}
+
+/// The stick of state b, appended to `set` when ||dP_T|| <= mu dP_N to rounding; returns whether.
+bool stick_solution(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
+                    RateSolutionSet3d& set) {
   // Stick: ||dP_T|| <= mu dP_N (closed), to the rounding of the 2x2 solve.
-  bool stick_listed = false;
-  {
-    const Rates3d r = stick_rates(p, b, dF);
-    const double norm = Eigen::Vector2d(b.Dinv * r.dP_T).stableNorm();
-    const double band = std::max(kTol * (norm + p.mu * std::abs(r.dP_N)),
-                                 kRound * condition_number(b.K) *
-                                     (b.Dinv.diagonal().maxCoeff() + p.mu * p.C_T * b.A_scale) *
-                                     r.dP_T.cwiseAbs().maxCoeff());
-    if (norm - p.mu * r.dP_N <= band) {
-      set.solutions.push_back(point_solution(Type3d::kStick, r));
-      stick_listed = true;
-    }
+  const Rates3d r = stick_rates(p, b, dF);
+  const double norm = Eigen::Vector2d(b.Dinv * r.dP_T).stableNorm();
+  const double band = std::max(kTol * (norm + p.mu * std::abs(r.dP_N)),
+                               kRound * condition_number(b.K) *
+                                   (b.Dinv.diagonal().maxCoeff() + p.mu * p.C_T * b.A_scale) *
+                                   r.dP_T.cwiseAbs().maxCoeff());
+  if (norm - p.mu * r.dP_N <= band) {
+    set.solutions.push_back(point_solution(Type3d::kStick, r));
+    return true;
   }
-  // Slip: every root of g(phi) (3D.6), then the 3x2 system for (dP_N, lambda).
-  const SlipDirectionFunction g = slip_direction_function(p, dF);
-  const double g_scale = g.scale();
+  return false;
+}
+
+/// The slip directions of state b: every real root phi of g (3D.6), through the quartic in
+/// u = tan(psi / 2) (3D.7) and Newton on g, sorted and deduplicated in (phi0 - pi, phi0 + pi];
+/// complex_re gets the real parts of the non-real pairs. Returns false (the reason in `set`)
+/// when g cannot be resolved.
+bool slip_direction_roots(const SlipDirectionFunction& g, double g_scale, RateSolutionSet3d& set,
+                          std::vector<double>& roots, std::vector<double>& complex_re) {
   if (!std::isfinite(g_scale)) {
     set.complete = false;
     set.message = "the slip-direction condition overflows double: slip directions are not resolved";
-    return;
+    return false;
   }
   if (!(g_scale > 0)) {
     set.complete = false;
     set.message = "the slip-direction condition vanishes identically (dF = 0): slip "
                   "directions are not resolved";
-    return;
+    return false;
   }
   // Shift the angle origin so that the quartic's leading coefficient, g at the origin's
   // opposite direction, is as far from zero as possible (no root at u = infinity).
@@ -235,7 +242,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     set.complete = false;
     set.message = "the slip-direction condition vanishes in every sampled direction (within "
                   "rounding): slip directions are not resolved";
-    return;
+    return false;
   }
   // In psi = phi - phi0 with u = tan(psi / 2): (1 + u^2)^2 g = quartic (3D.7).
   const Eigen::Vector2d c0 = unit(phi0), s0 = unit(phi0 + kPi / 2);
@@ -250,8 +257,6 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
   Eigen::Matrix<double, 5, 1> coeff;
   coeff << a + e, 2 * bb + 2 * f, -2 * a + 4 * d, -2 * bb + 2 * f, a - e;
   Eigen::PolynomialSolver<double, 4> poly(coeff);
-  std::vector<double> roots;
-  std::vector<double> complex_re;  // real parts of the non-real pairs (checked below)
   for (const auto& z : poly.roots()) {
     if (std::abs(z.imag()) <= 1e-6 * (1 + std::abs(z.real())))
       roots.push_back(phi0 + 2 * std::atan(z.real()));
@@ -281,13 +286,20 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
   roots.erase(std::unique(roots.begin(), roots.end(),
                           [](double x, double y) { return std::abs(x - y) <= 1e-9; }),
               roots.end());
+  return true;
+}
+
+/// The completeness certificate of the slip directions (see below); `set` is marked not
+/// complete, with the reason, where it fails.
+void certify_slip_roots(const SlipDirectionFunction& g, double g_scale, const SlipSystem& sys,
+                        const Eigen::Vector3d& dF, const std::vector<double>& roots,
+                        const std::vector<double>& complex_re, RateSolutionSet3d& set) {
   // Completeness certificate (docs/contact_3d.md, "Completeness"): every root simple, g clearly
   // away from zero where a non-real pair sits, and the signs between roots alternate. A spot
   // that fails this (a double root, a nearly real pair) is still harmless when every slip in
   // the band of directions where its roots can lie is inadmissible (lambda < 0 or dP_N < 0):
   // no admissible slip can be hidden there (the eigenvector directions of A_TT with
   // mu A_NT . t = its eigenvalue, singular for every load, are such spots).
-  const SlipSystem sys = slip_system(p, b);
   auto harmless = [&](double phi) {
     const double g2 = std::abs(second_derivative(g, phi));
     if (!(g2 > 1e-7 * g_scale)) return false;  // a triple root or flatter: not resolved
@@ -295,7 +307,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     return slips_inadmissible(sys, dF, phi, radius);
   };
   if (std::any_of(roots.begin(), roots.end(), [&](double r) { return std::abs(g(r)) > kRootTol * g_scale; }))
-    not_proved("a slip direction is not resolved (the slip condition does not vanish there to "
+    not_proved(set, "a slip direction is not resolved (the slip condition does not vanish there to "
                "its rounding): not proved complete");
   const std::size_t m = roots.size();
   std::vector<bool> spot(m, false);  // a harmless double root (no sign test across it)
@@ -304,12 +316,12 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
       if (harmless(roots[k]))
         spot[k] = true;
       else
-        not_proved("a slip direction at phi = " + num(roots[k]) + " is a double root of the slip "
+        not_proved(set, "a slip direction at phi = " + num(roots[k]) + " is a double root of the slip "
                    "condition (a critical load direction): not proved complete");
     }
   for (double x : complex_re)
     if (std::abs(g(x)) <= 1e-7 * g_scale && !harmless(x))
-      not_proved("the slip condition nearly vanishes at phi = " + num(x) +
+      not_proved(set, "the slip condition nearly vanishes at phi = " + num(x) +
                  " without a root (a critical load direction): not proved complete");
   for (std::size_t k = 0; m >= 2 && k < m; ++k) {
     if (spot[k]) continue;
@@ -317,14 +329,21 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     const double prev = k > 0 ? roots[k - 1] : roots[m - 1] - 2 * kPi;
     const double next = k + 1 < m ? roots[k + 1] : roots[0] + 2 * kPi;
     if (!(g((prev + roots[k]) / 2) * g((roots[k] + next) / 2) < 0))
-      not_proved("the slip condition does not change sign at phi = " + num(roots[k]) +
+      not_proved(set, "the slip condition does not change sign at phi = " + num(roots[k]) +
                  ": not proved complete");
   }
   // The number of sign changes around the circle is even: an odd count of simple roots means
   // one was lost.
   if (std::count(spot.begin(), spot.end(), false) % 2 != 0)
-    not_proved("an odd number of slip directions: the slip condition is not resolved");
+    not_proved(set, "an odd number of slip directions: the slip condition is not resolved");
 
+}
+
+/// The admissible slips of state b, one per root phi: the 3x2 system for (dP_N, lambda).
+void slip_solutions(const Point3dParameters& p, const Blocks& b, const SlipSystem& sys,
+                    const Eigen::Vector3d& dF, const std::vector<double>& roots,
+                    bool stick_listed, RateSolutionSet3d& set) {
+  const double f_scale = dF.cwiseAbs().maxCoeff();
   const double lambda_scale = f_scale / b.A_scale;
   for (double phi : roots) {
     const Eigen::Vector2d t = unit(phi);
@@ -335,7 +354,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     B.col(0) /= col_norm(0);
     B.col(1) /= col_norm(1);
     if (!B.allFinite()) {
-      not_proved("the slip system is not finite in the direction phi = " + num(phi) +
+      not_proved(set, "the slip system is not finite in the direction phi = " + num(phi) +
                  ": not resolved");
       continue;
     }
@@ -351,7 +370,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
         const Eigen::Vector3d u0 = svd.matrixU().col(0);
         if ((fn - u0 * u0.dot(fn)).norm() > 1e-7) continue;
       }
-      not_proved("the slip system is singular in the direction phi = " + num(phi) +
+      not_proved(set, "the slip system is singular in the direction phi = " + num(phi) +
                  " (a continuum of solutions): not resolved");
       continue;
     }
@@ -365,7 +384,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     if (lambda <= std::max(kTol * lambda_scale, band / col_norm(1))) {
       // lambda = 0 within rounding: the stick on the cone's boundary, listed above, or undecided.
       if (!stick_listed)
-        not_proved("the slip direction phi = " + num(phi) + " has a multiplier at the rounding "
+        not_proved(set, "the slip direction phi = " + num(phi) + " has a multiplier at the rounding "
                    "level while the stick is not admissible: not resolved");
       continue;
     }
@@ -375,12 +394,28 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
     r.dw_Ti = lambda * (b.Dinv * t);
     r.dw_T = p.C_T * r.dP_T + r.dw_Ti;
     if (equilibrium_residual(p, dF, r) > 1e-8) {
-      not_proved("the slip direction phi = " + num(phi) + " gives rates that do not satisfy "
+      not_proved(set, "the slip direction phi = " + num(phi) + " gives rates that do not satisfy "
                  "the equilibrium to 1e-8: not resolved");
       continue;
     }
     set.solutions.push_back(point_solution(Type3d::kSlip, r));
   }
+}
+
+void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
+                   RateSolutionSet3d& set) {
+  const double f_scale = dF.cwiseAbs().maxCoeff();
+  bool separation_undecided = false;
+  const Eigen::Vector3d dw_sep = separation_solution(p, dF, set, separation_undecided);
+  const bool stick_listed = stick_solution(p, b, dF, set);
+  // Slip: every root of g(phi) (3D.6), then the 3x2 system for (dP_N, lambda).
+  const SlipDirectionFunction g = slip_direction_function(p, dF);
+  const double g_scale = g.scale();
+  std::vector<double> roots, complex_re;
+  if (!slip_direction_roots(g, g_scale, set, roots, complex_re)) return;
+  const SlipSystem sys = slip_system(p, b);
+  certify_slip_roots(g, g_scale, sys, dF, roots, complex_re, set);
+  slip_solutions(p, b, sys, dF, roots, stick_listed, set);
   if (separation_undecided) {
     // dw_N = 0 within rounding: the separation is then the contact solution with dP = 0.
     const double tol = 1e-8 * f_scale;
@@ -388,7 +423,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
       return std::max(x.at.dP_T.cwiseAbs().maxCoeff(), std::abs(x.at.dP_N)) <= tol;
     });
     if (!explained)
-      not_proved("the separation's normal rate dw_N = " + num(dw_sep(2)) + " is zero within the "
+      not_proved(set, "the separation's normal rate dw_N = " + num(dw_sep(2)) + " is zero within the "
                  "rounding of the stiffness (cond(A) = " + num(condition_number(p.A)) +
                  "): not decided");
   }

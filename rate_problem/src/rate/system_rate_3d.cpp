@@ -47,15 +47,34 @@ Polygon polygon(const Eigen::Vector2d& alpha, int k) {
   return p;
 }
 
-}  // namespace
+/// The problem in normalized units (as unit_scaling.hpp for one point: A / |A|, C_T |A|,
+/// dF / |dF|), checked, with the facets of every grazing point.
+struct Faceted {
+  ContactSystem3d sys;  ///< every point's friction ellipse in its own unit
+  int n = 0, k = 0;
+  std::vector<int> grazing, sliding;
+  Eigen::MatrixXd A;
+  Eigen::VectorXd dF;
+  double a = 1, force_back = 1, disp_back = 1;
+  std::vector<Polygon> poly;
+  int nb() const { return static_cast<int>(grazing.size()); }
+  /// Whether point i is a grazing point that separates in case `mask` (bit b: grazing point b).
+  bool separated(unsigned mask, int i) const {
+    for (int b = 0; b < nb(); ++b)
+      if (grazing[b] == i) return ((mask >> b) & 1u) != 0;
+    return false;
+  }
+};
 
-SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
-                                             const Eigen::VectorXd& user_dF, int k,
-                                             double time_limit_s) {
+Faceted prepare(const ContactSystem3d& user_sys, const Eigen::VectorXd& user_dF, int k,
+                double time_limit_s) {
+  Faceted f;
   // Every point's friction ellipse in its own unit (the rates hold no multiplier).
-  ContactSystem3d sys = user_sys;
-  for (SystemPoint3d& pt : sys.points) detail::normalize_ellipse(pt);
-  const int n = sys.n_points();
+  f.sys = user_sys;
+  for (SystemPoint3d& pt : f.sys.points) detail::normalize_ellipse(pt);
+  const ContactSystem3d& sys = f.sys;
+  const int n = f.n = sys.n_points();
+  f.k = k;
   if (n < 1 || sys.A.rows() != 3 * n || sys.A.cols() != 3 * n)
     throw InputError("system: A must be 3N x 3N for its N points");
   if (user_dF.size() != 3 * n || !user_dF.allFinite())
@@ -72,37 +91,200 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
     if (const std::string e = sys.points[i].state.validate(p); !e.empty())
       throw InputError("point " + std::to_string(i + 1) + ": " + e);
   }
-  std::vector<int> grazing, sliding;
   for (int i = 0; i < n; ++i) {
-    if (sys.points[i].state.state == 'b') grazing.push_back(i);
-    if (sys.points[i].state.state == 'd') sliding.push_back(i);
+    if (sys.points[i].state.state == 'b') f.grazing.push_back(i);
+    if (sys.points[i].state.state == 'd') f.sliding.push_back(i);
   }
-  const int nb = static_cast<int>(grazing.size());
+  const int nb = f.nb();
   if (nb > kMaxGrazing3d)
     throw InputError(std::to_string(nb) + " grazing points: at most " + std::to_string(kMaxGrazing3d) +
                      " (2^n_b separation cases)");
-  if (static_cast<int>(sliding.size()) + k * nb > lcp::kMaxEnumerationSize)
+  if (static_cast<int>(f.sliding.size()) + k * nb > lcp::kMaxEnumerationSize)
     throw InputError("the faceted LCP would have size n_d + k n_b = " +
-                     std::to_string(sliding.size() + static_cast<std::size_t>(k) * nb) +
+                     std::to_string(f.sliding.size() + static_cast<std::size_t>(k) * nb) +
                      " > " + std::to_string(lcp::kMaxEnumerationSize) + ": use fewer facets");
+  f.a = sys.A.cwiseAbs().maxCoeff();
+  double fs = user_dF.cwiseAbs().maxCoeff();
+  if (fs == 0) fs = 1;
+  f.A = sys.A / f.a;
+  f.dF = user_dF / fs;
+  f.force_back = fs;
+  f.disp_back = fs / f.a;
+  f.poly.resize(static_cast<std::size_t>(n));
+  for (int i : f.grazing) f.poly[i] = polygon(sys.points[i].alpha, k);
+  return f;
+}
 
-  // Normalized units (as unit_scaling.hpp for one point): A / |A|, C_T |A|, dF / |dF|.
-  const double a = sys.A.cwiseAbs().maxCoeff();
-  double f = user_dF.cwiseAbs().maxCoeff();
-  if (f == 0) f = 1;
-  const Eigen::MatrixXd A = sys.A / a;
-  const Eigen::VectorXd dF = user_dF / f;
-  const double force_back = f, disp_back = f / a;
+/// The rate equations of one separation case, K x = r0 + R z with x = (dP (3N), dw (3N)) and
+/// the multipliers z: one per sliding point, k per grazing point in contact.
+struct CaseEquations {
+  std::vector<int> z_of;  ///< first multiplier of each point, -1 without
+  int m = 0;
+  Eigen::MatrixXd K, R;
+  Eigen::VectorXd r0;
+  std::vector<Eigen::Vector2d> n0;  ///< sliding points: the ellipse's normal at P_T
+  std::vector<double> kappa;        ///< sliding points: k_a P_N / (3 P_s)
+};
 
-  std::vector<Polygon> poly(static_cast<std::size_t>(n));
-  for (int i : grazing) poly[i] = polygon(sys.points[i].alpha, k);
+CaseEquations case_equations(const Faceted& f, unsigned mask) {
+  const int n = f.n, k = f.k, dim = 6 * n;
+  const ContactSystem3d& sys = f.sys;
+  CaseEquations c;
+  c.z_of.assign(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    const char s = sys.points[i].state.state;
+    if (s == 'd') c.z_of[i] = c.m, c.m += 1;
+    if (s == 'b' && !f.separated(mask, i)) c.z_of[i] = c.m, c.m += k;
+  }
+  c.K = Eigen::MatrixXd::Zero(dim, dim);
+  c.R = Eigen::MatrixXd::Zero(dim, c.m);
+  c.r0 = Eigen::VectorXd::Zero(dim);
+  // equilibrium dP + A dw = dF
+  c.K.topLeftCorner(3 * n, 3 * n).setIdentity();
+  c.K.topRightCorner(3 * n, 3 * n) = f.A;
+  c.r0.head(3 * n) = f.dF;
+  c.n0.resize(static_cast<std::size_t>(n));
+  c.kappa.assign(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    const SystemPoint3d& pt = sys.points[i];
+    const int row = 3 * n + 3 * i, P = 3 * i, W = 3 * n + 3 * i;
+    const double C_T = pt.C_T * f.a;
+    const char s = pt.state.state;
+    if (s == 'a' || (s == 'b' && f.separated(mask, i))) {
+      for (int j = 0; j < 3; ++j) c.K(row + j, P + j) = 1;  // dP_i = 0
+      continue;
+    }
+    for (int j = 0; j < 2; ++j) c.K(row + j, W + j) = 1, c.K(row + j, P + j) = -C_T;  // dw_T - C_T dP_T
+    c.K(row + 2, W + 2) = 1;                                                          // dw_N
+    if (s == 'd') {
+      const Eigen::Vector2d t0 = pt.state.P_T.cwiseQuotient(pt.alpha).normalized();
+      c.n0[i] = t0.cwiseQuotient(pt.alpha);
+      c.kappa[i] = pt.k_a / (3 * pt.P_s) * pt.state.P_N;
+      c.R(row, c.z_of[i]) = c.n0[i](0);
+      c.R(row + 1, c.z_of[i]) = c.n0[i](1);
+      c.R(row + 2, c.z_of[i]) = c.kappa[i];
+    } else if (s == 'b') {
+      c.R.block(row, c.z_of[i], 2, k) = f.poly[i].N;
+    }
+  }
+  return c;
+}
 
+/// The complementarity of the case in the multipliers, x = x0 + X z: sliding points
+/// mu dP_N - n0 . dP_T; grazing contact points per facet mu h_j dP_N - n_j . dP_T.
+LcpProblem case_lcp(const Faceted& f, const CaseEquations& c, const Eigen::VectorXd& x0,
+                    const Eigen::MatrixXd& X) {
+  LcpProblem lcp;
+  lcp.M = Mat::Zero(c.m, c.m);
+  lcp.q = Vec::Zero(c.m);
+  for (int i = 0; i < f.n; ++i) {
+    if (c.z_of[i] < 0) continue;
+    const double mu = f.sys.points[i].mu;
+    const int P = 3 * i;
+    if (f.sys.points[i].state.state == 'd') {
+      const Eigen::Vector2d& n0 = c.n0[i];
+      lcp.M.row(c.z_of[i]) = mu * X.row(P + 2) - n0(0) * X.row(P) - n0(1) * X.row(P + 1);
+      lcp.q(c.z_of[i]) = mu * x0(P + 2) - n0(0) * x0(P) - n0(1) * x0(P + 1);
+    } else {
+      for (int j = 0; j < f.k; ++j) {
+        const Eigen::Vector2d nj = f.poly[i].N.col(j);
+        const double h = f.poly[i].h(j);
+        lcp.M.row(c.z_of[i] + j) = mu * h * X.row(P + 2) - nj(0) * X.row(P) - nj(1) * X.row(P + 1);
+        lcp.q(c.z_of[i] + j) = mu * h * x0(P + 2) - nj(0) * x0(P) - nj(1) * x0(P + 1);
+      }
+    }
+  }
+  return lcp;
+}
+
+/// Separated grazing points must open: dw_N < 0, read outside the rounding band of the solve
+/// K x = r (backward stable: eps |K| |x| + |r|, carried by the row of K^-1 that gives dw_N;
+/// faceted_rate_3d.cpp, commit 3197885): no fixed band, no "1 +" (issue 24). Returns false when
+/// a separated point closes; `undecided` when one opens only within rounding.
+bool separated_points_open(const Faceted& f, const CaseEquations& c,
+                           const Eigen::PartialPivLU<Eigen::MatrixXd>& lu, unsigned mask,
+                           const Eigen::VectorXd& x, const Eigen::VectorXd& z, bool& undecided) {
+  const int n = f.n, dim = 6 * n;
+  undecided = false;
+  for (int b = 0; b < f.nb(); ++b) {
+    if (!((mask >> b) & 1u)) continue;
+    const int iN = 3 * n + 3 * f.grazing[b] + 2;
+    const Eigen::VectorXd rowN = lu.transpose().solve(Eigen::VectorXd::Unit(dim, iN));
+    Eigen::VectorXd terms = c.K.cwiseAbs() * x.cwiseAbs() + c.r0.cwiseAbs();
+    if (c.m > 0) terms += c.R.cwiseAbs() * z.cwiseAbs();
+    const double band = 64 * 2.220446049250313e-16 * rowN.cwiseAbs().dot(terms);
+    const double dwN = x(iN);
+    if (dwN < -band) continue;
+    if (dwN <= band) undecided = true; else return false;
+  }
+  return true;
+}
+
+/// The rates and types of every point, in the caller's units, from x = (dP, dw) and z.
+SystemSolution3d case_solution(const Faceted& f, const CaseEquations& c, unsigned mask,
+                               const Eigen::VectorXd& x, const Eigen::VectorXd& z) {
+  const int n = f.n;
+  SystemSolution3d sol;
+  for (int i = 0; i < n; ++i) {
+    const SystemPoint3d& pt = f.sys.points[i];
+    Rates3d r;
+    r.dP_T = x.segment<2>(3 * i) * f.force_back;
+    r.dP_N = x(3 * i + 2) * f.force_back;
+    r.dw_T = x.segment<2>(3 * n + 3 * i) * f.disp_back;
+    r.dw_N = x(3 * n + 3 * i + 2) * f.disp_back;
+    r.dw_Ti = r.dw_T - pt.C_T * r.dP_T;
+    const char s = pt.state.state;
+    Type3d type = Type3d::kStick;
+    if (s == 'a' || (s == 'b' && f.separated(mask, i))) {
+      type = s == 'a' ? Type3d::kOpen : Type3d::kSeparation;
+      r.dP_T.setZero();  // constrained to 0 (the solve leaves rounding noise)
+      r.dP_N = 0;
+      r.dw_Ti = r.dw_T;
+    } else if (s == 'd') {
+      const double lambda = z(c.z_of[i]);
+      r.dw_w = c.kappa[i] * lambda * f.disp_back;
+      if (lambda > kTol) type = Type3d::kSlip;
+      r.dw_Ti = lambda * c.n0[i] * f.disp_back;  // exactly along the normal
+    } else if (s == 'b') {
+      const Eigen::Vector2d slip = f.poly[i].N * z.segment(c.z_of[i], f.k);
+      r.dw_Ti = slip * f.disp_back;
+      if (slip.cwiseAbs().maxCoeff() > 1e-9) type = Type3d::kSlip;
+    } else {
+      r.dw_Ti.setZero();
+    }
+    sol.types.push_back(type);
+    sol.rates.push_back(r);
+  }
+  return sol;
+}
+
+/// Whether `sol` has the rates of a listed solution (to 1e-8 in the normalized units).
+bool already_listed(const Faceted& f, const std::vector<SystemSolution3d>& listed,
+                    const SystemSolution3d& sol) {
+  for (const auto& o : listed) {
+    double d = 0;
+    for (int i = 0; i < f.n; ++i)
+      d = std::max({d, (o.rates[i].dP_T - sol.rates[i].dP_T).cwiseAbs().maxCoeff() / f.force_back,
+                    std::abs(o.rates[i].dP_N - sol.rates[i].dP_N) / f.force_back,
+                    (o.rates[i].dw_T - sol.rates[i].dw_T).cwiseAbs().maxCoeff() / f.disp_back,
+                    std::abs(o.rates[i].dw_N - sol.rates[i].dw_N) / f.disp_back});
+    if (d <= 1e-8) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
+                                             const Eigen::VectorXd& user_dF, int k,
+                                             double time_limit_s) {
+  const Faceted f = prepare(user_sys, user_dF, k, time_limit_s);
+  const int n = f.n, nb = f.nb(), dim = 6 * n;  // x = (dP (3N), dw (3N))
   SystemRateSet3d out;
   out.facets = k;
   // One deadline for the whole solve (every separation case), not one per enumeration: 2^n_b
   // cases of up to the limit each would not end (issue 24, item 11).
   const Stopwatch clock;
-  const int dim = 6 * n;  // x = (dP (3N), dw (3N))
   auto note = [&](const std::string& m) {
     out.complete = false;
     if (out.message.empty()) out.message = m;
@@ -117,78 +299,17 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
                     " separation cases: the solutions found are not the whole set";
       break;
     }
-    auto separated = [&](int i) {
-      for (int b = 0; b < nb; ++b)
-        if (grazing[b] == i) return ((mask >> b) & 1u) != 0;
-      return false;
-    };
-    // multipliers: one per sliding point, k per grazing point in contact
-    std::vector<int> z_of(static_cast<std::size_t>(n), -1);
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      const char s = sys.points[i].state.state;
-      if (s == 'd') z_of[i] = m, m += 1;
-      if (s == 'b' && !separated(i)) z_of[i] = m, m += k;
-    }
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dim, dim), R = Eigen::MatrixXd::Zero(dim, m);
-    Eigen::VectorXd r0 = Eigen::VectorXd::Zero(dim);
-    // equilibrium dP + A dw = dF
-    K.topLeftCorner(3 * n, 3 * n).setIdentity();
-    K.topRightCorner(3 * n, 3 * n) = A;
-    r0.head(3 * n) = dF;
-    std::vector<Eigen::Vector2d> n0(static_cast<std::size_t>(n));
-    std::vector<double> kappa(static_cast<std::size_t>(n), 0.0);
-    for (int i = 0; i < n; ++i) {
-      const SystemPoint3d& pt = sys.points[i];
-      const int row = 3 * n + 3 * i, P = 3 * i, W = 3 * n + 3 * i;
-      const double C_T = pt.C_T * a;
-      const char s = pt.state.state;
-      if (s == 'a' || (s == 'b' && separated(i))) {
-        for (int c = 0; c < 3; ++c) K(row + c, P + c) = 1;  // dP_i = 0
-        continue;
-      }
-      for (int c = 0; c < 2; ++c) K(row + c, W + c) = 1, K(row + c, P + c) = -C_T;  // dw_T - C_T dP_T
-      K(row + 2, W + 2) = 1;                                                      // dw_N
-      if (s == 'd') {
-        const Eigen::Vector2d t0 = pt.state.P_T.cwiseQuotient(pt.alpha).normalized();
-        n0[i] = t0.cwiseQuotient(pt.alpha);
-        kappa[i] = pt.k_a / (3 * pt.P_s) * pt.state.P_N;
-        R(row, z_of[i]) = n0[i](0);
-        R(row + 1, z_of[i]) = n0[i](1);
-        R(row + 2, z_of[i]) = kappa[i];
-      } else if (s == 'b') {
-        R.block(row, z_of[i], 2, k) = poly[i].N;
-      }
-    }
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(K);
-    const Eigen::VectorXd x0 = lu.solve(r0);
+    const CaseEquations c = case_equations(f, mask);
+    const int m = c.m;
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(c.K);
+    const Eigen::VectorXd x0 = lu.solve(c.r0);
     // (no solve with an empty right-hand side: Eigen's triangular solve binds a reference to
     // its null data, which UBSan reports)
-    const Eigen::MatrixXd X = m > 0 ? Eigen::MatrixXd(lu.solve(R)) : Eigen::MatrixXd(dim, 0);
+    const Eigen::MatrixXd X = m > 0 ? Eigen::MatrixXd(lu.solve(c.R)) : Eigen::MatrixXd(dim, 0);
     if (!x0.allFinite() || !X.allFinite() ||
-        (K * x0 - r0).cwiseAbs().maxCoeff() > 1e-9 * (1 + r0.cwiseAbs().maxCoeff())) {
+        (c.K * x0 - c.r0).cwiseAbs().maxCoeff() > 1e-9 * (1 + c.r0.cwiseAbs().maxCoeff())) {
       note("the rate equations are singular for a separation case: not resolved");
       continue;
-    }
-    // complementarity: d points mu dP_N - n0 . dP_T; grazing contact points per facet
-    // mu h_j dP_N - n_j . dP_T
-    LcpProblem lcp;
-    lcp.M = Mat::Zero(m, m);
-    lcp.q = Vec::Zero(m);
-    for (int i = 0; i < n; ++i) {
-      if (z_of[i] < 0) continue;
-      const double mu = sys.points[i].mu;
-      const int P = 3 * i;
-      if (sys.points[i].state.state == 'd') {
-        lcp.M.row(z_of[i]) = mu * X.row(P + 2) - n0[i](0) * X.row(P) - n0[i](1) * X.row(P + 1);
-        lcp.q(z_of[i]) = mu * x0(P + 2) - n0[i](0) * x0(P) - n0[i](1) * x0(P + 1);
-      } else {
-        for (int j = 0; j < k; ++j) {
-          const Eigen::Vector2d nj = poly[i].N.col(j);
-          lcp.M.row(z_of[i] + j) = mu * poly[i].h(j) * X.row(P + 2) - nj(0) * X.row(P) - nj(1) * X.row(P + 1);
-          lcp.q(z_of[i] + j) = mu * poly[i].h(j) * x0(P + 2) - nj(0) * x0(P) - nj(1) * x0(P + 1);
-        }
-      }
     }
     std::vector<Eigen::VectorXd> zs;
     if (m == 0) {
@@ -196,7 +317,7 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
     } else {
       lcp::EnumerationOptions opt;
       opt.time_limit_s = std::max(1e-3, time_limit_s - clock.seconds());  // what is left
-      const lcp::SolutionSet set = lcp::enumerate_all(lcp, opt);
+      const lcp::SolutionSet set = lcp::enumerate_all(case_lcp(f, c, x0, X), opt);
       out.nodes += set.nodes;
       if (!set.complete && clock.seconds() >= time_limit_s) {
         out.timed_out = true;
@@ -218,87 +339,21 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
     }
     for (const Eigen::VectorXd& z : zs) {
       const Eigen::VectorXd x = m == 0 ? x0 : Eigen::VectorXd(x0 + X * z);
-      // separated grazing points must open: dw_N < 0, read outside the rounding band of the
-      // solve K x = r (backward stable: eps |K| |x| + |r|, carried by the row of K^-1 that
-      // gives dw_N; faceted_rate_3d.cpp, commit 3197885): no fixed band, no "1 +" (issue 24)
-      bool ok = true, undecided = false;
-      for (int b = 0; b < nb && ok; ++b) {
-        if (!((mask >> b) & 1u)) continue;
-        const int iN = 3 * n + 3 * grazing[b] + 2;
-        const Eigen::VectorXd rowN = lu.transpose().solve(Eigen::VectorXd::Unit(dim, iN));
-        Eigen::VectorXd terms = K.cwiseAbs() * x.cwiseAbs() + r0.cwiseAbs();
-        if (m > 0) terms += R.cwiseAbs() * z.cwiseAbs();
-        const double band = 64 * 2.220446049250313e-16 * rowN.cwiseAbs().dot(terms);
-        const double dwN = x(iN);
-        if (dwN < -band) continue;
-        if (dwN <= band) undecided = true; else ok = false;
-      }
-      if (!ok) continue;
-      SystemSolution3d sol;
-      for (int i = 0; i < n; ++i) {
-        const SystemPoint3d& pt = sys.points[i];
-        Rates3d r;
-        r.dP_T = x.segment<2>(3 * i) * force_back;
-        r.dP_N = x(3 * i + 2) * force_back;
-        r.dw_T = x.segment<2>(3 * n + 3 * i) * disp_back;
-        r.dw_N = x(3 * n + 3 * i + 2) * disp_back;
-        r.dw_Ti = r.dw_T - pt.C_T * r.dP_T;
-        const char s = pt.state.state;
-        Type3d type = Type3d::kStick;
-        if (s == 'a' || (s == 'b' && separated(i))) {
-          type = s == 'a' ? Type3d::kOpen : Type3d::kSeparation;
-          r.dP_T.setZero();  // constrained to 0 (the solve leaves rounding noise)
-          r.dP_N = 0;
-          r.dw_Ti = r.dw_T;
-        }
-        else if (s == 'd') {
-          const double lambda = z(z_of[i]);
-          r.dw_w = kappa[i] * lambda * disp_back;
-          if (lambda > kTol) type = Type3d::kSlip;
-          r.dw_Ti = lambda * n0[i] * disp_back;  // exactly along the normal
-        } else if (s == 'b') {
-          const Eigen::Vector2d slip = poly[i].N * z.segment(z_of[i], k);
-          r.dw_Ti = slip * disp_back;
-          if (slip.cwiseAbs().maxCoeff() > 1e-9) type = Type3d::kSlip;
-        } else {
-          r.dw_Ti.setZero();
-        }
-        sol.types.push_back(type);
-        sol.rates.push_back(r);
-      }
-      // deduplicate (the same physical rates from another basis or case)
-      bool seen = false;
-      for (const auto& o : out.solutions) {
-        double d = 0;
-        for (int i = 0; i < n; ++i) {
-          d = std::max({d, (o.rates[i].dP_T - sol.rates[i].dP_T).cwiseAbs().maxCoeff() / force_back,
-                        std::abs(o.rates[i].dP_N - sol.rates[i].dP_N) / force_back,
-                        (o.rates[i].dw_T - sol.rates[i].dw_T).cwiseAbs().maxCoeff() / disp_back,
-                        std::abs(o.rates[i].dw_N - sol.rates[i].dw_N) / disp_back});
-        }
-        seen = seen || d <= 1e-8;
-      }
+      bool undecided = false;
+      if (!separated_points_open(f, c, lu, mask, x, z, undecided)) continue;
+      SystemSolution3d sol = case_solution(f, c, mask, x, z);
       if (undecided) {
         // decided only if the same rates come from the contact case (the point closed with
         // dP = 0 and dw_N = 0); checked once every case is done
         pending.push_back(std::move(sol));
         continue;
       }
-      if (!seen) out.solutions.push_back(std::move(sol));
+      // deduplicate (the same physical rates from another basis or case)
+      if (!already_listed(f, out.solutions, sol)) out.solutions.push_back(std::move(sol));
     }
   }
   for (const SystemSolution3d& sol : pending) {
-    bool seen = false;
-    for (const auto& o : out.solutions) {
-      double d = 0;
-      for (int i = 0; i < n; ++i)
-        d = std::max({d, (o.rates[i].dP_T - sol.rates[i].dP_T).cwiseAbs().maxCoeff() / force_back,
-                      std::abs(o.rates[i].dP_N - sol.rates[i].dP_N) / force_back,
-                      (o.rates[i].dw_T - sol.rates[i].dw_T).cwiseAbs().maxCoeff() / disp_back,
-                      std::abs(o.rates[i].dw_N - sol.rates[i].dw_N) / disp_back});
-      seen = seen || d <= 1e-8;
-    }
-    if (!seen) {
+    if (!already_listed(f, out.solutions, sol)) {
       out.complete = false;
       if (out.message.empty())
         out.message = "a separated point's normal rate dw_N is zero within the rounding of the "
