@@ -19,11 +19,11 @@
 #include <sstream>
 
 #include "cli_common.hpp"
-#include "map_chunks.hpp"
+#include "cpkit/rate_problem/maps/grid_map_run.hpp"
 #include "map_files.hpp"
 #include "map_system.hpp"
 #include "map_system_3d.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
@@ -343,11 +343,6 @@ struct GridEstimate {
 GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options, bool csv,
                                    bool writing);
 
-int worker_threads(int requested, int rows) {
-  int t = requested > 0 ? requested : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, std::min(t, rows));
-}
-
 GridEstimate estimate_grid(const MapSetup& s, const MapOptions& options, bool csv, bool writing) {
   try {
     return estimate_grid_sampled(s, options, csv, writing);
@@ -369,7 +364,7 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
   if (s.kind == MapKind::kParamDirection) {
     const double n = s.axis.n, tn = s.theta_n;
     e.cells = n * tn;
-    e.threads = worker_threads(options.threads, s.axis.n);
+    e.threads = rate::map_worker_threads(options.threads, s.axis.n);
     MapAxis sa = s.axis;
     sa.n = std::min(s.axis.n, 8);
     const int ts = std::min(s.theta_n, 1024);
@@ -400,12 +395,12 @@ GridEstimate estimate_grid_sampled(const MapSetup& s, const MapOptions& options,
     if (writing)
       e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (sa.n * ts)
                      : e.cells * (2 + cross_bytes) + 8 * (n + tn) + 5 * 128;
-    // The finished chunks stay in PREFIX.parts until the outputs are complete (map_chunks.hpp).
+    // The finished chunks stay in PREFIX.parts until the outputs are complete (maps/map_run.hpp).
     if (writing) e.output += e.cells * (2 + cross_bytes);
   } else {
     const double n1 = s.axis.n, n2 = s.axis2.n;
     e.cells = n1 * n2;
-    e.threads = worker_threads(options.threads, s.axis.n);
+    e.threads = rate::map_worker_threads(options.threads, s.axis.n);
     MapAxis a1 = s.axis, a2 = s.axis2;
     a1.n = std::min(s.axis.n, 3);
     a2.n = std::min(s.axis2.n, 6);
@@ -693,18 +688,19 @@ int run_map(const MapArgs& a) {
       return v;
     };
 
-    // The rows are computed in chunks (map_chunks.hpp): spread over the ranks of an MPI job,
-    // kept in PREFIX.parts for --resume, consumed in row order; the outputs are those of one
-    // pass over the map.
-    nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", j["kind"]},
-                               {"model", j["model"]}, {"method", a.method}, {"format", a.format},
-                               {"axis", {{"param", to_string(s.axis.param)}, {"from", s.axis.from},
-                                         {"to", s.axis.to}, {"n", s.axis.n}}}};
-    ChunkRunStats stats;
+    // The rows are computed in chunks (maps/grid_map_run.hpp): spread over the ranks of an MPI
+    // job, kept in PREFIX.parts for --resume, consumed in row order; the outputs are those of
+    // one pass over the map.
+    rate::GridRunOptions run;
+    run.checkpoint_prefix = prefix;
+    run.resume = a.resume;
+    run.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", j["kind"]}, {"model", j["model"]},
+                    {"method", a.method}, {"format", a.format}};
+    run.transport = mpi::map_transport();
+    run.progress = make_map_progress();
     if (s.kind == MapKind::kParamDirection) {
       const std::vector<double> theta =
           map_theta_values(s.theta_n, options.theta_from, options.theta_to);
-      manifest["theta"] = {{"n", s.theta_n}, {"from", options.theta_from}, {"to", options.theta_to}};
       // Rank 0 alone writes: the files are opened when the first chunk arrives.
       bool opened = false;
       auto open_files = [&] {
@@ -719,98 +715,32 @@ int run_map(const MapArgs& a) {
         }
         opened = true;
       };
-      const ChunkPlan plan = plan_chunks(s.axis.n, s.theta_n);
-      auto compute = [&](int k) {
-        MapChunk c;
-        c.index = k;
-        c.row_begin = plan.begin(k);
-        c.row_end = plan.end(k);
-        std::string cnt, typ, dis;
-        const ParamDirectionMap part = compute_param_direction_map(
-            s.params, s.state, s.axis, s.theta_n, options, {},
-            [&](const ParamDirectionRows& r) {
-              const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                        static_cast<std::size_t>(s.theta_n);
-              cnt.append(reinterpret_cast<const char*>(r.count), cells);
-              typ.append(reinterpret_cast<const char*>(r.types), cells);
-              if (r.disagree) dis.append(reinterpret_cast<const char*>(r.disagree), cells);
-            },
-            RowRange{c.row_begin, c.row_end});
-        nlohmann::json crit = nlohmann::json::array(), values = nlohmann::json::array();
-        for (const auto& d : part.critical_directions)
-          crit.push_back({d.x, d.theta, d.conditions, d.summary.count, d.summary.types,
-                          d.summary.reliable});
-        for (const auto& v : part.critical_values) values.push_back({v.name, v.x, v.y});
-        c.summary = {{"boxes", boxes_to_json(part.classes)}, {"type_cells", part.type_cells},
-                     {"disagreements", part.disagreements}, {"unreliable", part.unreliable},
-                     {"critical_directions", crit}, {"critical_values", values}};
-        c.arrays = {std::move(cnt), std::move(typ)};
-        if (cross) c.arrays.push_back(std::move(dis));
-        return c;
-      };
-      // The whole map's summary, merged from the chunks in row order.
-      ParamDirectionMap m;
-      m.axis = s.axis;
-      m.theta_n = s.theta_n;
-      m.theta_from = options.theta_from;
-      m.theta_to = options.theta_to;
-      m.theta = theta;
-      m.cross_checked = cross;
-      m.threads = worker_threads(options.threads, s.axis.n);
-      std::map<int, GridClassBox> boxes;
       std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
-      auto consume = [&](const MapChunk& c) {
+      auto sink = [&](const ParamDirectionRows& r) {
         if (!opened) open_files();
-        const std::size_t cells = static_cast<std::size_t>(c.row_end - c.row_begin) *
+        const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
                                   static_cast<std::size_t>(s.theta_n);
-        if (c.arrays.size() != (cross ? 3u : 2u))
-          throw InputError("corrupt map chunk " + std::to_string(c.index));
-        for (const auto& arr : c.arrays)
-          if (arr.size() != cells) throw InputError("corrupt map chunk " + std::to_string(c.index));
-        ParamDirectionRows r;
-        r.row_begin = c.row_begin;
-        r.row_end = c.row_end;
-        r.count = reinterpret_cast<const int8_t*>(c.arrays[0].data());
-        r.types = reinterpret_cast<const uint8_t*>(c.arrays[1].data());
-        r.disagree = cross ? reinterpret_cast<const uint8_t*>(c.arrays[2].data()) : nullptr;
         out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
         if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
         for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
           if (r.disagree[k])
             shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
                                static_cast<int>(k % s.theta_n));
-        const nlohmann::json& sum = c.summary;
-        merge_boxes(boxes, sum.at("boxes"));
-        for (std::size_t b = 0; b < m.type_cells.size(); ++b)
-          m.type_cells[b] += sum.at("type_cells").at(b).get<int64_t>();
-        m.disagreements += sum.at("disagreements").get<int64_t>();
-        m.unreliable += sum.at("unreliable").get<int64_t>();
-        for (const auto& d : sum.at("critical_directions")) {
-          RateSummary rs;
-          rs.count = d.at(3).get<int>();
-          rs.types = d.at(4).get<unsigned>();
-          rs.reliable = d.at(5).get<bool>();
-          m.critical_directions.push_back(
-              {d.at(0).get<double>(), d.at(1).get<double>(), d.at(2).get<std::string>(), rs});
-        }
-        if (c.index == 0)  // the analytic curves are the whole axis's: every chunk has them
-          for (const auto& v : sum.at("critical_values"))
-            m.critical_values.push_back(
-                {v.at(0).get<std::string>(), v.at(1).get<double>(), v.at(2).get<double>()});
       };
+      rate::ParamDirectionRun res;
       try {
-        stats = run_map_chunks(prefix, a.resume, manifest, plan, compute, consume,
-                               make_map_progress());
+        res = rate::run_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, run,
+                                            sink);
         if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
         out.finish();
       } catch (...) {
         out.discard();
         throw;
       }
-      for (const auto& [code, b] : boxes) m.classes.push_back(b);
+      ParamDirectionMap& m = res.map;
       m.seconds = clock.seconds();
       j.update(to_json(m));
-      add_run_figures(j, stats);
+      rate::add_run_figures(j, res.stats);
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
       report_unreliable(m.unreliable, "cells");
@@ -866,84 +796,27 @@ int run_map(const MapArgs& a) {
         }
         opened = true;
       };
-      manifest["axis2"] = {{"param", to_string(s.axis2.param)}, {"from", s.axis2.from},
-                           {"to", s.axis2.to}, {"n", s.axis2.n}};
-      const ChunkPlan plan = plan_chunks(s.axis.n, s.axis2.n);
-      auto compute = [&](int k) {
-        MapChunk c;
-        c.index = k;
-        c.row_begin = plan.begin(k);
-        c.row_end = plan.end(k);
-        std::string cls, lo, hi, typ, dis;
-        const ParamParamMap part = compute_param_param_map(
-            s.params, s.state, s.axis, s.axis2, options, {},
-            [&](const ParamParamRows& r) {
-              const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                        static_cast<std::size_t>(s.axis2.n);
-              cls.append(reinterpret_cast<const char*>(r.cls), cells);
-              lo.append(reinterpret_cast<const char*>(r.min_count), cells);
-              hi.append(reinterpret_cast<const char*>(r.max_count), cells);
-              typ.append(reinterpret_cast<const char*>(r.types), cells);
-              if (r.disagree) dis.append(reinterpret_cast<const char*>(r.disagree), cells);
-            },
-            RowRange{c.row_begin, c.row_end});
-        nlohmann::json curve = nlohmann::json::array();
-        for (const auto& v : part.critical_curve) curve.push_back({v.name, v.x, v.y});
-        c.summary = {{"boxes", boxes_to_json(part.classes)},
-                     {"disagreements", part.disagreements},
-                     {"inconsistent_sectors", part.inconsistent_sectors},
-                     {"unreliable", part.unreliable}, {"critical_curve", curve}};
-        c.arrays = {std::move(cls), std::move(lo), std::move(hi), std::move(typ)};
-        if (cross) c.arrays.push_back(std::move(dis));
-        return c;
-      };
-      ParamParamMap m;
-      m.axis1 = s.axis;
-      m.axis2 = s.axis2;
-      m.cross_checked = cross;
-      m.threads = worker_threads(options.threads, s.axis.n);
-      std::map<int, GridClassBox> boxes;
-      auto consume = [&](const MapChunk& c) {
+      auto sink = [&](const ParamParamRows& r) {
         if (!opened) open_files();
-        const std::size_t cells = static_cast<std::size_t>(c.row_end - c.row_begin) *
+        const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
                                   static_cast<std::size_t>(s.axis2.n);
-        if (c.arrays.size() != (cross ? 5u : 4u))
-          throw InputError("corrupt map chunk " + std::to_string(c.index));
-        for (const auto& arr : c.arrays)
-          if (arr.size() != cells) throw InputError("corrupt map chunk " + std::to_string(c.index));
-        ParamParamRows r;
-        r.row_begin = c.row_begin;
-        r.row_end = c.row_end;
-        r.cls = reinterpret_cast<const uint8_t*>(c.arrays[0].data());
-        r.min_count = reinterpret_cast<const int8_t*>(c.arrays[1].data());
-        r.max_count = reinterpret_cast<const int8_t*>(c.arrays[2].data());
-        r.types = reinterpret_cast<const uint8_t*>(c.arrays[3].data());
-        r.disagree = cross ? reinterpret_cast<const uint8_t*>(c.arrays[4].data()) : nullptr;
         out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
                    static_cast<int64_t>(cells));
         if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
-        const nlohmann::json& sum = c.summary;
-        merge_boxes(boxes, sum.at("boxes"));
-        m.disagreements += sum.at("disagreements").get<int64_t>();
-        m.inconsistent_sectors += sum.at("inconsistent_sectors").get<int64_t>();
-        m.unreliable += sum.at("unreliable").get<int64_t>();
-        for (const auto& v : sum.at("critical_curve"))
-          m.critical_curve.push_back(
-              {v.at(0).get<std::string>(), v.at(1).get<double>(), v.at(2).get<double>()});
       };
+      rate::ParamParamRun res;
       try {
-        stats = run_map_chunks(prefix, a.resume, manifest, plan, compute, consume,
-                               make_map_progress());
+        res = rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
         if (mpi::rank() != 0) return kExitOk;
         out.finish();
       } catch (...) {
         out.discard();
         throw;
       }
-      for (const auto& [code, b] : boxes) m.classes.push_back(b);
+      ParamParamMap& m = res.map;
       m.seconds = clock.seconds();
       j.update(to_json(m));
-      add_run_figures(j, stats);
+      rate::add_run_figures(j, res.stats);
       disagreements = m.disagreements;
       report_disagreements(m.disagreements, "cells");
       report_unreliable(m.unreliable, "direction-map evaluations");
@@ -981,7 +854,7 @@ int run_map(const MapArgs& a) {
       write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
     }
     // The outputs are complete: the finished chunks kept for --resume are no longer needed.
-    if (s.kind != MapKind::kDirection) remove_checkpoint(prefix + ".parts");
+    if (s.kind != MapKind::kDirection) rate::remove_checkpoint(prefix + ".parts");
   }
   if (a.json) {
     print_json(j);

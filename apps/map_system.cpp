@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "map_chunks.hpp"
+#include "cpkit/rate_problem/maps/map_run.hpp"
 #include "map_files.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "machine_resources.hpp"
 #include "map_system.hpp"
 #include "cpkit/core/errors.hpp"
@@ -230,7 +230,7 @@ int resolved_threads(int requested) {
 nlohmann::json chunk_summary(const std::vector<GridClassBox>& classes,
                              const SystemPatternTable& table, int64_t unreliable,
                              int64_t inconsistent, int m_max) {
-  return {{"boxes", boxes_to_json(classes)}, {"patterns", table.patterns},
+  return {{"boxes", rate::boxes_to_json(classes)}, {"patterns", table.patterns},
           {"unreliable", unreliable}, {"inconsistent", inconsistent}, {"m_max", m_max}};
 }
 
@@ -262,7 +262,7 @@ struct GridMerge {
       id = to_global[id];
       ++table.cells[id];
     }
-    merge_boxes(boxes, summary.at("boxes"));
+    rate::merge_boxes(boxes, summary.at("boxes"));
     unreliable += summary.at("unreliable").get<int64_t>();
     inconsistent += summary.at("inconsistent").get<int64_t>();
     m_max = std::max(m_max, summary.at("m_max").get<int>());
@@ -276,15 +276,16 @@ std::vector<uint16_t> ids_of(const std::string& bytes) {
 }
 
 /// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing).
-ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const ContactSystem& sys,
-                              const nlohmann::json& input, const ChunkPlan& plan,
-                              const std::function<MapChunk(int)>& compute,
-                              const std::function<void(const MapChunk&)>& consume) {
+rate::ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const ContactSystem& sys,
+                              const nlohmann::json& input, const rate::ChunkPlan& plan,
+                              const std::function<rate::MapChunk(int)>& compute,
+                              const std::function<void(const rate::MapChunk&)>& consume) {
   const nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind},
                                    {"input", input},
                                    {"system_data_fnv1a", system_fingerprint(sys)},
                                    {"format", r.format}};
-  return run_map_chunks(r.out, r.resume, manifest, plan, compute, consume, make_map_progress());
+  return rate::run_map_chunks(r.out, r.resume, manifest, plan, compute, consume, make_map_progress(),
+                              mpi::map_transport());
 }
 
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
@@ -314,9 +315,9 @@ int run_param_direction(const SystemMapRequest& r) {
       {"theta_from", r.theta_from}, {"theta_to", r.theta_to},
       {"patterns", {as_list(e1), as_list(e2)}}};
   const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
-  const ChunkPlan plan = plan_chunks(r.n, r.theta_n);
+  const rate::ChunkPlan plan = rate::plan_chunks(r.n, r.theta_n);
   auto compute = [&](int k) {
-    MapChunk c;
+    rate::MapChunk c;
     c.index = k;
     c.row_begin = plan.begin(k);
     c.row_end = plan.end(k);
@@ -347,7 +348,7 @@ int run_param_direction(const SystemMapRequest& r) {
     }
     opened = true;
   };
-  auto consume = [&](const MapChunk& c) {
+  auto consume = [&](const rate::MapChunk& c) {
     if (!opened) open_files();
     const std::string& count = c.arrays.at(0);
     std::vector<uint16_t> ids = ids_of(c.arrays.at(1));
@@ -364,7 +365,7 @@ int run_param_direction(const SystemMapRequest& r) {
                       << count_to_string(static_cast<int8_t>(count[k])) << ',' << ids[k] << '\n';
       }
   };
-  ChunkRunStats stats;
+  rate::ChunkRunStats stats;
   try {
     stats = run_grid_chunks(r, sys, input, plan, compute, consume);
     if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
@@ -390,7 +391,7 @@ int run_param_direction(const SystemMapRequest& r) {
            {"complete", complete},
            {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
-  add_run_figures(run.j, stats);
+  rate::add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable
@@ -409,7 +410,7 @@ int run_param_direction(const SystemMapRequest& r) {
                 << axis.param.name() << " in [" << c.x_min << ", " << c.x_max << "]\n";
     print_pattern_table(merge.table, N);
   });
-  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  if (!r.out.empty()) rate::remove_checkpoint(r.out + ".parts");
   return code;
 }
 
@@ -442,9 +443,9 @@ int run_param_param(const SystemMapRequest& r) {
       {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", a1.param.name()},
       {"from", r.from}, {"to", r.to}, {"n", r.n}, {"param2", a2.param.name()},
       {"from2", r.from2}, {"to2", r.to2}, {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}};
-  const ChunkPlan plan = plan_chunks(r.n, r.n2);
+  const rate::ChunkPlan plan = rate::plan_chunks(r.n, r.n2);
   auto compute = [&](int k) {
-    MapChunk c;
+    rate::MapChunk c;
     c.index = k;
     c.row_begin = plan.begin(k);
     c.row_end = plan.end(k);
@@ -480,7 +481,7 @@ int run_param_param(const SystemMapRequest& r) {
     }
     opened = true;
   };
-  auto consume = [&](const MapChunk& c) {
+  auto consume = [&](const rate::MapChunk& c) {
     if (!opened) open_files();
     const std::string &cls = c.arrays.at(0), &lo = c.arrays.at(1), &hi = c.arrays.at(2);
     std::vector<uint16_t> ids = ids_of(c.arrays.at(3));
@@ -499,7 +500,7 @@ int run_param_param(const SystemMapRequest& r) {
                       << count_to_string(static_cast<int8_t>(hi[k])) << ',' << ids[k] << '\n';
       }
   };
-  ChunkRunStats stats;
+  rate::ChunkRunStats stats;
   try {
     stats = run_grid_chunks(r, sys, input, plan, compute, consume);
     if (mpi::rank() != 0) return kExitOk;
@@ -529,7 +530,7 @@ int run_param_param(const SystemMapRequest& r) {
            {"complete", complete},
            {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
-  add_run_figures(run.j, stats);
+  rate::add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable << " evaluations too close to call and "
@@ -547,7 +548,7 @@ int run_param_param(const SystemMapRequest& r) {
                 << "], " << a2.param.name() << " in [" << c.y_min << ", " << c.y_max << "]\n";
     print_pattern_table(merge.table, N);
   });
-  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  if (!r.out.empty()) rate::remove_checkpoint(r.out + ".parts");
   return code;
 }
 

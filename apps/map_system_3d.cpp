@@ -23,7 +23,7 @@
 #include "machine_resources.hpp"
 #include "map_files.hpp"
 #include "memory_limit.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"

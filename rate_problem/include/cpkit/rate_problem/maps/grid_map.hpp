@@ -103,7 +103,7 @@ std::vector<double> map_theta_values(int theta_n, double theta_from = 0,
 int grid_block_rows(int64_t columns) noexcept;
 
 /// The rows a call computes: [begin, end) of the first axis (end < 0: to the last row). A map
-/// split into row ranges (the chunks of a distributed or resumable run, apps/map_chunks.hpp)
+/// split into row ranges (the chunks of a distributed or resumable run, maps/map_run.hpp)
 /// has, in each part, the cells, counters, class boxes and per-row curves of its rows; the
 /// whole map is their merge in row order (for N-point maps the pattern tables are renumbered).
 /// Only the rows in the range are validated: validate the whole grid first
