@@ -465,123 +465,361 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
   }
 }
 
-int run_map(const MapArgs& a) {
-  if (a.list_presets) {
-    for (const auto& p : map_presets())
-      std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
-    return kExitOk;
+/// What the parts of a one-point map run share (run_map_one_point, run_grid_map).
+struct OnePointRun {
+  OnePointRun(const MapArgs& args, const MapSetup& setup) : a(args), s(setup) {}
+  const MapArgs& a;
+  const MapSetup& s;
+  MapOptions options;
+  bool csv = false;
+  double max_output = 0;
+  std::string prefix, name;
+  nlohmann::json j, files = nlohmann::json::object();
+  int64_t disagreements = 0;
+  Stopwatch clock;
+  std::function<void()> print_text;
+};
+
+/// The vector of an axis's values (the _x/_y files).
+std::vector<double> axis_values(const MapAxis& ax) {
+  std::vector<double> v(static_cast<std::size_t>(ax.n));
+  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
+  return v;
+}
+
+/// A parameter x direction map through the library's chunked run (grid_map_run.hpp), its cells
+/// streamed to the files; false on ranks other than 0.
+bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOptions& run) {
+  const MapArgs& a = p.a;
+  const MapSetup& s = p.s;
+  const MapOptions& options = p.options;
+  const std::string& prefix = p.prefix;
+  const std::string& name = p.name;
+  nlohmann::json& j = p.j;
+  nlohmann::json& files = p.files;
+  const bool csv = p.csv, cross = options.method != RateMethod::kEnumerate;
+  const Stopwatch& clock = p.clock;
+  int64_t& disagreements = p.disagreements;
+  std::function<void()>& print_text = p.print_text;
+  const std::vector<double> theta =
+      map_theta_values(s.theta_n, options.theta_from, options.theta_to);
+  // Rank 0 alone writes: the files are opened when the first chunk arrives.
+  bool opened = false;
+  auto open_files = [&] {
+    if (!prefix.empty() && !csv) {
+      out.add_npy("count", "|i1", s.axis.n, s.theta_n);
+      out.add_npy("types", "|u1", s.axis.n, s.theta_n);
+      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
+      out.write_vector("x", axis_values(s.axis));
+      out.write_vector("theta", theta);
+    } else if (!prefix.empty()) {
+      write_csv_header(s.axis, cross, out.open_csv());
+    }
+    opened = true;
+  };
+  std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
+  auto sink = [&](const ParamDirectionRows& r) {
+    if (!opened) open_files();
+    const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
+                              static_cast<std::size_t>(s.theta_n);
+    out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
+    if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
+    for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
+      if (r.disagree[k])
+        shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
+                           static_cast<int>(k % s.theta_n));
+  };
+  rate::ParamDirectionRun res;
+  try {
+    res = rate::run_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, run,
+                                        sink);
+    if (mpi::rank() != 0) return false;  // rank 0 writes and prints
+    out.finish();
+  } catch (...) {
+    out.discard();
+    throw;
   }
-  // The system file is read once (a pipe can be read only once) and dispatched on its dim.
-  std::optional<rate::SystemFile> file;
-  if (a.given("--system")) file = rate::read_system_file(a.system);
-  if (file && file->dim == 3) {
-    Map3dRequest r;
-    r.path = a.system;
-    r.file = *file;
-    r.kind = a.given("--kind") ? a.kind : "";
-    r.out = a.out;
-    r.param = a.param;
-    r.param2 = a.param2;
-    r.others = a.others;
-    r.format = a.format;
-    r.json = a.json;
-    r.plot = a.plot;
-    r.from = a.from;
-    r.to = a.to;
-    r.from2 = a.from2;
-    r.to2 = a.to2;
-    r.theta_from = a.theta_from;
-    r.theta_to = a.theta_to;
-    r.gamma = a.gamma;
-    r.time_limit = a.time_limit;
-    r.max_output = parse_byte_size(a.max_output, "--max-output");
-    r.n = a.n;
-    r.n2 = a.n2;
-    r.theta_n = a.theta_n;
-    r.threads = a.threads;
-    r.facets = a.facets;
-    r.point = a.point;
-    for (const auto& [name, o] : a.opt)
-      if (o->count() > 0) r.given.push_back(name);
-    return run_map_system_3d(r);
+  ParamDirectionMap& m = res.map;
+  m.seconds = clock.seconds();
+  j.update(to_json(m));
+  rate::add_run_figures(j, res.stats);
+  disagreements = m.disagreements;
+  report_disagreements(m.disagreements, "cells");
+  report_unreliable(m.unreliable, "cells");
+  for (const auto& [i, k] : shown)
+    std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
+              << ", theta = " << m.theta[k] << '\n';
+  if (!prefix.empty()) {
+    write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+    files["critical_csv"] = name + "_critical.csv";
   }
-  for (const char* o : {"--facets", "--point", "--others", "--gamma"})
-    if (a.given(o))
-      throw InputError(std::string(o) + " applies to maps of 3-D systems (--system FILE with "
-                       "\"dim\": 3)");
-  if (a.given("--system")) {
-    const std::string kind = a.given("--kind") ? a.kind : "direction";
-    std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
-    const double max_output = parse_byte_size(a.max_output, "--max-output");
-    std::vector<std::string> needed;
-    if (kind == "param-direction")
-      needed = {"--param", "--from", "--to"};
-    else if (kind == "param-param")
-      needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
-    else if (kind != "direction")
-      throw InputError("--kind with --system must be direction, param-direction or param-param, "
-                       "got '" + kind + "'");
-    allowed.insert(allowed.end(), needed.begin(), needed.end());
-    if (kind != "direction")
-      for (const char* o : {"--n", "--format", "--time-limit", "--max-output", "--resume"})
-        allowed.push_back(o);
-    if (kind == "param-direction")
-      for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
-    if (kind == "param-param") allowed.push_back("--n2");
-    std::string list;
-    for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-    for (const auto& [name, o] : a.opt)
-      if (o->count() > 0 && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
-        throw InputError(name + " does not apply with --system --kind " + kind +
-                         " (the state, parameters and load patterns come from the system file; "
-                         "options: " + list + (kind == "direction" ? "" : ", --plot") + ")");
-    for (const auto& o : needed)
-      if (!a.given(o)) throw InputError("--system --kind " + kind + " needs " + o);
-    if (a.plot && kind == "direction")
-      throw InputError("--plot with --system applies to --kind param-direction and param-param");
-    if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
-    if (a.resume && a.out.empty())
-      throw InputError("--resume needs --out PREFIX (the finished chunks are kept in PREFIX.parts)");
-    if (kind == "direction" && mpi::size() > 1)
-      throw InputError("a direction map is one exact computation, not a grid of cells: run it "
-                       "without mpirun (--threads uses the cores of one machine)");
-    if (a.given("--format") && a.out.empty())
-      throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
-    if (a.format != "npy" && a.format != "csv")
-      throw InputError("--format must be npy or csv, got '" + a.format + "'");
-    if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
-      throw InputError("--time-limit must be a positive number of seconds");
-    if (a.threads < 0 || a.threads > 1024)
-      throw InputError("--threads must be in [0, 1024] (0: all cores), got " +
-                       std::to_string(a.threads));
-    SystemMapRequest r;
-    r.path = a.system;
-    r.file = *file;
-    r.kind = kind;
-    r.out = a.out;
-    r.json = a.json;
-    r.plot = a.plot;
-    r.resume = a.resume;
-    r.format = a.format;
-    r.threads = a.threads;
-    r.time_limit = a.time_limit;
-    r.max_output = max_output;
-    r.param = a.param;
-    r.from = a.from;
-    r.to = a.to;
-    r.param2 = a.param2;
-    r.from2 = a.from2;
-    r.to2 = a.to2;
-    if (a.given("--n")) r.n = a.n;
-    if (a.given("--n2")) r.n2 = a.n2;
-    if (a.given("--theta-n")) r.theta_n = a.theta_n;
-    r.theta_range = a.given("--theta-from") || a.given("--theta-to");
-    if (a.given("--theta-from")) r.theta_from = a.theta_from;
-    if (a.given("--theta-to")) r.theta_to = a.theta_to;
-    std::unique_ptr<PrefixLock> lock;  // held until the map is written
-    if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
-    return run_map_system(r);
+  const nlohmann::json summary = j;
+  print_text = [summary, &s, &a] {
+    const auto& ax = summary["axis"];
+    std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
+              << "\n  "
+              << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
+              << ", " << fmt(ax["to"].get<double>()) << "] x theta in "
+              << (a.given("--theta-from") || a.given("--theta-to")
+                      ? "[" + fmt(summary["theta_from"].get<double>()) + ", " +
+                            fmt(summary["theta_to"].get<double>()) + "]: "
+                      : std::string("[0, 2 pi): "))
+              << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
+              << " s, " << summary["threads"] << " threads\n";
+    for (const auto& c : summary["classes"]) {
+      const int count = c["count"].is_string() ? -1 : c["count"].get<int>();
+      std::cout << "  " << count_text(count) << ": " << c["cells"] << " cells, "
+                << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                << ", " << fmt(c["x_max"].get<double>()) << "], theta in ["
+                << fmt(c["theta_min"].get<double>(), 3) << ", "
+                << fmt(c["theta_max"].get<double>(), 3) << "]\n";
+    }
+    for (const auto& c : summary["critical_values"])
+      std::cout << "  critical: " << c["name"].get<std::string>() << " at "
+                << ax["param"].get<std::string>() << " = " << fmt(c["x"].get<double>(), 10)
+                << '\n';
+  };
+  return true;
+}
+
+/// A parameter x parameter map, as run_param_direction_grid.
+bool run_param_param_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOptions& run) {
+  const MapSetup& s = p.s;
+  const MapOptions& options = p.options;
+  const std::string& prefix = p.prefix;
+  const std::string& name = p.name;
+  nlohmann::json& j = p.j;
+  nlohmann::json& files = p.files;
+  const bool csv = p.csv, cross = options.method != RateMethod::kEnumerate;
+  const Stopwatch& clock = p.clock;
+  int64_t& disagreements = p.disagreements;
+  std::function<void()>& print_text = p.print_text;
+  if (!prefix.empty() && !csv)
+    j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
+                        {"none-and-several", 3}};
+  bool opened = false;  // rank 0 alone writes, from the first chunk on
+  auto open_files = [&] {
+    if (!prefix.empty() && !csv) {
+      out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
+      out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
+      out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
+      out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
+      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
+      out.write_vector("x", axis_values(s.axis));
+      out.write_vector("y", axis_values(s.axis2));
+    } else if (!prefix.empty()) {
+      write_csv_header(s.axis, s.axis2, cross, out.open_csv());
+    }
+    opened = true;
+  };
+  auto sink = [&](const ParamParamRows& r) {
+    if (!opened) open_files();
+    const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
+                              static_cast<std::size_t>(s.axis2.n);
+    out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
+               static_cast<int64_t>(cells));
+    if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
+  };
+  rate::ParamParamRun res;
+  try {
+    res = rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
+    if (mpi::rank() != 0) return false;
+    out.finish();
+  } catch (...) {
+    out.discard();
+    throw;
   }
+  ParamParamMap& m = res.map;
+  m.seconds = clock.seconds();
+  j.update(to_json(m));
+  rate::add_run_figures(j, res.stats);
+  disagreements = m.disagreements;
+  report_disagreements(m.disagreements, "cells");
+  report_unreliable(m.unreliable, "direction-map evaluations");
+  if (!prefix.empty()) {
+    write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
+    files["critical_csv"] = name + "_critical.csv";
+  }
+  const nlohmann::json summary = j;
+  print_text = [summary, &s] {
+    const auto& ax = summary["axis"];
+    const auto& ay = summary["axis2"];
+    std::cout << "param-param map, "
+              << model_text(s.params, s.state, {s.axis.param, s.axis2.param}) << "\n  "
+              << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
+              << ": " << summary["cells"] << " cells, "
+              << fmt(summary["seconds"].get<double>(), 3) << " s\n";
+    for (const auto& c : summary["classes"])
+      std::cout << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, "
+                << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
+                << ", " << fmt(c["x_max"].get<double>()) << "], "
+                << ay["param"].get<std::string>() << " in [" << fmt(c["y_min"].get<double>())
+                << ", " << fmt(c["y_max"].get<double>()) << "]\n";
+  };
+  return true;
+}
+
+/// Grid maps: estimate, refuse what cannot fit, then stream the cells to the files; false on
+/// ranks other than 0.
+bool run_grid_map(OnePointRun& p) {
+  const MapArgs& a = p.a;
+  const MapSetup& s = p.s;
+  const MapOptions& options = p.options;
+  const std::string& prefix = p.prefix;
+  nlohmann::json& j = p.j;
+  nlohmann::json& files = p.files;
+  const bool csv = p.csv;
+  // Grid maps: estimate, refuse what cannot fit, then stream the cells to the files.
+  GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
+  est.seconds /= mpi::size();  // the ranks share the cells
+  check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv,
+                  a.time_limit, p.max_output);
+  // Every grid value next (cheaper than a cell; after the refusals, which need no pass over
+  // the grid): the first invalid one is named before any cell is computed, whichever rank
+  // or chunk would meet it first.
+  validate_map_grid(s.params, s.state, s.axis,
+                    s.kind == MapKind::kParamParam ? &s.axis2 : nullptr);
+  j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
+                   {"output_bytes", est.output}, {"threads", est.threads}};
+  if (est.seconds > 1.0 || est.output > 1e9)
+    std::cerr << "cpkit map: " << fmt(est.cells, 3) << " cells: about " << fmt(est.seconds, 2)
+              << " s of cells on " << est.threads << " threads, " << byte_text(est.memory)
+              << " of memory"
+              << (prefix.empty() ? std::string()
+                                 : ", " + byte_text(est.output) + " of output (" + a.format + ")")
+              << '\n';
+  j["format"] = a.format;
+  nlohmann::json bits = nlohmann::json::object();
+  for (unsigned b = 0; b < 8; ++b)
+    if (types_to_string(1u << b) != "none") bits[types_to_string(1u << b)] = 1u << b;
+  j["type_bits"] = bits;
+  GridFiles out(prefix, files);
+
+  // The rows are computed in chunks (maps/grid_map_run.hpp): spread over the ranks of an MPI
+  // job, kept in PREFIX.parts for --resume, consumed in row order; the outputs are those of
+  // one pass over the map.
+  rate::GridRunOptions run;
+  run.checkpoint_prefix = prefix;
+  run.resume = a.resume;
+  run.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", j["kind"]}, {"model", j["model"]},
+                  {"method", a.method}, {"format", a.format}};
+  run.transport = mpi::map_transport();
+  run.progress = make_map_progress();
+  return s.kind == MapKind::kParamDirection ? run_param_direction_grid(p, out, run)
+                                            : run_param_param_grid(p, out, run);
+}
+
+/// `cpkit map --system FILE` of a 3-D system: the request of map_system_3d.hpp.
+int run_map_3d(const MapArgs& a, const rate::SystemFile& file) {
+  Map3dRequest r;
+  r.path = a.system;
+  r.file = file;
+  r.kind = a.given("--kind") ? a.kind : "";
+  r.out = a.out;
+  r.param = a.param;
+  r.param2 = a.param2;
+  r.others = a.others;
+  r.format = a.format;
+  r.json = a.json;
+  r.plot = a.plot;
+  r.from = a.from;
+  r.to = a.to;
+  r.from2 = a.from2;
+  r.to2 = a.to2;
+  r.theta_from = a.theta_from;
+  r.theta_to = a.theta_to;
+  r.gamma = a.gamma;
+  r.time_limit = a.time_limit;
+  r.max_output = parse_byte_size(a.max_output, "--max-output");
+  r.n = a.n;
+  r.n2 = a.n2;
+  r.theta_n = a.theta_n;
+  r.threads = a.threads;
+  r.facets = a.facets;
+  r.point = a.point;
+  for (const auto& [name, o] : a.opt)
+    if (o->count() > 0) r.given.push_back(name);
+  return run_map_system_3d(r);
+}
+
+/// `cpkit map --system FILE` of N 2-D points: the options that apply, the request of
+/// map_system.hpp.
+int run_map_n_points(const MapArgs& a, const rate::SystemFile& file) {
+  const std::string kind = a.given("--kind") ? a.kind : "direction";
+  std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
+  const double max_output = parse_byte_size(a.max_output, "--max-output");
+  std::vector<std::string> needed;
+  if (kind == "param-direction")
+    needed = {"--param", "--from", "--to"};
+  else if (kind == "param-param")
+    needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
+  else if (kind != "direction")
+    throw InputError("--kind with --system must be direction, param-direction or param-param, "
+                     "got '" + kind + "'");
+  allowed.insert(allowed.end(), needed.begin(), needed.end());
+  if (kind != "direction")
+    for (const char* o : {"--n", "--format", "--time-limit", "--max-output", "--resume"})
+      allowed.push_back(o);
+  if (kind == "param-direction")
+    for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
+  if (kind == "param-param") allowed.push_back("--n2");
+  std::string list;
+  for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
+  for (const auto& [name, o] : a.opt)
+    if (o->count() > 0 && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+      throw InputError(name + " does not apply with --system --kind " + kind +
+                       " (the state, parameters and load patterns come from the system file; "
+                       "options: " + list + (kind == "direction" ? "" : ", --plot") + ")");
+  for (const auto& o : needed)
+    if (!a.given(o)) throw InputError("--system --kind " + kind + " needs " + o);
+  if (a.plot && kind == "direction")
+    throw InputError("--plot with --system applies to --kind param-direction and param-param");
+  if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
+  if (a.resume && a.out.empty())
+    throw InputError("--resume needs --out PREFIX (the finished chunks are kept in PREFIX.parts)");
+  if (kind == "direction" && mpi::size() > 1)
+    throw InputError("a direction map is one exact computation, not a grid of cells: run it "
+                     "without mpirun (--threads uses the cores of one machine)");
+  if (a.given("--format") && a.out.empty())
+    throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
+  if (a.format != "npy" && a.format != "csv")
+    throw InputError("--format must be npy or csv, got '" + a.format + "'");
+  if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
+    throw InputError("--time-limit must be a positive number of seconds");
+  if (a.threads < 0 || a.threads > 1024)
+    throw InputError("--threads must be in [0, 1024] (0: all cores), got " +
+                     std::to_string(a.threads));
+  SystemMapRequest r;
+  r.path = a.system;
+  r.file = file;
+  r.kind = kind;
+  r.out = a.out;
+  r.json = a.json;
+  r.plot = a.plot;
+  r.resume = a.resume;
+  r.format = a.format;
+  r.threads = a.threads;
+  r.time_limit = a.time_limit;
+  r.max_output = max_output;
+  r.param = a.param;
+  r.from = a.from;
+  r.to = a.to;
+  r.param2 = a.param2;
+  r.from2 = a.from2;
+  r.to2 = a.to2;
+  if (a.given("--n")) r.n = a.n;
+  if (a.given("--n2")) r.n2 = a.n2;
+  if (a.given("--theta-n")) r.theta_n = a.theta_n;
+  r.theta_range = a.given("--theta-from") || a.given("--theta-to");
+  if (a.given("--theta-from")) r.theta_from = a.theta_from;
+  if (a.given("--theta-to")) r.theta_to = a.theta_to;
+  std::unique_ptr<PrefixLock> lock;  // held until the map is written
+  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
+  return run_map_system(r);
+}
+
+/// `cpkit map` of one contact point (a preset or the model options).
+int run_map_one_point(const MapArgs& a) {
   const MapSetup s = build_setup(a);
   const double max_output = parse_byte_size(a.max_output, "--max-output");
   if (s.kind == MapKind::kDirection && mpi::size() > 1)
@@ -623,19 +861,25 @@ int run_map(const MapArgs& a) {
   std::unique_ptr<PrefixLock> lock;  // held until the map is written
   if (!a.out.empty()) lock = claim_map_prefix(a.out, {});
 
-  nlohmann::json j;
+  OnePointRun r(a, s);
+  r.options = options;
+  r.csv = csv;
+  r.max_output = max_output;
+  r.prefix = a.out;
+  r.name = a.out.empty() ? "" : fs::path(a.out).filename().string();
+  nlohmann::json& j = r.j;
   j["kind"] = std::string(to_string(s.kind));
   if (!a.preset.empty()) j["preset"] = a.preset;
   j["cpkit_version"] = CPKIT_VERSION;
   j["method"] = a.method;
   j["run"] = run_echo();
   j["model"] = model_to_json(s.params, s.state);
-  nlohmann::json files = nlohmann::json::object();
-  const std::string prefix = a.out;
-  const std::string name = prefix.empty() ? "" : fs::path(prefix).filename().string();
-  int64_t disagreements = 0;
-  const Stopwatch clock;
-  std::function<void()> print_text;
+  nlohmann::json& files = r.files;
+  const std::string& prefix = r.prefix;
+  const std::string& name = r.name;
+  int64_t& disagreements = r.disagreements;
+  const Stopwatch& clock = r.clock;
+  std::function<void()>& print_text = r.print_text;
 
   if (s.kind == MapKind::kDirection) {
     const DirectionMap m = compute_direction_map(s.params, s.state, options);
@@ -655,194 +899,9 @@ int run_map(const MapArgs& a) {
       std::cout << "direction map, " << model_text(s.params, s.state) << '\n';
       print_direction_text(m);
     };
-  } else {
-    // Grid maps: estimate, refuse what cannot fit, then stream the cells to the files.
-    GridEstimate est = estimate_grid(s, options, csv, !prefix.empty());
-    est.seconds /= mpi::size();  // the ranks share the cells
-    check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), csv,
-                    a.time_limit, max_output);
-    // Every grid value next (cheaper than a cell; after the refusals, which need no pass over
-    // the grid): the first invalid one is named before any cell is computed, whichever rank
-    // or chunk would meet it first.
-    validate_map_grid(s.params, s.state, s.axis,
-                      s.kind == MapKind::kParamParam ? &s.axis2 : nullptr);
-    j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
-                     {"output_bytes", est.output}, {"threads", est.threads}};
-    if (est.seconds > 1.0 || est.output > 1e9)
-      std::cerr << "cpkit map: " << fmt(est.cells, 3) << " cells: about " << fmt(est.seconds, 2)
-                << " s of cells on " << est.threads << " threads, " << byte_text(est.memory)
-                << " of memory"
-                << (prefix.empty() ? std::string()
-                                   : ", " + byte_text(est.output) + " of output (" + a.format + ")")
-                << '\n';
-    j["format"] = a.format;
-    nlohmann::json bits = nlohmann::json::object();
-    for (unsigned b = 0; b < 8; ++b)
-      if (types_to_string(1u << b) != "none") bits[types_to_string(1u << b)] = 1u << b;
-    j["type_bits"] = bits;
-    const bool cross = options.method != RateMethod::kEnumerate;
-    GridFiles out(prefix, files);
-    auto axis_values = [](const MapAxis& ax) {
-      std::vector<double> v(static_cast<std::size_t>(ax.n));
-      for (int i = 0; i < ax.n; ++i) v[i] = ax.value(i);
-      return v;
-    };
-
-    // The rows are computed in chunks (maps/grid_map_run.hpp): spread over the ranks of an MPI
-    // job, kept in PREFIX.parts for --resume, consumed in row order; the outputs are those of
-    // one pass over the map.
-    rate::GridRunOptions run;
-    run.checkpoint_prefix = prefix;
-    run.resume = a.resume;
-    run.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", j["kind"]}, {"model", j["model"]},
-                    {"method", a.method}, {"format", a.format}};
-    run.transport = mpi::map_transport();
-    run.progress = make_map_progress();
-    if (s.kind == MapKind::kParamDirection) {
-      const std::vector<double> theta =
-          map_theta_values(s.theta_n, options.theta_from, options.theta_to);
-      // Rank 0 alone writes: the files are opened when the first chunk arrives.
-      bool opened = false;
-      auto open_files = [&] {
-        if (!prefix.empty() && !csv) {
-          out.add_npy("count", "|i1", s.axis.n, s.theta_n);
-          out.add_npy("types", "|u1", s.axis.n, s.theta_n);
-          if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
-          out.write_vector("x", axis_values(s.axis));
-          out.write_vector("theta", theta);
-        } else if (!prefix.empty()) {
-          write_csv_header(s.axis, cross, out.open_csv());
-        }
-        opened = true;
-      };
-      std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
-      auto sink = [&](const ParamDirectionRows& r) {
-        if (!opened) open_files();
-        const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                  static_cast<std::size_t>(s.theta_n);
-        out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
-        if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
-        for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
-          if (r.disagree[k])
-            shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
-                               static_cast<int>(k % s.theta_n));
-      };
-      rate::ParamDirectionRun res;
-      try {
-        res = rate::run_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, run,
-                                            sink);
-        if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
-        out.finish();
-      } catch (...) {
-        out.discard();
-        throw;
-      }
-      ParamDirectionMap& m = res.map;
-      m.seconds = clock.seconds();
-      j.update(to_json(m));
-      rate::add_run_figures(j, res.stats);
-      disagreements = m.disagreements;
-      report_disagreements(m.disagreements, "cells");
-      report_unreliable(m.unreliable, "cells");
-      for (const auto& [i, k] : shown)
-        std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
-                  << ", theta = " << m.theta[k] << '\n';
-      if (!prefix.empty()) {
-        write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
-        files["critical_csv"] = name + "_critical.csv";
-      }
-      const nlohmann::json summary = j;
-      print_text = [summary, &s, &a] {
-        const auto& ax = summary["axis"];
-        std::cout << "param-direction map, " << model_text(s.params, s.state, {s.axis.param})
-                  << "\n  "
-                  << ax["param"].get<std::string>() << " in [" << fmt(ax["from"].get<double>())
-                  << ", " << fmt(ax["to"].get<double>()) << "] x theta in "
-                  << (a.given("--theta-from") || a.given("--theta-to")
-                          ? "[" + fmt(summary["theta_from"].get<double>()) + ", " +
-                                fmt(summary["theta_to"].get<double>()) + "]: "
-                          : std::string("[0, 2 pi): "))
-                  << summary["cells"] << " cells, " << fmt(summary["seconds"].get<double>(), 3)
-                  << " s, " << summary["threads"] << " threads\n";
-        for (const auto& c : summary["classes"]) {
-          const int count = c["count"].is_string() ? -1 : c["count"].get<int>();
-          std::cout << "  " << count_text(count) << ": " << c["cells"] << " cells, "
-                    << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
-                    << ", " << fmt(c["x_max"].get<double>()) << "], theta in ["
-                    << fmt(c["theta_min"].get<double>(), 3) << ", "
-                    << fmt(c["theta_max"].get<double>(), 3) << "]\n";
-        }
-        for (const auto& c : summary["critical_values"])
-          std::cout << "  critical: " << c["name"].get<std::string>() << " at "
-                    << ax["param"].get<std::string>() << " = " << fmt(c["x"].get<double>(), 10)
-                    << '\n';
-      };
-    } else {
-      if (!prefix.empty() && !csv)
-        j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
-                            {"none-and-several", 3}};
-      bool opened = false;  // rank 0 alone writes, from the first chunk on
-      auto open_files = [&] {
-        if (!prefix.empty() && !csv) {
-          out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
-          out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
-          out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
-          out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
-          if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
-          out.write_vector("x", axis_values(s.axis));
-          out.write_vector("y", axis_values(s.axis2));
-        } else if (!prefix.empty()) {
-          write_csv_header(s.axis, s.axis2, cross, out.open_csv());
-        }
-        opened = true;
-      };
-      auto sink = [&](const ParamParamRows& r) {
-        if (!opened) open_files();
-        const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                  static_cast<std::size_t>(s.axis2.n);
-        out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
-                   static_cast<int64_t>(cells));
-        if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
-      };
-      rate::ParamParamRun res;
-      try {
-        res = rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
-        if (mpi::rank() != 0) return kExitOk;
-        out.finish();
-      } catch (...) {
-        out.discard();
-        throw;
-      }
-      ParamParamMap& m = res.map;
-      m.seconds = clock.seconds();
-      j.update(to_json(m));
-      rate::add_run_figures(j, res.stats);
-      disagreements = m.disagreements;
-      report_disagreements(m.disagreements, "cells");
-      report_unreliable(m.unreliable, "direction-map evaluations");
-      if (!prefix.empty()) {
-        write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
-        files["critical_csv"] = name + "_critical.csv";
-      }
-      const nlohmann::json summary = j;
-      print_text = [summary, &s] {
-        const auto& ax = summary["axis"];
-        const auto& ay = summary["axis2"];
-        std::cout << "param-param map, "
-                  << model_text(s.params, s.state, {s.axis.param, s.axis2.param}) << "\n  "
-                  << ax["param"].get<std::string>() << " x " << ay["param"].get<std::string>()
-                  << ": " << summary["cells"] << " cells, "
-                  << fmt(summary["seconds"].get<double>(), 3) << " s\n";
-        for (const auto& c : summary["classes"])
-          std::cout << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, "
-                    << ax["param"].get<std::string>() << " in [" << fmt(c["x_min"].get<double>())
-                    << ", " << fmt(c["x_max"].get<double>()) << "], "
-                    << ay["param"].get<std::string>() << " in [" << fmt(c["y_min"].get<double>())
-                    << ", " << fmt(c["y_max"].get<double>()) << "]\n";
-      };
-    }
+  } else if (!run_grid_map(r)) {
+    return kExitOk;  // ranks other than 0: rank 0 writes and prints
   }
-
   bool plot_failed = false;
   if (!prefix.empty()) {
     files["json"] = name + ".json";
@@ -868,6 +927,24 @@ int run_map(const MapArgs& a) {
   }
   if (disagreements > 0) return kExitDisagreement;
   return plot_failed ? kExitInternal : kExitOk;  // the picture was asked for and is missing
+}
+
+int run_map(const MapArgs& a) {
+  if (a.list_presets) {
+    for (const auto& p : map_presets())
+      std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
+    return kExitOk;
+  }
+  // The system file is read once (a pipe can be read only once) and dispatched on its dim.
+  std::optional<rate::SystemFile> file;
+  if (a.given("--system")) file = rate::read_system_file(a.system);
+  if (file && file->dim == 3) return run_map_3d(a, *file);
+  for (const char* o : {"--facets", "--point", "--others", "--gamma"})
+    if (a.given(o))
+      throw InputError(std::string(o) + " applies to maps of 3-D systems (--system FILE with "
+                       "\"dim\": 3)");
+  if (file) return run_map_n_points(a, *file);
+  return run_map_one_point(a);
 }
 
 }  // namespace
