@@ -20,8 +20,7 @@
 
 #include "cli_common.hpp"
 #include "map_args.hpp"
-#include "cpkit/rate_problem/maps/grid_estimate.hpp"
-#include "cpkit/rate_problem/maps/grid_map_run.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "map_files.hpp"
 #include "map_system.hpp"
 #include "map_system_3d.hpp"
@@ -185,10 +184,9 @@ MapSetup build_setup(const MapArgs& a) {
                       const char* o_from, const char* o_to, const char* o_n, double from,
                       double to, int n) {
     if (a.given(o_param)) {
-      const auto p = map_parameter_from_string(name);
-      if (!p)
-        throw InputError(std::string(o_param) + ": unknown parameter '" + name + "' (known: " +
-                         map_parameter_names() + ")");
+      const auto p = map_parameter_from_string(name);  // the table's names and aliases
+      if (!p) (void)check_map_parameter(name, kMapOnePoint, 1, o_param);  // throws, naming it
+      if (!p) throw InputError(std::string(o_param) + ": unknown parameter '" + name + "'");
       if (!have || axis.param != *p) {
         if (!a.given(o_from) || !a.given(o_to))
           throw InputError(std::string(o_param) + " " + name + " needs " + o_from + " and " + o_to);
