@@ -387,7 +387,8 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                      "friction-and-wear criterion: 38 (Coulomb, default) or 35 "
                                      "(softening; state d uses mu_eff = mu - 2 kappa)");
   o["--param"] = cmd->add_option("--param", args->param,
-                                 "first axis: mu, a11, a12, a22, a12/a11, C_T, k_a, P_s, P_N, kappa");
+                                 "first axis: " + map_parameter_names(kMapOnePoint) +
+                                     " (systems: see --system)");
   o["--from"] = cmd->add_option("--from", args->from, "first axis start")->default_str("");
   o["--to"] = cmd->add_option("--to", args->to, "first axis end")->default_str("");
   o["--n"] = cmd->add_option("--n", args->n,
@@ -432,8 +433,9 @@ void add_map_command(CLI::App& app, Context& ctx) {
   o["--system"] = cmd->add_option("--system", args->system,
                                   "N-point system file (docs/file_formats.md): maps of "
                                   "dF = cos(theta) e1 + sin(theta) e2; --kind direction (default), "
-                                  "param-direction, param-param; --param mu, C_T, k_a, P_N, "
-                                  "coupling or mu@i, ...");
+                                  "param-direction, param-param; --param mu, C_T, k_a, P_s, "
+                                  "P_N, coupling or mu@i, ... (3-D: mu, C_T, k_a, P_s, "
+                                  "alpha_X, alpha_Y or mu@i, ...)");
   o["--facets"] = cmd->add_option("--facets", args->facets,
                                   "3-D systems: the faceted route with K facets (3..64; required "
                                   "for N > 1 points; default for one point: exact)")
