@@ -190,6 +190,34 @@ std::vector<double> axis_values(const MapAxis& ax) {
   return v;
 }
 
+/// The library's chunked run (`call`) with the files discarded if it fails; false on ranks other
+/// than 0 (rank 0 writes and prints).
+template <class Result, class Call>
+bool run_to_files(GridFiles& out, Result& res, Call&& call) {
+  try {
+    res = call();
+    if (mpi::rank() != 0) return false;
+    out.finish();
+  } catch (...) {
+    out.discard();
+    throw;
+  }
+  return true;
+}
+
+/// A grid map's summary into the run's JSON, its disagreements and unreliable evaluations on
+/// stderr.
+template <class Map>
+void record_grid_result(OnePointRun& p, Map& m, const rate::ChunkRunStats& stats,
+                        const char* unreliable_what) {
+  m.seconds = p.clock.seconds();
+  p.j.update(to_json(m));
+  rate::add_run_figures(p.j, stats);
+  p.disagreements = m.disagreements;
+  report_disagreements(m.disagreements, "cells");
+  report_unreliable(m.unreliable, unreliable_what);
+}
+
 /// A parameter x direction map through the library's chunked run (grid_map_run.hpp), its cells
 /// streamed to the files; false on ranks other than 0.
 bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOptions& run) {
@@ -201,8 +229,6 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRu
   nlohmann::json& j = p.j;
   nlohmann::json& files = p.files;
   const bool csv = p.csv, cross = options.method != RateMethod::kEnumerate;
-  const Stopwatch& clock = p.clock;
-  int64_t& disagreements = p.disagreements;
   std::function<void()>& print_text = p.print_text;
   const std::vector<double> theta =
       map_theta_values(s.theta_n, options.theta_from, options.theta_to);
@@ -233,22 +259,13 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRu
                            static_cast<int>(k % s.theta_n));
   };
   rate::ParamDirectionRun res;
-  try {
-    res = rate::run_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, run,
-                                        sink);
-    if (mpi::rank() != 0) return false;  // rank 0 writes and prints
-    out.finish();
-  } catch (...) {
-    out.discard();
-    throw;
-  }
+  if (!run_to_files(out, res, [&] {
+        return rate::run_param_direction_map(s.params, s.state, s.axis, s.theta_n, options, run,
+                                             sink);
+      }))
+    return false;  // rank 0 writes and prints
   ParamDirectionMap& m = res.map;
-  m.seconds = clock.seconds();
-  j.update(to_json(m));
-  rate::add_run_figures(j, res.stats);
-  disagreements = m.disagreements;
-  report_disagreements(m.disagreements, "cells");
-  report_unreliable(m.unreliable, "cells");
+  record_grid_result(p, m, res.stats, "cells");
   for (const auto& [i, k] : shown)
     std::cerr << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
               << ", theta = " << m.theta[k] << '\n';
@@ -294,8 +311,6 @@ bool run_param_param_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOpt
   nlohmann::json& j = p.j;
   nlohmann::json& files = p.files;
   const bool csv = p.csv, cross = options.method != RateMethod::kEnumerate;
-  const Stopwatch& clock = p.clock;
-  int64_t& disagreements = p.disagreements;
   std::function<void()>& print_text = p.print_text;
   if (!prefix.empty() && !csv)
     j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
@@ -324,21 +339,12 @@ bool run_param_param_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOpt
     if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
   };
   rate::ParamParamRun res;
-  try {
-    res = rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
-    if (mpi::rank() != 0) return false;
-    out.finish();
-  } catch (...) {
-    out.discard();
-    throw;
-  }
+  if (!run_to_files(out, res, [&] {
+        return rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
+      }))
+    return false;
   ParamParamMap& m = res.map;
-  m.seconds = clock.seconds();
-  j.update(to_json(m));
-  rate::add_run_figures(j, res.stats);
-  disagreements = m.disagreements;
-  report_disagreements(m.disagreements, "cells");
-  report_unreliable(m.unreliable, "direction-map evaluations");
+  record_grid_result(p, m, res.stats, "direction-map evaluations");
   if (!prefix.empty()) {
     write_text_file(prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
     files["critical_csv"] = name + "_critical.csv";
