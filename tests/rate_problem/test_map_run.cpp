@@ -13,6 +13,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/grid_map_run.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
 
 using namespace cpkit::rate;
 namespace fs = std::filesystem;
@@ -157,5 +158,47 @@ TEST_CASE("MapRunRefusesTheCheckpointOfAnotherMap", "[map][run]") {
   none.resume = true;  // nothing to resume without a checkpoint
   CHECK_THROWS_AS(run_param_direction_map(fig5(), state_b(), axis, 8, options, none),
                   cpkit::InputError);
+  fs::remove_all(dir.parent_path());
+}
+
+TEST_CASE("MapRunOfNPointsStoppedAndResumedEqualsTheOnePassMap", "[map][run][system]") {
+  // docs/examples/coupled_grazing_points.json: coupling alone creates non-uniqueness.
+  const ContactSystem sys = parse_contact_system(
+      R"({"A": [[2.03, 0.25, -1.23, 1.58], [0.25, 3.76, 1.23, 0.26],
+                [-1.23, 1.23, 2.12, -0.99], [1.58, 0.26, -0.99, 2.05]],
+          "points": [{"state": "b", "mu": 7.71}, {"state": "b", "mu": 2.03}]})");
+  SystemMapAxis axis;
+  axis.param = parse_system_map_parameter("coupling", 2);
+  axis.from = 0;
+  axis.to = 1;
+  axis.n = 9;
+  const int tn = 60;
+  MapOptions options;
+  options.threads = 1;
+  const fs::path dir = scratch("system");
+  GridRunOptions run;
+  run.checkpoint_prefix = (dir / "map").string();
+  run.chunk_limit = 4;
+  CHECK_FALSE(run_system_param_direction_map(sys, axis, tn, options, run).stats.complete);
+  run.resume = true;
+  run.chunk_limit = -1;
+  const SystemParamDirectionRun full = run_system_param_direction_map(sys, axis, tn, options, run);
+  REQUIRE(full.stats.complete);
+  CHECK(full.stats.resumed_chunks == 4);
+  const SystemParamDirectionMap one = compute_system_param_direction_map(sys, axis, tn, options);
+  CHECK(full.map.count == one.count);
+  CHECK(full.map.pattern == one.pattern);  // the patterns renumbered as one pass numbers them
+  CHECK(full.map.table.patterns == one.table.patterns);
+  CHECK(full.map.table.cells == one.table.cells);
+  REQUIRE(full.map.classes.size() == one.classes.size());
+  for (std::size_t k = 0; k < one.classes.size(); ++k) {
+    CHECK(full.map.classes[k].code == one.classes[k].code);
+    CHECK(full.map.classes[k].cells == one.classes[k].cells);
+  }
+  // docs/maps.md: uncoupled (c = 0) every direction has one solution; coupled, some have 3.
+  for (int j = 0; j < tn; ++j) CHECK(full.map.count[static_cast<std::size_t>(j)] == 1);
+  int threes = 0;
+  for (int j = 0; j < tn; ++j) threes += full.map.count[static_cast<std::size_t>(8 * tn + j)] == 3;
+  CHECK(threes > 0);
   fs::remove_all(dir.parent_path());
 }

@@ -41,15 +41,17 @@ void append_raw(std::string& s, const void* p, std::size_t n) {
   s.append(static_cast<const char*>(p), n);
 }
 
-ChunkRunStats run_grid(const GridRunOptions& run, nlohmann::json manifest, const ChunkPlan& plan,
-                       const std::function<MapChunk(int)>& compute,
-                       const std::function<void(const MapChunk&)>& consume) {
+
+}  // namespace
+
+ChunkRunStats run_grid_chunks(const GridRunOptions& run, nlohmann::json manifest,
+                              const ChunkPlan& plan, const std::function<MapChunk(int)>& compute,
+                              const std::function<void(const MapChunk&)>& consume) {
+  if (!run.describe_grid) manifest = nlohmann::json::object();
   for (const auto& [k, v] : run.manifest.items()) manifest[k] = v;
   return run_map_chunks(run.checkpoint_prefix, run.resume, manifest, plan, compute, consume,
                         run.progress, run.transport, run.chunk_limit);
 }
-
-}  // namespace
 
 int map_worker_threads(int requested, int rows) {
   const int t = requested > 0 ? requested
@@ -142,7 +144,7 @@ ParamDirectionRun run_param_direction_map(const ContactParameters& params,
   nlohmann::json manifest = {
       {"axis", axis_json(axis)},
       {"theta", {{"n", theta_n}, {"from", options.theta_from}, {"to", options.theta_to}}}};
-  out.stats = run_grid(run, manifest, plan, compute, consume);
+  out.stats = run_grid_chunks(run, manifest, plan, compute, consume);
   for (const auto& [code, b] : boxes) m.classes.push_back(b);
   m.seconds = seconds_since(t0);
   return out;
@@ -221,7 +223,7 @@ ParamParamRun run_param_param_map(const ContactParameters& params, const Contact
           {v.at(0).get<std::string>(), v.at(1).get<double>(), v.at(2).get<double>()});
   };
   const nlohmann::json manifest = {{"axis", axis_json(axis1)}, {"axis2", axis_json(axis2)}};
-  out.stats = run_grid(run, manifest, plan, compute, consume);
+  out.stats = run_grid_chunks(run, manifest, plan, compute, consume);
   for (const auto& [code, b] : boxes) m.classes.push_back(b);
   m.seconds = seconds_since(t0);
   return out;

@@ -18,6 +18,9 @@ struct GridRunOptions {
   /// What the map is, beyond the grid (the caller's inputs and options: version, model,
   /// method, format ...); the axes and the plan are added. A resume must match it exactly.
   nlohmann::json manifest = nlohmann::json::object();
+  /// Adds the axes (and directions) to the manifest; off when the caller's manifest already
+  /// holds them (cpkit's N-point maps echo them in "input").
+  bool describe_grid = true;
   MapTransport* transport = nullptr;  ///< null: one process
   MapProgress progress;               ///< rank 0; phase "chunks"
   int chunk_limit = -1;  ///< one process: stop after this many new chunks (complete = false)
@@ -44,6 +47,12 @@ ParamParamRun run_param_param_map(const ContactParameters& params, const Contact
                                   const MapAxis& axis1, const MapAxis& axis2,
                                   const MapOptions& options, const GridRunOptions& run,
                                   const ParamParamSink& sink = {});
+
+/// The chunks of a grid map under `run` (the kinds' common part): `grid` describes the grid
+/// (added to run.manifest when run.describe_grid).
+ChunkRunStats run_grid_chunks(const GridRunOptions& run, nlohmann::json grid,
+                              const ChunkPlan& plan, const std::function<MapChunk(int)>& compute,
+                              const std::function<void(const MapChunk&)>& consume);
 
 /// Threads a map uses: `requested` (0: all cores), at most one per row.
 int map_worker_threads(int requested, int rows);
