@@ -40,17 +40,7 @@
 #include "cpkit/rate_problem/maps/map_run.hpp"
 #include "platform/mpi_session.hpp"
 
-#ifdef CPKIT_HAVE_SICONOS
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "LCP_Solvers.h"
-#include "LinearComplementarityProblem.h"
-#include "NonSmoothDrivers.h"
-#include "NumericsMatrix.h"
-#include "SolverOptions.h"
-#include "lcp_cst.h"
-#pragma GCC diagnostic pop
-#endif
+#include "siconos_lcp.hpp"
 
 namespace {
 
