@@ -28,8 +28,13 @@ rate::MapOptions map_options(const std::string& method, int threads) {
 rate::MapAxis axis_from(const std::string& param, double from, double to, int n) {
   rate::MapAxis a;
   const auto p = rate::map_parameter_from_string(param);
-  if (!p) (void)rate::check_map_parameter(param, rate::kMapOnePoint, 1, "param");  // throws
-  if (!p) throw InputError("param: unknown map parameter '" + param + "'");
+  if (!p) {  // a name of the map parameter table for other maps: named as inapplicable
+    const std::string base = param.substr(0, param.find('@'));
+    for (const auto& row : rate::map_parameter_table())
+      if (base == row.name) (void)rate::check_map_parameter(param, rate::kMapOnePoint, 1, "param");
+    throw InputError("param must be one of " + rate::map_parameter_names(rate::kMapOnePoint) +
+                     ", got '" + param + "'");
+  }
   a.param = *p;
   a.from = from;
   a.to = to;
