@@ -190,21 +190,6 @@ std::vector<double> axis_values(const MapAxis& ax) {
   return v;
 }
 
-/// The library's chunked run (`call`) with the files discarded if it fails; false on ranks other
-/// than 0 (rank 0 writes and prints).
-template <class Result, class Call>
-bool run_to_files(GridFiles& out, Result& res, Call&& call) {
-  try {
-    res = call();
-    if (mpi::rank() != 0) return false;
-    out.finish();
-  } catch (...) {
-    out.discard();
-    throw;
-  }
-  return true;
-}
-
 /// A grid map's summary into the run's JSON, its disagreements and unreliable evaluations on
 /// stderr.
 template <class Map>

@@ -241,19 +241,14 @@ rate::GridRunOptions grid_run_options(const SystemMapRequest& r, const ContactSy
   return o;
 }
 
-/// The library's chunked run (`call`) with the files discarded if it fails; false on ranks other
-/// than 0 (rank 0 writes and prints).
-template <class Result, class Call>
-bool run_to_files(GridFiles& out, Result& res, Call&& call) {
-  try {
-    res = call();
-    if (mpi::rank() != 0) return false;
-    out.finish();
-  } catch (...) {
-    out.discard();
-    throw;
-  }
-  return true;
+/// An axis of the request: NAME (checked against the map parameter table), from, to, n.
+SystemMapAxis axis_of(const std::string& param, double from, double to, int n, int n_points) {
+  SystemMapAxis a;
+  a.param = parse_system_map_parameter(param, n_points);
+  a.from = from;
+  a.to = to;
+  a.n = n;
+  return a;
 }
 
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
@@ -263,11 +258,7 @@ int run_param_direction(const SystemMapRequest& r) {
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
-  SystemMapAxis axis;
-  axis.param = parse_system_map_parameter(r.param, N);
-  axis.from = r.from;
-  axis.to = r.to;
-  axis.n = r.n;
+  const SystemMapAxis axis = axis_of(r.param, r.from, r.to, r.n, N);
   const MapOptions options = request_options(r);
   Eigen::VectorXd e1, e2;
   system_map_patterns(sys, e1, e2);
@@ -363,15 +354,8 @@ int run_param_param(const SystemMapRequest& r) {
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
-  SystemMapAxis a1, a2;
-  a1.param = parse_system_map_parameter(r.param, N);
-  a1.from = r.from;
-  a1.to = r.to;
-  a1.n = r.n;
-  a2.param = parse_system_map_parameter(r.param2, N);
-  a2.from = r.from2;
-  a2.to = r.to2;
-  a2.n = r.n2;
+  const SystemMapAxis a1 = axis_of(r.param, r.from, r.to, r.n, N);
+  const SystemMapAxis a2 = axis_of(r.param2, r.from2, r.to2, r.n2, N);
   MapOptions options;
   options.threads = r.threads;
   Eigen::VectorXd e1, e2;

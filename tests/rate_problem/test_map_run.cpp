@@ -2,12 +2,19 @@
 // after a few chunks (ChunkRun::chunk_limit) and resumed from its checkpoint equals the map
 // computed independently: the cell counts of the state-b closed form (three solutions exactly
 // for mu > a11/a12 and theta between L+ = 0 and N = 0, as in test_map_grid.cpp) and the one-pass
-// map; the checkpoint of another map is refused.
+// map; the checkpoint of another map is refused; an N-point map likewise; the distributed path
+// (rank 0 hands chunks out) over an injected in-process transport equals the one-pass map.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <condition_variable>
+#include <deque>
 #include <filesystem>
+#include <mutex>
+#include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <unistd.h>
 
@@ -40,6 +47,74 @@ fs::path scratch(const std::string& name) {
   fs::create_directories(d);
   return d;
 }
+/// The processes of a job as threads of this one (the transport is injected: no MPI needed).
+/// Messages go to the destination's mailbox; abort throws (the job's end, seen by the test).
+struct Message {
+  int from = 0, tag = 0;
+  std::string bytes;
+  long long value = 0;
+};
+struct Mailboxes {
+  std::mutex mutex;
+  std::condition_variable arrived;
+  std::vector<std::deque<Message>> box;
+  explicit Mailboxes(int ranks) : box(static_cast<std::size_t>(ranks)) {}
+};
+class ThreadTransport final : public MapTransport {
+ public:
+  ThreadTransport(int rank, int size, Mailboxes& m) : rank_(rank), size_(size), m_(m) {}
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void send_bytes(const std::string& b, int dest, int tag) override { post(dest, {rank_, tag, b, 0}); }
+  std::string recv_bytes(int tag, int* from) override {
+    const Message msg = take(tag, -1);
+    if (from) *from = msg.from;
+    return msg.bytes;
+  }
+  bool probe(int tag, int* from, bool wait) override {
+    std::unique_lock<std::mutex> lock(m_.mutex);
+    for (;;) {
+      for (const auto& msg : mine())
+        if (msg.tag == tag) {
+          if (from) *from = msg.from;
+          return true;
+        }
+      if (!wait) return false;
+      m_.arrived.wait(lock);
+    }
+  }
+  void send_int(long long v, int dest, int tag) override { post(dest, {rank_, tag, {}, v}); }
+  long long recv_int(int source, int tag) override { return take(tag, source).value; }
+  [[noreturn]] void abort(const std::string& message, int) override {
+    throw std::runtime_error(message);
+  }
+
+ private:
+  int rank_, size_;
+  Mailboxes& m_;
+  std::deque<Message>& mine() { return m_.box[static_cast<std::size_t>(rank_)]; }
+  void post(int dest, Message msg) {
+    {
+      std::lock_guard<std::mutex> lock(m_.mutex);
+      m_.box[static_cast<std::size_t>(dest)].push_back(std::move(msg));
+    }
+    m_.arrived.notify_all();
+  }
+  Message take(int tag, int source) {
+    std::unique_lock<std::mutex> lock(m_.mutex);
+    for (;;) {
+      auto& q = mine();
+      for (auto it = q.begin(); it != q.end(); ++it)
+        if (it->tag == tag && (source < 0 || it->from == source)) {
+          Message msg = std::move(*it);
+          q.erase(it);
+          return msg;
+        }
+      m_.arrived.wait(lock);
+    }
+  }
+};
+
 int chunk_files(const fs::path& parts) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(parts))
@@ -200,5 +275,52 @@ TEST_CASE("MapRunOfNPointsStoppedAndResumedEqualsTheOnePassMap", "[map][run][sys
   int threes = 0;
   for (int j = 0; j < tn; ++j) threes += full.map.count[static_cast<std::size_t>(8 * tn + j)] == 3;
   CHECK(threes > 0);
+  fs::remove_all(dir.parent_path());
+}
+
+TEST_CASE("MapRunOverAnInjectedTransportEqualsTheOnePassMap", "[map][run][transport]") {
+  // Three ranks as threads: rank 0 hands the chunks out, stores and merges them; the resumed
+  // part of a map stopped by a one-process run is not computed again.
+  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 17};
+  const int tn = 40;
+  MapOptions options;
+  options.threads = 1;
+  const fs::path dir = scratch("transport");
+  GridRunOptions run;
+  run.checkpoint_prefix = (dir / "map").string();
+  run.chunk_limit = 6;
+  REQUIRE_FALSE(run_param_direction_map(fig5(), state_b(), axis, tn, options, run).stats.complete);
+  run.chunk_limit = -1;
+  run.resume = true;
+  const int ranks = 3;
+  Mailboxes boxes(ranks);
+  std::vector<ThreadTransport> t;
+  for (int r = 0; r < ranks; ++r) t.emplace_back(r, ranks, boxes);
+  std::vector<std::thread> others;
+  std::vector<int> other_complete(ranks, 0);
+  for (int r = 1; r < ranks; ++r)
+    others.emplace_back([&, r] {
+      GridRunOptions mine = run;
+      mine.transport = &t[static_cast<std::size_t>(r)];
+      const ParamDirectionRun res = run_param_direction_map(fig5(), state_b(), axis, tn, options, mine);
+      other_complete[static_cast<std::size_t>(r)] = res.stats.complete && res.map.count.empty();
+    });
+  GridRunOptions rank0 = run;
+  rank0.transport = &t[0];
+  const ParamDirectionRun full = run_param_direction_map(fig5(), state_b(), axis, tn, options, rank0);
+  for (auto& th : others) th.join();
+  REQUIRE(full.stats.complete);
+  CHECK(full.stats.ranks == ranks);
+  CHECK(full.stats.resumed_chunks == 6);
+  int64_t computed = 0;
+  for (const int64_t c : full.stats.rank_cells) computed += c;
+  CHECK(computed == (17 - 6) * tn);  // every missing chunk once, on whichever rank
+  CHECK(other_complete[1] == 1);
+  CHECK(other_complete[2] == 1);
+  const ParamDirectionMap one = compute_param_direction_map(fig5(), state_b(), axis, tn, options);
+  CHECK(full.map.count == one.count);
+  CHECK(full.map.types == one.types);
+  CHECK(full.map.type_cells == one.type_cells);
+  CHECK(full.map.critical_directions.size() == one.critical_directions.size());
   fs::remove_all(dir.parent_path());
 }

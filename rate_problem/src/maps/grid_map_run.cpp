@@ -68,10 +68,7 @@ ParamDirectionRun run_param_direction_map(const ContactParameters& params,
   const bool cross = options.method != RateMethod::kEnumerate;
   const ChunkPlan plan = plan_chunks(axis.n, theta_n);
   auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
+    MapChunk c = chunk_of(plan, k);
     std::string cnt, typ, dis;
     const ParamDirectionMap part = compute_param_direction_map(
         params, state, axis, theta_n, options, {},
@@ -158,10 +155,7 @@ ParamParamRun run_param_param_map(const ContactParameters& params, const Contact
   const bool cross = options.method != RateMethod::kEnumerate;
   const ChunkPlan plan = plan_chunks(axis1.n, axis2.n);
   auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
+    MapChunk c = chunk_of(plan, k);
     std::string cls, lo, hi, typ, dis;
     const ParamParamMap part = compute_param_param_map(
         params, state, axis1, axis2, options, {},

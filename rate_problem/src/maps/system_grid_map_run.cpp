@@ -93,10 +93,7 @@ SystemParamDirectionRun run_system_param_direction_map(const ContactSystem& sys,
   const auto t0 = std::chrono::steady_clock::now();
   const ChunkPlan plan = plan_chunks(axis.n, theta_n);
   auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
+    MapChunk c = chunk_of(plan, k);
     std::string count, pattern;
     const SystemParamDirectionMap m = compute_system_param_direction_map(
         sys, axis, theta_n, options, {},
@@ -159,10 +156,7 @@ SystemParamParamRun run_system_param_param_map(const ContactSystem& sys,
   const auto t0 = std::chrono::steady_clock::now();
   const ChunkPlan plan = plan_chunks(a1.n, a2.n);
   auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
+    MapChunk c = chunk_of(plan, k);
     std::string cls, lo, hi, pattern;
     const SystemParamParamMap m = compute_system_param_param_map(
         sys, a1, a2, options, {},

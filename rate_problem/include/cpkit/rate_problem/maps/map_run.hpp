@@ -50,6 +50,14 @@ struct ChunkPlan {
   int end(int k) const noexcept { return std::min(rows, (k + 1) * chunk_rows); }
 };
 ChunkPlan plan_chunks(int rows, int64_t columns);
+/// Chunk k of the plan, its rows set, to be filled by the map kind.
+inline MapChunk chunk_of(const ChunkPlan& plan, int k) {
+  MapChunk c;
+  c.index = k;
+  c.row_begin = plan.begin(k);
+  c.row_end = plan.end(k);
+  return c;
+}
 
 struct ChunkRun {
   ChunkPlan plan;
