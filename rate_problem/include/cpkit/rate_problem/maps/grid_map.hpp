@@ -39,7 +39,8 @@ enum class MapParameter {
 };
 std::string_view to_string(MapParameter p) noexcept;
 std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept;
-/// Comma-separated list of the accepted names (for messages).
+/// Comma-separated list of the accepted names (for messages): the map parameter table's
+/// (map_parameter_table.hpp) for one-point maps.
 std::string map_parameter_names();
 
 /// Sets `p` to `value` in (params, state). Throws InputError when impossible (kappa with P_N = 0).
