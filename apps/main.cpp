@@ -8,7 +8,7 @@
 #include "blas_threads.hpp"
 #include "cli_common.hpp"
 #include "cli_options.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "run_echo.hpp"
 #include "cpkit/core/errors.hpp"
 

@@ -8,7 +8,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "data_files.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "run_program.hpp"
 
 namespace cpkit::cli {

@@ -16,6 +16,7 @@
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/npy_writer.hpp"
 #include "output_guard.hpp"
+#include "platform/mpi_session.hpp"
 
 namespace cpkit::cli {
 
@@ -62,6 +63,21 @@ class GridFiles {
   std::vector<std::string> finals_;  ///< final paths, written as <path>.partial until finish()
   std::string partial(const std::string& final_path);
 };
+
+/// A map kind's chunked library run (`call`, returning the result) with the files discarded if
+/// it fails; false on ranks other than 0 (rank 0 writes and prints).
+template <class Result, class Call>
+bool run_to_files(GridFiles& out, Result& res, Call&& call) {
+  try {
+    res = call();
+    if (mpi::rank() != 0) return false;
+    out.finish();
+  } catch (...) {
+    out.discard();
+    throw;
+  }
+  return true;
+}
 
 /// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.
 void prepare_out_prefix(const std::string& prefix);

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "map_chunks.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
 #include "map_files.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "machine_resources.hpp"
 #include "map_system.hpp"
 #include "cpkit/core/errors.hpp"
@@ -226,65 +226,29 @@ int resolved_threads(int requested) {
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-/// A chunk's summary: class boxes, its pattern table (chunk-local ids), counters.
-nlohmann::json chunk_summary(const std::vector<GridClassBox>& classes,
-                             const SystemPatternTable& table, int64_t unreliable,
-                             int64_t inconsistent, int m_max) {
-  return {{"boxes", boxes_to_json(classes)}, {"patterns", table.patterns},
-          {"unreliable", unreliable}, {"inconsistent", inconsistent}, {"m_max", m_max}};
+/// How a grid map of the request runs (grid_map_run.hpp): checkpointed under PREFIX.parts when
+/// writing; the manifest names the version, kind, input echo (axes included) and the system's data.
+rate::GridRunOptions grid_run_options(const SystemMapRequest& r, const ContactSystem& sys,
+                                      const nlohmann::json& input) {
+  rate::GridRunOptions o;
+  o.checkpoint_prefix = r.out;
+  o.resume = r.resume;
+  o.manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind}, {"input", input},
+                {"system_data_fnv1a", system_fingerprint(sys)}, {"format", r.format}};
+  o.describe_grid = false;  // "input" holds the axes
+  o.transport = mpi::map_transport();
+  o.progress = make_map_progress();
+  return o;
 }
 
-/// Rank 0's merge of the chunks in row order: patterns renumbered in order of first
-/// appearance over the whole map (as one process numbers them), boxes and counters combined.
-struct GridMerge {
-  SystemPatternTable table;
-  std::map<std::vector<TypeTuple>, int> index;
-  std::map<int, GridClassBox> boxes;  // by code
-  int64_t unreliable = 0, inconsistent = 0;
-  int m_max = 0;
-
-  /// Renumbers a chunk's pattern ids in `ids` and merges its summary.
-  void add(const nlohmann::json& summary, std::vector<uint16_t>& ids) {
-    std::vector<uint16_t> to_global;
-    for (const auto& p : summary.at("patterns")) {
-      const auto tuples = p.get<std::vector<TypeTuple>>();
-      auto [it, added] = index.emplace(tuples, static_cast<int>(table.patterns.size()));
-      if (added) {
-        if (table.patterns.size() >= 65535)
-          throw InputError("the map has more than 65535 distinct point-type patterns");
-        table.patterns.push_back(tuples);
-        table.cells.push_back(0);
-      }
-      to_global.push_back(static_cast<uint16_t>(it->second));
-    }
-    for (auto& id : ids) {
-      if (id >= to_global.size()) throw InputError("corrupt map chunk (pattern id)");
-      id = to_global[id];
-      ++table.cells[id];
-    }
-    merge_boxes(boxes, summary.at("boxes"));
-    unreliable += summary.at("unreliable").get<int64_t>();
-    inconsistent += summary.at("inconsistent").get<int64_t>();
-    m_max = std::max(m_max, summary.at("m_max").get<int>());
-  }
-};
-
-std::vector<uint16_t> ids_of(const std::string& bytes) {
-  std::vector<uint16_t> ids(bytes.size() / 2);
-  std::memcpy(ids.data(), bytes.data(), ids.size() * 2);
-  return ids;
-}
-
-/// Runs a grid map's chunks with checkpointing under PREFIX.parts (when writing).
-ChunkRunStats run_grid_chunks(const SystemMapRequest& r, const ContactSystem& sys,
-                              const nlohmann::json& input, const ChunkPlan& plan,
-                              const std::function<MapChunk(int)>& compute,
-                              const std::function<void(const MapChunk&)>& consume) {
-  const nlohmann::json manifest = {{"cpkit_version", CPKIT_VERSION}, {"kind", r.kind},
-                                   {"input", input},
-                                   {"system_data_fnv1a", system_fingerprint(sys)},
-                                   {"format", r.format}};
-  return run_map_chunks(r.out, r.resume, manifest, plan, compute, consume, make_map_progress());
+/// An axis of the request: NAME (checked against the map parameter table), from, to, n.
+SystemMapAxis axis_of(const std::string& param, double from, double to, int n, int n_points) {
+  SystemMapAxis a;
+  a.param = parse_system_map_parameter(param, n_points);
+  a.from = from;
+  a.to = to;
+  a.n = n;
+  return a;
 }
 
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
@@ -294,11 +258,7 @@ int run_param_direction(const SystemMapRequest& r) {
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
-  SystemMapAxis axis;
-  axis.param = parse_system_map_parameter(r.param, N);
-  axis.from = r.from;
-  axis.to = r.to;
-  axis.n = r.n;
+  const SystemMapAxis axis = axis_of(r.param, r.from, r.to, r.n, N);
   const MapOptions options = request_options(r);
   Eigen::VectorXd e1, e2;
   system_map_patterns(sys, e1, e2);
@@ -314,27 +274,6 @@ int run_param_direction(const SystemMapRequest& r) {
       {"theta_from", r.theta_from}, {"theta_to", r.theta_to},
       {"patterns", {as_list(e1), as_list(e2)}}};
   const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
-  const ChunkPlan plan = plan_chunks(r.n, r.theta_n);
-  auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
-    std::string count, pattern;
-    const SystemParamDirectionMap m = compute_system_param_direction_map(
-        sys, axis, r.theta_n, options, {},
-        [&](const SystemParamDirectionRows& rows) {
-          const std::size_t n_cells = static_cast<std::size_t>(rows.row_end - rows.row_begin) *
-                                      static_cast<std::size_t>(r.theta_n);
-          count.append(reinterpret_cast<const char*>(rows.count), n_cells);
-          pattern.append(reinterpret_cast<const char*>(rows.pattern), 2 * n_cells);
-        },
-        RowRange{c.row_begin, c.row_end});
-    c.summary = chunk_summary(m.classes, m.table, m.unreliable, 0, m.m_max);
-    c.arrays = {std::move(count), std::move(pattern)};
-    return c;
-  };
-  GridMerge merge;
   bool opened = false;
   auto open_files = [&] {
     if (run.writing_npy()) {
@@ -347,36 +286,31 @@ int run_param_direction(const SystemMapRequest& r) {
     }
     opened = true;
   };
-  auto consume = [&](const MapChunk& c) {
+  auto sink = [&](const SystemParamDirectionRows& rows) {
     if (!opened) open_files();
-    const std::string& count = c.arrays.at(0);
-    std::vector<uint16_t> ids = ids_of(c.arrays.at(1));
-    if (count.size() != ids.size() ||
-        count.size() != static_cast<std::size_t>(c.row_end - c.row_begin) * r.theta_n)
-      throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
-    merge.add(c.summary, ids);
-    run.out.append({count.data(), ids.data()}, static_cast<int64_t>(ids.size()));
+    const std::size_t n_cells =
+        static_cast<std::size_t>(rows.row_end - rows.row_begin) * static_cast<std::size_t>(r.theta_n);
+    run.out.append({rows.count, rows.pattern}, static_cast<int64_t>(n_cells));
     if (!run.out.has_csv()) return;
-    for (int i = c.row_begin; i < c.row_end; ++i)
+    for (int i = rows.row_begin; i < rows.row_end; ++i)
       for (int jj = 0; jj < r.theta_n; ++jj) {
-        const std::size_t k = static_cast<std::size_t>(i - c.row_begin) * r.theta_n + jj;
+        const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * r.theta_n + jj;
         run.out.csv() << axis.value(i) << ',' << theta[static_cast<std::size_t>(jj)] << ','
-                      << count_to_string(static_cast<int8_t>(count[k])) << ',' << ids[k] << '\n';
+                      << count_to_string(rows.count[k]) << ',' << rows.pattern[k] << '\n';
       }
   };
-  ChunkRunStats stats;
-  try {
-    stats = run_grid_chunks(r, sys, input, plan, compute, consume);
-    if (mpi::rank() != 0) return kExitOk;  // rank 0 writes and prints
-    run.out.finish();
-  } catch (...) {
-    run.out.discard();
-    throw;
-  }
+  rate::SystemParamDirectionRun res;
+  if (!run_to_files(run.out, res, [&] {
+        return rate::run_system_param_direction_map(sys, axis, r.theta_n, options,
+                                                    grid_run_options(r, sys, input), sink);
+      }))
+    return kExitOk;  // rank 0 writes and prints
+  const SystemParamDirectionMap& merge = res.map;
+  const rate::ChunkRunStats& stats = res.stats;
   const bool complete = merge.unreliable == 0;
   nlohmann::json counts = nlohmann::json::array();
-  for (const auto& [code, c] : merge.boxes)
-    counts.push_back({{"count", count_to_json(code)}, {"cells", c.cells},
+  for (const auto& c : merge.classes)
+    counts.push_back({{"count", count_to_json(c.code)}, {"cells", c.cells},
                       {"param_min", c.x_min}, {"param_max", c.x_max},
                       {"theta_min", c.y_min}, {"theta_max", c.y_max}});
   run.j = {{"cpkit_version", CPKIT_VERSION},
@@ -390,7 +324,7 @@ int run_param_direction(const SystemMapRequest& r) {
            {"complete", complete},
            {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
-  add_run_figures(run.j, stats);
+  rate::add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable
@@ -404,12 +338,12 @@ int run_param_direction(const SystemMapRequest& r) {
                                       seconds_text(r.theta_to) + "]"
                                 : std::string())
               << ", " << static_cast<int64_t>(r.n) * r.theta_n << " cells\ncounts:\n";
-    for (const auto& [cnt, c] : merge.boxes)
-      std::cout << "  " << count_text(cnt) << ": " << c.cells << " cells, "
+    for (const auto& c : merge.classes)
+      std::cout << "  " << count_text(c.code) << ": " << c.cells << " cells, "
                 << axis.param.name() << " in [" << c.x_min << ", " << c.x_max << "]\n";
     print_pattern_table(merge.table, N);
   });
-  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  if (!r.out.empty()) rate::remove_checkpoint(r.out + ".parts");
   return code;
 }
 
@@ -420,15 +354,8 @@ int run_param_param(const SystemMapRequest& r) {
   // Limits that depend on N and the states, before any work in proportion to N.
   check_system_map_lcp_size(sys, "a map of its cells");
   const int N = sys.n_points();
-  SystemMapAxis a1, a2;
-  a1.param = parse_system_map_parameter(r.param, N);
-  a1.from = r.from;
-  a1.to = r.to;
-  a1.n = r.n;
-  a2.param = parse_system_map_parameter(r.param2, N);
-  a2.from = r.from2;
-  a2.to = r.to2;
-  a2.n = r.n2;
+  const SystemMapAxis a1 = axis_of(r.param, r.from, r.to, r.n, N);
+  const SystemMapAxis a2 = axis_of(r.param2, r.from2, r.to2, r.n2, N);
   MapOptions options;
   options.threads = r.threads;
   Eigen::VectorXd e1, e2;
@@ -442,29 +369,6 @@ int run_param_param(const SystemMapRequest& r) {
       {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", a1.param.name()},
       {"from", r.from}, {"to", r.to}, {"n", r.n}, {"param2", a2.param.name()},
       {"from2", r.from2}, {"to2", r.to2}, {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}};
-  const ChunkPlan plan = plan_chunks(r.n, r.n2);
-  auto compute = [&](int k) {
-    MapChunk c;
-    c.index = k;
-    c.row_begin = plan.begin(k);
-    c.row_end = plan.end(k);
-    std::string cls, lo, hi, pattern;
-    const SystemParamParamMap m = compute_system_param_param_map(
-        sys, a1, a2, options, {},
-        [&](const SystemParamParamRows& rows) {
-          const std::size_t n_cells =
-              static_cast<std::size_t>(rows.row_end - rows.row_begin) * static_cast<std::size_t>(r.n2);
-          cls.append(reinterpret_cast<const char*>(rows.cls), n_cells);
-          lo.append(reinterpret_cast<const char*>(rows.min_count), n_cells);
-          hi.append(reinterpret_cast<const char*>(rows.max_count), n_cells);
-          pattern.append(reinterpret_cast<const char*>(rows.pattern), 2 * n_cells);
-        },
-        RowRange{c.row_begin, c.row_end});
-    c.summary = chunk_summary(m.classes, m.table, m.unreliable, m.inconsistent_sectors, m.m_max);
-    c.arrays = {std::move(cls), std::move(lo), std::move(hi), std::move(pattern)};
-    return c;
-  };
-  GridMerge merge;
   bool opened = false;
   auto open_files = [&] {
     if (run.writing_npy()) {
@@ -480,39 +384,34 @@ int run_param_param(const SystemMapRequest& r) {
     }
     opened = true;
   };
-  auto consume = [&](const MapChunk& c) {
+  auto sink = [&](const SystemParamParamRows& rows) {
     if (!opened) open_files();
-    const std::string &cls = c.arrays.at(0), &lo = c.arrays.at(1), &hi = c.arrays.at(2);
-    std::vector<uint16_t> ids = ids_of(c.arrays.at(3));
-    const std::size_t n_cells = static_cast<std::size_t>(c.row_end - c.row_begin) * r.n2;
-    if (cls.size() != n_cells || lo.size() != n_cells || hi.size() != n_cells || ids.size() != n_cells)
-      throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
-    merge.add(c.summary, ids);
-    run.out.append({cls.data(), lo.data(), hi.data(), ids.data()}, static_cast<int64_t>(n_cells));
+    const std::size_t n_cells = static_cast<std::size_t>(rows.row_end - rows.row_begin) * r.n2;
+    run.out.append({rows.cls, rows.min_count, rows.max_count, rows.pattern},
+                   static_cast<int64_t>(n_cells));
     if (!run.out.has_csv()) return;
-    for (int i = c.row_begin; i < c.row_end; ++i)
+    for (int i = rows.row_begin; i < rows.row_end; ++i)
       for (int jj = 0; jj < r.n2; ++jj) {
-        const std::size_t k = static_cast<std::size_t>(i - c.row_begin) * r.n2 + jj;
+        const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * r.n2 + jj;
         run.out.csv() << a1.value(i) << ',' << a2.value(jj) << ','
-                      << to_string(static_cast<UniquenessClass>(cls[k])) << ','
-                      << count_to_string(static_cast<int8_t>(lo[k])) << ','
-                      << count_to_string(static_cast<int8_t>(hi[k])) << ',' << ids[k] << '\n';
+                      << to_string(static_cast<UniquenessClass>(rows.cls[k])) << ','
+                      << count_to_string(rows.min_count[k]) << ','
+                      << count_to_string(rows.max_count[k]) << ',' << rows.pattern[k] << '\n';
       }
   };
-  ChunkRunStats stats;
-  try {
-    stats = run_grid_chunks(r, sys, input, plan, compute, consume);
-    if (mpi::rank() != 0) return kExitOk;
-    run.out.finish();
-  } catch (...) {
-    run.out.discard();
-    throw;
-  }
-  const bool complete = merge.unreliable == 0 && merge.inconsistent == 0;
+  rate::SystemParamParamRun res;
+  if (!run_to_files(run.out, res, [&] {
+        return rate::run_system_param_param_map(sys, a1, a2, options,
+                                                grid_run_options(r, sys, input), sink);
+      }))
+    return kExitOk;
+  const SystemParamParamMap& merge = res.map;
+  const rate::ChunkRunStats& stats = res.stats;
+  const bool complete = merge.unreliable == 0 && merge.inconsistent_sectors == 0;
   nlohmann::json classes = nlohmann::json::array();
-  for (const auto& [code, c] : merge.boxes)
-    classes.push_back({{"class", to_string(static_cast<UniquenessClass>(code))},
-                       {"code", code}, {"cells", c.cells},
+  for (const auto& c : merge.classes)
+    classes.push_back({{"class", to_string(static_cast<UniquenessClass>(c.code))},
+                       {"code", c.code}, {"cells", c.cells},
                        {"x_min", c.x_min}, {"x_max", c.x_max},
                        {"y_min", c.y_min}, {"y_max", c.y_max}});
   run.j = {{"cpkit_version", CPKIT_VERSION},
@@ -525,15 +424,15 @@ int run_param_param(const SystemMapRequest& r) {
            {"patterns", pattern_table_json(merge.table, N)},
            {"lcp_size_max", merge.m_max},
            {"unreliable", merge.unreliable},
-           {"inconsistent_sectors", merge.inconsistent},
+           {"inconsistent_sectors", merge.inconsistent_sectors},
            {"complete", complete},
            {"threads", resolved_threads(r.threads)},
            {"estimate", estimate}};
-  add_run_figures(run.j, stats);
+  rate::add_run_figures(run.j, stats);
   if (!r.out.empty()) run.j["format"] = r.format;
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable << " evaluations too close to call and "
-              << merge.inconsistent << " sectors not uniform: the map is not proved complete\n";
+              << merge.inconsistent_sectors << " sectors not uniform: the map is not proved complete\n";
   run.j["seconds"] = clock.seconds();
   const int code = run.finish(complete, [&] {
     std::cout << "param-param map of " << N << " points (" << r.path << "): "
@@ -541,13 +440,13 @@ int run_param_param(const SystemMapRequest& r) {
               << " values) x " << a2.param.name() << " in [" << r.from2 << ", " << r.to2
               << "] (" << r.n2 << " values), " << static_cast<int64_t>(r.n) * r.n2
               << " cells\nclasses:\n";
-    for (const auto& [cl, c] : merge.boxes)
-      std::cout << "  " << to_string(static_cast<UniquenessClass>(cl)) << ": " << c.cells
+    for (const auto& c : merge.classes)
+      std::cout << "  " << to_string(static_cast<UniquenessClass>(c.code)) << ": " << c.cells
                 << " cells, " << a1.param.name() << " in [" << c.x_min << ", " << c.x_max
                 << "], " << a2.param.name() << " in [" << c.y_min << ", " << c.y_max << "]\n";
     print_pattern_table(merge.table, N);
   });
-  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  if (!r.out.empty()) rate::remove_checkpoint(r.out + ".parts");
   return code;
 }
 

@@ -23,7 +23,7 @@
 #include "machine_resources.hpp"
 #include "map_files.hpp"
 #include "memory_limit.hpp"
-#include "mpi_session.hpp"
+#include "platform/mpi_session.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
@@ -187,14 +187,36 @@ double estimate_seconds(const std::string& kind, const Plan& p, int64_t cells, i
          threads;
 }
 
-}  // namespace
+/// A map axis of the request: --paramS NAME (the map parameter table's), --fromS, --toS, --nS.
+Map3dAxis axis_of(const std::string& param, double from, double to, int n, int n_points,
+                  const std::string& suffix) {
+  Map3dAxis a;
+  a.param = parse_map_3d_parameter(param, n_points);
+  a.from = from;
+  a.to = to;
+  a.n = n;
+  if (a.n < 1 || a.n > 1000000) throw InputError("--n" + suffix + " must be in [1, 1000000]");
+  if (a.n > 1 && !(from < to))
+    throw InputError("--from" + suffix + " must be < --to" + suffix);
+  return a;
+}
 
-int run_map_system_3d(const Map3dRequest& r) {
-  check_request(r);
-  std::unique_ptr<PrefixLock> lock;  // held until the map is written
-  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
-  const Stopwatch clock;
+/// What the request maps, with its echo (`input`) and the words of the messages.
+struct Map3dSetup {
   Plan p;
+  nlohmann::json input;
+  int64_t cells = 0;
+  std::string cells_text, fewer, xname, yname;
+};
+
+/// The plan of the request: the system, the route and its limits, the grid or the axes.
+Map3dSetup make_setup(const Map3dRequest& r) {
+  Map3dSetup setup;
+  Plan& p = setup.p;
+  nlohmann::json& input = setup.input;
+  int64_t& cells = setup.cells;
+  std::string &cells_text = setup.cells_text, &fewer = setup.fewer, &xname = setup.xname,
+              &yname = setup.yname;
   p.sys = parse_contact_system_3d(r.file);
   const int N = p.sys.n_points();
   Map3dOptions& o = p.options;
@@ -234,13 +256,10 @@ int run_map_system_3d(const Map3dRequest& r) {
   if (o.others_from_file && N == 1)
     throw InputError("--others has no effect with one point");
   o.threads = r.threads;
-  std::string cells_text, fewer;
-  nlohmann::json input = {{"system", r.path}, {"name", p.sys.name}, {"n_points", N},
+  input = {{"system", r.path}, {"name", p.sys.name}, {"n_points", N},
                           {"point", r.point},
                           {"route", o.facets ? "faceted" : "exact"},
                           {"facets", o.facets ? nlohmann::json(o.facets) : nlohmann::json()}};
-  int64_t cells = 0;
-  std::string xname, yname;
   if (r.kind == "sphere") {
     p.grid.n_beta = r.has("--n") ? r.n : 91;
     p.grid.n_gamma = r.has("--n2") ? r.n2 : 180;
@@ -264,12 +283,7 @@ int run_map_system_3d(const Map3dRequest& r) {
     input["beta_to"] = p.grid.beta_to;
     input["others"] = o.others_from_file ? "file" : "zero";
   } else {
-    p.a1.param = parse_map_3d_parameter(r.param, N);
-    p.a1.from = r.from;
-    p.a1.to = r.to;
-    p.a1.n = r.has("--n") ? r.n : 100;
-    if (p.a1.n < 1 || p.a1.n > 1000000) throw InputError("--n must be in [1, 1000000]");
-    if (p.a1.n > 1 && !(r.from < r.to)) throw InputError("--from must be < --to");
+    p.a1 = axis_of(r.param, r.from, r.to, r.has("--n") ? r.n : 100, N, "");
     xname = p.a1.param.name();
     input["param"] = xname;
     input["from"] = r.from;
@@ -295,12 +309,7 @@ int run_map_system_3d(const Map3dRequest& r) {
       input["gamma"] = p.gamma;
       input["others"] = o.others_from_file ? "file" : "zero";
     } else {
-      p.a2.param = parse_map_3d_parameter(r.param2, N);
-      p.a2.from = r.from2;
-      p.a2.to = r.to2;
-      p.a2.n = r.has("--n2") ? r.n2 : 100;
-      if (p.a2.n < 1 || p.a2.n > 1000000) throw InputError("--n2 must be in [1, 1000000]");
-      if (p.a2.n > 1 && !(r.from2 < r.to2)) throw InputError("--from2 must be < --to2");
+      p.a2 = axis_of(r.param2, r.from2, r.to2, r.has("--n2") ? r.n2 : 100, N, "2");
       if (!p.sys.dF)
         throw InputError("--kind param-param with a dim 3 system is computed at the file's "
                          "load rate: the system file needs \"dF\"");
@@ -316,6 +325,64 @@ int run_map_system_3d(const Map3dRequest& r) {
       input["dF"] = std::vector<double>(d.data(), d.data() + d.size());
     }
   }
+  return setup;
+}
+
+/// The summary in words (without --json).
+void print_text_3d(const Map3dRequest& r, const Map3dSetup& setup, const Map3d& m,
+                   const nlohmann::json& files) {
+  const Plan& p = setup.p;
+  const Map3dOptions& o = p.options;
+  const int N = p.sys.n_points();
+  const std::string &xname = setup.xname, &yname = setup.yname;
+  std::cout << r.kind << " map of " << N << (N == 1 ? " 3-D point" : " 3-D points") << " ("
+            << r.path << "), ";
+  if (r.kind != "param-param") std::cout << "load at point " << r.point << ", ";
+  std::cout << (o.facets ? "faceted with " + std::to_string(o.facets) + " facets" : std::string("exact"))
+            << ": " << m.cells() << " cells\n";
+  if (r.kind == "sphere")
+    std::cout << "  dF = (sin b cos g, sin b sin g, cos b): b in [" << fmt(p.grid.beta_from)
+              << ", " << fmt(p.grid.beta_to) << "] (" << m.rows << " values) x g in (-pi, pi] ("
+              << m.cols << " values)\n";
+  else if (r.kind == "param-direction")
+    std::cout << "  " << xname << " in [" << fmt(r.from) << ", " << fmt(r.to) << "] ("
+              << m.rows << " values) x theta in [" << fmt(p.theta_from) << ", "
+              << fmt(p.theta_to) << "] (" << m.cols << " values) at g = " << fmt(p.gamma) << '\n';
+  else
+    std::cout << "  " << xname << " in [" << fmt(r.from) << ", " << fmt(r.to) << "] x " << yname
+              << " in [" << fmt(r.from2) << ", " << fmt(r.to2) << "]\n";
+  std::cout << "counts:\n";
+  for (const auto& [c, n] : m.count_cells) std::cout << "  " << count_text(c) << ": " << n << " cells\n";
+  std::cout << "types:\n";
+  for (unsigned mask = 0; mask < m.type_cells.size(); ++mask)
+    if (m.type_cells[mask] > 0)
+      std::cout << "  " << type_mask_string(mask) << ": " << m.type_cells[mask] << " cells\n";
+  std::cout << "not proved complete: " << m.incomplete_cells << " cells\n";
+  if (m.timed_out_cells > 0)
+    std::cout << "time limit reached: " << m.timed_out_cells << " cells cut short or not "
+              << "computed\n";
+  if (!r.out.empty()) {
+    std::cout << "wrote";
+    for (const auto& [k, v] : files.items())
+      std::cout << ' ' << (fs::path(r.out).parent_path() / v.get<std::string>()).string();
+    std::cout << '\n';
+  }
+}
+
+}  // namespace
+
+int run_map_system_3d(const Map3dRequest& r) {
+  check_request(r);
+  std::unique_ptr<PrefixLock> lock;  // held until the map is written
+  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
+  const Stopwatch clock;
+  Map3dSetup setup = make_setup(r);
+  Plan& p = setup.p;
+  Map3dOptions& o = p.options;
+  const nlohmann::json& input = setup.input;
+  const int64_t cells = setup.cells;
+  const std::string &cells_text = setup.cells_text, &fewer = setup.fewer, &xname = setup.xname,
+                    &yname = setup.yname;
   if (cells > kMaxMap3dCells)
     throw InputError("the map has " + cells_text + ", more than the " +
                      std::to_string(kMaxMap3dCells) + " cells a 3-D map holds: " + fewer);
@@ -419,42 +486,10 @@ int run_map_system_3d(const Map3dRequest& r) {
     std::cerr << "cpkit map: " << m.incomplete_cells
               << " cells not proved complete (a merging pair of slip directions, an "
                  "undecided enumeration, or the time limit): flagged 0 in 'complete'\n";
-  if (r.json) {
+  if (r.json)
     print_json(j);
-  } else {
-    std::cout << r.kind << " map of " << N << (N == 1 ? " 3-D point" : " 3-D points") << " ("
-              << r.path << "), ";
-    if (r.kind != "param-param") std::cout << "load at point " << r.point << ", ";
-    std::cout << (o.facets ? "faceted with " + std::to_string(o.facets) + " facets" : std::string("exact"))
-              << ": " << m.cells() << " cells\n";
-    if (r.kind == "sphere")
-      std::cout << "  dF = (sin b cos g, sin b sin g, cos b): b in [" << fmt(p.grid.beta_from)
-                << ", " << fmt(p.grid.beta_to) << "] (" << m.rows << " values) x g in (-pi, pi] ("
-                << m.cols << " values)\n";
-    else if (r.kind == "param-direction")
-      std::cout << "  " << xname << " in [" << fmt(r.from) << ", " << fmt(r.to) << "] ("
-                << m.rows << " values) x theta in [" << fmt(p.theta_from) << ", "
-                << fmt(p.theta_to) << "] (" << m.cols << " values) at g = " << fmt(p.gamma) << '\n';
-    else
-      std::cout << "  " << xname << " in [" << fmt(r.from) << ", " << fmt(r.to) << "] x " << yname
-                << " in [" << fmt(r.from2) << ", " << fmt(r.to2) << "]\n";
-    std::cout << "counts:\n";
-    for (const auto& [c, n] : m.count_cells) std::cout << "  " << count_text(c) << ": " << n << " cells\n";
-    std::cout << "types:\n";
-    for (unsigned mask = 0; mask < m.type_cells.size(); ++mask)
-      if (m.type_cells[mask] > 0)
-        std::cout << "  " << type_mask_string(mask) << ": " << m.type_cells[mask] << " cells\n";
-    std::cout << "not proved complete: " << m.incomplete_cells << " cells\n";
-    if (m.timed_out_cells > 0)
-      std::cout << "time limit reached: " << m.timed_out_cells << " cells cut short or not "
-                << "computed\n";
-    if (!r.out.empty()) {
-      std::cout << "wrote";
-      for (const auto& [k, v] : files.items())
-        std::cout << ' ' << (fs::path(r.out).parent_path() / v.get<std::string>()).string();
-      std::cout << '\n';
-    }
-  }
+  else
+    print_text_3d(r, setup, m, files);
   if (!complete) return kExitInconclusive;
   return plot_failed ? kExitInternal : kExitOk;
 }

@@ -18,16 +18,7 @@
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/lcp/fb_newton.hpp"
 
-#ifdef CPKIT_HAVE_SICONOS
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "LCP_Solvers.h"
-#include "LinearComplementarityProblem.h"
-#include "NumericsMatrix.h"
-#include "SolverOptions.h"
-#include "lcp_cst.h"
-#pragma GCC diagnostic pop
-#endif
+#include "siconos_lcp.hpp"
 
 #include "bench_problems.hpp"
 

@@ -18,7 +18,7 @@
 // Usage: bench_robustness [OUTDIR] [--quick]
 //        mpirun -np K bench_robustness [OUTDIR] [--quick]   (a build with CPKIT_WITH_MPI)
 // Under mpirun the problems are handed out one at a time by rank 0 to whichever rank is free
-// (apps/map_chunks.hpp, as for the distributed maps); every rank runs all solvers on its
+// (rate_problem/maps/map_run.hpp, as for the distributed maps); every rank runs all solvers on its
 // problems, rank 0 writes the same files in the same order. Times are then those of a rank
 // sharing the machine with the others.
 #include <algorithm>
@@ -37,20 +37,10 @@
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "map_chunks.hpp"
-#include "mpi_session.hpp"
+#include "cpkit/rate_problem/maps/map_run.hpp"
+#include "platform/mpi_session.hpp"
 
-#ifdef CPKIT_HAVE_SICONOS
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "LCP_Solvers.h"
-#include "LinearComplementarityProblem.h"
-#include "NonSmoothDrivers.h"
-#include "NumericsMatrix.h"
-#include "SolverOptions.h"
-#include "lcp_cst.h"
-#pragma GCC diagnostic pop
-#endif
+#include "siconos_lcp.hpp"
 
 namespace {
 
@@ -283,13 +273,13 @@ int main(int argc, char** argv) {
     }
     return outs;
   };
-  cpkit::cli::ChunkRun run;
+  cpkit::rate::ChunkRun run;
   run.plan.rows = static_cast<int>(items.size());
   run.plan.chunk_rows = 1;
   run.plan.chunks = run.plan.rows;
   run.plan.columns = static_cast<int64_t>(columns.size());
   run.compute = [&](int k) {
-    cpkit::cli::MapChunk c;
+    cpkit::rate::MapChunk c;
     c.index = k;
     c.row_begin = k;
     c.row_end = k + 1;
@@ -299,14 +289,15 @@ int main(int argc, char** argv) {
     c.summary = outs;
     return c;
   };
-  run.consume = [&](const cpkit::cli::MapChunk& c) {
+  run.consume = [&](const cpkit::rate::MapChunk& c) {
     for (const auto& o : c.summary)
       results[static_cast<std::size_t>(c.index)].push_back(
           {o[0].get<std::string>(), o[1].get<bool>(), o[2].get<double>(), o[3].get<double>(),
            o[4].get<std::string>()});
     std::cerr << items[static_cast<std::size_t>(c.index)].name << " done\n";
   };
-  const cpkit::cli::ChunkRunStats stats = cpkit::cli::run_chunks(run);
+  run.transport = cpkit::cli::mpi::map_transport();
+  const cpkit::rate::ChunkRunStats stats = cpkit::rate::run_chunks(run);
   if (cpkit::cli::mpi::rank() != 0) {
     cpkit::cli::mpi::finalize();
     return 0;

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 
@@ -27,8 +28,13 @@ rate::MapOptions map_options(const std::string& method, int threads) {
 rate::MapAxis axis_from(const std::string& param, double from, double to, int n) {
   rate::MapAxis a;
   const auto p = rate::map_parameter_from_string(param);
-  if (!p)
-    throw InputError("param must be one of " + rate::map_parameter_names() + ", got '" + param + "'");
+  if (!p) {  // a name of the map parameter table for other maps: named as inapplicable
+    const std::string base = param.substr(0, param.find('@'));
+    for (const auto& row : rate::map_parameter_table())
+      if (base == row.name) (void)rate::check_map_parameter(param, rate::kMapOnePoint, 1, "param");
+    throw InputError("param must be one of " + rate::map_parameter_names(rate::kMapOnePoint) +
+                     ", got '" + param + "'");
+  }
   a.param = *p;
   a.from = from;
   a.to = to;
@@ -201,6 +207,21 @@ void bind_maps(pyb::module_& m) {
                  rate::UniquenessClass::kNoSolutionSome})
     classes.append(std::string(rate::to_string(c)));
   m.attr("UNIQUENESS_CLASSES") = classes;
+  // The one table of map parameters (map_parameter_table.hpp), as the CLI checks them.
+  pyb::list params;
+  for (const auto& r : rate::map_parameter_table()) {
+    pyb::list dims;
+    for (auto d : {rate::kMapOnePoint, rate::kMapNPoints, rate::kMap3d})
+      if (r.dimensions & d) dims.append(std::string(rate::to_string(d)));
+    pyb::dict row;
+    row["name"] = r.name;
+    row["dimensions"] = dims;
+    row["per_point"] = r.per_point;
+    row["applied"] = r.applied;
+    row["validated"] = r.validated;
+    params.append(row);
+  }
+  m.attr("MAP_PARAMETERS") = params;
 }
 
 }  // namespace cpkit::py

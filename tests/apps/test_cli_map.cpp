@@ -339,3 +339,58 @@ TEST_CASE("CliGridMapWithAnInvalidRowLeavesNoFiles", "[cli][map]") {
   for (const char* f : {"_count.npy", "_types.npy", "_x.npy", "_theta.npy", ".json"})
     CHECK_FALSE(fs::exists(prefix.string() + f));
 }
+
+TEST_CASE("CliMapRefusesUnknownAndInapplicableParametersNamingThem", "[cli][map][params]") {
+  // One table of map parameters (map_parameter_table.hpp) for every kind of map: exit 2 and a
+  // message naming the parameter, whichever kind meets it.
+  const std::string sys2 = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/coupled_grazing_points.json";
+  const std::string sys3 = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/elliptic_point_3d.json";
+  struct Case {
+    std::string args, named, why;
+  };
+  const Case cases[] = {
+      {"--preset fig5b --kind param-direction --param nonsense --from 0 --to 1", "'nonsense'",
+       "unknown"},
+      {"--preset fig5b --kind param-direction --param coupling --from 0 --to 1", "'coupling'",
+       "does not apply to one-point maps"},
+      {"--preset fig5b --kind param-direction --param mu@1 --from 0 --to 1", "'mu@1'",
+       "no point number"},
+      {"--system '" + sys2 + "' --kind param-direction --param kappa --from 0 --to 1", "'kappa'",
+       "does not apply to N-point maps"},
+      {"--system '" + sys2 + "' --kind param-direction --param P_s@3 --from 1 --to 2", "'P_s@3'",
+       "1..2"},
+      {"--system '" + sys3 + "' --kind param-direction --param coupling --from 0 --to 1",
+       "'coupling'", "does not apply to 3-D maps"},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(c.args);
+    const Run r = run("map " + c.args);
+    CHECK(r.code == 2);
+    CHECK(r.err.find(c.named) != std::string::npos);
+    CHECK(r.err.find(c.why) != std::string::npos);
+  }
+  // P_s of an N-point map is accepted: every value is the file's system with P_s set (k_a = 0
+  // there, so the hardness changes nothing: every row equals the file's direction map).
+  const Run ps = run("map --system '" + sys2 + "' --kind param-direction --param P_s@2 --from 0.5 "
+                     "--to 2 --n 3 --theta-n 360 --json");
+  REQUIRE(ps.code == 0);
+  const Run dir = run("map --system '" + sys2 + "' --json");
+  REQUIRE(dir.code == 0);
+  const auto jp = nlohmann::json::parse(ps.out), jd = nlohmann::json::parse(dir.out);
+  int64_t three = 0;
+  for (const auto& c : jp.at("counts"))
+    if (c.at("count") == 3) three += c.at("cells").get<int64_t>();
+  // The exact sectors of the file's direction map: cell centres (j + 1/2) 2 pi / 360 inside a
+  // sector of 3 solutions.
+  const double kTwoPi = 6.283185307179586;
+  int64_t expected = 0;
+  for (int j = 0; j < 360; ++j) {
+    const double t = (j + 0.5) * kTwoPi / 360;
+    for (const auto& sec : jd.at("sectors"))
+      if (sec.at("count") == 3 && t > sec.at("theta_from").get<double>() &&
+          t < sec.at("theta_to").get<double>())
+        ++expected;
+  }
+  CHECK(expected > 0);
+  CHECK(three == 3 * expected);  // the same directions in each of the 3 rows
+}

@@ -25,9 +25,12 @@ using namespace cpkit::test;
 
 namespace {
 const std::string kSystem = std::string(CPKIT_SOURCE_DIR) + "/docs/examples/coupled_grazing_points.json";
-// About 4 s in Release on one core: long enough to interrupt after a few of its 64 chunks.
+// About 2 s in Release on one core: long enough to interrupt after a few of its 64 chunks (128
+// rows: 2 a chunk). The chunk run itself (stop after k chunks, resume, the merge) is tested
+// deterministically and fast at the library level (tests/rate_problem/test_map_run.cpp); this
+// test keeps what only the program does: SIGTERM, partial files, the files of a resumed run.
 const std::string kMap = "map --system '" + kSystem +
-                         "' --kind param-direction --param coupling --from 0 --to 1 --n 300 "
+                         "' --kind param-direction --param coupling --from 0 --to 1 --n 128 "
                          "--theta-n 720 --threads 1";
 }  // namespace
 
@@ -38,11 +41,11 @@ TEST_CASE("an interrupted map resumed with --resume equals the uninterrupted map
     std::vector<std::string> files;
   };
   // An N-point map, and a one-point parameter x parameter map (an exact direction map per
-  // cell; about 5 s in Release on one core).
+  // cell; about 2.5 s in Release on one core; 640 rows: 10 a chunk, 64 chunks).
   const std::vector<Case> cases = {
       {"system", kMap, {"_count.npy", "_pattern.npy", "_x.npy", "_theta.npy"}},
       {"one_point",
-       "map --preset fig5b --kind param-param --param mu --from 0.1 --to 4 --n 1200 --param2 a12 "
+       "map --preset fig5b --kind param-param --param mu --from 0.1 --to 4 --n 640 --param2 a12 "
        "--from2 -0.9 --to2 0.9 --n2 1200 --threads 1",
        {"_class.npy", "_min_count.npy", "_max_count.npy", "_types.npy", "_x.npy", "_y.npy",
         "_critical.csv"}}};

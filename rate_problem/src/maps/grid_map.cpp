@@ -13,6 +13,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -154,11 +155,7 @@ std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexce
   return std::nullopt;
 }
 
-std::string map_parameter_names() {
-  std::string s;
-  for (const auto& n : kParamNames) s += (s.empty() ? "" : ", ") + std::string(n.name);
-  return s;
-}
+std::string map_parameter_names() { return map_parameter_names(kMapOnePoint); }
 
 void apply_map_parameter(MapParameter p, double value, ContactParameters& params,
                          ContactState& state) {

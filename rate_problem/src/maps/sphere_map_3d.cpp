@@ -11,6 +11,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
@@ -146,33 +147,17 @@ std::string Map3dParameter::name() const {
 }
 
 Map3dParameter parse_map_3d_parameter(std::string_view text, int n_points) {
-  const std::string known = "alpha_X, alpha_Y, mu, C_T, k_a, P_s, or <name>@i (i = 1.." +
-                            std::to_string(n_points) + ")";
-  std::string s(text), base = s;
-  Map3dParameter p;
-  const auto at = s.find('@');
-  if (at != std::string::npos) {
-    base = s.substr(0, at);
-    const std::string idx = s.substr(at + 1);
-    int i = 0;
-    bool ok = !idx.empty() && idx.size() < 8;
-    for (char c : idx) ok = ok && c >= '0' && c <= '9';
-    if (ok) i = std::stoi(idx);
-    if (!ok || i < 1 || i > n_points)
-      throw InputError("parameter '" + s + "': the point must be 1.." + std::to_string(n_points) +
-                       " (known: " + known + ")");
-    p.point = i;
-  }
+  // The names, the 3-D kinds and NAME@i are the map parameter table's.
+  const rate::MapParameterRef ref = rate::check_map_parameter(text, rate::kMap3d, n_points);
   static const std::pair<const char*, Map3dParameter::Kind> table[] = {
       {"alpha_X", Map3dParameter::Kind::kAlphaX}, {"alpha_Y", Map3dParameter::Kind::kAlphaY},
       {"mu", Map3dParameter::Kind::kMu},          {"C_T", Map3dParameter::Kind::kCT},
       {"k_a", Map3dParameter::Kind::kKa},         {"P_s", Map3dParameter::Kind::kPs}};
+  Map3dParameter p;
+  p.point = ref.point;
   for (const auto& [name, kind] : table)
-    if (base == name) {
-      p.kind = kind;
-      return p;
-    }
-  throw InputError("unknown parameter '" + s + "' for a 3-D map (known: " + known + ")");
+    if (std::string_view(name) == ref.row->name) p.kind = kind;
+  return p;
 }
 
 void apply_map_3d_parameter(const Map3dParameter& p, double v, ContactSystem3d& sys) {

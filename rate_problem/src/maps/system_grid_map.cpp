@@ -9,6 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "run_items.hpp"
 
@@ -21,14 +22,10 @@ struct KindName {
   Kind kind;
   const char* name;
 };
+// The names are the map parameter table's (map_parameter_table.hpp) for N-point maps.
 constexpr KindName kKindNames[] = {{Kind::kMu, "mu"},   {Kind::kCT, "C_T"},
-                                   {Kind::kKa, "k_a"},  {Kind::kPN, "P_N"},
-                                   {Kind::kCoupling, "coupling"}};
-
-std::string accepted_names(int n_points) {
-  return "mu, C_T, k_a, P_N, coupling, or one point's mu@i, C_T@i, k_a@i, P_N@i with i = 1.." +
-         std::to_string(n_points);
-}
+                                   {Kind::kKa, "k_a"},  {Kind::kPs, "P_s"},
+                                   {Kind::kPN, "P_N"},  {Kind::kCoupling, "coupling"}};
 
 /// A cell's point-type pattern: its sorted type tuples (what the pattern table numbers).
 std::vector<TypeTuple> tuples_of(const SystemRateSummary& s) {
@@ -45,34 +42,11 @@ std::string SystemMapParameter::name() const {
 }
 
 SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points) {
-  const std::string text(s);
-  const auto at = s.find('@');
-  const std::string_view base = s.substr(0, at);
+  const MapParameterRef ref = check_map_parameter(s, kMapNPoints, n_points);
   SystemMapParameter p;
-  bool known = false;
+  p.point = ref.point;
   for (const auto& k : kKindNames)
-    if (base == k.name) {
-      p.kind = k.kind;
-      known = true;
-    }
-  if (!known)
-    throw InputError("unknown map parameter '" + text + "' for a system (accepted: " +
-                     accepted_names(n_points) + ")");
-  if (at != std::string_view::npos) {
-    if (p.kind == Kind::kCoupling)
-      throw InputError("map parameter '" + text + "': coupling applies to the whole system, not "
-                       "to one point");
-    const std::string digits(s.substr(at + 1));
-    const bool numeric = !digits.empty() && digits.size() <= 9 &&
-                         std::all_of(digits.begin(), digits.end(),
-                                     [](char c) { return c >= '0' && c <= '9'; });
-    const long i = numeric ? std::stol(digits) : 0;
-    if (i < 1 || i > n_points)
-      throw InputError("map parameter '" + text + "': the point number must be 1.." +
-                       std::to_string(n_points) + " (the system has " +
-                       std::to_string(n_points) + " points)");
-    p.point = static_cast<int>(i);
-  }
+    if (std::string_view(k.name) == ref.row->name) p.kind = k.kind;
   return p;
 }
 
@@ -99,6 +73,7 @@ ContactSystem apply_system_map_parameter(const ContactSystem& base, const System
         case Kind::kMu: pt.mu = value; break;
         case Kind::kCT: pt.C_T = value; break;
         case Kind::kKa: pt.k_a = value; break;
+        case Kind::kPs: pt.P_s = value; break;
         case Kind::kPN:
           if (pt.state.label != StateLabel::kC && pt.state.label != StateLabel::kD) {
             if (p.point > 0)

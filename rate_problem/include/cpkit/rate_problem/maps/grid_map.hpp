@@ -39,7 +39,8 @@ enum class MapParameter {
 };
 std::string_view to_string(MapParameter p) noexcept;
 std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept;
-/// Comma-separated list of the accepted names (for messages).
+/// Comma-separated list of the accepted names (for messages): the map parameter table's
+/// (map_parameter_table.hpp) for one-point maps.
 std::string map_parameter_names();
 
 /// Sets `p` to `value` in (params, state). Throws InputError when impossible (kappa with P_N = 0).
@@ -103,7 +104,7 @@ std::vector<double> map_theta_values(int theta_n, double theta_from = 0,
 int grid_block_rows(int64_t columns) noexcept;
 
 /// The rows a call computes: [begin, end) of the first axis (end < 0: to the last row). A map
-/// split into row ranges (the chunks of a distributed or resumable run, apps/map_chunks.hpp)
+/// split into row ranges (the chunks of a distributed or resumable run, maps/map_run.hpp)
 /// has, in each part, the cells, counters, class boxes and per-row curves of its rows; the
 /// whole map is their merge in row order (for N-point maps the pattern tables are renumbered).
 /// Only the rows in the range are validated: validate the whole grid first

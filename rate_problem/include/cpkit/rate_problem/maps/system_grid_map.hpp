@@ -31,13 +31,14 @@ namespace cpkit::rate {
 
 /// A quantity of a system that a map axis varies.
 struct SystemMapParameter {
-  enum class Kind { kMu, kCT, kKa, kPN, kCoupling };
+  enum class Kind { kMu, kCT, kKa, kPN, kCoupling, kPs };
   Kind kind = Kind::kMu;
   int point = 0;  ///< 0: every point; i >= 1: point i only (not for coupling)
   std::string name() const;  ///< "mu", "mu@2", "coupling", ...
 };
-/// Parses "mu", "C_T", "k_a", "P_N", "coupling" or "<name>@i" (1 <= i <= n_points). Throws
-/// InputError naming the accepted names.
+/// Parses "mu", "C_T", "k_a", "P_s", "P_N", "coupling" or "<name>@i" (1 <= i <= n_points),
+/// checked against the map parameter table (map_parameter_table.hpp): InputError naming the
+/// parameter and the accepted names.
 SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points);
 
 /// The system with the parameter set to `value`, validated: throws InputError naming the

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_transport.hpp"
 
 #ifdef CPKIT_WITH_MPI
 #include <mpi.h>
@@ -138,5 +139,29 @@ void send_int(long long, int, int) { throw std::logic_error("mpi::send_int witho
 long long recv_int(int, int) { throw std::logic_error("mpi::recv_int without MPI"); }
 std::vector<long long> all_gather(long long value) { return {value}; }
 #endif
+
+namespace {
+/// The map run's transport (map_transport.hpp) over the calls above.
+class MpiMapTransport final : public rate::MapTransport {
+ public:
+  int rank() const override { return mpi::rank(); }
+  int size() const override { return mpi::size(); }
+  void send_bytes(const std::string& b, int dest, int tag) override { mpi::send_bytes(b, dest, tag); }
+  std::string recv_bytes(int tag, int* from) override { return mpi::recv_bytes(tag, from); }
+  bool probe(int tag, int* from, bool wait) override { return mpi::probe(tag, from, wait); }
+  void send_int(long long v, int dest, int tag) override { mpi::send_int(v, dest, tag); }
+  long long recv_int(int source, int tag) override { return mpi::recv_int(source, tag); }
+  [[noreturn]] void abort(const std::string& message, int exit_code) override {
+    std::cerr.clear();  // ranks other than 0 are silenced (main.cpp): this message must show
+    std::cerr << message << "\n";
+    mpi::abort(exit_code);
+  }
+};
+}  // namespace
+
+rate::MapTransport* map_transport() {
+  static MpiMapTransport transport;
+  return active() ? &transport : nullptr;
+}
 
 }  // namespace cpkit::cli::mpi

@@ -1,18 +1,12 @@
-// Distributed and resumable grid maps: chunks, checkpoint folder, rank 0's hand-out loop
-// (map_chunks.hpp, docs/cluster.md).
-#include "map_chunks.hpp"
+// The checkpoint of a map run (map_run.hpp): chunk bytes, the folder PREFIX.parts/ with its
+// manifest, and the rules for reading it back (regular files of bounded size, of this map).
+#include "map_checkpoint.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <map>
-#include <sstream>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -21,11 +15,9 @@
 #include <cerrno>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/core/io.hpp"
 #include "cpkit/core/json_read.hpp"
-#include "mpi_session.hpp"
 
-namespace cpkit::cli {
+namespace cpkit::rate {
 
 namespace fs = std::filesystem;
 
@@ -33,8 +25,6 @@ namespace {
 // Version 2 adds the map identity (map_id) after the magic: a chunk names the map it belongs to.
 constexpr char kMagic[8] = {'c', 'p', 'k', 'c', 'h', 'n', 'k', '2'};
 constexpr std::size_t kHeaderBytes = 8 + 8 + 4 * 8;  // magic, map_id, index, rows, rank
-constexpr int kTagDone = 11;    // worker -> rank 0: a finished chunk (or "ready")
-constexpr int kTagAssign = 12;  // rank 0 -> worker: the next chunk index, -1 = stop
 
 void put_u64(std::string& s, uint64_t v) {
   char b[8];
@@ -49,6 +39,8 @@ uint64_t get_u64(const std::string& s, std::size_t& at) {
   return v;
 }
 
+}  // namespace
+
 uint64_t fnv1a(const std::string& bytes) {
   uint64_t h = 1469598103934665603ull;
   for (unsigned char c : bytes) {
@@ -58,9 +50,12 @@ uint64_t fnv1a(const std::string& bytes) {
   return h;
 }
 
+
 std::string chunk_path(const std::string& folder, int k) {
   return (fs::path(folder) / ("chunk_" + std::to_string(k) + ".bin")).string();
 }
+
+namespace {
 
 /// The bytes of a checkpoint file (its first `head` bytes), which must have at most
 /// `max_bytes`. Only a regular file is read: a device (/dev/zero), a
@@ -127,6 +122,8 @@ uint64_t max_chunk_bytes(const ChunkPlan& p, int k) {
 
 constexpr uint64_t kMaxManifestBytes = uint64_t{1} << 20;
 
+}  // namespace
+
 /// The chunk of file `path`, checked against the map: a regular file of bounded size, chunk k
 /// with the plan's rows, written for this map (map_id).
 MapChunk read_chunk(const ChunkRun& run, const std::string& path, int k) {
@@ -160,44 +157,6 @@ void write_file_atomic(const std::string& path, const std::string& bytes) {
   fs::rename(tmp, path, ec);
   if (ec) throw InputError("cannot write '" + path + "': " + ec.message());
 }
-
-/// Rank 0's side: stores finished chunks, consumes them in order.
-class Collector {
- public:
-  Collector(const ChunkRun& run, std::vector<char> in_checkpoint)
-      : run_(run), in_checkpoint_(std::move(in_checkpoint)) {}
-
-  void finished(MapChunk&& c) {
-    c.map_id = run_.map_id;
-    if (!run_.checkpoint.empty()) write_file_atomic(chunk_path(run_.checkpoint, c.index), serialize_chunk(c));
-    const int k = c.index;
-    waiting_.emplace(k, std::move(c));
-    drain();
-  }
-  /// Consumes what is ready: the next chunk in order, from memory or from the checkpoint.
-  void drain() {
-    while (next_ < run_.plan.chunks) {
-      auto it = waiting_.find(next_);
-      if (it != waiting_.end()) {
-        run_.consume(it->second);
-        waiting_.erase(it);
-      } else if (in_checkpoint_[static_cast<std::size_t>(next_)]) {
-        run_.consume(read_chunk(run_, chunk_path(run_.checkpoint, next_), next_));
-      } else {
-        break;
-      }
-      ++next_;
-      if (run_.progress) run_.progress("chunks", static_cast<double>(next_) / run_.plan.chunks);
-    }
-  }
-  bool all_consumed() const { return next_ == run_.plan.chunks; }
-
- private:
-  const ChunkRun& run_;
-  std::vector<char> in_checkpoint_;
-  std::map<int, MapChunk> waiting_;
-  int next_ = 0;
-};
 
 /// The chunks already finished in the checkpoint (rank 0): with --resume and the same manifest;
 /// otherwise the folder is started afresh.
@@ -298,13 +257,6 @@ std::vector<char> open_checkpoint(const ChunkRun& run, ChunkRunStats& stats) {
   return have;
 }
 
-[[noreturn]] void fail_job(const char* what, int code) {
-  std::cerr.clear();  // ranks other than 0 are silenced (main.cpp): this message must show
-  std::cerr << "cpkit map: rank " << mpi::rank() << " of " << mpi::size() << ": " << what
-            << "; the job stops (finished chunks stay in the checkpoint for --resume)\n";
-  mpi::abort(code);
-}
-}  // namespace
 
 std::string serialize_chunk(const MapChunk& c) {
   std::string s(kMagic, 8);
@@ -349,208 +301,11 @@ MapChunk parse_chunk(const std::string& b) {
   return c;
 }
 
-ChunkPlan plan_chunks(int rows, int64_t columns) {
-  ChunkPlan p;
-  p.rows = rows;
-  p.columns = columns;
-  const int max_rows = static_cast<int>(std::max<int64_t>(1, (int64_t{1} << 20) / std::max<int64_t>(1, columns)));
-  p.chunk_rows = std::max(1, std::min(max_rows, (rows + 63) / 64));
-  p.chunks = (rows + p.chunk_rows - 1) / p.chunk_rows;
-  return p;
-}
-
-ChunkRunStats run_chunks(const ChunkRun& run) {
-  ChunkRunStats stats;
-  stats.ranks = mpi::size();
-  stats.rank_cells.assign(static_cast<std::size_t>(stats.ranks), 0);
-  const bool distributed = mpi::active() && mpi::size() > 1;
-  auto cells_of = [&](int k) {
-    return static_cast<int64_t>(run.plan.end(k) - run.plan.begin(k)) * run.plan.columns;
-  };
-  if (!distributed) {
-    const std::vector<char> have = open_checkpoint(run, stats);
-    Collector col(run, have);
-    col.drain();
-    for (int k = 0; k < run.plan.chunks; ++k) {
-      if (have[static_cast<std::size_t>(k)]) continue;
-      MapChunk c = run.compute(k);
-      stats.rank_cells[0] += cells_of(k);
-      col.finished(std::move(c));
-    }
-    if (!col.all_consumed()) throw std::logic_error("map chunks left unconsumed");
-    return stats;
-  }
-
-  // Distributed. Rank 0 decides what is missing (input errors there stop every rank cleanly:
-  // the others wait for their first assignment, which is then "stop").
-  if (mpi::rank() != 0) {
-    try {
-      mpi::send_bytes(std::string(), 0, kTagDone);  // ready
-      for (;;) {
-        const long long k = mpi::recv_int(0, kTagAssign);
-        if (k < 0) break;
-        MapChunk c = run.compute(static_cast<int>(k));
-        c.rank = mpi::rank();
-        mpi::send_bytes(serialize_chunk(c), 0, kTagDone);
-      }
-    } catch (const InputError& e) {
-      fail_job(e.what(), 2);
-    } catch (const std::exception& e) {
-      fail_job(e.what(), 4);
-    }
-    return stats;  // the per-rank figures are rank 0's
-  }
-  std::vector<char> have;
-  try {
-    have = open_checkpoint(run, stats);
-  } catch (const InputError&) {
-    // Release the workers, then report the input error as a single process would.
-    for (int r = 1; r < mpi::size(); ++r) {
-      int from = 0;
-      (void)mpi::recv_bytes(kTagDone, &from);
-      mpi::send_int(-1, from, kTagAssign);
-    }
-    throw;
-  }
-  try {
-    Collector col(run, have);
-    col.drain();
-    std::vector<int> todo;
-    for (int k = run.plan.chunks - 1; k >= 0; --k)
-      if (!have[static_cast<std::size_t>(k)]) todo.push_back(k);  // back = the next to hand out
-    // Rank 0 computes chunks too, on a thread of its own, so that its main thread (the only
-    // one that calls MPI) answers the other ranks at once: a rank never waits for its next
-    // chunk while rank 0 computes.
-    std::mutex mutex;
-    std::vector<MapChunk> local_done;
-    std::exception_ptr local_error;
-    bool local_running = true;
-    auto take = [&](int& k) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (todo.empty()) return false;
-      k = todo.back();
-      todo.pop_back();
-      return true;
-    };
-    std::thread local([&] {
-      try {
-        for (int k; take(k);) {
-          MapChunk c = run.compute(k);
-          std::lock_guard<std::mutex> lock(mutex);
-          stats.rank_cells[0] += cells_of(k);
-          local_done.push_back(std::move(c));
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        local_error = std::current_exception();
-        todo.clear();
-      }
-      std::lock_guard<std::mutex> lock(mutex);
-      local_running = false;
-    });
-    struct Join {
-      std::thread& t;
-      ~Join() { if (t.joinable()) t.join(); }
-    } join{local};
-    int workers = mpi::size() - 1;
-    for (;;) {
-      bool idle = true;
-      int from = 0;
-      if (workers > 0 && mpi::probe(kTagDone, &from, false)) {
-        idle = false;
-        const std::string bytes = mpi::recv_bytes(kTagDone, &from);
-        if (!bytes.empty()) {
-          MapChunk c = parse_chunk(bytes);
-          stats.rank_cells[static_cast<std::size_t>(from)] += cells_of(c.index);
-          col.finished(std::move(c));
-        }
-        int k = -1;
-        if (take(k)) {
-          mpi::send_int(k, from, kTagAssign);
-        } else {
-          mpi::send_int(-1, from, kTagAssign);
-          --workers;
-        }
-      }
-      std::vector<MapChunk> mine;
-      bool running = true;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        mine.swap(local_done);
-        running = local_running;
-        if (local_error) std::rethrow_exception(local_error);
-      }
-      for (auto& c : mine) col.finished(std::move(c));
-      if (!mine.empty()) idle = false;
-      if (workers == 0 && !running) break;
-      if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
-    if (!col.all_consumed()) throw std::logic_error("map chunks left unconsumed");
-  } catch (const InputError& e) {
-    fail_job(e.what(), 2);
-  } catch (const std::exception& e) {
-    fail_job(e.what(), 4);
-  }
-  return stats;
-}
-
 void remove_checkpoint(const std::string& folder) {
   if (folder.empty()) return;
   std::error_code ec;
   fs::remove_all(folder, ec);
 }
 
-ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
-                             const nlohmann::json& manifest, const ChunkPlan& plan,
-                             const std::function<MapChunk(int)>& compute,
-                             const std::function<void(const MapChunk&)>& consume,
-                             const rate::MapProgress& progress) {
-  ChunkRun run;
-  run.plan = plan;
-  run.compute = compute;
-  run.consume = consume;
-  run.resume = resume;
-  if (!out_prefix.empty()) {
-    run.checkpoint = out_prefix + ".parts";
-    run.manifest = manifest;
-    run.manifest["chunk_rows"] = plan.chunk_rows;
-    run.manifest["chunks"] = plan.chunks;
-    run.map_id = fnv1a(run.manifest.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
-  }
-  if (mpi::rank() == 0) run.progress = progress;
-  return run_chunks(run);
-}
 
-void add_run_figures(nlohmann::json& j, const ChunkRunStats& st) {
-  j["ranks"] = st.ranks;
-  j["rank_cells"] = st.rank_cells;
-  if (st.resumed_chunks > 0) j["resumed_cells"] = st.resumed_cells;
-}
-
-nlohmann::json boxes_to_json(const std::vector<rate::GridClassBox>& boxes) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& b : boxes) out.push_back({b.code, b.cells, b.x_min, b.x_max, b.y_min, b.y_max});
-  return out;
-}
-
-void merge_boxes(std::map<int, rate::GridClassBox>& into, const nlohmann::json& boxes) {
-  for (const auto& b : boxes) {
-    const int code = b.at(0).get<int>();
-    rate::GridClassBox& g = into[code];
-    if (g.cells == 0) {
-      g.code = code;
-      g.x_min = b.at(2).get<double>();
-      g.x_max = b.at(3).get<double>();
-      g.y_min = b.at(4).get<double>();
-      g.y_max = b.at(5).get<double>();
-    } else {
-      g.x_min = std::min(g.x_min, b.at(2).get<double>());
-      g.x_max = std::max(g.x_max, b.at(3).get<double>());
-      g.y_min = std::min(g.y_min, b.at(4).get<double>());
-      g.y_max = std::max(g.y_max, b.at(5).get<double>());
-    }
-    g.cells += b.at(1).get<int64_t>();
-  }
-}
-
-}  // namespace cpkit::cli
+}  // namespace cpkit::rate

@@ -1,11 +1,16 @@
 #pragma once
-// Distributed and resumable grid maps (docs/cluster.md). A map's rows are cut into chunks that
-// depend on the map alone (never on the ranks or threads); the chunks are computed by the
-// processes of an MPI job, handed out one at a time by rank 0 as ranks finish (cells of one map
-// differ in cost by orders of magnitude), or by one process; each finished chunk is kept in a
-// checkpoint folder PREFIX.parts/ (written atomically), and rank 0 consumes the chunks in row
-// order, so every output is the one a single process writes. A run stopped part-way (Ctrl-C, a
-// killed job) is resumed from the finished chunks with --resume.
+// The run of a grid map (docs/cluster.md): its rows cut into chunks that depend on the map alone
+// (never on the ranks or threads), computed by one process or by the processes of a job (handed
+// out one at a time by rank 0 as ranks finish: cells of one map differ in cost by orders of
+// magnitude), each finished chunk kept in a checkpoint folder PREFIX.parts/ (written
+// atomically), consumed by rank 0 in row order, so that every output is the one a single process
+// writes. A run stopped part-way (Ctrl-C, a killed job, ChunkRun::chunk_limit) is resumed from
+// the finished chunks.
+//
+// The library knows no MPI: the program injects the transport (MapTransport; cpkit's is
+// apps/platform/mpi_session.hpp). Without one the run is one process, rank 0 of 1, so that
+// Python and the tests call it directly.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -15,8 +20,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_transport.hpp"
 
-namespace cpkit::cli {
+namespace cpkit::rate {
 
 /// One computed chunk: rows [row_begin, row_end), its cell arrays (raw bytes, in the order the
 /// map kind defines) and the summary of its rows (the kind's JSON).
@@ -27,14 +33,12 @@ struct MapChunk {
   nlohmann::json summary;
   std::vector<std::string> arrays;
 };
-/// Bytes of a chunk (for MPI messages and checkpoint files) and back; parse_chunk throws
-/// InputError when the bytes are not a chunk (a truncated or foreign file, a summary nested
-/// deeper than kMaxJsonDepth).
+/// Bytes of a chunk (for messages and checkpoint files) and back; parse_chunk throws InputError
+/// when the bytes are not a chunk (a truncated or foreign file, a summary nested too deep).
 std::string serialize_chunk(const MapChunk& c);
 MapChunk parse_chunk(const std::string& bytes);
-/// JSON of a checkpoint file (a manifest, a chunk's summary), nested at most kMaxJsonDepth
-/// deep: deeper or invalid text is an InputError naming `what` (the DOM's destructor and
-/// dump() recurse, so the depth is bounded while parsing).
+/// JSON of a checkpoint file (a manifest, a chunk's summary), parsed with the bounded parser of
+/// every cpkit input: invalid or too deep text is an InputError naming `what`.
 nlohmann::json parse_checkpoint_json(const std::string& text, const std::string& what);
 
 /// The cut of a map with `rows` rows of `columns` cells: about 64 chunks (one row each for
@@ -46,6 +50,14 @@ struct ChunkPlan {
   int end(int k) const noexcept { return std::min(rows, (k + 1) * chunk_rows); }
 };
 ChunkPlan plan_chunks(int rows, int64_t columns);
+/// Chunk k of the plan, its rows set, to be filled by the map kind.
+inline MapChunk chunk_of(const ChunkPlan& plan, int k) {
+  MapChunk c;
+  c.index = k;
+  c.row_begin = plan.begin(k);
+  c.row_end = plan.end(k);
+  return c;
+}
 
 struct ChunkRun {
   ChunkPlan plan;
@@ -54,10 +66,14 @@ struct ChunkRun {
   std::string checkpoint;  ///< folder for finished chunks ("" for none)
   nlohmann::json manifest; ///< what the map is: a resumed run must have exactly the same
   /// Hash of the manifest, written into every chunk: a chunk of another map (another run on
-  /// the same prefix) is refused on --resume.
+  /// the same prefix) is refused on resume.
   uint64_t map_id = 0;
   bool resume = false;     ///< reuse the finished chunks of the checkpoint
-  rate::MapProgress progress;
+  MapProgress progress;
+  MapTransport* transport = nullptr;  ///< null: one process
+  /// At most this many chunks computed in this run (one process; -1: all). A run stopped by it
+  /// returns complete = false with the finished chunks in the checkpoint, to be resumed.
+  int chunk_limit = -1;
 };
 
 struct ChunkRunStats {
@@ -65,31 +81,33 @@ struct ChunkRunStats {
   std::vector<int64_t> rank_cells;  ///< cells each rank computed in this run
   int64_t resumed_cells = 0;        ///< cells taken from the checkpoint
   int resumed_chunks = 0;
+  bool complete = false;  ///< every chunk consumed (rank 0; other ranks: their part done)
 };
 
 /// Runs the map's chunks (every rank calls it). Errors during the distributed phase end the
-/// whole job (a message naming the rank, then MPI_Abort): no rank waits for a dead one. Throws
-/// InputError (before any work) when --resume meets a checkpoint of a different map.
+/// whole job (MapTransport::abort naming the rank). Throws InputError (before any work) when a
+/// resume meets a checkpoint of a different map, or a file there cpkit did not write.
 ChunkRunStats run_chunks(const ChunkRun& run);
 
 /// Removes the checkpoint folder (after the outputs are complete).
 void remove_checkpoint(const std::string& folder);
 
 /// A grid map's chunks with the checkpoint PREFIX.parts when `out_prefix` is set (manifest:
-/// what the map is); `progress` is called on rank 0 only. Returns the run's figures.
+/// what the map is; the plan is added to it); `progress` is called on rank 0 only.
 ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
                              const nlohmann::json& manifest, const ChunkPlan& plan,
                              const std::function<MapChunk(int)>& compute,
                              const std::function<void(const MapChunk&)>& consume,
-                             const rate::MapProgress& progress);
+                             const MapProgress& progress, MapTransport* transport = nullptr,
+                             int chunk_limit = -1);
 
-/// The run figures of a map's JSON: "ranks", "rank_cells", and "resumed_cells" after --resume.
+/// The run figures of a map's JSON: "ranks", "rank_cells", and "resumed_cells" after a resume.
 void add_run_figures(nlohmann::json& j, const ChunkRunStats& st);
 
 /// Class boxes of a part of a map, as JSON ([code, cells, x_min, x_max, y_min, y_max] each), and
 /// their merge into the boxes of the whole map (by code; min/max and sums: what one pass over
 /// all cells gives).
-nlohmann::json boxes_to_json(const std::vector<rate::GridClassBox>& boxes);
-void merge_boxes(std::map<int, rate::GridClassBox>& into, const nlohmann::json& boxes);
+nlohmann::json boxes_to_json(const std::vector<GridClassBox>& boxes);
+void merge_boxes(std::map<int, GridClassBox>& into, const nlohmann::json& boxes);
 
-}  // namespace cpkit::cli
+}  // namespace cpkit::rate

@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+namespace cpkit::rate {
+class MapTransport;
+}
+
 namespace cpkit::cli::mpi {
 
 /// True when this cpkit was built with MPI (CMake option CPKIT_WITH_MPI).
@@ -34,5 +38,9 @@ void send_int(long long value, int dest, int tag);
 long long recv_int(int source, int tag);
 /// Every rank's value, on every rank.
 std::vector<long long> all_gather(long long value);
+
+/// The transport a map run uses (cpkit/rate_problem/maps/map_run.hpp) when MPI is active; null
+/// otherwise (one process).
+rate::MapTransport* map_transport();
 
 }  // namespace cpkit::cli::mpi

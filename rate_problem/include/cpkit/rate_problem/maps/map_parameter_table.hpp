@@ -1,0 +1,47 @@
+#pragma once
+// The one table of map parameters (docs/maps.md): every quantity a map axis (`--param`,
+// `--param2`) can vary, for which kind of map (one point, N points of a 2-D system, 3-D
+// systems), whether one point's value can be chosen (NAME@i, i = 1..N), how a value is applied
+// and how it is validated. The three map kinds and Python check a name against it, so that an
+// unknown or inapplicable name is refused the same way (InputError naming it: exit 2).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cpkit::rate {
+
+/// The map kinds a parameter applies to (bits).
+enum MapDimension : unsigned {
+  kMapOnePoint = 1,  ///< cpkit map --preset / model options (grid_map.hpp: MapParameter)
+  kMapNPoints = 2,   ///< cpkit map --system FILE, "dim": 2 (system_grid_map.hpp)
+  kMap3d = 4,        ///< cpkit map --system FILE, "dim": 3 (sphere_map_3d.hpp)
+};
+std::string_view to_string(MapDimension d) noexcept;  ///< "one-point", "N-point", "3-D"
+
+struct MapParameterRow {
+  const char* name;       ///< as written on the command line: "mu", "P_s", "a12/a11"
+  unsigned dimensions;    ///< MapDimension bits
+  bool per_point;         ///< NAME@i accepted (maps of systems: N points, 3-D)
+  const char* applied;    ///< what a value sets
+  const char* validated;  ///< what is checked, and when
+};
+/// Every map parameter, in the order of the docs.
+const std::vector<MapParameterRow>& map_parameter_table();
+
+/// NAME or NAME@i checked against the table for a map of `dimension` with `n_points` points:
+/// the row and the point (0: every point). Throws InputError naming the parameter when it is
+/// unknown (with the accepted names of this kind), applies to other kinds of map only (naming
+/// them), does not take @i, or its i is not in 1..n_points. A non-empty `context` starts the
+/// message ("--param: ...").
+struct MapParameterRef {
+  const MapParameterRow* row = nullptr;
+  int point = 0;
+};
+MapParameterRef check_map_parameter(std::string_view text, MapDimension dimension, int n_points,
+                                    const std::string& context = "");
+
+/// The accepted names of one kind of map, comma-separated ("mu, a11, ..."; with NAME@i for
+/// systems), for messages and --help.
+std::string map_parameter_names(MapDimension dimension, int n_points = 0);
+
+}  // namespace cpkit::rate

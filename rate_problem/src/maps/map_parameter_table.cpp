@@ -1,0 +1,103 @@
+// The table of map parameters (map_parameter_table.hpp) and the one check of a name against it.
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+
+#include <algorithm>
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::rate {
+
+namespace {
+constexpr unsigned kAll = kMapOnePoint | kMapNPoints | kMap3d;
+
+std::string where_it_applies(unsigned dims) {
+  std::string s;
+  for (MapDimension d : {kMapOnePoint, kMapNPoints, kMap3d})
+    if (dims & d) s += (s.empty() ? "" : ", ") + std::string(to_string(d)) + " maps";
+  return s;
+}
+}  // namespace
+
+std::string_view to_string(MapDimension d) noexcept {
+  switch (d) {
+    case kMapOnePoint: return "one-point";
+    case kMapNPoints: return "N-point";
+    case kMap3d: return "3-D";
+  }
+  return "?";
+}
+
+const std::vector<MapParameterRow>& map_parameter_table() {
+  static const std::vector<MapParameterRow> table = {
+      {"mu", kAll, true, "friction coefficient (of every point, or of point i)",
+       "> 0, with the model (validate) at every grid value before any cell"},
+      {"a11", kMapOnePoint, false, "A_11 of the 2x2 compliance block", "A positive definite"},
+      {"a12", kMapOnePoint, false, "A_12 (= A_21)", "A positive definite"},
+      {"a22", kMapOnePoint, false, "A_22", "A positive definite"},
+      {"a12/a11", kMapOnePoint, false, "A_12 = value * A_11 (A_11 kept)", "A positive definite"},
+      {"C_T", kAll, true, "tangential compliance", ">= 0"},
+      {"k_a", kAll, true, "Archard wear coefficient (k = k_a / (3 P_s))", ">= 0"},
+      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0"},
+      {"P_N", kMapOnePoint | kMapNPoints, true,
+       "normal force of the points in state c or d (a sliding point stays on its friction limit)",
+       "> 0; N points: point i must be in state c or d, and some point for P_N"},
+      {"kappa", kMapOnePoint, false, "kappa = k_a P_N / (3 P_s): sets k_a = 3 P_s kappa / P_N",
+       "needs P_N > 0 (state c or d)"},
+      {"coupling", kMapNPoints, false,
+       "A(c) = D + c (A - D): the points' own 2x2 blocks kept, the blocks between points scaled",
+       "A(c) positive definite"},
+      {"alpha_X", kMap3d, true, "half-axis alpha_X of the wear ellipse", "> 0"},
+      {"alpha_Y", kMap3d, true, "half-axis alpha_Y of the wear ellipse", "> 0"},
+  };
+  return table;
+}
+
+std::string map_parameter_names(MapDimension dimension, int n_points) {
+  std::string s, at;
+  for (const auto& r : map_parameter_table()) {
+    if (!(r.dimensions & dimension)) continue;
+    s += (s.empty() ? "" : ", ") + std::string(r.name);
+    if (r.per_point && dimension != kMapOnePoint) at += (at.empty() ? "" : ", ") + std::string(r.name) + "@i";
+  }
+  if (!at.empty())
+    s += ", or one point's " + at + " with i = 1.." + std::to_string(std::max(1, n_points));
+  return s;
+}
+
+MapParameterRef check_map_parameter(std::string_view text, MapDimension dimension, int n_points,
+                                    const std::string& context) {
+  const std::string s(text);
+  const auto at = text.find('@');
+  const std::string_view base = text.substr(0, at);
+  const auto& table = map_parameter_table();
+  const auto it = std::find_if(table.begin(), table.end(),
+                               [&](const MapParameterRow& r) { return base == r.name; });
+  const std::string kind(to_string(dimension));
+  const std::string pre = context.empty() ? "" : context + ": ";
+  if (it == table.end())
+    throw InputError(pre + "unknown map parameter '" + s + "' for a " + kind +
+                     " map (accepted: " + map_parameter_names(dimension, n_points) + ")");
+  if (!(it->dimensions & dimension))
+    throw InputError(pre + "map parameter '" + std::string(base) + "' does not apply to " +
+                     kind + " maps (it applies to " + where_it_applies(it->dimensions) +
+                     "; accepted here: " + map_parameter_names(dimension, n_points) + ")");
+  MapParameterRef ref{&*it, 0};
+  if (at == std::string_view::npos) return ref;
+  if (!it->per_point || dimension == kMapOnePoint)
+    throw InputError(pre + "map parameter '" + s + "': " + it->name +
+                     (dimension == kMapOnePoint ? " of a one-point map has no point number"
+                                                : " applies to the whole system, not to one point"));
+  const std::string digits(text.substr(at + 1));
+  const bool numeric = !digits.empty() && digits.size() <= 9 &&
+                       std::all_of(digits.begin(), digits.end(),
+                                   [](char c) { return c >= '0' && c <= '9'; });
+  const long i = numeric ? std::stol(digits) : 0;
+  if (i < 1 || i > n_points)
+    throw InputError(pre + "map parameter '" + s + "': the point number must be 1.." +
+                     std::to_string(n_points) + " (the system has " + std::to_string(n_points) +
+                     " points)");
+  ref.point = static_cast<int>(i);
+  return ref;
+}
+
+}  // namespace cpkit::rate

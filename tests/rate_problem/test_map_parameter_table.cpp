@@ -1,0 +1,90 @@
+// The one table of map parameters (maps/map_parameter_table.hpp) against the three parsers and
+// appliers it governs: every name the table gives a kind of map is accepted by that kind's
+// parser (and names itself back), every other name is refused naming it; NAME@i; P_s of
+// N-point maps set as the file would set it (the softening limit |P_T| = mu P_N - k P_N^2,
+// k = k_a / (3 P_s), by hand).
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
+#include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
+
+using namespace cpkit::rate;
+
+TEST_CASE("MapParameterTableGovernsTheThreeParsers", "[map][params]") {
+  int one = 0, n_points = 0, three_d = 0;
+  for (const auto& row : map_parameter_table()) {
+    const std::string name = row.name;
+    CAPTURE(name);
+    // One point: the enum's name is the table's.
+    const auto p1 = map_parameter_from_string(name);
+    CHECK(p1.has_value() == bool(row.dimensions & kMapOnePoint));
+    if (p1) {
+      CHECK(std::string(to_string(*p1)) == name);
+      ++one;
+    }
+    // N points.
+    if (row.dimensions & kMapNPoints) {
+      CHECK(parse_system_map_parameter(name, 2).name() == name);
+      ++n_points;
+    } else {
+      CHECK_THROWS_WITH(parse_system_map_parameter(name, 2),
+                        Catch::Contains("'" + name + "'") && Catch::Contains("does not apply"));
+    }
+    // 3-D.
+    if (row.dimensions & kMap3d) {
+      CHECK(cpkit::rate3d::parse_map_3d_parameter(name, 2).name() == name);
+      ++three_d;
+    } else {
+      CHECK_THROWS_WITH(cpkit::rate3d::parse_map_3d_parameter(name, 2),
+                        Catch::Contains("'" + name + "'") && Catch::Contains("does not apply"));
+    }
+  }
+  // The enums' sizes: MapParameter 10 values, SystemMapParameter 6 (P_s included), Map3dParameter 6.
+  CHECK(one == 10);
+  CHECK(n_points == 6);
+  CHECK(three_d == 6);
+}
+
+TEST_CASE("MapParameterNamesAreCheckedWithTheirPoint", "[map][params]") {
+  CHECK_THROWS_WITH(check_map_parameter("nonsense", kMapOnePoint, 1, "--param"),
+                    Catch::StartsWith("--param: unknown map parameter 'nonsense'") &&
+                        Catch::Contains("kappa"));
+  CHECK_THROWS_WITH(check_map_parameter("coupling", kMapOnePoint, 1),
+                    Catch::Contains("applies to N-point maps"));
+  CHECK_THROWS_WITH(check_map_parameter("mu@1", kMapOnePoint, 1),
+                    Catch::Contains("no point number"));
+  CHECK_THROWS_WITH(check_map_parameter("coupling@1", kMapNPoints, 2),
+                    Catch::Contains("not to one point"));
+  CHECK_THROWS_WITH(check_map_parameter("P_s@3", kMapNPoints, 2),
+                    Catch::Contains("1..2"));
+  CHECK_THROWS_WITH(check_map_parameter("P_s@x", kMapNPoints, 2), Catch::Contains("1..2"));
+  CHECK_THROWS_WITH(check_map_parameter("P_N", kMap3d, 1), Catch::Contains("does not apply"));
+  const MapParameterRef r = check_map_parameter("P_s@2", kMapNPoints, 2);
+  CHECK(std::string(r.row->name) == "P_s");
+  CHECK(r.point == 2);
+  CHECK(parse_system_map_parameter("P_s@2", 2).name() == "P_s@2");
+}
+
+TEST_CASE("PsOfAnNPointMapSetsTheHardnessAndTheSlidingLimit", "[map][params]") {
+  // Point 2 slides (state d, P_N = 2) under the softening criterion (35): |P_T| = mu P_N - k P_N^2.
+  const ContactSystem base = parse_contact_system(
+      R"({"A": [[2, 0.1, 0, 0], [0.1, 2, 0, 0], [0, 0, 2, 0.1], [0, 0, 0.1, 2]],
+          "criterion": "softening",
+          "points": [{"state": "b", "mu": 0.5, "k_a": 0.3, "P_s": 1},
+                     {"state": "d", "mu": 0.5, "k_a": 0.3, "P_s": 1, "P_N": 2, "sgnPT": 1}]})");
+  const ContactSystem s = apply_system_map_parameter(base, parse_system_map_parameter("P_s@2", 2), 4);
+  CHECK(s.points[0].P_s == 1);
+  CHECK(s.points[1].P_s == 4);
+  // k = 0.3 / (3 * 4) = 0.025: P_T = 0.5 * 2 - 0.025 * 4 = 0.9 (hand calculation).
+  CHECK(s.points[1].P_T == Approx(0.9).epsilon(1e-14));
+  const ContactSystem all = apply_system_map_parameter(base, parse_system_map_parameter("P_s", 2), 2);
+  CHECK(all.points[0].P_s == 2);
+  CHECK(all.points[1].P_s == 2);
+  CHECK_THROWS_AS(apply_system_map_parameter(base, parse_system_map_parameter("P_s", 2), 0),
+                  cpkit::InputError);
+}
