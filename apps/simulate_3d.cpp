@@ -11,7 +11,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/three_d/fretting_3d.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
-#include "simulate_config.hpp"
+#include "cpkit/rate_problem/simulation/simulate_config.hpp"
 #include "simulation_outputs.hpp"
 
 namespace cpkit::cli {
@@ -96,7 +96,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   orbit.ramp_steps = count_option(c, "ramp-steps", orbit.ramp_steps);
   throw_if_invalid(orbit.validate(), "orbit");
   // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
-  check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
+  rate::check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
                          true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
 
   rate3d::Fretting3dOptions o;

@@ -15,7 +15,7 @@ namespace {
 
 /// A csv load for N points: rows t, F_T1, F_N1, ..., F_TN, F_NN ('#' comments, optional header).
 std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int N) {
-  const std::string text = read_bounded(path, kMaxLoadCsvBytes, "load history");
+  const std::string text = rate::read_bounded(path, rate::kMaxLoadCsvBytes, "load history");
   std::vector<rate::SystemLoadPoint> pts;
   std::istringstream in(text);
   std::string line;
@@ -47,7 +47,7 @@ std::vector<double> vec(const Eigen::VectorXd& v) { return {v.data(), v.data() +
 
 }  // namespace
 
-int run_system_simulation(const SimulateSettings& s, const rate::SystemFile& file,
+int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFile& file,
                           bool print_json_summary) {
   const rate::ContactSystem sys = rate::parse_contact_system(file);
   const int N = sys.n_points();
@@ -60,7 +60,7 @@ int run_system_simulation(const SimulateSettings& s, const rate::SystemFile& fil
     load = rate::system_fretting_source(s.fretting, *sys.pattern1, *sys.pattern2);
   } else {
     stored = read_system_csv(s.load_csv, N);
-    check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
+    rate::check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
     load = rate::system_history_source(stored, s.csv_period);
   }
   rate::SystemSimulationOptions o;
