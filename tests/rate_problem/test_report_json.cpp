@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/rate_json.hpp"
 #include "cpkit/rate_problem/report/step_json.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
@@ -205,4 +206,46 @@ TEST_CASE("step JSON: N points, one array per field", "[report]") {
   CHECK(e.at("values").at("P_N1") == json({2.0, 0.0}));
   CHECK(e.at("values").at("g1") == json({0.0, -0.5}));
   CHECK(e.at("residual") == 1e-15);
+}
+
+TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
+  using namespace cpkit::rate3d;
+  Rates3d slip, stick;
+  slip.dP_T = {1, -2};
+  slip.dP_N = 0.5;
+  slip.dw_Ti = {3, 4};  // |(3, 4)| = 5: direction (0.6, 0.8), angle atan2(4, 3)
+  stick.dP_N = 7;
+  const json r = rates_3d_json({slip, stick});
+  CHECK(r.at("dP_T") == json({{1.0, -2.0}, {0.0, 0.0}}));
+  CHECK(r.at("dP_N") == json({0.5, 7.0}));
+  CHECK(r.at("dw_Ti")[0] == json({3.0, 4.0}));
+  json e;
+  add_slip_json(e, {Type3d::kSlip, Type3d::kStick}, {slip, stick});
+  CHECK(e.at("slip_direction")[0][0].get<double>() == Approx(0.6));
+  CHECK(e.at("slip_direction")[0][1].get<double>() == Approx(0.8));
+  CHECK(e.at("slip_direction")[1].is_null());
+  CHECK(e.at("slip_angle")[0].get<double>() == Approx(0.9272952180016122));
+  json none;
+  add_slip_json(none, {Type3d::kStick}, {stick});
+  CHECK_FALSE(none.contains("slip_direction"));  // no point slips: no field
+
+  Step3dSolution s;
+  s.type = Type3d::kSlip;
+  s.values.P_T1 = {0.3, -0.4};
+  s.values.DP_T = {1, 2};
+  s.values.DP_N = 3;
+  s.values.Dw_T = {4, 5};
+  s.values.Dw_N = 6;
+  s.values.g1 = -0.25;
+  s.slip_direction = {0, -1};
+  s.slip_angle = -1.5707963267948966;
+  const json j = step_3d_solution_json(s);
+  CHECK(j.at("type") == "slip");
+  CHECK(j.at("P_T1") == json({0.3, -0.4}));
+  CHECK(j.at("DP") == json({1.0, 2.0, 3.0}));
+  CHECK(j.at("Dw") == json({4.0, 5.0, 6.0}));
+  CHECK(j.at("g1") == -0.25);
+  CHECK(j.at("slip_direction") == json({0.0, -1.0}));
+  s.type = Type3d::kStick;
+  CHECK(step_3d_solution_json(s).at("slip_angle").is_null());
 }
