@@ -9,6 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/simulate_config.hpp"
+#include "cpkit/rate_problem/simulation/system_simulation.hpp"
 
 using namespace cpkit::rate;
 using Catch::Contains;
@@ -121,4 +122,26 @@ TEST_CASE("simulate config: byte sizes for messages and options", "[simulate_con
   CHECK(cpkit::parse_byte_size("1.5K", "--max-output") == 1536.0);
   CHECK(cpkit::parse_byte_size("2GiB", "--max-output") == 2147483648.0);
   CHECK_THROWS_WITH(cpkit::parse_byte_size("-3M", "--max-output"), Contains("--max-output must be"));
+}
+
+TEST_CASE("load CSV: one point and N points through the one row loop", "[simulate_config]") {
+  // Two points: t, F_T1, F_N1, F_T2, F_N2 per row; a header, a comment and a blank line skipped.
+  const std::string text = "t, FT1, FN1, FT2, FN2\n# comment\n0, 0, 1, 0, 2\n\n0.5; 0.25 1 -0.25\t2\n";
+  const std::vector<SystemLoadPoint> pts = parse_system_load_csv(text, "two.csv", 2);
+  REQUIRE(pts.size() == 2);
+  CHECK(pts[1].t == 0.5);
+  CHECK(pts[1].F(0) == 0.25);
+  CHECK(pts[1].F(2) == -0.25);
+  CHECK(pts[1].F(3) == 2);
+  CHECK_THROWS_WITH(parse_system_load_csv("0, 1, 2\n", "bad.csv", 2),
+                    Contains("bad.csv:1: 3 values; a system of 2 points needs t and 4 forces"));
+  CHECK_THROWS_WITH(parse_system_load_csv("# nothing\n", "empty.csv", 1),
+                    Contains("empty.csv: the load history is empty"));
+  CHECK_THROWS_WITH(parse_system_load_csv("0, 1, 2\n1, 0x10, 2\n", "hex.csv", 1),
+                    Contains("hex.csv:2"));
+  const LoadHistory h = parse_load_csv("t,F_T,F_N\n0,0,1\n1,0.5,1\n", "one.csv");
+  REQUIRE(h.points.size() == 2);
+  CHECK(h.points[1].F_T == 0.5);
+  CHECK_THROWS_WITH(parse_load_csv("0,0,1\n1,0.5\n", "one.csv"),
+                    Contains("one.csv:2: expected three columns t, F_T, F_N"));
 }
