@@ -30,7 +30,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/one_point/rate_lcp.hpp"
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
-#include "cpkit/rate_problem/report/rate_json.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 
 namespace cpkit::cli {
 

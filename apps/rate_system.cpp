@@ -13,7 +13,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
-#include "cpkit/rate_problem/report/rate_json.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
 

@@ -30,7 +30,7 @@
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
-#include "cpkit/rate_problem/report/step_json.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/three_d/system_3d.hpp"
 

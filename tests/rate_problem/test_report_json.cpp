@@ -1,4 +1,4 @@
-// The JSON of rate and step results (report/rate_json.hpp, report/step_json.hpp), called
+// The JSON of rate and step results (report/json.hpp, report/json_3d.hpp), called
 // directly. Independent sources: the grazing example of docs/contact_model.md Sec. 5 (state b,
 // A = [[1, 2], [2, 5]], mu = 1, dF = (1, 1.2): separation, stick and slip+), solved here by hand
 // with A^-1 = [[5, -2], [-2, 1]] (det A = 1); its degenerate segment (mu = 0.5, dF = (1, 2));
@@ -10,8 +10,7 @@
 
 #include "cpkit/rate_problem/one_point/rate_problem.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
-#include "cpkit/rate_problem/report/rate_json.hpp"
-#include "cpkit/rate_problem/report/step_json.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
 

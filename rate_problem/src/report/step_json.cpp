@@ -1,4 +1,4 @@
-#include "cpkit/rate_problem/report/step_json.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 
 #include <set>
 #include <string>
