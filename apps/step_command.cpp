@@ -182,18 +182,9 @@ int run_system(const StepArgs& a, const CLI::App& cmd, const rate::SystemFile& f
   if (a.json) {
     nlohmann::json j;
     j["cpkit_version"] = CPKIT_VERSION;
-    nlohmann::json pts = nlohmann::json::array();
-    for (const auto& q : p.system.points)
-      pts.push_back({{"mu", q.mu}, {"C_T", q.C_T}, {"k_a", q.k_a}, {"P_s", q.P_s},
-                     {"P_T", q.P_T}, {"P_N", q.P_N}, {"g", q.g}});
-    nlohmann::json A = nlohmann::json::array();
-    for (Eigen::Index r = 0; r < p.system.A.rows(); ++r) {
-      std::vector<double> row(p.system.A.cols());
-      for (Eigen::Index c = 0; c < p.system.A.cols(); ++c) row[c] = p.system.A(r, c);
-      A.push_back(row);
-    }
-    j["input"] = {{"system", a.system}, {"name", p.system.name}, {"A", A}, {"points", pts},
-                  {"DF", a.DF}};
+    j["input"] = rate::contact_system_json(p.system);
+    j["input"]["system"] = a.system;
+    j["input"]["DF"] = a.DF;
     j["n_points"] = N;
     j.update(rate::system_step_set_json(s));
     print_json(j);

@@ -248,3 +248,22 @@ TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
   s.type = Type3d::kStick;
   CHECK(step_3d_solution_json(s).at("slip_angle").is_null());
 }
+
+TEST_CASE("step JSON: the N-point input echo", "[report]") {
+  ContactSystem sys;
+  sys.name = "two";
+  sys.A = (Eigen::MatrixXd(4, 4) << 2, 0.5, 0, 0, 0.5, 3, 0, 0, 0, 0, 4, 1, 0, 0, 1, 5).finished();
+  sys.points.resize(2);
+  sys.points[1].mu = 0.3;
+  sys.points[1].P_N = 2;
+  sys.points[1].g = 0;
+  const json j = contact_system_json(sys);
+  CHECK(j.at("name") == "two");
+  CHECK(j.at("A").size() == 4);
+  CHECK(j.at("A")[0] == json({2.0, 0.5, 0.0, 0.0}));
+  CHECK(j.at("A")[3] == json({0.0, 0.0, 1.0, 5.0}));  // row 4 as written above
+  CHECK(j.at("points").size() == 2);
+  CHECK(j.at("points")[1].at("mu") == 0.3);
+  CHECK(j.at("points")[1].at("P_N") == 2.0);
+  CHECK(j.at("points")[1].size() == 7);  // mu, C_T, k_a, P_s, P_T, P_N, g
+}

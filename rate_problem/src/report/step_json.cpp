@@ -60,6 +60,20 @@ nlohmann::json step_result_json(const StepSolveResult& r, const StepSolutionSet*
   return j;
 }
 
+nlohmann::json contact_system_json(const ContactSystem& system) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (const auto& q : system.points)
+    pts.push_back({{"mu", q.mu}, {"C_T", q.C_T}, {"k_a", q.k_a}, {"P_s", q.P_s},
+                   {"P_T", q.P_T}, {"P_N", q.P_N}, {"g", q.g}});
+  nlohmann::json A = nlohmann::json::array();
+  for (Eigen::Index r = 0; r < system.A.rows(); ++r) {
+    std::vector<double> row(static_cast<std::size_t>(system.A.cols()));
+    for (Eigen::Index c = 0; c < system.A.cols(); ++c) row[static_cast<std::size_t>(c)] = system.A(r, c);
+    A.push_back(row);
+  }
+  return {{"name", system.name}, {"A", A}, {"points", pts}};
+}
+
 nlohmann::json system_step_set_json(const SystemStepSolutionSet& s) {
   nlohmann::json j;
   j["count"] = s.solutions.size();

@@ -12,6 +12,7 @@
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/system_rate.hpp"
 
 namespace cpkit::rate {
@@ -49,6 +50,10 @@ nlohmann::json step_set_json(const StepSolutionSet& s);
 /// an active-set answer was picked from; null: none) solutions_found ("inf" when infinite),
 /// listed (1) and enumeration_complete.
 nlohmann::json step_result_json(const StepSolveResult& r, const StepSolutionSet* all = nullptr);
+
+/// The step's input echo of an N-point system: {"name", "A" (rows), "points" (mu, C_T, k_a,
+/// P_s, P_T, P_N, g per point)}, in the units of the system file.
+nlohmann::json contact_system_json(const ContactSystem& system);
 
 /// Every solution of an N-point step: count, complete, notes, solutions (types per point,
 /// values: each field an array with one number per point, residual). The program adds
