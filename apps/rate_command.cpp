@@ -30,6 +30,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 
 namespace cpkit::cli {
 
@@ -54,17 +55,6 @@ struct RateArgs {
   std::vector<CLI::Option*> one_point_required;  ///< required unless --system is given
 };
 
-nlohmann::json rates_json(const rate::Rates& r) {
-  nlohmann::json j;
-  j["dP_T"] = r.dP_T;
-  j["dP_N"] = r.dP_N;
-  j["dw_T"] = r.dw_T;
-  j["dw_N"] = r.dw_N;
-  j["dw_Ti"] = r.dw_Ti;
-  j["dw_w"] = r.dw_w;
-  return j;
-}
-
 std::string rates_text(const rate::Rates& r) {
   std::ostringstream o;
   o.precision(10);
@@ -86,52 +76,6 @@ bool single_solver(rate::RateMethod m) {
 
 std::string count_text(const rate::RateSolutionSet& s) {
   return s.count() < 0 ? std::string("inf") : std::to_string(s.count());
-}
-
-/// `reference`: the enumerated set a single solver's answer was checked against (or null).
-nlohmann::json set_json(const rate::RateSolutionSet& s, const rate::RateSolutionSet* reference) {
-  nlohmann::json j;
-  j["complete"] = s.complete;
-  // A count only when the set is complete: one solver's one solution is not "count 1".
-  if (s.complete) {
-    if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
-  } else {
-    j["found"] = s.solutions.size();
-  }
-  if (reference && reference->complete) {
-    if (reference->count() < 0) j["enumerated_count"] = "inf";
-    else j["enumerated_count"] = reference->count();
-  }
-  j["types"] = sorted_types(s);
-  nlohmann::json sols = nlohmann::json::array();
-  for (const auto& p : s.solutions) {
-    nlohmann::json e;
-    e["type"] = std::string(rate::to_string(p.type));
-    e["kind"] = std::string(rate::to_string(p.kind));
-    switch (p.kind) {
-      case rate::RateSolution::Kind::kPoint:
-        e["rates"] = rates_json(p.start);
-        break;
-      case rate::RateSolution::Kind::kSegment:
-        e["start"] = rates_json(p.start);
-        e["start_closed"] = p.start_closed;
-        e["end"] = rates_json(p.end);
-        e["end_closed"] = p.end_closed;
-        break;
-      case rate::RateSolution::Kind::kRay:
-        e["start"] = rates_json(p.start);
-        e["start_closed"] = p.start_closed;
-        e["direction"] = rates_json(p.direction);
-        break;
-    }
-    sols.push_back(e);
-  }
-  j["solutions"] = sols;
-  j["Lambda"] = s.Lambda;
-  j["D_plus"] = s.D_plus;  // D_s = a11 - s mu a12 (docs/model.md Sec. 2.2), as the text prints
-  j["D_minus"] = s.D_minus;
-  j["unique_for_all_directions"] = s.unique_for_all_directions;
-  return j;
 }
 
 void print_text(const rate::RateSolutionSet& s, const RateArgs& a,
@@ -247,7 +191,7 @@ int run_rate(const RateArgs& a) {
     }
   }
   const rate::RateSolutionSet* reference = single ? &ref : nullptr;
-  if (a.json) print_json(set_json(s, reference)); else print_text(s, a, reference);
+  if (a.json) print_json(rate::rate_set_json(s, reference)); else print_text(s, a, reference);
   if (!problem.empty()) {
     std::cerr << "cpkit rate: " << problem << '\n';
     code = inconclusive ? kExitInconclusive : kExitDisagreement;

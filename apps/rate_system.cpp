@@ -13,6 +13,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
@@ -20,17 +21,6 @@ namespace cpkit::cli {
 namespace {
 
 std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-
-nlohmann::json values_json(const rate::SystemRates& r) {
-  nlohmann::json j;
-  j["dP_T"] = as_list(r.dP_T);
-  j["dP_N"] = as_list(r.dP_N);
-  j["dw_T"] = as_list(r.dw_T);
-  j["dw_N"] = as_list(r.dw_N);
-  j["dw_Ti"] = as_list(r.dw_Ti);
-  j["dw_w"] = as_list(r.dw_w);
-  return j;
-}
 
 std::string values_text(const rate::SystemRates& r) {
   std::ostringstream o;
@@ -47,12 +37,6 @@ std::string values_text(const rate::SystemRates& r) {
   vec("dw_Ti", r.dw_Ti);
   vec("dw_w", r.dw_w);
   return o.str();
-}
-
-nlohmann::json types_json(const std::vector<rate::SolutionType>& t) {
-  nlohmann::json j = nlohmann::json::array();
-  for (auto x : t) j.push_back(std::string(rate::to_string(x)));
-  return j;
 }
 
 }  // namespace
@@ -116,37 +100,7 @@ int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
     j["cpkit_version"] = CPKIT_VERSION;
     j["input"] = {{"system", path}, {"name", sys.name}, {"dF", as_list(dF)}, {"method", method_name}};
     j["n_points"] = N;
-    j["complete"] = s.complete;
-    if (s.complete) {
-      if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
-    } else {
-      j["found"] = s.solutions.size();
-    }
-    if (!s.message.empty()) j["message"] = s.message;
-    nlohmann::json sols = nlohmann::json::array();
-    for (const auto& p : s.solutions) {
-      nlohmann::json e;
-      e["types"] = types_json(p.types);
-      e["kind"] = std::string(rate::to_string(p.kind));
-      switch (p.kind) {
-        case rate::RateSolution::Kind::kPoint:
-          e["values"] = values_json(p.start);
-          break;
-        case rate::RateSolution::Kind::kSegment:
-          e["start"] = values_json(p.start);
-          e["start_closed"] = p.start_closed;
-          e["end"] = values_json(p.end);
-          e["end_closed"] = p.end_closed;
-          break;
-        case rate::RateSolution::Kind::kRay:
-          e["start"] = values_json(p.start);
-          e["start_closed"] = p.start_closed;
-          e["direction"] = values_json(p.direction);
-          break;
-      }
-      sols.push_back(e);
-    }
-    j["solutions"] = sols;
+    j.update(rate::system_rate_set_json(s));
     print_json(j);
   } else {
     std::cout << "rate problem, system " << (sys.name.empty() ? path : sys.name) << " (" << N

@@ -12,6 +12,7 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
@@ -19,7 +20,6 @@
 namespace cpkit::cli {
 namespace {
 
-using Pair = std::vector<double>;
 
 /// One listed solution: per point its type and rates (a ray: the one-point state-d case).
 struct Row {
@@ -27,22 +27,6 @@ struct Row {
   std::vector<rate3d::Rates3d> rates, direction;
   bool ray = false, origin_included = true;
 };
-
-nlohmann::json values_json(const std::vector<rate3d::Rates3d>& rs) {
-  // as the 2-D N-point output, one entry per point; tangential quantities as [x, y] pairs
-  nlohmann::json j = {{"dP_T", nlohmann::json::array()}, {"dP_N", nlohmann::json::array()},
-                      {"dw_T", nlohmann::json::array()}, {"dw_N", nlohmann::json::array()},
-                      {"dw_Ti", nlohmann::json::array()}, {"dw_w", nlohmann::json::array()}};
-  for (const auto& r : rs) {
-    j["dP_T"].push_back(Pair{r.dP_T(0), r.dP_T(1)});
-    j["dP_N"].push_back(r.dP_N);
-    j["dw_T"].push_back(Pair{r.dw_T(0), r.dw_T(1)});
-    j["dw_N"].push_back(r.dw_N);
-    j["dw_Ti"].push_back(Pair{r.dw_Ti(0), r.dw_Ti(1)});
-    j["dw_w"].push_back(r.dw_w);
-  }
-  return j;
-}
 
 std::string values_text(const std::vector<rate3d::Rates3d>& rs) {
   std::ostringstream o;
@@ -77,24 +61,7 @@ std::string types_text(const std::vector<rate3d::Type3d>& t) {
 
 /// Unit slip directions and angles per point (null where the point does not slip).
 void slip_json(const Row& r, nlohmann::json& e) {
-  nlohmann::json dir = nlohmann::json::array(), ang = nlohmann::json::array();
-  bool any = false;
-  for (std::size_t i = 0; i < r.types.size(); ++i) {
-    const Eigen::Vector2d v = r.ray ? r.direction[i].dw_Ti : r.rates[i].dw_Ti;
-    if (r.types[i] == rate3d::Type3d::kSlip && v.cwiseAbs().maxCoeff() > 0) {
-      const Eigen::Vector2d u = v.normalized();
-      dir.push_back(Pair{u(0), u(1)});
-      ang.push_back(std::atan2(u(1), u(0)));
-      any = true;
-    } else {
-      dir.push_back(nullptr);
-      ang.push_back(nullptr);
-    }
-  }
-  if (any) {
-    e["slip_direction"] = dir;
-    e["slip_angle"] = ang;
-  }
+  rate3d::add_slip_json(e, r.types, r.ray ? r.direction : r.rates);
 }
 
 }  // namespace
@@ -183,11 +150,11 @@ int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& 
       for (auto t : r.types) e["types"].push_back(std::string(rate3d::to_string(t)));
       e["kind"] = r.ray ? "ray" : "point";
       if (r.ray) {
-        e["start"] = values_json(r.rates);
+        e["start"] = rate3d::rates_3d_json(r.rates);
         e["start_closed"] = r.origin_included;
-        e["direction"] = values_json(r.direction);
+        e["direction"] = rate3d::rates_3d_json(r.direction);
       } else {
-        e["values"] = values_json(r.rates);
+        e["values"] = rate3d::rates_3d_json(r.rates);
       }
       slip_json(r, e);
       sols.push_back(e);

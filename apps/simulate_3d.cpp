@@ -9,9 +9,10 @@
 #include <iostream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
-#include "simulate_config.hpp"
+#include "cpkit/rate_problem/simulation/simulate_config.hpp"
 #include "simulation_outputs.hpp"
 
 namespace cpkit::cli {
@@ -52,13 +53,6 @@ int count_option(const Simulate3dCommon& c, const char* key, int dflt) {
 using Pair = std::vector<double>;
 Pair pair(const Eigen::Vector2d& v) { return {v(0), v(1)}; }
 
-nlohmann::json sample_json(const rate3d::Fretting3dSample& s) {
-  return {{"step", s.step}, {"t", s.t}, {"F_T", pair(s.F_T)}, {"F_N", s.F_N},
-          {"P_T", pair(s.P_T)}, {"P_N", s.P_N}, {"g", s.g}, {"w_T", pair(s.w_T)},
-          {"w_N", s.w_N}, {"w_Ti", pair(s.w_Ti)}, {"w_w", s.w_w},
-          {"type", std::string(rate3d::to_string(s.type))}};
-}
-
 }  // namespace
 
 int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
@@ -96,7 +90,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   orbit.ramp_steps = count_option(c, "ramp-steps", orbit.ramp_steps);
   throw_if_invalid(orbit.validate(), "orbit");
   // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
-  check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
+  rate::check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
                          true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
 
   rate3d::Fretting3dOptions o;
@@ -173,7 +167,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   j["outcome"] = std::string(rate3d::to_string(r.outcome));
   j["message"] = r.message;
   j["steps"] = r.steps;
-  j["final"] = sample_json(r.final_state);
+  j["final"] = rate3d::fretting_3d_sample_json(r.final_state);
   j["final_wear_depth"] = r.wear_depth;
   j["wear_integral"] = r.wear_integral;
   j["total_slip"] = r.total_slip;

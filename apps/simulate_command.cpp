@@ -29,7 +29,8 @@
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
 #include "simulate_3d.hpp"
-#include "simulate_config.hpp"
+#include "cpkit/rate_problem/report/simulation_json.hpp"
+#include "cpkit/rate_problem/simulation/simulate_config.hpp"
 #include "simulate_system.hpp"
 #include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
@@ -49,7 +50,7 @@ struct SimArgs {
   Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (simulate_3d.cpp)
 };
 
-using Settings = SimulateSettings;
+using Settings = rate::SimulateSettings;
 
 void set_criterion(Settings& s, const std::string& c) {
   const auto crit = rate::criterion_from_string(c);
@@ -162,71 +163,8 @@ class CsvSeries {
   std::ofstream f_;
 };
 
-nlohmann::json sample_json(const rate::SimulationSample& s) {
-  return {{"step", s.step}, {"t", s.t}, {"F_T", s.F_T}, {"F_N", s.F_N}, {"P_T", s.P_T},
-          {"P_N", s.P_N}, {"w_T", s.w_T}, {"w_N", s.w_N}, {"w_w", s.w_w}, {"w_Ti", s.w_Ti},
-          {"g", s.g}, {"state", std::string(rate::to_string(s.state))},
-          {"temperature", s.temperature}};
-}
-
 nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) {
-  nlohmann::json j;
-  j["outcome"] = std::string(rate::to_string(r.outcome));
-  j["message"] = r.message;
-  j["steps"] = r.steps;
-  j["final"] = sample_json(r.final_state);
-  j["final_wear_depth"] = r.wear_depth;
-  j["wear_integral"] = r.wear_integral;
-  j["total_slip"] = r.total_slip;
-  j["slip_per_cycle"] = r.slip_per_cycle;
-  j["wear_per_cycle"] = r.wear_per_cycle;
-  j["energy"] = {{"external_work", r.external_work}, {"stored", r.stored_energy},
-                 {"dissipation", r.dissipation}, {"work_abs", r.work_abs},
-                 {"balance_error_rel", r.energy_error},
-                 {"min_step_dissipation_rel", r.min_step_dissipation},
-                 {"thermal_dissipation", r.thermal_dissipation}};
-  nlohmann::json bps = nlohmann::json::array();
-  for (const auto& b : r.branch_points) {
-    std::vector<std::string> types;
-    for (int t = 0; t < 5; ++t)
-      if (b.types & (1u << t))
-        types.emplace_back(rate::to_string(static_cast<rate::SolutionType>(t)));
-    bps.push_back({{"step", b.step}, {"t", b.t}, {"count", b.count}, {"types", types},
-                   {"chosen", std::string(rate::to_string(b.chosen))}});
-  }
-  j["branch_points"] = {{"count", r.branch_steps}, {"rule", std::string(rate::to_string(s.opt.branch_rule))},
-                        {"recorded", bps}};
-  j["max_step_residual"] = r.max_residual;
-  if (s.opt.heat.enabled) j["temperature"] = {{"final", r.final_state.temperature}, {"max", r.max_temperature}};
-  j["wear_law"] = std::string(rate::to_string(s.opt.wear.law));
-  j["criterion"] = std::string(rate::to_string(s.opt.params.criterion));
-  // The settings actually used (config file and command line merged): with them the summary
-  // alone reproduces the run, even when the config file has changed since.
-  const auto& pp = s.opt.params;
-  nlohmann::json set;
-  set["parameters"] = {{"a11", pp.a11}, {"a12", pp.a12}, {"a22", pp.a22}, {"mu", pp.mu},
-                       {"C_T", pp.C_T}, {"k_a", pp.k_a}, {"P_s", pp.P_s},
-                       {"criterion", std::string(rate::to_string(pp.criterion))}};
-  set["wear"] = {{"law", std::string(rate::to_string(s.opt.wear.law))}, {"k_M", s.opt.wear.k_M}};
-  nlohmann::json load = {{"type", s.load_type}};
-  if (s.load_type == "fretting")
-    load.update({{"F_N", s.fretting.F_N}, {"amplitude", s.fretting.amplitude},
-                 {"period", s.fretting.period}, {"cycles", s.fretting.cycles},
-                 {"steps_per_cycle", s.fretting.steps_per_cycle},
-                 {"ramp_steps", s.fretting.ramp_steps}});
-  else if (s.load_type == "ramp")
-    load.update({{"F_T0", s.ramp.F_T0}, {"F_N0", s.ramp.F_N0}, {"F_T1", s.ramp.F_T1},
-                 {"F_N1", s.ramp.F_N1}, {"duration", s.ramp.duration}, {"steps", s.ramp.steps}});
-  else
-    load.update({{"file", s.load_csv}, {"period", s.csv_period}});
-  set["load"] = load;
-  const auto& h = s.opt.heat;
-  set["heat"] = {{"enabled", h.enabled}, {"heat_capacity", h.heat_capacity}, {"T_ref", h.T_ref},
-                 {"T_initial", h.T_initial}, {"T_body", {h.T_body[0], h.T_body[1]}},
-                 {"conductance", {h.conductance[0], h.conductance[1]}}};
-  set["branch_rule"] = std::string(rate::to_string(s.opt.branch_rule));
-  set["every"] = s.every;
-  j["settings"] = set;
+  nlohmann::json j = rate::simulation_summary_json(r, s);
   j["run"] = run_echo();  // version and command line
   return j;
 }
@@ -275,7 +213,7 @@ int run(const SimArgs& a) {
   if (const std::string o = a.three_d.first_given(); !o.empty())
     throw InputError(o + " needs a \"dim\": 3 system file (--system FILE; docs/contact_3d.md)");
   Settings s;
-  if (!a.config.empty()) read_simulate_config(a.config, s);
+  if (!a.config.empty()) rate::read_simulate_config(a.config, s);
   apply_args(a, s);
   // The config names its own system, load and outputs: the same check on what it gives.
   refuse_outputs_over_inputs("cpkit simulate", simulation_output_files(s.csv, s.summary, s.plot),
@@ -318,7 +256,7 @@ int run(const SimArgs& a) {
     throw InputError("k_a (--k_a, parameters.k_a) has no effect with the wear law mroz: its wear "
                      "constant is k_M");
   // Everything is checked (model, load, sizes) before the history is allocated.
-  validate_simulate_settings(s);
+  rate::validate_simulate_settings(s);
   if (file) return run_system_simulation(s, *file, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
@@ -334,7 +272,7 @@ int run(const SimArgs& a) {
     s.opt.record_every = 0;
   }
   rate::LoadHistory stored;
-  const rate::LoadSource load = make_simulate_source(s, stored);
+  const rate::LoadSource load = rate::make_simulate_source(s, stored);
   const rate::SimulationResult r = rate::simulate(load, s.opt);
   if (series) series->close();
   if (series) written.push_back(csv);

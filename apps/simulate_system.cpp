@@ -15,39 +15,15 @@ namespace {
 
 /// A csv load for N points: rows t, F_T1, F_N1, ..., F_TN, F_NN ('#' comments, optional header).
 std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int N) {
-  const std::string text = read_bounded(path, kMaxLoadCsvBytes, "load history");
-  std::vector<rate::SystemLoadPoint> pts;
-  std::istringstream in(text);
-  std::string line;
-  int lineno = 0;
-  bool header_allowed = true;
-  std::vector<double> v;
-  while (std::getline(in, line)) {
-    ++lineno;
-    // numbers parsed strictly, as the one-point load CSV (rate::parse_csv_row)
-    const std::string where = path + ":" + std::to_string(lineno);
-    const rate::CsvRow row = rate::parse_csv_row(line, header_allowed, where, v);
-    if (row == rate::CsvRow::kBlank) continue;
-    header_allowed = false;
-    if (row == rate::CsvRow::kHeader) continue;
-    if (static_cast<int>(v.size()) != 2 * N + 1)
-      throw InputError(where + ": " + std::to_string(v.size()) +
-                       " values; a system of " + std::to_string(N) + " points needs t and " +
-                       std::to_string(2 * N) + " forces");
-    rate::SystemLoadPoint p;
-    p.t = v[0];
-    p.F = Eigen::Map<Eigen::VectorXd>(v.data() + 1, 2 * N);
-    pts.push_back(p);
-  }
-  if (pts.empty()) throw InputError(path + ": the load history is empty");
-  return pts;
+  return rate::parse_system_load_csv(
+      rate::read_bounded(path, rate::kMaxLoadCsvBytes, "load history"), path, N);
 }
 
 std::vector<double> vec(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
 }  // namespace
 
-int run_system_simulation(const SimulateSettings& s, const rate::SystemFile& file,
+int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFile& file,
                           bool print_json_summary) {
   const rate::ContactSystem sys = rate::parse_contact_system(file);
   const int N = sys.n_points();
@@ -60,7 +36,7 @@ int run_system_simulation(const SimulateSettings& s, const rate::SystemFile& fil
     load = rate::system_fretting_source(s.fretting, *sys.pattern1, *sys.pattern2);
   } else {
     stored = read_system_csv(s.load_csv, N);
-    check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
+    rate::check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
     load = rate::system_history_source(stored, s.csv_period);
   }
   rate::SystemSimulationOptions o;

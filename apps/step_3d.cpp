@@ -20,6 +20,7 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 #include "cpkit/rate_problem/step/multistart_cap.hpp"
@@ -30,29 +31,6 @@ namespace cpkit::cli {
 namespace {
 
 using Pair = std::vector<double>;
-
-nlohmann::json solution_json(const rate3d::Step3dSolution& s) {
-  const rate3d::Step3dValues& v = s.values;
-  nlohmann::json e;
-  e["type"] = std::string(rate3d::to_string(s.type));
-  e["P_T1"] = Pair{v.P_T1(0), v.P_T1(1)};
-  e["P_N1"] = v.P_N1;
-  e["DP"] = Pair{v.DP_T(0), v.DP_T(1), v.DP_N};
-  e["Dw"] = Pair{v.Dw_T(0), v.Dw_T(1), v.Dw_N};
-  e["Dw_Ti"] = Pair{v.Dw_Ti(0), v.Dw_Ti(1)};
-  e["Dw_w"] = v.Dw_w;
-  e["g1"] = v.g1;
-  e["lambda"] = v.lambda;
-  if (s.type == rate3d::Type3d::kSlip) {
-    e["slip_direction"] = Pair{s.slip_direction(0), s.slip_direction(1)};
-    e["slip_angle"] = s.slip_angle;
-  } else {
-    e["slip_direction"] = nullptr;
-    e["slip_angle"] = nullptr;
-  }
-  e["residual"] = s.residual;
-  return e;
-}
 
 std::string solution_text(const rate3d::Step3dSolution& s) {
   const rate3d::Step3dValues& v = s.values;
@@ -176,7 +154,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     nlohmann::json sols = nlohmann::json::array();
     for (const auto& s : set.solutions) {
       nlohmann::json pts = nlohmann::json::array();
-      for (const auto& x : s.points) pts.push_back(solution_json(x));
+      for (const auto& x : s.points) pts.push_back(rate3d::step_3d_solution_json(x));
       sols.push_back({{"points", pts}, {"residual", s.residual}});
     }
     j["solutions"] = sols;
@@ -325,7 +303,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     if (mode == "facets") j["facets"] = a.facets;
     if (!set.message.empty()) j["message"] = set.message;
     nlohmann::json sols = nlohmann::json::array();
-    for (const auto& s : set.solutions) sols.push_back(solution_json(s));
+    for (const auto& s : set.solutions) sols.push_back(rate3d::step_3d_solution_json(s));
     j["solutions"] = sols;
     print_json(j);
   } else {

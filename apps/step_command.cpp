@@ -30,6 +30,7 @@
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
@@ -49,20 +50,6 @@ struct StepArgs {
   int facets = 0;      ///< --facets K (3-D files only, step_3d.cpp)
   int multistart = 0;  ///< --multistart N (3-D files only)
 };
-
-nlohmann::json values_json(const rate::StepValues& v) {
-  nlohmann::json j;
-  j["DP_T"] = v.DP_T;
-  j["DP_N"] = v.DP_N;
-  j["Dw_T"] = v.Dw_T;
-  j["Dw_N"] = v.Dw_N;
-  j["Dw_Ti"] = v.Dw_Ti;
-  j["Dw_w"] = v.Dw_w;
-  j["P_T1"] = v.P_T1;
-  j["P_N1"] = v.P_N1;
-  j["g1"] = v.g1;
-  return j;
-}
 
 std::string values_text(const rate::StepValues& v) {
   std::ostringstream o;
@@ -91,42 +78,8 @@ rate::StepProblem make_problem(const StepArgs& a) {
 
 int run_all(const rate::StepProblem& p, bool json) {
   const rate::StepSolutionSet s = rate::enumerate_step(p);
-  std::set<std::string> types;
-  for (const auto& sol : s.solutions) types.insert(std::string(rate::to_string(sol.type)));
   if (json) {
-    nlohmann::json j;
-    if (s.count() < 0) j["count"] = "inf"; else j["count"] = s.count();
-    j["types"] = std::vector<std::string>(types.begin(), types.end());
-    j["continuous_count"] = s.continuous_count;
-    j["complete"] = s.complete;
-    if (!s.complete) j["message"] = s.message;
-    nlohmann::json sols = nlohmann::json::array();
-    for (const auto& sol : s.solutions) {
-      nlohmann::json e;
-      e["type"] = std::string(rate::to_string(sol.type));
-      e["kind"] = std::string(rate::to_string(sol.kind));
-      switch (sol.kind) {
-        case rate::RateSolution::Kind::kPoint:
-          e["values"] = values_json(sol.start);
-          break;
-        case rate::RateSolution::Kind::kSegment:
-          e["start"] = values_json(sol.start);
-          e["start_closed"] = sol.start_closed;
-          e["end"] = values_json(sol.end);
-          e["end_closed"] = sol.end_closed;
-          break;
-        case rate::RateSolution::Kind::kRay:
-          e["start"] = values_json(sol.start);
-          e["start_closed"] = sol.start_closed;
-          e["direction"] = values_json(sol.direction);
-          break;
-      }
-      e["jump"] = sol.jump;
-      e["residual"] = sol.residual;
-      sols.push_back(e);
-    }
-    j["solutions"] = sols;
-    print_json(j);
+    print_json(rate::step_set_json(s));
   } else {
     std::cout << "step: " << (s.count() < 0 ? std::string("infinitely many")
                                               : std::to_string(s.count()))
@@ -185,26 +138,7 @@ int run_one(const rate::StepProblem& p, const std::string& chain, bool json) {
            : all->count() < 0 ? std::string("infinitely many")
                               : std::to_string(all->count());
   if (json) {
-    nlohmann::json j;
-    j["status"] = std::string(to_string(r.result.status));
-    j["solver"] = r.result.solver;
-    if (ok) {
-      j["type"] = std::string(rate::to_string(r.type));
-      j["values"] = values_json(r.values);
-    }
-    j["residual"] = r.result.residuals.natural;
-    nlohmann::json at = nlohmann::json::array();
-    for (const auto& a : r.result.attempts)
-      at.push_back({{"solver", a.solver}, {"status", std::string(to_string(a.status))},
-                    {"residual", a.residual}, {"seconds", a.seconds}, {"message", a.message}});
-    j["attempts"] = at;
-    j["message"] = r.result.message;
-    if (all) {
-      if (all->count() < 0) j["solutions_found"] = "inf"; else j["solutions_found"] = all->count();
-      j["listed"] = 1;
-      j["enumeration_complete"] = all->complete;
-    }
-    print_json(j);
+    print_json(rate::step_result_json(r, all ? &*all : nullptr));
   } else {
     std::cout << "status: " << to_string(r.result.status) << " (solver " << r.result.solver
               << ", residual " << r.result.residuals.natural << ")\n";
@@ -248,41 +182,11 @@ int run_system(const StepArgs& a, const CLI::App& cmd, const rate::SystemFile& f
   if (a.json) {
     nlohmann::json j;
     j["cpkit_version"] = CPKIT_VERSION;
-    nlohmann::json pts = nlohmann::json::array();
-    for (const auto& q : p.system.points)
-      pts.push_back({{"mu", q.mu}, {"C_T", q.C_T}, {"k_a", q.k_a}, {"P_s", q.P_s},
-                     {"P_T", q.P_T}, {"P_N", q.P_N}, {"g", q.g}});
-    nlohmann::json A = nlohmann::json::array();
-    for (Eigen::Index r = 0; r < p.system.A.rows(); ++r) {
-      std::vector<double> row(p.system.A.cols());
-      for (Eigen::Index c = 0; c < p.system.A.cols(); ++c) row[c] = p.system.A(r, c);
-      A.push_back(row);
-    }
-    j["input"] = {{"system", a.system}, {"name", p.system.name}, {"A", A}, {"points", pts},
-                  {"DF", a.DF}};
+    j["input"] = rate::contact_system_json(p.system);
+    j["input"]["system"] = a.system;
+    j["input"]["DF"] = a.DF;
     j["n_points"] = N;
-    j["count"] = s.solutions.size();
-    j["complete"] = s.complete;
-    j["notes"] = s.notes;
-    nlohmann::json sols = nlohmann::json::array();
-    for (const auto& sol : s.solutions) {
-      nlohmann::json e;
-      std::vector<std::string> types;
-      for (auto t : sol.types) types.emplace_back(rate::to_string(t));
-      e["types"] = types;
-      std::vector<double> f[9];
-      for (const auto& v : sol.values) {
-        const double x[9] = {v.DP_T, v.DP_N, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.P_T1, v.P_N1, v.g1};
-        for (int k = 0; k < 9; ++k) f[k].push_back(x[k]);
-      }
-      const char* names[9] = {"DP_T", "DP_N", "Dw_T", "Dw_N", "Dw_Ti", "Dw_w", "P_T1", "P_N1", "g1"};
-      nlohmann::json vals;
-      for (int k = 0; k < 9; ++k) vals[names[k]] = f[k];
-      e["values"] = vals;
-      e["residual"] = sol.residual;
-      sols.push_back(e);
-    }
-    j["solutions"] = sols;
+    j.update(rate::system_step_set_json(s));
     print_json(j);
   } else {
     std::cout << "step (" << N << " points): " << s.solutions.size() << " solution(s)"

@@ -247,7 +247,7 @@ void bench_solve(const char* solver, int n, int reps, const fs::path& dir, const
 
 #ifdef CPKIT_HAVE_SICONOS
 /// The peer process: Siconos' own reader, then its solver; prints the solve time, info, z, w.
-/// Like `cpkit`, it runs OpenBLAS on one thread (apps/blas_threads.hpp): the same work is compared.
+/// Like `cpkit`, it runs OpenBLAS on one thread (apps/platform/blas_threads.hpp): the same work is compared.
 int siconos_solve(const char* file, const std::string& solver) {
   if (!std::getenv("OPENBLAS_NUM_THREADS"))
     if (auto* set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))

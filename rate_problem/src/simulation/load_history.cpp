@@ -63,8 +63,8 @@ CsvRow parse_csv_row(const std::string& line_in, bool header_allowed, const std:
   return CsvRow::kNumbers;
 }
 
-LoadHistory parse_load_csv(const std::string& text, const std::string& origin) {
-  LoadHistory h;
+void for_each_csv_row(const std::string& text, const std::string& origin,
+                      const std::function<void(const std::vector<double>&, const std::string&)>& row) {
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -73,13 +73,20 @@ LoadHistory parse_load_csv(const std::string& text, const std::string& origin) {
   while (std::getline(in, line)) {
     ++lineno;
     const std::string where = origin + ":" + std::to_string(lineno);
-    const CsvRow row = parse_csv_row(line, header_allowed, where, v);
-    if (row == CsvRow::kBlank) continue;
+    const CsvRow kind = parse_csv_row(line, header_allowed, where, v);
+    if (kind == CsvRow::kBlank) continue;
     header_allowed = false;
-    if (row == CsvRow::kHeader) continue;
+    if (kind == CsvRow::kHeader) continue;
+    row(v, where);
+  }
+}
+
+LoadHistory parse_load_csv(const std::string& text, const std::string& origin) {
+  LoadHistory h;
+  for_each_csv_row(text, origin, [&](const std::vector<double>& v, const std::string& where) {
     if (v.size() != 3) throw InputError(where + ": expected three columns t, F_T, F_N");
     h.points.push_back({v[0], v[1], v[2]});
-  }
+  });
   const std::string m = h.validate();
   if (!m.empty()) throw InputError(origin + ": " + m);
   return h;

@@ -329,4 +329,21 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
   return res;
 }
 
+std::vector<SystemLoadPoint> parse_system_load_csv(const std::string& text,
+                                                   const std::string& origin, int N) {
+  std::vector<SystemLoadPoint> pts;
+  for_each_csv_row(text, origin, [&](const std::vector<double>& v, const std::string& where) {
+    if (static_cast<int>(v.size()) != 2 * N + 1)
+      throw InputError(where + ": " + std::to_string(v.size()) +
+                       " values; a system of " + std::to_string(N) + " points needs t and " +
+                       std::to_string(2 * N) + " forces");
+    SystemLoadPoint p;
+    p.t = v[0];
+    p.F = Eigen::Map<const Eigen::VectorXd>(v.data() + 1, 2 * N);
+    pts.push_back(p);
+  });
+  if (pts.empty()) throw InputError(origin + ": the load history is empty");
+  return pts;
+}
+
 }  // namespace cpkit::rate

@@ -33,6 +33,12 @@ enum class CsvRow { kBlank, kNumbers, kHeader };
 CsvRow parse_csv_row(const std::string& line, bool header_allowed, const std::string& where,
                      std::vector<double>& out);
 
+/// Calls `row(values, where)` for every line of numbers of a load CSV `text` (blank lines and
+/// comments skipped, one header line allowed before the first numbers; `where` is
+/// "origin:line" for messages). The one loop of the one-point and N-point load readers.
+void for_each_csv_row(const std::string& text, const std::string& origin,
+                      const std::function<void(const std::vector<double>&, const std::string&)>& row);
+
 /// CSV with columns t, F_T, F_N (a header line naming them is optional; '#' starts a comment;
 /// numbers as parse_csv_row reads them). Throws InputError naming the file and line for
 /// malformed input.

@@ -39,6 +39,12 @@ struct SystemLoadPoint {
   Eigen::VectorXd F;
 };
 
+/// A CSV load history for `n_points` points: rows t, F_T1, F_N1, ..., F_TN, F_NN (numbers,
+/// comments and a header as parse_load_csv). Throws InputError naming `origin` and the line for
+/// a row of another width, and for an empty history.
+std::vector<SystemLoadPoint> parse_system_load_csv(const std::string& text,
+                                                   const std::string& origin, int n_points);
+
 /// An N-point load history produced point by point (memory independent of its length).
 struct SystemLoadSource {
   std::size_t size = 0;

@@ -1,17 +1,17 @@
 #pragma once
 // The settings of `cpkit simulate` (docs/simulation.md, "Config file"): parsed from a JSON
 // config, overridden by the command line, and checked as a whole before anything is allocated.
-// A library of its own (cpkit_cli_config) so that tests/fuzz/fuzz_simulate_config.cpp can call
-// the parser directly.
+// Part of the library so that tests (tests/rate_problem/test_simulate_config.cpp), the fuzz
+// target (tests/fuzz/fuzz_simulate_config.cpp) and Python can call the parser directly.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "cpkit/rate_problem/simulation/load_history.hpp"
-#include "memory_limit.hpp"
+#include "cpkit/core/memory_limit.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 
-namespace cpkit::cli {
+namespace cpkit::rate {
 
 struct SimulateSettings {
   rate::SimulationOptions opt;
@@ -78,4 +78,4 @@ rate::LoadHistory make_simulate_history(const SimulateSettings& s);
 /// point by point; a CSV load is read into `storage`, which must outlive the source.
 rate::LoadSource make_simulate_source(const SimulateSettings& s, rate::LoadHistory& storage);
 
-}  // namespace cpkit::cli
+}  // namespace cpkit::rate

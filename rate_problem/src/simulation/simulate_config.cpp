@@ -1,4 +1,4 @@
-#include "simulate_config.hpp"
+#include "cpkit/rate_problem/simulation/simulate_config.hpp"
 
 #include <climits>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/json_read.hpp"
 
-namespace cpkit::cli {
+namespace cpkit::rate {
 namespace {
 
 using nlohmann::json;
@@ -351,4 +351,4 @@ rate::LoadHistory make_simulate_history(const SimulateSettings& s) {
   throw InputError("load type must be fretting, ramp or csv, got '" + s.load_type + "'");
 }
 
-}  // namespace cpkit::cli
+}  // namespace cpkit::rate

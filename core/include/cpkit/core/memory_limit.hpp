@@ -1,6 +1,6 @@
 #pragma once
-// The memory bound of the command line: a run (simulate's load history and series, a map's
-// cells) that would need more is refused up front (exit 2) with the size it would need.
+// The memory bound of a run (simulate's load history and series, a map's cells): a run that
+// would need more is refused up front (InputError; exit 2 in `cpkit`) with the size it would need.
 #include <cstdint>
 #include <cctype>
 #include <cstdio>
@@ -10,7 +10,7 @@
 
 #include "cpkit/core/errors.hpp"
 
-namespace cpkit::cli {
+namespace cpkit {
 
 constexpr std::int64_t kMemoryLimitBytes = std::int64_t{1} << 30;  // 1 GiB
 
@@ -53,4 +53,4 @@ inline double parse_byte_size(const std::string& text, const std::string& option
   return v * scale;
 }
 
-}  // namespace cpkit::cli
+}  // namespace cpkit

@@ -1,0 +1,72 @@
+#include "cpkit/rate_problem/report/json.hpp"
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "piece_json.hpp"
+
+namespace cpkit::rate {
+
+namespace {
+
+std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+}  // namespace
+
+nlohmann::json rates_json(const Rates& r) {
+  return {{"dP_T", r.dP_T}, {"dP_N", r.dP_N}, {"dw_T", r.dw_T},
+          {"dw_N", r.dw_N}, {"dw_Ti", r.dw_Ti}, {"dw_w", r.dw_w}};
+}
+
+nlohmann::json rates_json(const SystemRates& r) {
+  return {{"dP_T", as_list(r.dP_T)}, {"dP_N", as_list(r.dP_N)}, {"dw_T", as_list(r.dw_T)},
+          {"dw_N", as_list(r.dw_N)}, {"dw_Ti", as_list(r.dw_Ti)}, {"dw_w", as_list(r.dw_w)}};
+}
+
+nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* reference) {
+  using report_detail::count_json;
+  nlohmann::json j;
+  j["complete"] = s.complete;
+  // A count only when the set is complete: one solver's one solution is not "count 1".
+  if (s.complete) j["count"] = count_json(s.count());
+  else j["found"] = s.solutions.size();
+  if (reference && reference->complete) j["enumerated_count"] = count_json(reference->count());
+  std::set<std::string> types;
+  for (const auto& p : s.solutions) types.insert(std::string(to_string(p.type)));
+  j["types"] = std::vector<std::string>(types.begin(), types.end());
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& p : s.solutions) {
+    nlohmann::json e;
+    e["type"] = std::string(to_string(p.type));
+    report_detail::add_piece(e, p, "rates", [](const Rates& r) { return rates_json(r); });
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  j["Lambda"] = s.Lambda;
+  j["D_plus"] = s.D_plus;  // D_s = a11 - s mu a12 (docs/model.md Sec. 2.2), as the text prints
+  j["D_minus"] = s.D_minus;
+  j["unique_for_all_directions"] = s.unique_for_all_directions;
+  return j;
+}
+
+nlohmann::json system_rate_set_json(const SystemRateSolutionSet& s) {
+  nlohmann::json j;
+  j["complete"] = s.complete;
+  if (s.complete) j["count"] = report_detail::count_json(s.count());
+  else j["found"] = s.solutions.size();
+  if (!s.message.empty()) j["message"] = s.message;
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& p : s.solutions) {
+    nlohmann::json e;
+    nlohmann::json types = nlohmann::json::array();
+    for (auto t : p.types) types.push_back(std::string(to_string(t)));
+    e["types"] = types;
+    report_detail::add_piece(e, p, "values", [](const SystemRates& r) { return rates_json(r); });
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  return j;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,102 @@
+#include "cpkit/rate_problem/report/json.hpp"
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "piece_json.hpp"
+
+namespace cpkit::rate {
+
+nlohmann::json step_values_json(const StepValues& v) {
+  return {{"DP_T", v.DP_T},   {"DP_N", v.DP_N}, {"Dw_T", v.Dw_T}, {"Dw_N", v.Dw_N},
+          {"Dw_Ti", v.Dw_Ti}, {"Dw_w", v.Dw_w}, {"P_T1", v.P_T1}, {"P_N1", v.P_N1},
+          {"g1", v.g1}};
+}
+
+nlohmann::json step_set_json(const StepSolutionSet& s) {
+  std::set<std::string> types;
+  for (const auto& sol : s.solutions) types.insert(std::string(to_string(sol.type)));
+  nlohmann::json j;
+  j["count"] = report_detail::count_json(s.count());
+  j["types"] = std::vector<std::string>(types.begin(), types.end());
+  j["continuous_count"] = s.continuous_count;
+  j["complete"] = s.complete;
+  if (!s.complete) j["message"] = s.message;
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& sol : s.solutions) {
+    nlohmann::json e;
+    e["type"] = std::string(to_string(sol.type));
+    report_detail::add_piece(e, sol, "values",
+                             [](const StepValues& v) { return step_values_json(v); });
+    e["jump"] = sol.jump;
+    e["residual"] = sol.residual;
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  return j;
+}
+
+nlohmann::json step_result_json(const StepSolveResult& r, const StepSolutionSet* all) {
+  nlohmann::json j;
+  j["status"] = std::string(to_string(r.result.status));
+  j["solver"] = r.result.solver;
+  if (is_solution(r.result.status)) {
+    j["type"] = std::string(to_string(r.type));
+    j["values"] = step_values_json(r.values);
+  }
+  j["residual"] = r.result.residuals.natural;
+  nlohmann::json at = nlohmann::json::array();
+  for (const auto& a : r.result.attempts)
+    at.push_back({{"solver", a.solver}, {"status", std::string(to_string(a.status))},
+                  {"residual", a.residual}, {"seconds", a.seconds}, {"message", a.message}});
+  j["attempts"] = at;
+  j["message"] = r.result.message;
+  if (all) {
+    j["solutions_found"] = report_detail::count_json(all->count());
+    j["listed"] = 1;
+    j["enumeration_complete"] = all->complete;
+  }
+  return j;
+}
+
+nlohmann::json contact_system_json(const ContactSystem& system) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (const auto& q : system.points)
+    pts.push_back({{"mu", q.mu}, {"C_T", q.C_T}, {"k_a", q.k_a}, {"P_s", q.P_s},
+                   {"P_T", q.P_T}, {"P_N", q.P_N}, {"g", q.g}});
+  nlohmann::json A = nlohmann::json::array();
+  for (Eigen::Index r = 0; r < system.A.rows(); ++r) {
+    std::vector<double> row(static_cast<std::size_t>(system.A.cols()));
+    for (Eigen::Index c = 0; c < system.A.cols(); ++c) row[static_cast<std::size_t>(c)] = system.A(r, c);
+    A.push_back(row);
+  }
+  return {{"name", system.name}, {"A", A}, {"points", pts}};
+}
+
+nlohmann::json system_step_set_json(const SystemStepSolutionSet& s) {
+  nlohmann::json j;
+  j["count"] = s.solutions.size();
+  j["complete"] = s.complete;
+  j["notes"] = s.notes;
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& sol : s.solutions) {
+    std::vector<std::string> types;
+    for (auto t : sol.types) types.emplace_back(to_string(t));
+    // One array per field, one number per point.
+    nlohmann::json vals = {{"DP_T", nlohmann::json::array()}, {"DP_N", nlohmann::json::array()},
+                           {"Dw_T", nlohmann::json::array()}, {"Dw_N", nlohmann::json::array()},
+                           {"Dw_Ti", nlohmann::json::array()}, {"Dw_w", nlohmann::json::array()},
+                           {"P_T1", nlohmann::json::array()}, {"P_N1", nlohmann::json::array()},
+                           {"g1", nlohmann::json::array()}};
+    for (const auto& v : sol.values) {
+      const nlohmann::json point = step_values_json(v);
+      for (auto it = point.begin(); it != point.end(); ++it) vals[it.key()].push_back(*it);
+    }
+    sols.push_back({{"types", types}, {"values", vals}, {"residual", sol.residual}});
+  }
+  j["solutions"] = sols;
+  return j;
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,269 @@
+// The JSON of rate and step results (report/json.hpp, report/json_3d.hpp), called
+// directly. Independent sources: the grazing example of docs/contact_model.md Sec. 5 (state b,
+// A = [[1, 2], [2, 5]], mu = 1, dF = (1, 1.2): separation, stick and slip+), solved here by hand
+// with A^-1 = [[5, -2], [-2, 1]] (det A = 1); its degenerate segment (mu = 0.5, dF = (1, 2));
+// and solution sets written field by field here, whose JSON must carry exactly those numbers.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
+#include "cpkit/rate_problem/report/json.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/step_solve.hpp"
+
+using namespace cpkit::rate;
+using nlohmann::json;
+
+namespace {
+
+ContactParameters grazing_params(double mu) {
+  ContactParameters p;
+  p.a11 = 1;
+  p.a12 = 2;
+  p.a22 = 5;
+  p.mu = mu;
+  return p;
+}
+
+/// The solution of `type` in a "solutions" array (null when absent).
+json find_type(const json& sols, const std::string& type) {
+  for (const auto& e : sols)
+    if (e.at("type") == type) return e;
+  return nullptr;
+}
+
+/// Checks the six rates of a JSON object against hand values.
+void check_rates(const json& r, std::vector<double> want) {
+  const char* names[] = {"dP_T", "dP_N", "dw_T", "dw_N", "dw_Ti", "dw_w"};
+  REQUIRE(r.size() == 6);
+  for (int k = 0; k < 6; ++k) {
+    CAPTURE(names[k]);
+    CHECK(r.at(names[k]).get<double>() == Approx(want[k]).margin(1e-12));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("rate JSON: the grazing example, every solution by hand", "[report]") {
+  const RateSolutionSet s =
+      solve_rate_problem(grazing_params(1), {StateLabel::kB, 0, 1}, {1, 1.2});
+  const json j = rate_set_json(s);
+  CHECK(j.at("complete") == true);
+  CHECK(j.at("count") == 3);
+  CHECK_FALSE(j.contains("found"));
+  CHECK_FALSE(j.contains("enumerated_count"));
+  CHECK(j.at("types") == json({"separation", "slip+", "stick"}));  // sorted names
+  // D_s = a11 - s mu a12: D_+ = 1 - 2 = -1, D_- = 1 + 2 = 3; unique iff a11 > mu |a12| (1 > 2).
+  CHECK(j.at("D_plus").get<double>() == Approx(-1));
+  CHECK(j.at("D_minus").get<double>() == Approx(3));
+  CHECK(j.at("Lambda").get<double>() == 0);
+  CHECK(j.at("unique_for_all_directions") == false);
+  const json& sols = j.at("solutions");
+  REQUIRE(sols.size() == 3);
+  for (const auto& e : sols) CHECK(e.at("kind") == "point");
+  // separation: dP = 0, dw = A^-1 dF = (5 - 2.4, -2 + 1.2) = (2.6, -0.8), dw_T^i = dw_T.
+  check_rates(find_type(sols, "separation").at("rates"), {0, 0, 2.6, -0.8, 2.6, 0});
+  // stick: dw = 0, dP = dF.
+  check_rates(find_type(sols, "stick").at("rates"), {1, 1.2, 0, 0, 0, 0});
+  // slip+: dP_T = dP_N = p, dw = (w, 0): 1 - p = w, 1.2 - p = 2 w -> w = 0.2, p = 0.8.
+  check_rates(find_type(sols, "slip+").at("rates"), {0.8, 0.8, 0.2, 0, 0.2, 0});
+}
+
+TEST_CASE("rate JSON: a segment, and a single solver's answer is not a count", "[report]") {
+  // a11 = mu |a12| = 1: the slip+ segment from the stick point dP = dF = (1, 2) (open) to
+  // zero-force slip dP = 0, dw = A^-1 dF = (5 - 4, -2 + 2) = (1, 0) (closed).
+  const RateSolutionSet s =
+      solve_rate_problem(grazing_params(0.5), {StateLabel::kB, 0, 1}, {1, 2});
+  const json j = rate_set_json(s);
+  CHECK(j.at("count") == "inf");
+  const json seg = find_type(j.at("solutions"), "slip+");
+  REQUIRE(seg.is_object());
+  CHECK(seg.at("kind") == "segment");
+  CHECK_FALSE(seg.contains("rates"));
+  CHECK(seg.at("start_closed") == false);
+  CHECK(seg.at("end_closed") == true);
+  check_rates(seg.at("start"), {1, 2, 0, 0, 0, 0});
+  check_rates(seg.at("end"), {0, 0, 1, 0, 1, 0});
+  check_rates(find_type(j.at("solutions"), "stick").at("rates"), {1, 2, 0, 0, 0, 0});
+
+  // A single solver's set, written here: found (not count), enumerated_count from the reference.
+  RateSolutionSet one;
+  one.complete = false;
+  RateSolution p;
+  p.type = SolutionType::kStick;
+  p.start = {1, 1.2, 0, 0, 0, 0};
+  one.solutions.push_back(p);
+  RateSolutionSet reference;
+  reference.solutions.resize(3);
+  const json k = rate_set_json(one, &reference);
+  CHECK(k.at("complete") == false);
+  CHECK_FALSE(k.contains("count"));
+  CHECK(k.at("found") == 1);
+  CHECK(k.at("enumerated_count") == 3);
+  CHECK(k.at("solutions")[0].at("rates").at("dP_N") == 1.2);
+}
+
+TEST_CASE("rate JSON: N points, one array per field", "[report]") {
+  SystemRateSolutionSet s;
+  s.complete = false;
+  s.message = "why";
+  SystemRateSolution p;
+  p.types = {SolutionType::kSeparation, SolutionType::kStick};
+  p.kind = RateSolution::Kind::kRay;
+  const auto two = [](double a, double b) { return Eigen::VectorXd((Eigen::VectorXd(2) << a, b).finished()); };
+  p.start = {two(0, 1), two(0, 2), two(3, 0), two(-1, 0), two(3, 0), two(0, 0)};
+  p.start_closed = false;
+  p.direction = {two(0, 1), two(0, 0), two(0, 0), two(0, 0), two(0, 0), two(0, 0)};
+  s.solutions.push_back(p);
+  const json j = system_rate_set_json(s);
+  CHECK(j.at("complete") == false);
+  CHECK(j.at("found") == 1);
+  CHECK(j.at("message") == "why");
+  const json& e = j.at("solutions")[0];
+  CHECK(e.at("types") == json({"separation", "stick"}));
+  CHECK(e.at("kind") == "ray");
+  CHECK(e.at("start_closed") == false);
+  CHECK(e.at("start").at("dP_N") == json({0.0, 2.0}));
+  CHECK(e.at("start").at("dw_N") == json({-1.0, 0.0}));
+  CHECK(e.at("direction").at("dP_T") == json({0.0, 1.0}));
+  CHECK_FALSE(e.contains("end"));
+}
+
+TEST_CASE("step JSON: the grazing step, by hand", "[report]") {
+  // From P = 0, g = 0 without wear the step's equations are the rate problem's: the same three
+  // solutions (docs/contact_model.md), with P1 = DP and g1 = g0 + Dw_N - Dw_w = Dw_N.
+  StepProblem p;
+  p.params = grazing_params(1);
+  p.state = {0, 0, 0};
+  p.load = {1, 1.2};
+  const json j = step_set_json(enumerate_step(p));
+  CHECK(j.at("count") == 3);
+  CHECK(j.at("complete") == true);
+  CHECK_FALSE(j.contains("message"));
+  CHECK(j.at("types") == json({"separation", "slip+", "stick"}));
+  const json sep = find_type(j.at("solutions"), "separation");
+  REQUIRE(sep.is_object());
+  const json& v = sep.at("values");
+  REQUIRE(v.size() == 9);
+  CHECK(v.at("DP_T").get<double>() == Approx(0).margin(1e-12));
+  CHECK(v.at("Dw_T").get<double>() == Approx(2.6));
+  CHECK(v.at("Dw_N").get<double>() == Approx(-0.8));
+  CHECK(v.at("g1").get<double>() == Approx(-0.8));
+  CHECK(v.at("P_N1").get<double>() == Approx(0).margin(1e-12));
+  const json slip = find_type(j.at("solutions"), "slip+").at("values");
+  CHECK(slip.at("DP_T").get<double>() == Approx(0.8));
+  CHECK(slip.at("P_N1").get<double>() == Approx(0.8));
+  CHECK(slip.at("Dw_Ti").get<double>() == Approx(0.2));
+  for (const auto& e : j.at("solutions")) {
+    CHECK(e.contains("jump"));
+    CHECK(e.at("residual").get<double>() < 1e-10);
+  }
+
+  // One chain's answer: one of the three, with the enumeration it was picked from.
+  const StepSolveResult r = solve_step(p);
+  const StepSolutionSet all = enumerate_step(p);
+  const json k = step_result_json(r, &all);
+  CHECK(k.at("status") == "solved");
+  CHECK(k.at("solutions_found") == 3);
+  CHECK(k.at("listed") == 1);
+  CHECK(k.at("enumeration_complete") == true);
+  const std::string type = k.at("type");
+  const json want = find_type(j.at("solutions"), type);
+  REQUIRE(want.is_object());
+  CHECK(k.at("values").at("P_T1").get<double>() ==
+        Approx(want.at("values").at("P_T1").get<double>()).margin(1e-9));
+  CHECK(k.at("attempts").is_array());
+  CHECK_FALSE(k.at("attempts").empty());
+  CHECK(step_result_json(r).contains("solutions_found") == false);
+}
+
+TEST_CASE("step JSON: N points, one array per field", "[report]") {
+  SystemStepSolutionSet s;
+  s.complete = true;
+  SystemStepSolution sol;
+  sol.types = {SolutionType::kStick, SolutionType::kSlipMinus};
+  StepValues a, b;
+  a.DP_T = 1;
+  a.P_N1 = 2;
+  b.DP_T = -3;
+  b.g1 = -0.5;
+  sol.values = {a, b};
+  sol.residual = 1e-15;
+  s.solutions.push_back(sol);
+  s.notes = {"n1"};
+  const json j = system_step_set_json(s);
+  CHECK(j.at("count") == 1);
+  CHECK(j.at("complete") == true);
+  CHECK(j.at("notes") == json({"n1"}));
+  const json& e = j.at("solutions")[0];
+  CHECK(e.at("types") == json({"stick", "slip-"}));
+  CHECK(e.at("values").size() == 9);
+  CHECK(e.at("values").at("DP_T") == json({1.0, -3.0}));
+  CHECK(e.at("values").at("P_N1") == json({2.0, 0.0}));
+  CHECK(e.at("values").at("g1") == json({0.0, -0.5}));
+  CHECK(e.at("residual") == 1e-15);
+}
+
+TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
+  using namespace cpkit::rate3d;
+  Rates3d slip, stick;
+  slip.dP_T = {1, -2};
+  slip.dP_N = 0.5;
+  slip.dw_Ti = {3, 4};  // |(3, 4)| = 5: direction (0.6, 0.8), angle atan2(4, 3)
+  stick.dP_N = 7;
+  const json r = rates_3d_json({slip, stick});
+  CHECK(r.at("dP_T") == json({{1.0, -2.0}, {0.0, 0.0}}));
+  CHECK(r.at("dP_N") == json({0.5, 7.0}));
+  CHECK(r.at("dw_Ti")[0] == json({3.0, 4.0}));
+  json e;
+  add_slip_json(e, {Type3d::kSlip, Type3d::kStick}, {slip, stick});
+  CHECK(e.at("slip_direction")[0][0].get<double>() == Approx(0.6));
+  CHECK(e.at("slip_direction")[0][1].get<double>() == Approx(0.8));
+  CHECK(e.at("slip_direction")[1].is_null());
+  CHECK(e.at("slip_angle")[0].get<double>() == Approx(0.9272952180016122));
+  json none;
+  add_slip_json(none, {Type3d::kStick}, {stick});
+  CHECK_FALSE(none.contains("slip_direction"));  // no point slips: no field
+
+  Step3dSolution s;
+  s.type = Type3d::kSlip;
+  s.values.P_T1 = {0.3, -0.4};
+  s.values.DP_T = {1, 2};
+  s.values.DP_N = 3;
+  s.values.Dw_T = {4, 5};
+  s.values.Dw_N = 6;
+  s.values.g1 = -0.25;
+  s.slip_direction = {0, -1};
+  s.slip_angle = -1.5707963267948966;
+  const json j = step_3d_solution_json(s);
+  CHECK(j.at("type") == "slip");
+  CHECK(j.at("P_T1") == json({0.3, -0.4}));
+  CHECK(j.at("DP") == json({1.0, 2.0, 3.0}));
+  CHECK(j.at("Dw") == json({4.0, 5.0, 6.0}));
+  CHECK(j.at("g1") == -0.25);
+  CHECK(j.at("slip_direction") == json({0.0, -1.0}));
+  s.type = Type3d::kStick;
+  CHECK(step_3d_solution_json(s).at("slip_angle").is_null());
+}
+
+TEST_CASE("step JSON: the N-point input echo", "[report]") {
+  ContactSystem sys;
+  sys.name = "two";
+  sys.A = (Eigen::MatrixXd(4, 4) << 2, 0.5, 0, 0, 0.5, 3, 0, 0, 0, 0, 4, 1, 0, 0, 1, 5).finished();
+  sys.points.resize(2);
+  sys.points[1].mu = 0.3;
+  sys.points[1].P_N = 2;
+  sys.points[1].g = 0;
+  const json j = contact_system_json(sys);
+  CHECK(j.at("name") == "two");
+  CHECK(j.at("A").size() == 4);
+  CHECK(j.at("A")[0] == json({2.0, 0.5, 0.0, 0.0}));
+  CHECK(j.at("A")[3] == json({0.0, 0.0, 1.0, 5.0}));  // row 4 as written above
+  CHECK(j.at("points").size() == 2);
+  CHECK(j.at("points")[1].at("mu") == 0.3);
+  CHECK(j.at("points")[1].at("P_N") == 2.0);
+  CHECK(j.at("points")[1].size() == 7);  // mu, C_T, k_a, P_s, P_T, P_N, g
+}
