@@ -41,7 +41,7 @@ bool Map3dRequest::has(const std::string& o) const {
 namespace {
 
 namespace fs = std::filesystem;
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 constexpr double kPi = 3.141592653589793;
 
@@ -440,8 +440,8 @@ int run_map_system_3d(const Map3dRequest& r) {
     if (m.type_cells[mask] > 0)
       types.push_back({{"mask", mask}, {"types", type_mask_string(mask)}, {"cells", m.type_cells[mask]}});
   j["types"] = types;
-  j["type_bits"] = {{"open", type_bit(Type3d::kOpen)}, {"separation", type_bit(Type3d::kSeparation)},
-                    {"stick", type_bit(Type3d::kStick)}, {"slip", type_bit(Type3d::kSlip)}};
+  j["type_bits"] = {{"open", type_bit(SolutionType::kOpen)}, {"separation", type_bit(SolutionType::kSeparation)},
+                    {"stick", type_bit(SolutionType::kStick)}, {"slip", type_bit(SolutionType::kSlip)}};
   j["incomplete_cells"] = m.incomplete_cells;
   j["timed_out_cells"] = m.timed_out_cells;
   j["time_limit_reached"] = m.timed_out_cells > 0;

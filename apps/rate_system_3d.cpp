@@ -23,12 +23,12 @@ namespace {
 
 /// One listed solution: per point its type and rates (a ray: the one-point state-d case).
 struct Row {
-  std::vector<rate3d::Type3d> types;
-  std::vector<rate3d::Rates3d> rates, direction;
+  std::vector<rate::SolutionType> types;
+  std::vector<rate::Rates3d> rates, direction;
   bool ray = false, origin_included = true;
 };
 
-std::string values_text(const std::vector<rate3d::Rates3d>& rs) {
+std::string values_text(const std::vector<rate::Rates3d>& rs) {
   std::ostringstream o;
   o.precision(10);
   auto pairs = [&](const char* name, auto get) {
@@ -44,24 +44,24 @@ std::string values_text(const std::vector<rate3d::Rates3d>& rs) {
     for (std::size_t i = 0; i < rs.size(); ++i) o << (i ? ", " : "") << get(rs[i]);
     o << ']';
   };
-  pairs("dP_T", [](const rate3d::Rates3d& r) { return r.dP_T; });
-  scalars("dP_N", [](const rate3d::Rates3d& r) { return r.dP_N; });
-  pairs("dw_T", [](const rate3d::Rates3d& r) { return r.dw_T; });
-  scalars("dw_N", [](const rate3d::Rates3d& r) { return r.dw_N; });
-  pairs("dw_Ti", [](const rate3d::Rates3d& r) { return r.dw_Ti; });
-  scalars("dw_w", [](const rate3d::Rates3d& r) { return r.dw_w; });
+  pairs("dP_T", [](const rate::Rates3d& r) { return r.dP_T; });
+  scalars("dP_N", [](const rate::Rates3d& r) { return r.dP_N; });
+  pairs("dw_T", [](const rate::Rates3d& r) { return r.dw_T; });
+  scalars("dw_N", [](const rate::Rates3d& r) { return r.dw_N; });
+  pairs("dw_Ti", [](const rate::Rates3d& r) { return r.dw_Ti; });
+  scalars("dw_w", [](const rate::Rates3d& r) { return r.dw_w; });
   return o.str();
 }
 
-std::string types_text(const std::vector<rate3d::Type3d>& t) {
+std::string types_text(const std::vector<rate::SolutionType>& t) {
   std::string s;
-  for (std::size_t i = 0; i < t.size(); ++i) s += (i ? "/" : "") + std::string(rate3d::to_string(t[i]));
+  for (std::size_t i = 0; i < t.size(); ++i) s += (i ? "/" : "") + std::string(rate::to_string(t[i]));
   return s;
 }
 
 /// Unit slip directions and angles per point (null where the point does not slip).
 void slip_json(const Row& r, nlohmann::json& e) {
-  rate3d::add_slip_json(e, r.types, r.ray ? r.direction : r.rates);
+  rate::add_slip_json(e, r.types, r.ray ? r.direction : r.rates);
 }
 
 }  // namespace
@@ -78,7 +78,7 @@ int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& 
   // One budget for the whole solve (every separation case of the N-point problem).
   const double time_limit = time_limit_arg.value_or(60.0);
   const std::string& path = file.source;
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(file);
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(file);
   const int N = sys.n_points();
   if (method != "enumerate")
     throw InputError("--method " + method + " is not available for 3-D points: the solution set "
@@ -101,21 +101,21 @@ int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& 
   bool complete = true, timed_out = false;
   std::string message;
   if (N == 1) {
-    const rate3d::Point3dParameters p = sys.point_parameters(0);
-    const rate3d::Point3dState& st = sys.points[0].state;
+    const rate::ContactParameters3d p = sys.point_parameters(0);
+    const rate::ContactState3d& st = sys.points[0].state;
     if (facets != 0 && st.state != 'b')
       throw InputError(std::string("--facets applies to state b (grazing); state ") + st.state +
                        " has a linear rate problem, solved exactly without it");
-    const rate3d::RateSolutionSet3d s =
-        facets != 0 ? rate3d::solve_rate_3d_faceted(p, dF, facets, time_limit).set
-                    : rate3d::solve_rate_3d(p, st, dF);
+    const rate::RateSolutionSet3d s =
+        facets != 0 ? rate::solve_rate_3d_faceted(p, dF, facets, time_limit).set
+                    : rate::solve_rate_3d(p, st, dF);
     complete = s.complete;
     message = s.message;
     for (const auto& x : s.solutions)
       rows.push_back({{x.type}, {x.at}, {x.direction}, x.ray, x.origin_included});
   } else {
-    const rate3d::SystemRateSet3d s =
-        rate3d::solve_system_rate_3d_faceted(sys, dF, facets, time_limit);
+    const rate::SystemRateSet3d s =
+        rate::solve_system_rate_3d_faceted(sys, dF, facets, time_limit);
     complete = s.complete;
     message = s.message;
     timed_out = s.timed_out;
@@ -147,14 +147,14 @@ int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& 
     for (const auto& r : rows) {
       nlohmann::json e;
       e["types"] = nlohmann::json::array();
-      for (auto t : r.types) e["types"].push_back(std::string(rate3d::to_string(t)));
+      for (auto t : r.types) e["types"].push_back(std::string(rate::to_string(t)));
       e["kind"] = r.ray ? "ray" : "point";
       if (r.ray) {
-        e["start"] = rate3d::rates_3d_json(r.rates);
+        e["start"] = rate::rates_3d_json(r.rates);
         e["start_closed"] = r.origin_included;
-        e["direction"] = rate3d::rates_3d_json(r.direction);
+        e["direction"] = rate::rates_3d_json(r.direction);
       } else {
-        e["values"] = rate3d::rates_3d_json(r.rates);
+        e["values"] = rate::rates_3d_json(r.rates);
       }
       slip_json(r, e);
       sols.push_back(e);

@@ -56,7 +56,7 @@ Pair pair(const Eigen::Vector2d& v) { return {v(0), v(1)}; }
 }  // namespace
 
 int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(c.file);
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(c.file);
   if (sys.n_points() != 1)
     throw InputError(c.system + ": " + std::to_string(sys.n_points()) +
                      " points; the 3-D simulation (fretting with an elliptic load orbit) is for "
@@ -73,7 +73,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   if (a3.orbit.size() != 2)
     throw InputError("a \"dim\": 3 simulation needs --orbit aX aY (the half-axes of the "
                      "tangential load orbit)");
-  rate3d::EllipticOrbit orbit;
+  rate::EllipticOrbit orbit;
   orbit.a_X = a3.orbit[0];
   orbit.a_Y = a3.orbit[1];
   orbit.angle = a3.orbit_angle;
@@ -93,7 +93,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   rate::check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
                          true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
 
-  rate3d::Fretting3dOptions o;
+  rate::Fretting3dOptions o;
   o.params = sys.point_parameters(0);
   if (!c.wear_law.empty()) {
     const auto law = rate::wear_law_from_string(c.wear_law);
@@ -129,24 +129,24 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
     f << "step,t,F_TX,F_TY,F_N,P_TX,P_TY,P_N,g,w_TX,w_TY,w_N,w_TiX,w_TiY,Dw_TiX,Dw_TiY,lambda,"
          "Dw_w,w_w,type,count,complete,dissipation,cycle\n";
     o.record_every = c.every_given ? c.every : 1;
-    o.on_sample = [&f](const rate3d::Fretting3dSample& s) {
+    o.on_sample = [&f](const rate::Fretting3dSample& s) {
       f << s.step << ',' << s.t << ',' << s.F_T(0) << ',' << s.F_T(1) << ',' << s.F_N << ','
         << s.P_T(0) << ',' << s.P_T(1) << ',' << s.P_N << ',' << s.g << ',' << s.w_T(0) << ','
         << s.w_T(1) << ',' << s.w_N << ',' << s.w_Ti(0) << ',' << s.w_Ti(1) << ','
         << s.Dw_Ti(0) << ',' << s.Dw_Ti(1) << ',' << s.lambda << ',' << s.Dw_w << ',' << s.w_w
-        << ',' << rate3d::to_string(s.type) << ',' << s.count << ',' << (s.complete ? 1 : 0)
+        << ',' << rate::to_string(s.type) << ',' << s.count << ',' << (s.complete ? 1 : 0)
         << ',' << s.dissipation << ',' << s.cycle << '\n';
     };
   } else {
     o.record_every = 0;  // summary only: nothing is kept
   }
-  const rate3d::Fretting3dResult r = rate3d::simulate_fretting_3d(orbit, o);
+  const rate::Fretting3dResult r = rate::simulate_fretting_3d(orbit, o);
   if (f.is_open()) {
     f.flush();
     if (!f) throw InputError("error writing '" + csv + "' (disk full or not writable?)");
   }
 
-  const rate3d::Point3dParameters& p = o.params;
+  const rate::ContactParameters3d& p = o.params;
   nlohmann::json j;
   j["cpkit_version"] = CPKIT_VERSION;
   j["dim"] = 3;
@@ -164,10 +164,10 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
                  {"lead_steps", orbit.lead()}}},
       {"branch_rule", std::string(rate::to_string(o.branch_rule))},
       {"every", o.record_every}};
-  j["outcome"] = std::string(rate3d::to_string(r.outcome));
+  j["outcome"] = std::string(rate::to_string(r.outcome));
   j["message"] = r.message;
   j["steps"] = r.steps;
-  j["final"] = rate3d::fretting_3d_sample_json(r.final_state);
+  j["final"] = rate::fretting_3d_sample_json(r.final_state);
   j["final_wear_depth"] = r.wear_depth;
   j["wear_integral"] = r.wear_integral;
   j["total_slip"] = r.total_slip;
@@ -184,7 +184,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   j["local_steps"] = r.local_steps;
   j["enumeration_missed"] = r.enumeration_missed;
   j["complete"] = r.incomplete_steps == 0 &&
-                  r.outcome != rate3d::Fretting3dResult::Outcome::kAmbiguous;
+                  r.outcome != rate::Fretting3dResult::Outcome::kAmbiguous;
   j["max_step_residual"] = r.max_residual;
   j["run"] = run_echo();
   if (!summary.empty()) {
@@ -196,7 +196,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   if (c.json) {
     print_json(j);
   } else {
-    std::cout << "simulate (3-D point): " << rate3d::to_string(r.outcome) << " after " << r.steps
+    std::cout << "simulate (3-D point): " << rate::to_string(r.outcome) << " after " << r.steps
               << " steps\n  " << r.message << "\n  wear depth " << r.wear_depth << " ("
               << (mroz ? "Mroz" : "Archard") << " integral " << r.wear_integral
               << "), slip path length " << r.total_slip << "\n";
@@ -219,8 +219,8 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
   if (plot_failed) return kExitInternal;
   switch (r.outcome) {
-    case rate3d::Fretting3dResult::Outcome::kCompleted: return kExitOk;
-    case rate3d::Fretting3dResult::Outcome::kAmbiguous: return kExitInconclusive;
+    case rate::Fretting3dResult::Outcome::kCompleted: return kExitOk;
+    case rate::Fretting3dResult::Outcome::kAmbiguous: return kExitInconclusive;
     default: return kExitNoSolution;
   }
 }

@@ -32,16 +32,16 @@ namespace {
 
 using Pair = std::vector<double>;
 
-std::string solution_text(const rate3d::Step3dSolution& s) {
-  const rate3d::Step3dValues& v = s.values;
+std::string solution_text(const rate::Step3dSolution& s) {
+  const rate::Step3dValues& v = s.values;
   std::ostringstream o;
   o.precision(10);
-  o << rate3d::to_string(s.type) << ": P_T1=[" << v.P_T1(0) << ", " << v.P_T1(1)
+  o << rate::to_string(s.type) << ": P_T1=[" << v.P_T1(0) << ", " << v.P_T1(1)
     << "] P_N1=" << v.P_N1 << " DP=[" << v.DP_T(0) << ", " << v.DP_T(1) << ", " << v.DP_N
     << "] Dw=[" << v.Dw_T(0) << ", " << v.Dw_T(1) << ", " << v.Dw_N << "] Dw_Ti=["
     << v.Dw_Ti(0) << ", " << v.Dw_Ti(1) << "] Dw_w=" << v.Dw_w << " lambda=" << v.lambda;
   o.precision(6);
-  if (s.type == rate3d::Type3d::kSlip) o << " slip_angle=" << s.slip_angle;
+  if (s.type == rate::SolutionType::kSlip) o << " slip_angle=" << s.slip_angle;
   o << " residual=" << s.residual;
   return o.str();
 }
@@ -50,7 +50,7 @@ std::string solution_text(const rate3d::Step3dSolution& s) {
 /// --multistart N; no complete enumeration exists for coupled 3-D points (--all, --facets are
 /// refused). --g0 G gives the gap of every state-a point.
 int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
-                       const rate3d::ContactSystem3d& sys) {
+                       const rate::ContactSystem3d& sys) {
   const int N = sys.n_points();
   if (a.all || cmd.count("--facets") > 0)
     throw InputError(std::string(a.all ? "--all" : "--facets") + " is not available for " +
@@ -67,7 +67,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     throw InputError("--dF needs 3N = " + std::to_string(3 * N) + " numbers for " +
                      std::to_string(N) + " 3-D points (DF_TX DF_TY DF_N per point), got " +
                      std::to_string(a.DF.size()));
-  rate3d::SystemStep3dProblem p;
+  rate::SystemStep3dProblem p;
   p.system = sys;
   const auto law = rate::wear_law_from_string(a.wear_law);
   if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
@@ -75,12 +75,12 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
   p.wear.k_M = a.k_M;
   bool any_open = false;
   for (int i = 0; i < N; ++i) {
-    const rate3d::SystemPoint3d& pt = sys.points[static_cast<std::size_t>(i)];
+    const rate::SystemPoint3d& pt = sys.points[static_cast<std::size_t>(i)];
     if (*law == rate::WearLaw::kMrozStupkiewicz && pt.k_a != 0)
       throw InputError(a.system + ": point " + std::to_string(i + 1) + ": its k_a (Archard) has "
                        "no effect with --wear-law mroz: remove it from the file or use "
                        "--wear-law archard");
-    rate3d::Step3dState st;
+    rate::Step3dState st;
     if (pt.state.state == 'a') {
       any_open = true;
       if (cmd.count("--g0") == 0 || !(a.g0 < 0))
@@ -101,14 +101,14 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
   throw_if_invalid(p.validate(), "step");
 
   const std::string mode = cmd.count("--multistart") > 0 ? "multistart" : "chain";
-  rate3d::SystemStep3dSolutionSet set;
-  rate3d::SystemStep3dSolverResult r;
+  rate::SystemStep3dSolutionSet set;
+  rate::SystemStep3dSolverResult r;
   int code = kExitOk;
   if (mode == "multistart") {
-    set = rate3d::multistart_system_step_3d(p, a.multistart, 1);
+    set = rate::multistart_system_step_3d(p, a.multistart, 1);
     code = set.solutions.empty() ? kExitInconclusive : kExitOk;
   } else {
-    r = rate3d::solve_system_step_3d_fb_soc(p);
+    r = rate::solve_system_step_3d_fb_soc(p);
     if (r.solved) set.solutions.push_back(r.solution);
     set.message = r.message;
     code = r.solved ? kExitOk : kExitNoSolution;
@@ -120,7 +120,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     nlohmann::json states = nlohmann::json::array(), pt0 = nlohmann::json::array(),
                    pn0 = nlohmann::json::array(), g0 = nlohmann::json::array();
     for (int i = 0; i < N; ++i) {
-      const rate3d::Step3dState& st = p.states[static_cast<std::size_t>(i)];
+      const rate::Step3dState& st = p.states[static_cast<std::size_t>(i)];
       states.push_back(std::string(1, sys.points[static_cast<std::size_t>(i)].state.state));
       pt0.push_back(Pair{st.P_T0(0), st.P_T0(1)});
       pn0.push_back(st.P_N0);
@@ -154,7 +154,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     nlohmann::json sols = nlohmann::json::array();
     for (const auto& s : set.solutions) {
       nlohmann::json pts = nlohmann::json::array();
-      for (const auto& x : s.points) pts.push_back(rate3d::step_3d_solution_json(x));
+      for (const auto& x : s.points) pts.push_back(rate::step_3d_solution_json(x));
       sols.push_back({{"points", pts}, {"residual", s.residual}});
     }
     j["solutions"] = sols;
@@ -194,8 +194,8 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     if (cmd.count(o) > 0)
       throw InputError(std::string(o) + " cannot be combined with a \"dim\": 3 --system file (the "
                        "file gives the point's parameters and state)");
-  if (cmd.count("--multistart") > 0) rate3d::check_multistart_cap(a.multistart, "--multistart");
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(a.file);
+  if (cmd.count("--multistart") > 0) rate::check_multistart_cap(a.multistart, "--multistart");
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(a.file);
   if (sys.n_points() != 1) return run_system_step_3d(a, cmd, sys);
   const bool chain_given = cmd.count("--chain") > 0;
   const int modes = (a.all ? 1 : 0) + (chain_given ? 1 : 0) + (cmd.count("--facets") > 0 ? 1 : 0) +
@@ -206,7 +206,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   if (a.DF.size() != 3)
     throw InputError("--dF needs 3 numbers for a 3-D point (DF_TX DF_TY DF_N), got " +
                      std::to_string(a.DF.size()));
-  rate3d::Step3dProblem p;
+  rate::Step3dProblem p;
   p.params = sys.point_parameters(0);
   const auto law = rate::wear_law_from_string(a.wear_law);
   if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
@@ -215,7 +215,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   if (*law == rate::WearLaw::kMrozStupkiewicz && p.params.k_a != 0)
     throw InputError(a.system + ": the point's k_a (Archard) has no effect with --wear-law mroz: "
                      "remove it from the file or use --wear-law archard");
-  const rate3d::Point3dState& st = sys.points[0].state;
+  const rate::ContactState3d& st = sys.points[0].state;
   if (st.state == 'a') {
     if (cmd.count("--g0") == 0 || !(a.g0 < 0))
       throw InputError("the point is in state a (open): give its gap with --g0 G, G < 0");
@@ -240,9 +240,9 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   if (cmd.count("--facets") > 0) mode = "facets";
   if (cmd.count("--multistart") > 0) mode = "multistart";
 
-  rate3d::Step3dSolutionSet set;
-  rate3d::Step3dChainResult chain;
-  rate3d::Step3dChainOptions copt;
+  rate::Step3dSolutionSet set;
+  rate::Step3dChainResult chain;
+  rate::Step3dChainOptions copt;
   if (mode == "chain" && chain_given) {
     copt.chain.clear();
     std::stringstream ss(a.chain);
@@ -252,16 +252,16 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   }
   int code = kExitOk;
   if (mode == "all") {
-    set = rate3d::enumerate_step_3d(p);
+    set = rate::enumerate_step_3d(p);
     code = !set.complete ? kExitInconclusive : set.solutions.empty() ? kExitNoSolution : kExitOk;
   } else if (mode == "facets") {
-    set = rate3d::solve_step_3d_faceted(p, a.facets).set;
+    set = rate::solve_step_3d_faceted(p, a.facets).set;
     code = !set.complete ? kExitInconclusive : set.solutions.empty() ? kExitNoSolution : kExitOk;
   } else if (mode == "multistart") {
-    set = rate3d::multistart_step_3d(p, a.multistart, 1);
+    set = rate::multistart_step_3d(p, a.multistart, 1);
     code = set.solutions.empty() ? kExitInconclusive : kExitOk;
   } else {
-    chain = rate3d::solve_step_3d(p, copt);
+    chain = rate::solve_step_3d(p, copt);
     set.complete = false;
     if (chain.solved) set.solutions.push_back(chain.solution);
     set.message = chain.message;
@@ -303,7 +303,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     if (mode == "facets") j["facets"] = a.facets;
     if (!set.message.empty()) j["message"] = set.message;
     nlohmann::json sols = nlohmann::json::array();
-    for (const auto& s : set.solutions) sols.push_back(rate3d::step_3d_solution_json(s));
+    for (const auto& s : set.solutions) sols.push_back(rate::step_3d_solution_json(s));
     j["solutions"] = sols;
     print_json(j);
   } else {

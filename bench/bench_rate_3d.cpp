@@ -21,11 +21,11 @@
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 namespace {
 struct Case {
-  Point3dParameters p;
+  ContactParameters3d p;
   Eigen::Vector3d dF;
 };
 

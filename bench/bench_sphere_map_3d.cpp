@@ -11,7 +11,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 int main(int argc, char** argv) {
   int n = 91;

@@ -14,7 +14,7 @@
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;

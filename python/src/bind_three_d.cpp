@@ -16,9 +16,9 @@
 namespace cpkit::py {
 namespace {
 
-using rate3d::Point3dParameters;
+using rate::ContactParameters3d;
 
-pyb::dict rates_dict(const rate3d::Rates3d& r) {
+pyb::dict rates_dict(const rate::Rates3d& r) {
   pyb::dict d;
   d["dP_T"] = np2(r.dP_T);
   d["dP_N"] = r.dP_N;
@@ -29,18 +29,18 @@ pyb::dict rates_dict(const rate3d::Rates3d& r) {
   return d;
 }
 
-pyb::dict set_dict(const rate3d::RateSolutionSet3d& set) {
+pyb::dict set_dict(const rate::RateSolutionSet3d& set) {
   pyb::list sols;
   for (const auto& s : set.solutions) {
     pyb::dict sd;
-    sd["type"] = std::string(rate3d::to_string(s.type));
+    sd["type"] = std::string(rate::to_string(s.type));
     sd["kind"] = s.ray ? "ray" : "point";
     sd["at"] = rates_dict(s.at);
     if (s.ray) {
       sd["direction"] = rates_dict(s.direction);
       sd["origin_included"] = s.origin_included;
     }
-    if (s.type == rate3d::Type3d::kSlip) {
+    if (s.type == rate::SolutionType::kSlip) {
       sd["slip_direction"] = np2(s.slip_direction);
       sd["slip_angle"] = s.slip_angle;
     } else {
@@ -58,8 +58,8 @@ pyb::dict set_dict(const rate3d::RateSolutionSet3d& set) {
 
 pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, const pyb::object& P_T,
                         double P_N, const pyb::object& dF, int facets) {
-  const Point3dParameters p = params_from(point);
-  rate3d::Point3dState s;
+  const ContactParameters3d p = params_from(point);
+  rate::ContactState3d s;
   if (state.size() != 1 || state[0] < 'a' || state[0] > 'd')
     throw InputError("state must be 'a', 'b', 'c' or 'd', got '" + state + "'");
   s.state = state[0];
@@ -69,20 +69,20 @@ pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, cons
   pyb::dict d;
   if (facets > 0) {
     if (s.state != 'b') throw InputError("facets apply to the grazing state b (a, c, d are linear)");
-    rate3d::FacetedRateResult r;
+    rate::FacetedRateResult r;
     {
       pyb::gil_scoped_release release;
-      r = rate3d::solve_rate_3d_faceted(p, load, facets);
+      r = rate::solve_rate_3d_faceted(p, load, facets);
     }
     d = set_dict(r.set);
     d["facets"] = r.facets;
     d["route"] = "faceted";
   } else {
     if (const std::string e = s.validate(p); !e.empty()) throw InputError("state: " + e);
-    rate3d::RateSolutionSet3d r;
+    rate::RateSolutionSet3d r;
     {
       pyb::gil_scoped_release release;
-      r = rate3d::solve_rate_3d(p, s, load);
+      r = rate::solve_rate_3d(p, s, load);
     }
     d = set_dict(r);
     d["facets"] = 0;
@@ -92,7 +92,7 @@ pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, cons
 }
 
 pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& dF, int facets) {
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(json_text, "system");
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
   Eigen::VectorXd load;
   if (dF.is_none()) {
     if (!sys.dF) throw InputError("no load rate: give dF (3N numbers) or put \"dF\" in the system");
@@ -104,15 +104,15 @@ pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& 
                        std::to_string(v.size()));
     load = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
   }
-  rate3d::SystemRateSet3d r;
+  rate::SystemRateSet3d r;
   {
     pyb::gil_scoped_release release;
-    r = rate3d::solve_system_rate_3d_faceted(sys, load, facets);
+    r = rate::solve_system_rate_3d_faceted(sys, load, facets);
   }
   pyb::list sols;
   for (const auto& s : r.solutions) {
     pyb::list types, rates;
-    for (auto t : s.types) types.append(std::string(rate3d::to_string(t)));
+    for (auto t : s.types) types.append(std::string(rate::to_string(t)));
     for (const auto& x : s.rates) rates.append(rates_dict(x));
     pyb::dict sd;
     sd["types"] = types;
@@ -131,11 +131,11 @@ pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& 
 pyb::dict enumerate_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0,
                             double g0, const pyb::object& DF, const std::string& wear_law,
                             double k_M) {
-  const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
-  rate3d::Step3dSolutionSet set;
+  const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
+  rate::Step3dSolutionSet set;
   {
     pyb::gil_scoped_release release;
-    set = rate3d::enumerate_step_3d(p);
+    set = rate::enumerate_step_3d(p);
   }
   return step_set_dict(set);
 }

@@ -26,9 +26,9 @@ namespace {
 /// Map options of a system: facets (0 exact), point (1-based, as the CLI's --point), the other
 /// points' load rates ("auto": the file's dF when N > 1 and the file has one, as the CLI;
 /// "zero"; "file").
-rate3d::Map3dOptions map_options(const rate3d::ContactSystem3d& sys, int facets, int point,
+rate::Map3dOptions map_options(const rate::ContactSystem3d& sys, int facets, int point,
                                  const std::string& others, int threads) {
-  rate3d::Map3dOptions o;
+  rate::Map3dOptions o;
   o.facets = facets;
   o.point = point - 1;
   o.threads = threads;
@@ -44,10 +44,10 @@ rate3d::Map3dOptions map_options(const rate3d::ContactSystem3d& sys, int facets,
   return o;
 }
 
-rate3d::Map3dAxis axis_from(const std::string& param, double from, double to, int n, int n_points,
+rate::Map3dAxis axis_from(const std::string& param, double from, double to, int n, int n_points,
                             const char* which) {
-  rate3d::Map3dAxis a;
-  a.param = rate3d::parse_map_3d_parameter(param, n_points);
+  rate::Map3dAxis a;
+  a.param = rate::parse_map_3d_parameter(param, n_points);
   a.from = from;
   a.to = to;
   a.n = n;
@@ -56,8 +56,8 @@ rate3d::Map3dAxis axis_from(const std::string& param, double from, double to, in
 }
 
 void check_cells(double rows, double cols, const std::string& what) {
-  if (rows * cols > static_cast<double>(rate3d::kMaxMap3dCells))
-    throw InputError(what + " must be at most " + std::to_string(rate3d::kMaxMap3dCells) + " cells");
+  if (rows * cols > static_cast<double>(rate::kMaxMap3dCells))
+    throw InputError(what + " must be at most " + std::to_string(rate::kMaxMap3dCells) + " cells");
   check_memory(2 * 3.0 * rows * cols, "the map of " + what);  // the C++ map and its numpy copy
 }
 
@@ -72,7 +72,7 @@ pyb::array_t<double> array1(const std::vector<double>& v) {
   return pyb::array_t<double>(static_cast<pyb::ssize_t>(v.size()), v.data());
 }
 
-pyb::dict map_dict(const rate3d::Map3d& m, const rate3d::Map3dOptions& o) {
+pyb::dict map_dict(const rate::Map3d& m, const rate::Map3dOptions& o) {
   pyb::dict d;
   d["x"] = array1(m.x);
   d["y"] = array1(m.y);
@@ -88,7 +88,7 @@ pyb::dict map_dict(const rate3d::Map3d& m, const rate3d::Map3dOptions& o) {
   d["count_cells"] = counts;
   pyb::dict types;
   for (unsigned mask = 0; mask < m.type_cells.size(); ++mask)
-    if (m.type_cells[mask] > 0) types[pyb::str(rate3d::type_mask_string(mask))] = m.type_cells[mask];
+    if (m.type_cells[mask] > 0) types[pyb::str(rate::type_mask_string(mask))] = m.type_cells[mask];
   d["type_cells"] = types;
   d["route"] = o.facets ? "faceted" : "exact";
   d["facets"] = o.facets;
@@ -102,9 +102,9 @@ pyb::dict map_dict(const rate3d::Map3d& m, const rate3d::Map3dOptions& o) {
 pyb::dict sphere_map_3d(const std::string& json_text, int n_beta, int n_gamma, double beta_from,
                         double beta_to, int facets, int point, const std::string& others,
                         int threads) {
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(json_text, "system");
-  const rate3d::Map3dOptions o = map_options(sys, facets, point, others, threads);
-  rate3d::SphereGrid g;
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
+  const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
+  rate::SphereGrid g;
   g.n_beta = n_beta;
   g.n_gamma = n_gamma;
   g.beta_from = beta_from;
@@ -112,10 +112,10 @@ pyb::dict sphere_map_3d(const std::string& json_text, int n_beta, int n_gamma, d
   throw_if_invalid(g.validate(), "sphere grid");
   check_cells(n_beta, n_gamma, std::to_string(n_beta) + " x " + std::to_string(n_gamma) +
                                    " (n_beta x n_gamma)");
-  rate3d::Map3d m;
+  rate::Map3d m;
   {
     pyb::gil_scoped_release release;
-    m = rate3d::compute_sphere_map_3d(sys, g, o);
+    m = rate::compute_sphere_map_3d(sys, g, o);
   }
   pyb::dict d = map_dict(m, o);
   d["kind"] = "sphere";
@@ -126,16 +126,16 @@ pyb::dict param_direction_map_3d(const std::string& json_text, const std::string
                                  double from, double to, int n, int theta_n, double theta_from,
                                  double theta_to, double gamma, int facets, int point,
                                  const std::string& others, int threads) {
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(json_text, "system");
-  const rate3d::Map3dOptions o = map_options(sys, facets, point, others, threads);
-  const rate3d::Map3dAxis a = axis_from(param, from, to, n, sys.n_points(), "axis");
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
+  const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
+  const rate::Map3dAxis a = axis_from(param, from, to, n, sys.n_points(), "axis");
   if (theta_n < 1 || theta_n > 1000000)
     throw InputError("theta_n must be in [1, 1000000], got " + std::to_string(theta_n));
   check_cells(n, theta_n, std::to_string(n) + " x " + std::to_string(theta_n) + " (n x theta_n)");
-  rate3d::Map3d m;
+  rate::Map3d m;
   {
     pyb::gil_scoped_release release;
-    m = rate3d::compute_param_direction_map_3d(sys, a, theta_n, theta_from, theta_to, gamma, o);
+    m = rate::compute_param_direction_map_3d(sys, a, theta_n, theta_from, theta_to, gamma, o);
   }
   pyb::dict d = map_dict(m, o);
   d["kind"] = "param-direction";
@@ -148,15 +148,15 @@ pyb::dict param_param_map_3d(const std::string& json_text, const std::string& pa
                              double from1, double to1, int n1, const std::string& param2,
                              double from2, double to2, int n2, int facets, int point,
                              const std::string& others, int threads) {
-  const rate3d::ContactSystem3d sys = rate3d::parse_contact_system_3d(json_text, "system");
-  const rate3d::Map3dOptions o = map_options(sys, facets, point, others, threads);
-  const rate3d::Map3dAxis a1 = axis_from(param1, from1, to1, n1, sys.n_points(), "first axis");
-  const rate3d::Map3dAxis a2 = axis_from(param2, from2, to2, n2, sys.n_points(), "second axis");
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
+  const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
+  const rate::Map3dAxis a1 = axis_from(param1, from1, to1, n1, sys.n_points(), "first axis");
+  const rate::Map3dAxis a2 = axis_from(param2, from2, to2, n2, sys.n_points(), "second axis");
   check_cells(n1, n2, std::to_string(n1) + " x " + std::to_string(n2) + " (n1 x n2)");
-  rate3d::Map3d m;
+  rate::Map3d m;
   {
     pyb::gil_scoped_release release;
-    m = rate3d::compute_param_param_map_3d(sys, a1, a2, o);
+    m = rate::compute_param_param_map_3d(sys, a1, a2, o);
   }
   pyb::dict d = map_dict(m, o);
   d["kind"] = "param-param";
@@ -172,17 +172,17 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
                         const pyb::object& DF, const std::string& wear_law, double k_M,
                         const std::vector<std::string>& chain, int max_iterations, double tol,
                         double time_limit) {
-  const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
-  rate3d::Step3dChainOptions o;
+  const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
+  rate::Step3dChainOptions o;
   if (!chain.empty()) o.chain = chain;
   o.solver.max_iterations = max_iterations;
   o.solver.tol = tol;
   o.solver.time_limit_s = time_limit;
   throw_if_invalid(o.validate(), "solver options");
-  rate3d::Step3dChainResult r;
+  rate::Step3dChainResult r;
   {
     pyb::gil_scoped_release release;
-    r = rate3d::solve_step_3d(p, o);
+    r = rate::solve_step_3d(p, o);
   }
   pyb::list attempts;
   for (const auto& a : r.attempts) {
@@ -207,13 +207,13 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
 pyb::dict multistart_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0,
                              double g0, const pyb::object& DF, const std::string& wear_law,
                              double k_M, int n_starts, std::uint64_t seed) {
-  const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
+  const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 0) throw InputError("n_starts must be >= 0, got " + std::to_string(n_starts));
-  rate3d::check_multistart_cap(n_starts, "n_starts");
-  rate3d::Step3dSolutionSet set;
+  rate::check_multistart_cap(n_starts, "n_starts");
+  rate::Step3dSolutionSet set;
   {
     pyb::gil_scoped_release release;
-    set = rate3d::multistart_step_3d(p, n_starts, seed);
+    set = rate::multistart_step_3d(p, n_starts, seed);
   }
   return step_set_dict(set);
 }
@@ -221,13 +221,13 @@ pyb::dict multistart_step_3d(const pyb::object& point, const pyb::object& P_T0, 
 pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T0, double P_N0,
                                 double g0, const pyb::object& DF, const std::string& wear_law,
                                 double k_M, int facets, int n_starts, std::uint64_t seed) {
-  const rate3d::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
+  const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 1) throw InputError("n_starts must be >= 1, got " + std::to_string(n_starts));
-  rate3d::check_multistart_cap(n_starts, "n_starts");
-  rate3d::FacetedStep3dResult r;
+  rate::check_multistart_cap(n_starts, "n_starts");
+  rate::FacetedStep3dResult r;
   {
     pyb::gil_scoped_release release;
-    r = rate3d::solve_step_3d_faceted(p, facets, n_starts, seed);
+    r = rate::solve_step_3d_faceted(p, facets, n_starts, seed);
   }
   pyb::dict d = step_set_dict(r.set);
   d["facets"] = r.facets;
@@ -240,7 +240,7 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
 
 // ---- fretting --------------------------------------------------------------------------------
 
-using Sample = rate3d::Fretting3dSample;
+using Sample = rate::Fretting3dSample;
 
 template <class F>
 pyb::array_t<double> column(const std::vector<Sample>& s, F get) {
@@ -283,7 +283,7 @@ pyb::dict series_dict(const std::vector<Sample>& s) {
   d["dissipation"] = column(s, [](const Sample& x) { return x.dissipation; });
   d["cycle"] = column(s, [](const Sample& x) { return static_cast<double>(x.cycle); });
   pyb::list types;
-  for (const auto& x : s) types.append(std::string(rate3d::to_string(x.type)));
+  for (const auto& x : s) types.append(std::string(rate::to_string(x.type)));
   d["type"] = types;
   return d;
 }
@@ -301,7 +301,7 @@ pyb::dict sample_dict(const Sample& x) {
   d["w_N"] = x.w_N;
   d["w_Ti"] = np2(x.w_Ti);
   d["w_w"] = x.w_w;
-  d["type"] = std::string(rate3d::to_string(x.type));
+  d["type"] = std::string(rate::to_string(x.type));
   d["cycle"] = x.cycle;
   return d;
 }
@@ -311,7 +311,7 @@ pyb::dict simulate_fretting_3d(const pyb::object& point, double F_N, double a_X,
                                int ramp_steps, int lead_steps, const std::string& wear_law,
                                double k_M, const std::string& branch_rule, int record_every,
                                bool local_fallback) {
-  rate3d::EllipticOrbit orbit;
+  rate::EllipticOrbit orbit;
   orbit.F_N = F_N;
   orbit.a_X = a_X;
   orbit.a_Y = a_Y;
@@ -322,7 +322,7 @@ pyb::dict simulate_fretting_3d(const pyb::object& point, double F_N, double a_X,
   orbit.ramp_steps = ramp_steps;
   orbit.lead_steps = lead_steps;
   throw_if_invalid(orbit.validate(), "orbit");
-  rate3d::Fretting3dOptions o;
+  rate::Fretting3dOptions o;
   o.params = params_from(point);
   const auto w = rate::wear_law_from_string(wear_law);
   if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
@@ -340,16 +340,16 @@ pyb::dict simulate_fretting_3d(const pyb::object& point, double F_N, double a_X,
   check_memory(kept * (sizeof(Sample) + 25 * sizeof(double)) + 2.0 * 4 * cycles * sizeof(double),
                "a fretting run of " + std::to_string(orbit.size()) + " steps (record_every " +
                    std::to_string(record_every) + ")");
-  rate3d::Fretting3dResult r;
+  rate::Fretting3dResult r;
   {
     pyb::gil_scoped_release release;
-    r = rate3d::simulate_fretting_3d(orbit, o);
+    r = rate::simulate_fretting_3d(orbit, o);
   }
   auto arr = [](const std::vector<double>& v) { return array1(v); };
   pyb::dict d;
   d["series"] = series_dict(r.series);
   d["final_state"] = sample_dict(r.final_state);
-  d["outcome"] = std::string(rate3d::to_string(r.outcome));
+  d["outcome"] = std::string(rate::to_string(r.outcome));
   d["message"] = r.message;
   d["steps"] = r.steps;
   d["branch_steps"] = r.branch_steps;

@@ -26,9 +26,9 @@ inline Eigen::Vector3d vec3(const pyb::handle& o, const char* what) {
   return {v[0], v[1], v[2]};
 }
 
-/// Point3dParameters from an object with A (3x3), mu, C_T, k_a, P_s, alpha (cpkit.Point3d).
-inline rate3d::Point3dParameters params_from(const pyb::handle& o) {
-  rate3d::Point3dParameters p;
+/// ContactParameters3d from an object with A (3x3), mu, C_T, k_a, P_s, alpha (cpkit.Point3d).
+inline rate::ContactParameters3d params_from(const pyb::handle& o) {
+  rate::ContactParameters3d p;
   const auto A = o.attr("A").cast<std::vector<std::vector<double>>>();
   if (A.size() != 3) throw InputError("A must be 3 x 3 (DOFs T_X, T_Y, N)");
   for (int i = 0; i < 3; ++i) {
@@ -46,10 +46,10 @@ inline rate3d::Point3dParameters params_from(const pyb::handle& o) {
 
 inline pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
 
-inline rate3d::Step3dProblem step_problem(const pyb::object& point, const pyb::object& P_T0,
+inline rate::Step3dProblem step_problem(const pyb::object& point, const pyb::object& P_T0,
                                    double P_N0, double g0, const pyb::object& DF,
                                    const std::string& wear_law, double k_M) {
-  rate3d::Step3dProblem p;
+  rate::Step3dProblem p;
   p.params = params_from(point);
   const auto w = rate::wear_law_from_string(wear_law);
   if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
@@ -63,8 +63,8 @@ inline rate3d::Step3dProblem step_problem(const pyb::object& point, const pyb::o
 }
 
 /// A step solution as a dict with the keys of enumerate_step_3d's solutions.
-inline pyb::dict step_solution_dict(const rate3d::Step3dSolution& s) {
-  const rate3d::Step3dValues& v = s.values;
+inline pyb::dict step_solution_dict(const rate::Step3dSolution& s) {
+  const rate::Step3dValues& v = s.values;
   pyb::dict values;
   values["P_T1"] = np2(v.P_T1);
   values["P_N1"] = v.P_N1;
@@ -77,16 +77,16 @@ inline pyb::dict step_solution_dict(const rate3d::Step3dSolution& s) {
   values["g1"] = v.g1;
   values["lambda"] = v.lambda;
   pyb::dict d;
-  d["type"] = std::string(rate3d::to_string(s.type));
+  d["type"] = std::string(rate::to_string(s.type));
   d["values"] = values;
-  const bool slip = s.type == rate3d::Type3d::kSlip;
+  const bool slip = s.type == rate::SolutionType::kSlip;
   d["slip_direction"] = slip ? pyb::object(np2(s.slip_direction)) : pyb::object(pyb::none());
   d["slip_angle"] = slip ? pyb::object(pyb::float_(s.slip_angle)) : pyb::object(pyb::none());
   d["residual"] = s.residual;
   return d;
 }
 
-inline pyb::dict step_set_dict(const rate3d::Step3dSolutionSet& set) {
+inline pyb::dict step_set_dict(const rate::Step3dSolutionSet& set) {
   pyb::list sols;
   for (const auto& s : set.solutions) sols.append(step_solution_dict(s));
   pyb::dict d;

@@ -63,18 +63,18 @@ TEST_CASE("Simulate3dJsonEchoesInputsAndMatchesTheLibrary", "[cli][simulate3d]")
   CHECK(j["wear_per_cycle"].size() == 3);
   CHECK(j["steps"] == 10 + 10 + 120);
   // The same run through the library.
-  const auto sys = cpkit::rate3d::read_contact_system_3d(kExample);
-  cpkit::rate3d::Fretting3dOptions o;
+  const auto sys = cpkit::rate::read_contact_system_3d(kExample);
+  cpkit::rate::Fretting3dOptions o;
   o.params = sys.point_parameters(0);
   o.record_every = 0;
-  cpkit::rate3d::EllipticOrbit b;
+  cpkit::rate::EllipticOrbit b;
   b.F_N = 1.2;
   b.a_X = 0.9;
   b.a_Y = 0.5;
   b.angle = 0.3;
   b.cycles = 3;
   b.steps_per_cycle = 40;
-  const auto lib = cpkit::rate3d::simulate_fretting_3d(b, o);
+  const auto lib = cpkit::rate::simulate_fretting_3d(b, o);
   const double w = j["final_wear_depth"].get<double>();
   CHECK(w > 1e-3);
   CHECK(std::abs(w - lib.wear_depth) <= 1e-12 * lib.wear_depth);

@@ -20,11 +20,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const cpkit::rate::SystemFile file = cpkit::rate::parse_system_file(text, "fuzz");
     require(file.dim == 2 || file.dim == 3, "dim is 2 or 3");
     if (file.dim == 3) {
-      const auto sys = cpkit::rate3d::parse_contact_system_3d(file);
+      const auto sys = cpkit::rate::parse_contact_system_3d(file);
       require(sys.A.rows() == 3 * sys.n_points() && sys.A.cols() == sys.A.rows(), "A is 3N x 3N");
       require(sys.A == sys.A.transpose(), "A is returned exactly symmetric");
       if (sys.n_points() == 1 && sys.dF) {
-        const auto s = cpkit::rate3d::solve_rate_3d(sys.point_parameters(0), sys.points[0].state, *sys.dF);
+        const auto s = cpkit::rate::solve_rate_3d(sys.point_parameters(0), sys.points[0].state, *sys.dF);
         require(s.complete || !s.message.empty(), "an incomplete answer says why");
       }
     } else {

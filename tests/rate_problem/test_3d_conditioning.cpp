@@ -18,7 +18,7 @@
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -134,7 +134,7 @@ TEST_CASE("3-D step, ill-conditioned A: the issue's reproducers", "[step3d][cond
     REQUIRE(s.complete);
     REQUIRE(s.count() == 1);
     const Step3dValues& v = s.solutions[0].values;
-    CHECK(s.solutions[0].type == Type3d::kSlip);
+    CHECK(s.solutions[0].type == SolutionType::kSlip);
     CHECK(v.P_T1(0) == Approx(-7.0 / 13).epsilon(1e-7));
     CHECK(v.P_T1(1) == Approx(0.2625).epsilon(1e-7));
     CHECK(v.P_N1 == Approx(0.29951923076923077).epsilon(1e-7));
@@ -151,7 +151,7 @@ TEST_CASE("3-D step, ill-conditioned A: the issue's reproducers", "[step3d][cond
     REQUIRE(s.complete);
     REQUIRE(s.count() == 1);
     const Step3dValues& v = s.solutions[0].values;
-    CHECK(s.solutions[0].type == Type3d::kStick);
+    CHECK(s.solutions[0].type == SolutionType::kStick);
     CHECK(v.P_T1(0) == Approx(1.0 / 24).epsilon(1e-7));
     CHECK(v.P_T1(1) == Approx(1.0 / 16).epsilon(1e-7));
     CHECK(v.P_N1 == Approx(89.0 / 96).epsilon(1e-7));
@@ -193,7 +193,7 @@ TEST_CASE("3-D step and rate: cond(A) from 1e2 to 1e12, the constructed solution
       // contact, no wear): dF = dP + A dw.
       if (p.state.P_N0 == 0 && p.params.k_a == 0) {
         ++rate_total;
-        const RateSolutionSet3d r = solve_rate_3d(p.params, Point3dState{}, p.DF);
+        const RateSolutionSet3d r = solve_rate_3d(p.params, ContactState3d{}, p.DF);
         INFO(r.message);
         rate_incomplete += !r.complete;
         bool rfound = false;

@@ -19,7 +19,7 @@
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/step/system_step_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -27,7 +27,7 @@ const double kUnits[] = {1e-12, 1e-8, 1e-4, 1e4, 1e8, 1e12};
 
 /// The same model with the ellipse in the unit c (and the force unit s: A s, C_T / s, loads s,
 /// k_a / s).
-Point3dParameters in_units(Point3dParameters p, double c, double s) {
+ContactParameters3d in_units(ContactParameters3d p, double c, double s) {
   p.alpha *= c;
   p.mu /= c;
   p.k_a /= c * s;
@@ -69,9 +69,9 @@ bool same_point(const Step3dValues& a, const Step3dValues& b, double s) {
          near(a.Dw_T(1), b.Dw_T(1), d) && near(a.Dw_N, b.Dw_N, d);
 }
 
-Point3dParameters random_params(std::mt19937& rng) {
+ContactParameters3d random_params(std::mt19937& rng) {
   std::uniform_real_distribution<double> pos(0.05, 1);
-  Point3dParameters p;
+  ContactParameters3d p;
   p.A = cpkit::test::coupled_spd(rng, 1.5, rng() % 2 == 0);
   p.mu = 0.2 + 2 * pos(rng);
   p.C_T = rng() % 2 ? 0.0 : pos(rng);
@@ -84,7 +84,7 @@ Point3dParameters random_params(std::mt19937& rng) {
 
 TEST_CASE("3-D rate: the issue's ellipse reproducers", "[rate3d][units]") {
   // A slip that must stay a slip, and a stick that must stay a stick, for every unit c.
-  Point3dParameters p;
+  ContactParameters3d p;
   p.A << 2, 0, 1, 0, 1.5, 0.3, 1, 0.3, 2;
   p.mu = 0.8;
   p.alpha = {1, 0.5};
@@ -101,7 +101,7 @@ TEST_CASE("3-D rate: the issue's ellipse reproducers", "[rate3d][units]") {
       for (int k = 0; k < ref.count(); ++k) {
         CHECK(x.solutions[k].type == ref.solutions[k].type);
         CHECK(same_rates(ref.solutions[k].at, x.solutions[k].at, 1));
-        if (x.solutions[k].type == Type3d::kStick)
+        if (x.solutions[k].type == SolutionType::kStick)
           CHECK(x.solutions[k].at.dw_Ti.cwiseAbs().maxCoeff() == 0);
       }
     }
@@ -113,8 +113,8 @@ TEST_CASE("3-D rate (exact and faceted), every state: the same solutions in ever
   std::mt19937 rng(2402);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.2, 1);
   for (int trial = 0; trial < 60; ++trial) {
-    const Point3dParameters p = random_params(rng);
-    Point3dState st;
+    const ContactParameters3d p = random_params(rng);
+    ContactState3d st;
     st.state = "bcd"[trial % 3];
     if (st.state != 'b') {
       st.P_N = pos(rng);
@@ -128,10 +128,10 @@ TEST_CASE("3-D rate (exact and faceted), every state: the same solutions in ever
     for (double c : kUnits)
       for (double s : {1.0, 1e-9, 1e9}) {
         CAPTURE(trial, st.state, c, s);
-        Point3dState sts = st;
+        ContactState3d sts = st;
         sts.P_T *= s;
         sts.P_N *= s;
-        const Point3dParameters q = in_units(p, c, s);
+        const ContactParameters3d q = in_units(p, c, s);
         const RateSolutionSet3d x = solve_rate_3d(q, sts, s * dF);
         INFO(ref.message << " / " << x.message);
         CHECK(x.complete == ref.complete);

@@ -13,7 +13,7 @@
 #include "cpkit/rate_problem/rate/analytic.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 namespace r2 = cpkit::rate;
 
 using cpkit::test::coupled_spd;
@@ -37,7 +37,7 @@ TEST_CASE("faceted 3-D, isotropic with Y decoupled and unloaded: the 2-D closed 
     p2.C_T = c % 3 == 0 ? 0 : pos(rng);
     const double th = kPi * u(rng);
     const r2::RateSolutionSet ref = r2::solve_rate_analytic(p2, {}, {std::cos(th), std::sin(th)});
-    Point3dParameters p3;
+    ContactParameters3d p3;
     p3.A << p2.a11, 0, p2.a12, 0, 0.3 + pos(rng), 0, p2.a12, 0, p2.a22;
     p3.mu = p2.mu;
     p3.C_T = p2.C_T;
@@ -70,7 +70,7 @@ TEST_CASE("faceted 3-D: the counts approach the exact elliptic counts as k grows
   std::vector<double> max_angle_error(ks.size(), 0);
   int cases = 0, non_unique = 0;
   for (int c = 0; c < 400; ++c) {
-    Point3dParameters p;
+    ContactParameters3d p;
     p.A = coupled_spd(rng, c % 2 ? 1.0 : 0.3, false);
     p.mu = 0.2 + 4 * pos(rng);
     p.C_T = c % 3 == 0 ? 0 : pos(rng);
@@ -87,10 +87,10 @@ TEST_CASE("faceted 3-D: the counts approach the exact elliptic counts as k grows
       agree[i] += f.set.count() == exact.count();
       // the faceted slip directions approach the exact ones
       for (const auto& e : exact.solutions) {
-        if (e.type != Type3d::kSlip) continue;
+        if (e.type != SolutionType::kSlip) continue;
         double best = 10;
         for (const auto& g : f.set.solutions)
-          if (g.type == Type3d::kSlip)
+          if (g.type == SolutionType::kSlip)
             best = std::min(best, std::abs(std::remainder(g.slip_angle - e.slip_angle, 2 * kPi)));
         max_angle_error[i] = std::max(max_angle_error[i], best);
       }
@@ -109,7 +109,7 @@ TEST_CASE("faceted 3-D: the counts approach the exact elliptic counts as k grows
 }
 
 TEST_CASE("faceted 3-D: bad input", "[rate3d][faceted]") {
-  Point3dParameters p;
+  ContactParameters3d p;
   CHECK_THROWS_AS(solve_rate_3d_faceted(p, {1, 0, 0}, 2), cpkit::InputError);
   CHECK_THROWS_AS(solve_rate_3d_faceted(p, {1, 0, 0}, kMaxFacets + 1), cpkit::InputError);
   CHECK_THROWS_AS(solve_rate_3d_faceted(p, {1, std::nan(""), 0}, 8), cpkit::InputError);

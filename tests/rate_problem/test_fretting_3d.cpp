@@ -13,7 +13,7 @@
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 using cpkit::rate::WearLaw;
 
 namespace {
@@ -93,7 +93,7 @@ TEST_CASE("(a) total wear = the laws (40) and (41) integrated from the series", 
       else
         integral += o.params.k_a / (3 * o.params.P_s) * s.P_N *
                     std::hypot(al(0) * dw(0), al(1) * dw(1));
-      if (s.type == Type3d::kSlip) ++slip_steps;
+      if (s.type == SolutionType::kSlip) ++slip_steps;
     }
     INFO("mroz " << mroz << " wear " << r.wear_depth << " integral " << integral);
     CHECK(slip_steps > 50);  // gross slip over most of the orbit
@@ -167,7 +167,7 @@ TEST_CASE("(b) decoupled isotropic Y, a_Y = 0: the 2-D fretting simulation step 
         CHECK(s3.count == s2.count);
         const bool slip2 = s2.type == cpkit::rate::SolutionType::kSlipPlus ||
                            s2.type == cpkit::rate::SolutionType::kSlipMinus;
-        CHECK((s3.type == Type3d::kSlip) == slip2);
+        CHECK((s3.type == SolutionType::kSlip) == slip2);
         slips += slip2;
       }
     }
@@ -234,7 +234,7 @@ TEST_CASE("(c) closed form: steady gross slip on a matched elliptic orbit", "[fr
       for (std::size_t i = n - N; i < n; ++i) {  // the last cycle
         const Fretting3dSample& s = r.series[i];
         INFO("step " << i);
-        REQUIRE(s.type == Type3d::kSlip);
+        REQUIRE(s.type == SolutionType::kSlip);
         lam += s.lambda;
         const Eigen::Vector2d Dw = al.asDiagonal() * s.w_Ti;
         CHECK(std::abs(Dw.norm() - R) < nn.tol * R);  // on the ellipse of half-axes R / alpha

@@ -37,10 +37,10 @@ TEST_CASE("MapParameterTableGovernsTheThreeParsers", "[map][params]") {
     }
     // 3-D.
     if (row.dimensions & kMap3d) {
-      CHECK(cpkit::rate3d::parse_map_3d_parameter(name, 2).name() == name);
+      CHECK(cpkit::rate::parse_map_3d_parameter(name, 2).name() == name);
       ++three_d;
     } else {
-      CHECK_THROWS_WITH(cpkit::rate3d::parse_map_3d_parameter(name, 2),
+      CHECK_THROWS_WITH(cpkit::rate::parse_map_3d_parameter(name, 2),
                         Catch::Contains("'" + name + "'") && Catch::Contains("does not apply"));
     }
   }

@@ -21,7 +21,7 @@
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 namespace r2 = cpkit::rate;
 
 using cpkit::test::coupled_spd;
@@ -83,7 +83,7 @@ RateSolutionSet3d transform(const RateSolutionSet3d& s, const Eigen::Matrix2d& f
 struct BruteSlip {
   double phi, dP_N, lambda;
 };
-std::vector<BruteSlip> brute_force_slips(const Point3dParameters& p, const Eigen::Vector3d& dF) {
+std::vector<BruteSlip> brute_force_slips(const ContactParameters3d& p, const Eigen::Vector3d& dF) {
   const Eigen::Matrix2d D = p.alpha.asDiagonal(), Dinv = p.alpha.cwiseInverse().asDiagonal();
   auto columns = [&](double phi, Eigen::Vector3d& c0, Eigen::Vector3d& c1) {
     const Eigen::Vector2d t(std::cos(phi), std::sin(phi));
@@ -128,7 +128,7 @@ std::vector<BruteSlip> brute_force_slips(const Point3dParameters& p, const Eigen
 }
 
 /// The angle of the slip direction dw_T^i = lambda D^-1 t for the slip direction angle phi.
-double slip_angle_of(const Point3dParameters& p, double phi) {
+double slip_angle_of(const ContactParameters3d& p, double phi) {
   const Eigen::Vector2d v = p.alpha.cwiseInverse().asDiagonal() * Eigen::Vector2d(std::cos(phi), std::sin(phi));
   return std::atan2(v(1), v(0));
 }
@@ -163,13 +163,13 @@ TEST_CASE("3-D: isotropic point with a decoupled, unloaded Y direction = the 2-D
     CHECK(points);  // random data: no degenerate case
     if (!points) continue;
 
-    Point3dParameters p3;
+    ContactParameters3d p3;
     p3.A << p2.a11, 0, p2.a12, 0, 0.3 + pos(rng), 0, p2.a12, 0, p2.a22;
     p3.mu = p2.mu;
     p3.C_T = p2.C_T;
     p3.k_a = p2.k_a;
     p3.P_s = p2.P_s;
-    Point3dState s3;
+    ContactState3d s3;
     s3.state = state;
     s3.P_N = s2.P_N;
     if (state == 'c') s3.P_T = {0.5 * p2.mu * s2.P_N * s2.sgn_PT, 0};
@@ -186,18 +186,18 @@ TEST_CASE("3-D: isotropic point with a decoupled, unloaded Y direction = the 2-D
       want.dw_N = s.start.dw_N;
       want.dw_Ti = {s.start.dw_Ti, 0};
       want.dw_w = s.start.dw_w;
-      Type3d type = Type3d::kStick;
-      if (s.type == r2::SolutionType::kSeparation) type = Type3d::kSeparation;
+      SolutionType type = SolutionType::kStick;
+      if (s.type == r2::SolutionType::kSeparation) type = SolutionType::kSeparation;
       if (s.type == r2::SolutionType::kSlipPlus || s.type == r2::SolutionType::kSlipMinus)
-        type = Type3d::kSlip;
+        type = SolutionType::kSlip;
       bool found = false;
       for (const auto& g : got.solutions)
         found = found || (g.type == type && same_rates(g.at, want, 1, 1 + 1 / p2.a11 + p2.C_T));
       CHECK(found);
-      if (type == Type3d::kSlip) {
+      if (type == SolutionType::kSlip) {
         ++slips;
         for (const auto& g : got.solutions)
-          if (g.type == Type3d::kSlip && same_rates(g.at, want, 1, 1 + 1 / p2.a11 + p2.C_T))
+          if (g.type == SolutionType::kSlip && same_rates(g.at, want, 1, 1 + 1 / p2.a11 + p2.C_T))
             CHECK(g.slip_direction(0) == Approx(s.type == r2::SolutionType::kSlipPlus ? 1 : -1));
       }
     }
@@ -216,7 +216,7 @@ TEST_CASE("3-D state b: the slip directions equal a brute-force scan of the rate
   int counts[6] = {0, 0, 0, 0, 0, 0};
   int incomplete = 0, checked = 0;
   for (int c = 0; c < 1500; ++c) {
-    Point3dParameters p;
+    ContactParameters3d p;
     p.A = c % 2 ? coupled_spd(rng) : random_spd(rng, 0.3);
     p.mu = 0.1 + 6 * pos(rng);
     p.C_T = c % 3 == 0 ? 0 : pos(rng);
@@ -233,7 +233,7 @@ TEST_CASE("3-D state b: the slip directions equal a brute-force scan of the rate
     ++checked;
     std::vector<const RateSolution3d*> slips;
     for (const auto& s : got.solutions)
-      if (s.type == Type3d::kSlip) slips.push_back(&s);
+      if (s.type == SolutionType::kSlip) slips.push_back(&s);
     REQUIRE(slips.size() == want.size());
     for (const auto& w : want) {
       bool found = false;
@@ -263,12 +263,12 @@ TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates it
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
   for (int c = 0; c < 600; ++c) {
-    Point3dParameters p;
+    ContactParameters3d p;
     p.A = random_spd(rng);
     p.mu = 0.1 + 3 * pos(rng);
     p.C_T = pos(rng);
     p.k_a = pos(rng);
-    Point3dState st;
+    ContactState3d st;
     st.state = "bcd"[c % 3];
     if (st.state != 'b') {
       st.P_N = pos(rng);
@@ -281,10 +281,10 @@ TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates it
     R << std::cos(rot), -std::sin(rot), std::sin(rot), std::cos(rot);
     Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();
     Q.topLeftCorner<2, 2>() = R;
-    Point3dParameters pr = p;
+    ContactParameters3d pr = p;
     pr.A = Q * p.A * Q.transpose();
     pr.A = ((pr.A + pr.A.transpose()) / 2).eval();  // no aliasing
-    Point3dState sr = st;
+    ContactState3d sr = st;
     sr.P_T = R * st.P_T;
     const RateSolutionSet3d a = solve_rate_3d(p, st, dF);
     const RateSolutionSet3d b = solve_rate_3d(pr, sr, Q * dF);
@@ -301,12 +301,12 @@ TEST_CASE("3-D: the elliptic law equals the isotropic one after p_T -> D^-1 p_T,
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
   int with_slip = 0;
   for (int c = 0; c < 600; ++c) {
-    Point3dParameters p;
+    ContactParameters3d p;
     p.A = random_spd(rng);
     p.mu = 0.1 + 3 * pos(rng);
     p.k_a = pos(rng);
     p.alpha = {0.2 + pos(rng), 0.2 + pos(rng)};
-    Point3dState st;
+    ContactState3d st;
     st.state = c % 2 ? 'b' : 'd';
     if (st.state == 'd') {
       st.P_N = pos(rng);
@@ -317,10 +317,10 @@ TEST_CASE("3-D: the elliptic law equals the isotropic one after p_T -> D^-1 p_T,
     const Eigen::Matrix2d D = p.alpha.asDiagonal(), Dinv = p.alpha.cwiseInverse().asDiagonal();
     Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
     S.topLeftCorner<2, 2>() = Dinv;
-    Point3dParameters iso = p;
+    ContactParameters3d iso = p;
     iso.alpha = {1, 1};
     iso.A = S * p.A * S;
-    Point3dState si = st;
+    ContactState3d si = st;
     si.P_T = Dinv * st.P_T;
     const RateSolutionSet3d a = solve_rate_3d(p, st, dF);
     const RateSolutionSet3d b = solve_rate_3d(iso, si, S * dF);
@@ -328,14 +328,14 @@ TEST_CASE("3-D: the elliptic law equals the isotropic one after p_T -> D^-1 p_T,
     REQUIRE(a.complete == b.complete);
     if (!a.complete) continue;
     CHECK(same_sets(transform(a, Dinv, D), b, 1 + dF.norm(), 10 * (1 + dF.norm())));
-    for (const auto& s : a.solutions) with_slip += s.type == Type3d::kSlip;
+    for (const auto& s : a.solutions) with_slip += s.type == SolutionType::kSlip;
   }
   CHECK(with_slip > 100);
 }
 
 TEST_CASE("3-D: wear (40) is k P_N |D dw_T^i|, Archard's (37) k P_N |dw_T^i| when isotropic",
           "[rate3d]") {
-  Point3dParameters p;
+  ContactParameters3d p;
   p.A << 2, 0.3, 0.5, 0.3, 1.5, -0.2, 0.5, -0.2, 1;
   p.mu = 0.4;
   p.k_a = 0.3;
@@ -343,14 +343,14 @@ TEST_CASE("3-D: wear (40) is k P_N |D dw_T^i|, Archard's (37) k P_N |dw_T^i| whe
   p.C_T = 0.1;
   for (const Eigen::Vector2d& alpha : {Eigen::Vector2d(1, 1), Eigen::Vector2d(0.5, 1)}) {
     p.alpha = alpha;
-    Point3dState st;
+    ContactState3d st;
     st.state = 'd';
     st.P_N = 2;
     st.P_T = p.mu * st.P_N * (alpha.asDiagonal() * Eigen::Vector2d(0.6, 0.8));
     const RateSolutionSet3d s = solve_rate_3d(p, st, {1, 0.5, 0.2});  // a tangential push
     bool slip = false;
     for (const auto& x : s.solutions)
-      if (x.type == Type3d::kSlip) {
+      if (x.type == SolutionType::kSlip) {
         slip = true;
         const double k = p.k_a / (3 * p.P_s);
         CHECK(x.at.dw_w == Approx(k * st.P_N * (alpha.asDiagonal() * x.at.dw_Ti).norm()));
@@ -369,7 +369,7 @@ TEST_CASE("3-D: the verdict does not depend on units (dF, and A with dF, scaled 
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
   for (int c = 0; c < 200; ++c) {
-    Point3dParameters p;
+    ContactParameters3d p;
     p.A = random_spd(rng);
     p.mu = 0.1 + 3 * pos(rng);
     p.C_T = pos(rng);
@@ -379,7 +379,7 @@ TEST_CASE("3-D: the verdict does not depend on units (dF, and A with dF, scaled 
     for (double s : {1e-12, 1e-6, 1e6, 1e12}) {
       CAPTURE(c, s);
       const RateSolutionSet3d a = solve_rate_3d(p, {}, s * dF);
-      Point3dParameters ps = p;
+      ContactParameters3d ps = p;
       ps.A = s * p.A;
       ps.C_T = p.C_T / s;  // the same compliance in the new force unit
       const RateSolutionSet3d b = solve_rate_3d(ps, {}, s * dF);
@@ -398,12 +398,12 @@ TEST_CASE("3-D: dF = 0 leaves the slip directions unresolved and says so", "[rat
   CHECK_FALSE(s.complete);
   CHECK(s.message.find("dF = 0") != std::string::npos);
   REQUIRE(s.count() >= 1);
-  CHECK(s.solutions[0].type == Type3d::kStick);  // the zero rates are a stick solution
+  CHECK(s.solutions[0].type == SolutionType::kStick);  // the zero rates are a stick solution
 }
 
 TEST_CASE("3-D: bad input is an InputError naming the field", "[rate3d]") {
-  Point3dParameters p;
-  Point3dState st;
+  ContactParameters3d p;
+  ContactState3d st;
   const Eigen::Vector3d dF(1, 0, 0);
   auto fails = [&](const std::string& what) {
     try {
@@ -451,14 +451,14 @@ TEST_CASE("3-D rate: a direction where the slip system has rank one for every lo
   std::uniform_real_distribution<double> u(-1, 1), pos(0.1, 1);
   int agree = 0, total = 0;
   for (int trial = 0; trial < 200; ++trial) {
-    Point3dParameters p;
+    ContactParameters3d p;
     const double a = 0.5 + pos(rng), ang = kPi * u(rng);
     p.mu = 0.5 + 2 * pos(rng);
     const double r = (1 + pos(rng)) * a / p.mu;  // |A_NT| >= a / mu
     p.A << a, 0, r * std::cos(ang), 0, a, r * std::sin(ang), r * std::cos(ang), r * std::sin(ang),
         r * r / a + 0.2 + pos(rng);
     const Eigen::Vector3d dF(u(rng), u(rng), u(rng));
-    const RateSolutionSet3d e = solve_rate_3d(p, Point3dState{}, dF);
+    const RateSolutionSet3d e = solve_rate_3d(p, ContactState3d{}, dF);
     INFO("trial " << trial << ": " << e.message);
     REQUIRE(e.complete);
     const FacetedRateResult f = solve_rate_3d_faceted(p, dF, 64);
@@ -484,7 +484,7 @@ TEST_CASE("3-D rate: eigenvector directions of A_TT singular for every load, not
   // dP = dF (C_T = 0, |dP_T| = 1 <= mu dP_N = 2; hand calculation). With mu = 1, C_T = 1 and
   // dF = (0.5, 0, 1), g has a double root at phi = pi whose slip has lambda = -1: the unique
   // stick solves (I + A_TT) dP_T = dF_T, dP_N = dF_N - A_NT dP_T: dP = (1/6, 0, 5/6).
-  Point3dParameters p;
+  ContactParameters3d p;
   p.A << 2, 0, 1, 0, 1, 0.5, 1, 0.5, 2;
   struct Case {
     double mu, C_T;
@@ -499,7 +499,7 @@ TEST_CASE("3-D rate: eigenvector directions of A_TT singular for every load, not
     INFO(s.message);
     CHECK(s.complete);
     REQUIRE(s.count() == 1);
-    CHECK(s.solutions[0].type == Type3d::kStick);
+    CHECK(s.solutions[0].type == SolutionType::kStick);
     CHECK(s.solutions[0].at.dP_T(0) == Approx(c.dP(0)).epsilon(1e-12));
     CHECK(std::abs(s.solutions[0].at.dP_T(1)) <= 1e-14);
     CHECK(s.solutions[0].at.dP_N == Approx(c.dP(2)).epsilon(1e-12));
@@ -511,7 +511,7 @@ TEST_CASE("3-D rate: eigenvector directions of A_TT singular for every load, not
     INFO(e.message);
     CHECK(e.complete);
     REQUIRE(e.count() == 1);
-    CHECK(e.solutions[0].type == Type3d::kStick);
+    CHECK(e.solutions[0].type == SolutionType::kStick);
     CHECK(e.solutions[0].values.P_T1(0) == Approx(c.dP(0)).epsilon(1e-12));
     CHECK(e.solutions[0].values.P_N1 == Approx(c.dP(2)).epsilon(1e-12));
   }
@@ -525,7 +525,7 @@ TEST_CASE("3-D rate: rank-one eigenvector directions over random loads", "[rate3
   std::uniform_real_distribution<double> u(-1, 1), pos(0.2, 1);
   int complete = 0, total = 0, agree = 0;
   for (int trial = 0; trial < 120; ++trial) {
-    Point3dParameters p;
+    ContactParameters3d p;
     const double a1 = 1 + pos(rng), a2 = 0.5 + pos(rng);
     p.mu = 0.5 + 2 * pos(rng);
     const double ax = a1 / p.mu, ay = 0.3 * u(rng);

@@ -55,8 +55,9 @@ TEST_CASE("enum names round-trip", "[rate][model]") {
     CHECK(state_from_string(to_string(s)) == s);
   CHECK_FALSE(state_from_string("e"));
   for (auto t : {SolutionType::kOpen, SolutionType::kSeparation, SolutionType::kStick,
-                 SolutionType::kSlipPlus, SolutionType::kSlipMinus})
+                 SolutionType::kSlipPlus, SolutionType::kSlipMinus, SolutionType::kSlip})
     CHECK(solution_type_from_string(to_string(t)) == t);
+  CHECK(to_string(SolutionType::kSlip) == "slip");  // the 3-D type's string (JSON "type")
   CHECK(to_string(SolutionType::kSlipPlus) == "slip+");
   for (auto m : {RateMethod::kEnumerate, RateMethod::kAnalytic, RateMethod::kLemke,
                  RateMethod::kFbNewton, RateMethod::kIpopt})

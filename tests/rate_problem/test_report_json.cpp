@@ -208,7 +208,7 @@ TEST_CASE("step JSON: N points, one array per field", "[report]") {
 }
 
 TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
-  using namespace cpkit::rate3d;
+  using namespace cpkit::rate;
   Rates3d slip, stick;
   slip.dP_T = {1, -2};
   slip.dP_N = 0.5;
@@ -219,17 +219,17 @@ TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
   CHECK(r.at("dP_N") == json({0.5, 7.0}));
   CHECK(r.at("dw_Ti")[0] == json({3.0, 4.0}));
   json e;
-  add_slip_json(e, {Type3d::kSlip, Type3d::kStick}, {slip, stick});
+  add_slip_json(e, {SolutionType::kSlip, SolutionType::kStick}, {slip, stick});
   CHECK(e.at("slip_direction")[0][0].get<double>() == Approx(0.6));
   CHECK(e.at("slip_direction")[0][1].get<double>() == Approx(0.8));
   CHECK(e.at("slip_direction")[1].is_null());
   CHECK(e.at("slip_angle")[0].get<double>() == Approx(0.9272952180016122));
   json none;
-  add_slip_json(none, {Type3d::kStick}, {stick});
+  add_slip_json(none, {SolutionType::kStick}, {stick});
   CHECK_FALSE(none.contains("slip_direction"));  // no point slips: no field
 
   Step3dSolution s;
-  s.type = Type3d::kSlip;
+  s.type = SolutionType::kSlip;
   s.values.P_T1 = {0.3, -0.4};
   s.values.DP_T = {1, 2};
   s.values.DP_N = 3;
@@ -245,7 +245,7 @@ TEST_CASE("3-D JSON: pairs, slip directions by hand", "[report][3d]") {
   CHECK(j.at("Dw") == json({4.0, 5.0, 6.0}));
   CHECK(j.at("g1") == -0.25);
   CHECK(j.at("slip_direction") == json({0.0, -1.0}));
-  s.type = Type3d::kStick;
+  s.type = SolutionType::kStick;
   CHECK(step_3d_solution_json(s).at("slip_angle").is_null());
 }
 

@@ -26,7 +26,7 @@
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 
 using namespace cpkit;
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 
 namespace {
 
@@ -74,6 +74,18 @@ Eigen::Matrix3d decoupled_A() {
 }
 
 }  // namespace
+
+TEST_CASE("3-D map type bits are the documented file format with the one SolutionType",
+          "[rate3d][map3d]") {
+  // docs/contact_3d.md, "Maps over the sphere": open 1, separation 2, stick 4, slip 8; the 3-D
+  // slip (SolutionType::kSlip, added after the 2-D slip+/slip-) keeps bit 8.
+  CHECK(type_bit(SolutionType::kOpen) == 1);
+  CHECK(type_bit(SolutionType::kSeparation) == 2);
+  CHECK(type_bit(SolutionType::kStick) == 4);
+  CHECK(type_bit(SolutionType::kSlip) == 8);
+  CHECK(type_mask_string(2 | 4 | 8) == "separation|stick|slip");
+  CHECK(type_mask_string(0) == "none");
+}
 
 TEST_CASE("sphere map: the great circle g = 0, pi of a decoupled isotropic point is the 2-D "
           "closed form", "[rate3d][map3d]") {
@@ -216,7 +228,7 @@ TEST_CASE("sphere map: the ellipse is a circle in other variables (C_T = 0)", "[
   grid.n_gamma = 40;
   const Map3d m = compute_sphere_map_3d(sys, grid);
   const Eigen::Vector3d s(1 / alpha(0), 1 / alpha(1), 1);
-  Point3dParameters iso;
+  ContactParameters3d iso;
   iso.A = s.asDiagonal() * A * s.asDiagonal();
   iso.mu = 4.0;
   iso.alpha = {1, 1};
@@ -225,7 +237,7 @@ TEST_CASE("sphere map: the ellipse is a circle in other variables (C_T = 0)", "[
     for (int j = 0; j < m.cols; ++j) {
       const Eigen::Vector3d dF = sphere_direction(m.x[static_cast<std::size_t>(i)],
                                                   m.y[static_cast<std::size_t>(j)]);
-      const RateSolutionSet3d ref = solve_rate_3d(iso, Point3dState{}, s.asDiagonal() * dF);
+      const RateSolutionSet3d ref = solve_rate_3d(iso, ContactState3d{}, s.asDiagonal() * dF);
       if (!ref.complete || !m.complete_at(i, j)) continue;
       ++checked;
       unsigned mask = 0;
@@ -259,10 +271,10 @@ TEST_CASE("param-param map: alpha_X = alpha_Y = a is the isotropic law with mu a
     sys.dF = Eigen::VectorXd(dF);
     const Map3d m = compute_param_param_map_3d(sys, ax, ay);
     for (int i = 0; i < m.rows; ++i) {
-      Point3dParameters p = sys.point_parameters(0);
+      ContactParameters3d p = sys.point_parameters(0);
       p.alpha = {1, 1};
       p.mu = 1.6 * m.x[static_cast<std::size_t>(i)];
-      const RateSolutionSet3d ref = solve_rate_3d(p, Point3dState{}, dF);
+      const RateSolutionSet3d ref = solve_rate_3d(p, ContactState3d{}, dF);
       REQUIRE(ref.complete);
       unsigned mask = 0;
       for (const auto& x : ref.solutions) mask |= type_bit(x.type);
@@ -274,7 +286,7 @@ TEST_CASE("param-param map: alpha_X = alpha_Y = a is the isotropic law with mu a
       several += ref.count() > 1;
     }
     // the cell (1, 1) is the file's isotropic point
-    const RateSolutionSet3d file = solve_rate_3d(sys.point_parameters(0), Point3dState{}, dF);
+    const RateSolutionSet3d file = solve_rate_3d(sys.point_parameters(0), ContactState3d{}, dF);
     const Map3d one = compute_param_param_map_3d(sys, Map3dAxis{ax.param, 1, 1, 1},
                                                  Map3dAxis{ay.param, 1, 1, 1});
     CHECK(one.count_at(0, 0) == file.count());

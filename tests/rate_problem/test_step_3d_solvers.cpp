@@ -22,7 +22,7 @@
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 namespace r2 = cpkit::rate;
 
 using cpkit::test::coupled_spd;
@@ -31,7 +31,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// A random admissible start state: grazing, open, stick inside the ellipse, or on it.
-Step3dState random_state(std::mt19937& rng, const Point3dParameters& p, int kind, bool y_zero) {
+Step3dState random_state(std::mt19937& rng, const ContactParameters3d& p, int kind, bool y_zero) {
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
   Step3dState s;
   switch (kind % 4) {
@@ -96,7 +96,7 @@ Decoupled decoupled(std::mt19937& rng, int c, bool wear) {
   q.a12 = 0.95 * u(rng) * std::sqrt(q.a11 * q.a22);
   q.mu = 0.1 + 3 * pos(rng);
   q.C_T = c % 3 == 0 ? 0 : pos(rng);
-  Point3dParameters& p = d.p3.params;
+  ContactParameters3d& p = d.p3.params;
   p.A << q.a11, 0, q.a12, 0, 0.3 + pos(rng), 0, q.a12, 0, q.a22;
   p.mu = q.mu;
   p.C_T = q.C_T;

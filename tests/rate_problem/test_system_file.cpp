@@ -188,11 +188,11 @@ TEST_CASE("system file: an A asymmetric within the tolerance is accepted and mad
   CHECK(step.validate().empty());
 
   // The same for "dim": 3: A(0,2) = 1 + 1e-10 against A(2,0) = 1 (relative 5e-11 of 2).
-  const auto s3 = cpkit::rate3d::parse_contact_system_3d(
+  const auto s3 = cpkit::rate::parse_contact_system_3d(
       R"({"dim": 3, "A": [[2, 0, 1.0000000001], [0, 1, 0.5], [1, 0.5, 2]], )" + kOne3d + "}");
   CHECK(s3.A(0, 2) == s3.A(2, 0));
   CHECK(s3.A(0, 2) == Approx(1 + 5e-11).epsilon(1e-15));
-  cpkit::rate3d::SystemStep3dProblem step3;
+  cpkit::rate::SystemStep3dProblem step3;
   step3.system = s3;
   step3.states.resize(1);
   step3.DF = Eigen::Vector3d(0, 0, 1);
@@ -202,7 +202,7 @@ TEST_CASE("system file: an A asymmetric within the tolerance is accepted and mad
           parse_contact_system(R"({"A": [[2, 0.5000001], [0.5, 2]], "points": [{"state": "b"}]})");
         }).find("not symmetric") != std::string::npos);
   CHECK(error_of([&] {
-          cpkit::rate3d::parse_contact_system_3d(
+          cpkit::rate::parse_contact_system_3d(
               R"({"dim": 3, "A": [[2, 0, 1.00001], [0, 1, 0.5], [1, 0.5, 2]], )" + kOne3d + "}");
         }).find("not symmetric") != std::string::npos);
 }
@@ -220,7 +220,7 @@ TEST_CASE("system file: an SPD A is accepted in any units, 1e-300 to 1e300 (scal
     const std::string k = c.substr(1);  // "e-300", ..., "" for 1
     const std::string a3 = "[[2" + k + ", 0, 1" + k + "], [0, 1" + k + ", 0.5" + k + "], [1" + k +
                            ", 0.5" + k + ", 2" + k + "]]";
-    CHECK_NOTHROW(cpkit::rate3d::parse_contact_system_3d(R"({"dim": 3, "A": )" + a3 + ", " +
+    CHECK_NOTHROW(cpkit::rate::parse_contact_system_3d(R"({"dim": 3, "A": )" + a3 + ", " +
                                                          kOne3d + "}"));
     // indefinite in every unit: [[1, 2], [2, 1]] (eigenvalues 3 and -1)
     const std::string bad2 = "[[1" + k + ", 2" + k + "], [2" + k + ", 1" + k + "]]";
@@ -236,7 +236,7 @@ TEST_CASE("system file: 1e-400 and 1e400 are refused, 2-D and 3-D (no silent 0)"
   });
   CHECK(m2.find("s.json:1: '1e-400' is below the smallest double") != std::string::npos);
   const std::string m3 = error_of([] {
-    cpkit::rate3d::parse_contact_system_3d(
+    cpkit::rate::parse_contact_system_3d(
         "{\"dim\": 3, \"A\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],\n \"points\": [{\"state\": "
         "\"b\", \"mu\": 1e-400}]}", "s3.json");
   });
@@ -257,7 +257,7 @@ TEST_CASE("system file: 10^6 nested brackets are refused with a message, 2-D and
         "{\"dim\": 3, \"A\": [[1]], \"points\": [{\"state\": \"b\", \"mu\": " + deep + "}]}"}) {
     const std::string m2 = error_of([&] { parse_contact_system(text, "deep.json"); });
     CHECK(m2.find("deep.json:1: nesting deeper than 64 levels") != std::string::npos);
-    const std::string m3 = error_of([&] { cpkit::rate3d::parse_contact_system_3d(text, "deep.json"); });
+    const std::string m3 = error_of([&] { cpkit::rate::parse_contact_system_3d(text, "deep.json"); });
     CHECK(m3.find("deep.json:1: nesting deeper than 64 levels") != std::string::npos);
   }
   // A wide value (10^5 numbers where one is expected) is shown in 40 characters.
@@ -290,13 +290,13 @@ TEST_CASE("system file: read once, dimension from the document, errors surface",
   std::remove(fifo.c_str());
   CHECK(f.dim == 3);
   CHECK(f.source == fifo);
-  const auto s3 = cpkit::rate3d::parse_contact_system_3d(f);
+  const auto s3 = cpkit::rate::parse_contact_system_3d(f);
   CHECK(s3.A(2, 2) == 2);
   // dim absent is 2; a 2-D reader refuses a dim-3 document and the 3-D reader a 2-D one.
   CHECK(parse_system_file(R"({"A": [[1]]})").dim == 2);
   CHECK(error_of([&] { parse_contact_system(f); }).find("dim 3") != std::string::npos);
   CHECK(error_of([] {
-          cpkit::rate3d::parse_contact_system_3d(R"({"A": [[1, 0], [0, 1]], "points": [{"state": "b"}]})");
+          cpkit::rate::parse_contact_system_3d(R"({"A": [[1, 0], [0, 1]], "points": [{"state": "b"}]})");
         }).find("dim must be 3") != std::string::npos);
   // A broken file of either dimension is an error naming the problem, never "not 3-D".
   CHECK(error_of([] { parse_system_file(R"({"dim": 3, "A": )", "b.json"); })
@@ -328,7 +328,7 @@ TEST_CASE("system file: the fuzz regressions of issue 24 give their stated answe
     CAPTURE(name);
     const std::string m = error_of([&, n = name] {
       const SystemFile f = read_system_file(dir + n);
-      if (f.dim == 3) cpkit::rate3d::parse_contact_system_3d(f);
+      if (f.dim == 3) cpkit::rate::parse_contact_system_3d(f);
       else parse_contact_system(f);
     });
     if (expected.empty()) CHECK(m.empty());

@@ -22,7 +22,7 @@
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 namespace r2 = cpkit::rate;
 
 namespace {

@@ -20,7 +20,7 @@
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/system_step_3d.hpp"
 
-using namespace cpkit::rate3d;
+using namespace cpkit::rate;
 namespace r2 = cpkit::rate;
 using cpkit::test::coupled_spd;
 

@@ -15,7 +15,7 @@
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 namespace {
 
@@ -30,7 +30,7 @@ std::string num(double x) {
 /// Validates every point of a system (parameters and state): throws naming the point.
 void validate_points(const ContactSystem3d& sys, const std::string& where) {
   for (int i = 0; i < sys.n_points(); ++i) {
-    const Point3dParameters p = sys.point_parameters(i);
+    const ContactParameters3d p = sys.point_parameters(i);
     std::string e = p.validate();
     if (e.empty()) e = sys.points[static_cast<std::size_t>(i)].state.validate(p);
     if (!e.empty())
@@ -100,7 +100,7 @@ Eigen::VectorXd load_with(const ContactSystem3d& sys, const Map3dOptions& o,
 
 std::string type_mask_string(unsigned mask) {
   std::string s;
-  for (Type3d t : {Type3d::kOpen, Type3d::kSeparation, Type3d::kStick, Type3d::kSlip})
+  for (SolutionType t : {SolutionType::kOpen, SolutionType::kSeparation, SolutionType::kStick, SolutionType::kSlip})
     if (mask & type_bit(t)) s += (s.empty() ? "" : "|") + std::string(to_string(t));
   return s.empty() ? "none" : s;
 }
@@ -322,4 +322,4 @@ Map3d compute_param_param_map_3d(const ContactSystem3d& sys, const Map3dAxis& ax
   return m;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

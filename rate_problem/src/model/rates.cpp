@@ -14,6 +14,8 @@ std::string_view to_string(SolutionType t) noexcept {
       return "slip+";
     case SolutionType::kSlipMinus:
       return "slip-";
+    case SolutionType::kSlip:
+      return "slip";
   }
   return "unknown";
 }
@@ -24,6 +26,7 @@ std::optional<SolutionType> solution_type_from_string(std::string_view s) noexce
   if (s == "stick") return SolutionType::kStick;
   if (s == "slip+") return SolutionType::kSlipPlus;
   if (s == "slip-") return SolutionType::kSlipMinus;
+  if (s == "slip") return SolutionType::kSlip;
   return std::nullopt;
 }
 

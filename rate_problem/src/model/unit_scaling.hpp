@@ -10,7 +10,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-namespace cpkit::rate3d::detail {
+namespace cpkit::rate::detail {
 
 /// The unit of the friction ellipse: its larger half-axis. Multiplying alpha by c and dividing
 /// mu by c leaves the friction set ||D^-1 P_T|| <= mu P_N and the flow direction D^-2 P_T
@@ -21,11 +21,11 @@ inline double ellipse_unit(const Eigen::Vector2d& alpha) noexcept {
   return c > 0 && std::isfinite(c) ? c : 1.0;
 }
 
-/// Puts the friction ellipse of a point (Point3dParameters or SystemPoint3d: fields alpha, mu,
+/// Puts the friction ellipse of a point (ContactParameters3d or SystemPoint3d: fields alpha, mu,
 /// k_a) in the unit c = ellipse_unit(alpha): alpha / c, mu c, k_a c (Archard's wear
 /// k P_N |D dw_T^i| = k P_N lambda keeps its value; Mroz-Stupkiewicz's c_w = k_M mu follows mu).
 /// Returns c: a plastic multiplier of the normalized problem times c is the user's.
-/// Point3dParameters::validate() refuses data whose normalized values leave double's range.
+/// ContactParameters3d::validate() refuses data whose normalized values leave double's range.
 template <class Point>
 double normalize_ellipse(Point& p) noexcept {
   const double c = ellipse_unit(p.alpha);
@@ -55,7 +55,7 @@ inline void require_representable(double force, double length, const char* what)
 }
 
 /// The normalized problem: A / |A|, C_T |A| (the same compliance), dF / |dF| (dF = 0 stays 0).
-inline UnitScaling normalize(Point3dParameters& p, Eigen::Vector3d& dF) {
+inline UnitScaling normalize(ContactParameters3d& p, Eigen::Vector3d& dF) {
   const double a = p.A.cwiseAbs().maxCoeff();
   double f = dF.cwiseAbs().maxCoeff();
   if (f == 0) f = 1;
@@ -90,4 +90,4 @@ inline void rescale(RateSolutionSet3d& set, const UnitScaling& s) {
   }
 }
 
-}  // namespace cpkit::rate3d::detail
+}  // namespace cpkit::rate::detail

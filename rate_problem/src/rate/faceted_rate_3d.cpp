@@ -11,7 +11,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -44,7 +44,7 @@ double rates_distance(const Rates3d& a, const Rates3d& b, double force, double d
 
 }  // namespace
 
-FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
+FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
                                         const Eigen::Vector3d& user_dF, int k,
                                         double time_limit_s) {
   if (const std::string e = user_params.validate(); !e.empty()) throw InputError("parameters: " + e);
@@ -52,7 +52,7 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
   if (k < 3 || k > kMaxFacets)
     throw InputError("facets must be in [3, " + std::to_string(kMaxFacets) + "], got " +
                      std::to_string(k));
-  Point3dParameters p = user_params;
+  ContactParameters3d p = user_params;
   Eigen::Vector3d dF = user_dF;
   detail::normalize_ellipse(p);  // the rates hold no multiplier: nothing to scale back
   const detail::UnitScaling scaling = detail::normalize(p, dF);
@@ -106,13 +106,13 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
   auto add = [&](const Rates3d& r) {
     for (const auto& s : set.solutions)
       if (rates_distance(s.at, r, force, disp) <= 1e-8) return;
-    Type3d type = Type3d::kSlip;
+    SolutionType type = SolutionType::kSlip;
     if (r.dw_Ti.cwiseAbs().maxCoeff() <= 1e-9 * disp)
-      type = Type3d::kStick;
+      type = SolutionType::kStick;
     RateSolution3d s;
     s.type = type;
     s.at = r;
-    if (type == Type3d::kSlip) {
+    if (type == SolutionType::kSlip) {
       s.slip_direction = r.dw_Ti.normalized();
       s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
     }
@@ -134,7 +134,7 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
     if (dw(2) >= -band && dw(2) <= band) separation_undecided = true;
     if (dw(2) < -band) {
       RateSolution3d s;
-      s.type = Type3d::kSeparation;
+      s.type = SolutionType::kSeparation;
       s.at.dw_T = dw.head<2>();
       s.at.dw_N = dw(2);
       s.at.dw_Ti = s.at.dw_T;
@@ -173,4 +173,4 @@ FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& user_params,
   return out;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

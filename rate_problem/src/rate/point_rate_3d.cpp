@@ -15,7 +15,7 @@
 #include "cpkit/core/spd.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 /// "Zero" for a quantity computed as a sum of terms: |x| <= kTol * (sum of |terms|), as the
@@ -55,7 +55,7 @@ struct Blocks {
   double A_scale = 0; ///< max |A_ij|
 };
 
-Blocks blocks(const Point3dParameters& p) {
+Blocks blocks(const ContactParameters3d& p) {
   Blocks b;
   b.ATT = p.A.topLeftCorner<2, 2>();
   b.ATN = p.A.topRightCorner<2, 1>();
@@ -68,7 +68,7 @@ Blocks blocks(const Point3dParameters& p) {
 }
 
 /// Stick (states b, c): dw_T^i = 0, dw_N = 0 (3D.3).
-Rates3d stick_rates(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF) {
+Rates3d stick_rates(const ContactParameters3d& p, const Blocks& b, const Eigen::Vector3d& dF) {
   Rates3d r;
   r.dP_T = b.K.ldlt().solve(dF.head<2>());
   r.dP_N = dF(2) - p.C_T * b.ATN.dot(r.dP_T);
@@ -77,7 +77,7 @@ Rates3d stick_rates(const Point3dParameters& p, const Blocks& b, const Eigen::Ve
 }
 
 /// |dF - dP - A dw| relative to the terms: the check every listed solution passes.
-double equilibrium_residual(const Point3dParameters& p, const Eigen::Vector3d& dF,
+double equilibrium_residual(const ContactParameters3d& p, const Eigen::Vector3d& dF,
                             const Rates3d& r) {
   const Eigen::Vector3d dP(r.dP_T(0), r.dP_T(1), r.dP_N);
   const Eigen::Vector3d dw(r.dw_T(0), r.dw_T(1), r.dw_N);
@@ -88,11 +88,11 @@ double equilibrium_residual(const Point3dParameters& p, const Eigen::Vector3d& d
   return scale > 0 ? res / scale : res;
 }
 
-RateSolution3d point_solution(Type3d type, const Rates3d& r) {
+RateSolution3d point_solution(SolutionType type, const Rates3d& r) {
   RateSolution3d s;
   s.type = type;
   s.at = r;
-  if (type == Type3d::kSlip && r.dw_Ti.norm() > 0) {
+  if (type == SolutionType::kSlip && r.dw_Ti.norm() > 0) {
     s.slip_direction = r.dw_Ti.normalized();
     s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
   }
@@ -121,7 +121,7 @@ double second_derivative(const SlipDirectionFunction& g, double phi) {
   return 2 * (g.d - g.a) * (c * c - s * s) - 4 * g.b * c * s - g.e * c - g.f * s;
 }
 
-SlipSystem slip_system(const Point3dParameters& p, const Blocks& b) {
+SlipSystem slip_system(const ContactParameters3d& p, const Blocks& b) {
   SlipSystem s;
   s.mu = p.mu;
   s.G.topRows<2>() = b.K * b.D;
@@ -171,7 +171,7 @@ void not_proved(RateSolutionSet3d& set, const std::string& why) {
 
 /// The separation of state b, appended to `set` when dw_N < 0 beyond rounding; `undecided`
 /// when dw_N is 0 within the rounding of the solve. Returns dw = A^-1 dF.
-Eigen::Vector3d separation_solution(const Point3dParameters& p, const Eigen::Vector3d& dF,
+Eigen::Vector3d separation_solution(const ContactParameters3d& p, const Eigen::Vector3d& dF,
                                     RateSolutionSet3d& set, bool& undecided) {
   // Separation: dP = 0, dw = A^-1 dF with dw_N < 0 (3D.2). dw_N is a forward result: its sign
   // is decided only outside the rounding band of the solve (cond(A) eps |dw|); inside it the
@@ -190,7 +190,7 @@ Eigen::Vector3d separation_solution(const Point3dParameters& p, const Eigen::Vec
     r.dw_T = dw_sep.head<2>();
     r.dw_N = dw_sep(2);
     r.dw_Ti = r.dw_T;
-    set.solutions.push_back(point_solution(Type3d::kSeparation, r));
+    set.solutions.push_back(point_solution(SolutionType::kSeparation, r));
   } else if (dw_sep(2) <= band) {
     undecided = true;
   }
@@ -198,7 +198,7 @@ Eigen::Vector3d separation_solution(const Point3dParameters& p, const Eigen::Vec
 }
 
 /// The stick of state b, appended to `set` when ||dP_T|| <= mu dP_N to rounding; returns whether.
-bool stick_solution(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
+bool stick_solution(const ContactParameters3d& p, const Blocks& b, const Eigen::Vector3d& dF,
                     RateSolutionSet3d& set) {
   // Stick: ||dP_T|| <= mu dP_N (closed), to the rounding of the 2x2 solve.
   const Rates3d r = stick_rates(p, b, dF);
@@ -208,7 +208,7 @@ bool stick_solution(const Point3dParameters& p, const Blocks& b, const Eigen::Ve
                                    (b.Dinv.diagonal().maxCoeff() + p.mu * p.C_T * b.A_scale) *
                                    r.dP_T.cwiseAbs().maxCoeff());
   if (norm - p.mu * r.dP_N <= band) {
-    set.solutions.push_back(point_solution(Type3d::kStick, r));
+    set.solutions.push_back(point_solution(SolutionType::kStick, r));
     return true;
   }
   return false;
@@ -340,7 +340,7 @@ void certify_slip_roots(const SlipDirectionFunction& g, double g_scale, const Sl
 }
 
 /// The admissible slips of state b, one per root phi: the 3x2 system for (dP_N, lambda).
-void slip_solutions(const Point3dParameters& p, const Blocks& b, const SlipSystem& sys,
+void slip_solutions(const ContactParameters3d& p, const Blocks& b, const SlipSystem& sys,
                     const Eigen::Vector3d& dF, const std::vector<double>& roots,
                     bool stick_listed, RateSolutionSet3d& set) {
   const double f_scale = dF.cwiseAbs().maxCoeff();
@@ -398,11 +398,11 @@ void slip_solutions(const Point3dParameters& p, const Blocks& b, const SlipSyste
                  "the equilibrium to 1e-8: not resolved");
       continue;
     }
-    set.solutions.push_back(point_solution(Type3d::kSlip, r));
+    set.solutions.push_back(point_solution(SolutionType::kSlip, r));
   }
 }
 
-void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vector3d& dF,
+void solve_state_b(const ContactParameters3d& p, const Blocks& b, const Eigen::Vector3d& dF,
                    RateSolutionSet3d& set) {
   const double f_scale = dF.cwiseAbs().maxCoeff();
   bool separation_undecided = false;
@@ -429,7 +429,7 @@ void solve_state_b(const Point3dParameters& p, const Blocks& b, const Eigen::Vec
   }
 }
 
-void solve_state_d(const Point3dParameters& p, const Point3dState& st, const Blocks& b,
+void solve_state_d(const ContactParameters3d& p, const ContactState3d& st, const Blocks& b,
                    const Eigen::Vector3d& dF, RateSolutionSet3d& set) {
   // The ellipse's normal at P_T: n0 = D^-1 t0, t0 = D^-1 P_T / |D^-1 P_T| (3D.9).
   const Eigen::Vector2d t0 = (b.Dinv * st.P_T).normalized();
@@ -459,14 +459,14 @@ void solve_state_d(const Point3dParameters& p, const Point3dState& st, const Blo
     r.dw_w = kappa * lambda;  // (40): k P_N |D dw_T^i| = k P_N lambda |t0|
     return r;
   };
-  if (q >= 0) set.solutions.push_back(point_solution(Type3d::kStick, rates(0)));
+  if (q >= 0) set.solutions.push_back(point_solution(SolutionType::kStick, rates(0)));
   if (M != 0) {
     const double lambda = -q / M;
-    if (lambda > 0) set.solutions.push_back(point_solution(Type3d::kSlip, rates(lambda)));
+    if (lambda > 0) set.solutions.push_back(point_solution(SolutionType::kSlip, rates(lambda)));
   } else if (q == 0) {
     // M = q = 0: every lambda >= 0 solves; the slip ray starts at the stick solution (listed
     // above), which it does not include.
-    RateSolution3d s = point_solution(Type3d::kSlip, rates(0));
+    RateSolution3d s = point_solution(SolutionType::kSlip, rates(0));
     s.ray = true;
     s.origin_included = false;
     Rates3d dir = rates(1);
@@ -487,7 +487,7 @@ void solve_state_d(const Point3dParameters& p, const Point3dState& st, const Blo
 
 }  // namespace
 
-std::string Point3dParameters::validate() const {
+std::string ContactParameters3d::validate() const {
   if (!finite(A)) return "A has a non-finite entry";
   // symmetric to 1e-12 relative, positive definite judged scale-free (core/spd.hpp)
   if (const SpdVerdict spd = check_spd(A, 1e-12, 0.0); !spd.message.empty()) return spd.message;
@@ -506,7 +506,7 @@ std::string Point3dParameters::validate() const {
   return {};
 }
 
-std::string Point3dState::validate(const Point3dParameters& params) const {
+std::string ContactState3d::validate(const ContactParameters3d& params) const {
   if (!P_T.allFinite() || !std::isfinite(P_N)) return "P_T and P_N must be finite";
   const double norm = P_T.cwiseQuotient(params.alpha).stableNorm();
   switch (state) {
@@ -530,16 +530,6 @@ std::string Point3dState::validate(const Point3dParameters& params) const {
   }
 }
 
-std::string_view to_string(Type3d t) noexcept {
-  switch (t) {
-    case Type3d::kOpen: return "open";
-    case Type3d::kSeparation: return "separation";
-    case Type3d::kStick: return "stick";
-    case Type3d::kSlip: return "slip";
-  }
-  return "?";
-}
-
 bool RateSolutionSet3d::infinite() const noexcept {
   return std::any_of(solutions.begin(), solutions.end(),
                      [](const RateSolution3d& s) { return s.ray; });
@@ -559,7 +549,7 @@ double SlipDirectionFunction::scale() const noexcept {
   return std::abs(a) + std::abs(b) + std::abs(d) + std::abs(e) + std::abs(f);
 }
 
-SlipDirectionFunction slip_direction_function(const Point3dParameters& p,
+SlipDirectionFunction slip_direction_function(const ContactParameters3d& p,
                                               const Eigen::Vector3d& dF) {
   const SlipSystem s = slip_system(p, blocks(p));
   const Eigen::Vector3d eN(0, 0, 1);
@@ -573,12 +563,12 @@ SlipDirectionFunction slip_direction_function(const Point3dParameters& p,
   return g;
 }
 
-RateSolutionSet3d solve_rate_3d(const Point3dParameters& user_params, const Point3dState& state,
+RateSolutionSet3d solve_rate_3d(const ContactParameters3d& user_params, const ContactState3d& state,
                                 const Eigen::Vector3d& user_dF) {
   if (const std::string e = user_params.validate(); !e.empty()) throw InputError("parameters: " + e);
   if (const std::string e = state.validate(user_params); !e.empty()) throw InputError("state: " + e);
   if (!user_dF.allFinite()) throw InputError("dF must be finite");
-  Point3dParameters params = user_params;
+  ContactParameters3d params = user_params;
   Eigen::Vector3d dF = user_dF;
   detail::normalize_ellipse(params);  // the rates hold no multiplier: nothing to scale back
   const detail::UnitScaling scaling = detail::normalize(params, dF);
@@ -591,14 +581,14 @@ RateSolutionSet3d solve_rate_3d(const Point3dParameters& user_params, const Poin
       r.dw_T = dw.head<2>();
       r.dw_N = dw(2);
       r.dw_Ti = r.dw_T;
-      set.solutions.push_back(point_solution(Type3d::kOpen, r));
+      set.solutions.push_back(point_solution(SolutionType::kOpen, r));
       break;
     }
     case 'b':
       solve_state_b(params, b, dF, set);
       break;
     case 'c':
-      set.solutions.push_back(point_solution(Type3d::kStick, stick_rates(params, b, dF)));
+      set.solutions.push_back(point_solution(SolutionType::kStick, stick_rates(params, b, dF)));
       break;
     case 'd':
       solve_state_d(params, state, b, dF, set);
@@ -608,4 +598,4 @@ RateSolutionSet3d solve_rate_3d(const Point3dParameters& user_params, const Poin
   return set;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -14,7 +14,7 @@
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -85,7 +85,7 @@ Faceted prepare(const ContactSystem3d& user_sys, const Eigen::VectorXd& user_dF,
     throw InputError("the time limit must be a positive number of seconds, got " +
                      num_text(time_limit_s));
   for (int i = 0; i < n; ++i) {
-    const Point3dParameters p = sys.point_parameters(i);
+    const ContactParameters3d p = sys.point_parameters(i);
     if (const std::string e = p.validate(); !e.empty())
       throw InputError("point " + std::to_string(i + 1) + ": " + e);
     if (const std::string e = sys.points[i].state.validate(p); !e.empty())
@@ -234,21 +234,21 @@ SystemSolution3d case_solution(const Faceted& f, const CaseEquations& c, unsigne
     r.dw_N = x(3 * n + 3 * i + 2) * f.disp_back;
     r.dw_Ti = r.dw_T - pt.C_T * r.dP_T;
     const char s = pt.state.state;
-    Type3d type = Type3d::kStick;
+    SolutionType type = SolutionType::kStick;
     if (s == 'a' || (s == 'b' && f.separated(mask, i))) {
-      type = s == 'a' ? Type3d::kOpen : Type3d::kSeparation;
+      type = s == 'a' ? SolutionType::kOpen : SolutionType::kSeparation;
       r.dP_T.setZero();  // constrained to 0 (the solve leaves rounding noise)
       r.dP_N = 0;
       r.dw_Ti = r.dw_T;
     } else if (s == 'd') {
       const double lambda = z(c.z_of[i]);
       r.dw_w = c.kappa[i] * lambda * f.disp_back;
-      if (lambda > kTol) type = Type3d::kSlip;
+      if (lambda > kTol) type = SolutionType::kSlip;
       r.dw_Ti = lambda * c.n0[i] * f.disp_back;  // exactly along the normal
     } else if (s == 'b') {
       const Eigen::Vector2d slip = f.poly[i].N * z.segment(c.z_of[i], f.k);
       r.dw_Ti = slip * f.disp_back;
-      if (slip.cwiseAbs().maxCoeff() > 1e-9) type = Type3d::kSlip;
+      if (slip.cwiseAbs().maxCoeff() > 1e-9) type = SolutionType::kSlip;
     } else {
       r.dw_Ti.setZero();
     }
@@ -363,4 +363,4 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
   return out;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 namespace {
 
@@ -28,13 +28,13 @@ nlohmann::json rates_3d_json(const std::vector<Rates3d>& rs) {
   return j;
 }
 
-void add_slip_json(nlohmann::json& e, const std::vector<Type3d>& types,
+void add_slip_json(nlohmann::json& e, const std::vector<SolutionType>& types,
                    const std::vector<Rates3d>& dw_source) {
   nlohmann::json dir = nlohmann::json::array(), ang = nlohmann::json::array();
   bool any = false;
   for (std::size_t i = 0; i < types.size(); ++i) {
     const Eigen::Vector2d v = dw_source[i].dw_Ti;
-    if (types[i] == Type3d::kSlip && v.cwiseAbs().maxCoeff() > 0) {
+    if (types[i] == SolutionType::kSlip && v.cwiseAbs().maxCoeff() > 0) {
       const Eigen::Vector2d u = v.normalized();
       dir.push_back(pair(u));
       ang.push_back(std::atan2(u(1), u(0)));
@@ -62,7 +62,7 @@ nlohmann::json step_3d_solution_json(const Step3dSolution& s) {
   e["Dw_w"] = v.Dw_w;
   e["g1"] = v.g1;
   e["lambda"] = v.lambda;
-  if (s.type == Type3d::kSlip) {
+  if (s.type == SolutionType::kSlip) {
     e["slip_direction"] = pair(s.slip_direction);
     e["slip_angle"] = s.slip_angle;
   } else {
@@ -80,4 +80,4 @@ nlohmann::json fretting_3d_sample_json(const Fretting3dSample& s) {
           {"type", std::string(to_string(s.type))}};
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -14,7 +14,7 @@
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 std::string_view to_string(Fretting3dResult::Outcome o) noexcept {
   switch (o) {
@@ -183,7 +183,7 @@ bool local_slip_solution(const Step3dProblem& user, Step3dSolution& out) {
         Step3dValues v = step_3d_values(p, mu * z(1) * (al.asDiagonal() * t), z(1), z(2));
         v.lambda *= E;
         const Step3dSolution sol = make_step_3d_solution(user, v);
-        if (sol.type == Type3d::kSlip && sol.residual <= 1e-9) {
+        if (sol.type == SolutionType::kSlip && sol.residual <= 1e-9) {
           out = sol;
           return true;
         }
@@ -203,7 +203,7 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
   if (load.size == 0 || !load.at) throw InputError("3-D fretting: the load is empty");
   if (!std::isfinite(load.period) || load.period < 0 || !std::isfinite(load.cycle_start))
     throw InputError("3-D fretting: period and cycle_start must be finite, period >= 0");
-  const Point3dParameters& par = opt.params;
+  const ContactParameters3d& par = opt.params;
   Fretting3dResult res;
   Step3dProblem sp;
   sp.params = par;
@@ -317,15 +317,15 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
     nx.w_T = cur.w_T + v.Dw_T;
     nx.w_N = cur.w_N + v.Dw_N;
     // A stick step has no irreversible slip (Dw_T - C_T DP_T is rounding there).
-    const bool stick = sol.type == Type3d::kStick;
+    const bool stick = sol.type == SolutionType::kStick;
     const Eigen::Vector2d Dw_Ti = stick ? Eigen::Vector2d::Zero() : v.Dw_Ti;
     nx.Dw_Ti = Dw_Ti;
     nx.w_Ti = cur.w_Ti + Dw_Ti;
-    nx.lambda = sol.type == Type3d::kSlip ? v.lambda : 0.0;
+    nx.lambda = sol.type == SolutionType::kSlip ? v.lambda : 0.0;
     nx.Dw_w = v.Dw_w;
     nx.w_w = cur.w_w + v.Dw_w;
     // The state exactly on its active constraints.
-    if (v.P_N1 <= 0 || sol.type == Type3d::kSeparation || sol.type == Type3d::kOpen) {
+    if (v.P_N1 <= 0 || sol.type == SolutionType::kSeparation || sol.type == SolutionType::kOpen) {
       nx.P_N = 0;
       nx.P_T.setZero();
       nx.g = std::min(v.g1, 0.0);
@@ -335,7 +335,7 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
       nx.P_T = v.P_T1;
       const double nrm = (alpha.cwiseInverse().asDiagonal() * v.P_T1).norm();
       const double Y = par.mu * v.P_N1;
-      if (nrm > 0 && (sol.type == Type3d::kSlip || nrm > Y)) nx.P_T *= Y / nrm;
+      if (nrm > 0 && (sol.type == SolutionType::kSlip || nrm > Y)) nx.P_T *= Y / nrm;
     }
     const double D = v.P_T1.dot(Dw_Ti) + v.P_N1 * v.Dw_w;
     const double D_scale = v.P_T1.norm() * Dw_Ti.norm() + std::abs(v.P_N1 * v.Dw_w);
@@ -395,4 +395,4 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
   return res;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -9,22 +9,6 @@
 
 namespace cpkit::rate {
 
-std::string_view to_string(BranchRule r) noexcept {
-  switch (r) {
-    case BranchRule::kClosest:
-      return "closest";
-    case BranchRule::kStop:
-      return "stop";
-  }
-  return "unknown";
-}
-
-std::optional<BranchRule> branch_rule_from_string(std::string_view s) noexcept {
-  if (s == "closest") return BranchRule::kClosest;
-  if (s == "stop") return BranchRule::kStop;
-  return std::nullopt;
-}
-
 std::string_view to_string(SimulationResult::Outcome o) noexcept {
   switch (o) {
     case SimulationResult::Outcome::kCompleted:

@@ -9,22 +9,6 @@
 
 namespace cpkit::rate {
 
-std::string_view to_string(WearLaw w) noexcept {
-  switch (w) {
-    case WearLaw::kArchard:
-      return "archard";
-    case WearLaw::kMrozStupkiewicz:
-      return "mroz-stupkiewicz";
-  }
-  return "unknown";
-}
-
-std::optional<WearLaw> wear_law_from_string(std::string_view s) noexcept {
-  if (s == "archard" || s == "37") return WearLaw::kArchard;
-  if (s == "mroz-stupkiewicz" || s == "mroz" || s == "41") return WearLaw::kMrozStupkiewicz;
-  return std::nullopt;
-}
-
 double StepProblem::wear_coefficient() const noexcept {
   return wear.law == WearLaw::kArchard ? params.k() : wear.k_M * params.mu;
 }

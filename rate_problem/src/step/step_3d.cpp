@@ -15,7 +15,7 @@
 #include "step_3d_terms.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -586,12 +586,12 @@ double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexc
   return res;
 }
 
-Type3d classify_step_3d(const Step3dProblem& user, const Step3dValues& uv) noexcept {
+SolutionType classify_step_3d(const Step3dProblem& user, const Step3dValues& uv) noexcept {
   const Scales s = scales_of(user);
   const Step3dValues v = to_normalized(uv, s);
-  if (v.P_N1 <= 1e-9) return user.state.g0 < 0 ? Type3d::kOpen : Type3d::kSeparation;
-  if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff())) return Type3d::kStick;
-  return Type3d::kSlip;
+  if (v.P_N1 <= 1e-9) return user.state.g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
+  if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff())) return SolutionType::kStick;
+  return SolutionType::kSlip;
 }
 
 Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues& v) {
@@ -599,7 +599,7 @@ Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues&
   s.values = v;
   s.type = classify_step_3d(p, v);
   s.residual = step_3d_residual(p, v);
-  if (s.type == Type3d::kSlip && v.Dw_Ti.stableNorm() > 0) {
+  if (s.type == SolutionType::kSlip && v.Dw_Ti.stableNorm() > 0) {
     s.slip_direction = v.Dw_Ti.stableNormalized();  // no overflow near 1e308
     s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
   }
@@ -749,4 +749,4 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
   return set;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -9,7 +9,7 @@
 
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
-namespace cpkit::rate3d::detail {
+namespace cpkit::rate::detail {
 
 /// Projection onto the second-order cone {(x0, x1): x0 >= |x1|}.
 inline Eigen::Vector3d project_soc(const Eigen::Vector3d& v) noexcept {
@@ -59,4 +59,4 @@ inline double local_step_3d_residual(const Step3dProblem& p, const Step3dValues&
   return res;
 }
 
-}  // namespace cpkit::rate3d::detail
+}  // namespace cpkit::rate::detail

@@ -23,7 +23,7 @@
 #include "soc_fb.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 using Vec4 = Eigen::Vector4d;
@@ -55,7 +55,7 @@ struct Normalized {
 
 Normalized normalize(const Step3dProblem& pr) {
   Normalized n;
-  const Point3dParameters& p = pr.params;
+  const ContactParameters3d& p = pr.params;
   n.K0 = p.A.cwiseAbs().maxCoeff();
   const double f = std::max({pr.DF.cwiseAbs().maxCoeff(), pr.state.P_T0.cwiseAbs().maxCoeff(),
                              std::abs(pr.state.P_N0), n.K0 * std::abs(pr.state.g0)});
@@ -290,7 +290,7 @@ void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolu
   }
   std::stable_sort(out.begin(), out.end(), [](const Step3dSolution& a, const Step3dSolution& b) {
     if (a.type != b.type) return static_cast<int>(a.type) < static_cast<int>(b.type);
-    if (a.type == Type3d::kSlip) return a.slip_angle < b.slip_angle;
+    if (a.type == SolutionType::kSlip) return a.slip_angle < b.slip_angle;
     return false;
   });
   sols = std::move(out);
@@ -775,4 +775,4 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
   return set;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -19,7 +19,7 @@
 #include "step_3d_terms.hpp"
 #include "../model/unit_scaling.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -466,13 +466,13 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
     Step3dSolution sol;
     sol.values = uv;
     if (v.P_N1 <= 1e-9)
-      sol.type = p.states[static_cast<std::size_t>(i)].g0 < 0 ? Type3d::kOpen : Type3d::kSeparation;
+      sol.type = p.states[static_cast<std::size_t>(i)].g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
     else if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff()))
-      sol.type = Type3d::kStick;
+      sol.type = SolutionType::kStick;
     else
-      sol.type = Type3d::kSlip;
+      sol.type = SolutionType::kSlip;
     sol.residual = local[static_cast<std::size_t>(i)];
-    if (sol.type == Type3d::kSlip && uv.Dw_Ti.stableNorm() > 0) {
+    if (sol.type == SolutionType::kSlip && uv.Dw_Ti.stableNorm() > 0) {
       sol.slip_direction = uv.Dw_Ti.stableNormalized();  // no overflow near 1e308
       sol.slip_angle = std::atan2(sol.slip_direction(1), sol.slip_direction(0));
     }
@@ -539,4 +539,4 @@ SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& pro
   return set;
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -7,7 +7,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/spd.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 namespace {
 
 using nlohmann::json;
@@ -60,7 +60,7 @@ SystemPoint3d parse_point(const json& v, std::size_t i) {
     throw InputError(pn + ": state " + state + " needs P_N");
   if (state == "d" && !P_T_given)
     throw InputError(pn + ": state d needs P_T = [P_TX, P_TY] on the ellipse ||P_T|| = mu P_N");
-  Point3dParameters par;
+  ContactParameters3d par;
   par.mu = p.mu;
   par.C_T = p.C_T;
   par.k_a = p.k_a;
@@ -73,9 +73,9 @@ SystemPoint3d parse_point(const json& v, std::size_t i) {
 
 }  // namespace
 
-Point3dParameters ContactSystem3d::point_parameters(int i) const {
+ContactParameters3d ContactSystem3d::point_parameters(int i) const {
   const SystemPoint3d& pt = points.at(static_cast<std::size_t>(i));
-  Point3dParameters p;
+  ContactParameters3d p;
   p.A = A.block<3, 3>(3 * i, 3 * i);
   p.mu = pt.mu;
   p.C_T = pt.C_T;
@@ -133,4 +133,4 @@ ContactSystem3d read_contact_system_3d(const std::string& path) {
   return parse_contact_system_3d(rate::read_system_file(path));
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -28,11 +28,13 @@
 
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
-/// Bit of a solution type in a cell's mask: open 1, separation 2, stick 4, slip 8.
-inline constexpr uint8_t type_bit(Type3d t) noexcept {
-  return static_cast<uint8_t>(1u << static_cast<unsigned>(t));
+/// Bit of a solution type in a cell's mask: open 1, separation 2, stick 4, slip 8 (the file
+/// format's bits: slip takes the bit of the 2-D slip+, since a 3-D cell has no slip-).
+inline constexpr uint8_t type_bit(SolutionType t) noexcept {
+  return t == SolutionType::kSlip ? uint8_t{8}
+                                  : static_cast<uint8_t>(1u << static_cast<unsigned>(t));
 }
 /// "none", or the types of a mask joined by '|' ("separation|stick|slip").
 std::string type_mask_string(unsigned mask);
@@ -154,4 +156,4 @@ Map3d compute_param_param_map_3d(const ContactSystem3d& system, const Map3dAxis&
                                  const Map3dAxis& axis2, const Map3dOptions& options = {},
                                  const Map3dProgress& progress = {});
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

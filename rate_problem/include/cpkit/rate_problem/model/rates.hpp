@@ -13,8 +13,12 @@ struct LoadRate {
 };
 
 /// Solution types; they partition the solution set (model.md Sec. 2).
-enum class SolutionType { kOpen, kSeparation, kStick, kSlipPlus, kSlipMinus };
-std::string_view to_string(SolutionType t) noexcept;  ///< "open", "separation", "stick", "slip+", "slip-"
+/// The type of a rate (or step) solution. A 2-D point slips forwards or backwards (kSlipPlus,
+/// kSlipMinus); a 3-D point slips in a direction of the plane, reported separately (kSlip).
+/// kSlip is last so that the 2-D type masks (1 << type) keep their bits.
+enum class SolutionType { kOpen, kSeparation, kStick, kSlipPlus, kSlipMinus, kSlip };
+/// "open", "separation", "stick", "slip+", "slip-", "slip"
+std::string_view to_string(SolutionType t) noexcept;
 std::optional<SolutionType> solution_type_from_string(std::string_view s) noexcept;
 
 struct Rates {

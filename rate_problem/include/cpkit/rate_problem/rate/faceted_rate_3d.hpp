@@ -9,7 +9,7 @@
 /// coupled.
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 struct FacetedRateResult {
   RateSolutionSet3d set;   ///< physical solutions, deduplicated; complete as the enumeration
@@ -25,8 +25,8 @@ inline constexpr int kMaxFacets = 64;
 /// Every solution of the faceted state-b problem for the load rate dF. Throws InputError for
 /// invalid input, a state other than b (the faceted route is for the grazing state; a, c, d are
 /// linear: solve_rate_3d), or k outside [3, kMaxFacets].
-FacetedRateResult solve_rate_3d_faceted(const Point3dParameters& params,
+FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& params,
                                         const Eigen::Vector3d& dF, int facets,
                                         double time_limit_s = 60);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -19,32 +19,12 @@
 #include <string_view>
 #include <vector>
 
-namespace cpkit::rate3d {
+#include "cpkit/rate_problem/model/parameters_3d.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
 
-struct Point3dParameters {
-  Eigen::Matrix3d A = Eigen::Matrix3d::Identity();  ///< stiffness on (T_X, T_Y, N), SPD
-  double mu = 0.5;                                  ///< friction coefficient, > 0
-  double C_T = 0;                                   ///< tangential compliance >= 0
-  double k_a = 0;                                   ///< Archard wear coefficient >= 0
-  double P_s = 1;                                   ///< hardness > 0
-  Eigen::Vector2d alpha{1, 1};  ///< ellipse half-axes (alpha_X, alpha_Y) of (39), > 0
-  /// Empty when usable; else names the field (A not symmetric or not SPD, mu <= 0, NaN, ...).
-  std::string validate() const;
-};
+namespace cpkit::rate {
 
-/// The contact state (Sec. 4.2 of the paper, with the elliptic cone): 'a' open, 'b' grazing
-/// (P = 0, w_N = w^w), 'c' stick (||P_T|| < mu P_N), 'd' on the cone (||P_T|| = mu P_N > 0).
-struct Point3dState {
-  char state = 'b';
-  Eigen::Vector2d P_T{0, 0};  ///< current tangential force (c, d)
-  double P_N = 0;             ///< current normal force (c, d): > 0
-  /// Empty when consistent with `params` (P = 0 in a/b; the cone condition of c/d, to a
-  /// relative 1e-9 in d); else names the field.
-  std::string validate(const Point3dParameters& params) const;
-};
-
-enum class Type3d { kOpen, kSeparation, kStick, kSlip };
-std::string_view to_string(Type3d t) noexcept;  ///< "open", "separation", "stick", "slip"
+/// Solution types: SolutionType (model/rates.hpp) with kOpen, kSeparation, kStick and kSlip.
 
 struct Rates3d {
   Eigen::Vector2d dP_T{0, 0};
@@ -57,7 +37,7 @@ struct Rates3d {
 
 /// A point of the solution set, or a ray (state d with a singular consistency condition).
 struct RateSolution3d {
-  Type3d type = Type3d::kStick;
+  SolutionType type = SolutionType::kStick;
   bool ray = false;
   Rates3d at;                   ///< the point; a ray's origin
   bool origin_included = true;  ///< a ray: is `at` part of it (a slip ray starting at the
@@ -86,7 +66,7 @@ struct RateSolutionSet3d {
 /// root must be simple (|g'| clearly nonzero) and the signs of g between the roots must
 /// alternate, or the set says complete = false (docs/contact_3d.md, "Completeness").
 /// Throws InputError for invalid input.
-RateSolutionSet3d solve_rate_3d(const Point3dParameters& params, const Point3dState& state,
+RateSolutionSet3d solve_rate_3d(const ContactParameters3d& params, const ContactState3d& state,
                                 const Eigen::Vector3d& dF);
 
 /// The slip-direction function of state b: g(phi) = det[e_N + mu G t, H t, dF] with
@@ -98,7 +78,7 @@ struct SlipDirectionFunction {
   double derivative(double phi) const noexcept;
   double scale() const noexcept;  ///< sum of |coefficients|
 };
-SlipDirectionFunction slip_direction_function(const Point3dParameters& params,
+SlipDirectionFunction slip_direction_function(const ContactParameters3d& params,
                                               const Eigen::Vector3d& dF);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

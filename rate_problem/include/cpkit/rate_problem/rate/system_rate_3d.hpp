@@ -14,11 +14,11 @@
 
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// One solution: per point its type and rates.
 struct SystemSolution3d {
-  std::vector<Type3d> types;
+  std::vector<SolutionType> types;
   std::vector<Rates3d> rates;
 };
 
@@ -47,4 +47,4 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& system,
                                              const Eigen::VectorXd& dF, int facets,
                                              double time_limit_s = 60);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

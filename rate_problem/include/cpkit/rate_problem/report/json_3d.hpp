@@ -11,7 +11,7 @@
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// {"dP_T", "dP_N", "dw_T", "dw_N", "dw_Ti", "dw_w"}, each an array with one entry per point
 /// (a pair for the tangential fields, a number for the normal ones).
@@ -20,7 +20,7 @@ nlohmann::json rates_3d_json(const std::vector<Rates3d>& rates);
 /// Adds "slip_direction" (unit [x, y] of dw_Ti) and "slip_angle" (atan2, radians) per point to
 /// `e`, null where the point does not slip (type not slip, or dw_Ti = 0); nothing when no point
 /// slips. `dw_source` holds the rates whose dw_Ti gives the direction (a ray's direction).
-void add_slip_json(nlohmann::json& e, const std::vector<Type3d>& types,
+void add_slip_json(nlohmann::json& e, const std::vector<SolutionType>& types,
                    const std::vector<Rates3d>& dw_source);
 
 /// One step solution: type, P_T1 (pair), P_N1, DP and Dw ([T_x, T_y, N]), Dw_Ti (pair), Dw_w,
@@ -30,4 +30,4 @@ nlohmann::json step_3d_solution_json(const Step3dSolution& s);
 /// One fretting sample: step, t, F_T, P_T, w_T, w_Ti (pairs), F_N, P_N, g, w_N, w_w, type.
 nlohmann::json fretting_3d_sample_json(const Fretting3dSample& s);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -30,11 +30,11 @@
 #include <string_view>
 #include <vector>
 
-#include "cpkit/rate_problem/simulation/simulation.hpp"
-#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/model/branch_rule.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// One load point (t, F_TX, F_TY, F_N).
 struct LoadPoint3d {
@@ -97,7 +97,7 @@ struct Fretting3dSample {
   double lambda = 0;             ///< the step's multiplier |D Dw_T^i|
   double Dw_w = 0;               ///< the step's wear increment (from the step's solution)
   double w_w = 0;                ///< accumulated wear depth
-  Type3d type = Type3d::kStick;  ///< the step's solution type
+  SolutionType type = SolutionType::kStick;  ///< the step's solution type
   int count = 1;                 ///< number of step solutions
   bool complete = true;          ///< the step's enumeration was proved complete
   double dissipation = 0;        ///< P_T1 . Dw_T^i + P_N1 Dw^w of the step (42)
@@ -105,7 +105,7 @@ struct Fretting3dSample {
 };
 
 struct Fretting3dOptions {
-  Point3dParameters params;
+  ContactParameters3d params;
   rate::WearModel wear;  ///< Archard (40): k = k_a / (3 P_s); Mroz (41): k_M
   rate::BranchRule branch_rule = rate::BranchRule::kClosest;
   int record_every = 1;  ///< keep every n-th step in the series (0: none); plus start and end
@@ -154,4 +154,4 @@ std::string_view to_string(Fretting3dResult::Outcome o) noexcept;
 Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& options);
 Fretting3dResult simulate_fretting_3d(const EllipticOrbit& orbit, const Fretting3dOptions& options);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/model/branch_rule.hpp"
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/heat.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
@@ -31,10 +32,6 @@
 namespace cpkit::rate {
 
 struct SimulationSample;
-
-enum class BranchRule { kClosest, kStop };
-std::string_view to_string(BranchRule r) noexcept;  ///< "closest" / "stop"
-std::optional<BranchRule> branch_rule_from_string(std::string_view s) noexcept;
 
 struct SimulationOptions {
   ContactParameters params;

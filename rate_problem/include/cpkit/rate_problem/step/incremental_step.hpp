@@ -35,24 +35,9 @@
 #include "cpkit/core/problem.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 
 namespace cpkit::rate {
-
-/// Which wear law closes the step.
-enum class WearLaw {
-  kArchard,          ///< eqn (37): dw^w = k_a/(3 P_s) p_N |dw_T^i| (from normality of (35)/(38))
-  kMrozStupkiewicz,  ///< eqn (41): dw^w = k_M p_T . dw_T^i (needs the Coulomb criterion (38))
-};
-std::string_view to_string(WearLaw w) noexcept;  ///< "archard" / "mroz-stupkiewicz"
-/// Also accepts "mroz", "37", "41".
-std::optional<WearLaw> wear_law_from_string(std::string_view s) noexcept;
-
-/// The wear model of a step. For kArchard the coefficient comes from ContactParameters
-/// (k = k_a / (3 P_s)); for kMrozStupkiewicz it is k_M (length/force, >= 0).
-struct WearModel {
-  WearLaw law = WearLaw::kArchard;
-  double k_M = 0;
-};
 
 /// The known state at the start of a step.
 struct StepState {

@@ -9,7 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// Largest number of starts accepted: about 2 minutes for one point (FB-SOC and Ipopt, about
 /// 12 ms a start) and about a second for two coupled points (FB-SOC, 0.1 ms a start).
@@ -24,4 +24,4 @@ inline void check_multistart_cap(long long n_starts, const std::string& what) {
                      " (kMaxMultistartStarts: each start is a full Newton solve)");
 }
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

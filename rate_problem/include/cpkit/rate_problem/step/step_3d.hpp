@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
-#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// The known state at the start of a step.
 struct Step3dState {
@@ -38,12 +38,12 @@ struct Step3dState {
 
 /// One step: parameters (A, mu, C_T, k_a, P_s, alpha), wear law, start state, load increment.
 struct Step3dProblem {
-  Point3dParameters params;
+  ContactParameters3d params;
   rate::WearModel wear;  ///< Archard (40) with k = k_a/(3 P_s), or Mroz-Stupkiewicz (41) with k_M
   Step3dState state;
   Eigen::Vector3d DF{0, 0, 0};  ///< (DF_TX, DF_TY, DF_N)
 
-  /// Empty when usable; else names the bad field: parameters (Point3dParameters::validate),
+  /// Empty when usable; else names the bad field: parameters (ContactParameters3d::validate),
   /// k_M < 0 or NaN, non-finite state or load, P_N0 < 0, g0 > 0, P_N0 > 0 with g0 < 0,
   /// ||P_T0|| above mu P_N0 (relative tolerance 1e-10).
   std::string validate() const;
@@ -76,12 +76,12 @@ double step_3d_residual(const Step3dProblem& problem, const Step3dValues& v) noe
 
 /// Type of a step solution: P_N1 = 0 is `separation` (`open` when the step started open,
 /// g0 < 0); otherwise stick (lambda = 0) or slip.
-Type3d classify_step_3d(const Step3dProblem& problem, const Step3dValues& v) noexcept;
+SolutionType classify_step_3d(const Step3dProblem& problem, const Step3dValues& v) noexcept;
 
 /// One solution with its type, slip direction (unit vector of Dw_T^i; zero without slip) and
 /// residual.
 struct Step3dSolution {
-  Type3d type = Type3d::kStick;
+  SolutionType type = SolutionType::kStick;
   Step3dValues values;
   Eigen::Vector2d slip_direction{0, 0};
   double slip_angle = 0;  ///< atan2 of slip_direction, (-pi, pi]
@@ -109,4 +109,4 @@ struct Step3dSolutionSet {
 /// Throws InputError for invalid input.
 Step3dSolutionSet enumerate_step_3d(const Step3dProblem& problem);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -23,7 +23,7 @@
 
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// A start point of the iterative solvers: end forces and the plastic multiplier.
 struct Step3dStart {
@@ -137,4 +137,4 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
 /// equal to 1e-7 relative to the problem's force scale). Exposed for the CLI and tests.
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

@@ -23,7 +23,7 @@
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 /// One step of N coupled 3-D points.
 struct SystemStep3dProblem {
@@ -105,4 +105,4 @@ SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& 
 SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& problem,
                                                   int n_starts, std::uint64_t seed = 1);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate

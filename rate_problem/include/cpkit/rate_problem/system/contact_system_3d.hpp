@@ -15,12 +15,12 @@
 #include "cpkit/rate_problem/system/system_file.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
-namespace cpkit::rate3d {
+namespace cpkit::rate {
 
 struct SystemPoint3d {
   double mu = 0.5, C_T = 0, k_a = 0, P_s = 1;
   Eigen::Vector2d alpha{1, 1};
-  Point3dState state;
+  ContactState3d state;
 };
 
 struct ContactSystem3d {
@@ -30,7 +30,7 @@ struct ContactSystem3d {
   std::optional<Eigen::VectorXd> dF;  ///< load rate (3N), optional
   int n_points() const noexcept { return static_cast<int>(points.size()); }
   /// Point i alone: its diagonal 3x3 block of A and its interface data.
-  Point3dParameters point_parameters(int i) const;
+  ContactParameters3d point_parameters(int i) const;
 };
 
 /// Reads a "dim": 3 system file (read once: system_file.hpp tells its dimension). Throws
@@ -43,4 +43,4 @@ ContactSystem3d read_contact_system_3d(const std::string& path);
 /// The 3-D system of a file already read (rate::read_system_file; its dim must be 3).
 ContactSystem3d parse_contact_system_3d(const rate::SystemFile& file);
 
-}  // namespace cpkit::rate3d
+}  // namespace cpkit::rate
