@@ -34,14 +34,21 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The one contact point of both parts (k_a: Archard's coefficient of the part).
+ContactParameters sample_params(double k_a) {
+  ContactParameters c;
+  c.a11 = 2.0;
+  c.a12 = 0.3;
+  c.a22 = 1.5;
+  c.mu = 0.5;
+  c.C_T = 0.4;
+  c.k_a = k_a;
+  return c;
+}
+
 StepProblem sample_step() {
   StepProblem p;
-  p.params.a11 = 2.0;
-  p.params.a12 = 0.3;
-  p.params.a22 = 1.5;
-  p.params.mu = 0.5;
-  p.params.C_T = 0.4;
-  p.params.k_a = 0.01;
+  p.params = sample_params(0.01);
   p.state = {0.2, 1.0, 0.0};
   p.load = {0.05, 0.01};
   return p;
@@ -62,12 +69,7 @@ int main(int argc, char** argv) {
   }
   // 1. Long fretting run.
   SimulationOptions o;
-  o.params.a11 = 2.0;
-  o.params.a12 = 0.3;
-  o.params.a22 = 1.5;
-  o.params.mu = 0.5;
-  o.params.C_T = 0.4;
-  o.params.k_a = 3e-6;
+  o.params = sample_params(3e-6);
   o.params.P_s = 1.0;
   o.record_every = 0;
   FrettingCycle c;

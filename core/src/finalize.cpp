@@ -5,19 +5,10 @@
 #include <limits>
 #include <sstream>
 
+#include "cpkit/core/short_number.hpp"
 #include "finalize_decide.hpp"
 
 namespace cpkit {
-namespace {
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
-
-}  // namespace
 
 namespace detail {
 
@@ -37,14 +28,14 @@ void decide(SolveResult& r, bool claimed_solution, const CommonOptions& o) {
     r.status = Status::kSolved;
   } else if (res <= o.tol_acceptable) {
     r.status = Status::kSolvedInaccurate;
-    append(r.message, "unit-free residual " + fmt(res) + " above tol " + fmt(o.tol));
+    append(r.message, "unit-free residual " + short_number(res) + " above tol " + short_number(o.tol));
   } else if (claimed_solution) {
     r.status = Status::kNumericalFailure;
     append(r.message, !r.residuals.finite
                           ? std::string("claimed solution refuted: w = M z + q or its scale is not "
                                         "representable in double precision (overflow/NaN)")
-                          : "claimed solution refuted by the data: unit-free residual " + fmt(res) +
-                                " > tol_acceptable " + fmt(o.tol_acceptable));
+                          : "claimed solution refuted by the data: unit-free residual " + short_number(res) +
+                                " > tol_acceptable " + short_number(o.tol_acceptable));
   }
 }
 

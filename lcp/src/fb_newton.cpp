@@ -1,11 +1,9 @@
 // Semismooth Newton on the Fischer-Burmeister reformulation (see fb_newton.hpp and
 // docs/fb_newton.md). One generic driver (FbDriver) over two linear-algebra back ends
-// (dense LU, sparse LU) and two function sources (affine M z + q, or the MCP callbacks).
+// (dense LU, sparse LU: fb_newton_algebra.hpp) and two function sources (affine M z + q, or the
+// MCP callbacks).
 #include "cpkit/lcp/fb_newton.hpp"
 
-#include <Eigen/LU>
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,12 +15,8 @@
 #include "cpkit/core/log.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
-
-#ifdef CPKIT_HAVE_LAPACK
-// LAPACK's LU factorization (Debian's liblapack3; OpenBLAS when it provides the alternative).
-extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv,
-                        int* info);
-#endif
+#include "cpkit/core/short_number.hpp"
+#include "fb_newton_algebra.hpp"
 
 namespace cpkit::lcp {
 namespace {
@@ -30,13 +24,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kDefaultMaxIterations = 200;
-/// Dense LU by LAPACK's dgetrf (when cpkit was built with LAPACK) or Eigen's PartialPivLU,
-/// chosen by size from measurements against Debian's OpenBLAS (docs/benchmarks/fb_newton.md):
-/// Eigen below 32 (call overhead dominates) and for 100 <= n < 150, where OpenBLAS switches to
-/// multi-threaded factorization (n^2 >= 10^4) and loses more than it gains on a shared 2-core
-/// machine; LAPACK otherwise (vectorized single-threaded kernels below 100, blocked
-/// multi-threaded ones from 150).
-constexpr bool use_lapack_lu(Eigen::Index n) { return n >= 32 && (n < 100 || n >= 150); }
 /// An accepted step with Psi_new > (1 - kWeakDecrease) Psi_old makes little progress;
 /// kWeakLimit of them in a row count as stagnation (watchdog trigger).
 constexpr double kWeakDecrease = 1e-4;
@@ -221,191 +208,12 @@ struct CallbackSource {
   }
 };
 
-// ---- linear algebra back ends ------------------------------------------------------------------
-
-/// Dense: J (n x n) from M, a dense Jacobian callback, or forward differences; H = diag(Da) +
-/// diag(Db) J factorized by partial-pivoting LU.
-struct DenseAlgebra {
-  const Mat* J = nullptr;  // points at M (affine) or at J_own
-  Mat J_own;
-  Mat H;
-  Eigen::PartialPivLU<Mat> lu;
-  Vec fd_x, fd_F;  // finite-difference workspaces
-
-  explicit DenseAlgebra(Eigen::Index n) : H(n, n), lu(n) {}
-
-  void jz(const Vec& z, Vec& out) const { out.noalias() = *J * z; }
-  /// grad Psi = H^T Phi = Da .* Phi + J^T (Db .* Phi); `tmp` a workspace.
-  void grad(const Vec& Da, const Vec& Db, const Vec& Phi, Vec& tmp, Vec& g) const {
-    tmp = Db.cwiseProduct(Phi);
-    g.noalias() = J->transpose() * tmp;
-    g += Da.cwiseProduct(Phi);
-  }
-  /// Solves H d = rhs; false when H is (numerically) singular or d is not finite.
-  bool solve(const Vec& Da, const Vec& Db, const Vec& rhs, Vec& d) {
-    H.noalias() = Db.asDiagonal() * *J;
-    H.diagonal() += Da;
-    const Eigen::Index n = H.rows();
-#ifdef CPKIT_HAVE_LAPACK
-    if (use_lapack_lu(n)) {
-      // In place: H becomes L\U with row interchanges ipiv (1-based).
-      const int nn = static_cast<int>(n);
-      int info = 0;
-      if (ipiv.size() != static_cast<size_t>(n)) ipiv.resize(static_cast<size_t>(n));
-      dgetrf_(&nn, &nn, H.data(), &nn, ipiv.data(), &info);
-      if (info < 0 || !pivots_ok(H.diagonal())) return false;
-      d = rhs;
-      for (Eigen::Index i = 0; i < n; ++i) std::swap(d[i], d[ipiv[static_cast<size_t>(i)] - 1]);
-      H.triangularView<Eigen::UnitLower>().solveInPlace(d);
-      H.triangularView<Eigen::Upper>().solveInPlace(d);
-      return d.allFinite();
-    }
-#endif
-    lu.compute(H);
-    if (!pivots_ok(lu.matrixLU().diagonal())) return false;
-    d.noalias() = lu.solve(rhs);
-    return d.allFinite();
-  }
-  /// U's diagonal: every |u_ii| > n eps max |u_jj| (else H is treated as singular).
-  template <class Diag>
-  static bool pivots_ok(const Diag& u) {
-    const double umax = u.cwiseAbs().maxCoeff();
-    return umax > 0 && std::isfinite(umax) &&
-           u.cwiseAbs().minCoeff() > umax * kEps * static_cast<double>(u.size());
-  }
-  std::vector<int> ipiv;
-};
-
-/// Sparse: J from sparse M or a sparse Jacobian callback; H shares J's pattern plus the
-/// diagonal, analysed once (re-analysed only when the callback changes the pattern).
-struct SparseAlgebra {
-  const SparseMat* J = nullptr;
-  SparseMat J_own;
-  SparseMat H;
-  std::vector<Eigen::Index> diag_pos;  // position of H(j, j) in H's value array
-  std::vector<Eigen::Index> j_pos;     // position in H of the k-th stored entry of J
-  Eigen::SparseLU<SparseMat, Eigen::COLAMDOrdering<int>> lu;
-  bool analysed = false;
-  Eigen::Index pattern_nnz = -1;
-
-  explicit SparseAlgebra(Eigen::Index /*n*/) {}
-
-  void jz(const Vec& z, Vec& out) const { out.noalias() = *J * z; }
-  void grad(const Vec& Da, const Vec& Db, const Vec& Phi, Vec& tmp, Vec& g) const {
-    tmp = Db.cwiseProduct(Phi);
-    g.noalias() = J->transpose() * tmp;
-    g += Da.cwiseProduct(Phi);
-  }
-  // Builds H's pattern = pattern(J) + diagonal and the maps from J and the diagonal into it.
-  void build_pattern() {
-    const Eigen::Index n = J->rows();
-    SparseMat I(n, n);
-    I.setIdentity();
-    H = *J + I;  // union of patterns (values rewritten below)
-    H.makeCompressed();
-    diag_pos.assign(static_cast<size_t>(n), -1);
-    j_pos.assign(static_cast<size_t>(J->nonZeros()), -1);
-    const auto* hout = H.outerIndexPtr();
-    const auto* hin = H.innerIndexPtr();
-    for (Eigen::Index c = 0; c < n; ++c) {
-      for (auto k = hout[c]; k < hout[c + 1]; ++k)
-        if (hin[k] == c) diag_pos[static_cast<size_t>(c)] = k;
-    }
-    Eigen::Index idx = 0;
-    for (Eigen::Index c = 0; c < n; ++c) {
-      auto hk = hout[c];
-      for (SparseMat::InnerIterator it(*J, c); it; ++it, ++idx) {
-        while (hin[hk] != it.row()) ++hk;
-        j_pos[static_cast<size_t>(idx)] = hk;
-      }
-    }
-    pattern_nnz = J->nonZeros();
-    analysed = false;
-  }
-  bool solve(const Vec& Da, const Vec& Db, const Vec& rhs, Vec& d) {
-    if (pattern_nnz != J->nonZeros() || H.rows() != J->rows()) build_pattern();
-    if (symmetric && ldlt_usable && solve_symmetric(Da, Db, rhs, d)) return true;
-    double* hv = H.valuePtr();
-    std::fill(hv, hv + H.nonZeros(), 0.0);
-    Eigen::Index idx = 0;
-    for (Eigen::Index c = 0; c < J->outerSize(); ++c)
-      for (SparseMat::InnerIterator it(*J, c); it; ++it, ++idx)
-        hv[j_pos[static_cast<size_t>(idx)]] = Db[it.row()] * it.value();
-    for (Eigen::Index c = 0; c < H.cols(); ++c) hv[diag_pos[static_cast<size_t>(c)]] += Da[c];
-    if (!analysed) {
-      lu.analyzePattern(H);
-      analysed = true;
-    }
-    lu.factorize(H);
-    if (lu.info() != Eigen::Success) return false;
-    d = lu.solve(rhs);
-    return lu.info() == Eigen::Success && d.allFinite();
-  }
-
-  /// Symmetric J (affine problems with M = M^T): H = diag(Db) K with K = J + diag(Da / Db)
-  /// symmetric, so H d = rhs is K d = rhs ./ Db, solved by sparse LDL^T (AMD ordering), much
-  /// cheaper than LU. Db_i = 0 (z_i = 0 < w_i) is replaced by 1e-30 Da_i, which changes d_i by a
-  /// relative 1e-30. The solve is accepted only when ||H d - rhs|| is small; otherwise (e.g. an
-  /// indefinite K where LDL^T without pivoting is unreliable) the LU path is used from then on.
-  bool solve_symmetric(const Vec& Da, const Vec& Db, const Vec& rhs, Vec& d) {
-    double* hv = H.valuePtr();
-    std::fill(hv, hv + H.nonZeros(), 0.0);
-    Eigen::Index idx = 0;
-    for (Eigen::Index c = 0; c < J->outerSize(); ++c)
-      for (SparseMat::InnerIterator it(*J, c); it; ++it, ++idx)
-        hv[j_pos[static_cast<size_t>(idx)]] = it.value();
-    db_safe.resize(Da.size());
-    for (Eigen::Index c = 0; c < H.cols(); ++c) {
-      db_safe[c] = std::max(Db[c], 1e-30 * Da[c]);
-      if (!(db_safe[c] > 0)) return false;
-      hv[diag_pos[static_cast<size_t>(c)]] += Da[c] / db_safe[c];
-    }
-    if (!ldlt_analysed) {
-      ldlt.analyzePattern(H);
-      ldlt_analysed = true;
-    }
-    ldlt.factorize(H);
-    if (ldlt.info() != Eigen::Success) {
-      ldlt_usable = false;
-      return false;
-    }
-    scaled_rhs = rhs.cwiseQuotient(db_safe);
-    d = ldlt.solve(scaled_rhs);
-    if (ldlt.info() != Eigen::Success || !d.allFinite()) {
-      ldlt_usable = false;
-      return false;
-    }
-    // Residual check on the original system H d = rhs.
-    check.noalias() = *J * d;
-    check = check.cwiseProduct(Db) + Da.cwiseProduct(d) - rhs;
-    if (!(check.lpNorm<Eigen::Infinity>() <=
-          1e-8 * (rhs.lpNorm<Eigen::Infinity>() + std::numeric_limits<double>::min()))) {
-      ldlt_usable = false;
-      return false;
-    }
-    return true;
-  }
-
-  bool symmetric = false;  // J == J^T (set for affine problems)
-  bool ldlt_usable = true;
-  bool ldlt_analysed = false;
-  Eigen::SimplicialLDLT<SparseMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
-  Vec db_safe, scaled_rhs, check;
-};
-
 // ---- the driver --------------------------------------------------------------------------------
 
 struct Bounds {
   const Vec* lower;
   const Vec* upper;
 };
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
 
 /// Jacobian provider for the callback source (dense: analytic or forward differences; sparse:
 /// the sparse callback). The affine source sets the algebra's J once and never calls these.
@@ -495,7 +303,7 @@ class FbDriver {
     const bool debug_log = o_.common.log != nullptr && o_.common.verbosity >= 3;
     if (debug_log)
       log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
-          "fb-newton: start, scaled natural residual " + fmt(res));
+          "fb-newton: start, scaled natural residual " + short_number(res));
 
     Status claim = Status::kIterationLimit;
     std::string why;
@@ -532,7 +340,7 @@ class FbDriver {
       if (o_.common.record_trace) r.trace.push_back({it, res, t, kind, -1, -1});
       if (debug_log)
         log(o_.common.log, o_.common.verbosity, LogLevel::kDebug,
-            "fb-newton: it " + std::to_string(it) + " residual " + fmt(res) + " step " + fmt(t) +
+            "fb-newton: it " + std::to_string(it) + " residual " + short_number(res) + " step " + short_number(t) +
                 " " + kind);
     };
     for (;;) {
@@ -597,47 +405,8 @@ class FbDriver {
         const double psi_s = best_psi;
         for (int k = 0; k < o_.watchdog_steps && it < max_iter_; ++k) {
           if (!prepare() || !newton_ok) break;
-          // Step rule of Miranda-Fackler's backstepping: halve t while Psi keeps falling along
-          // t = 1, 1/2, ...; stop at the first decrease below Psi(x) or at the first rise
-          // (then the previous trial is taken, even if Psi(x) is exceeded).
-          double t = 1.0, psit = 0, prev_t = 0, prev_psi = kInf;
-          bool defined = false;
-          for (; t >= o_.min_step; t *= o_.backtrack) {
-            xt_ = x_ + t * d_;
-            ++r.function_evals;
-            if (!src_.eval(xt_, Ft_) || !std::isfinite(psit = merit(xt_, Ft_, Phit_))) {
-              ++r.line_search_steps;  // outside F's domain: too long
-              continue;
-            }
-            if (psit < psi) {
-              defined = true;
-              break;
-            }
-            if (psit > prev_psi) {  // rising again: take the previous trial
-              xt_.swap(xp_);
-              Ft_.swap(Fp_);
-              Phit_.swap(Phip_);
-              t = prev_t;
-              psit = prev_psi;
-              defined = true;
-              break;
-            }
-            xt_.swap(xp_);
-            Ft_.swap(Fp_);
-            Phit_.swap(Phip_);
-            prev_t = t;
-            prev_psi = psit;
-            ++r.line_search_steps;
-          }
-          if (!defined && prev_psi < kInf) {
-            xt_.swap(xp_);
-            Ft_.swap(Fp_);
-            Phit_.swap(Phip_);
-            t = prev_t;
-            psit = prev_psi;
-            defined = true;
-          }
-          if (!defined) break;
+          double t = 0, psit = 0;
+          if (!backstep(psi, t, psit, r)) break;
           accept(t, psit, "watchdog");
           if (res <= o_.common.tol || psi < (1.0 - kWeakDecrease) * psi_s) {
             escaped = true;
@@ -668,12 +437,44 @@ class FbDriver {
     // A solution is the current point; otherwise the point of smallest stopping residual seen
     // (the earliest on ties), never a point chosen only for its small Psi.
     r.z = claim == Status::kSolved ? x_ : best_res_x_;
-    r.message = claim == Status::kSolved ? "natural residual " + fmt(res) + " <= tol" : why;
+    r.message = claim == Status::kSolved ? "natural residual " + short_number(res) + " <= tol" : why;
     r.seconds = clock.seconds();
     return r;
   }
 
  private:
+  // The watchdog's step, Miranda-Fackler's backstepping: halve t while Psi keeps falling along
+  // t = 1, 1/2, ...; stop at the first decrease below psi = Psi(x) or at the first rise (then
+  // the previous trial is taken, even if psi is exceeded). The trial is left in xt_, Ft_, Phit_;
+  // false when no trial was defined.
+  bool backstep(double psi, double& t, double& psit, SolveResult& r) {
+    double prev_t = 0, prev_psi = kInf;
+    auto swap_previous = [&]() {
+      xt_.swap(xp_);
+      Ft_.swap(Fp_);
+      Phit_.swap(Phip_);
+    };
+    for (t = 1.0; t >= o_.min_step; t *= o_.backtrack) {
+      xt_ = x_ + t * d_;
+      ++r.function_evals;
+      if (!src_.eval(xt_, Ft_) || !std::isfinite(psit = merit(xt_, Ft_, Phit_))) {
+        ++r.line_search_steps;  // outside F's domain: too long
+        continue;
+      }
+      if (psit < psi) return true;
+      if (psit > prev_psi) break;  // rising again: take the previous trial
+      swap_previous();
+      prev_t = t;
+      prev_psi = psit;
+      ++r.line_search_steps;
+    }
+    if (!(prev_psi < kInf)) return false;
+    swap_previous();
+    t = prev_t;
+    psit = prev_psi;
+    return true;
+  }
+
   // Phi(x) and Psi = 0.5 ||Phi||^2.
   double merit(const Vec& x, const Vec& F, Vec& Phi) const {
     for (Eigen::Index i = 0; i < n_; ++i)

@@ -6,6 +6,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/log.hpp"
+#include "cpkit/core/short_number.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "mpcc_nlp.hpp"
@@ -41,13 +42,6 @@ std::optional<NlpBackend> nlp_backend_from_string(std::string_view s) noexcept {
 }
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
 
 bool sized(const Vec& v, Eigen::Index n) { return v.size() == n; }
 
@@ -90,18 +84,18 @@ std::string MpccProblem::validate() const {
 std::string MpccOptions::validate() const {
   if (auto msg = common.validate(); !msg.empty()) return msg;
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
-  if (!positive(t_initial)) return "t_initial = " + num(t_initial) + " must be > 0";
-  if (!(t_factor > 0 && t_factor < 1)) return "t_factor = " + num(t_factor) + " must be in (0, 1)";
+  if (!positive(t_initial)) return "t_initial = " + short_number(t_initial) + " must be > 0";
+  if (!(t_factor > 0 && t_factor < 1)) return "t_factor = " + short_number(t_factor) + " must be in (0, 1)";
   if (!positive(t_min) || t_min > t_initial)
-    return "t_min = " + num(t_min) + " must be in (0, t_initial]";
-  if (!positive(rho_initial)) return "rho_initial = " + num(rho_initial) + " must be > 0";
+    return "t_min = " + short_number(t_min) + " must be in (0, t_initial]";
+  if (!positive(rho_initial)) return "rho_initial = " + short_number(rho_initial) + " must be > 0";
   if (!(std::isfinite(rho_factor) && rho_factor > 1))
-    return "rho_factor = " + num(rho_factor) + " must be > 1";
+    return "rho_factor = " + short_number(rho_factor) + " must be > 1";
   if (!(rho_max >= rho_initial) || !std::isfinite(rho_max))
-    return "rho_max = " + num(rho_max) + " must be finite and >= rho_initial";
+    return "rho_max = " + short_number(rho_max) + " must be finite and >= rho_initial";
   if (!positive(feasibility_tol)) return "feasibility_tol must be > 0";
   if (!positive(complementarity_tol)) return "complementarity_tol must be > 0";
-  if (!positive(nlp_tol)) return "nlp_tol = " + num(nlp_tol) + " must be > 0";
+  if (!positive(nlp_tol)) return "nlp_tol = " + short_number(nlp_tol) + " must be > 0";
   if (max_subproblems < 1) return "max_subproblems = " + std::to_string(max_subproblems) + " < 1";
   return {};
 }
@@ -270,9 +264,9 @@ class Driver {
     result_.iterations += out.iterations;
     result_.subproblems.push_back(sub);
     log(o_.common.log, o_.common.verbosity, LogLevel::kInfo,
-        std::string("mpcc ") + kind + " " + num(parameter) + ": " + out.status + ", f = " +
-            num(m.f) + ", complementarity = " + num(m.complementarity) +
-            ", infeasibility = " + num(m.infeasibility));
+        std::string("mpcc ") + kind + " " + short_number(parameter) + ": " + out.status + ", f = " +
+            short_number(m.f) + ", complementarity = " + short_number(m.complementarity) +
+            ", infeasibility = " + short_number(m.infeasibility));
     if (out.eval_failed) eval_failures_++;
     step.x = out.x;
     step.usable = m.ok;
@@ -359,7 +353,7 @@ class Driver {
     } else {
       r.status = time_out_ ? Status::kTimeLimit : Status::kStalled;
       msg << "; complementarity or feasibility still violated: complementarity = "
-          << num(c->m.complementarity) << ", infeasibility = " << num(c->m.infeasibility);
+          << short_number(c->m.complementarity) << ", infeasibility = " << short_number(c->m.infeasibility);
     }
     if (eval_failures_ > 0) msg << "; " << eval_failures_ << " NLP(s) hit a failed evaluation";
     r.message = msg.str();

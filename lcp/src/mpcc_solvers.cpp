@@ -380,6 +380,22 @@ McpProblem checked_mcp(McpProblem mcp) {
   return mcp;
 }
 
+// The NLP is posed in equilibrated natural units (units.hpp): its feasibility tolerances,
+// relaxation parameters and divergence bound are then meaningful whatever units the caller
+// used. The answer is mapped back and decided again on the caller's data. P: LcpProblem or
+// BoxLcpProblem (lcp: its LCP part), as_mcp its MCP form.
+template <class P, class AsMcp>
+SolveResult solve_in_units(const P& problem, const LcpProblem& lcp, AsMcp as_mcp,
+                           const ComplementarityMpccOptions& options, MpccResult* details) {
+  const LcpUnits units = equilibrated_units(lcp);
+  const P scaled = to_units(problem, units);
+  ComplementarityMpccOptions o = options;
+  if (o.reference.size()) o.reference = z_to_units(o.reference, units);
+  const McpProblem mcp = checked_mcp(as_mcp(scaled));
+  return back_to_units(problem, solve_via_mpcc(scaled, mcp, true, o, details), units,
+                       options.mpcc.common);
+}
+
 ComplementarityMpccOptions defaults(NlpBackend backend, const CommonOptions& common) {
   ComplementarityMpccOptions o;
   o.mpcc.backend = backend;
@@ -393,29 +409,16 @@ SolveResult solve_lcp_mpcc(const LcpProblem& problem, const ComplementarityMpccO
                            MpccResult* details) {
   throw_if_invalid(problem.validate(), "LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  // The NLP is posed in equilibrated natural units (units.hpp): its feasibility tolerances,
-  // relaxation parameters and divergence bound are then meaningful whatever units the caller
-  // used. The answer is mapped back and decided again on the caller's data.
-  const LcpUnits units = equilibrated_units(problem);
-  const LcpProblem scaled = to_units(problem, units);
-  ComplementarityMpccOptions o = options;
-  if (o.reference.size()) o.reference = z_to_units(o.reference, units);
-  const McpProblem mcp = checked_mcp(lcp_as_mcp(scaled));
-  return back_to_units(problem, solve_via_mpcc(scaled, mcp, true, o, details), units,
-                       options.mpcc.common);
+  return solve_in_units(problem, problem, [](const LcpProblem& s) { return lcp_as_mcp(s); },
+                        options, details);
 }
 
 SolveResult solve_box_lcp_mpcc(const BoxLcpProblem& problem,
                                const ComplementarityMpccOptions& options, MpccResult* details) {
   throw_if_invalid(problem.validate(), "box LCP");
   throw_if_invalid(options.validate(problem.size()), "MPCC options");
-  const LcpUnits units = equilibrated_units(problem.lcp);
-  const BoxLcpProblem scaled = to_units(problem, units);
-  ComplementarityMpccOptions o = options;
-  if (o.reference.size()) o.reference = z_to_units(o.reference, units);
-  const McpProblem mcp = checked_mcp(box_lcp_as_mcp(scaled));
-  return back_to_units(problem, solve_via_mpcc(scaled, mcp, true, o, details), units,
-                       options.mpcc.common);
+  return solve_in_units(problem, problem.lcp,
+                        [](const BoxLcpProblem& s) { return box_lcp_as_mcp(s); }, options, details);
 }
 
 SolveResult solve_mcp_mpcc(const McpProblem& problem, const ComplementarityMpccOptions& options,

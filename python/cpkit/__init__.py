@@ -6,16 +6,17 @@ Stromberg, Johansson & Klarbring (1996). See docs/python.md.
     s = cpkit.enumerate([[2, 1], [1, 2]], [-5, -6])  # every solution
 """
 from . import _cpkit
-from .contact import (ContactParameters, ContactState, direction_map, enumerate_step,
-                      fretting_history, param_direction_map, param_param_map, ramp_history,
-                      rate_indicators, simulate, solve_rate_problem, solve_step)
+from .model import ContactParameters, ContactState, Point3d
 from .system import ContactSystem, solve_system_rate, system_direction_counts
-from .three_d import (Point3d, Rate3dSolutionSet, Step3dSolutionSet, enumerate_step_3d,
-                      solve_rate_3d, solve_system_rate_3d)
-from .three_d_more import (FacetedStep3dSolutionSet, Fretting3dResult, Map3d, StepChain3dResult,
-                           multistart_step_3d, param_direction_map_3d, param_param_map_3d,
-                           simulate_fretting_3d, solve_step_3d, solve_step_3d_faceted,
-                           sphere_map_3d)
+from .rate import (Rate3dSolutionSet, rate_indicators, solve_rate_3d, solve_rate_problem,
+                   solve_system_rate_3d)
+from .step import (FacetedStep3dSolutionSet, Step3dSolutionSet, StepChain3dResult,
+                   enumerate_step, enumerate_step_3d, multistart_step_3d, solve_step,
+                   solve_step_3d, solve_step_3d_faceted)
+from .maps import (Map3d, direction_map, param_direction_map, param_direction_map_3d,
+                   param_param_map, param_param_map_3d, sphere_map_3d)
+from .simulation import (Fretting3dResult, fretting_history, ramp_history, simulate,
+                         simulate_fretting_3d)
 from .friction import (FrictionErrors, FrictionProblem, FrictionResult, FrictionSolutionSet,
                        friction_errors, friction_solutions, friction_solvers, read_fclib,
                        solve_friction)

@@ -14,6 +14,7 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from . import _cpkit
+from ._checks import vector
 from .results import Attempt, Residuals, _short
 
 __all__ = ["FrictionProblem", "FrictionErrors", "FrictionResult", "FrictionSolutionSet",
@@ -105,13 +106,7 @@ class FrictionSolutionSet:
 
 
 def _vector(v, name: str) -> np.ndarray:
-    try:
-        a = np.asarray(v, dtype=float)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{name} must be a vector of numbers ({e})") from None
-    if a.ndim != 1:
-        raise ValueError(f"{name} must be a 1-D array, got shape {a.shape}")
-    return np.ascontiguousarray(a)
+    return np.ascontiguousarray(vector(v, name))  # mapped by the compiled part without a copy
 
 
 def _data(W, q, mu):

@@ -7,6 +7,7 @@ from typing import Callable, Iterable, Optional
 import numpy as np
 
 from . import _cpkit
+from ._checks import numbers, vector as _vector
 from .results import (Attempt, BatchResult, Certificate, CrossVerifyReport, Residuals,
                       SolutionSet, SolveResult)
 
@@ -26,16 +27,6 @@ def _is_sparse(M) -> bool:
     return scipy.sparse.issparse(M)
 
 
-def _vector(v, name: str) -> np.ndarray:
-    try:
-        a = np.asarray(v, dtype=float)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{name} must be a vector of numbers ({e})") from None
-    if a.ndim != 1:
-        raise ValueError(f"{name} must be a 1-D array, got shape {a.shape}")
-    return a
-
-
 def _lcp_data(M, q):
     """(is_sparse, M, q) with M as float64 (CSC when sparse) and q 1-D; shapes checked here,
     values (NaN/Inf, size agreement) by the C++ validator."""
@@ -45,13 +36,7 @@ def _lcp_data(M, q):
         if M.shape[0] != M.shape[1]:
             raise ValueError(f"M must be square, got shape {M.shape}")
         return True, M, q
-    try:
-        M = np.asarray(M, dtype=float)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"M must be a matrix of numbers (numpy array or scipy.sparse) ({e})") from None
-    if M.ndim != 2:
-        raise ValueError(f"M must be a 2-D array, got shape {M.shape}")
-    return False, M, q
+    return False, numbers(M, "M", 2, "be a matrix of numbers (numpy array or scipy.sparse)"), q
 
 
 def solvers(kind: str = "lcp"):

@@ -9,21 +9,15 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _cpkit
-from .contact import ContactParameters
+from ._checks import numbers
+from .model import ContactParameters
+from .results import SystemRateSolutionSet
 
 __all__ = ["ContactSystem", "solve_system_rate", "system_direction_counts"]
 
 
-def _finite_list(a, name, shape=None):
-    try:
-        arr = np.asarray(a, dtype=float)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{name} must hold numbers ({e})") from None
-    if shape is not None and arr.ndim != shape:
-        raise ValueError(f"{name} must be {shape}-D, got shape {arr.shape}")
-    if not np.isfinite(arr).all():
-        raise ValueError(f"{name} has a NaN or infinite entry")
-    return arr.tolist()
+def _finite_list(a, name, ndim=None):
+    return numbers(a, name, ndim, finite=True).tolist()
 
 
 @dataclass(repr=False)
@@ -98,7 +92,6 @@ def solve_system_rate(system: ContactSystem, dF, method: str = "enumerate"):
     """Every solution of the N-point rate problem for the load rate dF (a 2N-vector,
     interleaved (dF_T1, dF_N1, ...)). method: "enumerate" (every solution) or a single LCP
     solver ("lemke", "fb-newton", "ipopt": one solution, complete=False)."""
-    from .results import SystemRateSolutionSet
     if not isinstance(system, ContactSystem):
         raise TypeError("system must be a cpkit.ContactSystem")
     dF = np.asarray(dF, dtype=float)

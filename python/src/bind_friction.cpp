@@ -37,13 +37,7 @@ CommonOptions fc_options(double tol, double tol_acceptable, int max_iterations,
   if (!(tol > 0 && tol <= 1e-3))
     throw InputError("tol must be in (0, 1e-3] (the unit-free residual), got " +
                      std::to_string(tol));
-  CommonOptions o;
-  o.tol = tol;
-  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
-  o.max_iterations = max_iterations;
-  o.time_limit_s = time_limit;
-  throw_if_invalid(o.validate(), "options");
-  return o;
+  return common_options(tol, tol_acceptable, max_iterations, time_limit);
 }
 
 std::string fc_solver_list() {

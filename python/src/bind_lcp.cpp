@@ -17,30 +17,6 @@
 namespace cpkit::py {
 namespace {
 
-CommonOptions common_options(double tol, double tol_acceptable, int max_iterations,
-                             double time_limit) {
-  CommonOptions o;
-  o.tol = tol;
-  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
-  o.max_iterations = max_iterations;
-  o.time_limit_s = time_limit;
-  throw_if_invalid(o.validate(), "options");
-  return o;
-}
-
-std::string solver_list(ProblemKind kind) {
-  std::string out;
-  for (const auto& n : lcp::solvers().names(kind)) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-const SolverEntry& find_solver(const std::string& name, ProblemKind kind) {
-  const SolverEntry* e = lcp::solvers().find(name);
-  if (e == nullptr || !e->accepts(kind))
-    throw InputError("solver: unknown solver '" + name + "' (valid: " + solver_list(kind) + ")");
-  return *e;
-}
-
 SolveResult solve_checked(const LcpProblem& p, const std::string& solver, const CommonOptions& o) {
   throw_if_invalid(p.validate(), "LCP");
   const SolverEntry& e = find_solver(solver, ProblemKind::kLcp);

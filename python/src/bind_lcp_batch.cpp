@@ -35,19 +35,8 @@ pyb::dict solve_batch(const Array& Ms, const Array& qs, const std::string& solve
                      std::to_string(n) + ") to match Ms " + shape_text(Ms) + ", got shape " +
                      shape_text(qs));
   if (n < 1 && k > 0) throw InputError("Ms: the problems are empty (n = 0)");
-  CommonOptions o;
-  o.tol = tol;
-  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
-  o.max_iterations = max_iterations;
-  o.time_limit_s = time_limit;
-  throw_if_invalid(o.validate(), "options");
-  const SolverEntry* e = lcp::solvers().find(solver);
-  if (e == nullptr || !e->accepts(ProblemKind::kLcp)) {
-    std::string valid;
-    for (const auto& name : lcp::solvers().names(ProblemKind::kLcp))
-      valid += (valid.empty() ? "" : ", ") + name;
-    throw InputError("solver: unknown solver '" + solver + "' (valid: " + valid + ")");
-  }
+  const CommonOptions o = common_options(tol, tol_acceptable, max_iterations, time_limit);
+  const SolverEntry* e = &find_solver(solver, ProblemKind::kLcp);
   check_memory(static_cast<double>(k) * static_cast<double>(n) * 16.0 + 16.0 * k, "solve_batch");
   const double* M = Ms.data();
   const double* q = qs.data();

@@ -113,19 +113,8 @@ pyb::dict solve_mcp(pyb::function F, pyb::object J, bool sparse_jacobian, const 
       p.jacobian = dense_jacobian_adapter(st);
   }
   throw_if_invalid(p.validate(), "MCP");
-  CommonOptions o;
-  o.tol = tol;
-  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
-  o.max_iterations = max_iterations;
-  o.time_limit_s = time_limit;
-  throw_if_invalid(o.validate(), "options");
-  const SolverEntry* e = lcp::solvers().find(solver);
-  if (e == nullptr || !e->accepts(ProblemKind::kMcp)) {
-    std::string valid;
-    for (const auto& name : lcp::solvers().names(ProblemKind::kMcp))
-      valid += (valid.empty() ? "" : ", ") + name;
-    throw InputError("solver: unknown MCP solver '" + solver + "' (valid: " + valid + ")");
-  }
+  const CommonOptions o = common_options(tol, tol_acceptable, max_iterations, time_limit);
+  const SolverEntry* e = &find_solver(solver, ProblemKind::kMcp, "MCP solver");
   SolveResult r;
   std::exception_ptr solver_error;
   {

@@ -11,7 +11,8 @@ void bind_maps(pybind11::module_& m);
 void bind_step(pybind11::module_& m);
 void bind_system(pybind11::module_& m);
 void bind_system_rate(pybind11::module_& m);
-void bind_three_d(pybind11::module_& m);
-void bind_three_d_more(pybind11::module_& m);
+void bind_rate_3d(pybind11::module_& m);   // the 3-D rate problem (bind_rate_3d.cpp)
+void bind_maps_3d(pybind11::module_& m);   // maps of a 3-D system (bind_maps_3d.cpp)
+void bind_step_3d(pybind11::module_& m);   // the 3-D step and fretting (bind_step_3d.cpp)
 void bind_friction(pybind11::module_& m);  // 3-D frictional contact (bind_friction.cpp)
 }  // namespace cpkit::py

@@ -5,6 +5,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/status.hpp"
+#include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::py {
 
@@ -13,6 +14,27 @@ pyb::array_t<double> to_numpy(const Vec& v) {
   auto m = a.mutable_unchecked<1>();
   for (Eigen::Index i = 0; i < v.size(); ++i) m(i) = v[i];
   return a;
+}
+
+CommonOptions common_options(double tol, double tol_acceptable, int max_iterations,
+                             double time_limit) {
+  CommonOptions o;
+  o.tol = tol;
+  o.tol_acceptable = tol_acceptable < tol ? tol : tol_acceptable;
+  o.max_iterations = max_iterations;
+  o.time_limit_s = time_limit;
+  throw_if_invalid(o.validate(), "options");
+  return o;
+}
+
+const SolverEntry& find_solver(const std::string& name, ProblemKind kind, const std::string& what) {
+  const SolverEntry* e = lcp::solvers().find(name);
+  if (e == nullptr || !e->accepts(kind)) {
+    std::string valid;
+    for (const auto& n : lcp::solvers().names(kind)) valid += (valid.empty() ? "" : ", ") + n;
+    throw InputError("solver: unknown " + what + " '" + name + "' (valid: " + valid + ")");
+  }
+  return *e;
 }
 
 pyb::dict to_dict(const Residuals& r) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/registry.hpp"
 #include "cpkit/core/result.hpp"
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
@@ -20,6 +22,19 @@ namespace pyb = pybind11;
 
 /// A numpy copy of an Eigen vector (owns its data: safe after the C++ object is gone).
 pyb::array_t<double> to_numpy(const Vec& v);
+/// A numpy copy of a std::vector.
+inline pyb::array_t<double> to_numpy(const std::vector<double>& v) {
+  return pyb::array_t<double>(static_cast<pyb::ssize_t>(v.size()), v.data());
+}
+
+/// The common solver options of the Python calls, validated (InputError naming the option);
+/// tol_acceptable below tol is raised to tol.
+CommonOptions common_options(double tol, double tol_acceptable, int max_iterations,
+                             double time_limit);
+/// The registered solver `name` of `kind`; else InputError "solver: unknown <what> 'name'
+/// (valid: ...)" listing the solvers of that kind.
+const SolverEntry& find_solver(const std::string& name, ProblemKind kind,
+                               const std::string& what = "solver");
 
 /// SolveResult as a dict with the field names of core/report.hpp's JSON.
 pyb::dict to_dict(const SolveResult& r);

@@ -17,7 +17,8 @@ PYBIND11_MODULE(_cpkit, m) {
   cpkit::py::bind_step(m);
   cpkit::py::bind_system(m);
   cpkit::py::bind_system_rate(m);
-  cpkit::py::bind_three_d(m);
-  cpkit::py::bind_three_d_more(m);
+  cpkit::py::bind_rate_3d(m);
+  cpkit::py::bind_maps_3d(m);
+  cpkit::py::bind_step_3d(m);
   cpkit::py::bind_friction(m);
 }

@@ -1,6 +1,6 @@
-// Three-dimensional contact points (docs/contact_3d.md): the rate problem of one point (exact or
-// faceted), of N points from a "dim": 3 system (faceted), and every solution of one implicit
-// step. Results are plain dicts of numbers, 2-vectors as numpy arrays.
+// The 3-D rate problem (docs/contact_3d.md): one point (exact or faceted) and N points from a
+// "dim": 3 system (faceted); the 2-D one is bind_rate.cpp, N points in 2-D bind_system_rate.cpp.
+// Results are plain dicts of numbers, 2-vectors as numpy arrays.
 #include <string>
 
 #include "bindings.hpp"
@@ -9,7 +9,6 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
-#include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
@@ -128,27 +127,13 @@ pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& 
   return d;
 }
 
-pyb::dict enumerate_step_3d(const pyb::object& point, const pyb::object& P_T0, double P_N0,
-                            double g0, const pyb::object& DF, const std::string& wear_law,
-                            double k_M) {
-  const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
-  rate::Step3dSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::enumerate_step_3d(p);
-  }
-  return step_set_dict(set);
-}
-
 }  // namespace
 
-void bind_three_d(pyb::module_& m) {
+void bind_rate_3d(pyb::module_& m) {
   m.def("solve_rate_3d", &solve_rate_3d, pyb::arg("point"), pyb::arg("state"), pyb::arg("P_T"),
         pyb::arg("P_N"), pyb::arg("dF"), pyb::arg("facets"));
   m.def("solve_system_rate_3d", &solve_system_rate_3d, pyb::arg("json_text"), pyb::arg("dF"),
         pyb::arg("facets"));
-  m.def("enumerate_step_3d", &enumerate_step_3d, pyb::arg("point"), pyb::arg("P_T0"),
-        pyb::arg("P_N0"), pyb::arg("g0"), pyb::arg("DF"), pyb::arg("wear_law"), pyb::arg("k_M"));
 }
 
 }  // namespace cpkit::py
