@@ -36,7 +36,7 @@
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
 #include "cpkit/rate_problem/maps/npy_writer.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::cli {
 

@@ -26,11 +26,11 @@
 #include "mpi_session.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/sphere_map_3d.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 #include "cpkit/lcp/enumerate.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
 namespace cpkit::cli {
 

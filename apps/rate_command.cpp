@@ -28,8 +28,8 @@
 #include "cli_common.hpp"
 #include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/rate_lcp.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 namespace cpkit::cli {
 

@@ -13,8 +13,8 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -12,9 +12,9 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -9,8 +9,8 @@
 #include <iostream>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/fretting_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "simulate_config.hpp"
 #include "simulation_outputs.hpp"
 

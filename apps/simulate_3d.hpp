@@ -1,7 +1,7 @@
 #pragma once
 // `cpkit simulate --system FILE` with a "dim": 3 file: fretting of one 3-D point under an
 // elliptic tangential load orbit (docs/contact_3d.md, "Fretting with an elliptic load orbit";
-// library: cpkit/rate_problem/three_d/fretting_3d.hpp).
+// library: cpkit/rate_problem/simulation/fretting_3d.hpp).
 //
 //   cpkit simulate --system POINT3D.json --orbit aX aY [--orbit-angle RAD] [--lead-steps N]
 //                  [--F_N X --period X --cycles N --steps-per-cycle N --ramp-steps N]

@@ -20,11 +20,11 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
-#include "cpkit/rate_problem/three_d/multistart_cap.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_step_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/step/multistart_cap.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/step/system_step_3d.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -31,7 +31,7 @@
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::cli {
 namespace {

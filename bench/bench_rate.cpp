@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/rate_lcp.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 
 using namespace cpkit::rate;
 

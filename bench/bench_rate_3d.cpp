@@ -18,8 +18,8 @@
 
 #include <Eigen/Cholesky>
 
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
 using namespace cpkit::rate3d;
 

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "cpkit/core/timer.hpp"
-#include "cpkit/rate_problem/three_d/sphere_map_3d.hpp"
+#include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 
 using namespace cpkit::rate3d;
 

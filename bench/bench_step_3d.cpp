@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <random>
 
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 
 using namespace cpkit::rate3d;
 

@@ -6,7 +6,7 @@
 #include <cpkit/lcp/fb_newton.hpp>
 #include <cpkit/lcp/lemke.hpp>
 #include <cpkit/lcp/solvers.hpp>
-#include <cpkit/rate_problem/one_point/rate_problem.hpp>
+#include <cpkit/rate_problem/rate/point_rate.hpp>
 #include <cpkit/rate_problem/step/step_enumeration.hpp>
 #include <cmath>
 #include <iostream>

@@ -472,7 +472,7 @@ class SystemRateSolution:
 
 @dataclass(repr=False)
 class SystemRateSolutionSet:
-    """All solutions of an N-point rate problem (system/system_rate.hpp); `count` is -1 for
+    """All solutions of an N-point rate problem (rate/system_rate.hpp); `count` is -1 for
     infinitely many; `complete` False for single solvers or when the enumeration could not
     decide (then `message` says why)."""
     solutions: List[SystemRateSolution]

@@ -6,8 +6,8 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 namespace cpkit::py {
 namespace {

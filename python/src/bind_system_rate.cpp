@@ -1,4 +1,4 @@
-// The N-point rate problem (rate_problem/system/system_rate.hpp): every solution for a load
+// The N-point rate problem (rate_problem/rate/system_rate.hpp): every solution for a load
 // rate dF, and the counts over many load directions (the fast summary path, one call).
 #include <cmath>
 #include <string>
@@ -7,7 +7,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 
 namespace cpkit::py {
 

@@ -7,11 +7,11 @@
 #include "convert.hpp"
 #include "point3d_from.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
 namespace cpkit::py {
 namespace {

@@ -11,12 +11,12 @@
 #include "convert.hpp"
 #include "point3d_from.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/fretting_3d.hpp"
-#include "cpkit/rate_problem/three_d/multistart_cap.hpp"
-#include "cpkit/rate_problem/three_d/sphere_map_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
+#include "cpkit/rate_problem/step/multistart_cap.hpp"
+#include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::py {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
 
 namespace cpkit::py {
 

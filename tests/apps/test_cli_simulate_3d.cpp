@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "cpkit/rate_problem/three_d/fretting_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_3d.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 namespace cpkit::rate::test {
 

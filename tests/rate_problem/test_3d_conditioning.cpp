@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
 
 using namespace cpkit::rate3d;
 

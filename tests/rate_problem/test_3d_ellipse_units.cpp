@@ -12,12 +12,12 @@
 #include <random>
 
 #include "rate3d_test_util.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_step_3d.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
+#include "cpkit/rate_problem/step/system_step_3d.hpp"
 
 using namespace cpkit::rate3d;
 

@@ -10,8 +10,8 @@
 
 #include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

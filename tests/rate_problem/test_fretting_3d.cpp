@@ -11,7 +11,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
-#include "cpkit/rate_problem/three_d/fretting_3d.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 
 using namespace cpkit::rate3d;
 using cpkit::rate::WearLaw;

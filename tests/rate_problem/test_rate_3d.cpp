@@ -16,10 +16,10 @@
 
 #include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/point_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

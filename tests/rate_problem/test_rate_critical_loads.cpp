@@ -11,7 +11,7 @@
 #include <cmath>
 #include <string>
 
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 using namespace cpkit::rate;
 

@@ -7,7 +7,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 using namespace cpkit::rate;
 

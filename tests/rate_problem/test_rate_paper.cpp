@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "rate_problem/rate_test_util.hpp"
 
 using namespace cpkit::rate;

@@ -7,9 +7,9 @@
 #include <random>
 
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/one_point/rate_lcp.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/rate_lcp.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "rate_problem/rate_test_util.hpp"
 
 using namespace cpkit::rate;

@@ -22,8 +22,8 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
-#include "cpkit/rate_problem/one_point/analytic.hpp"
-#include "cpkit/rate_problem/three_d/sphere_map_3d.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 
 using namespace cpkit;
 using namespace cpkit::rate3d;

@@ -16,7 +16,7 @@
 #include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

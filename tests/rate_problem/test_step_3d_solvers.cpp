@@ -19,8 +19,8 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/step_solvers_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

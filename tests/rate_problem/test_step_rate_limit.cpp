@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 
 using namespace cpkit::rate;

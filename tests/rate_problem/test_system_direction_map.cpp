@@ -11,8 +11,8 @@
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 
 #include "system_test_util.hpp"
 

@@ -12,7 +12,7 @@
 #include <type_traits>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 
 #include "system_test_util.hpp"
 

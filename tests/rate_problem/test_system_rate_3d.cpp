@@ -18,9 +18,9 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
-#include "cpkit/rate_problem/three_d/faceted_rate_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
+#include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

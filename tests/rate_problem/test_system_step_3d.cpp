@@ -17,8 +17,8 @@
 #include "rate3d_test_util.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
-#include "cpkit/rate_problem/three_d/step_3d.hpp"
-#include "cpkit/rate_problem/three_d/system_step_3d.hpp"
+#include "cpkit/rate_problem/step/step_3d.hpp"
+#include "cpkit/rate_problem/step/system_step_3d.hpp"
 
 using namespace cpkit::rate3d;
 namespace r2 = cpkit::rate;

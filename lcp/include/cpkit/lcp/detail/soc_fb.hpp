@@ -1,7 +1,7 @@
 #pragma once
 // Internal (not part of the documented API): the scalar and second-order-cone Fischer-Burmeister
 // functions with an element of their generalized Jacobians (docs/contact_3d.md, (3D.28)-(3D.29)),
-// shared by the one-point and N-point 3-D step solvers (rate_problem/src/three_d/) and the
+// shared by the one-point and N-point 3-D step solvers (rate_problem/src/step/) and the
 // friction solver fb-soc (lcp/src/friction/fb_soc.cpp). Lives in lcp so that both can use it.
 #include <Eigen/Core>
 

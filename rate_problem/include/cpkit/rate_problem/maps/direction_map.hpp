@@ -15,7 +15,7 @@
 
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
-#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
 
 namespace cpkit::rate {
 

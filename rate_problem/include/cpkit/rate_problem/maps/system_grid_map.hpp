@@ -25,7 +25,7 @@
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/system_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 
 namespace cpkit::rate {
 

@@ -14,7 +14,7 @@
 ///   monotone bracketing between the critical points).
 /// When the reduced polynomial vanishes identically (degenerate data, e.g. a11 = mu |a12| on
 /// N = 0) the piece is a segment or a ray, reported as such. Types are partitioned as in the
-/// rate problem (rate_problem/src/one_point/piece_geometry.hpp): a piece holds the points of its own
+/// rate problem (rate_problem/src/rate/piece_geometry.hpp): a piece holds the points of its own
 /// type only, so an end of another type (the stick end xi = 0 of a slip segment, or an open
 /// end P_N1 = 0 of a step that started open) is an open end of the piece and is listed as a
 /// point of its own type; point solutions on the closed part of a piece are not listed again.

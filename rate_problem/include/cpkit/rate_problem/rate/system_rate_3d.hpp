@@ -1,0 +1,50 @@
+#pragma once
+/// \file system_rate_3d.hpp
+/// The rate problem of N coupled 3-D contact points (docs/contact_3d.md, "N points"): every
+/// grazing point's friction ellipse is replaced by the inscribed polygon of k facets (the
+/// one-point faceted problem, faceted_rate_3d.hpp); points in states a, c, d are linear (d: the
+/// slip direction is the ellipse's normal at the current traction, exactly). For every subset
+/// of the grazing points that separate (2^n_b of them) the rate equations are solved for the
+/// rates as affine functions of the slip multipliers, whose complementarity conditions form an
+/// LCP of size n_d + k (grazing points in contact), solved by complete enumeration.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+
+namespace cpkit::rate3d {
+
+/// One solution: per point its type and rates.
+struct SystemSolution3d {
+  std::vector<Type3d> types;
+  std::vector<Rates3d> rates;
+};
+
+struct SystemRateSet3d {
+  std::vector<SystemSolution3d> solutions;  ///< deduplicated physical solutions
+  bool complete = true;  ///< false: a case was not decided or a continuum met (`message`)
+  bool timed_out = false;  ///< the time limit ended the solve (then complete = false)
+  std::string message;
+  int facets = 0;
+  long long nodes = 0;   ///< enumeration search nodes over all subsets
+  int count() const noexcept { return static_cast<int>(solutions.size()); }
+};
+
+/// Largest number of grazing points (2^n_b separation subsets).
+inline constexpr int kMaxGrazing3d = 10;
+
+/// Every solution of the faceted N-point problem for the load rate dF (3N). Throws InputError
+/// for invalid input, facets outside [3, kMaxFacets], more than kMaxGrazing3d grazing points, an
+/// LCP larger than the enumeration's 64 (n_d + k n_b: fewer facets or points), or a time limit
+/// that is not positive.
+/// `time_limit_s` (wall clock, seconds; may be infinite) bounds the whole solve: it is checked
+/// before every separation case and what is left of it bounds each case's enumeration. When it
+/// runs out the result has timed_out = true, complete = false and a message saying so; the
+/// solutions found so far are listed (never called the whole set).
+SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& system,
+                                             const Eigen::VectorXd& dF, int facets,
+                                             double time_limit_s = 60);
+
+}  // namespace cpkit::rate3d

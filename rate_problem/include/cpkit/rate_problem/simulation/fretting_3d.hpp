@@ -1,0 +1,157 @@
+#pragma once
+/// \file fretting_3d.hpp
+/// Quasi-static fretting of one three-dimensional contact point under an elliptic tangential
+/// load orbit, with the elliptic friction law (39) and anisotropic Archard wear (40) or the
+/// Mroz-Stupkiewicz law (41) [Stromberg, Johansson & Klarbring 1996; docs/contact_3d.md,
+/// "Fretting with an elliptic load orbit"].
+///
+/// The load is marched step by step with the implicit 3-D step (step_3d.hpp); every step is
+/// solved by enumerate_step_3d (every solution, exactly) and:
+/// - one solution: taken (a step whose enumeration is not proved complete is counted in
+///   `incomplete_steps`); none found: a local Newton method on the
+///   slip equations (Fretting3dOptions::local_fallback), its root verified and counted
+///   (also when the enumeration claimed to be complete: counted as `enumeration_missed`);
+/// - several solutions, proved complete: the branch rule decides (rate::BranchRule::kClosest,
+///   the default: smallest |DP_T| + |DP_N| + |K Dw_T^i| with K = (I + C_T S)^-1 S, S the
+///   tangential stiffness with the normal DOF held, A_TT - A_TN A_NT / A_NN: every term a
+///   force, as the 2-D rule; kStop: stop there);
+/// - several solutions and not proved complete (ambiguous), or none: the march stops and the
+///   result says when, in which state and why (never silently).
+/// After a step the state is put exactly on its active constraints (g = 0 when P_N > 0, the
+/// traction on the friction ellipse ||P_T|| = mu P_N after slip, P = 0 after separation), as
+/// the 2-D simulation does, so that no drift accumulates.
+///
+/// Units: any consistent set (forces, lengths; A force/length, C_T length/force, k and k_M
+/// 1/force). Angles in radians.
+#include <Eigen/Core>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+
+namespace cpkit::rate3d {
+
+/// One load point (t, F_TX, F_TY, F_N).
+struct LoadPoint3d {
+  double t = 0;
+  Eigen::Vector2d F_T{0, 0};
+  double F_N = 0;
+};
+
+/// The elliptic load orbit. Three phases, each step of length dt = period / steps_per_cycle:
+///  1. normal ramp: F_N rises linearly to F_N in `ramp_steps` steps, F_T = 0;
+///  2. lead-in: F_T rises linearly from 0 to the orbit's start R(angle) (a_X, 0) in
+///     `lead_steps` steps (0: no lead-in; the first orbit step then starts from F_T = 0);
+///  3. `cycles` cycles of the orbit F_T(t) = R(angle) (a_X cos(2 pi s/period),
+///     a_Y sin(2 pi s/period)), s = t - cycle_start(), F_N constant, `steps_per_cycle` steps
+///     per cycle (a_Y < 0: clockwise; a_Y = 0: a straight back-and-forth line).
+/// R(angle) is the rotation by `angle` (rad) in the (X, Y) plane.
+struct EllipticOrbit {
+  double F_N = 1;
+  double a_X = 0.5, a_Y = 0.5;
+  double angle = 0;
+  double period = 1;
+  int cycles = 10;
+  int steps_per_cycle = 100;
+  int ramp_steps = 10;
+  int lead_steps = -1;  ///< < 0: steps_per_cycle / 4
+  /// Empty when usable; else names the field (non-finite, F_N < 0, period <= 0, counts < 1 or
+  /// a run of more than 2^62 steps).
+  std::string validate() const;
+  int lead() const noexcept;  ///< the lead-in steps actually used
+  std::size_t size() const noexcept;  ///< number of load points (= steps)
+  double dt() const noexcept { return period / steps_per_cycle; }
+  double cycle_start() const noexcept { return (ramp_steps + lead()) * dt(); }
+  /// Load point i (0 .. size() - 1), computed from i alone (no state, no drift).
+  LoadPoint3d at(std::size_t i) const noexcept;
+};
+
+/// A load produced point by point (memory independent of its length); the march starts from the
+/// unloaded grazing state at t = 0 and takes one step to every point, in order.
+struct LoadSource3d {
+  std::size_t size = 0;
+  std::function<LoadPoint3d(std::size_t)> at;
+  double period = 0;       ///< > 0: per-cycle sums are reported
+  double cycle_start = 0;  ///< t at which cycle 0 begins
+};
+/// The orbit as a source. Throws InputError when orbit.validate() fails.
+LoadSource3d orbit_source(const EllipticOrbit& orbit);
+
+/// One row of the series: the state after the step and the step's increments.
+struct Fretting3dSample {
+  long step = 0;  ///< 0: the start state
+  double t = 0;
+  Eigen::Vector2d F_T{0, 0};
+  double F_N = 0;
+  Eigen::Vector2d P_T{0, 0};
+  double P_N = 0, g = 0;
+  Eigen::Vector2d w_T{0, 0};
+  double w_N = 0;
+  Eigen::Vector2d w_Ti{0, 0};    ///< accumulated irreversible slip (the slip path)
+  Eigen::Vector2d Dw_Ti{0, 0};   ///< the step's slip increment
+  double lambda = 0;             ///< the step's multiplier |D Dw_T^i|
+  double Dw_w = 0;               ///< the step's wear increment (from the step's solution)
+  double w_w = 0;                ///< accumulated wear depth
+  Type3d type = Type3d::kStick;  ///< the step's solution type
+  int count = 1;                 ///< number of step solutions
+  bool complete = true;          ///< the step's enumeration was proved complete
+  double dissipation = 0;        ///< P_T1 . Dw_T^i + P_N1 Dw^w of the step (42)
+  long cycle = -1;               ///< orbit cycle of the step (-1: ramp or lead-in)
+};
+
+struct Fretting3dOptions {
+  Point3dParameters params;
+  rate::WearModel wear;  ///< Archard (40): k = k_a / (3 P_s); Mroz (41): k_M
+  rate::BranchRule branch_rule = rate::BranchRule::kClosest;
+  int record_every = 1;  ///< keep every n-th step in the series (0: none); plus start and end
+  /// A step whose enumeration finds no solution (not proved complete: a near-double root of the
+  /// slip condition, met in nearly symmetric problems with little wear) is tried by a
+  /// local Newton method on the slip equations from the start state's slip direction; a root
+  /// verified by step_3d_residual <= 1e-9 is taken and counted in `local_steps` and
+  /// `incomplete_steps` (false: such a step stops the run).
+  bool local_fallback = true;
+  /// When set, every recorded sample is passed here instead of being stored in
+  /// Fretting3dResult::series: the memory is then independent of the number of steps.
+  std::function<void(const Fretting3dSample&)> on_sample;
+  std::string validate() const;
+};
+
+struct Fretting3dResult {
+  enum class Outcome { kCompleted, kNoSolution, kAmbiguous, kBranchStop, kNumericalFailure };
+  Outcome outcome = Outcome::kCompleted;
+  std::string message;  ///< for a stop: time, state and why
+  long steps = 0;
+  std::vector<Fretting3dSample> series;  ///< empty when on_sample is set
+  Fretting3dSample final_state;
+  long branch_steps = 0;      ///< steps with several solutions (the rule chose)
+  long incomplete_steps = 0;  ///< steps taken whose enumeration was not proved complete
+  long local_steps = 0;       ///< of them, solved by the local fallback (local_fallback)
+  /// Of the local steps, those whose enumeration had claimed "complete, no solution" (a defect
+  /// of the enumeration: the verified root contradicts it); the first one's data for a report.
+  long enumeration_missed = 0;
+  std::string first_missed;
+  double wear_depth = 0;      ///< final w^w (sum of the steps' Dw^w)
+  /// The wear law summed along the run from the end-of-step values: Archard (40)
+  /// sum k P_N1 |D Dw_T^i|, Mroz (41) sum k_M P_T1 . Dw_T^i.
+  double wear_integral = 0;
+  double total_slip = 0;    ///< sum |Dw_T^i| (Euclidean length of the slip path)
+  double total_lambda = 0;  ///< sum |D Dw_T^i|
+  /// Per orbit cycle: slip length, wear, and the wear split by slip direction,
+  /// wear_X = sum c_w P_N1 (alpha_X Dw_TiX)^2 / |D Dw_T^i| (wear_X + wear_Y = the wear).
+  std::vector<double> slip_per_cycle, wear_per_cycle, wear_X_per_cycle, wear_Y_per_cycle;
+  double dissipation = 0;            ///< sum of the steps' dissipation
+  double min_step_dissipation = 0;   ///< most negative D / scale met (0: none negative)
+  double max_residual = 0;           ///< largest step_3d_residual accepted
+};
+std::string_view to_string(Fretting3dResult::Outcome o) noexcept;
+
+/// Runs the march. Throws InputError for invalid options or load.
+Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& options);
+Fretting3dResult simulate_fretting_3d(const EllipticOrbit& orbit, const Fretting3dOptions& options);
+
+}  // namespace cpkit::rate3d

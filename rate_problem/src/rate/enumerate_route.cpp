@@ -1,0 +1,433 @@
+// Route 2: the state's LCP (docs/model.md) solved completely by cpkit::lcp::enumerate_small,
+// every extreme solution and every piece mapped to physical rates, deduplicated and split by
+// type there. [Stromberg et al. 1996, Sec. 4.3]
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/enumerate_small.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/rate_lcp.hpp"
+#include "piece_geometry.hpp"
+#include "rate_detail.hpp"
+
+namespace cpkit::rate {
+namespace {
+
+constexpr double kEnumTol = 1e-12;  ///< enumerate_small's relative tolerance
+constexpr double kGeoTol = 1e-9;    ///< coincidence / type tolerance in the (dP_N, dw_T^i) plane
+
+/// Typed pieces in the (u, v) = (dP_N, dw_T^i) plane.
+struct PlaneResult {
+  std::array<detail::TypedPiece2, detail::PlaneSet::kCap> pieces;
+  int n = 0;
+  bool infinite = false;
+  bool bad = false;    ///< the geometry was not a union of points, segments and rays
+  int ambiguous = 0;   ///< enumerate_small's sign tests too close to call
+  int dropped = 0;
+};
+
+/// State b: type of the point (u, v) from D0 dw_N = S - (1 + a11 C_T) u - a12 v and v.
+struct TypeB {
+  double S, c1, a12, S_terms, V;
+  SolutionType operator()(detail::P2 x) const noexcept {
+    const double g = S - c1 * x.u - a12 * x.v;
+    const double gs = S_terms + c1 * std::abs(x.u) + std::abs(a12 * x.v);
+    if (g < -kGeoTol * gs) return SolutionType::kSeparation;
+    if (x.v > kGeoTol * V) return SolutionType::kSlipPlus;
+    if (x.v < -kGeoTol * V) return SolutionType::kSlipMinus;
+    return SolutionType::kStick;
+  }
+  /// A vertex typed stick with a nonzero v: its slip rate is within the band, not a proved 0
+  /// (at a vertex v is either basic, a computed value, or exactly 0).
+  bool undecided(detail::P2 x) const noexcept {
+    return x.v != 0 && std::abs(x.v) <= kGeoTol * V && !(S - c1 * x.u - a12 * x.v <
+                                                          -kGeoTol * (S_terms + c1 * std::abs(x.u) +
+                                                                      std::abs(a12 * x.v)));
+  }
+};
+
+/// State d: type from the sign of v = dw_T^i = s lambda.
+struct TypeD {
+  double V;
+  SolutionType operator()(detail::P2 x) const noexcept {
+    if (x.v > kGeoTol * V) return SolutionType::kSlipPlus;
+    if (x.v < -kGeoTol * V) return SolutionType::kSlipMinus;
+    return SolutionType::kStick;
+  }
+  bool undecided(detail::P2 x) const noexcept { return x.v != 0 && std::abs(x.v) <= kGeoTol * V; }
+};
+
+double load_scale(const LoadRate& f) noexcept {
+  const double s = std::abs(f.dF_T) + std::abs(f.dF_N);
+  return s > 0 ? s : 1.0;
+}
+
+void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
+  const StateBLcp l = state_b_lcp(p, f);
+  lcp::SmallSolutionSet<3> set;
+  lcp::enumerate_small<3>(l.M, l.q, set, kEnumTol);
+  res.ambiguous = set.ambiguous;
+  res.dropped = set.dropped;
+  const double sF = load_scale(f);
+  // V0: the load's own displacement scale. Type decisions use it, not V (which grows with the
+  // largest vertex): a separation vertex of 1e11 must not make a slip of 1 look like stick.
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);
+  double U = sF, V = V0;
+  detail::P2 vert[8];
+  for (int k = 0; k < set.num_points; ++k) {
+    vert[k] = detail::P2{set.z[k](0), set.z[k](1) - set.z[k](2)};
+    U = std::max(U, std::abs(vert[k].u));
+    V = std::max(V, std::abs(vert[k].v));
+  }
+  detail::PlaneSet plane(U, V, kGeoTol);
+  for (int k = 0; k < set.num_points; ++k) plane.add_point(vert[k]);
+  for (int i = 0; i < set.num_pieces; ++i) {
+    const auto& pc = set.pieces[i];
+    detail::P2 pv[8], pr[8];
+    int nv = 0;
+    for (int k = 0; k < set.num_points; ++k)
+      if (pc.vertex_mask & (1u << k)) pv[nv++] = vert[k];
+    // rays come with ||d||_inf = 1; scale them to the problem's size before judging them zero
+    for (int j = 0; j < pc.num_rays; ++j)
+      pr[j] = detail::P2{U * pc.rays[j](0), U * (pc.rays[j](1) - pc.rays[j](2)) * (V / U)};
+    plane.add_piece(pv, nv, pr, pc.num_rays);
+  }
+  const double c1 = 1.0 + p.a11 * p.C_T;
+  TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
+             c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
+  plane.add_affine(type.S, -c1, -p.a12);
+  plane.add_affine(0.0, 0.0, 1.0);
+  res.infinite = plane.num_lines() > 0;
+  res.n = plane.finish(type, res.pieces);
+  res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
+}
+
+void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
+             PlaneResult& res) {
+  const StateDLcp l = state_d_lcp(p, st, f);
+  lcp::SmallSolutionSet<1> set;
+  lcp::enumerate_small<1>(Eigen::Matrix<double, 1, 1>(l.M), Eigen::Matrix<double, 1, 1>(l.q), set,
+                          kEnumTol);
+  res.ambiguous = set.ambiguous + (l.snapped ? 1 : 0);
+  res.dropped = set.dropped;
+  const int s = st.sgn_PT;
+  // u = dP_N is affine in lambda: u = u0 + u1 lambda.
+  const double u0 = state_d_rates(p, st, f, 0.0).dP_N;
+  const double u1 = state_d_rates(p, st, LoadRate{}, 1.0).dP_N;
+  const double sF = load_scale(f);
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
+  double U = sF, V = V0;
+  detail::P2 vert[2];
+  for (int k = 0; k < set.num_points; ++k) {
+    const double lam = set.z[k](0);
+    vert[k] = detail::P2{u0 + u1 * lam, s * lam};
+    U = std::max(U, std::abs(vert[k].u));
+    V = std::max(V, std::abs(vert[k].v));
+  }
+  detail::PlaneSet plane(U, V, kGeoTol);
+  for (int k = 0; k < set.num_points; ++k) plane.add_point(vert[k]);
+  for (int i = 0; i < set.num_pieces; ++i) {
+    const auto& pc = set.pieces[i];
+    detail::P2 pv[2], pr[2];
+    int nv = 0;
+    for (int k = 0; k < set.num_points; ++k)
+      if (pc.vertex_mask & (1u << k)) pv[nv++] = vert[k];
+    for (int j = 0; j < pc.num_rays; ++j) {
+      const double dl = pc.rays[j](0);
+      // scale the unit ray so that its lambda-extent is of the problem's size
+      pr[j] = detail::P2{u1 * dl * V, s * dl * V};
+    }
+    plane.add_piece(pv, nv, pr, pc.num_rays);
+  }
+  TypeD type{V0};
+  plane.add_affine(0.0, 0.0, 1.0);
+  res.infinite = plane.num_lines() > 0;
+  res.n = plane.finish(type, res.pieces);
+  res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
+}
+
+/// Physical rates of the plane point x (affine) and of a plane direction (linear part).
+Rates plane_rates(const ContactParameters& p, const ContactState& st, const LoadRate& f,
+                  detail::P2 x) {
+  if (st.label == StateLabel::kB) return state_b_rates(p, f, Eigen::Vector3d(x.u, x.v, 0.0));
+  return state_d_rates(p, st, f, st.sgn_PT * x.v);
+}
+
+/// Rates of a point of the given type: quantities the type decision judged zero (within the
+/// route's tolerance) are set to exact zeros (dw_N off separation in b; dw_T^i, dw_N, dw^w at
+/// stick), so that rounding noise of order 1e-17 is not printed as a rate.
+Rates typed_rates(const ContactParameters& p, const ContactState& st, const LoadRate& f,
+                  detail::P2 x, SolutionType type) {
+  Rates r = plane_rates(p, st, f, x);
+  if (st.label == StateLabel::kB && type != SolutionType::kSeparation) r.dw_N = 0;
+  if (type == SolutionType::kStick) {
+    r.dw_T -= r.dw_Ti;
+    r.dw_Ti = 0;
+    r.dw_N = 0;
+    r.dw_w = 0;
+  }
+  return r;
+}
+
+/// Fast complete enumeration of the state-b LCP for the summary (count and types), by
+/// complementary supports, using two facts about this M (docs/contact_model.md, Sec. 5):
+///  (i) a solution with l+ > 0 and l- > 0 has w2 = w3 = 0, i.e. dP_T = dP_N = 0 (mu > 0); its
+///      physical rates depend on l+ - l- only, so z' = (0, max(xi,0), max(-xi,0)) is a solution
+///      with the same rates: supports holding both 2 and 3 add no physical solution;
+/// (ii) the other principal blocks are M11 = 1 + a11 C_T > 0, M22 = M33 = det A > 0 and the
+///      2x2 blocks {1,2}, {1,3} with determinants D0 D_+ and D0 D_-.
+/// So when D_+ and D_- are clearly nonzero, every solution is the unique basic solution of one
+/// of the supports {}, {1}, {2}, {3}, {1,2}, {1,3}, and the set is finite. Returns false (the
+/// caller then runs the general engine) when a 2x2 block is near-singular.
+bool b_blocks_regular(const Eigen::Matrix3d& M) noexcept {
+  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
+  const double s12 = std::abs(M(0, 0) * M(1, 1)) + std::abs(M(0, 1) * M(1, 0));
+  const double s13 = std::abs(M(0, 0) * M(2, 2)) + std::abs(M(0, 2) * M(2, 0));
+  constexpr double kSingular = 1e-6;
+  return !(std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13);
+}
+
+/// The support enumeration proper, for a state-b LCP (M, q) whose 2x2 blocks are regular.
+void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen::Matrix3d& M,
+                      const Eigen::Vector3d& q, RateSummary& sum) noexcept {
+  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
+  constexpr double kFeas = 1e-10;  // relative tolerance of the sign tests
+  const double sF = load_scale(f);
+  const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
+  double U = sF, V = V0;
+  detail::P2 pts[6];
+  int np = 0;
+  auto try_support = [&](double z0, double z1, double z2) {
+    const double z[3] = {z0, z1, z2};
+    double zs = 0;
+    for (double v : z) zs = std::max(zs, std::abs(v));
+    for (double v : z)
+      if (v < -kFeas * zs) return;
+    for (int i = 0; i < 3; ++i) {
+      const double w = q(i) + M(i, 0) * z0 + M(i, 1) * z1 + M(i, 2) * z2;
+      const double ws = std::abs(q(i)) + std::abs(M(i, 0) * z0) + std::abs(M(i, 1) * z1) +
+                        std::abs(M(i, 2) * z2);
+      if (w < -kFeas * ws) return;
+    }
+    pts[np++] = detail::P2{z0, z1 - z2};
+  };
+  try_support(0, 0, 0);
+  try_support(-q(0) / M(0, 0), 0, 0);
+  try_support(0, -q(1) / M(1, 1), 0);
+  try_support(0, 0, -q(2) / M(2, 2));
+  // {1,2}: [M00 M01; M10 M11] z = -q (Cramer)
+  try_support((-q(0) * M(1, 1) + q(1) * M(0, 1)) / d12, (-q(1) * M(0, 0) + q(0) * M(1, 0)) / d12, 0);
+  try_support((-q(0) * M(2, 2) + q(2) * M(0, 2)) / d13, 0, (-q(2) * M(0, 0) + q(0) * M(2, 0)) / d13);
+  for (int k = 0; k < np; ++k) {
+    U = std::max(U, std::abs(pts[k].u));
+    V = std::max(V, std::abs(pts[k].v));
+  }
+  const double c1 = 1.0 + p.a11 * p.C_T;
+  const TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
+                   c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
+  sum.count = 0;
+  sum.types = 0;
+  for (int k = 0; k < np; ++k) {
+    if (type.undecided(pts[k])) sum.reliable = false;
+    bool dup = false;
+    for (int j = 0; j < k && !dup; ++j)
+      dup = std::abs(pts[k].u - pts[j].u) <= kGeoTol * U && std::abs(pts[k].v - pts[j].v) <= kGeoTol * V;
+    if (dup) continue;
+    ++sum.count;
+    sum.types |= 1u << static_cast<unsigned>(type(pts[k]));
+  }
+}
+
+bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
+  const StateBLcp l = state_b_lcp(p, f);
+  if (!b_blocks_regular(l.M)) return false;
+  summarize_b_core(p, f, l.M, l.q, sum);
+  return true;
+}
+
+/// State d's 1x1 LCP enumerated inline for the summary: support {} (lambda = 0, stick) is a
+/// solution iff q >= 0; support {1} (lambda = -q/M) iff M != 0 and -q/M > 0; M = q = 0 makes
+/// every lambda >= 0 a solution (the ray). M and q arrive snapped (state_d_lcp).
+RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcept {
+  const unsigned stick = 1u << static_cast<unsigned>(SolutionType::kStick);
+  const unsigned slip = 1u << static_cast<unsigned>(st.sgn_PT > 0 ? SolutionType::kSlipPlus
+                                                                   : SolutionType::kSlipMinus);
+  RateSummary sum;
+  sum.reliable = !l.snapped;
+  if (l.M == 0) {
+    if (l.q == 0) {
+      sum.count = -1;
+      sum.types = stick | slip;
+    } else if (l.q > 0) {
+      sum.count = 1;
+      sum.types = stick;
+    }
+    return sum;
+  }
+  if (l.q >= 0) {
+    sum.count = 1;
+    sum.types = stick;
+  }
+  const double lambda = -l.q / l.M;
+  if (lambda > 0) {  // distinct from lambda = 0 (q != 0 here since lambda > 0)
+    ++sum.count;
+    sum.types |= slip;
+  }
+  return sum;
+}
+
+RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
+                             const LoadRate& f) noexcept {
+  return summarize_d_core(st, state_d_lcp(p, st, f));
+}
+
+}  // namespace
+
+RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactState& st,
+                                     const LoadRate& f) {
+  detail::validate_inputs(p, st, f);
+  detail::PieceList list;
+  if (st.label == StateLabel::kA || st.label == StateLabel::kC) {
+    RateSolution s;
+    s.type = st.label == StateLabel::kA ? SolutionType::kOpen : SolutionType::kStick;
+    s.start = detail::linear_state_rates(p, st, f);
+    list.push(s);
+    return detail::make_solution_set(p, st, f, list, true);
+  }
+  PlaneResult res;
+  if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);
+  for (int i = 0; i < res.n; ++i) {
+    const detail::TypedPiece2& t = res.pieces[i];
+    RateSolution s;
+    s.type = t.type;
+    s.kind = t.kind;
+    // an open end is a point of another type: its rates are not snapped
+    s.start = t.a_closed ? typed_rates(p, st, f, t.a, t.type) : plane_rates(p, st, f, t.a);
+    s.start_closed = t.a_closed;
+    if (t.kind == RateSolution::Kind::kSegment) {
+      const detail::P2 b{t.a.u + t.t1 * t.d.u, t.a.v + t.t1 * t.d.v};
+      s.end = t.b_closed ? typed_rates(p, st, f, b, t.type) : plane_rates(p, st, f, b);
+      s.end_closed = t.b_closed;
+    } else if (t.kind == RateSolution::Kind::kRay) {
+      s.direction = plane_rates(p, st, LoadRate{}, t.d);
+    }
+    list.push(s);
+  }
+  list.infinite = res.infinite;
+  RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
+  if (res.ambiguous > 0 || res.dropped > 0 || res.bad || list.overflow) {
+    out.complete = false;
+    out.message = "enumeration: " + std::to_string(res.ambiguous) +
+                  " sign test(s) too close to call" +
+                  (res.bad ? "; unexpected geometry of the solution set" : "") +
+                  (res.dropped > 0 ? "; capacity exceeded" : "");
+  }
+  return out;
+}
+
+RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactState& st,
+                                     const LoadRate& f) noexcept {
+  RateSummary sum;
+  if (st.label == StateLabel::kA || st.label == StateLabel::kC) {
+    sum.count = 1;
+    sum.types = 1u << static_cast<unsigned>(st.label == StateLabel::kA ? SolutionType::kOpen
+                                                                       : SolutionType::kStick);
+    return sum;
+  }
+  if (st.label == StateLabel::kB && summarize_b_fast(p, f, sum)) return sum;
+  if (st.label == StateLabel::kD) return summarize_d_fast(p, st, f);
+  PlaneResult res;
+  try {
+    if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);
+  } catch (...) {  // non-finite data (inputs are documented to be valid)
+    sum.reliable = false;
+    return sum;
+  }
+  for (int i = 0; i < res.n; ++i) sum.types |= 1u << static_cast<unsigned>(res.pieces[i].type);
+  sum.count = res.infinite ? -1 : res.n;
+  sum.reliable = !(res.ambiguous > 0 || res.dropped > 0 || res.bad);
+  return sum;
+}
+
+RatePrecomputed precompute_rate_problem(const ContactParameters& params,
+                                        const ContactState& state) {
+  detail::validate_inputs(params, state, LoadRate{});
+  RatePrecomputed pre;
+  pre.params = params;
+  pre.state = state;
+  // the LCP data in the normalised units of the summaries (rate_detail.hpp: normalise)
+  ContactParameters pn;
+  LoadRate unused;
+  int eA = 0, eF = 0;
+  detail::normalise(params, LoadRate{}, pn, unused, eA, eF);
+  if (state.label == StateLabel::kB) {
+    const StateBLcp l0 = state_b_lcp(pn, LoadRate{});  // M does not depend on the load
+    const StateBLcp lT = state_b_lcp(pn, LoadRate{1.0, 0.0});
+    const StateBLcp lN = state_b_lcp(pn, LoadRate{0.0, 1.0});
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) pre.M_b[i][j] = l0.M(i, j);
+      pre.qT_b[i] = lT.q(i);
+      pre.qN_b[i] = lN.q(i);
+    }
+    pre.b_fast = b_blocks_regular(l0.M);
+  } else if (state.label == StateLabel::kD) {
+    const StateDLcp l0 = state_d_lcp(pn, state, LoadRate{});  // M: load-independent
+    pre.M_d = l0.M;
+    pre.d_snapped = l0.snapped;
+    const Rates rT = state_d_rates(pn, state, LoadRate{1.0, 0.0}, 0.0);
+    const Rates rN = state_d_rates(pn, state, LoadRate{0.0, 1.0}, 0.0);
+    pre.dPN_T = rT.dP_N;
+    pre.dPN_N = rN.dP_N;
+    pre.dPT_T = rT.dP_T;
+    pre.dPT_N = rN.dP_T;
+  }
+  return pre;
+}
+
+RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& load,
+                                   RateMethod method) noexcept {
+  const ContactState& st = pre.state;
+  if (method != RateMethod::kEnumerate) return summarize_rate_problem(pre.params, st, load, method);
+  // judged in normalised units, as the LCP data were precomputed (exact powers of two)
+  ContactParameters p;
+  LoadRate f;
+  int eA = 0, eF = 0;
+  detail::normalise(pre.params, load, p, f, eA, eF);
+  if (st.label == StateLabel::kB && pre.b_fast) {
+    Eigen::Matrix3d M;
+    Eigen::Vector3d q;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) M(i, j) = pre.M_b[i][j];
+      q(i) = pre.qT_b[i] * f.dF_T + pre.qN_b[i] * f.dF_N;
+    }
+    RateSummary sum;
+    summarize_b_core(p, f, M, q, sum);
+    return sum;
+  }
+  if (st.label == StateLabel::kD) {
+    // q = (1 + a11 C_T)(mu_eff dP_N - s dP_T) at lambda = 0, snapped as in state_d_lcp
+    const double c1 = 1.0 + p.a11 * p.C_T;
+    const double m =
+        p.criterion == Criterion::kSoftening ? p.mu - 2.0 * p.kappa(st.P_N) : p.mu;
+    const double dPN = pre.dPN_T * f.dF_T + pre.dPN_N * f.dF_N;
+    const double dPT = pre.dPT_T * f.dF_T + pre.dPT_N * f.dF_N;
+    StateDLcp l;
+    l.M = pre.M_d;
+    l.q = c1 * (m * dPN - st.sgn_PT * dPT);
+    if (std::abs(l.q) <= 1e-10 * c1 * (std::abs(m * dPN) + std::abs(dPT))) {
+      l.snapped = l.q != 0;
+      l.q = 0;
+    }
+    l.snapped = l.snapped || pre.d_snapped;
+    return summarize_d_core(st, l);
+  }
+  return summarize_rate_problem(pre.params, st, load, method);
+}
+
+}  // namespace cpkit::rate

@@ -1,0 +1,62 @@
+#pragma once
+// Internal: the per-point terms of the step residual (step_3d_residual, docs/contact_3d.md
+// section 7), shared by the one-point step (step_3d.cpp) and the N-point step
+// (system_step_3d.cpp), which adds its own equilibrium over all points.
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cpkit/rate_problem/step/step_3d.hpp"
+
+namespace cpkit::rate3d::detail {
+
+/// Projection onto the second-order cone {(x0, x1): x0 >= |x1|}.
+inline Eigen::Vector3d project_soc(const Eigen::Vector3d& v) noexcept {
+  const double r = v.tail<2>().stableNorm();
+  if (r <= v(0)) return v;
+  if (r <= -v(0)) return Eigen::Vector3d::Zero();
+  const double a = (v(0) + r) / 2;
+  Eigen::Vector3d out;
+  out << a, a * v.tail<2>() / r;
+  return out;
+}
+
+/// Every term of step_3d_residual except equilibrium: consistency of the values, the contact
+/// pair, the SOC natural residual of (3D.22) and the complementarity products. `p` and `v` are
+/// in normalized units (forces / F0, stiffness / K0, lengths / (F0 / K0)); p.params.A is not
+/// used (equilibrium is the caller's). INFINITY when a term is not finite.
+inline double local_step_3d_residual(const Step3dProblem& p, const Step3dValues& v) noexcept {
+  const Eigen::Vector3d P0(p.state.P_T0(0), p.state.P_T0(1), p.state.P_N0);
+  const Eigen::Vector3d DP(v.DP_T(0), v.DP_T(1), v.DP_N);
+  const Eigen::Vector3d P1(v.P_T1(0), v.P_T1(1), v.P_N1);
+  const Eigen::Vector3d Dw(v.Dw_T(0), v.Dw_T(1), v.Dw_N);
+  const double c_w = p.wear_coefficient();
+  const double big = 1 + P0.cwiseAbs().maxCoeff() + P1.cwiseAbs().maxCoeff();
+  double res = 0;
+  auto worse = [&res](double r) { res = std::isfinite(r) ? std::max(res, r) : INFINITY; };
+  // The values must be consistent with one another (a solver may fill them in any way).
+  worse((P1 - P0 - DP).cwiseAbs().maxCoeff() / big);
+  const double dscale = 1 + Dw.cwiseAbs().maxCoeff() + std::abs(p.state.g0) +
+                        p.params.C_T * DP.cwiseAbs().maxCoeff() + std::abs(v.Dw_w);
+  worse((v.Dw_T - p.params.C_T * v.DP_T - v.Dw_Ti).cwiseAbs().maxCoeff() / dscale);
+  worse(std::abs(v.Dw_w - c_w * std::max(v.P_N1, 0.0) * v.lambda) / dscale);
+  worse(std::abs(v.g1 - (p.state.g0 + v.Dw_N - v.Dw_w)) / dscale);
+  // Contact: P_N1 >= 0, g1 <= 0, P_N1 g1 = 0.
+  worse(std::abs(std::min(v.P_N1 / big, -v.g1 / dscale)));
+  // Friction over the second-order cone (3D.22).
+  const Eigen::Vector2d alpha = p.params.alpha;
+  Eigen::Vector3d x, y;
+  x << p.params.mu * v.P_N1, v.P_T1.cwiseQuotient(alpha);
+  y << v.lambda, -alpha.cwiseProduct(v.Dw_Ti);
+  const Eigen::Vector3d nat = x - project_soc(x - y);
+  worse(nat.cwiseAbs().maxCoeff() / (1 + x.cwiseAbs().maxCoeff() + y.cwiseAbs().maxCoeff()));
+  // The natural residual is relative to |x| + |y|: a huge multiplier over a tiny force could
+  // pass it. The complementarity products relative to (1 + |x|)(1 + |y|) close that gap (and
+  // are of the natural residual's order where one factor is small).
+  worse(std::abs(x.dot(y)) / ((1 + x.norm()) * (1 + y.norm())));
+  worse(std::abs(v.P_N1 * v.g1) / ((1 + std::abs(v.P_N1)) * (1 + std::abs(v.g1))));
+  return res;
+}
+
+}  // namespace cpkit::rate3d::detail

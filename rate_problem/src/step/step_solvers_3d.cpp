@@ -1,0 +1,778 @@
+// Solvers of one implicit step of a 3-D contact point: docs/contact_3d.md, "Solvers of the 3-D
+// step". SOC Fischer-Burmeister semismooth Newton, Ipopt MPCC, faceted LCP/NCP, chain and
+// multistart. Everything runs in normalized units (forces / F0, stiffnesses / |A|, lengths /
+// (F0 / |A|)); every answer is verified on the original problem by step_3d_residual.
+#include "cpkit/rate_problem/step/step_solvers_3d.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/problem.hpp"
+#include "cpkit/core/registry.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/lcp/mpcc.hpp"
+#include "cpkit/lcp/solvers.hpp"
+#include "soc_fb.hpp"
+#include "../model/unit_scaling.hpp"
+
+namespace cpkit::rate3d {
+namespace {
+
+using Vec4 = Eigen::Vector4d;
+using Mat4 = Eigen::Matrix4d;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The step in normalized units: forces / F0, A / K0, lengths / L0 = F0 / K0, and the affine
+/// maps of the unknowns P1 = (P_T1, P_N1):
+///   Dw_T^i = ui0 + Ui P1,   g1 = gc + gN . P1 - cw P_N1 lambda.
+struct Normalized {
+  double K0 = 1, F0 = 1, L0 = 1;
+  double mu = 0.5, C = 0, cw = 0;
+  double E = 1;  ///< the ellipse's unit (unit_scaling.hpp): lambda / (L0 E) is normalized
+  Eigen::Vector2d al{1, 1};
+  Eigen::Matrix3d A = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d DF{0, 0, 0}, dw0{0, 0, 0};  // Dw = dw0 - A^-1 P1
+  Eigen::Vector2d PT0{0, 0};
+  double PN0 = 0, g0 = 0;
+  Eigen::Vector2d ui0{0, 0};
+  Eigen::Matrix<double, 2, 3> Ui = Eigen::Matrix<double, 2, 3>::Zero();
+  double gc = 0;
+  Eigen::RowVector3d gN = Eigen::RowVector3d::Zero();
+};
+
+Normalized normalize(const Step3dProblem& pr) {
+  Normalized n;
+  const Point3dParameters& p = pr.params;
+  n.K0 = p.A.cwiseAbs().maxCoeff();
+  const double f = std::max({pr.DF.cwiseAbs().maxCoeff(), pr.state.P_T0.cwiseAbs().maxCoeff(),
+                             std::abs(pr.state.P_N0), n.K0 * std::abs(pr.state.g0)});
+  n.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
+  n.L0 = n.F0 / n.K0;
+  detail::require_representable(n.F0, n.L0, "step");
+  // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
+  n.E = detail::ellipse_unit(p.alpha);
+  n.mu = p.mu * n.E;
+  n.C = p.C_T * n.K0;
+  n.cw = pr.wear_coefficient() * n.F0 * n.E;
+  n.al = p.alpha / n.E;
+  n.A = p.A / n.K0;
+  if (!std::isfinite(n.C) || !std::isfinite(n.cw) || !std::isfinite(n.L0) || n.L0 == 0)
+    throw InputError("the step's scales overflow double (C_T |A|, c_w F0 or F0 / |A|): give the "
+                     "data in units of moderate size");
+  // The factorisation, not an explicit inverse: dw0 by a direct solve; the affine maps of P1
+  // (rows of A^-1, A symmetric: A^-1 e_k) by solves with unit vectors.
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(n.A);
+  n.DF = pr.DF / n.F0;
+  n.PT0 = pr.state.P_T0 / n.F0;
+  n.PN0 = pr.state.P_N0 / n.F0;
+  n.g0 = pr.state.g0 / n.L0;
+  const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
+  n.dw0 = ldlt.solve(n.DF + P0);
+  n.ui0 = n.dw0.head<2>() + n.C * n.PT0;
+  for (int k = 0; k < 2; ++k) n.Ui.row(k) = -ldlt.solve(Eigen::Vector3d::Unit(k)).transpose();
+  n.Ui(0, 0) -= n.C;
+  n.Ui(1, 1) -= n.C;
+  n.gc = n.g0 + n.dw0(2);
+  n.gN = -ldlt.solve(Eigen::Vector3d::UnitZ()).transpose();
+  return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fischer-Burmeister functions and Jacobian elements.
+
+using detail::fb_scalar;
+using detail::fb_soc;
+
+/// Phi(z) and an element of its generalized Jacobian, z = (P_TX1, P_TY1, P_N1, lambda)
+/// normalized.
+void residual_map(const Normalized& n, const Vec4& z, Vec4& Phi, Mat4& J) noexcept {
+  const Eigen::Vector3d P1 = z.head<3>();
+  const double PN = z(2), lam = z(3);
+  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
+  const double g1 = n.gc + n.gN.dot(P1) - n.cw * PN * lam;
+  double da, db;
+  Phi(0) = fb_scalar(PN, -g1, da, db);
+  // d(-g1)/dz
+  Eigen::RowVector4d dmg;
+  dmg << -n.gN(0), -n.gN(1), -n.gN(2) + n.cw * lam, n.cw * PN;
+  J.row(0) = db * dmg;
+  J(0, 2) += da;
+  Eigen::Vector3d x, y;
+  x << n.mu * PN, z(0) / n.al(0), z(1) / n.al(1);
+  y << lam, -n.al(0) * ui(0), -n.al(1) * ui(1);
+  Eigen::Matrix<double, 3, 4> dx = Eigen::Matrix<double, 3, 4>::Zero(), dy = dx;
+  dx(0, 2) = n.mu;
+  dx(1, 0) = 1 / n.al(0);
+  dx(2, 1) = 1 / n.al(1);
+  dy(0, 3) = 1;
+  dy.block<1, 3>(1, 0) = -n.al(0) * n.Ui.row(0);
+  dy.block<1, 3>(2, 0) = -n.al(1) * n.Ui.row(1);
+  Eigen::Vector3d phi;
+  Eigen::Matrix3d Jx, Jy;
+  fb_soc(x, y, phi, Jx, Jy);
+  Phi.tail<3>() = phi;
+  J.bottomRows<3>() = Jx * dx + Jy * dy;
+}
+
+double merit(const Vec4& Phi) noexcept { return 0.5 * Phi.squaredNorm(); }
+
+/// The solver's own check in normalized units, besides step_3d_residual: each FB function
+/// small against its arguments, |fb(a, b)| <= 1e-9 (1 + min(|a|, |b|)) + 1e-13 (|a| + |b|),
+/// so that a point with a huge multiplier and a small but nonzero complementarity product
+/// (x interior to K, y not zero) is never taken, whatever the scaling of a relative residual.
+bool fb_small(const Normalized& n, const Vec4& z) noexcept {
+  const Eigen::Vector3d P1 = z.head<3>();
+  const double PN = z(2), lam = z(3);
+  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
+  const double g1 = n.gc + n.gN.dot(P1) - n.cw * PN * lam;
+  double da, db;
+  const double f0 = fb_scalar(PN, -g1, da, db);
+  auto ok = [](double f, double a, double b) {
+    return std::abs(f) <= 1e-9 * (1 + std::min(a, b)) + 1e-13 * (a + b);
+  };
+  if (!ok(f0, std::abs(PN), std::abs(g1))) return false;
+  Eigen::Vector3d x, y, phi;
+  x << n.mu * PN, z(0) / n.al(0), z(1) / n.al(1);
+  y << lam, -n.al(0) * ui(0), -n.al(1) * ui(1);
+  Eigen::Matrix3d Jx, Jy;
+  fb_soc(x, y, phi, Jx, Jy);
+  return ok(phi.norm(), x.norm(), y.norm());
+}
+
+/// Physical values of a normalized iterate, verified on the original problem.
+Step3dValues physical(const Step3dProblem& pr, const Normalized& n, const Vec4& z) noexcept {
+  return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * n.E * z(3));
+}
+
+/// Snaps a verified iterate to its canonical form when that stays verified: separation
+/// (x = 0: P1 = 0 and lambda = |D Dw_T^i|, the smallest admissible multiplier) and stick
+/// (y = 0: lambda = 0).
+Vec4 canonical(const Step3dProblem& pr, const Normalized& n, const Vec4& z, double tol) {
+  const Eigen::Vector3d P1 = z.head<3>();
+  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
+  const double xs = std::max(std::abs(n.mu * z(2)), (z.head<2>().array() / n.al.array()).abs().maxCoeff());
+  const double ys = std::max(std::abs(z(3)), (ui.array() * n.al.array()).abs().maxCoeff());
+  if (xs <= 1e-10 * std::max(1.0, ys)) {
+    Vec4 c(0, 0, 0, 0);
+    c(3) = (n.ui0.array() * n.al.array()).matrix().norm();
+    if (step_3d_residual(pr, physical(pr, n, c)) <= tol && fb_small(n, c)) return c;
+  }
+  if (std::abs(z(3)) <= 1e-10 * std::max(1.0, xs)) {
+    Vec4 c = z;
+    c(3) = 0;
+    if (step_3d_residual(pr, physical(pr, n, c)) <= tol && fb_small(n, c)) return c;
+  }
+  return z;
+}
+
+/// The semismooth Newton iteration from z (normalized). Fills `out` (not `seconds`).
+void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const Step3dSolverOptions& o,
+            Step3dSolverResult& out) {
+  Vec4 Phi, Phi_t, z_t, d, g;
+  Mat4 J, J_t;
+  residual_map(n, z, Phi, J);
+  double psi = merit(Phi);
+  out.iterations = 0;
+  out.solved = false;
+  double res = kInf;
+  for (int it = 0; it < o.max_iterations; ++it) {
+    if (!Phi.allFinite()) break;
+    if (Phi.cwiseAbs().maxCoeff() <= 1e-11) {
+      res = step_3d_residual(pr, physical(pr, n, z));
+      if (res <= o.tol && Phi.cwiseAbs().maxCoeff() <= 1e-15) break;
+    }
+    ++out.iterations;
+    g = J.transpose() * Phi;
+    d = J.fullPivLu().solve(-Phi);
+    const double dn = d.norm();
+    if (!d.allFinite() || g.dot(d) > -1e-12 * std::pow(dn, 2.1)) {
+      d = -g;
+      ++out.gradient_steps;
+    }
+    const double slope = g.dot(d);
+    if (!(slope < 0)) break;  // stationary point of the merit function
+    double t = 1;
+    bool accepted = false;
+    for (int ls = 0; ls < 60; ++ls) {
+      z_t = z + t * d;
+      residual_map(n, z_t, Phi_t, J_t);
+      const double psi_t = merit(Phi_t);
+      if (std::isfinite(psi_t) && psi_t <= psi + 1e-4 * t * slope) {
+        accepted = true;
+        break;
+      }
+      t *= 0.5;
+      ++out.line_search_steps;
+    }
+    if (!accepted) break;
+    const bool progress = (z_t - z).cwiseAbs().maxCoeff() > 0;
+    z = z_t;
+    Phi = Phi_t;
+    J = J_t;
+    psi = merit(Phi);
+    if (!progress) break;
+  }
+  out.merit = psi;
+  res = step_3d_residual(pr, physical(pr, n, z));
+  if (res <= o.tol && fb_small(n, z)) {
+    z = canonical(pr, n, z, o.tol);
+    out.solved = true;
+  }
+  out.solution = make_step_3d_solution(pr, physical(pr, n, z));
+  out.solved = out.solved && out.solution.residual <= o.tol;
+  if (!out.solved)
+    out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
+                  " after " + std::to_string(out.iterations) + " iterations (merit " +
+                  std::to_string(psi) + ")";
+}
+
+void check(const Step3dProblem& pr) {
+  throw_if_invalid(pr.validate(), "step");
+}
+
+Vec4 normalized_start(const Step3dProblem& pr, const Normalized& n, const Step3dStart* s) {
+  if (s == nullptr) return Vec4(n.PT0(0), n.PT0(1), n.PN0, 0);
+  const Vec4 z(s->P_T1(0) / n.F0, s->P_T1(1) / n.F0, s->P_N1 / n.F0, s->lambda / (n.L0 * n.E));
+  if (!z.allFinite()) throw InputError("start point must be finite");
+  (void)pr;
+  return z;
+}
+
+/// Deterministic pseudo-random start i (normalized units).
+Vec4 random_start(const Normalized& n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  const double PN = U(rng) < 0.15 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
+  const double th = 2 * kPi * U(rng), r = U(rng) < 0.3 ? 1.0 : U(rng);
+  const double lam = U(rng) < 0.3 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
+  return Vec4(n.mu * PN * r * n.al(0) * std::cos(th), n.mu * PN * r * n.al(1) * std::sin(th), PN,
+              lam);
+}
+
+bool same_solution(const Step3dSolution& a, const Step3dSolution& b, double F0) {
+  const double d = std::max((a.values.P_T1 - b.values.P_T1).cwiseAbs().maxCoeff(),
+                            std::abs(a.values.P_N1 - b.values.P_N1));
+  return d <= 1e-7 * F0;
+}
+
+}  // namespace
+
+std::string Step3dSolverOptions::validate() const {
+  if (max_iterations < 0) return "max_iterations must be >= 0";
+  if (!(tol > 0) || !std::isfinite(tol)) return "tol must be positive and finite";
+  if (!(time_limit_s > 0)) return "time_limit_s must be positive";
+  return {};
+}
+
+void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {
+  const double F0 = normalize(problem).F0;
+  std::vector<Step3dSolution> out;
+  for (const auto& s : sols) {
+    bool dup = false;
+    for (auto& o : out)
+      if (same_solution(o, s, F0)) {
+        dup = true;
+        if (s.residual < o.residual) o = s;
+      }
+    if (!dup) out.push_back(s);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Step3dSolution& a, const Step3dSolution& b) {
+    if (a.type != b.type) return static_cast<int>(a.type) < static_cast<int>(b.type);
+    if (a.type == Type3d::kSlip) return a.slip_angle < b.slip_angle;
+    return false;
+  });
+  sols = std::move(out);
+}
+
+Step3dSolverResult solve_step_3d_fb_soc(const Step3dProblem& problem,
+                                        const Step3dSolverOptions& options,
+                                        const Step3dStart* start) {
+  check(problem);
+  throw_if_invalid(options.validate(), "options");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Normalized n = normalize(problem);
+  Step3dSolverResult out;
+  out.solver = "fb-soc";
+  newton(problem, n, normalized_start(problem, n, start), options, out);
+  out.seconds = seconds_since(t0);
+  return out;
+}
+
+Step3dSolverResult solve_step_3d_ipopt(const Step3dProblem& problem,
+                                       const Step3dSolverOptions& options,
+                                       const Step3dStart* start) {
+  check(problem);
+  throw_if_invalid(options.validate(), "options");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Normalized n = normalize(problem);
+  const Vec4 xs = normalized_start(problem, n, start);
+  Step3dSolverResult out;
+  out.solver = "ipopt";
+  // u = D Dw_T^i = u0 + U x (2 x 4), q = D^-1 P_T1
+  const Eigen::Matrix2d D = n.al.asDiagonal(), Dinv = n.al.cwiseInverse().asDiagonal();
+  const Eigen::Vector2d u0 = D * n.ui0;
+  Eigen::Matrix<double, 2, 4> U = Eigen::Matrix<double, 2, 4>::Zero();
+  U.leftCols<3>() = D * n.Ui;
+  lcp::MpccProblem m;
+  m.n = 4;
+  m.lower = Vec::Constant(4, -kInf);
+  m.upper = Vec::Constant(4, kInf);
+  m.lower(2) = 0;
+  m.lower(3) = 0;
+  m.x0 = Vec(xs);
+  m.x0(2) = std::max(m.x0(2), 0.0);
+  m.x0(3) = std::max(m.x0(3), 0.0);
+  const Vec ref = m.x0;
+  m.objective = [ref](const Vec& x, double& f) {
+    f = 0.5 * (x - ref).squaredNorm();
+    return true;
+  };
+  m.gradient = [ref](const Vec& x, Vec& g) {
+    g = x - ref;
+    return true;
+  };
+  m.m = 2;  // normality: mu P_N1 u - lambda q = 0
+  m.constraints = [&n, u0, U, Dinv](const Vec& x, Vec& c) {
+    const Eigen::Vector2d u = u0 + U * x.head<4>();
+    const Eigen::Vector2d q = Dinv * x.head<2>();
+    c = n.mu * x(2) * u - x(3) * q;
+    return true;
+  };
+  m.constraint_jacobian = [&n, u0, U, Dinv](const Vec& x, Mat& J) {
+    const Eigen::Vector2d u = u0 + U * x.head<4>();
+    const Eigen::Vector2d q = Dinv * x.head<2>();
+    J = n.mu * x(2) * U;
+    J.col(2) += n.mu * u;
+    J.leftCols(2) -= x(3) * Dinv;
+    J.col(3) -= q;
+    return true;
+  };
+  m.c_lower = Vec::Zero(2);
+  m.c_upper = Vec::Zero(2);
+  m.p = 2;  // (P_N1, -g1), (lambda, mu^2 P_N1^2 - |q|^2)
+  m.G = [](const Vec& x, Vec& G) {
+    G = Vec(2);
+    G << x(2), x(3);
+    return true;
+  };
+  m.G_jacobian = [](const Vec&, Mat& J) {
+    J = Mat::Zero(2, 4);
+    J(0, 2) = 1;
+    J(1, 3) = 1;
+    return true;
+  };
+  m.H = [&n, Dinv](const Vec& x, Vec& H) {
+    const Eigen::Vector3d P1 = x.head<3>();
+    H = Vec(2);
+    H(0) = -(n.gc + n.gN.dot(P1) - n.cw * x(2) * x(3));
+    H(1) = n.mu * n.mu * x(2) * x(2) - (Dinv * x.head<2>()).squaredNorm();
+    return true;
+  };
+  m.H_jacobian = [&n, Dinv](const Vec& x, Mat& J) {
+    J = Mat::Zero(2, 4);
+    J.block<1, 3>(0, 0) = -n.gN;
+    J(0, 2) += n.cw * x(3);
+    J(0, 3) = n.cw * x(2);
+    const Eigen::Vector2d q = Dinv * x.head<2>();
+    J(1, 0) = -2 * q(0) * Dinv(0, 0);
+    J(1, 1) = -2 * q(1) * Dinv(1, 1);
+    J(1, 2) = 2 * n.mu * n.mu * x(2);
+    return true;
+  };
+  m.name = "step_3d";
+  lcp::MpccOptions mo;
+  mo.common.time_limit_s = options.time_limit_s;
+  mo.common.max_iterations = options.max_iterations;
+  mo.polish = false;
+  Step3dSolverOptions polish = options;
+  polish.max_iterations = 50;
+  Step3dSolverResult best;
+  best.solver = "ipopt";
+  bool found = false;
+  int polish_iterations = 0;
+  auto try_polish = [&](const Vec& x) {
+    if (found || !x.allFinite() || x.size() != 4) return found;
+    Step3dSolverResult r;
+    r.solver = "ipopt";
+    newton(problem, n, Vec4(x.head<4>()), polish, r);
+    polish_iterations += r.iterations;
+    if (r.solved) {
+      best = r;
+      found = true;
+    }
+    return found;
+  };
+  mo.early_stop = [&](const Vec& x) { return try_polish(x); };
+  lcp::MpccResult mr;
+  try {
+    mr = lcp::solve_mpcc(m, mo);
+    if (!found) try_polish(mr.x);
+  } catch (const InputError& e) {
+    out.message = std::string("ipopt: ") + e.what();
+  }
+  if (found) {
+    out.solution = best.solution;
+    out.solved = true;
+    out.merit = best.merit;
+    out.message = "MPCC (Scholtes relaxation, Ipopt) point polished by FB-SOC Newton";
+  } else {
+    if (mr.x.size() == 4) {
+      const Vec4 z(mr.x.head<4>());
+      out.solution = make_step_3d_solution(problem, physical(problem, n, z));
+    } else {
+      out.solution.residual = kInf;
+    }
+    if (out.message.empty())
+      out.message = "ipopt: no verified solution (" + mr.message + ")";
+  }
+  out.iterations = mr.iterations + polish_iterations;
+  out.seconds = seconds_since(t0);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Faceted step.
+
+namespace {
+
+/// The polygon: unit outward normals n_j and supports h_j of the facets of the inscribed
+/// polygon with vertices D (cos theta_i, sin theta_i).
+void polygon(const Eigen::Vector2d& al, int k, Eigen::Matrix<double, 2, Eigen::Dynamic>& Nh,
+             Eigen::Matrix<double, 2, Eigen::Dynamic>& N, Eigen::VectorXd& h) {
+  std::vector<Eigen::Vector2d> vert(static_cast<std::size_t>(k));
+  for (int i = 0; i < k; ++i) {
+    const double th = 2 * kPi * i / k;
+    vert[i] = al.asDiagonal() * Eigen::Vector2d(std::cos(th), std::sin(th));
+  }
+  N.resize(2, k);
+  Nh.resize(2, k);
+  h.resize(k);
+  for (int j = 0; j < k; ++j) {
+    const Eigen::Vector2d e = vert[(j + 1) % k] - vert[j];
+    N.col(j) = Eigen::Vector2d(e(1), -e(0)).normalized();
+    h(j) = N.col(j).dot(vert[j]);
+    Nh.col(j) = N.col(j) / h(j);
+  }
+}
+
+/// Equilibrium for given (P_N1, lambda): s = (DP_T, Dw) from the 5x5 system
+///   DP_T + A_T. Dw = DF_T,  A_N. Dw = DF_N + P_N0 - P_N1,  Dw_T - C DP_T = Nh lambda,
+/// affine: s = S0 + SN P_N1 + SL lambda.
+struct FacetMap {
+  Eigen::Matrix<double, 5, 1> S0, SN;
+  Eigen::Matrix<double, 5, Eigen::Dynamic> SL;
+};
+
+FacetMap facet_map(const Normalized& n, const Eigen::Matrix<double, 2, Eigen::Dynamic>& Nh) {
+  Eigen::Matrix<double, 5, 5> E = Eigen::Matrix<double, 5, 5>::Zero();
+  E.block<2, 2>(0, 0).setIdentity();
+  E.block<2, 3>(0, 2) = n.A.topRows<2>();
+  E.block<1, 3>(2, 2) = n.A.row(2);
+  E.block<2, 2>(3, 0) = -n.C * Eigen::Matrix2d::Identity();
+  E.block<2, 2>(3, 2).setIdentity();
+  const Eigen::FullPivLU<Eigen::Matrix<double, 5, 5>> lu(E);
+  Eigen::Matrix<double, 5, 1> b0 = Eigen::Matrix<double, 5, 1>::Zero(), bN = b0;
+  b0 << n.DF(0), n.DF(1), n.DF(2) + n.PN0, 0, 0;
+  bN(2) = -1;
+  const int k = static_cast<int>(Nh.cols());
+  Eigen::Matrix<double, 5, Eigen::Dynamic> BL = Eigen::Matrix<double, 5, Eigen::Dynamic>::Zero(5, k);
+  BL.bottomRows<2>() = Nh;
+  FacetMap f;
+  f.S0 = lu.solve(b0);
+  f.SN = lu.solve(bN);
+  f.SL = lu.solve(BL);
+  return f;
+}
+
+/// Physical values (original units) of the faceted solution (P_N1, lambda) normalized.
+Step3dValues facet_values(const Step3dProblem& pr, const Normalized& n, const FacetMap& f,
+                          const Eigen::Matrix<double, 2, Eigen::Dynamic>& Nh, double PN,
+                          const Eigen::VectorXd& lam) {
+  const Eigen::Matrix<double, 5, 1> s = f.S0 + f.SN * PN + f.SL * lam;
+  Step3dValues v;
+  const double sum = lam.sum();
+  v.DP_T = n.F0 * s.head<2>();
+  v.P_T1 = pr.state.P_T0 + v.DP_T;
+  v.P_N1 = n.F0 * PN;
+  v.DP_N = v.P_N1 - pr.state.P_N0;
+  v.Dw_T = n.L0 * s.segment<2>(2);
+  v.Dw_N = n.L0 * s(4);
+  v.Dw_Ti = n.L0 * (Nh * lam);
+  v.Dw_w = n.L0 * n.cw * PN * sum;
+  v.g1 = pr.state.g0 + v.Dw_N - v.Dw_w;
+  v.lambda = n.L0 * n.E * sum;
+  if (PN == 0) v.lambda = (pr.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
+  return v;
+}
+
+}  // namespace
+
+FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, int n_starts,
+                                          std::uint64_t seed) {
+  check(problem);
+  if (k < 3 || k > lcp::kMaxEnumerationSize)
+    throw InputError("facets must be in [3, " + std::to_string(lcp::kMaxEnumerationSize) +
+                     "], got " + std::to_string(k));
+  if (n_starts < 1) throw InputError("n_starts must be >= 1");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Normalized n = normalize(problem);
+  Eigen::Matrix<double, 2, Eigen::Dynamic> N, Nh;
+  Eigen::VectorXd h;
+  polygon(n.al, k, Nh, N, h);
+  const FacetMap f = facet_map(n, Nh);
+  FacetedStep3dResult out;
+  out.facets = k;
+  std::vector<Step3dSolution> sols;
+  auto add = [&](double PN, const Eigen::VectorXd& lam) {
+    sols.push_back(make_step_3d_solution(problem, facet_values(problem, n, f, Nh, PN, lam)));
+  };
+  // w_j = mu P_N1 - Nh_j . (P_T0 + DP_T), affine in (P_N1, lambda)
+  if (n.cw == 0) {
+    out.lcp = true;
+    out.size = k;
+    // Separation (P_N1 = 0, P_T1 = 0: every multiplier free): directly, when g1 <= 0.
+    {
+      const Eigen::Matrix<double, 5, 1> s = f.S0 + f.SN * 0.0;
+      // P_T1 = 0 requires DP_T = -P_T0; equilibrium with P1 = 0 gives Dw = A^-1 (DF + P0)
+      const double gN1 = n.gc;  // g1 at P1 = 0
+      (void)s;
+      // g1 = g0 + (A^-1 (DF + P0))_N in normalised units: "<= 0" up to the rounding of that
+      // sum (its terms' size, not a fixed 1e-12)
+      const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
+      const double g_terms = std::abs(n.g0) + n.gN.cwiseAbs().dot((n.DF + P0).cwiseAbs());
+      if (gN1 <= 64 * 2.220446049250313e-16 * g_terms) {
+        Step3dValues v = step_3d_values(problem, Eigen::Vector2d::Zero(), 0.0, 0.0);
+        v.lambda = (problem.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
+        sols.push_back(make_step_3d_solution(problem, v));
+      }
+    }
+    // Contact (g1 = 0): P_N1 from the gap row, then an LCP of size k in lambda. With
+    // s = S0 + SN P_N1 + SL lambda, g1 = g0 + Dw_N = g0 + s(4) = 0:
+    //   P_N1 = -(g0 + S0(4) + SL.row(4) lambda) / SN(4)   (SN(4) != 0: A SPD).
+    const double sn = f.SN(4);
+    const double pn0 = -(n.g0 + f.S0(4)) / sn;
+    const Eigen::RowVectorXd pnl = -f.SL.row(4) / sn;
+    // DP_T = S0T + SNT P_N1 + SLT lambda
+    const Eigen::Vector2d dpt0 = f.S0.head<2>() + f.SN.head<2>() * pn0;
+    const Eigen::Matrix<double, 2, Eigen::Dynamic> dptl = f.SL.topRows<2>() + f.SN.head<2>() * pnl;
+    LcpProblem lcp;
+    lcp.M = n.mu * Eigen::VectorXd::Ones(k) * pnl - Nh.transpose() * dptl;
+    lcp.q = n.mu * pn0 * Eigen::VectorXd::Ones(k) - Nh.transpose() * (n.PT0 + dpt0);
+    lcp::EnumerationOptions eo;
+    const lcp::SolutionSet zs = lcp::enumerate_all(lcp, eo);
+    out.nodes = zs.nodes;
+    out.set.complete = zs.complete;
+    out.set.message = zs.message;
+    for (const auto& e : zs.solutions) {
+      const double PN = std::max(0.0, pn0 + pnl.dot(e.z));
+      add(PN, e.z);
+    }
+    // A piece of positive dimension is one physical point when its rays move no physical
+    // quantity (weights of the facet normals that cancel) and its vertices coincide.
+    for (const auto& piece : zs.pieces) {
+      bool one = true;
+      for (const auto& ray : piece.rays) {
+        const Eigen::Vector2d flow = Nh * ray;
+        one = one && flow.cwiseAbs().maxCoeff() <= 1e-9 && std::abs(pnl.dot(ray)) <= 1e-9;
+      }
+      const auto& v0 = zs.solutions[piece.vertices.front()].z;
+      for (int vi : piece.vertices) {
+        const auto& z = zs.solutions[vi].z;
+        one = one && (Nh * (z - v0)).cwiseAbs().maxCoeff() <= 1e-8 &&
+              std::abs(pnl.dot(z - v0)) <= 1e-8;
+      }
+      if (!one) {
+        out.set.complete = false;
+        if (out.set.message.empty())
+          out.set.message = "the faceted step has a continuum of physical solutions (a polygon "
+                            "face aligned with the load): listed by its extreme points only";
+      }
+    }
+  } else {
+    // With wear: NCP of size 1 + k in (P_N1, lambda):
+    //   F_0 = -g1 = -(g0 + s(4)) + cw P_N1 sum(lambda),  F_j = mu P_N1 - Nh_j . (P_T0 + DP_T).
+    out.lcp = false;
+    out.size = k + 1;
+    const int m = k + 1;
+    Mat M(m, m);
+    Vec q(m);
+    M(0, 0) = -f.SN(4);
+    M.block(0, 1, 1, k) = -f.SL.row(4);
+    q(0) = -(n.g0 + f.S0(4));
+    M.block(1, 0, k, 1) = n.mu * Eigen::VectorXd::Ones(k) - Nh.transpose() * f.SN.head<2>();
+    M.block(1, 1, k, k) = -Nh.transpose() * f.SL.topRows<2>();
+    q.tail(k) = -Nh.transpose() * (n.PT0 + f.S0.head<2>());
+    const double cw = n.cw;
+    McpProblem mcp = make_ncp(
+        m,
+        [M, q, cw, k](const Vec& z, Vec& F) {
+          F = M * z + q;
+          F(0) += cw * z(0) * z.tail(k).sum();
+          return true;
+        },
+        [M, cw, k](const Vec& z, Mat& J) {
+          J = M;
+          J(0, 0) += cw * z.tail(k).sum();
+          J.block(0, 1, 1, k).array() += cw * z(0);
+          return true;
+        },
+        "faceted_step_3d");
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    CommonOptions co;
+    co.tol = 1e-11;
+    co.time_limit_s = 10;
+    const SolverEntry* fbn = lcp::solvers().find("fb-newton");
+    const SolverEntry* ipo = lcp::solvers().find("ipopt");
+    for (int s = 0; s < n_starts; ++s) {
+      Vec x0 = Vec::Zero(m);
+      if (s == 0) {
+        x0(0) = n.PN0;
+      } else {
+        x0(0) = U(rng) < 0.2 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
+        const int j = static_cast<int>(U(rng) * k) % k;
+        x0(1 + j) = std::exp(-4 + 5.5 * U(rng));
+      }
+      for (const SolverEntry* e : {fbn, ipo}) {
+        if (e == nullptr || !e->solve_mcp) continue;
+        if (e == ipo && s >= 2) continue;
+        mcp.x0 = x0;
+        const SolveResult r = e->solve_mcp(mcp, co);
+        if (is_solution(r.status) && r.z.size() == m)
+          add(std::max(0.0, r.z(0)), Eigen::VectorXd(r.z.tail(k).cwiseMax(0.0)));
+      }
+    }
+    out.set.complete = false;
+    out.set.message = "with wear the faceted step is a nonlinear complementarity problem, solved "
+                      "from " + std::to_string(n_starts) + " starts: other solutions may exist";
+  }
+  sort_and_dedup_step_3d(problem, sols);
+  out.set.solutions = std::move(sols);
+  out.seconds = seconds_since(t0);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Chain and multistart.
+
+std::string Step3dChainOptions::validate() const {
+  if (chain.empty()) return "chain must not be empty";
+  for (const auto& c : chain)
+    if (c != "exact" && c != "fb-soc" && c != "ipopt")
+      return "chain: unknown link '" + c + "' (valid: exact, fb-soc, ipopt)";
+  if (const std::string e = solver.validate(); !e.empty()) return "solver: " + e;
+  return {};
+}
+
+Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainOptions& options) {
+  check(problem);
+  throw_if_invalid(options.validate(), "options");
+  Step3dChainResult out;
+  for (const auto& link : options.chain) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Step3dAttempt a;
+    a.solver = link;
+    a.residual = kInf;
+    Step3dSolution sol;
+    if (link == "exact") {
+      const Step3dSolutionSet s = enumerate_step_3d(problem);
+      const Step3dSolution* best = nullptr;
+      double bd = kInf;
+      for (const auto& x : s.solutions) {
+        const double d = std::hypot((x.values.P_T1 - problem.state.P_T0).norm(),
+                                    x.values.P_N1 - problem.state.P_N0);
+        if (x.residual <= options.solver.tol && d < bd) {
+          bd = d;
+          best = &x;
+        }
+      }
+      if (best != nullptr) {
+        sol = *best;
+        a.solved = true;
+        a.residual = best->residual;
+        a.message = std::to_string(s.count()) + " solution(s)" +
+                    (s.complete ? "" : " (not proved complete: " + s.message + ")") +
+                    "; the one nearest the start state";
+      } else {
+        a.message = s.complete ? "no solution (complete enumeration)"
+                               : "none found (not proved complete: " + s.message + ")";
+      }
+    } else {
+      const Step3dSolverResult r = link == "fb-soc"
+                                       ? solve_step_3d_fb_soc(problem, options.solver)
+                                       : solve_step_3d_ipopt(problem, options.solver);
+      a.solved = r.solved;
+      a.residual = r.solution.residual;
+      a.iterations = r.iterations;
+      a.message = r.message;
+      sol = r.solution;
+    }
+    a.seconds = seconds_since(t0);
+    out.attempts.push_back(a);
+    if (a.solved) {
+      out.solved = true;
+      out.solver = link;
+      out.solution = sol;
+      break;
+    }
+  }
+  if (!out.solved) {
+    out.message = "no link of the chain found a verified solution";
+    for (const auto& a : out.attempts) out.message += "; " + a.solver + ": " + a.message;
+  }
+  return out;
+}
+
+Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
+                                     std::uint64_t seed) {
+  check(problem);
+  if (n_starts < 0) throw InputError("n_starts must be >= 0");
+  const Normalized n = normalize(problem);
+  std::mt19937_64 rng(seed);
+  std::vector<Step3dSolution> sols;
+  Step3dSolverOptions o;
+  int fb_ok = 0, ip_ok = 0, fb_runs = 0, ip_runs = 0;
+  for (int i = 0; i <= n_starts; ++i) {
+    const Vec4 z = i == 0 ? Vec4(n.PT0(0), n.PT0(1), n.PN0, 0) : random_start(n, rng);
+    Step3dStart s;
+    s.P_T1 = n.F0 * z.head<2>();
+    s.P_N1 = n.F0 * z(2);
+    s.lambda = n.L0 * n.E * z(3);
+    const Step3dSolverResult r = solve_step_3d_fb_soc(problem, o, &s);
+    ++fb_runs;
+    if (r.solved) {
+      ++fb_ok;
+      sols.push_back(r.solution);
+    }
+    if (i % 4 == 0) {
+      const Step3dSolverResult q = solve_step_3d_ipopt(problem, o, &s);
+      ++ip_runs;
+      if (q.solved) {
+        ++ip_ok;
+        sols.push_back(q.solution);
+      }
+    }
+  }
+  sort_and_dedup_step_3d(problem, sols);
+  Step3dSolutionSet set;
+  set.solutions = std::move(sols);
+  set.complete = false;
+  set.message = "multistart (" + std::to_string(fb_ok) + "/" + std::to_string(fb_runs) +
+                " FB-SOC and " + std::to_string(ip_ok) + "/" + std::to_string(ip_runs) +
+                " Ipopt runs verified): local solvers cannot prove that no other solution exists";
+  return set;
+}
+
+}  // namespace cpkit::rate3d

@@ -1,0 +1,542 @@
+// One implicit step of N coupled 3-D contact points (system_step_3d.hpp): residual, semismooth
+// Newton on the per-point FB / SOC-FB functions (soc_fb.hpp, as the one-point solver) and a
+// multistart. Everything runs in units normalized by the system's force and stiffness scales;
+// every answer is verified on the original problem by system_step_3d_residual.
+#include "cpkit/rate_problem/step/system_step_3d.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "soc_fb.hpp"
+#include "step_3d_terms.hpp"
+#include "../model/unit_scaling.hpp"
+
+namespace cpkit::rate3d {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+using Vec = Eigen::VectorXd;
+using Mat = Eigen::MatrixXd;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The system's scales: forces F0, stiffness K0, lengths L0 = F0 / K0.
+struct Scales {
+  double F0 = 1, K0 = 1;
+  double L0() const noexcept { return F0 / K0; }
+};
+
+Scales scales_of(const SystemStep3dProblem& p) noexcept {
+  Scales s;
+  s.K0 = p.system.A.size() > 0 ? p.system.A.cwiseAbs().maxCoeff() : 1.0;
+  if (!(s.K0 > 0) || !std::isfinite(s.K0)) s.K0 = 1;
+  double f = p.DF.size() > 0 ? p.DF.cwiseAbs().maxCoeff() : 0.0;
+  for (const Step3dState& st : p.states) {
+    const double g = std::abs(st.g0) * s.K0;
+    f = std::max({f, st.P_T0.cwiseAbs().maxCoeff(), std::abs(st.P_N0), std::isfinite(g) ? g : 0.0});
+  }
+  s.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
+  return s;
+}
+
+bool sizes_ok(const SystemStep3dProblem& p) noexcept {
+  const int N = p.n_points();
+  return N >= 1 && p.system.A.rows() == 3 * N && p.system.A.cols() == 3 * N &&
+         static_cast<int>(p.states.size()) == N && p.DF.size() == 3 * N;
+}
+
+/// Point i alone in normalized units (no A: the local terms do not use it).
+Step3dProblem normalized_point(const SystemStep3dProblem& p, int i, const Scales& s) {
+  Step3dProblem q = p.point_problem(i);
+  q.params.A /= s.K0;
+  q.params.C_T *= s.K0;
+  q.params.k_a *= s.F0;
+  q.wear.k_M *= s.F0;
+  detail::normalize_ellipse(q.params);  // lambda / ellipse_unit (normalized_values)
+  q.state.P_T0 /= s.F0;
+  q.state.P_N0 /= s.F0;
+  q.state.g0 /= s.L0();
+  q.DF /= s.F0;
+  return q;
+}
+
+/// `ellipse`: detail::ellipse_unit of the point's alpha (the multiplier's unit).
+Step3dValues normalized_values(Step3dValues v, const Scales& s, double ellipse) noexcept {
+  const double f = 1 / s.F0, d = 1 / s.L0();
+  v.DP_T *= f;
+  v.P_T1 *= f;
+  v.DP_N *= f;
+  v.P_N1 *= f;
+  v.Dw_T *= d;
+  v.Dw_Ti *= d;
+  v.Dw_N *= d;
+  v.Dw_w *= d;
+  v.g1 *= d;
+  v.lambda *= d / ellipse;
+  return v;
+}
+
+/// The step in normalized units with the affine maps of z (4N; per point (P_TX, P_TY, P_N,
+/// lambda)): Dw_T,i^i = ui0_i + Ui_i z, g1_i = gc_i + gz_i . z - cw_i P_N1,i lambda_i.
+struct Normalized {
+  int N = 0;
+  double K0 = 1, F0 = 1, L0 = 1;
+  std::vector<double> mu, C, cw;
+  std::vector<double> E;  ///< per point: the ellipse's unit (lambda / (L0 E) is normalized)
+  std::vector<Eigen::Vector2d> al;
+  Vec z0;      ///< start state (lambda = 0)
+  Mat Ui;      ///< 2N x 4N
+  Vec ui0;     ///< 2N
+  Mat gz;      ///< N x 4N
+  Vec gc;      ///< N
+};
+
+Normalized normalize(const SystemStep3dProblem& pr) {
+  Normalized n;
+  const int N = pr.n_points();
+  n.N = N;
+  const Scales s = scales_of(pr);
+  n.K0 = s.K0;
+  n.F0 = s.F0;
+  n.L0 = s.L0();
+  detail::require_representable(n.F0, n.L0, "step");
+  if (!std::isfinite(n.L0) || n.L0 == 0)
+    throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
+                     "of moderate size");
+  const Mat A = pr.system.A / n.K0;
+  const Eigen::LDLT<Mat> ldlt(A);
+  const Vec DF = pr.DF / n.F0;
+  Vec P0(3 * N);
+  n.z0 = Vec::Zero(4 * N);
+  for (int i = 0; i < N; ++i) {
+    const Step3dProblem q = pr.point_problem(i);
+    // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
+    const double E = detail::ellipse_unit(q.params.alpha);
+    n.E.push_back(E);
+    n.mu.push_back(q.params.mu * E);
+    n.C.push_back(q.params.C_T * n.K0);
+    n.cw.push_back(q.wear_coefficient() * n.F0 * E);
+    n.al.push_back(q.params.alpha / E);
+    if (!std::isfinite(n.C.back()) || !std::isfinite(n.cw.back()))
+      throw InputError("step: point " + std::to_string(i + 1) + ": C_T |A| or c_w F0 overflows "
+                       "double: give the data in units of moderate size");
+    P0.segment<3>(3 * i) << q.state.P_T0 / n.F0, q.state.P_N0 / n.F0;
+    n.z0.segment<3>(4 * i) = P0.segment<3>(3 * i);
+  }
+  // Dw = dw0 - A^-1 P1 by the factorisation (no explicit inverse): dw0 by a direct solve, the
+  // linear map of z (A^-1 applied to the spreading of z's force part) by a solve with it.
+  const Vec dw0 = ldlt.solve(DF + P0);
+  Mat Sz = Mat::Zero(3 * N, 4 * N);  // P1 = Sz z (column 4j + k <- row 3j + k, k < 3)
+  for (int j = 0; j < N; ++j)
+    for (int k = 0; k < 3; ++k) Sz(3 * j + k, 4 * j + k) = 1;
+  const Mat Az = ldlt.solve(Sz);
+  if (ldlt.info() != Eigen::Success || !dw0.allFinite() || !Az.allFinite())
+    throw InputError("step: A cannot be factorised in double precision");
+  n.Ui = Mat::Zero(2 * N, 4 * N);
+  n.ui0 = Vec::Zero(2 * N);
+  n.gz = Mat::Zero(N, 4 * N);
+  n.gc = Vec::Zero(N);
+  for (int i = 0; i < N; ++i) {
+    n.Ui.middleRows(2 * i, 2) = -Az.middleRows(3 * i, 2);
+    n.Ui(2 * i, 4 * i) -= n.C[i];
+    n.Ui(2 * i + 1, 4 * i + 1) -= n.C[i];
+    n.ui0.segment<2>(2 * i) = dw0.segment<2>(3 * i) + n.C[i] * P0.segment<2>(3 * i);
+    n.gz.row(i) = -Az.row(3 * i + 2);
+    n.gc(i) = pr.states[static_cast<std::size_t>(i)].g0 / n.L0 + dw0(3 * i + 2);
+  }
+  return n;
+}
+
+/// Phi(z) (4N) and an element of its generalized Jacobian (4N x 4N).
+void residual_map(const Normalized& n, const Vec& z, Vec& Phi, Mat& J) {
+  const Vec ui = n.ui0 + n.Ui * z;
+  const Vec g1 = n.gc + n.gz * z;
+  J.setZero();
+  for (int i = 0; i < n.N; ++i) {
+    const int r = 4 * i;
+    const double PN = z(r + 2), lam = z(r + 3);
+    const double g = g1(i) - n.cw[i] * PN * lam;
+    double da, db;
+    Phi(r) = detail::fb_scalar(PN, -g, da, db);
+    J.row(r) = -db * n.gz.row(i);
+    J(r, r + 2) += da + db * n.cw[i] * lam;
+    J(r, r + 3) += db * n.cw[i] * PN;
+    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
+    Eigen::Vector3d x, y, phi;
+    x << n.mu[i] * PN, z(r) / al(0), z(r + 1) / al(1);
+    y << lam, -al(0) * ui(2 * i), -al(1) * ui(2 * i + 1);
+    Eigen::Matrix3d Jx, Jy;
+    detail::fb_soc(x, y, phi, Jx, Jy);
+    Phi.segment<3>(r + 1) = phi;
+    // dx/dz: own columns only; dy/dz: lambda_i and the rows of Ui (all points).
+    Eigen::Matrix3d dxo = Eigen::Matrix3d::Zero();  // d x / d(P_TX, P_TY, P_N)_i
+    dxo(0, 2) = n.mu[i];
+    dxo(1, 0) = 1 / al(0);
+    dxo(2, 1) = 1 / al(1);
+    J.block(r + 1, r, 3, 3) += Jx * dxo;
+    Mat dy = Mat::Zero(3, 4 * n.N);
+    dy(0, r + 3) = 1;
+    dy.row(1) = -al(0) * n.Ui.row(2 * i);
+    dy.row(2) = -al(1) * n.Ui.row(2 * i + 1);
+    J.middleRows(r + 1, 3) += Jy * dy;
+  }
+}
+
+/// Each FB function small against its arguments (as the one-point solver's check).
+bool fb_small(const Normalized& n, const Vec& z) {
+  const Vec ui = n.ui0 + n.Ui * z;
+  const Vec g1 = n.gc + n.gz * z;
+  auto ok = [](double f, double a, double b) {
+    return std::abs(f) <= 1e-9 * (1 + std::min(a, b)) + 1e-13 * (a + b);
+  };
+  for (int i = 0; i < n.N; ++i) {
+    const int r = 4 * i;
+    const double PN = z(r + 2), lam = z(r + 3);
+    const double g = g1(i) - n.cw[i] * PN * lam;
+    double da, db;
+    if (!ok(detail::fb_scalar(PN, -g, da, db), std::abs(PN), std::abs(g))) return false;
+    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
+    Eigen::Vector3d x, y, phi;
+    x << n.mu[i] * PN, z(r) / al(0), z(r + 1) / al(1);
+    y << lam, -al(0) * ui(2 * i), -al(1) * ui(2 * i + 1);
+    Eigen::Matrix3d Jx, Jy;
+    detail::fb_soc(x, y, phi, Jx, Jy);
+    if (!ok(phi.norm(), x.norm(), y.norm())) return false;
+  }
+  return true;
+}
+
+std::vector<Step3dValues> physical(const SystemStep3dProblem& pr, const Normalized& n,
+                                   const Vec& z) {
+  Vec P1(3 * n.N), lam(n.N);
+  for (int i = 0; i < n.N; ++i) {
+    P1.segment<3>(3 * i) = n.F0 * z.segment<3>(4 * i);
+    lam(i) = n.L0 * n.E[static_cast<std::size_t>(i)] * z(4 * i + 3);
+  }
+  return system_step_3d_values(pr, P1, lam);
+}
+
+bool verified(const SystemStep3dProblem& pr, const Normalized& n, const Vec& z, double tol) {
+  return system_step_3d_residual(pr, physical(pr, n, z)) <= tol && fb_small(n, z);
+}
+
+/// Snaps each point of a verified iterate to its canonical form when the whole stays verified:
+/// separation (x_i = 0: P1_i = 0, lambda_i = |D Dw_T^i|) and stick (y_i = 0: lambda_i = 0).
+Vec canonical(const SystemStep3dProblem& pr, const Normalized& n, Vec z, double tol) {
+  for (int i = 0; i < n.N; ++i) {
+    const int r = 4 * i;
+    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
+    const Vec ui = n.ui0 + n.Ui * z;
+    const Eigen::Vector2d u = ui.segment<2>(2 * i);
+    const double xs = std::max(std::abs(n.mu[i] * z(r + 2)),
+                               (z.segment<2>(r).array() / al.array()).abs().maxCoeff());
+    const double ys = std::max(std::abs(z(r + 3)), (u.array() * al.array()).abs().maxCoeff());
+    if (xs <= 1e-10 * std::max(1.0, ys)) {
+      Vec c = z;
+      c.segment<3>(r).setZero();
+      const Vec uc = n.ui0 + n.Ui * c;
+      c(r + 3) = (uc.segment<2>(2 * i).array() * al.array()).matrix().norm();
+      if (verified(pr, n, c, tol)) {
+        z = c;
+        continue;
+      }
+    }
+    if (std::abs(z(r + 3)) <= 1e-10 * std::max(1.0, xs)) {
+      Vec c = z;
+      c(r + 3) = 0;
+      if (verified(pr, n, c, tol)) z = c;
+    }
+  }
+  return z;
+}
+
+void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z,
+            const Step3dSolverOptions& o, SystemStep3dSolverResult& out) {
+  const int m = 4 * n.N;
+  Vec Phi(m), Phi_t(m), z_t(m), d(m), g(m);
+  Mat J(m, m), J_t(m, m);
+  residual_map(n, z, Phi, J);
+  double psi = 0.5 * Phi.squaredNorm();
+  out.iterations = 0;
+  out.solved = false;
+  for (int it = 0; it < o.max_iterations; ++it) {
+    if (!Phi.allFinite()) break;
+    if (Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
+        system_step_3d_residual(pr, physical(pr, n, z)) <= o.tol)
+      break;
+    ++out.iterations;
+    g = J.transpose() * Phi;
+    d = J.fullPivLu().solve(-Phi);
+    const double dn = d.norm();
+    if (!d.allFinite() || g.dot(d) > -1e-12 * std::pow(dn, 2.1)) {
+      d = -g;
+      ++out.gradient_steps;
+    }
+    const double slope = g.dot(d);
+    if (!(slope < 0)) break;  // stationary point of the merit function
+    double t = 1;
+    bool accepted = false;
+    for (int ls = 0; ls < 60; ++ls) {
+      z_t = z + t * d;
+      residual_map(n, z_t, Phi_t, J_t);
+      const double psi_t = 0.5 * Phi_t.squaredNorm();
+      if (std::isfinite(psi_t) && psi_t <= psi + 1e-4 * t * slope) {
+        accepted = true;
+        break;
+      }
+      t *= 0.5;
+      ++out.line_search_steps;
+    }
+    if (!accepted) break;
+    const bool progress = (z_t - z).cwiseAbs().maxCoeff() > 0;
+    z = z_t;
+    Phi = Phi_t;
+    J = J_t;
+    psi = 0.5 * Phi.squaredNorm();
+    if (!progress) break;
+  }
+  out.merit = psi;
+  if (verified(pr, n, z, o.tol)) {
+    z = canonical(pr, n, z, o.tol);
+    out.solved = true;
+  }
+  out.solution = make_system_step_3d_solution(pr, physical(pr, n, z));
+  out.solved = out.solved && out.solution.residual <= o.tol;
+  if (!out.solved)
+    out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
+                  " after " + std::to_string(out.iterations) + " iterations (merit " +
+                  std::to_string(psi) + ")";
+}
+
+void check(const SystemStep3dProblem& pr) { throw_if_invalid(pr.validate(), "step"); }
+
+/// Deterministic pseudo-random start (normalized), per point as the one-point multistart.
+Vec random_start(const Normalized& n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0, 1);
+  Vec z(4 * n.N);
+  for (int i = 0; i < n.N; ++i) {
+    const double PN = U(rng) < 0.15 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
+    const double th = 2 * kPi * U(rng), r = U(rng) < 0.3 ? 1.0 : U(rng);
+    const double lam = U(rng) < 0.3 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
+    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
+    z.segment<4>(4 * i) << n.mu[i] * PN * r * al(0) * std::cos(th),
+        n.mu[i] * PN * r * al(1) * std::sin(th), PN, lam;
+  }
+  return z;
+}
+
+bool same_solution(const SystemStep3dSolution& a, const SystemStep3dSolution& b, double F0) {
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const Step3dValues &u = a.points[i].values, &v = b.points[i].values;
+    if (std::max((u.P_T1 - v.P_T1).cwiseAbs().maxCoeff(), std::abs(u.P_N1 - v.P_N1)) > 1e-7 * F0)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string SystemStep3dProblem::validate() const {
+  const int N = n_points();
+  if (N < 1) return "the system has no points";
+  if (system.A.rows() != 3 * N || system.A.cols() != 3 * N)
+    return "A is " + std::to_string(system.A.rows()) + " x " + std::to_string(system.A.cols()) +
+           ", expected 3N x 3N = " + std::to_string(3 * N) + " x " + std::to_string(3 * N);
+  if (static_cast<int>(states.size()) != N)
+    return std::to_string(states.size()) + " start states for " + std::to_string(N) + " points";
+  if (DF.size() != 3 * N)
+    return "DF has " + std::to_string(DF.size()) + " entries, expected 3N = " + std::to_string(3 * N);
+  if (!system.A.allFinite()) return "A is not finite";
+  const double a = system.A.cwiseAbs().maxCoeff();
+  if (!((system.A - system.A.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * a))
+    return "A is not symmetric";
+  const Eigen::LDLT<Mat> ldlt(system.A / a);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
+      !(ldlt.vectorD().minCoeff() > 1e-14 * ldlt.vectorD().cwiseAbs().maxCoeff()))
+    return "A is not positive definite";
+  for (int i = 0; i < N; ++i)
+    if (const std::string e = point_problem(i).validate(); !e.empty())
+      return "point " + std::to_string(i + 1) + ": " + e;
+  return {};
+}
+
+Step3dProblem SystemStep3dProblem::point_problem(int i) const {
+  Step3dProblem p;
+  p.params = system.point_parameters(i);
+  p.wear = wear;
+  p.state = states.at(static_cast<std::size_t>(i));
+  p.DF = DF.segment<3>(3 * i);
+  return p;
+}
+
+std::vector<Step3dValues> system_step_3d_values(const SystemStep3dProblem& p, const Vec& P1,
+                                                const Vec& lambda) {
+  const int N = p.n_points();
+  if (!sizes_ok(p) || P1.size() != 3 * N || lambda.size() != N)
+    throw InputError("step: system_step_3d_values: sizes do not match the system (N = " +
+                     std::to_string(N) + ")");
+  Vec P0(3 * N);
+  for (int i = 0; i < N; ++i) {
+    const Step3dState& s = p.states[static_cast<std::size_t>(i)];
+    P0.segment<3>(3 * i) << s.P_T0, s.P_N0;
+  }
+  const Vec DP = P1 - P0;
+  const Vec Dw = p.system.A.ldlt().solve(p.DF - DP);
+  std::vector<Step3dValues> out(static_cast<std::size_t>(N));
+  for (int i = 0; i < N; ++i) {
+    const Step3dProblem q = p.point_problem(i);
+    Step3dValues& v = out[static_cast<std::size_t>(i)];
+    v.P_T1 = P1.segment<2>(3 * i);
+    v.P_N1 = P1(3 * i + 2);
+    v.lambda = lambda(i);
+    v.DP_T = DP.segment<2>(3 * i);
+    v.DP_N = DP(3 * i + 2);
+    v.Dw_T = Dw.segment<2>(3 * i);
+    v.Dw_N = Dw(3 * i + 2);
+    v.Dw_Ti = v.Dw_T - q.params.C_T * v.DP_T;
+    v.Dw_w = q.wear_coefficient() * std::max(v.P_N1, 0.0) * v.lambda;
+    v.g1 = q.state.g0 + v.Dw_N - v.Dw_w;
+  }
+  return out;
+}
+
+namespace {
+/// Per-point local terms and the equilibrium term (normalized units); false for wrong sizes.
+bool residual_terms(const SystemStep3dProblem& p, const std::vector<Step3dValues>& values,
+                    std::vector<double>& local, double& equilibrium) {
+  const int N = p.n_points();
+  if (!sizes_ok(p) || static_cast<int>(values.size()) != N) return false;
+  const Scales s = scales_of(p);
+  Vec DP(3 * N), Dw(3 * N);
+  local.assign(static_cast<std::size_t>(N), 0.0);
+  for (int i = 0; i < N; ++i) {
+    const Step3dValues v = normalized_values(values[static_cast<std::size_t>(i)], s,
+                                             detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
+    local[static_cast<std::size_t>(i)] = detail::local_step_3d_residual(normalized_point(p, i, s), v);
+    DP.segment<3>(3 * i) << v.DP_T, v.DP_N;
+    Dw.segment<3>(3 * i) << v.Dw_T, v.Dw_N;
+  }
+  const Mat A = p.system.A / s.K0;
+  const Vec eq = p.DF / s.F0 - DP - A * Dw;
+  equilibrium = eq.cwiseAbs().maxCoeff() /
+                (1 + DP.cwiseAbs().maxCoeff() + (A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff());
+  if (!std::isfinite(equilibrium)) equilibrium = kInf;
+  return true;
+}
+}  // namespace
+
+double system_step_3d_residual(const SystemStep3dProblem& p,
+                               const std::vector<Step3dValues>& values) noexcept {
+  try {
+    std::vector<double> local;
+    double eq = kInf;
+    if (!residual_terms(p, values, local, eq)) return kInf;
+    double r = eq;
+    for (double x : local) r = std::isfinite(x) ? std::max(r, x) : kInf;
+    return r;
+  } catch (...) {
+    return kInf;
+  }
+}
+
+SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
+                                                  const std::vector<Step3dValues>& values) {
+  SystemStep3dSolution out;
+  std::vector<double> local;
+  double eq = kInf;
+  if (!residual_terms(p, values, local, eq))
+    throw InputError("step: make_system_step_3d_solution: sizes do not match the system");
+  const Scales s = scales_of(p);
+  out.residual = eq;
+  for (int i = 0; i < p.n_points(); ++i) {
+    const Step3dValues& uv = values[static_cast<std::size_t>(i)];
+    const Step3dValues v =
+        normalized_values(uv, s, detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
+    Step3dSolution sol;
+    sol.values = uv;
+    if (v.P_N1 <= 1e-9)
+      sol.type = p.states[static_cast<std::size_t>(i)].g0 < 0 ? Type3d::kOpen : Type3d::kSeparation;
+    else if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff()))
+      sol.type = Type3d::kStick;
+    else
+      sol.type = Type3d::kSlip;
+    sol.residual = local[static_cast<std::size_t>(i)];
+    if (sol.type == Type3d::kSlip && uv.Dw_Ti.stableNorm() > 0) {
+      sol.slip_direction = uv.Dw_Ti.stableNormalized();  // no overflow near 1e308
+      sol.slip_angle = std::atan2(sol.slip_direction(1), sol.slip_direction(0));
+    }
+    out.residual = std::isfinite(sol.residual) ? std::max(out.residual, sol.residual) : kInf;
+    out.points.push_back(sol);
+  }
+  return out;
+}
+
+SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& problem,
+                                                     const Step3dSolverOptions& options,
+                                                     const std::vector<Step3dStart>* start) {
+  check(problem);
+  throw_if_invalid(options.validate(), "options");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Normalized n = normalize(problem);
+  Vec z = n.z0;
+  if (start != nullptr) {
+    if (static_cast<int>(start->size()) != n.N)
+      throw InputError("start: " + std::to_string(start->size()) + " start points for " +
+                       std::to_string(n.N) + " points");
+    for (int i = 0; i < n.N; ++i) {
+      const Step3dStart& s = (*start)[static_cast<std::size_t>(i)];
+      z.segment<4>(4 * i) << s.P_T1 / n.F0, s.P_N1 / n.F0,
+          s.lambda / (n.L0 * n.E[static_cast<std::size_t>(i)]);
+    }
+    if (!z.allFinite()) throw InputError("start point must be finite");
+  }
+  SystemStep3dSolverResult out;
+  newton(problem, n, z, options, out);
+  out.seconds = seconds_since(t0);
+  return out;
+}
+
+SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& problem,
+                                                  int n_starts, std::uint64_t seed) {
+  check(problem);
+  if (n_starts < 0) throw InputError("n_starts must be >= 0");
+  const Normalized n = normalize(problem);
+  std::mt19937_64 rng(seed);
+  const Step3dSolverOptions o;
+  std::vector<SystemStep3dSolution> sols;
+  int ok = 0;
+  for (int i = 0; i <= n_starts; ++i) {
+    const Vec z = i == 0 ? n.z0 : random_start(n, rng);
+    SystemStep3dSolverResult r;
+    newton(problem, n, z, o, r);
+    if (!r.solved) continue;
+    ++ok;
+    bool dup = false;
+    for (auto& s : sols)
+      if (same_solution(s, r.solution, n.F0)) {
+        dup = true;
+        if (r.solution.residual < s.residual) s = r.solution;
+      }
+    if (!dup) sols.push_back(r.solution);
+  }
+  SystemStep3dSolutionSet set;
+  set.solutions = std::move(sols);
+  set.complete = false;
+  set.message = "multistart (" + std::to_string(ok) + "/" + std::to_string(n_starts + 1) +
+                " FB-SOC runs verified): distinct verified solutions; local solvers cannot "
+                "prove that no other solution exists";
+  return set;
+}
+
+}  // namespace cpkit::rate3d
