@@ -177,6 +177,7 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   if (!chain.empty()) o.chain = chain;
   o.solver.max_iterations = max_iterations;
   o.solver.tol = tol;
+  o.solver.tol_acceptable = tol;  // "solved" means step_3d_residual <= tol, nothing looser
   o.solver.time_limit_s = time_limit;
   throw_if_invalid(o.validate(), "solver options");
   rate3d::Step3dChainResult r;
@@ -188,7 +189,7 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   for (const auto& a : r.attempts) {
     pyb::dict ad;
     ad["solver"] = a.solver;
-    ad["solved"] = a.solved;
+    ad["solved"] = a.status == Status::kSolved;
     ad["residual"] = a.residual;
     ad["iterations"] = a.iterations;
     ad["seconds"] = a.seconds;
@@ -196,9 +197,10 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
     attempts.append(ad);
   }
   pyb::dict d;
-  d["solved"] = r.solved;
+  const bool solved = r.status == Status::kSolved;
+  d["solved"] = solved;
   d["solver"] = r.solver;
-  d["solution"] = r.solved ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
+  d["solution"] = solved ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
   d["attempts"] = attempts;
   d["message"] = r.message;
   return d;
