@@ -197,10 +197,10 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
     attempts.append(ad);
   }
   pyb::dict d;
-  const bool solved = r.status == Status::kSolved;
-  d["solved"] = solved;
+  const bool verified = r.status == Status::kSolved;
+  d["solved"] = verified;
   d["solver"] = r.solver;
-  d["solution"] = solved ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
+  d["solution"] = verified ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
   d["attempts"] = attempts;
   d["message"] = r.message;
   return d;
