@@ -102,16 +102,16 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
 
   const std::string mode = cmd.count("--multistart") > 0 ? "multistart" : "chain";
   rate::SystemStep3dSolutionSet set;
-  rate::SystemStep3dSolverResult r;
+  rate::SystemStep3dSolveResult r;
   int code = kExitOk;
   if (mode == "multistart") {
     set = rate::multistart_system_step_3d(p, a.multistart, 1);
     code = set.solutions.empty() ? kExitInconclusive : kExitOk;
   } else {
     r = rate::solve_system_step_3d_fb_soc(p);
-    if (r.solved) set.solutions.push_back(r.solution);
+    if ((r.status == cpkit::Status::kSolved)) set.solutions.push_back(r.solution);
     set.message = r.message;
-    code = r.solved ? kExitOk : kExitNoSolution;
+    code = (r.status == cpkit::Status::kSolved) ? kExitOk : kExitNoSolution;
   }
   const std::string name = sys.name.empty() ? a.system : sys.name;
   if (a.json) {
@@ -139,11 +139,11 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     j["n_points"] = N;
     j["mode"] = mode;
     if (mode == "chain") {
-      j["status"] = r.solved ? "solved" : "no_solution";
-      j["solver"] = r.solved ? "fb-soc" : "";
+      j["status"] = (r.status == cpkit::Status::kSolved) ? "solved" : "no_solution";
+      j["solver"] = (r.status == cpkit::Status::kSolved) ? "fb-soc" : "";
       const double res = r.solution.residual;
       j["attempts"] = nlohmann::json::array(
-          {{{"solver", "fb-soc"}, {"solved", r.solved},
+          {{{"solver", "fb-soc"}, {"solved", (r.status == cpkit::Status::kSolved)},
             {"residual", std::isfinite(res) ? nlohmann::json(res) : nlohmann::json(nullptr)},
             {"iterations", r.iterations}, {"seconds", r.seconds}, {"message", r.message}}});
     } else {
@@ -165,7 +165,7 @@ int run_system_step_3d(const Step3dCliArgs& a, const CLI::App& cmd,
     std::cout << "), ";
     if (mode == "chain")
       std::cout << "FB-SOC Newton: "
-                << (r.solved ? "solved in " + std::to_string(r.iterations) + " iterations"
+                << ((r.status == cpkit::Status::kSolved) ? "solved in " + std::to_string(r.iterations) + " iterations"
                              : std::string("no solution found"))
                 << "\n";
     else
@@ -263,9 +263,9 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   } else {
     chain = rate::solve_step_3d(p, copt);
     set.complete = false;
-    if (chain.solved) set.solutions.push_back(chain.solution);
+    if ((chain.status == cpkit::Status::kSolved)) set.solutions.push_back(chain.solution);
     set.message = chain.message;
-    code = chain.solved ? kExitOk : kExitNoSolution;
+    code = (chain.status == cpkit::Status::kSolved) ? kExitOk : kExitNoSolution;
   }
   const std::string name = sys.name.empty() ? a.system : sys.name;
   if (a.json) {
@@ -288,11 +288,11 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
     j["dim"] = 3;
     j["mode"] = mode;
     if (mode == "chain") {
-      j["status"] = chain.solved ? "solved" : "no_solution";
+      j["status"] = (chain.status == cpkit::Status::kSolved) ? "solved" : "no_solution";
       j["solver"] = chain.solver;
       nlohmann::json at = nlohmann::json::array();
       for (const auto& x : chain.attempts)
-        at.push_back({{"solver", x.solver}, {"solved", x.solved},
+        at.push_back({{"solver", x.solver}, {"solved", (x.status == cpkit::Status::kSolved)},
                       {"residual", std::isfinite(x.residual) ? nlohmann::json(x.residual) : nlohmann::json(nullptr)},
                       {"iterations", x.iterations}, {"seconds", x.seconds}, {"message", x.message}});
       j["attempts"] = at;
@@ -309,7 +309,7 @@ int run_step_3d(const Step3dCliArgs& a, const CLI::App& cmd) {
   } else {
     std::cout << "step, 3-D point " << name << " (state " << st.state << "), ";
     if (mode == "chain") {
-      std::cout << "solver chain: " << (chain.solved ? "solved by " + chain.solver : std::string("no solution found")) << "\n";
+      std::cout << "solver chain: " << ((chain.status == cpkit::Status::kSolved) ? "solved by " + chain.solver : std::string("no solution found")) << "\n";
     } else {
       std::cout << (mode == "all" ? "exact" : mode == "facets" ? "faceted with " + std::to_string(a.facets) + " facets" : "multistart") << "\n";
       if (set.complete) std::cout << "count: " << set.count() << "\n";

@@ -64,14 +64,14 @@ int main(int argc, char** argv) {
     t_exact += now() - t0;
     complete += ex.complete;
     multi += ex.count() > 1;
-    const Step3dSolverResult r = solve_step_3d_fb_soc(p);
+    const Step3dSolveResult r = solve_step_3d_fb_soc(p);
     t_fb += r.seconds;
-    fb_ok += r.solved;
+    fb_ok += (r.status == cpkit::Status::kSolved);
     fb_it += r.iterations;
     if (ipopt_every > 0 && c % ipopt_every == 0) {
-      const Step3dSolverResult q = solve_step_3d_ipopt(p);
+      const Step3dSolveResult q = solve_step_3d_ipopt(p);
       t_ip += q.seconds;
-      ip_ok += q.solved;
+      ip_ok += (q.status == cpkit::Status::kSolved);
       ++ip_runs;
     }
     for (int j = 0; j < 3; ++j) {

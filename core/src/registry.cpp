@@ -10,6 +10,7 @@ bool SolverEntry::accepts(ProblemKind kind) const {
     case ProblemKind::kBoxLcp: return static_cast<bool>(solve_box_lcp);
     case ProblemKind::kMcp: return static_cast<bool>(solve_mcp);
     case ProblemKind::kFrictionContact: return static_cast<bool>(solve_fc);
+    case ProblemKind::kSoc: return static_cast<bool>(solve_soc);
   }
   return false;
 }

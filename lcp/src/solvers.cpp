@@ -10,6 +10,7 @@
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
+#include "cpkit/lcp/soc_fb.hpp"
 
 namespace cpkit::lcp {
 namespace {
@@ -27,7 +28,7 @@ SolverRegistry build() {
   automatic.info.description += "; friction problems: fb-soc, nsgs, prox, lemke(-faceted), ipopt";
   r.add(std::move(automatic));
   r.add(friction::nsgs_entry());  // friction problems (issue 26)
-  r.add(friction::fb_soc_entry());
+  r.add(with_soc_fb(friction::fb_soc_entry()));  // + cone complementarity problems (issue 25)
   r.add(friction::prox_entry());
   // Each solver module adds its entry here, in the order of the automatic chain.
   return r;

@@ -42,6 +42,7 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   if (!chain.empty()) o.chain = chain;
   o.solver.max_iterations = max_iterations;
   o.solver.tol = tol;
+  o.solver.tol_acceptable = tol;  // "solved" means step_3d_residual <= tol, nothing looser
   o.solver.time_limit_s = time_limit;
   throw_if_invalid(o.validate(), "solver options");
   rate::Step3dChainResult r;
@@ -53,7 +54,7 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   for (const auto& a : r.attempts) {
     pyb::dict ad;
     ad["solver"] = a.solver;
-    ad["solved"] = a.solved;
+    ad["solved"] = a.status == Status::kSolved;
     ad["residual"] = a.residual;
     ad["iterations"] = a.iterations;
     ad["seconds"] = a.seconds;
@@ -61,9 +62,10 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
     attempts.append(ad);
   }
   pyb::dict d;
-  d["solved"] = r.solved;
+  const bool verified = r.status == Status::kSolved;
+  d["solved"] = verified;
   d["solver"] = r.solver;
-  d["solution"] = r.solved ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
+  d["solution"] = verified ? pyb::object(step_solution_dict(r.solution)) : pyb::object(pyb::none());
   d["attempts"] = attempts;
   d["message"] = r.message;
   return d;

@@ -168,7 +168,7 @@ TEST_CASE("3-D step (exact, FB-SOC, faceted): the same solutions in every ellips
     }
     p.DF << u(rng), u(rng), u(rng);
     const Step3dSolutionSet ref = enumerate_step_3d(p);
-    const Step3dSolverResult fb_ref = solve_step_3d_fb_soc(p);
+    const Step3dSolveResult fb_ref = solve_step_3d_fb_soc(p);
     for (double c : kUnits)
       for (double s : {1.0, 1e-9, 1e9}) {
         CAPTURE(trial, c, s);
@@ -189,9 +189,9 @@ TEST_CASE("3-D step (exact, FB-SOC, faceted): the same solutions in every ellips
         }
         // FB-SOC is a local method: with several solutions it may reach another one, but
         // always one of the exact set, whatever the units.
-        const Step3dSolverResult fb = solve_step_3d_fb_soc(q);
-        CHECK(fb.solved == fb_ref.solved);
-        if (fb.solved && ref.complete) {
+        const Step3dSolveResult fb = solve_step_3d_fb_soc(q);
+        CHECK((fb.status == cpkit::Status::kSolved) == (fb_ref.status == cpkit::Status::kSolved));
+        if ((fb.status == cpkit::Status::kSolved) && ref.complete) {
           bool in_set = false;
           for (const auto& r : ref.solutions)
             in_set = in_set || same_point(r.values, fb.solution.values, s);
@@ -233,7 +233,7 @@ TEST_CASE("N-point 3-D rate and step: the same solutions in every ellipse unit",
     sp.system = sys;
     sp.states.assign(N, Step3dState{});
     sp.DF = dF;
-    const SystemStep3dSolverResult sref = solve_system_step_3d_fb_soc(sp);
+    const SystemStep3dSolveResult sref = solve_system_step_3d_fb_soc(sp);
     for (double c : kUnits) {
       CAPTURE(trial, c);
       ContactSystem3d q = sys;
@@ -248,9 +248,9 @@ TEST_CASE("N-point 3-D rate and step: the same solutions in every ellipse unit",
         }
       SystemStep3dProblem sq = sp;
       sq.system = q;
-      const SystemStep3dSolverResult s = solve_system_step_3d_fb_soc(sq);
-      CHECK(s.solved == sref.solved);
-      if (s.solved && sref.solved)
+      const SystemStep3dSolveResult s = solve_system_step_3d_fb_soc(sq);
+      CHECK((s.status == cpkit::Status::kSolved) == (sref.status == cpkit::Status::kSolved));
+      if ((s.status == cpkit::Status::kSolved) && (sref.status == cpkit::Status::kSolved))
         for (int i = 0; i < N; ++i)
           CHECK(same_step(sref.solution.points[i].values, s.solution.points[i].values, c, 1));
     }

@@ -140,11 +140,11 @@ TEST_CASE("FB-SOC and Ipopt solutions of a decoupled isotropic point are 2-D ste
     std::vector<Step3dSolution> found;
     auto st = starts(rng, d.p3, 6);
     for (int i = 0; i <= 6; ++i) {
-      const Step3dSolverResult r = solve_step_3d_fb_soc(d.p3, {}, i == 0 ? nullptr : &st[i - 1]);
+      const Step3dSolveResult r = solve_step_3d_fb_soc(d.p3, step_3d_solver_options(), i == 0 ? nullptr : &st[i - 1]);
       ++fb_runs;
       fb_seconds += r.seconds;
       iters += r.iterations;
-      if (!r.solved) continue;
+      if (!(r.status == cpkit::Status::kSolved)) continue;
       ++fb_ok;
       if (i == 0) ++fb_first;
       CAPTURE(c, i, r.solution.values.P_T1(0), r.solution.values.P_T1(1), r.solution.values.P_N1,
@@ -154,10 +154,10 @@ TEST_CASE("FB-SOC and Ipopt solutions of a decoupled isotropic point are 2-D ste
       found.push_back(r.solution);
     }
     if (c % 8 == 0) {
-      const Step3dSolverResult r = solve_step_3d_ipopt(d.p3);
+      const Step3dSolveResult r = solve_step_3d_ipopt(d.p3);
       ++ip_runs;
       ip_seconds += r.seconds;
-      if (r.solved) {
+      if ((r.status == cpkit::Status::kSolved)) {
         ++ip_ok;
         CAPTURE(c, r.solution.values.P_T1(0), r.solution.values.P_N1);
         CHECK(matches_2d(r.solution, ref, F));
@@ -224,11 +224,11 @@ TEST_CASE("FB-SOC rotates with the tangential plane of an isotropic problem", "[
     q.params.A = 0.5 * (q.params.A + q.params.A.transpose()).eval();
     q.DF = R * p.DF;
     q.state.P_T0 = R.topLeftCorner<2, 2>() * p.state.P_T0;
-    const Step3dSolverResult a = solve_step_3d_fb_soc(p), b = solve_step_3d_fb_soc(q);
+    const Step3dSolveResult a = solve_step_3d_fb_soc(p), b = solve_step_3d_fb_soc(q);
     ++n;
-    CAPTURE(c, a.solved, b.solved, a.solution.residual, b.solution.residual);
-    CHECK(a.solved == b.solved);
-    if (!a.solved || !b.solved) continue;
+    CAPTURE(c, (a.status == cpkit::Status::kSolved), (b.status == cpkit::Status::kSolved), a.solution.residual, b.solution.residual);
+    CHECK((a.status == cpkit::Status::kSolved) == (b.status == cpkit::Status::kSolved));
+    if (!(a.status == cpkit::Status::kSolved) || !(b.status == cpkit::Status::kSolved)) continue;
     ++solved;
     const double F = force_scale(p);
     const Eigen::Vector2d rot = R.topLeftCorner<2, 2>() * a.solution.values.P_T1;
@@ -253,7 +253,7 @@ TEST_CASE("FB-SOC verdicts do not depend on units", "[step3d][solvers]") {
     p.params.k_a = c % 3 == 0 ? 0.3 * pos(rng) : 0;
     p.state = random_state(rng, p.params, c, false);
     p.DF = Eigen::Vector3d(u(rng), u(rng), u(rng));
-    const Step3dSolverResult ref = solve_step_3d_fb_soc(p);
+    const Step3dSolveResult ref = solve_step_3d_fb_soc(p);
     const FacetedStep3dResult fref = solve_step_3d_faceted(p, 8);
     for (double s : {1e-12, 1e-6, 1e6, 1e12}) {
       for (int mode = 0; mode < 2; ++mode) {
@@ -270,10 +270,10 @@ TEST_CASE("FB-SOC verdicts do not depend on units", "[step3d][solvers]") {
           q.state.g0 /= s;
         }
         const double fs = mode == 0 ? s : 1.0, ls = mode == 0 ? s : 1 / s;
-        const Step3dSolverResult r = solve_step_3d_fb_soc(q);
+        const Step3dSolveResult r = solve_step_3d_fb_soc(q);
         CAPTURE(c, s, mode, ref.solution.residual, r.solution.residual);
-        REQUIRE(r.solved == ref.solved);
-        if (!r.solved) continue;
+        REQUIRE((r.status == cpkit::Status::kSolved) == (ref.status == cpkit::Status::kSolved));
+        if (!(r.status == cpkit::Status::kSolved)) continue;
         CHECK(r.solution.type == ref.solution.type);
         const double F = force_scale(p);
         CHECK((r.solution.values.P_T1 / fs - ref.solution.values.P_T1).cwiseAbs().maxCoeff() <=
@@ -323,10 +323,10 @@ TEST_CASE("FB-SOC, Ipopt and the chain agree with the exact enumeration; faceted
     };
     auto st = starts(rng, p, 4);
     for (int i = 0; i <= 4; ++i) {
-      const Step3dSolverResult r = solve_step_3d_fb_soc(p, {}, i == 0 ? nullptr : &st[i - 1]);
+      const Step3dSolveResult r = solve_step_3d_fb_soc(p, step_3d_solver_options(), i == 0 ? nullptr : &st[i - 1]);
       t_fb += r.seconds;
       ++n_fb;
-      if (!r.solved) continue;
+      if (!(r.status == cpkit::Status::kSolved)) continue;
       ++fb_ok;
       CAPTURE(c, i, ex.count());
       CHECK(in_exact(r.solution));
@@ -334,14 +334,14 @@ TEST_CASE("FB-SOC, Ipopt and the chain agree with the exact enumeration; faceted
     }
     if (c % 10 == 0) {
       ++ip_runs;
-      const Step3dSolverResult r = solve_step_3d_ipopt(p);
-      if (r.solved) {
+      const Step3dSolveResult r = solve_step_3d_ipopt(p);
+      if ((r.status == cpkit::Status::kSolved)) {
         ++ip_ok;
         CHECK(in_exact(r.solution));
       }
       const Step3dChainResult ch = solve_step_3d(p);
-      CHECK(ch.solved == (ex.count() > 0));
-      if (ch.solved) CHECK(ch.solver == "exact");
+      CHECK((ch.status == cpkit::Status::kSolved) == (ex.count() > 0));
+      if ((ch.status == cpkit::Status::kSolved)) CHECK(ch.solver == "exact");
     }
     for (int j = 0; j < 4; ++j) {
       t0 = std::chrono::steady_clock::now();
@@ -405,11 +405,11 @@ TEST_CASE("step solvers 3-D: bad input throws InputError", "[step3d][solvers]") 
   CHECK_THROWS_AS(solve_step_3d(p, o), cpkit::InputError);
   o.chain.clear();
   CHECK_THROWS_AS(solve_step_3d(p, o), cpkit::InputError);
-  Step3dSolverOptions so;
+  cpkit::CommonOptions so = step_3d_solver_options();
   so.tol = 0;
   CHECK_THROWS_AS(solve_step_3d_fb_soc(p, so), cpkit::InputError);
   CHECK_THROWS_AS(multistart_step_3d(p, -1), cpkit::InputError);
   Step3dStart s;
   s.P_N1 = std::nan("");
-  CHECK_THROWS_AS(solve_step_3d_fb_soc(p, {}, &s), cpkit::InputError);
+  CHECK_THROWS_AS(solve_step_3d_fb_soc(p, step_3d_solver_options(), &s), cpkit::InputError);
 }

@@ -115,11 +115,11 @@ TEST_CASE("SystemStep3dN1InExactSet", "[system_step_3d]") {
     if (!exact.complete) continue;
     ++problems;
     const double F = force_scale(p);
-    const SystemStep3dSolverResult r = solve_system_step_3d_fb_soc(p);
+    const SystemStep3dSolveResult r = solve_system_step_3d_fb_soc(p);
     iters += r.iterations;
-    const Step3dSolverResult one = solve_step_3d_fb_soc(p.point_problem(0));
-    if (r.solved == one.solved) ++agree_one_point;
-    if (r.solved) {
+    const Step3dSolveResult one = solve_step_3d_fb_soc(p.point_problem(0));
+    if ((r.status == cpkit::Status::kSolved) == (one.status == cpkit::Status::kSolved)) ++agree_one_point;
+    if ((r.status == cpkit::Status::kSolved)) {
       ++from_start;
       CHECK(in_set(r.solution.points[0].values, exact, F));
       CHECK(r.solution.residual <= 1e-9);
@@ -283,8 +283,8 @@ TEST_CASE("SystemStep3dUnits", "[system_step_3d]") {
     }
     p.DF = random_load(rng, 3 * N, false);
     REQUIRE(p.validate().empty());
-    const SystemStep3dSolverResult r = solve_system_step_3d_fb_soc(p);
-    solved += r.solved ? 1 : 0;
+    const SystemStep3dSolveResult r = solve_system_step_3d_fb_soc(p);
+    solved += (r.status == cpkit::Status::kSolved) ? 1 : 0;
     for (double sf : {1e-12, 1e-6, 1e6, 1e12})
       for (double sk : {1e-9, 1e9}) {
         SystemStep3dProblem q = p;
@@ -300,9 +300,9 @@ TEST_CASE("SystemStep3dUnits", "[system_step_3d]") {
           s.g0 *= sf / sk;
         }
         REQUIRE(q.validate().empty());
-        const SystemStep3dSolverResult t = solve_system_step_3d_fb_soc(q);
-        CHECK(t.solved == r.solved);
-        if (t.solved && r.solved)
+        const SystemStep3dSolveResult t = solve_system_step_3d_fb_soc(q);
+        CHECK((t.status == cpkit::Status::kSolved) == (r.status == cpkit::Status::kSolved));
+        if ((t.status == cpkit::Status::kSolved) && (r.status == cpkit::Status::kSolved))
           for (int i = 0; i < N; ++i) {
             const auto& a = r.solution.points[static_cast<std::size_t>(i)].values;
             const auto& b = t.solution.points[static_cast<std::size_t>(i)].values;

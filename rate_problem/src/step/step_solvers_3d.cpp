@@ -17,6 +17,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/registry.hpp"
+#include "cpkit/lcp/damped_newton.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -178,65 +179,41 @@ Vec4 canonical(const Step3dProblem& pr, const Normalized& n, const Vec4& z, doub
   return z;
 }
 
-/// The semismooth Newton iteration from z (normalized). Fills `out` (not `seconds`).
-void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const Step3dSolverOptions& o,
-            Step3dSolverResult& out) {
-  Vec4 Phi, Phi_t, z_t, d, g;
-  Mat4 J, J_t;
-  residual_map(n, z, Phi, J);
-  double psi = merit(Phi);
-  out.iterations = 0;
-  out.solved = false;
-  double res = kInf;
-  for (int it = 0; it < o.max_iterations; ++it) {
-    if (!Phi.allFinite()) break;
-    if (Phi.cwiseAbs().maxCoeff() <= 1e-11) {
-      res = step_3d_residual(pr, physical(pr, n, z));
-      if (res <= o.tol && Phi.cwiseAbs().maxCoeff() <= 1e-15) break;
-    }
-    ++out.iterations;
-    g = J.transpose() * Phi;
-    d = J.fullPivLu().solve(-Phi);
-    const double dn = d.norm();
-    if (!d.allFinite() || g.dot(d) > -1e-12 * std::pow(dn, 2.1)) {
-      d = -g;
-      ++out.gradient_steps;
-    }
-    const double slope = g.dot(d);
-    if (!(slope < 0)) break;  // stationary point of the merit function
-    double t = 1;
-    bool accepted = false;
-    for (int ls = 0; ls < 60; ++ls) {
-      z_t = z + t * d;
-      residual_map(n, z_t, Phi_t, J_t);
-      const double psi_t = merit(Phi_t);
-      if (std::isfinite(psi_t) && psi_t <= psi + 1e-4 * t * slope) {
-        accepted = true;
-        break;
-      }
-      t *= 0.5;
-      ++out.line_search_steps;
-    }
-    if (!accepted) break;
-    const bool progress = (z_t - z).cwiseAbs().maxCoeff() > 0;
-    z = z_t;
-    Phi = Phi_t;
-    J = J_t;
-    psi = merit(Phi);
-    if (!progress) break;
+/// What a stop of the Newton loop claims when the iterate is not verified.
+Status stop_status(lcp::DampedNewtonStop stop) noexcept {
+  switch (stop) {
+    case lcp::DampedNewtonStop::kIterationLimit: return Status::kIterationLimit;
+    case lcp::DampedNewtonStop::kNonFinite: return Status::kNumericalFailure;
+    default: return Status::kStalled;
   }
-  out.merit = psi;
-  res = step_3d_residual(pr, physical(pr, n, z));
-  if (res <= o.tol && fb_small(n, z)) {
-    z = canonical(pr, n, z, o.tol);
-    out.solved = true;
-  }
-  out.solution = make_step_3d_solution(pr, physical(pr, n, z));
-  out.solved = out.solved && out.solution.residual <= o.tol;
-  if (!out.solved)
+}
+
+/// The semismooth Newton iteration from z (normalized), by the one damped Newton loop
+/// (lcp/damped_newton.hpp). Fills `out` through finalize_step_3d (not `seconds`).
+void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const CommonOptions& o,
+            Step3dSolveResult& out) {
+  auto eval = [&n](const Vec4& x, Vec4& Phi, Mat4& J) { residual_map(n, x, Phi, J); };
+  auto done = [&](const Vec4& x, const Vec4& Phi) {
+    return Phi.cwiseAbs().maxCoeff() <= 1e-15 && step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
+  };
+  lcp::DampedNewtonOptions dn;
+  dn.max_iterations = o.max_iterations > 0 ? o.max_iterations : 100;
+  lcp::DampedNewtonStats st;
+  const lcp::DampedNewtonStop stop = lcp::damped_newton<Vec4, Mat4>(z, eval, done, dn, st);
+  out.iterations = st.iterations;
+  out.line_search_steps = st.line_search_steps;
+  out.gradient_steps = st.gradient_steps;
+  out.function_evals = st.function_evals;
+  out.merit = st.merit;
+  const bool claim = step_3d_residual(pr, physical(pr, n, z)) <= o.tol && fb_small(n, z);
+  if (claim) z = canonical(pr, n, z, o.tol);
+  out.status = claim ? Status::kSolved : stop_status(stop);
+  out.solution.values = physical(pr, n, z);
+  finalize_step_3d(pr, out, o);
+  if (out.status != Status::kSolved)
     out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
                   " after " + std::to_string(out.iterations) + " iterations (merit " +
-                  std::to_string(psi) + ")";
+                  std::to_string(st.merit) + ")";
 }
 
 void check(const Step3dProblem& pr) {
@@ -269,11 +246,34 @@ bool same_solution(const Step3dSolution& a, const Step3dSolution& b, double F0) 
 
 }  // namespace
 
-std::string Step3dSolverOptions::validate() const {
-  if (max_iterations < 0) return "max_iterations must be >= 0";
-  if (!(tol > 0) || !std::isfinite(tol)) return "tol must be positive and finite";
-  if (!(time_limit_s > 0)) return "time_limit_s must be positive";
-  return {};
+CommonOptions step_3d_solver_options() {
+  CommonOptions o;
+  o.tol = 1e-9;
+  o.tol_acceptable = 1e-9;
+  o.max_iterations = 100;
+  o.time_limit_s = 10;
+  return o;
+}
+
+void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& r,
+                      const CommonOptions& options) {
+  const bool claimed = is_solution(r.status);
+  r.solution = make_step_3d_solution(problem, r.solution.values);
+  const Step3dValues& v = r.solution.values;
+  r.z = Eigen::Vector4d(v.P_T1(0), v.P_T1(1), v.P_N1, v.lambda);
+  const double res = r.solution.residual;
+  r.residuals = Residuals{};
+  r.residuals.natural = res;
+  r.residuals.finite = std::isfinite(res);
+  if (res <= options.tol) {
+    r.status = Status::kSolved;
+  } else if (res <= options.tol_acceptable) {
+    r.status = Status::kSolvedInaccurate;
+  } else if (claimed) {
+    r.status = Status::kNumericalFailure;
+    r.message += (r.message.empty() ? "" : "; ") + std::string("claimed solution refuted: residual ") +
+                 std::to_string(res);
+  }
 }
 
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {
@@ -296,29 +296,29 @@ void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolu
   sols = std::move(out);
 }
 
-Step3dSolverResult solve_step_3d_fb_soc(const Step3dProblem& problem,
-                                        const Step3dSolverOptions& options,
+Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
+                                       const CommonOptions& options,
                                         const Step3dStart* start) {
   check(problem);
   throw_if_invalid(options.validate(), "options");
   const auto t0 = std::chrono::steady_clock::now();
   const Normalized n = normalize(problem);
-  Step3dSolverResult out;
+  Step3dSolveResult out;
   out.solver = "fb-soc";
   newton(problem, n, normalized_start(problem, n, start), options, out);
   out.seconds = seconds_since(t0);
   return out;
 }
 
-Step3dSolverResult solve_step_3d_ipopt(const Step3dProblem& problem,
-                                       const Step3dSolverOptions& options,
+Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
+                                      const CommonOptions& options,
                                        const Step3dStart* start) {
   check(problem);
   throw_if_invalid(options.validate(), "options");
   const auto t0 = std::chrono::steady_clock::now();
   const Normalized n = normalize(problem);
   const Vec4 xs = normalized_start(problem, n, start);
-  Step3dSolverResult out;
+  Step3dSolveResult out;
   out.solver = "ipopt";
   // u = D Dw_T^i = u0 + U x (2 x 4), q = D^-1 P_T1
   const Eigen::Matrix2d D = n.al.asDiagonal(), Dinv = n.al.cwiseInverse().asDiagonal();
@@ -396,19 +396,19 @@ Step3dSolverResult solve_step_3d_ipopt(const Step3dProblem& problem,
   mo.common.time_limit_s = options.time_limit_s;
   mo.common.max_iterations = options.max_iterations;
   mo.polish = false;
-  Step3dSolverOptions polish = options;
+  CommonOptions polish = options;
   polish.max_iterations = 50;
-  Step3dSolverResult best;
+  Step3dSolveResult best;
   best.solver = "ipopt";
   bool found = false;
   int polish_iterations = 0;
   auto try_polish = [&](const Vec& x) {
     if (found || !x.allFinite() || x.size() != 4) return found;
-    Step3dSolverResult r;
+    Step3dSolveResult r;
     r.solver = "ipopt";
     newton(problem, n, Vec4(x.head<4>()), polish, r);
     polish_iterations += r.iterations;
-    if (r.solved) {
+    if (r.status == Status::kSolved) {
       best = r;
       found = true;
     }
@@ -424,16 +424,21 @@ Step3dSolverResult solve_step_3d_ipopt(const Step3dProblem& problem,
   }
   if (found) {
     out.solution = best.solution;
-    out.solved = true;
+    out.status = Status::kSolved;  // claimed; finalize_step_3d below decides
     out.merit = best.merit;
     out.message = "MPCC (Scholtes relaxation, Ipopt) point polished by FB-SOC Newton";
+    finalize_step_3d(problem, out, options);
   } else {
+    const Status failure = mr.status == Status::kTimeLimit ? Status::kTimeLimit : Status::kStalled;
     if (mr.x.size() == 4) {
       const Vec4 z(mr.x.head<4>());
-      out.solution = make_step_3d_solution(problem, physical(problem, n, z));
+      out.solution.values = physical(problem, n, z);
+      finalize_step_3d(problem, out, options);  // residual and z of the NLP point
     } else {
       out.solution.residual = kInf;
     }
+    // The unpolished NLP point is information, never a verified answer.
+    out.status = failure;
     if (out.message.empty())
       out.message = "ipopt: no verified solution (" + mr.message + ")";
   }
@@ -682,7 +687,7 @@ Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainO
   Step3dChainResult out;
   for (const auto& link : options.chain) {
     const auto t0 = std::chrono::steady_clock::now();
-    Step3dAttempt a;
+    Attempt a;
     a.solver = link;
     a.residual = kInf;
     Step3dSolution sol;
@@ -698,9 +703,10 @@ Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainO
           best = &x;
         }
       }
+      a.status = Status::kStalled;  // nothing found (not a proof of infeasibility: no certificate)
       if (best != nullptr) {
         sol = *best;
-        a.solved = true;
+        a.status = Status::kSolved;  // enumerate_step_3d's verdict: residual <= tol above
         a.residual = best->residual;
         a.message = std::to_string(s.count()) + " solution(s)" +
                     (s.complete ? "" : " (not proved complete: " + s.message + ")") +
@@ -710,10 +716,10 @@ Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainO
                                : "none found (not proved complete: " + s.message + ")";
       }
     } else {
-      const Step3dSolverResult r = link == "fb-soc"
-                                       ? solve_step_3d_fb_soc(problem, options.solver)
-                                       : solve_step_3d_ipopt(problem, options.solver);
-      a.solved = r.solved;
+      const Step3dSolveResult r = link == "fb-soc"
+                                      ? solve_step_3d_fb_soc(problem, options.solver)
+                                      : solve_step_3d_ipopt(problem, options.solver);
+      a.status = r.status;
       a.residual = r.solution.residual;
       a.iterations = r.iterations;
       a.message = r.message;
@@ -721,14 +727,15 @@ Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainO
     }
     a.seconds = seconds_since(t0);
     out.attempts.push_back(a);
-    if (a.solved) {
-      out.solved = true;
+    out.status = a.status;
+    out.solution = sol;
+    if (a.status == Status::kSolved) {
       out.solver = link;
-      out.solution = sol;
       break;
     }
   }
-  if (!out.solved) {
+  if (out.status != Status::kSolved) {
+    out.solution = Step3dSolution{};
     out.message = "no link of the chain found a verified solution";
     for (const auto& a : out.attempts) out.message += "; " + a.solver + ": " + a.message;
   }
@@ -742,7 +749,7 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
   const Normalized n = normalize(problem);
   std::mt19937_64 rng(seed);
   std::vector<Step3dSolution> sols;
-  Step3dSolverOptions o;
+  const CommonOptions o = step_3d_solver_options();
   int fb_ok = 0, ip_ok = 0, fb_runs = 0, ip_runs = 0;
   for (int i = 0; i <= n_starts; ++i) {
     const Vec4 z = i == 0 ? Vec4(n.PT0(0), n.PT0(1), n.PN0, 0) : random_start(n, rng);
@@ -750,16 +757,16 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
     s.P_T1 = n.F0 * z.head<2>();
     s.P_N1 = n.F0 * z(2);
     s.lambda = n.L0 * n.E * z(3);
-    const Step3dSolverResult r = solve_step_3d_fb_soc(problem, o, &s);
+    const Step3dSolveResult r = solve_step_3d_fb_soc(problem, o, &s);
     ++fb_runs;
-    if (r.solved) {
+    if (r.status == Status::kSolved) {
       ++fb_ok;
       sols.push_back(r.solution);
     }
     if (i % 4 == 0) {
-      const Step3dSolverResult q = solve_step_3d_ipopt(problem, o, &s);
+      const Step3dSolveResult q = solve_step_3d_ipopt(problem, o, &s);
       ++ip_runs;
-      if (q.solved) {
+      if (q.status == Status::kSolved) {
         ++ip_ok;
         sols.push_back(q.solution);
       }

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/damped_newton.hpp"
 #include "soc_fb.hpp"
 #include "step_3d_terms.hpp"
 #include "../model/unit_scaling.hpp"
@@ -261,62 +262,58 @@ Vec canonical(const SystemStep3dProblem& pr, const Normalized& n, Vec z, double 
   return z;
 }
 
-void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z,
-            const Step3dSolverOptions& o, SystemStep3dSolverResult& out) {
-  const int m = 4 * n.N;
-  Vec Phi(m), Phi_t(m), z_t(m), d(m), g(m);
-  Mat J(m, m), J_t(m, m);
-  residual_map(n, z, Phi, J);
-  double psi = 0.5 * Phi.squaredNorm();
-  out.iterations = 0;
-  out.solved = false;
-  for (int it = 0; it < o.max_iterations; ++it) {
-    if (!Phi.allFinite()) break;
-    if (Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
-        system_step_3d_residual(pr, physical(pr, n, z)) <= o.tol)
-      break;
-    ++out.iterations;
-    g = J.transpose() * Phi;
-    d = J.fullPivLu().solve(-Phi);
-    const double dn = d.norm();
-    if (!d.allFinite() || g.dot(d) > -1e-12 * std::pow(dn, 2.1)) {
-      d = -g;
-      ++out.gradient_steps;
-    }
-    const double slope = g.dot(d);
-    if (!(slope < 0)) break;  // stationary point of the merit function
-    double t = 1;
-    bool accepted = false;
-    for (int ls = 0; ls < 60; ++ls) {
-      z_t = z + t * d;
-      residual_map(n, z_t, Phi_t, J_t);
-      const double psi_t = 0.5 * Phi_t.squaredNorm();
-      if (std::isfinite(psi_t) && psi_t <= psi + 1e-4 * t * slope) {
-        accepted = true;
-        break;
-      }
-      t *= 0.5;
-      ++out.line_search_steps;
-    }
-    if (!accepted) break;
-    const bool progress = (z_t - z).cwiseAbs().maxCoeff() > 0;
-    z = z_t;
-    Phi = Phi_t;
-    J = J_t;
-    psi = 0.5 * Phi.squaredNorm();
-    if (!progress) break;
+/// The verdict, as finalize_step_3d: the solution recomputed from the values and the data;
+/// kSolved when system_step_3d_residual <= tol, kSolvedInaccurate up to tol_acceptable; a
+/// refuted claim becomes kNumericalFailure; other claimed failures are kept.
+void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValues>& values,
+                     SystemStep3dSolveResult& r, const CommonOptions& o) {
+  const bool claimed = is_solution(r.status);
+  r.solution = make_system_step_3d_solution(pr, values);
+  r.z.resize(static_cast<Eigen::Index>(4 * values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    r.z.segment<4>(static_cast<Eigen::Index>(4 * i)) << values[i].P_T1, values[i].P_N1,
+        values[i].lambda;
+  const double res = r.solution.residual;
+  r.residuals = Residuals{};
+  r.residuals.natural = res;
+  r.residuals.finite = std::isfinite(res);
+  if (res <= o.tol) {
+    r.status = Status::kSolved;
+  } else if (res <= o.tol_acceptable) {
+    r.status = Status::kSolvedInaccurate;
+  } else if (claimed) {
+    r.status = Status::kNumericalFailure;
   }
-  out.merit = psi;
-  if (verified(pr, n, z, o.tol)) {
-    z = canonical(pr, n, z, o.tol);
-    out.solved = true;
-  }
-  out.solution = make_system_step_3d_solution(pr, physical(pr, n, z));
-  out.solved = out.solved && out.solution.residual <= o.tol;
-  if (!out.solved)
+}
+
+/// The semismooth Newton iteration by the one damped Newton loop (lcp/damped_newton.hpp).
+void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z, const CommonOptions& o,
+            SystemStep3dSolveResult& out) {
+  auto eval = [&n](const Vec& x, Vec& Phi, Mat& J) { residual_map(n, x, Phi, J); };
+  auto done = [&](const Vec& x, const Vec& Phi) {
+    return Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
+           system_step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
+  };
+  lcp::DampedNewtonOptions dn;
+  dn.max_iterations = o.max_iterations > 0 ? o.max_iterations : 100;
+  lcp::DampedNewtonStats st;
+  const lcp::DampedNewtonStop stop = lcp::damped_newton<Vec, Mat>(z, eval, done, dn, st);
+  out.iterations = st.iterations;
+  out.line_search_steps = st.line_search_steps;
+  out.gradient_steps = st.gradient_steps;
+  out.function_evals = st.function_evals;
+  out.merit = st.merit;
+  const bool claim = verified(pr, n, z, o.tol);
+  if (claim) z = canonical(pr, n, z, o.tol);
+  out.status = claim ? Status::kSolved
+               : stop == lcp::DampedNewtonStop::kIterationLimit ? Status::kIterationLimit
+               : stop == lcp::DampedNewtonStop::kNonFinite      ? Status::kNumericalFailure
+                                                                : Status::kStalled;
+  finalize_system(pr, physical(pr, n, z), out, o);
+  if (out.status != Status::kSolved)
     out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
                   " after " + std::to_string(out.iterations) + " iterations (merit " +
-                  std::to_string(psi) + ")";
+                  std::to_string(st.merit) + ")";
 }
 
 void check(const SystemStep3dProblem& pr) { throw_if_invalid(pr.validate(), "step"); }
@@ -482,8 +479,8 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
   return out;
 }
 
-SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& problem,
-                                                     const Step3dSolverOptions& options,
+SystemStep3dSolveResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& problem,
+                                                    const CommonOptions& options,
                                                      const std::vector<Step3dStart>* start) {
   check(problem);
   throw_if_invalid(options.validate(), "options");
@@ -501,7 +498,8 @@ SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& 
     }
     if (!z.allFinite()) throw InputError("start point must be finite");
   }
-  SystemStep3dSolverResult out;
+  SystemStep3dSolveResult out;
+  out.solver = "fb-soc";
   newton(problem, n, z, options, out);
   out.seconds = seconds_since(t0);
   return out;
@@ -513,14 +511,14 @@ SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& pro
   if (n_starts < 0) throw InputError("n_starts must be >= 0");
   const Normalized n = normalize(problem);
   std::mt19937_64 rng(seed);
-  const Step3dSolverOptions o;
+  const CommonOptions o = step_3d_solver_options();
   std::vector<SystemStep3dSolution> sols;
   int ok = 0;
   for (int i = 0; i <= n_starts; ++i) {
     const Vec z = i == 0 ? n.z0 : random_start(n, rng);
-    SystemStep3dSolverResult r;
+    SystemStep3dSolveResult r;
     newton(problem, n, z, o, r);
-    if (!r.solved) continue;
+    if (r.status != Status::kSolved) continue;
     ++ok;
     bool dup = false;
     for (auto& s : sols)

@@ -10,11 +10,13 @@
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/result.hpp"
+#include "cpkit/core/soc_problem.hpp"
 
 namespace cpkit {
 
-/// kFrictionContact: the local 3-D frictional contact problem (friction_problem.hpp).
-enum class ProblemKind { kLcp, kBoxLcp, kMcp, kFrictionContact };
+/// kFrictionContact: the local 3-D frictional contact problem (friction_problem.hpp);
+/// kSoc: second-order-cone complementarity, per-block cones v0 >= |v1| (soc_problem.hpp).
+enum class ProblemKind { kLcp, kBoxLcp, kMcp, kFrictionContact, kSoc };
 
 struct SolverInfo {
   std::string name;          ///< registry key, e.g. "lemke", "fb-newton"
@@ -31,6 +33,8 @@ using McpSolveFn = std::function<SolveResult(const McpProblem&, const CommonOpti
 /// w, through finalize(const FrictionContactProblem&, ...) (friction_verdict.hpp).
 using FrictionSolveFn =
     std::function<SolveResult(const FrictionContactProblem&, const CommonOptions&)>;
+/// Cone solvers return z and w = M z + q through finalize(const SocProblem&, ...).
+using SocSolveFn = std::function<SolveResult(const SocProblem&, const CommonOptions&)>;
 
 /// One registered solver. Entry points that are empty mean "does not accept that kind".
 struct SolverEntry {
@@ -39,6 +43,7 @@ struct SolverEntry {
   BoxLcpSolveFn solve_box_lcp;
   McpSolveFn solve_mcp;
   FrictionSolveFn solve_fc;
+  SocSolveFn solve_soc;
   bool accepts(ProblemKind kind) const;
   /// Accepts this LCP (kind and storage).
   bool accepts(const LcpProblem& p) const;

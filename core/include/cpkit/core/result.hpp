@@ -38,6 +38,7 @@ struct Attempt {
   double residual = 0;
   double seconds = 0;
   std::string message;
+  int iterations = 0;        ///< that attempt's iterations (0 when not counted)
 };
 
 struct SolveResult {

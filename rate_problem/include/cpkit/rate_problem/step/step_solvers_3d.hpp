@@ -21,6 +21,8 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/result.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
 namespace cpkit::rate {
@@ -32,26 +34,27 @@ struct Step3dStart {
   double lambda = 0;
 };
 
-/// Options of the iterative solvers.
-struct Step3dSolverOptions {
-  int max_iterations = 100;  ///< Newton iterations (FB-SOC); Ipopt: per NLP (0: Ipopt's 500)
-  double tol = 1e-9;         ///< acceptance on step_3d_residual
-  double time_limit_s = 10;  ///< Ipopt: for the whole MPCC sequence
-  std::string validate() const;
+/// Options of the iterative solvers: the common options (core/options.hpp) with the step's
+/// defaults, step_3d_solver_options(): tol = tol_acceptable = 1e-9 (acceptance on
+/// step_3d_residual), max_iterations = 100 (FB-SOC Newton iterations, 0 = 100; Ipopt: per NLP,
+/// 0 = Ipopt's 500), time_limit_s = 10 (Ipopt: for the whole MPCC sequence).
+CommonOptions step_3d_solver_options();
+
+/// The outcome of one iterative solve: the common SolveResult (status, iterations,
+/// line_search_steps, gradient_steps, seconds, message; z = (P_T1, P_N1, lambda) in the
+/// problem's units, residuals.natural = step_3d_residual) with the step's solution. The status
+/// is granted only by finalize_step_3d.
+struct Step3dSolveResult : SolveResult {
+  Step3dSolution solution;  ///< the final iterate (a solution when status == kSolved)
+  double merit = 0;         ///< 0.5 |Phi|^2 at the end (normalized units)
 };
 
-/// The outcome of one iterative solve.
-struct Step3dSolverResult {
-  bool solved = false;          ///< a verified solution (step_3d_residual <= tol)
-  std::string solver;           ///< "fb-soc" or "ipopt"
-  Step3dSolution solution;      ///< the final iterate (a solution when `solved`)
-  int iterations = 0;           ///< Newton iterations (Ipopt: NLP iterations + polish)
-  int line_search_steps = 0;    ///< backtracking steps (FB-SOC)
-  int gradient_steps = 0;       ///< steepest-descent fallbacks (FB-SOC)
-  double merit = 0;             ///< 0.5 |Phi|^2 at the end (normalized units)
-  double seconds = 0;
-  std::string message;
-};
+/// The verdict, as finalize() for an LCP (core/finalize.hpp): recomputes the solution (type,
+/// residual) from claim.solution.values and the problem data; kSolved when step_3d_residual
+/// <= tol, kSolvedInaccurate up to tol_acceptable, whatever was claimed; a claimed solution
+/// the data refute becomes kNumericalFailure; other claimed failures are kept.
+void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& claim,
+                      const CommonOptions& options);
 
 /// SOC Fischer-Burmeister semismooth Newton on z = (P_T1, P_N1, lambda): equations
 /// fb(P_N1, -g1) = 0 and phi_soc(x, y) = x + y - sqrt(x o x + y o y) = 0 with
@@ -60,8 +63,8 @@ struct Step3dSolverResult {
 /// line search on 0.5 |Phi|^2 with a steepest-descent fallback. Fixed-size, no allocation in
 /// the loop. Start: `start`, or the start state (P_T0, P_N0, lambda = 0) when null.
 /// Throws InputError for an invalid problem or options.
-Step3dSolverResult solve_step_3d_fb_soc(const Step3dProblem& problem,
-                                        const Step3dSolverOptions& options = {},
+Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
+                                       const CommonOptions& options = step_3d_solver_options(),
                                         const Step3dStart* start = nullptr);
 
 /// The step as an MPCC solved by Ipopt (cpkit::lcp::solve_mpcc, Scholtes relaxation): variables
@@ -69,8 +72,8 @@ Step3dSolverResult solve_step_3d_fb_soc(const Step3dProblem& problem,
 /// ||P_T1||^2 >= 0, equalities mu P_N1 D Dw_T^i = lambda D^-1 P_T1 (normality), objective
 /// 0.5 |z - start|^2 (selects the solution near the start); each converged NLP point is
 /// polished by FB-SOC Newton and accepted only through step_3d_residual. Throws InputError.
-Step3dSolverResult solve_step_3d_ipopt(const Step3dProblem& problem,
-                                       const Step3dSolverOptions& options = {},
+Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
+                                      const CommonOptions& options = step_3d_solver_options(),
                                        const Step3dStart* start = nullptr);
 
 /// The faceted step: the ellipse replaced by the inscribed polygon of k vertices
@@ -95,31 +98,20 @@ struct FacetedStep3dResult {
 FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int facets,
                                           int n_starts = 16, std::uint64_t seed = 1);
 
-/// One attempt of the chain.
-struct Step3dAttempt {
-  std::string solver;
-  bool solved = false;
-  double residual = 0;  ///< step_3d_residual of its answer (inf when it gave none)
-  int iterations = 0;
-  double seconds = 0;
-  std::string message;
-};
-
 struct Step3dChainOptions {
   /// Links tried in order until one gives a verified solution: "exact" (enumerate_step_3d,
   /// the solution closest to the start state, i.e. smallest |DP|), "fb-soc", "ipopt".
   std::vector<std::string> chain = {"exact", "fb-soc", "ipopt"};
-  Step3dSolverOptions solver;
+  CommonOptions solver = step_3d_solver_options();
   /// Empty when usable; names the bad field (empty chain, unknown link name, solver options).
   std::string validate() const;
 };
 
-struct Step3dChainResult {
-  bool solved = false;
-  std::string solver;             ///< the link that succeeded
+/// The common SolveResult of the chain: status kSolved when a link gave a verified solution
+/// (solver = that link), else the last attempt's status; attempts = every link tried (residual =
+/// step_3d_residual of its answer, inf when it gave none).
+struct Step3dChainResult : SolveResult {
   Step3dSolution solution;
-  std::vector<Step3dAttempt> attempts;
-  std::string message;
 };
 
 /// One verified solution by the chain. Throws InputError for invalid input or options.

@@ -77,16 +77,11 @@ double system_step_3d_residual(const SystemStep3dProblem& problem,
 SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& problem,
                                                   const std::vector<Step3dValues>& values);
 
-struct SystemStep3dSolverResult {
-  bool solved = false;  ///< system_step_3d_residual <= tol
-  std::string solver = "fb-soc";
-  SystemStep3dSolution solution;  ///< the final iterate (a solution when `solved`)
-  int iterations = 0;
-  int line_search_steps = 0;
-  int gradient_steps = 0;
-  double merit = 0;  ///< 0.5 |Phi|^2 at the end (normalized units)
-  double seconds = 0;
-  std::string message;
+/// The common SolveResult (status granted by the system verdict: kSolved when
+/// system_step_3d_residual <= tol, as finalize_step_3d) with the system's solution.
+struct SystemStep3dSolveResult : SolveResult {
+  SystemStep3dSolution solution;  ///< the final iterate (a solution when status == kSolved)
+  double merit = 0;               ///< 0.5 |Phi|^2 at the end (normalized units)
 };
 
 /// Semismooth Newton on the 4N unknowns z_i = (P_TX1, P_TY1, P_N1, lambda)_i with, per point,
@@ -95,8 +90,8 @@ struct SystemStep3dSolverResult {
 /// 0.5 |Phi|^2 with a steepest-descent fallback; accepted only when system_step_3d_residual
 /// <= options.tol and each FB function is small against its arguments. Start: `start` (N
 /// entries) or the start states with lambda = 0. Throws InputError for invalid input.
-SystemStep3dSolverResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& problem,
-                                                     const Step3dSolverOptions& options = {},
+SystemStep3dSolveResult solve_system_step_3d_fb_soc(
+    const SystemStep3dProblem& problem, const CommonOptions& options = step_3d_solver_options(),
                                                      const std::vector<Step3dStart>* start = nullptr);
 
 /// Distinct verified solutions of FB-SOC Newton from the start state and `n_starts`
