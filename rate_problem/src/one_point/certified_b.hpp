@@ -1,0 +1,125 @@
+#pragma once
+// Internal: the state-b rate LCP (rate_lcp.cpp, state_b_lcp) enumerated by its complementary
+// supports with every sign decided against the rounding of the expression that carries it
+// (rounded.hpp), from the data (A, C_T, mu, dF) themselves: no tolerance, no units.
+//
+// Why (issue 24, item 1 of the brief of h19): enumerate_small judges w >= 0, z > 0, merges and
+// singular blocks with fixed relative bands (1e-12 .. 1e4 x 1e-12 of the row sizes). At critical
+// loads of ill-conditioned contacts the data decide signs far inside those bands (a slip rate of
+// 1e-14 relative, a separation whose dw_N is 1e-15 of its terms), and the route printed a wrong
+// set as complete. Here a sign that the rounding cannot decide makes the answer undecided
+// (complete: false), never a guess.
+//
+// The structure used (docs/contact_model.md, Sec. 5; u = z0 = dP_N, xi = z1 - z2 = dw_T^i):
+//  - columns 2 and 3 of M are opposite, q2 = -q1, and w0 = -D0 dw_N;
+//  - a solution with z1, z2 > 0 adds no physical point (fact (i) of summarize_b_core);
+//  - with D_+ = c1 det - a12 (mu D0 - a12) and D_- = c1 det + a12 (mu D0 + a12) nonzero the
+//    set is finite and its points are the basic solutions of {}, {1}, {2}, {3}, {1,2}, {1,3},
+//    which differ in the signs of (u, xi), so no two of them coincide.
+// Every feasibility condition below is a sign of a Cramer numerator (denominators c1, det, D0
+// are positive), with w_i = 0 on the support exactly by construction.
+#include <cmath>
+#include <initializer_list>
+
+#include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/one_point/rate_problem.hpp"
+#include "rounded.hpp"
+
+namespace cpkit::rate::detail {
+
+struct CertifiedB {
+  /// false: the structure does not apply (mu = 0, det A or D_+/D_- not decided nonzero: a
+  /// continuum or a singular block; the caller keeps its general engine)
+  bool applies = false;
+  bool undecided = false;  ///< some candidate's existence or type hangs on an undecided sign
+  int n = 0;               ///< decided solution points (at most 4: a finite set)
+  SolutionType type[6] = {};
+  double u[6] = {}, xi[6] = {};  ///< dP_N and dw_T^i of each point (computed values)
+};
+
+/// Three-valued verdict of "x > 0" (strict) and "x >= 0": 1 true, 0 false, kUndecided.
+inline int certified_pos(Rounded x) noexcept {
+  const int s = sign3(x);
+  return s == kUndecided ? kUndecided : (s > 0 ? 1 : 0);
+}
+inline int certified_nonneg(Rounded x) noexcept {
+  const int s = sign3(x);
+  return s == kUndecided ? kUndecided : (s >= 0 ? 1 : 0);
+}
+
+/// The decided solution points of the state-b rate problem of (p, f).
+inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
+  CertifiedB out;
+  const Rounded a11 = exact(p.a11), a12 = exact(p.a12), a22 = exact(p.a22), ct = exact(p.C_T);
+  const Rounded mu = exact(p.mu), fT = exact(f.dF_T), fN = exact(f.dF_N);
+  const Rounded det = a11 * a22 - a12 * a12;
+  const Rounded D0 = a22 + ct * det;
+  const Rounded c1 = exact(1.0) + a11 * ct;
+  const Rounded S = c1 * fN - a12 * ct * fT;  // D0 dw_N at dP = 0
+  const Rounded r = a22 * fT - a12 * fN;      // det dw_T^i at dP = 0, dw_N = 0
+  // The Cramer numerators and D_+/- carry the factor D0 > 0 (expanded by hand, checked with
+  // sympy): D_+/- = D0 (a11 -/+ mu a12), the numerator of u is D0 N with N = a11 dF_N -
+  // a12 dF_T, those of xi on {1,2} / {1,3} are D0 L_+ and -D0 L_- with L_s = (s + mu a12 C_T)
+  // dF_T - mu c1 dF_N. Their signs are decided on the reduced forms: the factor det of an
+  // ill-conditioned A would add its own rounding (1e-4 relative at cond 1e12) to every bound.
+  const Rounded Dp = a11 - mu * a12, Dm = a11 + mu * a12;
+  const Rounded N = a11 * fN - a12 * fT;
+  const Rounded Lp = (exact(1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  const Rounded Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(c1) != 1) return out;
+  const int sp = sign3(Dp), sm = sign3(Dm);
+  if (sp == 0 || sm == 0) return out;  // a singular block: a continuum is possible
+  if (sp == kUndecided || sm == kUndecided) {
+    out.applies = true;
+    out.undecided = true;
+    return out;
+  }
+  out.applies = true;
+  // a candidate: all conditions 1 -> a point; any 0 -> none; else undecided
+  auto add = [&](std::initializer_list<int> conds, SolutionType t, double uu, double xx) {
+    bool und = false;
+    for (const int c : conds) {
+      if (c == 0) return;
+      und = und || c == kUndecided;
+    }
+    if (und) {
+      out.undecided = true;
+      return;
+    }
+    out.type[out.n] = t;
+    out.u[out.n] = uu;
+    out.xi[out.n] = xx;
+    ++out.n;
+  };
+  const int r0 = sign3(r), S0 = sign3(S), N0 = sign3(N);
+  // {}: z = 0 needs w1 = -r >= 0 and w2 = r >= 0 (r = 0) and w0 = -S >= 0
+  if (r0 != kUndecided && S0 != kUndecided) {
+    if (r0 == 0 && S0 <= 0) add({1}, S0 < 0 ? SolutionType::kSeparation : SolutionType::kStick, 0, 0);
+  } else {
+    add({r0 == kUndecided ? kUndecided : (r0 == 0 ? 1 : 0),
+         S0 == kUndecided ? kUndecided : (S0 <= 0 ? 1 : 0)},
+        SolutionType::kStick, 0, 0);
+  }
+  // {2} / {3}: u = 0, xi = r / det != 0, w0 = -D0 N / det >= 0 (> 0: separation)
+  {
+    const int slip = certified_pos(r0 == kUndecided ? r : Rounded{std::abs(r.v), r.e});
+    const int w0 = certified_nonneg(-N);
+    const SolutionType t = N0 == -1 ? SolutionType::kSeparation
+                                    : (r.v > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus);
+    if (N0 == kUndecided && slip == 1 && w0 == 1) out.undecided = true;  // type undecided
+    else add({slip, w0}, t, 0.0, r.v / det.v);
+  }
+  // {1}: u = S / c1 > 0, xi = 0, w1 c1 = -D0 L_+ >= 0, w2 c1 = -D0 L_- >= 0
+  add({certified_pos(S), certified_nonneg(-Lp), certified_nonneg(-Lm)}, SolutionType::kStick,
+      S.v / c1.v, 0.0);
+  // {1,2}: u = N / (a11 - mu a12) > 0, xi = L_+ / (a11 - mu a12) > 0 (w2 = 2 mu D0 u >= 0)
+  add({certified_pos(sp > 0 ? N : -N), certified_pos(sp > 0 ? Lp : -Lp)},
+      SolutionType::kSlipPlus, N.v / Dp.v, Lp.v / Dp.v);
+  // {1,3}: u = N / (a11 + mu a12) > 0, xi = -L_- / (a11 + mu a12) < 0 (w1 = 2 mu D0 u >= 0)
+  add({certified_pos(sm > 0 ? N : -N), certified_pos(sm > 0 ? Lm : -Lm)},
+      SolutionType::kSlipMinus, N.v / Dm.v, -Lm.v / Dm.v);
+  return out;
+}
+
+}  // namespace cpkit::rate::detail
