@@ -93,6 +93,10 @@ inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noe
     ++out.n;
   };
   const int r0 = sign3(r), S0 = sign3(S), N0 = sign3(N);
+  // values (not signs) of the 2x2 determinants to 2 ulps, as state_b_lcp has them
+  const double xi_sep = diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N) /
+                        diff_of_products(p.a11, p.a22, p.a12, p.a12);
+  const double Nv = diff_of_products(p.a11, f.dF_N, p.a12, f.dF_T);
   // {}: z = 0 needs w1 = -r >= 0 and w2 = r >= 0 (r = 0) and w0 = -S >= 0
   if (r0 != kUndecided && S0 != kUndecided) {
     if (r0 == 0 && S0 <= 0) add({1}, S0 < 0 ? SolutionType::kSeparation : SolutionType::kStick, 0, 0);
@@ -108,17 +112,17 @@ inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noe
     const SolutionType t = N0 == -1 ? SolutionType::kSeparation
                                     : (r.v > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus);
     if (N0 == kUndecided && slip == 1 && w0 == 1) out.undecided = true;  // type undecided
-    else add({slip, w0}, t, 0.0, r.v / det.v);
+    else add({slip, w0}, t, 0.0, xi_sep);
   }
   // {1}: u = S / c1 > 0, xi = 0, w1 c1 = -D0 L_+ >= 0, w2 c1 = -D0 L_- >= 0
   add({certified_pos(S), certified_nonneg(-Lp), certified_nonneg(-Lm)}, SolutionType::kStick,
       S.v / c1.v, 0.0);
   // {1,2}: u = N / (a11 - mu a12) > 0, xi = L_+ / (a11 - mu a12) > 0 (w2 = 2 mu D0 u >= 0)
   add({certified_pos(sp > 0 ? N : -N), certified_pos(sp > 0 ? Lp : -Lp)},
-      SolutionType::kSlipPlus, N.v / Dp.v, Lp.v / Dp.v);
+      SolutionType::kSlipPlus, Nv / Dp.v, Lp.v / Dp.v);
   // {1,3}: u = N / (a11 + mu a12) > 0, xi = -L_- / (a11 + mu a12) < 0 (w1 = 2 mu D0 u >= 0)
   add({certified_pos(sm > 0 ? N : -N), certified_pos(sm > 0 ? Lm : -Lm)},
-      SolutionType::kSlipMinus, N.v / Dm.v, -Lm.v / Dm.v);
+      SolutionType::kSlipMinus, Nv / Dm.v, -Lm.v / Dm.v);
   return out;
 }
 
