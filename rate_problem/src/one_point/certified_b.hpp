@@ -30,7 +30,7 @@ namespace cpkit::rate::detail {
 
 struct CertifiedB {
   /// false: the structure does not apply (mu = 0, det A or D_+/D_- not decided nonzero: a
-  /// continuum or a singular block; the caller keeps its general engine)
+  /// continuum or a (nearly) singular block; the caller keeps its general engine)
   bool applies = false;
   bool undecided = false;  ///< some candidate's existence or type hangs on an undecided sign
   int n = 0;               ///< decided solution points (at most 4: a finite set)
@@ -69,12 +69,15 @@ inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noe
   const Rounded Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
   if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(c1) != 1) return out;
   const int sp = sign3(Dp), sm = sign3(Dm);
-  if (sp == 0 || sm == 0) return out;  // a singular block: a continuum is possible
-  if (sp == kUndecided || sm == kUndecided) {
-    out.applies = true;
-    out.undecided = true;
+  // a singular block, or one within its rounding of singular (the degenerate line
+  // a11 = mu |a12| of the presets, exact only up to the rounding of mu): a continuum is
+  // possible; the general engine keeps deciding those (left open: its bands, issue 24)
+  if (sp == 0 || sm == 0 || sp == kUndecided || sm == kUndecided) return out;
+  // the general engine's own near-singular band (1e-6 of the terms, as b_blocks_regular): the
+  // two routes of the N = 1 system and of one point must meet the same continua there
+  const double mua12 = std::abs(p.mu * p.a12);
+  if (std::abs(Dp.v) <= 1e-6 * (p.a11 + mua12) || std::abs(Dm.v) <= 1e-6 * (p.a11 + mua12))
     return out;
-  }
   out.applies = true;
   // a candidate: all conditions 1 -> a point; any 0 -> none; else undecided
   auto add = [&](std::initializer_list<int> conds, SolutionType t, double uu, double xx) {
