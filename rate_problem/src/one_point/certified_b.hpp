@@ -38,35 +38,63 @@ struct CertifiedB {
   double u[6] = {}, xi[6] = {};  ///< dP_N and dw_T^i of each point (computed values)
 };
 
+/// A fast pre-pass: a double with the magnitude m of the terms it was formed from (the same
+/// operations on absolute values). An expression of at most a dozen roundings is within
+/// 12 u m of its exact value, so |v| > 1e-13 m decides its sign with a margin of 30; closer
+/// (or v = 0 with m > 0) is undecided here and certified_b reruns with Rounded.
+struct Mag {
+  double v = 0, m = 0;
+};
+inline Mag exact_mag(double x) noexcept { return {x, std::abs(x)}; }
+inline Mag operator+(Mag a, Mag b) noexcept { return {a.v + b.v, a.m + b.m}; }
+inline Mag operator-(Mag a) noexcept { return {-a.v, a.m}; }
+inline Mag operator-(Mag a, Mag b) noexcept { return {a.v - b.v, a.m + b.m}; }
+inline Mag operator*(Mag a, Mag b) noexcept { return {a.v * b.v, a.m * b.m}; }
+inline int sign3(Mag x) noexcept {
+  if (x.m == 0) return 0;
+  // the relative bound needs normal numbers: near underflow or overflow Rounded decides
+  if (!(x.m >= 1e-250 && x.m <= 1e250)) return kUndecided;
+  if (std::abs(x.v) > 1e-13 * x.m) return x.v > 0 ? 1 : -1;
+  return kUndecided;
+}
+inline Mag abs_of(Mag x) noexcept { return {std::abs(x.v), x.m}; }
+inline Rounded abs_of(Rounded x) noexcept { return {std::abs(x.v), x.e}; }
+inline Rounded make(double x, const Rounded*) noexcept { return exact(x); }
+inline Mag make(double x, const Mag*) noexcept { return exact_mag(x); }
+
 /// Three-valued verdict of "x > 0" (strict) and "x >= 0": 1 true, 0 false, kUndecided.
-inline int certified_pos(Rounded x) noexcept {
+template <class T>
+int certified_pos(T x) noexcept {
   const int s = sign3(x);
   return s == kUndecided ? kUndecided : (s > 0 ? 1 : 0);
 }
-inline int certified_nonneg(Rounded x) noexcept {
+template <class T>
+int certified_nonneg(T x) noexcept {
   const int s = sign3(x);
   return s == kUndecided ? kUndecided : (s >= 0 ? 1 : 0);
 }
 
-/// The decided solution points of the state-b rate problem of (p, f).
-inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
+/// The decided solution points of the state-b rate problem of (p, f), signs judged in T.
+template <class T>
+CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcept {
   CertifiedB out;
-  const Rounded a11 = exact(p.a11), a12 = exact(p.a12), a22 = exact(p.a22), ct = exact(p.C_T);
-  const Rounded mu = exact(p.mu), fT = exact(f.dF_T), fN = exact(f.dF_N);
-  const Rounded det = a11 * a22 - a12 * a12;
-  const Rounded D0 = a22 + ct * det;
-  const Rounded c1 = exact(1.0) + a11 * ct;
-  const Rounded S = c1 * fN - a12 * ct * fT;  // D0 dw_N at dP = 0
-  const Rounded r = a22 * fT - a12 * fN;      // det dw_T^i at dP = 0, dw_N = 0
+  auto exact = [](double x) { return make(x, static_cast<const T*>(nullptr)); };
+  const T a11 = exact(p.a11), a12 = exact(p.a12), a22 = exact(p.a22), ct = exact(p.C_T);
+  const T mu = exact(p.mu), fT = exact(f.dF_T), fN = exact(f.dF_N);
+  const T det = a11 * a22 - a12 * a12;
+  const T D0 = a22 + ct * det;
+  const T c1 = exact(1.0) + a11 * ct;
+  const T S = c1 * fN - a12 * ct * fT;  // D0 dw_N at dP = 0
+  const T r = a22 * fT - a12 * fN;      // det dw_T^i at dP = 0, dw_N = 0
   // The Cramer numerators and D_+/- carry the factor D0 > 0 (expanded by hand, checked with
   // sympy): D_+/- = D0 (a11 -/+ mu a12), the numerator of u is D0 N with N = a11 dF_N -
   // a12 dF_T, those of xi on {1,2} / {1,3} are D0 L_+ and -D0 L_- with L_s = (s + mu a12 C_T)
   // dF_T - mu c1 dF_N. Their signs are decided on the reduced forms: the factor det of an
   // ill-conditioned A would add its own rounding (1e-4 relative at cond 1e12) to every bound.
-  const Rounded Dp = a11 - mu * a12, Dm = a11 + mu * a12;
-  const Rounded N = a11 * fN - a12 * fT;
-  const Rounded Lp = (exact(1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
-  const Rounded Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  const T Dp = a11 - mu * a12, Dm = a11 + mu * a12;
+  const T N = a11 * fN - a12 * fT;
+  const T Lp = (exact(1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  const T Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
   if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(c1) != 1) return out;
   const int sp = sign3(Dp), sm = sign3(Dm);
   // a singular block, or one within its rounding of singular (the degenerate line
@@ -110,7 +138,7 @@ inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noe
   }
   // {2} / {3}: u = 0, xi = r / det != 0, w0 = -D0 N / det >= 0 (> 0: separation)
   {
-    const int slip = certified_pos(r0 == kUndecided ? r : Rounded{std::abs(r.v), r.e});
+    const int slip = certified_pos(abs_of(r));
     const int w0 = certified_nonneg(-N);
     const SolutionType t = N0 == -1 ? SolutionType::kSeparation
                                     : (r.v > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus);
@@ -127,6 +155,14 @@ inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noe
   add({certified_pos(sm > 0 ? N : -N), certified_pos(sm > 0 ? Lm : -Lm)},
       SolutionType::kSlipMinus, Nv / Dm.v, -Lm.v / Dm.v);
   return out;
+}
+
+
+/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide.
+inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
+  const CertifiedB fast = certified_b_in<Mag>(p, f);
+  if (fast.applies && !fast.undecided) return fast;
+  return certified_b_in<Rounded>(p, f);
 }
 
 }  // namespace cpkit::rate::detail
