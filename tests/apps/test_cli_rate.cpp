@@ -180,12 +180,29 @@ TEST_CASE("cpkit rate: A in units of 1e10 is solved, not a 'disagreement' (issue
 
 TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 item 17)",
           "[cli][rate]") {
-  // dF = (a11 (1 + 1.16e-12), a12): N = a11 dF_N - a12 dF_T is 1e-12 of its terms, on the
-  // critical direction N = 0 to within rounding; the enumeration's sign test cannot call it
-  // (it says so), which is inconclusive (5), not a disagreement between routes (3, as before).
-  const Run r = run_rate("--state b --a11 1.0142831963176735 --a12 0.8450714454408795 "
-                         "--a22 1.2075902949448927 --mu 1.038170126179592 "
-                         "--dF 1.0142831963188452 0.8450714454408795 --json");
+  // dF = (a11 (1 + 1.16e-12), a12): N = a11 dF_N - a12 dF_T is 1e-12 of its terms, far above
+  // its rounding. The enumeration's fixed band could not call it (exit 5 here before h19); its
+  // signs are now judged against their rounding (certified_b.hpp) and the data decide: in exact
+  // rationals (Python fractions on these doubles) N = -9.90e-13 < 0, r = a22 dF_T - a12 dF_N =
+  // 0.511 > 0, L_+ = 0.137 > 0, so the one solution is the separation with dw_T = r / det A =
+  // 1.0000000000027707.
+  const std::string A = "--state b --a11 1.0142831963176735 --a12 0.8450714454408795 "
+                        "--a22 1.2075902949448927 --mu 1.038170126179592 ";
+  {
+    const Run r = run_rate(A + "--dF 1.0142831963188452 0.8450714454408795 --json");
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["complete"] == true);
+    CHECK(j["count"] == 1);
+    CHECK(j["types"] == nlohmann::json({"separation"}));
+    CHECK(j["solutions"][0]["rates"]["dw_T"].get<double>() == Approx(1.0000000000027707).epsilon(1e-12));
+    CHECK(j["solutions"][0]["rates"]["dw_N"].get<double>() < 0);
+  }
+  // dF = (a11, a12): N = 0 exactly in the data, but a11 dF_N and a12 dF_T are rounded products,
+  // so their difference is within its rounding: the separation / slip+ boundary is not decided
+  // by the computed signs, which is inconclusive (5), not a disagreement between routes (3)
+  const Run r = run_rate(A + "--dF 1.0142831963176735 0.8450714454408795 --json");
   CHECK(r.code == 5);
   CHECK(r.err.find("not conclusive") != std::string::npos);
   const auto j = nlohmann::json::parse(r.out);

@@ -82,17 +82,6 @@ std::string sorted_types(unsigned mask) {
   return s;
 }
 
-/// Rows (1-based) where the enumeration route (route 2) still prints a wrong set as complete:
-/// enumerate_small's sign test passes w >= -tol W with the rate route's fixed tol = 1e-12 (a
-/// decided "w = 0" inside its band), and the b-state summary's fixed 1e-10 band does the same.
-/// Left open (issue 24, part 3 of the brief of helper h14); checked by the [!shouldfail] case
-/// below, which starts failing once they are fixed and this list must be emptied.
-bool enumeration_known_wrong(int n) {
-  for (const int k : {3, 5, 7, 8, 9, 15, 18})
-    if (k == n) return true;
-  return false;
-}
-
 ContactParameters params_of(const Row& r) {
   ContactParameters p;
   p.a11 = r.a11;
@@ -143,14 +132,17 @@ TEST_CASE("critical loads at cond(A) 1e2..1e12: the exact set or not complete (i
     ++n;
     CAPTURE(n, r.state, r.a11, r.a12, r.a22, r.mu, r.C_T, r.sgn_PT, r.dF_T, r.dF_N, r.types);
     if (check_row(r, RateMethod::kAnalytic)) ++analytic_complete;
-    if (!enumeration_known_wrong(n) && check_row(r, RateMethod::kEnumerate)) ++enumerate_complete;
+    if (check_row(r, RateMethod::kEnumerate)) ++enumerate_complete;
   }
   // the data decide every row, and the analytic route's rounding bounds see it on all but one
   // (row 13: L_+ within 4 ulps of its terms; measured 24 of 25)
   INFO("analytic complete on " << analytic_complete << ", enumeration on " << enumerate_complete
                                << " of " << n);
   CHECK(analytic_complete >= n - 2);
-  CHECK(enumerate_complete >= 1);
+  // route 2's state-b signs are judged against their rounding (certified_b.hpp): rows 3, 5, 7,
+  // 8, 9, 15, 18 were wrong and complete with the fixed bands of enumerate_small; now 10 of the
+  // 11 b rows are complete (row 13 is the undecided L_+), the d rows not complete (snapped q)
+  CHECK(enumerate_complete >= 10);
 }
 
 TEST_CASE("critical loads: the analytic separation's rates at cond(A) 1e11", "[rate][critical]") {
@@ -174,13 +166,52 @@ TEST_CASE("critical loads: the analytic separation's rates at cond(A) 1e11", "[r
   }
 }
 
-TEST_CASE("critical loads: the enumeration route's known wrong rows (issue 24, open)",
-          "[rate][critical][!shouldfail]") {
-  int n = 0;
-  for (const Row& r : kRows) {
-    ++n;
-    if (!enumeration_known_wrong(n)) continue;
-    CAPTURE(n);
-    check_row(r, RateMethod::kEnumerate);
+TEST_CASE("enumeration route in any units: A x c, C_T / c, dF x d, c and d in 1e-12..1e12 "
+          "(issue 24, item 17 and part 2 of h19)", "[rate][critical][units]") {
+  // Issue 24 item 17's reproducer, well posed at cond(A) 1.9: one slip+. Hand solution (C_T = 0,
+  // support {dP_N, lambda+}): D_+ = a11 - mu a12 = 8.5e9, dP_N = (a11 dF_N - a12 dF_T) / D_+ =
+  // 2e9 / 8.5e9 = 4/17, dw_T^i = (dF_T - mu dF_N) / D_+ = 0.75 / 8.5e9 = 3/34 * 1e-9.
+  for (int ec = -12; ec <= 12; ec += 4) {
+    for (int ed = -12; ed <= 12; ed += 6) {
+      const double c = std::pow(10.0, ec), d = std::pow(10.0, ed);
+      CAPTURE(c, d);
+      ContactParameters p;
+      p.a11 = 1e10 * c;
+      p.a12 = 3e9 * c;
+      p.a22 = 1.2e10 * c;
+      p.mu = 0.5;
+      const ContactState st{StateLabel::kB, 0.0, 1};
+      const LoadRate f{1.0 * d, 0.5 * d};
+      const RateSolutionSet s = solve_rate_problem(p, st, f, RateMethod::kEnumerate);
+      REQUIRE(s.complete);
+      REQUIRE(s.solutions.size() == 1);
+      CHECK(s.solutions[0].type == SolutionType::kSlipPlus);
+      CHECK(s.solutions[0].start.dP_N == Approx(4.0 / 17.0 * d).epsilon(1e-12));
+      CHECK(s.solutions[0].start.dw_Ti == Approx(3.0 / 34.0 * 1e-9 * d / c).epsilon(1e-9));
+      const RateSummary sum = summarize_rate_problem(p, st, f, RateMethod::kEnumerate);
+      CHECK(sum.reliable);
+      CHECK(sum.count == 1);
+      CHECK(sorted_types(sum.types) == "slip+");
+      const RateSummary pre = summarize_rate_problem(precompute_rate_problem(p, st), f);
+      CHECK(pre.count == 1);
+      CHECK(sorted_types(pre.types) == "slip+");
+    }
+  }
+  // the critical rows scaled exactly (powers of two: the same exact data in other units) keep
+  // their exact sets or say not complete; rows 3, 5, 7 (a slip of 1e-14 relative) were "stick"
+  for (const int e : {-40, 40}) {
+    int n = 0;
+    for (const Row& r0 : kRows) {
+      ++n;
+      Row r = r0;
+      r.a11 = std::ldexp(r.a11, e);
+      r.a12 = std::ldexp(r.a12, e);
+      r.a22 = std::ldexp(r.a22, e);
+      r.C_T = std::ldexp(r.C_T, -e);
+      r.dF_T = std::ldexp(r.dF_T, -e / 2);
+      r.dF_N = std::ldexp(r.dF_N, -e / 2);
+      CAPTURE(e, n);
+      check_row(r, RateMethod::kEnumerate);
+    }
   }
 }

@@ -808,3 +808,48 @@ TEST_CASE("regression: continua that were not solutions (count inf, complete)", 
     ++k;
   }
 }
+
+TEST_CASE("N-point rate problems in any units: A x c, C_T / c, dF x d (issue 24 part 2 of h19)",
+          "[rate][system][units]") {
+  // Metamorphic check (the law is the independent source): the rate problem is invariant under
+  // a change of the unit of length (A x c, C_T / c, displacement rates / c) and positively
+  // homogeneous in the load rate (forces and rates x d). Generic random 2- and 3-point systems:
+  // the scaled answer is complete exactly when the unscaled one is, with the same type tuples,
+  // and its force rates are d times the unscaled ones.
+  std::mt19937 rng(2419);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int compared = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const int N = 2 + trial % 2;
+    ContactSystem S;
+    for (int i = 0; i < N; ++i) S.points.push_back(random_point(rng, random_label(rng)));
+    S.A = random_spd(rng, 2 * N);
+    Vec dF(2 * N);
+    for (int i = 0; i < 2 * N; ++i) dF(i) = U(rng);
+    if (!S.validate().empty()) continue;
+    const SystemRateSolutionSet ref = solve_rate_problem(S, dF);
+    auto tuples = [](const SystemRateSolutionSet& s) {
+      std::multiset<TypeTuple> t;
+      for (const auto& z : s.solutions) t.insert(encode_types(z.types));
+      return t;
+    };
+    for (const double c : {1e-12, 1e-6, 1e6, 1e12}) {
+      for (const double d : {1e-12, 1e12}) {
+        ContactSystem T = S;
+        T.A *= c;
+        for (auto& p : T.points) p.C_T /= c;
+        const SystemRateSolutionSet s = solve_rate_problem(T, Vec(dF * d));
+        CAPTURE(trial, c, d, ref.message, s.message);
+        REQUIRE(s.complete == ref.complete);
+        REQUIRE(s.count() == ref.count());
+        CHECK(tuples(s) == tuples(ref));
+        if (!ref.complete || ref.infinite || s.solutions.size() != 1) continue;
+        const Vec P = ref.solutions[0].start.dP_N * d;
+        CHECK((s.solutions[0].start.dP_N - P).lpNorm<Eigen::Infinity>() <=
+              1e-9 * d * (1 + ref.solutions[0].start.dP_N.lpNorm<Eigen::Infinity>()));
+        ++compared;
+      }
+    }
+  }
+  CHECK(compared >= 40);
+}

@@ -9,6 +9,7 @@
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "cpkit/rate_problem/rate/analytic.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
+#include "certified_b.hpp"
 #include "piece_geometry.hpp"
 #include "rate_detail.hpp"
 
@@ -192,62 +193,31 @@ bool b_blocks_regular(const Eigen::Matrix3d& M) noexcept {
   return !(std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13);
 }
 
-/// The support enumeration proper, for a state-b LCP (M, q) whose 2x2 blocks are regular.
-void summarize_b_core(const ContactParameters& p, const LoadRate& f, const Eigen::Matrix3d& M,
-                      const Eigen::Vector3d& q, RateSummary& sum) noexcept {
-  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
-  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
-  constexpr double kFeas = 1e-10;  // relative tolerance of the sign tests
-  const double sF = load_scale(f);
-  const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
-  double U = sF, V = V0;
-  detail::P2 pts[6];
-  int np = 0;
-  auto try_support = [&](double z0, double z1, double z2) {
-    const double z[3] = {z0, z1, z2};
-    double zs = 0;
-    for (double v : z) zs = std::max(zs, std::abs(v));
-    for (double v : z)
-      if (v < -kFeas * zs) return;
-    for (int i = 0; i < 3; ++i) {
-      const double w = q(i) + M(i, 0) * z0 + M(i, 1) * z1 + M(i, 2) * z2;
-      const double ws = std::abs(q(i)) + std::abs(M(i, 0) * z0) + std::abs(M(i, 1) * z1) +
-                        std::abs(M(i, 2) * z2);
-      if (w < -kFeas * ws) return;
-    }
-    pts[np++] = detail::P2{z0, z1 - z2};
-  };
-  try_support(0, 0, 0);
-  try_support(-q(0) / M(0, 0), 0, 0);
-  try_support(0, -q(1) / M(1, 1), 0);
-  try_support(0, 0, -q(2) / M(2, 2));
-  // {1,2}: [M00 M01; M10 M11] z = -q (Cramer)
-  try_support((-q(0) * M(1, 1) + q(1) * M(0, 1)) / d12, (-q(1) * M(0, 0) + q(0) * M(1, 0)) / d12, 0);
-  try_support((-q(0) * M(2, 2) + q(2) * M(0, 2)) / d13, 0, (-q(2) * M(0, 0) + q(0) * M(2, 0)) / d13);
-  for (int k = 0; k < np; ++k) {
-    U = std::max(U, std::abs(pts[k].u));
-    V = std::max(V, std::abs(pts[k].v));
-  }
-  const double c1 = 1.0 + p.a11 * p.C_T;
-  const TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
-                   c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
-  sum.count = 0;
+/// The summary of state b from the certified support enumeration (certified_b.hpp): every
+/// sign judged against its own rounding; false when its structure does not apply (the caller
+/// then runs the general engine).
+bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
+                           RateSummary& sum) noexcept {
+  const detail::CertifiedB c = detail::certified_b(p, f);
+  if (!c.applies) return false;
+  sum.count = c.n;
   sum.types = 0;
-  for (int k = 0; k < np; ++k) {
-    if (type.undecided(pts[k])) sum.reliable = false;
-    bool dup = false;
-    for (int j = 0; j < k && !dup; ++j)
-      dup = std::abs(pts[k].u - pts[j].u) <= kGeoTol * U && std::abs(pts[k].v - pts[j].v) <= kGeoTol * V;
-    if (dup) continue;
-    ++sum.count;
-    sum.types |= 1u << static_cast<unsigned>(type(pts[k]));
-  }
+  for (int k = 0; k < c.n; ++k) sum.types |= 1u << static_cast<unsigned>(c.type[k]);
+  sum.reliable = !c.undecided;
+  return true;
 }
 
-bool summarize_b_fast(const ContactParameters& p, const LoadRate& f, RateSummary& sum) noexcept {
-  const StateBLcp l = state_b_lcp(p, f);
-  if (!b_blocks_regular(l.M)) return false;
-  summarize_b_core(p, f, l.M, l.q, sum);
+/// Whether the typed plane pieces are the certified points: same count, same types.
+bool same_set(const PlaneResult& res, const detail::CertifiedB& c) noexcept {
+  if (res.infinite || res.bad || res.n != c.n) return false;
+  int count[8] = {};
+  for (int i = 0; i < res.n; ++i) {
+    if (res.pieces[i].kind != RateSolution::Kind::kPoint) return false;
+    ++count[static_cast<unsigned>(res.pieces[i].type)];
+  }
+  for (int k = 0; k < c.n; ++k) --count[static_cast<unsigned>(c.type[k])];
+  for (const int x : count)
+    if (x != 0) return false;
   return true;
 }
 
@@ -320,6 +290,27 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     list.push(s);
   }
   list.infinite = res.infinite;
+  if (st.label == StateLabel::kB) {
+    // the tolerance-based set is checked against the certified support enumeration: a sign
+    // the data do not decide -> not complete; a different set -> the certified one (issue 24)
+    const detail::CertifiedB c = detail::certified_b(p, f);
+    if (c.applies && c.undecided) {
+      RateSolutionSet out = detail::make_solution_set(p, st, f, list, false);
+      out.message = "enumeration: a sign within the rounding error of the data";
+      return out;
+    }
+    if (c.applies && !same_set(res, c)) {
+      detail::PieceList cl;
+      for (int k = 0; k < c.n; ++k) {
+        RateSolution s;
+        s.type = c.type[k];
+        s.start = typed_rates(p, st, f, detail::P2{c.u[k], c.xi[k]}, c.type[k]);
+        cl.push(s);
+      }
+      return detail::make_solution_set(p, st, f, cl, true);
+    }
+    if (c.applies) res.ambiguous = 0;  // the same set, every sign of it decided
+  }
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
   if (res.ambiguous > 0 || res.dropped > 0 || res.bad || list.overflow) {
     out.complete = false;
@@ -340,7 +331,7 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
                                                                        : SolutionType::kStick);
     return sum;
   }
-  if (st.label == StateLabel::kB && summarize_b_fast(p, f, sum)) return sum;
+  if (st.label == StateLabel::kB && summarize_b_certified(p, f, sum)) return sum;
   if (st.label == StateLabel::kD) return summarize_d_fast(p, st, f);
   PlaneResult res;
   try {
@@ -399,17 +390,8 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& l
   LoadRate f;
   int eA = 0, eF = 0;
   detail::normalise(pre.params, load, p, f, eA, eF);
-  if (st.label == StateLabel::kB && pre.b_fast) {
-    Eigen::Matrix3d M;
-    Eigen::Vector3d q;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) M(i, j) = pre.M_b[i][j];
-      q(i) = pre.qT_b[i] * f.dF_T + pre.qN_b[i] * f.dF_N;
-    }
-    RateSummary sum;
-    summarize_b_core(p, f, M, q, sum);
-    return sum;
-  }
+  RateSummary sum;
+  if (st.label == StateLabel::kB && summarize_b_certified(p, f, sum)) return sum;
   if (st.label == StateLabel::kD) {
     // q = (1 + a11 C_T)(mu_eff dP_N - s dP_T) at lambda = 0, snapped as in state_d_lcp
     const double c1 = 1.0 + p.a11 * p.C_T;

@@ -1,0 +1,168 @@
+#pragma once
+// Internal: the state-b rate LCP (rate_lcp.cpp, state_b_lcp) enumerated by its complementary
+// supports with every sign decided against the rounding of the expression that carries it
+// (rounded.hpp), from the data (A, C_T, mu, dF) themselves: no tolerance, no units.
+//
+// Why (issue 24, item 1 of the brief of h19): enumerate_small judges w >= 0, z > 0, merges and
+// singular blocks with fixed relative bands (1e-12 .. 1e4 x 1e-12 of the row sizes). At critical
+// loads of ill-conditioned contacts the data decide signs far inside those bands (a slip rate of
+// 1e-14 relative, a separation whose dw_N is 1e-15 of its terms), and the route printed a wrong
+// set as complete. Here a sign that the rounding cannot decide makes the answer undecided
+// (complete: false), never a guess.
+//
+// The structure used (docs/contact_model.md, Sec. 5; u = z0 = dP_N, xi = z1 - z2 = dw_T^i):
+//  - columns 2 and 3 of M are opposite, q2 = -q1, and w0 = -D0 dw_N;
+//  - a solution with z1, z2 > 0 adds no physical point (fact (i) of summarize_b_core);
+//  - with D_+ = c1 det - a12 (mu D0 - a12) and D_- = c1 det + a12 (mu D0 + a12) nonzero the
+//    set is finite and its points are the basic solutions of {}, {1}, {2}, {3}, {1,2}, {1,3},
+//    which differ in the signs of (u, xi), so no two of them coincide.
+// Every feasibility condition below is a sign of a Cramer numerator (denominators c1, det, D0
+// are positive), with w_i = 0 on the support exactly by construction.
+#include <cmath>
+#include <initializer_list>
+
+#include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "rounded.hpp"
+
+namespace cpkit::rate::detail {
+
+struct CertifiedB {
+  /// false: the structure does not apply (mu = 0, det A or D_+/D_- not decided nonzero: a
+  /// continuum or a (nearly) singular block; the caller keeps its general engine)
+  bool applies = false;
+  bool undecided = false;  ///< some candidate's existence or type hangs on an undecided sign
+  int n = 0;               ///< decided solution points (at most 4: a finite set)
+  SolutionType type[6] = {};
+  double u[6] = {}, xi[6] = {};  ///< dP_N and dw_T^i of each point (computed values)
+};
+
+/// A fast pre-pass: a double with the magnitude m of the terms it was formed from (the same
+/// operations on absolute values). An expression of at most a dozen roundings is within
+/// 12 u m of its exact value, so |v| > 1e-13 m decides its sign with a margin of 30; closer
+/// (or v = 0 with m > 0) is undecided here and certified_b reruns with Rounded.
+struct Mag {
+  double v = 0, m = 0;
+};
+inline Mag exact_mag(double x) noexcept { return {x, std::abs(x)}; }
+inline Mag operator+(Mag a, Mag b) noexcept { return {a.v + b.v, a.m + b.m}; }
+inline Mag operator-(Mag a) noexcept { return {-a.v, a.m}; }
+inline Mag operator-(Mag a, Mag b) noexcept { return {a.v - b.v, a.m + b.m}; }
+inline Mag operator*(Mag a, Mag b) noexcept { return {a.v * b.v, a.m * b.m}; }
+inline int sign3(Mag x) noexcept {
+  if (x.m == 0) return 0;
+  // the relative bound needs normal numbers: near underflow or overflow Rounded decides
+  if (!(x.m >= 1e-250 && x.m <= 1e250)) return kUndecided;
+  if (std::abs(x.v) > 1e-13 * x.m) return x.v > 0 ? 1 : -1;
+  return kUndecided;
+}
+inline Mag abs_of(Mag x) noexcept { return {std::abs(x.v), x.m}; }
+inline Rounded abs_of(Rounded x) noexcept { return {std::abs(x.v), x.e}; }
+inline Rounded make(double x, const Rounded*) noexcept { return exact(x); }
+inline Mag make(double x, const Mag*) noexcept { return exact_mag(x); }
+
+/// Three-valued verdict of "x > 0" (strict) and "x >= 0": 1 true, 0 false, kUndecided.
+template <class T>
+int certified_pos(T x) noexcept {
+  const int s = sign3(x);
+  return s == kUndecided ? kUndecided : (s > 0 ? 1 : 0);
+}
+template <class T>
+int certified_nonneg(T x) noexcept {
+  const int s = sign3(x);
+  return s == kUndecided ? kUndecided : (s >= 0 ? 1 : 0);
+}
+
+/// The decided solution points of the state-b rate problem of (p, f), signs judged in T.
+template <class T>
+CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcept {
+  CertifiedB out;
+  auto exact = [](double x) { return make(x, static_cast<const T*>(nullptr)); };
+  const T a11 = exact(p.a11), a12 = exact(p.a12), a22 = exact(p.a22), ct = exact(p.C_T);
+  const T mu = exact(p.mu), fT = exact(f.dF_T), fN = exact(f.dF_N);
+  const T det = a11 * a22 - a12 * a12;
+  const T D0 = a22 + ct * det;
+  const T c1 = exact(1.0) + a11 * ct;
+  const T S = c1 * fN - a12 * ct * fT;  // D0 dw_N at dP = 0
+  const T r = a22 * fT - a12 * fN;      // det dw_T^i at dP = 0, dw_N = 0
+  // The Cramer numerators and D_+/- carry the factor D0 > 0 (expanded by hand, checked with
+  // sympy): D_+/- = D0 (a11 -/+ mu a12), the numerator of u is D0 N with N = a11 dF_N -
+  // a12 dF_T, those of xi on {1,2} / {1,3} are D0 L_+ and -D0 L_- with L_s = (s + mu a12 C_T)
+  // dF_T - mu c1 dF_N. Their signs are decided on the reduced forms: the factor det of an
+  // ill-conditioned A would add its own rounding (1e-4 relative at cond 1e12) to every bound.
+  const T Dp = a11 - mu * a12, Dm = a11 + mu * a12;
+  const T N = a11 * fN - a12 * fT;
+  const T Lp = (exact(1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  const T Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
+  if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(c1) != 1) return out;
+  const int sp = sign3(Dp), sm = sign3(Dm);
+  // a singular block, or one within its rounding of singular (the degenerate line
+  // a11 = mu |a12| of the presets, exact only up to the rounding of mu): a continuum is
+  // possible; the general engine keeps deciding those (left open: its bands, issue 24)
+  if (sp == 0 || sm == 0 || sp == kUndecided || sm == kUndecided) return out;
+  // the general engine's own near-singular band (1e-6 of the terms, as b_blocks_regular): the
+  // two routes of the N = 1 system and of one point must meet the same continua there
+  const double mua12 = std::abs(p.mu * p.a12);
+  if (std::abs(Dp.v) <= 1e-6 * (p.a11 + mua12) || std::abs(Dm.v) <= 1e-6 * (p.a11 + mua12))
+    return out;
+  out.applies = true;
+  // a candidate: all conditions 1 -> a point; any 0 -> none; else undecided
+  auto add = [&](std::initializer_list<int> conds, SolutionType t, double uu, double xx) {
+    bool und = false;
+    for (const int c : conds) {
+      if (c == 0) return;
+      und = und || c == kUndecided;
+    }
+    if (und) {
+      out.undecided = true;
+      return;
+    }
+    out.type[out.n] = t;
+    out.u[out.n] = uu;
+    out.xi[out.n] = xx;
+    ++out.n;
+  };
+  const int r0 = sign3(r), S0 = sign3(S), N0 = sign3(N);
+  // values (not signs) of the 2x2 determinants to 2 ulps, as state_b_lcp has them
+  const double xi_sep = diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N) /
+                        diff_of_products(p.a11, p.a22, p.a12, p.a12);
+  const double Nv = diff_of_products(p.a11, f.dF_N, p.a12, f.dF_T);
+  // {}: z = 0 needs w1 = -r >= 0 and w2 = r >= 0 (r = 0) and w0 = -S >= 0
+  if (r0 != kUndecided && S0 != kUndecided) {
+    if (r0 == 0 && S0 <= 0) add({1}, S0 < 0 ? SolutionType::kSeparation : SolutionType::kStick, 0, 0);
+  } else {
+    add({r0 == kUndecided ? kUndecided : (r0 == 0 ? 1 : 0),
+         S0 == kUndecided ? kUndecided : (S0 <= 0 ? 1 : 0)},
+        SolutionType::kStick, 0, 0);
+  }
+  // {2} / {3}: u = 0, xi = r / det != 0, w0 = -D0 N / det >= 0 (> 0: separation)
+  {
+    const int slip = certified_pos(abs_of(r));
+    const int w0 = certified_nonneg(-N);
+    const SolutionType t = N0 == -1 ? SolutionType::kSeparation
+                                    : (r.v > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus);
+    if (N0 == kUndecided && slip == 1 && w0 == 1) out.undecided = true;  // type undecided
+    else add({slip, w0}, t, 0.0, xi_sep);
+  }
+  // {1}: u = S / c1 > 0, xi = 0, w1 c1 = -D0 L_+ >= 0, w2 c1 = -D0 L_- >= 0
+  add({certified_pos(S), certified_nonneg(-Lp), certified_nonneg(-Lm)}, SolutionType::kStick,
+      S.v / c1.v, 0.0);
+  // {1,2}: u = N / (a11 - mu a12) > 0, xi = L_+ / (a11 - mu a12) > 0 (w2 = 2 mu D0 u >= 0)
+  add({certified_pos(sp > 0 ? N : -N), certified_pos(sp > 0 ? Lp : -Lp)},
+      SolutionType::kSlipPlus, Nv / Dp.v, Lp.v / Dp.v);
+  // {1,3}: u = N / (a11 + mu a12) > 0, xi = -L_- / (a11 + mu a12) < 0 (w1 = 2 mu D0 u >= 0)
+  add({certified_pos(sm > 0 ? N : -N), certified_pos(sm > 0 ? Lm : -Lm)},
+      SolutionType::kSlipMinus, Nv / Dm.v, -Lm.v / Dm.v);
+  return out;
+}
+
+
+/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide.
+inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
+  const CertifiedB fast = certified_b_in<Mag>(p, f);
+  if (fast.applies && !fast.undecided) return fast;
+  return certified_b_in<Rounded>(p, f);
+}
+
+}  // namespace cpkit::rate::detail
