@@ -9,6 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/soc_problem.hpp"
+#include "cpkit/lcp/damped_newton.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/soc_fb.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -156,4 +157,36 @@ TEST_CASE("cone problems: registry and bad input", "[soc]") {
   CHECK_THROWS_WITH(cpkit::lcp::solve_soc_fb(bad), Catch::Contains("block 0 has size 2"));
   bad.blocks = {1, 1};
   CHECK_THROWS_WITH(cpkit::lcp::solve_soc_fb(bad), Catch::Contains("sum to 2"));
+}
+
+TEST_CASE("damped_newton: fixed-size root by hand, and a stop without a root", "[soc][newton]") {
+  using V2 = Eigen::Vector2d;
+  using M2 = Eigen::Matrix2d;
+  // Phi(z) = (z0^2 - 2, z1 - 1): the root (sqrt 2, 1) by hand.
+  auto eval = [](const V2& z, V2& phi, M2& J) {
+    phi << z[0] * z[0] - 2, z[1] - 1;
+    J << 2 * z[0], 0, 0, 1;
+  };
+  auto done = [](const V2&, const V2& phi) { return phi.cwiseAbs().maxCoeff() <= 1e-15; };
+  V2 z(5, -3);
+  cpkit::lcp::DampedNewtonStats st;
+  const auto stop = cpkit::lcp::damped_newton<V2, M2>(z, eval, done, {}, st);
+  CHECK(stop == cpkit::lcp::DampedNewtonStop::kDone);
+  CHECK(z[0] == Approx(std::sqrt(2.0)).epsilon(1e-15));
+  CHECK(z[1] == 1.0);
+  CHECK(st.iterations <= 10);
+  // Phi(z) = z^2 + 1 has no real root: the loop must stop without claiming (Psi's stationary
+  // point is z = 0; the Newton step is not a descent direction near it, the gradient is 0).
+  using V1 = Eigen::Matrix<double, 1, 1>;
+  auto eval1 = [](const V1& x, V1& phi, V1& J) {
+    phi[0] = x[0] * x[0] + 1;
+    J(0, 0) = 2 * x[0];
+  };
+  auto done1 = [](const V1&, const V1& phi) { return std::abs(phi[0]) <= 1e-15; };
+  V1 x;
+  x[0] = 0.7;
+  cpkit::lcp::DampedNewtonStats st1;
+  const auto stop1 = cpkit::lcp::damped_newton<V1, V1>(x, eval1, done1, {}, st1);
+  CHECK(stop1 != cpkit::lcp::DampedNewtonStop::kDone);
+  CHECK(st1.merit >= 0.5);  // Psi >= 1/2 everywhere
 }

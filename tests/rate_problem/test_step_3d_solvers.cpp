@@ -413,3 +413,31 @@ TEST_CASE("step solvers 3-D: bad input throws InputError", "[step3d][solvers]") 
   s.P_N1 = std::nan("");
   CHECK_THROWS_AS(solve_step_3d_fb_soc(p, step_3d_solver_options(), &s), cpkit::InputError);
 }
+
+TEST_CASE("finalize_step_3d grants solved only from the data", "[step3d]") {
+  // docs/contact_3d.md's step: the exact enumeration (an independent route) lists 3 solutions.
+  Step3dProblem step;
+  step.params.A << 1.0, 0.0, 0.8, 0.0, 1.0, 0.3, 0.8, 0.3, 1.5;
+  step.params.mu = 2.0;
+  step.params.C_T = 0.25;
+  step.params.k_a = 0.3;
+  step.params.alpha = {0.6, 1.0};
+  step.DF = {1.0, 0.5, 0.9};
+  const Step3dSolutionSet all = enumerate_step_3d(step);
+  REQUIRE(all.complete);
+  REQUIRE(all.count() == 3);
+  const cpkit::CommonOptions o = step_3d_solver_options();
+  for (const auto& s : all.solutions) {
+    Step3dSolveResult claim;  // no claim at all: the verdict alone grants kSolved
+    claim.solution.values = s.values;
+    finalize_step_3d(step, claim, o);
+    CHECK(claim.status == cpkit::Status::kSolved);
+    CHECK(claim.z[2] == s.values.P_N1);
+    Step3dSolveResult wrong;  // a claimed solution 1% off in P_N1 is refuted
+    wrong.status = cpkit::Status::kSolved;
+    wrong.solution.values = s.values;
+    wrong.solution.values.P_N1 = s.values.P_N1 * 1.01 + 0.01;
+    finalize_step_3d(step, wrong, o);
+    CHECK(wrong.status == cpkit::Status::kNumericalFailure);
+  }
+}
