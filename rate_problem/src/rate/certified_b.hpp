@@ -74,8 +74,10 @@ int certified_nonneg(T x) noexcept {
   return s == kUndecided ? kUndecided : (s >= 0 ? 1 : 0);
 }
 
-/// The decided solution points of the state-b rate problem of (p, f), signs judged in T.
-template <class T>
+/// The decided solution points of the state-b rate problem of (p, f), signs judged in T; with
+/// kValues false the points' values (u, xi) are left 0 (the map summaries need only the types:
+/// the 2-ulp determinants cost three std::fma, which are library calls without -mfma).
+template <class T, bool kValues>
 CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcept {
   CertifiedB out;
   auto exact = [](double x) { return make(x, static_cast<const T*>(nullptr)); };
@@ -125,9 +127,12 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
   };
   const int r0 = sign3(r), S0 = sign3(S), N0 = sign3(N);
   // values (not signs) of the 2x2 determinants to 2 ulps, as state_b_lcp has them
-  const double xi_sep = diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N) /
-                        diff_of_products(p.a11, p.a22, p.a12, p.a12);
-  const double Nv = diff_of_products(p.a11, f.dF_N, p.a12, f.dF_T);
+  double xi_sep = 0, Nv = 0;
+  if (kValues) {
+    xi_sep = diff_of_products(p.a22, f.dF_T, p.a12, f.dF_N) /
+             diff_of_products(p.a11, p.a22, p.a12, p.a12);
+    Nv = diff_of_products(p.a11, f.dF_N, p.a12, f.dF_T);
+  }
   // {}: z = 0 needs w1 = -r >= 0 and w2 = r >= 0 (r = 0) and w0 = -S >= 0
   if (r0 != kUndecided && S0 != kUndecided) {
     if (r0 == 0 && S0 <= 0) add({1}, S0 < 0 ? SolutionType::kSeparation : SolutionType::kStick, 0, 0);
@@ -159,10 +164,11 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
 
 
 /// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide.
-inline CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
-  const CertifiedB fast = certified_b_in<Mag>(p, f);
+template <bool kValues = true>
+CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
+  const CertifiedB fast = certified_b_in<Mag, kValues>(p, f);
   if (fast.applies && !fast.undecided) return fast;
-  return certified_b_in<Rounded>(p, f);
+  return certified_b_in<Rounded, kValues>(p, f);
 }
 
 }  // namespace cpkit::rate::detail

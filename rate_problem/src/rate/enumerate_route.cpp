@@ -198,7 +198,7 @@ bool b_blocks_regular(const Eigen::Matrix3d& M) noexcept {
 /// then runs the general engine).
 bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
                            RateSummary& sum) noexcept {
-  const detail::CertifiedB c = detail::certified_b(p, f);
+  const detail::CertifiedB c = detail::certified_b<false>(p, f);  // types only
   if (!c.applies) return false;
   sum.count = c.n;
   sum.types = 0;
