@@ -34,7 +34,7 @@ std::string factorize(const Sparse& M, Ldlt& ldlt) {
   if (max_abs(asym) > 1e2 * kEps * big)
     return "M is not symmetric (max |M - M^T| = " + std::to_string(max_abs(asym)) + ")";
   ldlt.compute(M);
-  if (ldlt.info() != Eigen::Success) return "the LDL^T factorization of M failed";
+  if (ldlt.info() != Eigen::Success) return "M is singular (its LDL^T factorization met a zero pivot)";
   const Eigen::VectorXd d = ldlt.vectorD();
   const double dmax = d.cwiseAbs().maxCoeff();
   const double floor = static_cast<double>(M.rows()) * kEps * dmax;
