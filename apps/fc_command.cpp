@@ -77,6 +77,10 @@ nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem
                                                   std::numeric_limits<double>::quiet_NaN()};
   j["errors"] = {{"unit_free", e.unit_free}, {"relative_q", e.relative_q},
                  {"relative_max", e.relative_max}};
+  auto& per = j["per_contact"] = nlohmann::json::array();
+  if (sized)
+    for (const auto& c : friction_contacts(p, r.z))
+      per.push_back({{"state", to_string(c.state)}, {"error", c.error}});
   j["iterations"] = r.iterations;
   j["seconds"] = r.seconds;
   j["message"] = r.message;
@@ -96,6 +100,10 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
     const FrictionErrors e = friction_errors(p, r.z);
     s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
       << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
+    int count[3] = {0, 0, 0};
+    for (const auto& c : friction_contacts(p, r.z)) ++count[static_cast<int>(c.state)];
+    s << "\ncontacts:   " << count[1] << " stick, " << count[2] << " slip, " << count[0]
+      << " separated";
   }
   s << "\niterations: " << r.iterations << "\nseconds:    " << r.seconds;
   if (!r.message.empty()) s << "\nmessage:    " << r.message;

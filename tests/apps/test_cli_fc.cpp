@@ -87,6 +87,29 @@ TEST_CASE("fc solve --json solves real files, and the printed r is a solution", 
     CHECK(j.at("run").at("options").at("tol").get<double>() == 1e-10);  // the input echoed
     const auto p = cpkit::read_friction_problem(path(f));
     CHECK(j.at("contacts") == p.contacts());
+    // per_contact: one entry a contact; each state agrees with the printed r and u by hand
+    // (separated: r_N = 0; slip: |r_T| = mu r_N and u_T != 0; stick: u_T = 0), to 1e-8 of the
+    // sizes of r and u.
+    const auto& per = j.at("per_contact");
+    REQUIRE(per.size() == static_cast<std::size_t>(p.contacts()));
+    const VectorXd r = vec(j.at("r")), u = vec(j.at("u"));
+    const double rs = std::max(r.cwiseAbs().maxCoeff(), 1e-300);
+    const double us = std::max(u.cwiseAbs().maxCoeff() + p.q.cwiseAbs().maxCoeff(), 1e-300);
+    for (Eigen::Index i = 0; i < p.contacts(); ++i) {
+      INFO("contact " << i);
+      const std::string state = per[static_cast<std::size_t>(i)].at("state");
+      CHECK(per[static_cast<std::size_t>(i)].at("error").get<double>() <= 1e-10);
+      const double rt = std::hypot(r[3 * i + 1], r[3 * i + 2]);
+      const double ut = std::hypot(u[3 * i + 1], u[3 * i + 2]);
+      if (state == "separated") {
+        CHECK(std::abs(r[3 * i]) <= 1e-8 * rs);
+      } else if (state == "slip") {
+        CHECK(std::abs(rt - p.mu[i] * r[3 * i]) <= 1e-8 * rs);
+      } else {
+        CHECK(state == "stick");
+        CHECK(ut <= 1e-8 * us);
+      }
+    }
     require_friction_solution(p, j);
   }
 }
