@@ -66,17 +66,23 @@ nlohmann::json parse(const cpkit::test::CliRun& run) {
   return nlohmann::json::parse(run.out);
 }
 
+/// `cpkit fc solve FILE --json --tol 1e-10`, which must exit 0 and say solved.
+nlohmann::json solved_json(const char* f) {
+  const auto run = run_cpkit("fc solve " + data(f) + " --json --tol 1e-10");
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  auto j = parse(run);
+  CHECK(j.at("status") == "solved");
+  return j;
+}
+
 }  // namespace
 
 TEST_CASE("fc solve --json solves real files, and the printed r is a solution", "[cli][fc]") {
   for (const char* f : {"local/FrictionContact3D_1c.dat", "local/Rover4396.dat",
                         "local/Confeti-ex03-Fc3D-SBM.dat", "local/fclib_local_problem_test.hdf5"}) {
     INFO(f);
-    const auto run = run_cpkit("fc solve " + data(f) + " --json --tol 1e-10");
-    INFO(run.err);
-    REQUIRE(run.code == 0);
-    const auto j = parse(run);
-    CHECK(j.at("status") == "solved");
+    const auto j = solved_json(f);
     CHECK(j.at("errors").at("unit_free").get<double>() <= 1e-10);
     CHECK(j.at("errors").contains("relative_q"));
     CHECK(j.at("errors").contains("relative_max"));
@@ -141,11 +147,7 @@ TEST_CASE("fc solve --json solves the global files, checked in the global variab
   for (const char* f : {"global/GFC3D_Example1.dat", "global/GFC3D_TwoRods1.dat",
                         "global/Box_Stacks-i0122-82-5.hdf5"}) {
     INFO(f);
-    const auto run = run_cpkit("fc solve " + data(f) + " --json --tol 1e-10");
-    INFO(run.err);
-    REQUIRE(run.code == 0);
-    const auto j = parse(run);
-    CHECK(j.at("status") == "solved");
+    const auto j = solved_json(f);
     const auto g = cpkit::read_global_friction_problem(path(f));
     CHECK(j.at("contacts") == g.contacts());
     CHECK(j.at("global").at("dofs") == g.dofs());
