@@ -21,6 +21,7 @@
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/report.hpp"
 #include "cpkit/core/result.hpp"
+#include "cpkit/lcp/friction/global.hpp"
 #include "cpkit/lcp/friction/solutions.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
@@ -76,6 +77,10 @@ nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem
                                                   std::numeric_limits<double>::quiet_NaN()};
   j["errors"] = {{"unit_free", e.unit_free}, {"relative_q", e.relative_q},
                  {"relative_max", e.relative_max}};
+  auto& per = j["per_contact"] = nlohmann::json::array();
+  if (sized)
+    for (const auto& c : friction_contacts(p, r.z))
+      per.push_back({{"state", to_string(c.state)}, {"error", c.error}});
   j["iterations"] = r.iterations;
   j["seconds"] = r.seconds;
   j["message"] = r.message;
@@ -95,6 +100,10 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
     const FrictionErrors e = friction_errors(p, r.z);
     s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
       << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
+    int count[3] = {0, 0, 0};
+    for (const auto& c : friction_contacts(p, r.z)) ++count[static_cast<int>(c.state)];
+    s << "\ncontacts:   " << count[1] << " stick, " << count[2] << " slip, " << count[0]
+      << " separated";
   }
   s << "\niterations: " << r.iterations << "\nseconds:    " << r.seconds;
   if (!r.message.empty()) s << "\nmessage:    " << r.message;
@@ -102,12 +111,65 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
   return s.str();
 }
 
-int run_fc_solve(const FcArgs& a) {
-  const FrictionContactProblem p = read_friction_problem(a.file);  // validates; names the file
-  const CommonOptions options = common_options(a);
-  const SolverEntry* entry = cpkit::lcp::solvers().find(a.solver);
+const SolverEntry& fc_solver(const std::string& name) {
+  const SolverEntry* entry = cpkit::lcp::solvers().find(name);
   if (entry == nullptr || !entry->accepts(ProblemKind::kFrictionContact))
-    throw InputError("unknown friction solver '" + a.solver + "' (valid: " + fc_solver_list() + ")");
+    throw InputError("unknown friction solver '" + name + "' (valid: " + fc_solver_list() + ")");
+  return *entry;
+}
+
+int exit_code(Status s) {
+  if (is_solution(s)) return kExitOk;
+  return s == Status::kInfeasible ? kExitNoSolution : kExitInconclusive;
+}
+
+/// A global problem (M v = H r + f, u = H^T v + w): condensed, solved locally, judged in the
+/// global variables (lcp/friction/global.hpp). The output adds v, the dofs and the two
+/// unit-free global errors; "errors" are the condensed local problem's.
+int run_fc_solve_global(const FcArgs& a, const GlobalFrictionContactProblem& g) {
+  const CommonOptions options = common_options(a);
+  const SolverEntry& entry = fc_solver(a.solver);
+  const auto out = lcp::friction::solve_global(g, entry.info.name, options);
+  const auto& c = out.condensed;
+  const SolveResult& r = out.result;
+  const nlohmann::json global = {{"dofs", g.dofs()},
+                                 {"condensed", c.ok},
+                                 {"errors", {{"balance", out.errors.balance},
+                                             {"local", out.errors.local}}}};
+  if (a.json) {
+    nlohmann::json j = {{"file", a.file}, {"problem", g.name}, {"contacts", g.contacts()},
+                        {"global", global}};
+    j.update(fc_result_json(r, c.local));
+    j["v"] = std::vector<double>(out.v.data(), out.v.data() + out.v.size());
+    print_json(j);
+  } else {
+    std::cout << "problem:    " << g.name << " (global: " << g.contacts() << " contacts, "
+              << g.dofs() << " dofs)\n";
+    if (c.ok) std::cout << "global:     balance " << out.errors.balance << ", local "
+                        << out.errors.local << " (unit-free)\n" << result_line(r, c.local);
+    else std::cout << "status:     " << to_string(r.status) << "\nmessage:    " << r.message << '\n';
+    std::cout << std::flush;
+  }
+  return exit_code(r.status);
+}
+
+int run_fc_solve(const FcArgs& a) {
+  FrictionContactProblem p;
+  try {
+    p = read_friction_problem(a.file);  // validates; names the file
+  } catch (const InputError& local_error) {
+    // Not a local problem: a global one is solved; anything else reports the local reader's
+    // message (the file is most likely a damaged local problem).
+    GlobalFrictionContactProblem g;
+    try {
+      g = read_global_friction_problem(a.file);
+    } catch (const InputError&) {
+      throw local_error;
+    }
+    return run_fc_solve_global(a, g);
+  }
+  const CommonOptions options = common_options(a);
+  const SolverEntry* entry = &fc_solver(a.solver);
   SolveResult r = entry->solve_fc(p, options);
   if (r.solver.empty()) r.solver = entry->info.name;
   if (a.json) {
@@ -118,8 +180,7 @@ int run_fc_solve(const FcArgs& a) {
     std::cout << "problem:    " << p.name << " (" << p.contacts() << " contacts)\n"
               << result_line(r, p) << std::flush;
   }
-  if (is_solution(r.status)) return kExitOk;
-  return r.status == Status::kInfeasible ? kExitNoSolution : kExitInconclusive;
+  return exit_code(r.status);
 }
 
 int run_fc_solutions(const FcArgs& a) {

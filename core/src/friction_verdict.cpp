@@ -63,7 +63,8 @@ FrictionUnits friction_units(const FrictionContactProblem& p) {
 
 Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnits& d,
                              const Eigen::VectorXd& r, const Eigen::VectorXd& u,
-                             FrictionErrors* errors) {
+                             FrictionErrors* errors, std::vector<ContactReport>* contacts) {
+  if (contacts) contacts->assign(static_cast<std::size_t>(p.contacts()), ContactReport{});
   const Eigen::Index nc = p.contacts();
   Residuals res;
   res.finite = r.allFinite() && u.allFinite();
@@ -110,6 +111,14 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
     if (std::isnan(v) || !ri.allFinite() || !ui.allFinite() || !std::isfinite(S) ||
         !a.allFinite())
       v = kInf;
+    if (contacts) {
+      ContactReport& c = (*contacts)[static_cast<std::size_t>(i)];
+      c.error = v;
+      const double margin = mu * rn[0] - rn.tail<2>().norm();
+      c.state = rn[0] < wn ? ContactState::kSeparated
+                : margin >= un.tail<2>().norm() ? ContactState::kStick
+                                                : ContactState::kSlip;
+    }
     if (v > res.natural) {
       res.natural = v;
       res.worst_index = 3 * i;
@@ -132,6 +141,23 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
     errors->relative_max = siconos_relative(E, std::max({p.q.norm(), r.norm(), u.norm()}));
   }
   return res;
+}
+
+const char* to_string(ContactState s) noexcept {
+  switch (s) {
+    case ContactState::kSeparated: return "separated";
+    case ContactState::kStick: return "stick";
+    case ContactState::kSlip: return "slip";
+  }
+  return "?";
+}
+
+std::vector<ContactReport> friction_contacts(const FrictionContactProblem& p,
+                                             const Eigen::VectorXd& r) {
+  check_sizes(p, r);
+  std::vector<ContactReport> out;
+  friction_residuals(p, friction_units(p), r, p.W * r + p.q, nullptr, &out);
+  return out;
 }
 
 FrictionErrors friction_errors(const FrictionContactProblem& p, const Eigen::VectorXd& r) {

@@ -113,6 +113,35 @@ TEST_CASE("one contact, W = I, mu = 0.5: stick, slip and separation solutions ac
   }
 }
 
+TEST_CASE("per-contact states: the closed-form stick, slip and separated contacts, at any scale",
+          "[friction][verdict]") {
+  // Three uncoupled contacts, W = I, mu = 0.5 (the cases above, side by side): stick r = (1,
+  // -0.2, 0), slip r = (1, -0.5, 0), separated r = 0. Scaling q (and r) by a, or W and q by b,
+  // changes neither a state nor an error's being zero.
+  for (double a : {1e-12, 1.0, 1e12}) {
+    for (double b : {1e-12, 1.0, 1e12}) {
+      CAPTURE(a, b);
+      VectorXd q(9), r(9);
+      q << -1, 0.2, 0, -1, 1, 0, 1, 3, -2;
+      r << 1, -0.2, 0, 1, -0.5, 0, 0, 0, 0;
+      const auto p = make(b * MatrixXd::Identity(9, 9), a * b * q, VectorXd::Constant(3, 0.5));
+      const auto c = cpkit::friction_contacts(p, a * r);
+      REQUIRE(c.size() == 3);
+      CHECK(c[0].state == cpkit::ContactState::kStick);
+      CHECK(c[1].state == cpkit::ContactState::kSlip);
+      CHECK(c[2].state == cpkit::ContactState::kSeparated);
+      for (const auto& k : c) CHECK(k.error <= 1e-15);
+      CHECK(std::string(cpkit::to_string(c[1].state)) == "slip");
+      // A wrong third contact (r_N = 1 where it should separate) carries the error, alone.
+      VectorXd bad = a * r;
+      bad[6] = a;
+      const auto w = cpkit::friction_contacts(p, bad);
+      CHECK(w[2].error > 0.1);
+      CHECK(w[0].error <= 1e-15);
+    }
+  }
+}
+
 TEST_CASE("wrong candidates are refuted, with the published errors computed by hand",
           "[friction][verdict]") {
   const MatrixXd W = MatrixXd::Identity(3, 3);

@@ -10,6 +10,7 @@
 #include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
+#include "friction_common.hpp"
 #include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -180,11 +181,8 @@ SolveResult polish_on_true_cone(const FrictionContactProblem& p, const Eigen::Ve
 
 SolverEntry with_faceted_lemke(SolverEntry e) {
   e.info.description += "; friction problems: on the faceted cone (8 facets), polished by prox";
-  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
-    FacetedLemkeOptions o;
-    o.common = c;
-    return solve_faceted_lemke(p, o);
-  };
+  e.solve_fc = detail::with_common_options<FacetedLemkeOptions>(
+      [](const FrictionContactProblem& p, const FacetedLemkeOptions& o) { return solve_faceted_lemke(p, o); });
   return e;
 }
 

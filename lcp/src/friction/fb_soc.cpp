@@ -244,11 +244,8 @@ SolverEntry fb_soc_entry() {
       "search with gradient fallback [Fukushima-Luo-Tseng 2001; Acary-Bremond-Huber 2018]";
   e.info.dense = false;
   e.info.sparse = true;
-  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
-    FbSocOptions o;
-    o.common = c;
-    return solve_fb_soc(p, o);
-  };
+  e.solve_fc = detail::with_common_options<FbSocOptions>(
+      [](const FrictionContactProblem& p, const FbSocOptions& o) { return solve_fb_soc(p, o); });
   return e;
 }
 

@@ -9,6 +9,7 @@
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/options.hpp"
+#include "cpkit/core/registry.hpp"
 
 namespace cpkit::lcp::friction::detail {
 
@@ -31,6 +32,17 @@ inline std::vector<Mat3> diagonal_blocks(const Eigen::SparseMatrix<double>& W) {
       if (it.row() / 3 == it.col() / 3)
         b[static_cast<size_t>(it.row() / 3)](it.row() % 3, it.col() % 3) = it.value();
   return b;
+}
+
+/// The registry's solve_fc for a solver whose options are {common, ...}: the defaults with the
+/// caller's CommonOptions (one adapter instead of one lambda per solver).
+template <class Options, class Solve>
+FrictionSolveFn with_common_options(Solve solve) {
+  return [solve](const FrictionContactProblem& p, const CommonOptions& c) {
+    Options o;
+    o.common = c;
+    return solve(p, o);
+  };
 }
 
 }  // namespace cpkit::lcp::friction::detail

@@ -9,6 +9,7 @@
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/mpcc.hpp"
+#include "friction_common.hpp"
 #include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -176,11 +177,8 @@ SolveResult solve_ipopt_fc(const FrictionContactProblem& p, const IpoptFcOptions
 
 SolverEntry with_ipopt_fc(SolverEntry e) {
   e.info.description += "; friction problems: an MPCC of the true cone (ipopt_fc.hpp)";
-  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
-    IpoptFcOptions o;
-    o.common = c;
-    return solve_ipopt_fc(p, o);
-  };
+  e.solve_fc = detail::with_common_options<IpoptFcOptions>(
+      [](const FrictionContactProblem& p, const IpoptFcOptions& o) { return solve_ipopt_fc(p, o); });
   return e;
 }
 

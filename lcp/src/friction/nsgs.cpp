@@ -93,11 +93,8 @@ SolverEntry nsgs_entry() {
       "proximal regularisation of singular blocks [Jean 1999; Acary-Bremond-Huber 2018]";
   e.info.dense = false;
   e.info.sparse = true;
-  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
-    NsgsOptions o;
-    o.common = c;
-    return solve_nsgs(p, o);
-  };
+  e.solve_fc = detail::with_common_options<NsgsOptions>(
+      [](const FrictionContactProblem& p, const NsgsOptions& o) { return solve_nsgs(p, o); });
   return e;
 }
 

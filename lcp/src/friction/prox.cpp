@@ -12,6 +12,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/one_contact.hpp"
+#include "friction_common.hpp"
 #include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -165,11 +166,8 @@ SolverEntry prox_entry() {
       "problems [Acary-Bremond-Huber 2018]";
   e.info.dense = false;
   e.info.sparse = false;
-  e.solve_fc = [](const FrictionContactProblem& p, const CommonOptions& c) {
-    ProxOptions o;
-    o.common = c;
-    return solve_prox(p, o);
-  };
+  e.solve_fc = detail::with_common_options<ProxOptions>(
+      [](const FrictionContactProblem& p, const ProxOptions& o) { return solve_prox(p, o); });
   return e;
 }
 

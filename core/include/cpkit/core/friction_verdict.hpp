@@ -31,6 +31,7 @@
 /// - One contact's size excuses nothing in another: units are per contact and per row.
 /// - Rank-deficient and zero W are normal (r_ref then comes from the nonzero entries).
 #include <Eigen/Core>
+#include <vector>
 
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/options.hpp"
@@ -65,6 +66,20 @@ struct FrictionUnits {
 };
 FrictionUnits friction_units(const FrictionContactProblem& problem);
 
+/// One contact of a candidate: its state and its share of unit_free (max(cone_i, normal_i) of
+/// the header comment). The state compares the two sides of each complementarity in the
+/// unit-free variables, so it needs no tolerance and does not depend on units:
+///   separated  r_N / R < u_N' / s_N         (the normal impulse is the smaller side);
+///   stick      otherwise, when the margin inside the cone (mu r_N - ||r_T||) / R is at least
+///              ||u_T|| / S_i (the sliding velocity is the smaller side; ties are stick);
+///   slip       otherwise (r_T on the cone's edge, u_T opposite to it).
+enum class ContactState { kSeparated, kStick, kSlip };
+const char* to_string(ContactState s) noexcept;  ///< "separated", "stick", "slip"
+struct ContactReport {
+  ContactState state = ContactState::kSeparated;
+  double error = 0;
+};
+
 /// Everything the verdict computes for r with u = W r + q (given, from the caller: a solver's
 /// own u; finalize() recomputes it). `errors` may be nullptr. Residuals: natural = unit_free;
 /// natural_abs = max_i ||natural map of contact i|| (problem units); complementarity =
@@ -72,7 +87,12 @@ FrictionUnits friction_units(const FrictionContactProblem& problem);
 /// the worst contact; scale = max_i S_i; z_scale = R; rounding = largest deducted allowance.
 Residuals friction_residuals(const FrictionContactProblem& problem, const FrictionUnits& units,
                              const Eigen::VectorXd& r, const Eigen::VectorXd& u,
-                             FrictionErrors* errors = nullptr);
+                             FrictionErrors* errors = nullptr,
+                             std::vector<ContactReport>* contacts = nullptr);
+
+/// Per-contact report of r (u = W r + q recomputed); sizes checked as friction_errors().
+std::vector<ContactReport> friction_contacts(const FrictionContactProblem& problem,
+                                             const Eigen::VectorXd& r);
 
 /// The decision, as the LCP finalize() (finalize.hpp): claim.z holds r (3 n_c); w receives
 /// u = W r + q recomputed; residuals as friction_residuals(); kSolved when unit_free <= tol,

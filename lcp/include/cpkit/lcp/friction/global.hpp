@@ -1,0 +1,63 @@
+#pragma once
+/// \file global.hpp
+/// Global 3-D frictional contact problems (friction_problem.hpp):
+///   M v = H r + f,   u = H^T v + w,   local cone conditions on (r, u),
+/// solved by condensation where M can be factorized [Acary, Bremond, Huber, INRIA RR-9118]:
+///   W = H^T M^-1 H,   q = H^T M^-1 f + w   (sparse LDL^T of M, solves, never an inverse),
+/// the local problem solved by a registered friction solver, then v = M^-1 (H r + f).
+/// Units are the file's: v is M's unknown (a velocity), r an impulse, W = u per r.
+///
+/// The verdict is in the GLOBAL variables and unit-free:
+///   balance = max_k |M v - H r - f|_k / ((|M| |v|)_k + (|H| |r|)_k + |f_k|)   (0/0 = 0),
+///             invariant under f -> a f (r, v -> a r, a v) and M -> b M (v -> v / b);
+///   local   = the unit-free number of friction_verdict.hpp for r with u = H^T v + w (the
+///             condensed problem's units, so invariant under the same scalings);
+///   kSolved when both are <= tol, kSolvedInaccurate when both are <= tol_acceptable.
+/// A singular (or not positive definite, or not symmetric) M is said in the message and the
+/// status is kNotRun: no solver in the global variables exists yet.
+#include <string>
+
+#include <Eigen/Core>
+
+#include "cpkit/core/friction_problem.hpp"
+#include "cpkit/core/options.hpp"
+#include "cpkit/core/result.hpp"
+
+namespace cpkit::lcp::friction {
+
+/// The condensed local problem; `ok` is false (and `message` says why) when M is not
+/// symmetric positive definite to rounding.
+struct CondensedProblem {
+  FrictionContactProblem local;
+  bool ok = false;
+  std::string message;
+};
+
+/// Throws InputError when the global problem is invalid (validate()).
+CondensedProblem condense(const GlobalFrictionContactProblem& problem);
+
+/// The two unit-free numbers of the verdict (file comment).
+struct GlobalErrors {
+  double balance = 0;
+  double local = 0;
+};
+
+/// Verdict numbers of (v, r); u = H^T v + w. Throws InputError on wrong sizes.
+GlobalErrors global_errors(const GlobalFrictionContactProblem& problem,
+                           const FrictionContactProblem& condensed, const Eigen::VectorXd& v,
+                           const Eigen::VectorXd& r);
+
+struct GlobalSolveResult {
+  SolveResult result;  ///< z = r (3 n_c), w = u = H^T v + w; status: the global verdict
+  Eigen::VectorXd v;   ///< m (empty when M could not be factorized)
+  GlobalErrors errors;
+  CondensedProblem condensed;  ///< the local problem solved (its errors are the local ones)
+};
+
+/// Condenses, solves the local problem with the registry's friction solver `solver` (e.g.
+/// "auto"), recovers v and decides in the global variables. Throws InputError for an invalid
+/// problem, options or an unknown solver name.
+GlobalSolveResult solve_global(const GlobalFrictionContactProblem& problem,
+                               const std::string& solver, const CommonOptions& options = {});
+
+}  // namespace cpkit::lcp::friction
