@@ -130,23 +130,36 @@ constexpr size_t kMaxPolytopeBases = 20'000'000;
 constexpr size_t kMaxOpenBytes = size_t(2) << 30;  // 2 GiB of open bases on the stack
 
 
-/// Vertices of the polytope {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded), each as the
-/// set of its labels (LCP index of every tight inequality: var_label[c] for v_c = 0,
-/// row_label[r] for row r; labels are below n). Traverses the vertex graph depth-first by
-/// simplex pivots on a dictionary with the lexicographic ratio test (b perturbed by
-/// (e, e^2, ...) [Dantzig-Orden-Wolfe 1955]), so that degenerate vertices are handled: every
-/// lexicographically feasible basis is visited once and each geometric vertex is reported once
-/// with all its tight inequalities. Open bases on the stack keep their dictionaries up to
-/// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
-/// from the dictionary in hand is reached by that pivot, any other is refactorised from the
-/// data. kUndecided on an unbounded edge, a tie, or a basic value too close to zero to call.
-Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
-                             const std::vector<int>& row_label, int n,
-                             std::vector<IndexSet>& masks, Deadline& deadline) {
-  // (D, b) come from enumerate_all's equilibrated data: each row and each column of D in a unit
-  // of its own, so the column maxima below compare numbers of one unit.
-  const int m = static_cast<int>(D.rows()), d = static_cast<int>(D.cols());
-  const int w = m + 1;  // columns of the right-hand side: beta, then the perturbation P
+/// The depth-first traversal of polytope_vertices (below): the dictionary in hand, its scales,
+/// and the decisions made on it.
+class PolytopeTraversal {
+ public:
+  PolytopeTraversal(const Mat& D, const Vec& b_in, const std::vector<int>& var_labels,
+                    const std::vector<int>& row_labels, int n_in)
+      : b(b_in), var_label(var_labels), row_label(row_labels), n(n_in),
+        m(static_cast<int>(D.rows())), d(static_cast<int>(D.cols())), w(m + 1),
+        open_bytes(sizeof(Open) + sizeof(int) * size_t(m + d) + 64),
+        dict_bytes(sizeof(double) * size_t(m) * size_t(d + w)),
+        tau(detail::tie_level(m + 1, 0.0)),
+        gamma(4.0 * (m + 1) * std::numeric_limits<double>::epsilon()),
+        A(m, d + m), P0(Mat::Zero(m, w)), AB(m, m), AN(m, d), col_of(static_cast<size_t>(n), -1),
+        u(m), pmax(m), terms(m) {
+    // (D, b) come from enumerate_all's equilibrated data: each row and each column of D in a unit
+    // of its own, so the column maxima below compare numbers of one unit.
+    for (int r = 0; r < m; ++r) b_l1 += std::abs(b(r));
+    // The system s - D v = b + (perturbation): A x = P0 with A = [-D | I], P0 = [b | I]; the
+    // column of a variable in A by its label.
+    A.leftCols(d) = -D;
+    A.rightCols(m).setIdentity();
+    P0.col(0) = b;
+    P0.rightCols(m).setIdentity();
+    for (int c = 0; c < d; ++c) col_of[size_t(var_label[c])] = c;
+    for (int r = 0; r < m; ++r) col_of[size_t(row_label[r])] = d + r;
+  }
+
+  Structured run(std::vector<IndexSet>& masks, Deadline& deadline);
+
+ private:
   struct State {
     std::vector<double> T;  // basic_r = beta_r + sum_c T[r d + c] nonbasic_c
     std::vector<double> R;  // R[r w + 0] = beta_r, R[r w + 1 + k] = P_rk (lexicographic part)
@@ -160,96 +173,61 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     long long parent = -1;
     int r0 = -1, c = -1;
   };
-  const size_t open_bytes = sizeof(Open) + sizeof(int) * size_t(m + d) + 64;
-  const size_t dict_bytes = sizeof(double) * size_t(m) * size_t(d + w);
-  constexpr size_t kStackDictBytes = size_t(64) << 20;
-  size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
+  static constexpr size_t kStackDictBytes = size_t(64) << 20;
   // Pivot entries: a candidate below -kTie times its column's largest entry, too small to call
-  // between kZero and kTie. A basic value
-  // above kGrayHi times the largest is positive on an updated dictionary (smaller ones are
-  // decided on a fresh one, see classify).
-  constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
-  // Ties of ratios and of perturbation entries: at the rounding level of a dictionary fresh
-  // from the data (rounding_ties.hpp; a fresh LU's backward error is at the rounding floor),
-  // relative to the size of the terms of each number; an updated dictionary only decides what
-  // is clear beyond kTieWindow, anything nearer is decided on a dictionary fresh from the data.
-  const double tau = detail::tie_level(m + 1, 0.0);
-  double b_l1 = 0;
-  for (int r = 0; r < m; ++r) b_l1 += std::abs(b(r));
-  // The system s - D v = b + (perturbation): A x = P0 with A = [-D | I], P0 = [b | I]; the
-  // column of a variable in A by its label.
-  Mat A(m, d + m), P0 = Mat::Zero(m, w);
-  A.leftCols(d) = -D;
-  A.rightCols(m).setIdentity();
-  P0.col(0) = b;
-  P0.rightCols(m).setIdentity();
-  std::vector<int> col_of(static_cast<size_t>(n), -1);
-  for (int c = 0; c < d; ++c) col_of[size_t(var_label[c])] = c;
-  for (int r = 0; r < m; ++r) col_of[size_t(row_label[r])] = d + r;
-  Mat AB(m, m), AN(m, d);
-  // the dictionary of basis s.bl from the data: x_B = A_B^-1 P0 - A_B^-1 A_N x_N
-  auto refactor = [&](State& s) {
-    for (int r = 0; r < m; ++r) AB.col(r) = A.col(col_of[size_t(s.bl[r])]);
-    for (int c = 0; c < d; ++c) AN.col(c) = A.col(col_of[size_t(s.nl[c])]);
+  // between kZero and kTie. A basic value above kGrayHi times the largest is positive on an
+  // updated dictionary (smaller ones are decided on a fresh one, see classify).
+  static constexpr double kZero = 1e-10, kGrayHi = 1e-7, kTie = 1e-9;
+  enum { kDecided, kNeedsFresh, kCannotDecide };
+  static constexpr int kFail = -2;  ///< leaving_row: the path cannot decide (kUndecided)
+
+  /// The dictionary of basis s.bl from the data: x_B = A_B^-1 P0 - A_B^-1 A_N x_N.
+  bool refactor(State& st) {
+    for (int r = 0; r < m; ++r) AB.col(r) = A.col(col_of[size_t(st.bl[r])]);
+    for (int c = 0; c < d; ++c) AN.col(c) = A.col(col_of[size_t(st.nl[c])]);
     const Eigen::PartialPivLU<Mat> lu(AB);
     const Mat Rm = lu.solve(P0), Tm = -lu.solve(AN);
     if (!Rm.allFinite() || !Tm.allFinite()) return false;
-    s.T.resize(size_t(m) * d);
-    s.R.resize(size_t(m) * w);
+    st.T.resize(size_t(m) * d);
+    st.R.resize(size_t(m) * w);
     for (int r = 0; r < m; ++r) {
-      for (int c = 0; c < d; ++c) s.T[size_t(r) * d + c] = Tm(r, c);
-      for (int k = 0; k < w; ++k) s.R[size_t(r) * w + k] = Rm(r, k);
+      for (int c = 0; c < d; ++c) st.T[size_t(r) * d + c] = Tm(r, c);
+      for (int k = 0; k < w; ++k) st.R[size_t(r) * w + k] = Rm(r, k);
     }
     return true;
-  };
-  // pivot in place: nonbasic c enters, basic r0 leaves
-  auto pivot = [&](State& s, int r0, int c) {
-    const double p = s.T[size_t(r0) * d + c];
-    double* tp = &s.T[size_t(r0) * d];
-    double* rp = &s.R[size_t(r0) * w];
+  }
+  /// Pivot in place: nonbasic c enters, basic r0 leaves.
+  void pivot(State& st, int r0, int c) const {
+    const double p = st.T[size_t(r0) * d + c];
+    double* tp = &st.T[size_t(r0) * d];
+    double* rp = &st.R[size_t(r0) * w];
     for (int cc = 0; cc < d; ++cc) tp[cc] = cc == c ? 1.0 / p : -tp[cc] / p;
     for (int k = 0; k < w; ++k) rp[k] = -rp[k] / p;
     for (int r = 0; r < m; ++r) {
       if (r == r0) continue;
-      double* tr = &s.T[size_t(r) * d];
+      double* tr = &st.T[size_t(r) * d];
       const double f = tr[c];
       if (f == 0) continue;
-      double* rr = &s.R[size_t(r) * w];
+      double* rr = &st.R[size_t(r) * w];
       for (int cc = 0; cc < d; ++cc) tr[cc] = cc == c ? f * tp[cc] : tr[cc] + f * tp[cc];
       for (int k = 0; k < w; ++k) rr[k] += f * rp[k];
     }
-    std::swap(s.bl[size_t(r0)], s.nl[size_t(c)]);
-  };
-  // The basic values of a dictionary: positive, or zero (a degenerate vertex: the label is
-  // added to `lab`, and the row must be lexicographically positive). A value that is small
-  // against the largest (<= kGrayHi of it) is judged against the componentwise forward error
-  // bound of a fresh solve, |dx_r| <= gamma sum_j |A_B^-1|_rj (|A_B| |x_B| + |b|)_j
-  // [Higham 2002, Thm. 7.4] (A_B^-1 is the perturbation block of R): zero within 10 bounds,
-  // positive beyond 1e4 bounds, too close to call between. A fixed fraction of the largest value
-  // was not scale-aware: an 18 x 18 game with payoffs up to 1000 has a vertex with a genuine
-  // basic value 8e-8 times the largest (fresh and pivoted dictionaries agree to 1e-15).
-  enum { kDecided, kNeedsFresh, kCannotDecide };
-  const double gamma = 4.0 * (m + 1) * std::numeric_limits<double>::epsilon();
-  // Scales of the current dictionary s, computed when first needed (-1: not yet): pmax[r] =
-  // max_j |A_B^-1(r, j)| (the row's perturbation part), and on a fresh dictionary u = |A_B|
-  // |x_B| + |b| and terms[r] = sum_j |A_B^-1|_rj u_j, the forward-error scale of beta_r.
-  std::vector<double> u(m), pmax(m), terms(m);
-  bool u_ready = false;
-  State s;
-  auto reset_scales = [&] {
+    std::swap(st.bl[size_t(r0)], st.nl[size_t(c)]);
+  }
+  void reset_scales() {
     std::fill(pmax.begin(), pmax.end(), -1.0);
     std::fill(terms.begin(), terms.end(), -1.0);
     u_ready = false;
-  };
-  auto row_pmax = [&](int r) {
+  }
+  double row_pmax(int r) {
     if (pmax[size_t(r)] < 0) {
       double x = 0;
       for (int k = 1; k < w; ++k) x = std::max(x, std::abs(s.R[size_t(r) * w + k]));
       pmax[size_t(r)] = x;
     }
     return pmax[size_t(r)];
-  };
-  auto ensure_u = [&] {
+  }
+  void ensure_u() {
     if (u_ready) return;
     for (int j = 0; j < m; ++j) {
       double sum = std::abs(b(j));
@@ -258,8 +236,8 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       u[size_t(j)] = sum;
     }
     u_ready = true;
-  };
-  auto row_terms = [&](int r) {
+  }
+  double row_terms(int r) {
     if (terms[size_t(r)] < 0) {
       ensure_u();
       double x = 0;
@@ -267,8 +245,16 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       terms[size_t(r)] = x;
     }
     return terms[size_t(r)];
-  };
-  auto classify = [&](bool is_fresh, IndexSet& labels) {
+  }
+  // The basic values of a dictionary: positive, or zero (a degenerate vertex: the label is
+  // added to `lab`, and the row must be lexicographically positive). A value that is small
+  // against the largest (<= kGrayHi of it) is judged against the componentwise forward error
+  // bound of a fresh solve, |dx_r| <= gamma sum_j |A_B^-1|_rj (|A_B| |x_B| + |b|)_j
+  // [Higham 2002, Thm. 7.4] (A_B^-1 is the perturbation block of R): zero within 10 bounds,
+  // positive beyond 1e4 bounds, too close to call between. A fixed fraction of the largest value
+  // was not scale-aware: an 18 x 18 game with payoffs up to 1000 has a vertex with a genuine
+  // basic value 8e-8 times the largest (fresh and pivoted dictionaries agree to 1e-15).
+  int classify(bool is_fresh, IndexSet& labels) {
     double bmax = 0;
     for (int r = 0; r < m; ++r) bmax = std::max(bmax, std::abs(s.R[size_t(r) * w]));
     for (int r = 0; r < m; ++r) {
@@ -290,12 +276,12 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
       }
     }
     return kDecided;
-  };
+  }
   // Lexicographic order of rows r and t for the entering column (pivot entries -a_r, -a_t > 0):
   // -1 when r's row / a_r comes first, 1 when t's does, 0 when they are equal at the rounding
   // level in every column (not for independent rows: the path gives up), 2 when the updated
   // dictionary is too close to call (it is then recomputed from the data).
-  auto lex_order = [&](int r, double ar, int t, double at, bool is_fresh) {
+  int lex_order(int r, double ar, int t, double at, bool is_fresh) {
     const double* x = &s.R[size_t(r) * w];
     const double* y = &s.R[size_t(t) * w];
     const double pr = x[0] / ar, pt = y[0] / at, diff = pr - pt;
@@ -310,11 +296,68 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     if (std::abs(diff) > tau * sizes) return diff < 0 ? -1 : 1;
     const double level = tau * (row_pmax(r) / ar + row_pmax(t) / at);
     for (int k = 1; k < w; ++k) {
-      const double e = x[k] / ar - y[k] / at;
-      if (std::abs(e) > level) return e < 0 ? -1 : 1;
+    const double e = x[k] / ar - y[k] / at;
+    if (std::abs(e) > level) return e < 0 ? -1 : 1;
     }
     return 0;
-  };
+  }
+  /// The leaving row of entering column c by the lexicographic ratio test (-1: an unbounded
+  /// edge), kFail when the path cannot decide; a near tie is decided on a dictionary fresh from
+  /// the data (fresh is then set).
+  int leaving_row(int c, bool& fresh) {
+    int best = -1;
+    for (bool again = true; again;) {  // twice at most: a near tie is decided on fresh data
+      again = false;
+      double tmax = 0;
+      for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
+      best = -1;
+      for (int r = 0; r < m; ++r) {
+        const double a = s.T[size_t(r) * d + c];
+        if (!(a < -kTie * tmax)) {
+          if (a < -kZero * tmax) return kFail;  // pivot too small to call
+          continue;
+        }
+        if (best < 0) {
+          best = r;
+          continue;
+        }
+        const int order = lex_order(r, -a, best, -s.T[size_t(best) * d + c], fresh);
+        if (order == 2) {
+          if (!refactor(s)) return kFail;
+          fresh = again = true;
+          reset_scales();
+          break;
+        }
+        if (order == 0) return kFail;  // not for independent perturbations
+        if (order < 0) best = r;
+      }
+    }
+    return best;
+  }
+
+  const Vec& b;
+  const std::vector<int>& var_label;
+  const std::vector<int>& row_label;
+  const int n, m, d, w;  // w: columns of the right-hand side: beta, then the perturbation P
+  const size_t open_bytes, dict_bytes;
+  size_t stack_dicts = 0;  // bytes of the dictionaries on the stack
+  // Ties of ratios and of perturbation entries: at the rounding level of a dictionary fresh
+  // from the data (rounding_ties.hpp; a fresh LU's backward error is at the rounding floor),
+  // relative to the size of the terms of each number; an updated dictionary only decides what
+  // is clear beyond kTieWindow, anything nearer is decided on a dictionary fresh from the data.
+  const double tau, gamma;
+  double b_l1 = 0;
+  Mat A, P0, AB, AN;
+  std::vector<int> col_of;
+  // Scales of the current dictionary s, computed when first needed (-1: not yet): pmax[r] =
+  // max_j |A_B^-1(r, j)| (the row's perturbation part), and on a fresh dictionary u = |A_B|
+  // |x_B| + |b| and terms[r] = sum_j |A_B^-1|_rj u_j, the forward-error scale of beta_r.
+  std::vector<double> u, pmax, terms;
+  bool u_ready = false;
+  State s;
+};
+
+Structured PolytopeTraversal::run(std::vector<IndexSet>& masks, Deadline& deadline) {
   FlatIndexSets seen_basis, seen_vertex;
   {
     IndexSet m0(n);
@@ -362,33 +405,8 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     if (verdict != kDecided) return Structured::kUndecided;
     if (seen_vertex.insert(lab)) masks.push_back(std::move(lab));
     for (int c = 0; c < d; ++c) {
-      int best = -1;
-      for (bool again = true; again;) {  // twice at most: a near tie is decided on fresh data
-        again = false;
-        double tmax = 0;
-        for (int r = 0; r < m; ++r) tmax = std::max(tmax, std::abs(s.T[size_t(r) * d + c]));
-        best = -1;
-        for (int r = 0; r < m; ++r) {
-          const double a = s.T[size_t(r) * d + c];
-          if (!(a < -kTie * tmax)) {
-            if (a < -kZero * tmax) return Structured::kUndecided;  // pivot too small to call
-            continue;
-          }
-          if (best < 0) {
-            best = r;
-            continue;
-          }
-          const int order = lex_order(r, -a, best, -s.T[size_t(best) * d + c], fresh);
-          if (order == 2) {
-            if (!refactor(s)) return Structured::kUndecided;
-            fresh = again = true;
-            reset_scales();
-            break;
-          }
-          if (order == 0) return Structured::kUndecided;  // not for independent perturbations
-          if (order < 0) best = r;
-        }
-      }
+      const int best = leaving_row(c, fresh);
+      if (best == kFail) return Structured::kUndecided;
       if (best < 0) return Structured::kUndecided;  // unbounded edge: not a polytope
       IndexSet nb = cob;
       nb.reset(s.nl[c]);
@@ -414,6 +432,25 @@ Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>&
     }
   }
   return Structured::kAnswered;
+}
+
+
+
+/// Vertices of the polytope {v >= 0, b + D v >= 0} (D: m x d, b > 0, bounded), each as the
+/// set of its labels (LCP index of every tight inequality: var_label[c] for v_c = 0,
+/// row_label[r] for row r; labels are below n). Traverses the vertex graph depth-first by
+/// simplex pivots on a dictionary with the lexicographic ratio test (b perturbed by
+/// (e, e^2, ...) [Dantzig-Orden-Wolfe 1955]), so that degenerate vertices are handled: every
+/// lexicographically feasible basis is visited once and each geometric vertex is reported once
+/// with all its tight inequalities. Open bases on the stack keep their dictionaries up to
+/// kStackDictBytes; beyond it only their labels (memory O(m + d) each): such a basis one pivot
+/// from the dictionary in hand is reached by that pivot, any other is refactorised from the
+/// data. kUndecided on an unbounded edge, a tie, or a basic value too close to zero to call.
+Structured polytope_vertices(const Mat& D, const Vec& b, const std::vector<int>& var_label,
+                             const std::vector<int>& row_label, int n,
+                             std::vector<IndexSet>& masks, Deadline& deadline) {
+  PolytopeTraversal t(D, b, var_label, row_label, n);
+  return t.run(masks, deadline);
 }
 
 /// Solves the (possibly overdetermined, consistent) system M[rows, cols] x = -q[rows] into
