@@ -260,7 +260,7 @@ class RateSolution:
 
 @dataclass(repr=False)
 class RateSolutionSet:
-    """All solutions of a rate problem (rate_problem.hpp). `count` is -1 for infinitely many.
+    """All solutions of a rate problem (point_rate.hpp). `count` is -1 for infinitely many.
     Single solvers (method lemke, fb-newton, ipopt) give complete=False: one solution, not a
     count."""
     solutions: List[RateSolution]

@@ -1,4 +1,4 @@
-// The "dim": 3 system file (system_3d.hpp).
+// The "dim": 3 system file (contact_system_3d.hpp).
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 #include <nlohmann/json.hpp>

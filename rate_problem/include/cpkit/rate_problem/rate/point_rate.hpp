@@ -1,5 +1,5 @@
 #pragma once
-/// \file rate_problem.hpp
+/// \file point_rate.hpp
 /// The rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]:
 /// given a contact state and a load rate (dF_T, dF_N), every solution (rates), by one of three
 /// independent routes (docs/contact_model.md).

@@ -1,5 +1,5 @@
 #pragma once
-/// \file system_3d.hpp
+/// \file contact_system_3d.hpp
 /// The system file with three-dimensional points ("dim": 3; docs/file_formats.md, "System
 /// file"): A is 3N x 3N on the DOFs interleaved per point (T_X1, T_Y1, N_1, T_X2, ...), and
 /// every point has, besides mu, C_T, k_a, P_s, the half-axes "alpha": [alpha_X, alpha_Y] of its
