@@ -315,7 +315,7 @@ TEST_CASE("a broken 3-D system file is reported as such, not read as 2-D (item 1
       dir / "rows.json", R"({"dim": 3, "A": [[1, 0], [0, 1]], "points": [{"state": "b", "mu": 1}]})");
   const std::string want = "A must be an array of 3N = 3 rows (T_X, T_Y, N per point)";
   for (const char* cmd : {"rate --system ", "step --DF 1 0 1 --all --system ",
-                          "simulate --orbit 1 1 --system ", "map --system "}) {
+                          "simulate --orbit 1 1 --system ", "map --kind sphere --system "}) {
     expect_bad_input(cmd + ("'" + rows + "'"), want);
     const Run pipe = run_bash(cmd + ("<(cat '" + rows + "')"));
     CAPTURE(cmd, pipe.err);
