@@ -309,6 +309,19 @@ TEST_CASE("a broken 3-D system file is reported as such, not read as 2-D (item 1
     expect_bad_input(cmd + ("'" + tiny + "'"), "'1e-400' is below the smallest double");
     expect_bad_input(cmd + ("'" + dim + "'"), "dim must be 2 (2-D points) or 3 (3-D points), got \"3\"");
   }
+  // Valid JSON, wrong for 3-D: the 3-D reader's message (3N rows of T_X, T_Y, N; the 2-D
+  // reader knows no such layout), from a file and from a pipe (read once, dimension kept).
+  const std::string rows = write(
+      dir / "rows.json", R"({"dim": 3, "A": [[1, 0], [0, 1]], "points": [{"state": "b", "mu": 1}]})");
+  const std::string want = "A must be an array of 3N = 3 rows (T_X, T_Y, N per point)";
+  for (const char* cmd : {"rate --system ", "step --DF 1 0 1 --all --system ",
+                          "simulate --orbit 1 1 --system ", "map --kind sphere --system "}) {
+    expect_bad_input(cmd + ("'" + rows + "'"), want);
+    const Run pipe = run_bash(cmd + ("<(cat '" + rows + "')"));
+    CAPTURE(cmd, pipe.err);
+    CHECK(pipe.code == 2);
+    CHECK(pipe.err.find(want) != std::string::npos);
+  }
 }
 
 TEST_CASE("10^6 nested brackets in a system file or a checkpoint manifest: exit 2 (item 15)",
