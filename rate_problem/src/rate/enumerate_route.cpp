@@ -200,10 +200,18 @@ bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
                            RateSummary& sum) noexcept {
   const detail::CertifiedB c = detail::certified_b<false>(p, f);  // types only
   if (!c.applies) return false;
+  if (c.undecided) {
+    // A sign the data cannot decide (a load on a critical direction, computed in double): the
+    // general engine's count is the summary, marked not reliable. Dropping the undecided
+    // candidates instead printed count 0 on critical directions, where state b always has a
+    // solution [paper, Sec. 4.3].
+    sum.reliable = false;
+    return false;
+  }
   sum.count = c.n;
   sum.types = 0;
   for (int k = 0; k < c.n; ++k) sum.types |= 1u << static_cast<unsigned>(c.type[k]);
-  sum.reliable = !c.undecided;
+  sum.reliable = true;
   return true;
 }
 
@@ -332,6 +340,7 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
     return sum;
   }
   if (st.label == StateLabel::kB && summarize_b_certified(p, f, sum)) return sum;
+  const bool certified_undecided = !sum.reliable;  // state b: a sign the data do not decide
   if (st.label == StateLabel::kD) return summarize_d_fast(p, st, f);
   PlaneResult res;
   try {
@@ -342,7 +351,7 @@ RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactSt
   }
   for (int i = 0; i < res.n; ++i) sum.types |= 1u << static_cast<unsigned>(res.pieces[i].type);
   sum.count = res.infinite ? -1 : res.n;
-  sum.reliable = !(res.ambiguous > 0 || res.dropped > 0 || res.bad);
+  sum.reliable = !(certified_undecided || res.ambiguous > 0 || res.dropped > 0 || res.bad);
   return sum;
 }
 
