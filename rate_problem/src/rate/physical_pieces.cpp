@@ -263,6 +263,40 @@ std::vector<SolutionType> classify_system_rates(const SystemRatePrecomputed& pre
   return types_at(c, Vec(stack(r).cwiseQuotient(c.scale)));
 }
 
+/// Keeps the pieces whose points (every point, the ends and the middle of a segment, a ray's
+/// start, a point along it and its direction) satisfy the rate laws from the data
+/// (rate_laws_check.hpp); returns how many were dropped and the worst violation seen.
+int keep_verified(const SystemRatePrecomputed& pre, const Ctx& c, const Vec& dF, double sF,
+                  double sW, std::vector<Geo>& kept, double& worst) {
+  const int N = pre.system.n_points();
+  int rejected = 0;
+  std::vector<Geo> verified;
+  const Vec zero = Vec::Zero(dF.size());
+  auto phys = [&](const Vec& yy) { return Vec(yy.cwiseProduct(c.scale)); };
+  auto check = [&](const Vec& yy, TypeTuple t, const Vec& load, double f, double w) {
+    const double v = rate_laws_violation(pre.system, load, phys(yy), decode_types(t, N), f, w);
+    worst = std::max(worst, v);
+    return v <= kRateLawTol;
+  };
+  for (Geo& g : kept) {
+    bool ok = check(g.a, g.kind == Kind::kPoint ? g.type : tuple_at(c, g.a), dF, sF, sW);
+    if (g.kind == Kind::kSegment)
+      ok = ok && check(g.b, tuple_at(c, g.b), dF, sF, sW) &&
+           check(Vec(0.5 * (g.a + g.b)), g.type, dF, sF, sW);
+    if (g.kind == Kind::kRay) {
+      const Vec d = phys(g.b);
+      const double fd = d.head(2 * N).lpNorm<Eigen::Infinity>(),
+                   wd = d.tail(4 * N).lpNorm<Eigen::Infinity>();
+      ok = ok && check(Vec(g.a + g.b), g.type, dF, sF, sW) &&
+           check(g.b, g.type, zero, fd > 0 ? fd : 1.0, wd > 0 ? wd : 1.0);
+    }
+    if (ok) verified.push_back(std::move(g));
+    else ++rejected;
+  }
+  kept = std::move(verified);
+  return rejected;
+}
+
 SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF) {
   const int N = pre.system.n_points();
   SystemRateSolutionSet out;
@@ -419,34 +453,8 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   // rate laws from the data (rate_laws_check.hpp): what the LCP route cannot vouch for (e.g. a
   // vertex from a numerically singular basis, a direction that is not a null vector of the
   // true problem) is not listed, and the answer is then not complete.
-  int rejected = 0;
   double worst = 0;
-  {
-    std::vector<Geo> verified;
-    const Vec zero = Vec::Zero(dF.size());
-    auto phys = [&](const Vec& yy) { return Vec(yy.cwiseProduct(c.scale)); };
-    auto check = [&](const Vec& yy, TypeTuple t, const Vec& load, double f, double w) {
-      const double v = rate_laws_violation(pre.system, load, phys(yy), decode_types(t, N), f, w);
-      worst = std::max(worst, v);
-      return v <= kRateLawTol;
-    };
-    for (Geo& g : kept) {
-      bool ok = check(g.a, g.kind == Kind::kPoint ? g.type : tuple_at(c, g.a), dF, sF, sW);
-      if (g.kind == Kind::kSegment)
-        ok = ok && check(g.b, tuple_at(c, g.b), dF, sF, sW) &&
-             check(Vec(0.5 * (g.a + g.b)), g.type, dF, sF, sW);
-      if (g.kind == Kind::kRay) {
-        const Vec d = phys(g.b);
-        const double fd = d.head(2 * N).lpNorm<Eigen::Infinity>(),
-                     wd = d.tail(4 * N).lpNorm<Eigen::Infinity>();
-        ok = ok && check(Vec(g.a + g.b), g.type, dF, sF, sW) &&
-             check(g.b, g.type, zero, fd > 0 ? fd : 1.0, wd > 0 ? wd : 1.0);
-      }
-      if (ok) verified.push_back(std::move(g));
-      else ++rejected;
-    }
-    kept = std::move(verified);
-  }
+  const int rejected = keep_verified(pre, c, dF, sF, sW, kept, worst);
   if (rejected > 0) {
     out.complete = false;
     msg << rejected << " candidate piece(s) of the LCP route violate the rate laws (unit-free "

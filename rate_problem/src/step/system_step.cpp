@@ -12,6 +12,7 @@
 #include "cpkit/core/spd.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "system_step_units.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -653,66 +654,6 @@ struct Enumerator {
   }
 };
 
-/// The units the enumeration works in: force unit f (the largest force of the data) and length
-/// unit l = f / max|A_ij| (so that A is O(1)). The step is invariant under a change of units
-/// (forces / f, lengths / l, A l / f, C_T f / l, k_a f), so enumerating in these units makes
-/// every tolerance unit-free and keeps loads near the ends of double's range representable
-/// (issue 24, items 4 and 5).
-struct Units {
-  double f = 1, l = 1;
-};
-
-Units step_units(const SystemStepProblem& p) {
-  const ContactSystem& s = p.system;
-  const double amax = s.A.cwiseAbs().maxCoeff();
-  double f = p.DF.cwiseAbs().maxCoeff(), gmax = 0;
-  for (const auto& q : s.points) {
-    f = std::max({f, std::abs(q.P_N), std::abs(q.P_T)});
-    gmax = std::max(gmax, std::abs(q.g));
-  }
-  if (!(f > 0)) f = amax * gmax;  // no force at all: the force that closes the largest gap
-  if (!(f > 0) || !std::isfinite(f)) f = amax;  // nothing but A: every unknown is zero
-  Units u;
-  u.f = f;
-  // f / amax beyond double's range: the nearest representable length unit (the solution may
-  // still fit; from_units says when it does not)
-  u.l = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
-                 std::numeric_limits<double>::max());
-  return u;
-}
-
-[[noreturn]] void not_representable(const std::string& what) {
-  throw InputError("the step is not representable in double precision: " + what +
-                   " (rescale the data: forces and displacements beyond about 1e308 or below "
-                   "1e-308 in the units of the problem)");
-}
-
-SystemStepProblem to_units(const SystemStepProblem& p, const Units& u) {
-  SystemStepProblem q = p;
-  q.system.A = p.system.A * (u.l / u.f);
-  q.DF = p.DF / u.f;
-  for (auto& x : q.system.points) {
-    x.P_N /= u.f;
-    x.P_T /= u.f;
-    x.g /= u.l;
-    x.C_T *= u.f / u.l;
-    x.k_a *= u.f;
-  }
-  if (!q.system.A.allFinite() || !q.DF.allFinite()) not_representable("A or DF in units of the load");
-  for (const auto& x : q.system.points)
-    if (!std::isfinite(x.P_N) || !std::isfinite(x.P_T) || !std::isfinite(x.g) ||
-        !std::isfinite(x.C_T) || !std::isfinite(x.k_a))
-      not_representable("a point's data in units of the load");
-  return q;
-}
-
-void from_units(StepValues& v, const Units& u) {
-  for (double* x : {&v.DP_T, &v.DP_N, &v.P_T1, &v.P_N1}) *x *= u.f;
-  for (double* x : {&v.Dw_T, &v.Dw_N, &v.Dw_Ti, &v.Dw_w, &v.g1}) *x *= u.l;
-  for (double x : {v.DP_T, v.DP_N, v.P_T1, v.P_N1, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.g1})
-    if (!std::isfinite(x)) not_representable("a solution's forces or displacements overflow");
-}
-
 }  // namespace
 
 StepProblem point_step_problem(const SystemStepProblem& p, int i) {
@@ -797,8 +738,8 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
     throw InputError("the N-point step enumerates 4^N active sets; " + std::to_string(N) +
                      " points exceed the limit of " + std::to_string(opt.max_points));
   // Enumerate in the problem's own units (step_units), report in the caller's.
-  const Units units = step_units(p);
-  const SystemStepProblem ps = to_units(p, units);
+  const detail::Units units = detail::step_units(p);
+  const SystemStepProblem ps = detail::to_units(p, units);
   const Maps m = make_maps(ps);
   const McpProblem mcp = make_mcp(m);
   SystemStepSolutionSet out;
@@ -829,7 +770,7 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
     }
   }
   for (auto& sol : out.solutions)
-    for (auto& v : sol.values) from_units(v, units);
+    for (auto& v : sol.values) detail::from_units(v, units);
   return out;
 }
 
