@@ -16,13 +16,7 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-// 2^e with 2^e <= v < 2^(e+1) (v > 0), else 1.
-double pow2_below(double v) {
-  if (!(v > 0) || !std::isfinite(v)) return 1.0;
-  int e;
-  std::frexp(v, &e);
-  return std::ldexp(1.0, e - 1);
-}
+using detail::pow2_below;
 
 // Phi(z) and J = A + B M for the (scaled) problem; w is a buffer of size n.
 struct Model {

@@ -90,4 +90,13 @@ inline void fb_soc(const Eigen::Vector3d& x, const Eigen::Vector3d& y, Eigen::Ve
   one(y, dy, rho_y, Jy);
 }
 
+/// The power of two 2^e with 2^e <= v < 2^(e+1) (v > 0 finite), else 1: exact scale factors
+/// for the solvers' unit normalisation.
+inline double pow2_below(double v) {
+  if (!(v > 0) || !std::isfinite(v)) return 1.0;
+  int e;
+  std::frexp(v, &e);
+  return std::ldexp(1.0, e - 1);
+}
+
 }  // namespace cpkit::lcp::detail
