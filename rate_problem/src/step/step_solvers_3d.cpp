@@ -128,8 +128,6 @@ void residual_map(const Normalized& n, const Vec4& z, Vec4& Phi, Mat4& J) noexce
   J.bottomRows<3>() = Jx * dx + Jy * dy;
 }
 
-double merit(const Vec4& Phi) noexcept { return 0.5 * Phi.squaredNorm(); }
-
 /// The solver's own check in normalized units, besides step_3d_residual: each FB function
 /// small against its arguments, |fb(a, b)| <= 1e-9 (1 + min(|a|, |b|)) + 1e-13 (|a| + |b|),
 /// so that a point with a huge multiplier and a small but nonzero complementarity product
