@@ -23,6 +23,7 @@
 
 #include "cpkit/rate_problem/model/parameters.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/rate/detail/state_b_terms.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "rounded.hpp"
 
@@ -38,13 +39,10 @@ struct CertifiedB {
   double u[6] = {}, xi[6] = {};  ///< dP_N and dw_T^i of each point (computed values)
 };
 
-/// A fast pre-pass: a double with the magnitude m of the terms it was formed from (the same
-/// operations on absolute values). An expression of at most a dozen roundings is within
+/// The fast pre-pass in Mag (state_b_terms.hpp: a value and the magnitude of the terms it was
+/// formed from). An expression of at most a dozen roundings is within
 /// 12 u m of its exact value, so |v| > 1e-13 m decides its sign with a margin of 30; closer
 /// (or v = 0 with m > 0) is undecided here and certified_b reruns with Rounded.
-struct Mag {
-  double v = 0, m = 0;
-};
 inline Mag exact_mag(double x) noexcept { return {x, std::abs(x)}; }
 inline Mag operator+(Mag a, Mag b) noexcept { return {a.v + b.v, a.m + b.m}; }
 inline Mag operator-(Mag a) noexcept { return {-a.v, a.m}; }
@@ -74,40 +72,61 @@ int certified_nonneg(T x) noexcept {
   return s == kUndecided ? kUndecided : (s >= 0 ? 1 : 0);
 }
 
-/// The decided solution points of the state-b rate problem of (p, f), signs judged in T; with
-/// kValues false the points' values (u, xi) are left 0 (the map summaries need only the types:
-/// the 2-ulp determinants cost three std::fma, which are library calls without -mfma).
-template <class T, bool kValues>
-CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcept {
-  CertifiedB out;
+/// The load-independent terms of certified_b_in (A, C_T and mu only; state_b_terms.hpp).
+template <class T>
+BTerms<T> b_terms(const ContactParameters& p) noexcept {
+  BTerms<T> t;
   auto exact = [](double x) { return make(x, static_cast<const T*>(nullptr)); };
-  const T a11 = exact(p.a11), a12 = exact(p.a12), a22 = exact(p.a22), ct = exact(p.C_T);
-  const T mu = exact(p.mu), fT = exact(f.dF_T), fN = exact(f.dF_N);
-  const T det = a11 * a22 - a12 * a12;
-  const T D0 = a22 + ct * det;
-  const T c1 = exact(1.0) + a11 * ct;
-  const T S = c1 * fN - a12 * ct * fT;  // D0 dw_N at dP = 0
-  const T r = a22 * fT - a12 * fN;      // det dw_T^i at dP = 0, dw_N = 0
+  t.a11 = exact(p.a11), t.a12 = exact(p.a12), t.a22 = exact(p.a22);
+  const T ct = exact(p.C_T), mu = exact(p.mu);
+  const T det = t.a11 * t.a22 - t.a12 * t.a12;
+  const T D0 = t.a22 + ct * det;
+  t.c1 = exact(1.0) + t.a11 * ct;
+  t.a12ct = t.a12 * ct;
   // The Cramer numerators and D_+/- carry the factor D0 > 0 (expanded by hand, checked with
   // sympy): D_+/- = D0 (a11 -/+ mu a12), the numerator of u is D0 N with N = a11 dF_N -
   // a12 dF_T, those of xi on {1,2} / {1,3} are D0 L_+ and -D0 L_- with L_s = (s + mu a12 C_T)
   // dF_T - mu c1 dF_N. Their signs are decided on the reduced forms: the factor det of an
   // ill-conditioned A would add its own rounding (1e-4 relative at cond 1e12) to every bound.
-  const T Dp = a11 - mu * a12, Dm = a11 + mu * a12;
-  const T N = a11 * fN - a12 * fT;
-  const T Lp = (exact(1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
-  const T Lm = (exact(-1.0) + mu * a12 * ct) * fT - mu * c1 * fN;
-  if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(c1) != 1) return out;
-  const int sp = sign3(Dp), sm = sign3(Dm);
+  t.Dp = t.a11 - mu * t.a12, t.Dm = t.a11 + mu * t.a12;
+  const T mua12ct = mu * t.a12 * ct;
+  t.kp = exact(1.0) + mua12ct;
+  t.km = exact(-1.0) + mua12ct;
+  t.muc1 = mu * t.c1;
+  if (!(p.mu > 0) || sign3(det) != 1 || sign3(D0) != 1 || sign3(t.c1) != 1) return t;
+  t.sp = sign3(t.Dp), t.sm = sign3(t.Dm);
   // a singular block, or one within its rounding of singular (the degenerate line
   // a11 = mu |a12| of the presets, exact only up to the rounding of mu): a continuum is
   // possible; the general engine keeps deciding those (left open: its bands, issue 24)
-  if (sp == 0 || sm == 0 || sp == kUndecided || sm == kUndecided) return out;
-  // the general engine's own near-singular band (1e-6 of the terms, as b_blocks_regular): the
+  if (t.sp == 0 || t.sm == 0 || t.sp == kUndecided || t.sm == kUndecided) return t;
+  // the general engine's own near-singular band (1e-6 of the terms): the
   // two routes of the N = 1 system and of one point must meet the same continua there
   const double mua12 = std::abs(p.mu * p.a12);
-  if (std::abs(Dp.v) <= 1e-6 * (p.a11 + mua12) || std::abs(Dm.v) <= 1e-6 * (p.a11 + mua12))
-    return out;
+  if (std::abs(t.Dp.v) <= 1e-6 * (p.a11 + mua12) || std::abs(t.Dm.v) <= 1e-6 * (p.a11 + mua12))
+    return t;
+  t.applies = true;
+  return t;
+}
+
+/// The decided solution points of the state-b rate problem of (p, f), signs judged in T, from
+/// the load-independent terms `b` of p; with kValues false the points' values (u, xi) are
+/// left 0 (the map summaries need only the types: the 2-ulp determinants cost three std::fma,
+/// which are library calls without -mfma).
+template <class T, bool kValues>
+CertifiedB certified_b_with(const BTerms<T>& b, const ContactParameters& p,
+                            const LoadRate& f) noexcept {
+  CertifiedB out;
+  if (!b.applies) return out;
+  auto exact = [](double x) { return make(x, static_cast<const T*>(nullptr)); };
+  const T fT = exact(f.dF_T), fN = exact(f.dF_N);
+  const T S = b.c1 * fN - b.a12ct * fT;      // D0 dw_N at dP = 0
+  const T r = b.a22 * fT - b.a12 * fN;       // det dw_T^i at dP = 0, dw_N = 0
+  const T N = b.a11 * fN - b.a12 * fT;
+  const T Lp = b.kp * fT - b.muc1 * fN;
+  const T Lm = b.km * fT - b.muc1 * fN;
+  const int sp = b.sp, sm = b.sm;
+  const T& Dp = b.Dp;
+  const T& Dm = b.Dm;
   out.applies = true;
   // a candidate: all conditions 1 -> a point; any 0 -> none; else undecided
   auto add = [&](std::initializer_list<int> conds, SolutionType t, double uu, double xx) {
@@ -152,7 +171,7 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
   }
   // {1}: u = S / c1 > 0, xi = 0, w1 c1 = -D0 L_+ >= 0, w2 c1 = -D0 L_- >= 0
   add({certified_pos(S), certified_nonneg(-Lp), certified_nonneg(-Lm)}, SolutionType::kStick,
-      S.v / c1.v, 0.0);
+      S.v / b.c1.v, 0.0);
   // {1,2}: u = N / (a11 - mu a12) > 0, xi = L_+ / (a11 - mu a12) > 0 (w2 = 2 mu D0 u >= 0)
   add({certified_pos(sp > 0 ? N : -N), certified_pos(sp > 0 ? Lp : -Lp)},
       SolutionType::kSlipPlus, Nv / Dp.v, Lp.v / Dp.v);
@@ -162,6 +181,12 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
   return out;
 }
 
+
+/// The decided solution points of the state-b rate problem of (p, f), signs judged in T.
+template <class T, bool kValues>
+CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcept {
+  return certified_b_with<T, kValues>(b_terms<T>(p), p, f);
+}
 
 /// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide.
 template <bool kValues = true>

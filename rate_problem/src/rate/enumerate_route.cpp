@@ -174,23 +174,24 @@ Rates typed_rates(const ContactParameters& p, const ContactState& st, const Load
   return r;
 }
 
-/// Fast complete enumeration of the state-b LCP for the summary (count and types), by
-/// complementary supports, using two facts about this M (docs/contact_model.md, Sec. 5):
-///  (i) a solution with l+ > 0 and l- > 0 has w2 = w3 = 0, i.e. dP_T = dP_N = 0 (mu > 0); its
-///      physical rates depend on l+ - l- only, so z' = (0, max(xi,0), max(-xi,0)) is a solution
-///      with the same rates: supports holding both 2 and 3 add no physical solution;
-/// (ii) the other principal blocks are M11 = 1 + a11 C_T > 0, M22 = M33 = det A > 0 and the
-///      2x2 blocks {1,2}, {1,3} with determinants D0 D_+ and D0 D_-.
-/// So when D_+ and D_- are clearly nonzero, every solution is the unique basic solution of one
-/// of the supports {}, {1}, {2}, {3}, {1,2}, {1,3}, and the set is finite. Returns false (the
-/// caller then runs the general engine) when a 2x2 block is near-singular.
-bool b_blocks_regular(const Eigen::Matrix3d& M) noexcept {
-  const double d12 = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
-  const double d13 = M(0, 0) * M(2, 2) - M(0, 2) * M(2, 0);
-  const double s12 = std::abs(M(0, 0) * M(1, 1)) + std::abs(M(0, 1) * M(1, 0));
-  const double s13 = std::abs(M(0, 0) * M(2, 2)) + std::abs(M(0, 2) * M(2, 0));
-  constexpr double kSingular = 1e-6;
-  return !(std::abs(d12) <= kSingular * s12 || std::abs(d13) <= kSingular * s13);
+// The certified state-b summary (certified_b.hpp) enumerates the LCP by complementary
+// supports, using two facts about this M (docs/contact_model.md, Sec. 5):
+//  (i) a solution with l+ > 0 and l- > 0 has w2 = w3 = 0, i.e. dP_T = dP_N = 0 (mu > 0); its
+//      physical rates depend on l+ - l- only, so z' = (0, max(xi,0), max(-xi,0)) is a solution
+//      with the same rates: supports holding both 2 and 3 add no physical solution;
+// (ii) the other principal blocks are M11 = 1 + a11 C_T > 0, M22 = M33 = det A > 0 and the
+//      2x2 blocks {1,2}, {1,3} with determinants D0 D_+ and D0 D_-.
+// So when D_+ and D_- are clearly nonzero, every solution is the unique basic solution of one
+// of the supports {}, {1}, {2}, {3}, {1,2}, {1,3}, and the set is finite;
+// near-singular blocks go to the general engine.
+
+/// The summary (count, types) of decided certified points.
+RateSummary summary_of(const detail::CertifiedB& c) noexcept {
+  RateSummary sum;
+  sum.count = c.n;
+  for (int k = 0; k < c.n; ++k) sum.types |= 1u << static_cast<unsigned>(c.type[k]);
+  sum.reliable = true;
+  return sum;
 }
 
 /// The summary of state b from the certified support enumeration (certified_b.hpp): every
@@ -200,19 +201,16 @@ bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
                            RateSummary& sum) noexcept {
   const detail::CertifiedB c = detail::certified_b<false>(p, f);  // types only
   if (!c.applies) return false;
-  if (c.undecided) {
-    // A sign the data cannot decide (a load on a critical direction, computed in double): the
-    // general engine's count is the summary, marked not reliable. Dropping the undecided
-    // candidates instead printed count 0 on critical directions, where state b always has a
-    // solution [paper, Sec. 4.3].
-    sum.reliable = false;
-    return false;
+  if (!c.undecided) {
+    sum = summary_of(c);
+    return true;
   }
-  sum.count = c.n;
-  sum.types = 0;
-  for (int k = 0; k < c.n; ++k) sum.types |= 1u << static_cast<unsigned>(c.type[k]);
-  sum.reliable = true;
-  return true;
+  // A sign the data cannot decide (a load on a critical direction, computed in double): the
+  // general engine's count is the summary, marked not reliable. Dropping the undecided
+  // candidates instead printed count 0 on critical directions, where state b always has a
+  // solution [paper, Sec. 4.3].
+  sum.reliable = false;
+  return false;
 }
 
 /// Whether the typed plane pieces are the certified points: same count, same types.
@@ -366,16 +364,9 @@ RatePrecomputed precompute_rate_problem(const ContactParameters& params,
   LoadRate unused;
   int eA = 0, eF = 0;
   detail::normalise(params, LoadRate{}, pn, unused, eA, eF);
+  pre.params_n = pn;
   if (state.label == StateLabel::kB) {
-    const StateBLcp l0 = state_b_lcp(pn, LoadRate{});  // M does not depend on the load
-    const StateBLcp lT = state_b_lcp(pn, LoadRate{1.0, 0.0});
-    const StateBLcp lN = state_b_lcp(pn, LoadRate{0.0, 1.0});
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) pre.M_b[i][j] = l0.M(i, j);
-      pre.qT_b[i] = lT.q(i);
-      pre.qN_b[i] = lN.q(i);
-    }
-    pre.b_fast = b_blocks_regular(l0.M);
+    pre.b_terms = detail::b_terms<detail::Mag>(pn);
   } else if (state.label == StateLabel::kD) {
     const StateDLcp l0 = state_d_lcp(pn, state, LoadRate{});  // M: load-independent
     pre.M_d = l0.M;
@@ -394,18 +385,24 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& l
                                    RateMethod method) noexcept {
   const ContactState& st = pre.state;
   if (method != RateMethod::kEnumerate) return summarize_rate_problem(pre.params, st, load, method);
-  // judged in normalised units, as the LCP data were precomputed (exact powers of two)
-  ContactParameters p;
+  // judged in normalised units, as the terms were precomputed (exact powers of two)
   LoadRate f;
-  int eA = 0, eF = 0;
-  detail::normalise(pre.params, load, p, f, eA, eF);
+  int eF = 0;
+  detail::normalise_load(load, f, eF);
+  const ContactParameters& pn = pre.params_n;
   RateSummary sum;
-  if (st.label == StateLabel::kB && summarize_b_certified(p, f, sum)) return sum;
+  if (st.label == StateLabel::kB) {
+    // the load-independent terms were formed once (precompute_rate_problem): only the
+    // load's five products per cell; undecided here -> the full certified pass below
+    const detail::CertifiedB c = detail::certified_b_with<detail::Mag, false>(pre.b_terms, pn, f);
+    if (c.applies && !c.undecided) return summary_of(c);
+    if (summarize_b_certified(pn, f, sum)) return sum;
+  }
   if (st.label == StateLabel::kD) {
     // q = (1 + a11 C_T)(mu_eff dP_N - s dP_T) at lambda = 0, snapped as in state_d_lcp
-    const double c1 = 1.0 + p.a11 * p.C_T;
+    const double c1 = 1.0 + pn.a11 * pn.C_T;
     const double m =
-        p.criterion == Criterion::kSoftening ? p.mu - 2.0 * p.kappa(st.P_N) : p.mu;
+        pn.criterion == Criterion::kSoftening ? pn.mu - 2.0 * pn.kappa(st.P_N) : pn.mu;
     const double dPN = pre.dPN_T * f.dF_T + pre.dPN_N * f.dF_N;
     const double dPT = pre.dPT_T * f.dF_T + pre.dPT_N * f.dF_N;
     StateDLcp l;

@@ -109,14 +109,24 @@ namespace detail {
 void normalise(const ContactParameters& params, const LoadRate& load, ContactParameters& pn,
                LoadRate& fn, int& eA, int& eF) noexcept {
   eA = exponent_of_(std::max(params.a11, params.a22));
-  const double fmax = std::max(std::abs(load.dF_T), std::abs(load.dF_N));
-  eF = fmax > 0 && std::isfinite(fmax) ? exponent_of_(fmax) : 0;
+  normalise_load(load, fn, eF);
   pn = params;
   pn.a11 = std::ldexp(params.a11, -eA);
   pn.a12 = std::ldexp(params.a12, -eA);
   pn.a22 = std::ldexp(params.a22, -eA);
   pn.C_T = std::ldexp(params.C_T, eA);
-  fn = LoadRate{std::ldexp(load.dF_T, -eF), std::ldexp(load.dF_N, -eF)};
+}
+
+void normalise_load(const LoadRate& load, LoadRate& fn, int& eF) noexcept {
+  const double fmax = std::max(std::abs(load.dF_T), std::abs(load.dF_N));
+  eF = fmax > 0 && std::isfinite(fmax) ? exponent_of_(fmax) : 0;
+  // x 2^-eF rounds as ldexp does (both are the correctly rounded product); one ldexp instead
+  // of two matters in the maps' inner loop. 2^-eF overflows only for subnormal loads.
+  const double scale = std::ldexp(1.0, -eF);
+  if (std::isfinite(scale))
+    fn = LoadRate{load.dF_T * scale, load.dF_N * scale};
+  else
+    fn = LoadRate{std::ldexp(load.dF_T, -eF), std::ldexp(load.dF_N, -eF)};
 }
 
 }  // namespace detail

@@ -42,6 +42,8 @@ void validate_inputs(const ContactParameters& params, const ContactState& state,
 /// (eA from max(a11, a22)), C_T 2^eA, the load / 2^eF (eF from its largest component).
 void normalise(const ContactParameters& params, const LoadRate& load, ContactParameters& pn,
                LoadRate& fn, int& eA, int& eF) noexcept;
+/// The load's half of normalise: fn = load 2^-eF.
+void normalise_load(const LoadRate& load, LoadRate& fn, int& eF) noexcept;
 
 /// Route 1 into a PieceList (analytic.cpp).
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,

@@ -11,6 +11,7 @@
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/rate/detail/state_b_terms.hpp"
 
 namespace cpkit::rate {
 
@@ -77,15 +78,14 @@ RateSummary summarize_rate_problem(const ContactParameters& params, const Contac
                                    RateMethod method = RateMethod::kEnumerate) noexcept;
 
 /// What the enumeration route can compute once per (parameters, state) for maps over many load
-/// rates: the state's LCP matrix and q as a linear function of the load (q = q_T dF_T +
-/// q_N dF_N). Built by precompute_rate_problem (which validates); read-only afterwards, so one
+/// rates: the parameters in normalised units, state b's load-independent sign terms, state d's
+/// LCP matrix and rates per unit load. Built by precompute_rate_problem (which validates); read-only afterwards, so one
 /// object can serve many threads.
 struct RatePrecomputed {
   ContactParameters params;
   ContactState state;
-  double M_b[3][3] = {};                   ///< state b: M of docs/model.md
-  double qT_b[3] = {}, qN_b[3] = {};       ///< state b: q = qT dF_T + qN dF_N
-  bool b_fast = false;                     ///< state b: D_+, D_- clearly nonzero
+  ContactParameters params_n;              ///< params in the summaries' normalised units
+  detail::BTerms<detail::Mag> b_terms;     ///< state b: the load-independent certified terms
   double M_d = 0;                          ///< state d: the 1x1 LCP matrix (snapped)
   bool d_snapped = false;                  ///< state d: a nonzero M_d was snapped to zero
   double dPN_T = 0, dPN_N = 0, dPT_T = 0, dPT_N = 0;  ///< state d: stick rates per unit load
