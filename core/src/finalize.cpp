@@ -51,9 +51,19 @@ bool usable_point(SolveResult& r, Eigen::Index n, bool claimed_solution) {
   return false;
 }
 
+bool refuse_infeasibility(SolveResult& r, const char* kind) {
+  r.certificate.reset();
+  if (r.status != Status::kInfeasible) return false;
+  r.status = Status::kNumericalFailure;
+  append(r.message, std::string("infeasibility claimed for ") + kind +
+                        " without a checkable certificate");
+  return true;
+}
+
 }  // namespace detail
 
 using detail::append;
+using detail::refuse_infeasibility;
 using detail::decide;
 using detail::usable_point;
 
@@ -82,15 +92,8 @@ SolveResult finalize(const LcpProblem& p, SolveResult r, const CommonOptions& o)
 
 SolveResult finalize(const BoxLcpProblem& p, SolveResult r, const CommonOptions& o) {
   const bool claimed_solution = is_solution(r.status);
-  if (r.status == Status::kInfeasible) {
-    // No box certificate format yet: never grant infeasibility without a checkable proof.
-    r.status = Status::kNumericalFailure;
-    append(r.message, "infeasibility claimed for a box LCP without a checkable certificate");
-    r.certificate.reset();
+  if (refuse_infeasibility(r, "a box LCP") || !usable_point(r, p.size(), claimed_solution))
     return r;
-  }
-  r.certificate.reset();
-  if (!usable_point(r, p.size(), claimed_solution)) return r;
   r.residuals = box_lcp_residuals(p, r.z, r.w);
   decide(r, claimed_solution, o);
   return r;
@@ -98,14 +101,7 @@ SolveResult finalize(const BoxLcpProblem& p, SolveResult r, const CommonOptions&
 
 SolveResult finalize(const McpProblem& p, SolveResult r, const CommonOptions& o) {
   const bool claimed_solution = is_solution(r.status);
-  if (r.status == Status::kInfeasible) {
-    r.status = Status::kNumericalFailure;
-    append(r.message, "infeasibility claimed for an MCP without a checkable certificate");
-    r.certificate.reset();
-    return r;
-  }
-  r.certificate.reset();
-  if (!usable_point(r, p.size(), claimed_solution)) return r;
+  if (refuse_infeasibility(r, "an MCP") || !usable_point(r, p.size(), claimed_solution)) return r;
   Vec F(p.size());
   if (!p.F(r.z, F) || F.size() != p.size() || !F.allFinite()) {
     if (claimed_solution) {

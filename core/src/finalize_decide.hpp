@@ -16,5 +16,9 @@ void decide(SolveResult& r, bool claimed_solution, const CommonOptions& o);
 /// False (and, for a claimed solution, numerical failure) when r.z has the wrong size or
 /// non-finite entries.
 bool usable_point(SolveResult& r, Eigen::Index n, bool claimed_solution);
+/// For kinds with no certificate format (infeasibility is never granted without a checkable
+/// proof): drops any certificate; true, with r refuted as numerical failure, when r claims
+/// infeasibility. `kind` names the problem in the message ("an MCP").
+bool refuse_infeasibility(SolveResult& r, const char* kind);
 
 }  // namespace cpkit::detail

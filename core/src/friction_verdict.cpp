@@ -172,14 +172,9 @@ SolveResult finalize(const FrictionContactProblem& p, SolveResult claim,
                      const CommonOptions& options) {
   throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
   const bool claimed_solution = is_solution(claim.status);
-  claim.certificate.reset();
-  if (claim.status == Status::kInfeasible) {
-    claim.status = Status::kNumericalFailure;
-    detail::append(claim.message,
-                   "infeasibility claimed for a friction problem without a checkable certificate");
+  if (detail::refuse_infeasibility(claim, "a friction problem") ||
+      !detail::usable_point(claim, p.q.size(), claimed_solution))
     return claim;
-  }
-  if (!detail::usable_point(claim, p.q.size(), claimed_solution)) return claim;
   claim.w = p.W * claim.z + p.q;
   claim.residuals = friction_residuals(p, friction_units(p), claim.z, claim.w);
   detail::decide(claim, claimed_solution, options);

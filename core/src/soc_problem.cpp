@@ -115,14 +115,9 @@ Residuals soc_residuals(const SocProblem& p, const Eigen::VectorXd& z, const Eig
 SolveResult finalize(const SocProblem& p, SolveResult claim, const CommonOptions& options) {
   throw_if_invalid(p.validate(), "cone problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
   const bool claimed_solution = is_solution(claim.status);
-  claim.certificate.reset();
-  if (claim.status == Status::kInfeasible) {
-    claim.status = Status::kNumericalFailure;
-    detail::append(claim.message,
-                   "infeasibility claimed for a cone problem without a checkable certificate");
+  if (detail::refuse_infeasibility(claim, "a cone problem") ||
+      !detail::usable_point(claim, p.size(), claimed_solution))
     return claim;
-  }
-  if (!detail::usable_point(claim, p.size(), claimed_solution)) return claim;
   claim.w = p.M * claim.z + p.q;
   claim.residuals = soc_residuals(p, claim.z, claim.w);
   detail::decide(claim, claimed_solution, options);

@@ -65,6 +65,33 @@ double load_scale(const LoadRate& f) noexcept {
   return s > 0 ? s : 1.0;
 }
 
+/// The (dP_N, dw_T^i) plane set of an enumerated small LCP: `vertex` maps a solution z to its
+/// plane point, `ray` a unit ray (with the plane's extents U, V) to a plane direction of the
+/// problem's size. The extents start at the load's scales (sU, sV) and grow with the vertices.
+template <int N, class Vertex, class Ray>
+detail::PlaneSet enumerated_plane(const lcp::SmallSolutionSet<N>& set, double sU, double sV,
+                                  Vertex vertex, Ray ray) {
+  double U = sU, V = sV;
+  detail::P2 vert[lcp::SmallSolutionSet<N>::kMax];
+  for (int k = 0; k < set.num_points; ++k) {
+    vert[k] = vertex(set.z[k]);
+    U = std::max(U, std::abs(vert[k].u));
+    V = std::max(V, std::abs(vert[k].v));
+  }
+  detail::PlaneSet plane(U, V, kGeoTol);
+  for (int k = 0; k < set.num_points; ++k) plane.add_point(vert[k]);
+  for (int i = 0; i < set.num_pieces; ++i) {
+    const auto& pc = set.pieces[i];
+    detail::P2 pv[lcp::SmallSolutionSet<N>::kMax], pr[lcp::SmallSolutionSet<N>::kMax];
+    int nv = 0;
+    for (int k = 0; k < set.num_points; ++k)
+      if (pc.vertex_mask & (1u << k)) pv[nv++] = vert[k];
+    for (int j = 0; j < pc.num_rays; ++j) pr[j] = ray(pc.rays[j], U, V);
+    plane.add_piece(pv, nv, pr, pc.num_rays);
+  }
+  return plane;
+}
+
 void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   const StateBLcp l = state_b_lcp(p, f);
   lcp::SmallSolutionSet<3> set;
@@ -75,26 +102,12 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   // V0: the load's own displacement scale. Type decisions use it, not V (which grows with the
   // largest vertex): a separation vertex of 1e11 must not make a slip of 1 look like stick.
   const double V0 = sF * (p.C_T + 1.0 / p.a11);
-  double U = sF, V = V0;
-  detail::P2 vert[8];
-  for (int k = 0; k < set.num_points; ++k) {
-    vert[k] = detail::P2{set.z[k](0), set.z[k](1) - set.z[k](2)};
-    U = std::max(U, std::abs(vert[k].u));
-    V = std::max(V, std::abs(vert[k].v));
-  }
-  detail::PlaneSet plane(U, V, kGeoTol);
-  for (int k = 0; k < set.num_points; ++k) plane.add_point(vert[k]);
-  for (int i = 0; i < set.num_pieces; ++i) {
-    const auto& pc = set.pieces[i];
-    detail::P2 pv[8], pr[8];
-    int nv = 0;
-    for (int k = 0; k < set.num_points; ++k)
-      if (pc.vertex_mask & (1u << k)) pv[nv++] = vert[k];
-    // rays come with ||d||_inf = 1; scale them to the problem's size before judging them zero
-    for (int j = 0; j < pc.num_rays; ++j)
-      pr[j] = detail::P2{U * pc.rays[j](0), U * (pc.rays[j](1) - pc.rays[j](2)) * (V / U)};
-    plane.add_piece(pv, nv, pr, pc.num_rays);
-  }
+  detail::PlaneSet plane = enumerated_plane(
+      set, sF, V0, [](const Eigen::Vector3d& z) { return detail::P2{z(0), z(1) - z(2)}; },
+      // rays come with ||d||_inf = 1; scale them to the problem's size before judging them zero
+      [](const Eigen::Vector3d& d, double U, double V) {
+        return detail::P2{U * d(0), U * (d(1) - d(2)) * (V / U)};
+      });
   const double c1 = 1.0 + p.a11 * p.C_T;
   TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
              c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
@@ -120,29 +133,13 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
   const double u1 = state_d_rates(p, st, LoadRate{}, 1.0).dP_N;
   const double sF = load_scale(f);
   const double V0 = sF * (p.C_T + 1.0 / p.a11);  // type scale (see plane_b)
-  double U = sF, V = V0;
-  detail::P2 vert[2];
-  for (int k = 0; k < set.num_points; ++k) {
-    const double lam = set.z[k](0);
-    vert[k] = detail::P2{u0 + u1 * lam, s * lam};
-    U = std::max(U, std::abs(vert[k].u));
-    V = std::max(V, std::abs(vert[k].v));
-  }
-  detail::PlaneSet plane(U, V, kGeoTol);
-  for (int k = 0; k < set.num_points; ++k) plane.add_point(vert[k]);
-  for (int i = 0; i < set.num_pieces; ++i) {
-    const auto& pc = set.pieces[i];
-    detail::P2 pv[2], pr[2];
-    int nv = 0;
-    for (int k = 0; k < set.num_points; ++k)
-      if (pc.vertex_mask & (1u << k)) pv[nv++] = vert[k];
-    for (int j = 0; j < pc.num_rays; ++j) {
-      const double dl = pc.rays[j](0);
+  detail::PlaneSet plane = enumerated_plane(
+      set, sF, V0,
+      [&](const Eigen::Matrix<double, 1, 1>& z) { return detail::P2{u0 + u1 * z(0), s * z(0)}; },
       // scale the unit ray so that its lambda-extent is of the problem's size
-      pr[j] = detail::P2{u1 * dl * V, s * dl * V};
-    }
-    plane.add_piece(pv, nv, pr, pc.num_rays);
-  }
+      [&](const Eigen::Matrix<double, 1, 1>& d, double, double V) {
+        return detail::P2{u1 * d(0) * V, s * d(0) * V};
+      });
   TypeD type{V0};
   plane.add_affine(0.0, 0.0, 1.0);
   res.infinite = plane.num_lines() > 0;

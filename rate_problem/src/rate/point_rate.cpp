@@ -133,23 +133,6 @@ void normalise_load(const LoadRate& load, LoadRate& fn, int& eF) noexcept {
 
 namespace {
 
-const char* single_solver_name(RateMethod m) {
-  switch (m) {
-    case RateMethod::kLemke:
-      return "lemke";
-    case RateMethod::kFbNewton:
-      return "fb-newton";
-    case RateMethod::kIpopt:
-      return "ipopt";
-    default:
-      return "";
-  }
-}
-
-}  // namespace
-
-namespace {
-
 Rates scaled_rates(const Rates& r, int eF, int eL) noexcept {
   Rates s;
   s.dP_T = std::ldexp(r.dP_T, eF);
@@ -178,7 +161,7 @@ RateSolutionSet dispatch(const ContactParameters& params, const ContactState& st
     case RateMethod::kIpopt:
       break;
   }
-  return solve_rate_single(params, state, load, single_solver_name(method));
+  return solve_rate_single(params, state, load, std::string(to_string(method)));
 }
 
 }  // namespace

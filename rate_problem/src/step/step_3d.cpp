@@ -419,17 +419,24 @@ bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double&
          std::abs(phi - phi0) <= 1e-4;
 }
 
-/// A contact solution (P_N1 >= 0, g1 = 0) from its own unknowns: Dw_T = C_T DP_T + Dw_T^i,
-/// Dw_N = -g0 + Dw^w. Equilibrium is then what the residual checks (a backward error); solving
-/// A Dw = DF - DP instead would carry cond(A) eps into g1.
-Step3dValues contact_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1, double P_N1,
-                            double lambda, const Eigen::Vector2d& Dw_Ti) noexcept {
+/// The end-of-step forces, their increments and lambda; the displacements are left to the caller.
+Step3dValues force_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1, double P_N1,
+                          double lambda) noexcept {
   Step3dValues v;
   v.P_T1 = P_T1;
   v.P_N1 = P_N1;
   v.lambda = lambda;
   v.DP_T = P_T1 - p.state.P_T0;
   v.DP_N = P_N1 - p.state.P_N0;
+  return v;
+}
+
+/// A contact solution (P_N1 >= 0, g1 = 0) from its own unknowns: Dw_T = C_T DP_T + Dw_T^i,
+/// Dw_N = -g0 + Dw^w. Equilibrium is then what the residual checks (a backward error); solving
+/// A Dw = DF - DP instead would carry cond(A) eps into g1.
+Step3dValues contact_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1, double P_N1,
+                            double lambda, const Eigen::Vector2d& Dw_Ti) noexcept {
+  Step3dValues v = force_values(p, P_T1, P_N1, lambda);
   v.Dw_Ti = Dw_Ti;
   v.Dw_T = p.params.C_T * v.DP_T + Dw_Ti;
   v.Dw_w = p.wear_coefficient() * P_N1 * lambda;
@@ -556,12 +563,7 @@ double Step3dProblem::wear_coefficient() const noexcept {
 
 Step3dValues step_3d_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1, double P_N1,
                             double lambda) noexcept {
-  Step3dValues v;
-  v.P_T1 = P_T1;
-  v.P_N1 = P_N1;
-  v.lambda = lambda;
-  v.DP_T = P_T1 - p.state.P_T0;
-  v.DP_N = P_N1 - p.state.P_N0;
+  Step3dValues v = force_values(p, P_T1, P_N1, lambda);
   const Eigen::Vector3d DP(v.DP_T(0), v.DP_T(1), v.DP_N);
   const Eigen::Vector3d Dw = p.params.A.ldlt().solve(p.DF - DP);
   v.Dw_T = Dw.head<2>();

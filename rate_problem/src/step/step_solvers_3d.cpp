@@ -294,13 +294,20 @@ void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolu
   sols = std::move(out);
 }
 
+namespace {
+/// The problem in normalised units after the checks every single-start solver makes.
+Normalized checked_normalized(const Step3dProblem& problem, const CommonOptions& options) {
+  check(problem);
+  throw_if_invalid(options.validate(), "options");
+  return normalize(problem);
+}
+}  // namespace
+
 Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
                                        const CommonOptions& options,
                                         const Step3dStart* start) {
-  check(problem);
-  throw_if_invalid(options.validate(), "options");
   const auto t0 = std::chrono::steady_clock::now();
-  const Normalized n = normalize(problem);
+  const Normalized n = checked_normalized(problem, options);
   Step3dSolveResult out;
   out.solver = "fb-soc";
   newton(problem, n, normalized_start(problem, n, start), options, out);
@@ -311,10 +318,8 @@ Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
 Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
                                       const CommonOptions& options,
                                        const Step3dStart* start) {
-  check(problem);
-  throw_if_invalid(options.validate(), "options");
   const auto t0 = std::chrono::steady_clock::now();
-  const Normalized n = normalize(problem);
+  const Normalized n = checked_normalized(problem, options);
   const Vec4 xs = normalized_start(problem, n, start);
   Step3dSolveResult out;
   out.solver = "ipopt";

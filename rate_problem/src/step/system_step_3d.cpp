@@ -159,6 +159,28 @@ Normalized normalize(const SystemStep3dProblem& pr) {
   return n;
 }
 
+/// Point i's two FB functions at z (ui, g1: the slip rates and gaps at z): the normal pair
+/// (P_N, -g) and the cone pair x = (mu P_N, P_T / alpha), y = (lambda, -alpha Dw_T^i), with
+/// their derivatives.
+struct PointFb {
+  double g = 0, phi_N = 0, da = 0, db = 0;  ///< gap with the wear term; FB value; dFB/d(P_N, -g)
+  Eigen::Vector2d al;
+  Eigen::Vector3d x, y, phi;
+  Eigen::Matrix3d Jx, Jy;
+};
+PointFb point_fb(const Normalized& n, const Vec& z, const Vec& ui, const Vec& g1, int i) {
+  PointFb f;
+  const int r = 4 * i;
+  const double PN = z(r + 2), lam = z(r + 3);
+  f.g = g1(i) - n.cw[i] * PN * lam;
+  f.phi_N = detail::fb_scalar(PN, -f.g, f.da, f.db);
+  f.al = n.al[static_cast<std::size_t>(i)];
+  f.x << n.mu[i] * PN, z(r) / f.al(0), z(r + 1) / f.al(1);
+  f.y << lam, -f.al(0) * ui(2 * i), -f.al(1) * ui(2 * i + 1);
+  detail::fb_soc(f.x, f.y, f.phi, f.Jx, f.Jy);
+  return f;
+}
+
 /// Phi(z) (4N) and an element of its generalized Jacobian (4N x 4N).
 void residual_map(const Normalized& n, const Vec& z, Vec& Phi, Mat& J) {
   const Vec ui = n.ui0 + n.Ui * z;
@@ -166,20 +188,16 @@ void residual_map(const Normalized& n, const Vec& z, Vec& Phi, Mat& J) {
   J.setZero();
   for (int i = 0; i < n.N; ++i) {
     const int r = 4 * i;
+    const PointFb f = point_fb(n, z, ui, g1, i);
     const double PN = z(r + 2), lam = z(r + 3);
-    const double g = g1(i) - n.cw[i] * PN * lam;
-    double da, db;
-    Phi(r) = detail::fb_scalar(PN, -g, da, db);
-    J.row(r) = -db * n.gz.row(i);
-    J(r, r + 2) += da + db * n.cw[i] * lam;
-    J(r, r + 3) += db * n.cw[i] * PN;
-    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
-    Eigen::Vector3d x, y, phi;
-    x << n.mu[i] * PN, z(r) / al(0), z(r + 1) / al(1);
-    y << lam, -al(0) * ui(2 * i), -al(1) * ui(2 * i + 1);
-    Eigen::Matrix3d Jx, Jy;
-    detail::fb_soc(x, y, phi, Jx, Jy);
-    Phi.segment<3>(r + 1) = phi;
+    const Eigen::Vector2d& al = f.al;
+    Phi(r) = f.phi_N;
+    J.row(r) = -f.db * n.gz.row(i);
+    J(r, r + 2) += f.da + f.db * n.cw[i] * lam;
+    J(r, r + 3) += f.db * n.cw[i] * PN;
+    const Eigen::Matrix3d& Jx = f.Jx;
+    const Eigen::Matrix3d& Jy = f.Jy;
+    Phi.segment<3>(r + 1) = f.phi;
     // dx/dz: own columns only; dy/dz: lambda_i and the rows of Ui (all points).
     Eigen::Matrix3d dxo = Eigen::Matrix3d::Zero();  // d x / d(P_TX, P_TY, P_N)_i
     dxo(0, 2) = n.mu[i];
@@ -202,18 +220,9 @@ bool fb_small(const Normalized& n, const Vec& z) {
     return std::abs(f) <= 1e-9 * (1 + std::min(a, b)) + 1e-13 * (a + b);
   };
   for (int i = 0; i < n.N; ++i) {
-    const int r = 4 * i;
-    const double PN = z(r + 2), lam = z(r + 3);
-    const double g = g1(i) - n.cw[i] * PN * lam;
-    double da, db;
-    if (!ok(detail::fb_scalar(PN, -g, da, db), std::abs(PN), std::abs(g))) return false;
-    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
-    Eigen::Vector3d x, y, phi;
-    x << n.mu[i] * PN, z(r) / al(0), z(r + 1) / al(1);
-    y << lam, -al(0) * ui(2 * i), -al(1) * ui(2 * i + 1);
-    Eigen::Matrix3d Jx, Jy;
-    detail::fb_soc(x, y, phi, Jx, Jy);
-    if (!ok(phi.norm(), x.norm(), y.norm())) return false;
+    const PointFb f = point_fb(n, z, ui, g1, i);
+    if (!ok(f.phi_N, std::abs(z(4 * i + 2)), std::abs(f.g))) return false;
+    if (!ok(f.phi.norm(), f.x.norm(), f.y.norm())) return false;
   }
   return true;
 }
