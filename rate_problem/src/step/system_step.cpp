@@ -27,20 +27,6 @@ constexpr double kGray = 1e3;
 /// full separations from 1e11 on (the displacements of the soft mode lose their digits).
 constexpr double kMaxProvedCond = 1e9;
 
-ContactParameters block_parameters(const ContactSystem& s, int i) {
-  ContactParameters p;
-  p.a11 = s.A(2 * i, 2 * i);
-  p.a12 = s.A(2 * i, 2 * i + 1);
-  p.a22 = s.A(2 * i + 1, 2 * i + 1);
-  const SystemPoint& q = s.points[static_cast<std::size_t>(i)];
-  p.mu = q.mu;
-  p.C_T = q.C_T;
-  p.k_a = q.k_a;
-  p.P_s = q.P_s;
-  p.criterion = s.criterion;
-  return p;
-}
-
 /// The affine maps of u = (P_N1 (N), xi (N)) computed once per problem:
 /// P_T1 = pt0 + PT u, Dw_N = wn0 + WN u, Dw_T = wt0 + WT u (wt0/WT: total tangential Dw).
 struct Maps {
@@ -107,7 +93,7 @@ Maps make_maps(const SystemStepProblem& p) {
   // Displacement scale: the largest point compliance (as classify_step uses for one point).
   double comp = 0;
   for (int i = 0; i < N; ++i) {
-    const ContactParameters a = block_parameters(s, i);
+    const ContactParameters a = s.point_parameters(i);
     comp = std::max(comp, (a.a11 + a.a22) / a.detA() + a.C_T);
   }
   m.dscale = m.g0.cwiseAbs().maxCoeff() + m.fscale * comp;
@@ -658,7 +644,7 @@ struct Enumerator {
 
 StepProblem point_step_problem(const SystemStepProblem& p, int i) {
   StepProblem sp;
-  sp.params = block_parameters(p.system, i);
+  sp.params = p.system.point_parameters(i);
   const SystemPoint& q = p.system.points[static_cast<std::size_t>(i)];
   sp.state.P_T0 = q.P_T;
   sp.state.P_N0 = q.P_N;

@@ -10,6 +10,17 @@
 namespace cpkit::rate {
 namespace {
 
+/// A point's material (friction, compliance, wear, ellipse); A's block is the caller's.
+ContactParameters3d material_of(const SystemPoint3d& pt) {
+  ContactParameters3d p;
+  p.mu = pt.mu;
+  p.C_T = pt.C_T;
+  p.k_a = pt.k_a;
+  p.P_s = pt.P_s;
+  p.alpha = pt.alpha;
+  return p;
+}
+
 using nlohmann::json;
 using rate::detail::get_num;
 using rate::detail::point_name;
@@ -60,12 +71,7 @@ SystemPoint3d parse_point(const json& v, std::size_t i) {
     throw InputError(pn + ": state " + state + " needs P_N");
   if (state == "d" && !P_T_given)
     throw InputError(pn + ": state d needs P_T = [P_TX, P_TY] on the ellipse ||P_T|| = mu P_N");
-  ContactParameters3d par;
-  par.mu = p.mu;
-  par.C_T = p.C_T;
-  par.k_a = p.k_a;
-  par.P_s = p.P_s;
-  par.alpha = p.alpha;
+  const ContactParameters3d par = material_of(p);
   if (const std::string e = par.validate(); !e.empty()) throw InputError(pn + ": " + e);
   if (const std::string e = p.state.validate(par); !e.empty()) throw InputError(pn + ": " + e);
   return p;
@@ -75,13 +81,8 @@ SystemPoint3d parse_point(const json& v, std::size_t i) {
 
 ContactParameters3d ContactSystem3d::point_parameters(int i) const {
   const SystemPoint3d& pt = points.at(static_cast<std::size_t>(i));
-  ContactParameters3d p;
+  ContactParameters3d p = material_of(pt);
   p.A = A.block<3, 3>(3 * i, 3 * i);
-  p.mu = pt.mu;
-  p.C_T = pt.C_T;
-  p.k_a = pt.k_a;
-  p.P_s = pt.P_s;
-  p.alpha = pt.alpha;
   return p;
 }
 
