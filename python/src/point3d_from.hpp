@@ -1,6 +1,6 @@
 #pragma once
 // Reading a 3-D point (cpkit.Point3d), small vectors and one-point step problems from Python
-// objects, and step solutions back as dicts, shared by bind_three_d.cpp and bind_three_d_more.cpp. Errors are InputError (ValueError in Python)
+// objects, and step solutions back as dicts, shared by bind_rate_3d.cpp and bind_step_3d.cpp. Errors are InputError (ValueError in Python)
 // naming the field.
 #include <string>
 #include <vector>
