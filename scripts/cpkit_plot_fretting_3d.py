@@ -94,9 +94,7 @@ def main(argv):
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
     fig.colorbar(sm, ax=list(axes), label="t", shrink=0.8, pad=0.01)
     fig.suptitle(title)
-    for fmt in args["formats"]:
-        fig.savefig("%s_orbit.%s" % (out, fmt), dpi=100, bbox_inches="tight")
-    plt.close(fig)
+    series.save(plt, fig, out + "_orbit", args["formats"], 100, bbox_inches="tight")
 
     # 2. Wear growth and its split by slip direction.
     fig, ax = plt.subplots(figsize=(6.8, 4.8))
@@ -128,9 +126,7 @@ def main(argv):
         ax.set_ylabel("wear depth $w^w$")
     ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title), fontsize=9)
     fig.tight_layout()
-    for fmt in args["formats"]:
-        fig.savefig("%s_wear.%s" % (out, fmt), dpi=100)
-    plt.close(fig)
+    series.save(plt, fig, out + "_wear", args["formats"], 100)
     return 0
 
 

@@ -76,3 +76,10 @@ def pyplot(script):
         sys.stderr.write("%s: matplotlib not available to %s (%s); install python3-matplotlib "
                          "(Debian) and run with /usr/bin/python3\n" % (script, sys.executable, e))
         return None
+
+
+def save(plt, fig, prefix, formats, dpi, **kw):
+    """Writes fig as prefix.FMT for every format, then closes it."""
+    for fmt in formats:
+        fig.savefig("%s.%s" % (prefix, fmt), dpi=dpi, **kw)
+    plt.close(fig)

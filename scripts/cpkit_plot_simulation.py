@@ -60,9 +60,7 @@ def main(argv):
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
     fig.colorbar(sm, ax=ax, label="t")
     fig.tight_layout()
-    for fmt in args["formats"]:
-        fig.savefig("%s_loop.%s" % (out, fmt), dpi=110)
-    plt.close(fig)
+    series.save(plt, fig, out + "_loop", args["formats"], 110)
 
     # 2. Wear depth against cycles (or time when the run has no period).
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -83,9 +81,7 @@ def main(argv):
     ax.set_ylabel("wear depth $w^w$")
     ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title))
     fig.tight_layout()
-    for fmt in args["formats"]:
-        fig.savefig("%s_wear.%s" % (out, fmt), dpi=110)
-    plt.close(fig)
+    series.save(plt, fig, out + "_wear", args["formats"], 110)
 
     # 3. Contact state and solution type over time.
     heat = "temperature" in summary
@@ -114,9 +110,7 @@ def main(argv):
         axes[2].set_ylabel("interface T")
     axes[-1].set_xlabel("t")
     fig.tight_layout()
-    for fmt in args["formats"]:
-        fig.savefig("%s_state.%s" % (out, fmt), dpi=110)
-    plt.close(fig)
+    series.save(plt, fig, out + "_state", args["formats"], 110)
     return 0
 
 
