@@ -29,11 +29,7 @@
 #include "cpkit/lcp/enumerate_small_prepared.hpp"
 
 #ifdef CPKIT_HAVE_SICONOS
-#include "LCP_Solvers.h"
-#include "LinearComplementarityProblem.h"
-#include "NumericsMatrix.h"
-#include "SolverOptions.h"
-#include "lcp_cst.h"
+#include "siconos_lcp.hpp"
 #endif
 
 namespace {
@@ -145,13 +141,9 @@ void bench_tiny(bool quick) {
 /// Returns the number of solutions it reported (each feasible basis once).
 int siconos_all(const Mat& Mm, const Vec& q, double& seconds) {
   const int n = static_cast<int>(q.size());
-  NumericsMatrix* M = NM_create(NM_DENSE, n, n);
-  std::memcpy(M->matrix0, Mm.data(), sizeof(double) * size_t(n) * n);
-  std::vector<double> qq(q.data(), q.data() + n), z(n), w(n);
-  LinearComplementarityProblem lcp;
-  lcp.size = n;
-  lcp.M = M;
-  lcp.q = qq.data();
+  SiconosLcp sl(Mm, q);
+  LinearComplementarityProblem& lcp = sl.lcp;
+  std::vector<double> z(n), w(n);
   SolverOptions* opts = solver_options_create(SICONOS_LCP_ENUM);
   opts->dparam[SICONOS_DPARAM_TOL] = 1e-12;
   int count = 0;
@@ -172,7 +164,6 @@ int siconos_all(const Mat& Mm, const Vec& q, double& seconds) {
   seconds = cpu_now() - t0;
   lcp_enum_reset(&lcp, opts, 1);
   solver_options_delete(opts);
-  NM_free(M);
   return count;
 }
 #endif

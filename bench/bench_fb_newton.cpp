@@ -98,13 +98,8 @@ RunStats run_cpkit(const LcpProblem& p, int reps) {
 RunStats run_siconos(const LcpProblem& p, int reps) {
   RunStats s;
   const int n = static_cast<int>(p.size());
-  Mat Mcopy = p.M;  // column-major, as Siconos' NM_DENSE expects
-  Vec qcopy = p.q;
-  NumericsMatrix* M = NM_create_from_data(NM_DENSE, n, n, Mcopy.data());
-  LinearComplementarityProblem lcp;
-  lcp.size = n;
-  lcp.M = M;
-  lcp.q = qcopy.data();
+  SiconosLcp sl(p.M, p.q);
+  LinearComplementarityProblem& lcp = sl.lcp;
   std::vector<double> times;
   for (int k = 0; k < reps; ++k) {
     SolverOptions* opt = solver_options_create(SICONOS_LCP_NEWTON_FB_FBLSA);
@@ -125,8 +120,6 @@ RunStats run_siconos(const LcpProblem& p, int reps) {
     s.residual = r.residuals.natural;
     solver_options_delete(opt);
   }
-  // The matrix data belong to Mcopy: detach before freeing the NumericsMatrix.
-  NM_free_not_dense(M);
   s.seconds = median(times);
   return s;
 }

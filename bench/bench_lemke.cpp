@@ -18,11 +18,7 @@
 #include "cpkit/lcp/lemke.hpp"
 
 #ifdef CPKIT_HAVE_SICONOS
-#include "LCP_Solvers.h"
-#include "LinearComplementarityProblem.h"
-#include "NumericsMatrix.h"
-#include "SolverOptions.h"
-#include "lcp_cst.h"
+#include "siconos_lcp.hpp"
 #endif
 
 #include "bench_problems.hpp"
@@ -71,14 +67,9 @@ Outcome run_siconos(const LcpProblem& p, int reps) {
   Outcome o;
   o.seconds = INFINITY;
   for (int r = 0; r < reps; ++r) {
-    // Setup (copy of M into Siconos' column-major dense storage) is not timed.
-    NumericsMatrix* M = NM_create(NM_DENSE, n, n);
-    std::memcpy(M->matrix0, p.M.data(), sizeof(double) * static_cast<size_t>(n) * n);
-    std::vector<double> q(p.q.data(), p.q.data() + n), z(n, 0.0), w(n, 0.0);
-    LinearComplementarityProblem lcp;
-    lcp.size = n;
-    lcp.M = M;
-    lcp.q = q.data();
+    SiconosLcp sl(p.M, p.q);  // setup (copy of M and q) is not timed
+    LinearComplementarityProblem& lcp = sl.lcp;
+    std::vector<double> z(n, 0.0), w(n, 0.0);
     SolverOptions* opts = solver_options_create(SICONOS_LCP_LEMKE);
     opts->iparam[SICONOS_IPARAM_MAX_ITER] = 50 * (n + 1) + 1000;  // as cpkit's default
     int info = -1;
@@ -89,7 +80,6 @@ Outcome run_siconos(const LcpProblem& p, int reps) {
     o.pivots = opts->iparam[SICONOS_IPARAM_ITER_DONE];
     o.verified = verified(p, Eigen::Map<const Vec>(z.data(), n));
     solver_options_delete(opts);
-    NM_free(M);
   }
   return o;
 }

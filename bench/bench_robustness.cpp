@@ -179,13 +179,8 @@ Outcome run_cpkit(const cpkit::SolverEntry& e, const LcpProblem& p) {
 #ifdef CPKIT_HAVE_SICONOS
 Outcome run_siconos(int solver_id, const LcpProblem& p) {
   const int n = static_cast<int>(p.size());
-  Mat Mcopy = p.M;  // column-major, as NM_DENSE expects
-  Vec qcopy = p.q;
-  NumericsMatrix* M = NM_create_from_data(NM_DENSE, n, n, Mcopy.data());
-  LinearComplementarityProblem lcp;
-  lcp.size = n;
-  lcp.M = M;
-  lcp.q = qcopy.data();
+  SiconosLcp sl(p.M, p.q);
+  LinearComplementarityProblem& lcp = sl.lcp;
   SolverOptions* opt = solver_options_create(solver_id);
   opt->dparam[SICONOS_DPARAM_TOL] = 1e-12;
   if (solver_id != SICONOS_LCP_ENUM) opt->iparam[SICONOS_IPARAM_MAX_ITER] = 10000;
@@ -195,7 +190,6 @@ Outcome run_siconos(int solver_id, const LcpProblem& p) {
   Outcome out;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   solver_options_delete(opt);
-  NM_free_not_dense(M);
   // Judged by cpkit: finalize() on the returned z, claimed as a solution.
   cpkit::SolveResult claim;
   claim.status = cpkit::Status::kSolved;
