@@ -1,5 +1,6 @@
 // 3-D frictional contact bindings (issue 26): read_fclib, solve_friction, friction_solutions,
-// friction_errors, and the global problem's read_fclib_global, solve_friction_global. W arrives as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
+// friction_errors, and the global problem's read_fclib_global, solve_friction_global. W arrives
+// as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
 // (data, indices, indptr) of the scipy matrix the Python layer prepared, with no Python loop.
 // Invalid problems, unknown solvers and unreadable files raise ValueError (InputError) with the
 // C++ message; every solve runs without the GIL.
@@ -68,8 +69,8 @@ pyb::dict fc_result_dict(const SolveResult& r, const FrictionContactProblem& p) 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // Not sized: no answer, or a global problem whose M could not be condensed (p is empty).
   const bool sized = p.W.rows() > 0 && r.z.size() == p.W.rows();
-  const FrictionErrors e = sized ? friction_errors(p, r.z)
-                                 : FrictionErrors{std::numeric_limits<double>::infinity(), nan, nan};
+  const double inf = std::numeric_limits<double>::infinity();
+  const FrictionErrors e = sized ? friction_errors(p, r.z) : FrictionErrors{inf, nan, nan};
   d["errors"] = errors_dict(e);
   pyb::list per;  // as `fc solve --json`'s per_contact (friction_verdict.hpp)
   if (sized)

@@ -10,8 +10,8 @@
 /// without kSolved (kStalled, or kSolvedInaccurate: stagnation, the non-isolated solutions of a
 /// rank-deficient W), prox (prox.hpp: W + alpha I) runs next from fb-soc's best iterate, before
 /// the monotone retry, and is not run again at its place in the chain (Capsules-i125-1213: 1.9 s
-/// through nsgs before, 0.5 s now); nsgs then starts from the best r seen so far (the smallest unit-free residual), as does a
-/// second fb-soc run after nsgs when nsgs ends short of tol (Newton polishing a Gauss-Seidel
+/// through nsgs before, 0.5 s now); nsgs then starts from the best r seen so far (the smallest
+/// unit-free residual), as does a second fb-soc run after nsgs when nsgs ends short of tol (Newton polishing a Gauss-Seidel
 /// iterate). Every attempt is recorded in SolveResult::attempts (solver, status, unit-free
 /// residual, seconds, message). A kSolvedInaccurate answer is kept while later solvers try for
 /// kSolved. An answer accepted with a unit-free residual above tol / 10 is polished by up to
