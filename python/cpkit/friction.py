@@ -245,18 +245,21 @@ def solve_friction(W, q, mu, solver: str = "auto", tol: Optional[float] = None, 
 
 def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
                           tol: Optional[float] = None, *, tol_acceptable: float = 1e-6,
-                          max_iterations: int = 0,
-                          time_limit: float = _INF) -> GlobalFrictionResult:
+                          max_iterations: int = 0, time_limit: float = _INF,
+                          proximal: bool = False) -> GlobalFrictionResult:
     """The global problem solved as `cpkit fc solve` does: condensed to W = H^T M^-1 H,
     q = H^T M^-1 f + w (sparse LDL^T of M), the local problem solved by `solver`, v recovered
     and the answer judged in the global variables ("solved" when global_errors' balance and
-    local are both <= tol). A singular M gives status "not_run" with the reason in message.
+    local are both <= tol). A singular M gives status "not_run" with the reason in message,
+    unless proximal=True: then the proximal point method in v (M + rho I and f + rho v_k at
+    each outer step, each condensed and solved as above; lcp/friction/global.hpp,
+    solve_global_proximal) runs instead, and max_iterations bounds its outer iterations.
     Sizes and values are checked by the C++ validator (ValueError naming what is wrong)."""
     p = problem
     d = _cpkit.solve_friction_global(
         _csc(p.M, "M"), _csc(p.H, "H"), _vector(p.f, "f"), _vector(p.w, "w"),
         _vector(p.mu, "mu"), str(solver), _tol(tol), float(tol_acceptable),
-        int(max_iterations), float(time_limit))
+        int(max_iterations), float(time_limit), bool(proximal))
     return GlobalFrictionResult._from(d)
 
 

@@ -134,7 +134,7 @@ const SolverEntry& friction_entry(const std::string& solver) {
 pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Vec& f,
                                 const Vec& w, const Vec& mu, const std::string& solver,
                                 double tol, double tol_acceptable, int max_iterations,
-                                double time_limit) {
+                                double time_limit, bool proximal) {
   GlobalFrictionContactProblem g;
   g.M = M;
   g.H = H;
@@ -147,7 +147,8 @@ pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Ve
   lcp::friction::GlobalSolveResult out;
   {
     pyb::gil_scoped_release release;
-    out = lcp::friction::solve_global(g, e.info.name, o);
+    out = proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
+                   : lcp::friction::solve_global(g, e.info.name, o);
   }
   if (out.result.solver.empty()) out.result.solver = e.info.name;
   pyb::dict d = fc_result_dict(out.result, out.condensed.local);

@@ -469,3 +469,24 @@ def test_global_bad_input_raises_value_error(tmp_path):
         cpkit.read_fclib_global(os.path.join(LOCAL, "Capsules-i125-1213.hdf5"))
     with pytest.raises(ValueError, match="missing.dat"):
         cpkit.read_fclib_global(tmp_path / "missing.dat")
+
+
+def test_global_proximal_solves_a_massless_degree_of_freedom_as_by_hand():
+    # M = diag(1, 1, 0), H = I, w = 0, mu = 0.5, f = (-4, 3, 1). By hand (row 3: r_2 = -f_2;
+    # contact closed: r_N = 4; stick would need |r_T| = sqrt(10) > 2: slip with r_2 = -1 on the
+    # cone's edge): r = (4, -sqrt 3, -1), v = (0, 3 - sqrt 3, (3 - sqrt 3) / sqrt 3).
+    g = cpkit.GlobalFrictionProblem(M=np.diag([1.0, 1.0, 0.0]), H=np.eye(3),
+                                    f=np.array([-4.0, 3.0, 1.0]), w=np.zeros(3),
+                                    mu=np.array([0.5]))
+    assert cpkit.solve_friction_global(g).status == "not_run"
+    res = cpkit.solve_friction_global(g, proximal=True)
+    assert res.status == "solved", res
+    s3 = np.sqrt(3.0)
+    np.testing.assert_allclose(res.r, [4.0, -s3, -1.0], rtol=0, atol=1e-7)
+    np.testing.assert_allclose(res.v, [0.0, 3 - s3, (3 - s3) / s3], rtol=0, atol=1e-7)
+    # balance and the contact law recomputed here
+    np.testing.assert_allclose(np.diag([1.0, 1.0, 0.0]) @ res.v, res.r + g.f, rtol=0, atol=1e-9)
+    u = res.v + g.w
+    uhat = u + np.array([0.5 * np.linalg.norm(u[1:]), 0.0, 0.0])
+    assert abs(res.r @ uhat) <= 1e-8 and np.linalg.norm(res.r[1:]) <= 0.5 * res.r[0] + 1e-9
+    assert [c.state for c in res.per_contact] == ["slip"]

@@ -60,4 +60,22 @@ struct GlobalSolveResult {
 GlobalSolveResult solve_global(const GlobalFrictionContactProblem& problem,
                                const std::string& solver, const CommonOptions& options = {});
 
+/// A solver in the global variables for a symmetric M that cannot be condensed (singular:
+/// degrees of freedom without mass), opt-in (solve_global still says kNotRun there). Proximal
+/// point in v [Rockafellar 1976]: (v_{k+1}, r_{k+1}) solves the global problem with
+///   M + rho I   and   f + rho v_k,
+/// whose M + rho I is positive definite and is condensed and solved by solve_global(); a fixed
+/// point v_{k+1} = v_k is a solution of the original problem, since then M v = H r + f.
+/// rho = rho_factor * max_i |M_ii| (M's units, so the iterates scale with the problem). Stops
+/// when the verdict passes: balance of the ORIGINAL M v = H r + f (global.hpp's unit-free number)
+/// and the local number of r with u = H^T v + w, in the units of the last regularized
+/// condensed problem (H^T (M + rho I)^-1 H and its q), both <= tol. options.max_iterations
+/// bounds the outer iterations (0: 200). result.iterations = outer iterations; `condensed` is
+/// the last regularized problem. kNotRun when M is not symmetric or is zero (no scale for rho);
+/// InputError as solve_global.
+GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& problem,
+                                        const std::string& solver,
+                                        const CommonOptions& options = {},
+                                        double rho_factor = 1.0);
+
 }  // namespace cpkit::lcp::friction
