@@ -96,6 +96,20 @@ TEST_CASE("global proximal: a degree of freedom without mass, solved by hand at 
   }
 }
 
+TEST_CASE("global proximal: no solution, never solved", "[friction][global]") {
+  // As above with f_2 = 3: row 3 needs r_2 = -3, beyond the cone (|r_T| <= mu r_N = 2): the
+  // massless degree of freedom cannot be held by friction; no (v, r) exists.
+  auto g = one_contact(1.0, -4, 3);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(3, 3);
+  M(2, 2) = 0;
+  g.M = M.sparseView();
+  g.f[2] = 3;
+  const auto out = cpkit::lcp::friction::solve_global_proximal(g, "auto");
+  INFO(out.result.message);
+  CHECK_FALSE(cpkit::is_solution(out.result.status));
+  CHECK(out.result.status == cpkit::Status::kStalled);  // stopped early, not after 200 steps
+}
+
 TEST_CASE("global proximal: an M without scale is said, not solved", "[friction][global]") {
   auto g = one_contact(1.0, -4, 0);
   g.M = Eigen::MatrixXd::Zero(3, 3).sparseView();

@@ -16,6 +16,9 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 using Ldlt = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::AMDOrdering<int>>;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kRhoShrink = 10;    // global proximal route: rho_{k+1} = rho_k / 10 ...
+constexpr double kRhoFloor = 1e-6;   // ... but at least 1e-6 max|M_ii|
+constexpr int kRhoStagnation = 20;   // outer steps without halving the verdict's number
 
 double max_abs(const Sparse& A) {
   double m = 0;
@@ -163,20 +166,21 @@ GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
     out.result.seconds = clock.seconds();
     return out;
   }
-  const double rho = rho_factor * diag;
+  double rho = rho_factor * diag;
   Sparse I(g.M.rows(), g.M.cols());
   I.setIdentity();
   GlobalFrictionContactProblem reg = g;
-  reg.M = g.M + rho * I;
   Eigen::VectorXd v = Eigen::VectorXd::Zero(g.dofs());
   const int max_outer = o.max_iterations > 0 ? o.max_iterations : 200;
-  int k = 0;
+  int k = 0, progress_k = 0;
+  double progress = std::numeric_limits<double>::infinity();
   Status stop = Status::kIterationLimit;
   for (; k < max_outer; ++k) {
     if (clock.exceeded(o.time_limit_s)) {
       stop = Status::kTimeLimit;
       break;
     }
+    reg.M = g.M + rho * I;
     reg.f = g.f + rho * v;
     CommonOptions io = o;
     io.max_iterations = 0;  // the inner solver's own default
@@ -190,9 +194,23 @@ GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
     }
     v = in.v;
     out = std::move(in);
+    // rho falls geometrically (as prox's alpha, prox.hpp) down to a floor that keeps M + rho I
+    // clear of the condensation's singularity test (pivots above m eps of the largest).
+    rho = std::max(rho / kRhoShrink, kRhoFloor * diag);
     out.errors = global_errors(g, out.condensed.local, v, out.result.z);
-    if (std::max(out.errors.balance, out.errors.local) <= o.tol) {
+    const double worst = std::max(out.errors.balance, out.errors.local);
+    if (worst <= o.tol) {
       stop = Status::kSolved;
+      ++k;
+      break;
+    }
+    // Stagnation: no halving of the verdict's number in kRhoStagnation outer steps (a problem
+    // without solution: v grows and each regularized problem gets harder to solve).
+    if (worst <= 0.5 * progress) {
+      progress = worst;
+      progress_k = k;
+    } else if (k - progress_k >= kRhoStagnation) {
+      stop = Status::kStalled;
       ++k;
       break;
     }
