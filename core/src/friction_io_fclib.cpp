@@ -19,6 +19,7 @@ extern "C" {  // fclib.h has no C++ guards
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_verdict.hpp"
 #include "friction_io_fclib.hpp"
 #include "io_text.hpp"
 
@@ -323,6 +324,49 @@ GlobalFrictionContactProblem read_global(const std::string& path) {
   return p;
 }
 
+namespace {
+
+// /solution/status: one 32-bit integer a contact (0 separated, 1 stick, 2 slip: the JSON
+// per_contact state, cpkit::friction_contacts), with that key in its attribute "states". An extra
+// dataset of /solution: libfclib's fclib_read_solution and Siconos read only v, u, r, l there.
+void write_contact_states(const std::string& path, const FrictionContactProblem& problem,
+                          const Eigen::VectorXd& r) {
+  std::vector<std::int32_t> states;
+  for (const ContactReport& c : friction_contacts(problem, r))
+    states.push_back(static_cast<std::int32_t>(c.state));
+  static_assert(static_cast<int>(ContactState::kSeparated) == 0 &&
+                static_cast<int>(ContactState::kStick) == 1 &&
+                static_cast<int>(ContactState::kSlip) == 2);
+  const std::string key = "0 separated, 1 stick, 2 slip";
+  bool ok = false;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file >= 0) {
+    const hsize_t dims[1] = {static_cast<hsize_t>(states.size())};
+    const hid_t space = H5Screate_simple(1, dims, nullptr);
+    const hid_t set = H5Dcreate2(file, "/solution/status", H5T_STD_I32LE, space, H5P_DEFAULT,
+                                 H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t text = H5Tcopy(H5T_C_S1);
+    H5Tset_size(text, key.size() + 1);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t attr = set >= 0 ? H5Acreate2(set, "states", text, scalar, H5P_DEFAULT, H5P_DEFAULT)
+                                : H5I_INVALID_HID;
+    ok = set >= 0 && attr >= 0 &&
+         H5Dwrite(set, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, states.data()) >= 0 &&
+         H5Awrite(attr, text, key.c_str()) >= 0;
+    if (attr >= 0) H5Aclose(attr);
+    H5Sclose(scalar);
+    H5Tclose(text);
+    if (set >= 0) H5Dclose(set);
+    H5Sclose(space);
+    ok = H5Fclose(file) >= 0 && ok;
+  }
+  if (!ok)
+    throw InputError(io_text::valid_utf8(path) +
+                     ": cannot write the contact states into the FCLIB file");
+}
+
+}  // namespace
+
 void write_local_with_solution(const std::string& path, const FrictionContactProblem& problem,
                                const Eigen::VectorXd& r, const Eigen::VectorXd& u) {
   throw_if_invalid(problem.validate(), "write_friction_solution");
@@ -362,6 +406,7 @@ void write_local_with_solution(const std::string& path, const FrictionContactPro
   sol.u = uu.data();
   if (!fclib_write_solution(&sol, path.c_str()))
     throw InputError(io_text::valid_utf8(path) + ": cannot write the solution into the FCLIB file");
+  write_contact_states(path, problem, r);
 }
 
 }  // namespace cpkit::fclib_io

@@ -17,9 +17,10 @@ from .maps import (Map3d, direction_map, param_direction_map, param_direction_ma
                    param_param_map, param_param_map_3d, sphere_map_3d)
 from .simulation import (Fretting3dResult, fretting_history, ramp_history, simulate,
                          simulate_fretting_3d)
-from .friction import (FrictionErrors, FrictionProblem, FrictionResult, FrictionSolutionSet,
+from .friction import (ContactReport, FrictionErrors, FrictionProblem, FrictionResult,
+                       FrictionSolutionSet, GlobalFrictionProblem, GlobalFrictionResult,
                        friction_errors, friction_solutions, friction_solvers, read_fclib,
-                       solve_friction)
+                       read_fclib_global, solve_friction, solve_friction_global)
 from .lcp import cross_verify, enumerate, solve, solve_batch, solve_mcp, solvers
 from .results import (TYPE_BITS, BatchResult, CrossVerifyReport, DirectionMap, ParamDirectionMap,
                       ParamParamMap, RateSolutionSet, SimulationResult, SolutionSet, SolveResult,

@@ -18,8 +18,9 @@ from ._checks import vector
 from .results import Attempt, Residuals, _short
 
 __all__ = ["FrictionProblem", "FrictionErrors", "FrictionResult", "FrictionSolutionSet",
-           "read_fclib", "solve_friction", "friction_solutions", "friction_errors",
-           "friction_solvers"]
+           "ContactReport", "GlobalFrictionProblem", "GlobalFrictionResult",
+           "read_fclib", "read_fclib_global", "solve_friction", "solve_friction_global",
+           "friction_solutions", "friction_errors", "friction_solvers"]
 
 _INF = math.inf
 
@@ -53,6 +54,15 @@ class FrictionErrors:
     relative_max: float
 
 
+@dataclass
+class ContactReport:
+    """One contact of an answer (`fc solve --json`'s per_contact): state "separated", "stick" or
+    "slip" (the two sides of each complementarity compared in unit-free variables, no
+    tolerance) and error, the contact's share of the unit-free number."""
+    state: str
+    error: float
+
+
 @dataclass(repr=False)
 class FrictionResult:
     """What solve_friction returns (the fields of `cpkit fc solve --json`): status ("solved",
@@ -68,6 +78,7 @@ class FrictionResult:
     seconds: float = 0.0
     attempts: List[Attempt] = field(default_factory=list)
     message: str = ""
+    per_contact: List[ContactReport] = field(default_factory=list)
 
     @property
     def is_solution(self) -> bool:
@@ -86,7 +97,51 @@ class FrictionResult:
         d["errors"] = FrictionErrors(**d["errors"])
         d["residuals"] = Residuals(**d["residuals"])
         d["attempts"] = [Attempt(**a) for a in d["attempts"]]
+        d["per_contact"] = [ContactReport(**c) for c in d["per_contact"]]
         return cls(**d)
+
+
+@dataclass(repr=False)
+class GlobalFrictionProblem:
+    """A global problem M v = H r + f, u = H^T v + w as read from a file: M (m x m) and H
+    (m x 3 n_c) scipy.sparse.csc_matrix, f (m), w (3 n_c), mu (n_c), name, note."""
+    M: Any
+    H: Any
+    f: np.ndarray
+    w: np.ndarray
+    mu: np.ndarray
+    name: str = ""
+    note: str = ""
+
+    @property
+    def contacts(self) -> int:
+        return int(self.mu.size)
+
+    @property
+    def dofs(self) -> int:
+        return int(self.f.size)
+
+    def __repr__(self):
+        return (f"GlobalFrictionProblem(name={self.name!r}, contacts={self.contacts}, "
+                f"dofs={self.dofs})")
+
+
+@dataclass(repr=False)
+class GlobalFrictionResult(FrictionResult):
+    """What solve_friction_global returns (`cpkit fc solve --json` on a global file): the fields
+    of FrictionResult for the condensed local problem (r, u = H^T v + w, its errors and
+    per_contact), plus v (m), dofs, condensed (False when M could not be factorized: status
+    "not_run", nothing solved) and global_errors {"balance", "local"}, the unit-free numbers of
+    the verdict in the global variables (lcp/friction/global.hpp)."""
+    v: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    dofs: int = 0
+    condensed: bool = False
+    global_errors: Dict[str, float] = field(default_factory=dict)
+
+    def __repr__(self):
+        return (f"GlobalFrictionResult(status={self.status!r}, solver={self.solver!r}, "
+                f"condensed={self.condensed}, global_errors={self.global_errors}, "
+                f"iterations={self.iterations})")
 
 
 @dataclass(repr=False)
@@ -144,6 +199,32 @@ def read_fclib(path) -> FrictionProblem:
     return FrictionProblem(W=d["W"], q=d["q"], mu=d["mu"], name=d["name"], note=d["note"])
 
 
+def read_fclib_global(path) -> GlobalFrictionProblem:
+    """A global problem from an FCLIB HDF5 file (/fclib_global) or a Siconos
+    GlobalFrictionContact .dat file. An unreadable or malformed file raises ValueError."""
+    d = _cpkit.read_fclib_global(str(path))
+    return GlobalFrictionProblem(M=d["M"], H=d["H"], f=d["f"], w=d["w"], mu=d["mu"],
+                                 name=d["name"], note=d["note"])
+
+
+def _csc(A, name: str):
+    """A as float64 CSC in canonical format (sorted, summed indices), a copy when it must change."""
+    import scipy.sparse
+    if not scipy.sparse.issparse(A):
+        try:
+            a = np.asarray(A, dtype=float)
+        except (TypeError, ValueError) as e:
+            raise TypeError(f"{name} must be a matrix of numbers ({e})") from None
+        if a.ndim != 2:
+            raise ValueError(f"{name} must be a 2-D array, got shape {a.shape}")
+        A = a
+    A = scipy.sparse.csc_matrix(A, dtype=float)
+    if not A.has_canonical_format:
+        A = A.copy()
+        A.sum_duplicates()
+    return A
+
+
 def _tol(tol) -> float:
     return 1e-10 if tol is None else float(tol)
 
@@ -160,6 +241,26 @@ def solve_friction(W, q, mu, solver: str = "auto", tol: Optional[float] = None, 
     return FrictionResult._from(_cpkit.solve_friction(
         W, q, mu, str(solver), _tol(tol), float(tol_acceptable), int(max_iterations),
         float(time_limit)))
+
+
+def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
+                          tol: Optional[float] = None, *, tol_acceptable: float = 1e-6,
+                          max_iterations: int = 0, time_limit: float = _INF,
+                          proximal: bool = False) -> GlobalFrictionResult:
+    """The global problem solved as `cpkit fc solve` does: condensed to W = H^T M^-1 H,
+    q = H^T M^-1 f + w (sparse LDL^T of M), the local problem solved by `solver`, v recovered
+    and the answer judged in the global variables ("solved" when global_errors' balance and
+    local are both <= tol). A singular M gives status "not_run" with the reason in message,
+    unless proximal=True: then the proximal point method in v (M + rho I and f + rho v_k at
+    each outer step, each condensed and solved as above; lcp/friction/global.hpp,
+    solve_global_proximal) runs instead, and max_iterations bounds its outer iterations.
+    Sizes and values are checked by the C++ validator (ValueError naming what is wrong)."""
+    p = problem
+    d = _cpkit.solve_friction_global(
+        _csc(p.M, "M"), _csc(p.H, "H"), _vector(p.f, "f"), _vector(p.w, "w"),
+        _vector(p.mu, "mu"), str(solver), _tol(tol), float(tol_acceptable),
+        int(max_iterations), float(time_limit), bool(proximal))
+    return GlobalFrictionResult._from(d)
 
 
 def friction_solutions(W, q, mu, starts: int = 20, seed: int = 1, *, tol: Optional[float] = None,

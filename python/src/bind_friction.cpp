@@ -1,5 +1,6 @@
 // 3-D frictional contact bindings (issue 26): read_fclib, solve_friction, friction_solutions,
-// friction_errors. W arrives as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
+// friction_errors, and the global problem's read_fclib_global, solve_friction_global. W arrives
+// as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
 // (data, indices, indptr) of the scipy matrix the Python layer prepared, with no Python loop.
 // Invalid problems, unknown solvers and unreadable files raise ValueError (InputError) with the
 // C++ message; every solve runs without the GIL.
@@ -13,6 +14,7 @@
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/registry.hpp"
+#include "cpkit/lcp/friction/global.hpp"
 #include "cpkit/lcp/friction/solutions.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
@@ -65,10 +67,20 @@ pyb::dict fc_result_dict(const SolveResult& r, const FrictionContactProblem& p) 
   d["r"] = full["z"];
   d["u"] = full["w"];
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const FrictionErrors e = r.z.size() == p.W.rows()
-                               ? friction_errors(p, r.z)
-                               : FrictionErrors{std::numeric_limits<double>::infinity(), nan, nan};
+  // Not sized: no answer, or a global problem whose M could not be condensed (p is empty).
+  const bool sized = p.W.rows() > 0 && r.z.size() == p.W.rows();
+  const double inf = std::numeric_limits<double>::infinity();
+  const FrictionErrors e = sized ? friction_errors(p, r.z) : FrictionErrors{inf, nan, nan};
   d["errors"] = errors_dict(e);
+  pyb::list per;  // as `fc solve --json`'s per_contact (friction_verdict.hpp)
+  if (sized)
+    for (const ContactReport& c : friction_contacts(p, r.z)) {
+      pyb::dict one;
+      one["state"] = to_string(c.state);
+      one["error"] = c.error;
+      per.append(one);
+    }
+  d["per_contact"] = per;
   d["residuals"] = full["residuals"];
   d["iterations"] = r.iterations;
   d["seconds"] = r.seconds;
@@ -92,15 +104,70 @@ pyb::dict read_fclib(const std::string& path) {
   return d;
 }
 
+pyb::dict read_fclib_global(const std::string& path) {
+  GlobalFrictionContactProblem p;
+  {
+    pyb::gil_scoped_release release;
+    p = read_global_friction_problem(path);
+  }
+  pyb::dict d;
+  d["M"] = p.M;
+  d["H"] = p.H;
+  d["f"] = to_numpy(p.f);
+  d["w"] = to_numpy(p.w);
+  d["mu"] = to_numpy(p.mu);
+  d["name"] = p.name;
+  d["note"] = p.note;
+  return d;
+}
+
+const SolverEntry& friction_entry(const std::string& solver) {
+  const SolverEntry* e = lcp::solvers().find(solver);
+  if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
+    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " +
+                     fc_solver_list() + ")");
+  return *e;
+}
+
+/// The condensation route of `cpkit fc solve` on a global file (lcp/friction/global.hpp): the
+/// local result's fields (of the condensed problem) plus v, dofs, condensed and global_errors.
+pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Vec& f,
+                                const Vec& w, const Vec& mu, const std::string& solver,
+                                double tol, double tol_acceptable, int max_iterations,
+                                double time_limit, bool proximal) {
+  GlobalFrictionContactProblem g;
+  g.M = M;
+  g.H = H;
+  g.f = f;
+  g.w = w;
+  g.mu = mu;
+  throw_if_invalid(g.validate(), "global friction problem");
+  const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
+  const SolverEntry& e = friction_entry(solver);
+  lcp::friction::GlobalSolveResult out;
+  {
+    pyb::gil_scoped_release release;
+    out = proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
+                   : lcp::friction::solve_global(g, e.info.name, o);
+  }
+  if (out.result.solver.empty()) out.result.solver = e.info.name;
+  pyb::dict d = fc_result_dict(out.result, out.condensed.local);
+  d["v"] = to_numpy(out.v);
+  d["dofs"] = g.dofs();
+  d["condensed"] = out.condensed.ok;
+  pyb::dict ge;
+  ge["balance"] = out.errors.balance;
+  ge["local"] = out.errors.local;
+  d["global_errors"] = ge;
+  return d;
+}
+
 pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
                          const std::string& solver, double tol, double tol_acceptable,
                          int max_iterations, double time_limit) {
   const FrictionContactProblem p = make_problem(W, q, mu);
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
-  const SolverEntry* e = lcp::solvers().find(solver);
-  if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
-    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " +
-                     fc_solver_list() + ")");
+  const SolverEntry* e = &friction_entry(solver);
   SolveResult r;
   {
     pyb::gil_scoped_release release;
@@ -146,6 +213,8 @@ pyb::dict errors_of(const SparseMat& W, const Vec& q, const Vec& mu, const Vec& 
 void bind_friction(pyb::module_& m) {
   m.def("read_fclib", &read_fclib);
   m.def("solve_friction", &solve_friction);
+  m.def("read_fclib_global", &read_fclib_global);
+  m.def("solve_friction_global", &solve_friction_global);
   m.def("friction_solutions", &friction_solutions);
   m.def("friction_errors", &errors_of);
   m.def("friction_solvers",

@@ -384,3 +384,109 @@ def test_bad_files_raise_value_error_naming_the_file(tmp_path):
         truncated.write_text(f.read()[:200])
     with pytest.raises(ValueError, match="truncated.dat"):
         cpkit.read_fclib(truncated)
+
+
+# ---- per_contact: the state of each contact --------------------------------------------------
+
+@pytest.mark.parametrize("case, state", [("separation", "separated"), ("stick", "stick"),
+                                         ("slip", "slip")])
+def test_per_contact_state_is_the_hand_answers(case, state):
+    q = HAND[case][0]
+    res = cpkit.solve_friction(W1, q, MU1, solver="fb-soc")
+    assert res.status == "solved", res
+    assert [c.state for c in res.per_contact] == [state]
+    assert 0 <= res.per_contact[0].error <= res.errors.unit_free
+
+
+def numpy_states(r, u, mu, margin=1e-6):
+    """Each contact's state judged here from (r, u), or None where it is within `margin` (relative
+    to the largest |r_i| and |u_i|) of two states: separated when r_i = 0 and u_N > 0, stick when
+    u_i = 0 and r_i strictly inside K (on its boundary with u_T = 0 it is both stick and slip),
+    slip when u_T != 0 (and r_T = -mu r_N u_T / |u_T|)."""
+    R = max(np.abs(r).max(), 1e-300)
+    S = max(np.abs(u).max(), 1e-300)
+    out = []
+    for i, m in enumerate(mu):
+        ri, ui = r[3 * i:3 * i + 3] / R, u[3 * i:3 * i + 3] / S
+        if np.linalg.norm(ri) <= margin * 1e-3 and ui[0] > margin:
+            out.append("separated")
+        elif np.linalg.norm(ui) <= margin * 1e-3 and m * ri[0] - np.linalg.norm(ri[1:]) > margin:
+            out.append("stick")
+        elif np.linalg.norm(ui[1:]) > margin and ri[0] > margin:
+            out.append("slip")
+        else:
+            out.append(None)
+    return out
+
+
+# ---- global problems: the condensation route of `fc solve` -----------------------------------
+# The files are the byte copies of ../shared/problems/fclib/global (checksums in MANIFEST.txt).
+GLOBAL = os.path.join(DATA_DIR, "fclib", "global")
+
+
+@pytest.mark.parametrize("name", ["Box_Stacks-i0122-82-5.hdf5", "GFC3D_TwoRods1.dat",
+                                  "GFC3D_Example1.dat"])
+def test_global_files_solve_and_recheck_in_numpy(name):
+    g = cpkit.read_fclib_global(os.path.join(GLOBAL, name))
+    assert g.M.shape == (g.dofs, g.dofs) and g.H.shape == (g.dofs, 3 * g.contacts)
+    res = cpkit.solve_friction_global(g, tol=1e-10)
+    assert res.status == "solved" and res.condensed, res
+    assert res.dofs == g.dofs and res.v.shape == (g.dofs,) and len(res.per_contact) == g.contacts
+    M, H = g.M.toarray(), g.H.toarray()
+    # Balance in the global variables, row by row relative to the row's own terms.
+    resid = M @ res.v - H @ res.r - g.f
+    scale = np.abs(M) @ np.abs(res.v) + np.abs(H) @ np.abs(res.r) + np.abs(g.f)
+    assert np.all(np.abs(resid) <= 1e-12 * np.maximum(scale, 1e-300)), np.abs(resid).max()
+    # u = H^T v + w, and the local problem condensed a second way (numpy's dense solve).
+    np.testing.assert_allclose(res.u, H.T @ res.v + g.w, rtol=0,
+                               atol=1e-12 * (np.abs(H.T) @ np.abs(res.v) + np.abs(g.w)).max())
+    W = H.T @ np.linalg.solve(M, H)
+    q = H.T @ np.linalg.solve(M, g.f) + g.w
+    assert_is_solution(W, q, g.mu, res.r, res.u, rel=1e-7)
+    # Per contact: where this file's own classification is unambiguous, the same state.
+    here = numpy_states(res.r, res.u, g.mu)
+    judged = [(a, b.state) for a, b in zip(here, res.per_contact) if a is not None]
+    assert judged, "no contact could be classified here: the test would be vacuous"
+    assert all(a == b for a, b in judged), judged
+
+
+def test_global_singular_m_is_not_run_with_the_reason():
+    # M = 0: nothing to factorize; said, not solved.
+    g = cpkit.GlobalFrictionProblem(M=np.zeros((3, 3)), H=np.eye(3), f=np.zeros(3),
+                                    w=np.array([-1.0, 0.0, 0.0]), mu=np.array([0.5]))
+    res = cpkit.solve_friction_global(g)
+    assert res.status == "not_run" and not res.condensed, res
+    assert not res.is_solution and res.per_contact == []
+    assert res.message
+
+
+def test_global_bad_input_raises_value_error(tmp_path):
+    g = cpkit.GlobalFrictionProblem(M=np.eye(4), H=np.eye(3), f=np.zeros(4), w=np.zeros(3),
+                                    mu=np.array([0.5]))
+    with pytest.raises(ValueError, match="H"):
+        cpkit.solve_friction_global(g)
+    with pytest.raises(ValueError, match="local"):  # a local file is not a global one
+        cpkit.read_fclib_global(os.path.join(LOCAL, "Capsules-i125-1213.hdf5"))
+    with pytest.raises(ValueError, match="missing.dat"):
+        cpkit.read_fclib_global(tmp_path / "missing.dat")
+
+
+def test_global_proximal_solves_a_massless_degree_of_freedom_as_by_hand():
+    # M = diag(1, 1, 0), H = I, w = 0, mu = 0.5, f = (-4, 3, 1). By hand (row 3: r_2 = -f_2;
+    # contact closed: r_N = 4; stick would need |r_T| = sqrt(10) > 2: slip with r_2 = -1 on the
+    # cone's edge): r = (4, -sqrt 3, -1), v = (0, 3 - sqrt 3, (3 - sqrt 3) / sqrt 3).
+    g = cpkit.GlobalFrictionProblem(M=np.diag([1.0, 1.0, 0.0]), H=np.eye(3),
+                                    f=np.array([-4.0, 3.0, 1.0]), w=np.zeros(3),
+                                    mu=np.array([0.5]))
+    assert cpkit.solve_friction_global(g).status == "not_run"
+    res = cpkit.solve_friction_global(g, proximal=True)
+    assert res.status == "solved", res
+    s3 = np.sqrt(3.0)
+    np.testing.assert_allclose(res.r, [4.0, -s3, -1.0], rtol=0, atol=1e-7)
+    np.testing.assert_allclose(res.v, [0.0, 3 - s3, (3 - s3) / s3], rtol=0, atol=1e-7)
+    # balance and the contact law recomputed here
+    np.testing.assert_allclose(np.diag([1.0, 1.0, 0.0]) @ res.v, res.r + g.f, rtol=0, atol=1e-9)
+    u = res.v + g.w
+    uhat = u + np.array([0.5 * np.linalg.norm(u[1:]), 0.0, 0.0])
+    assert abs(res.r @ uhat) <= 1e-8 and np.linalg.norm(res.r[1:]) <= 0.5 * res.r[0] + 1e-9
+    assert [c.state for c in res.per_contact] == ["slip"]

@@ -191,6 +191,49 @@ TEST_CASE("a solution written by cpkit reads back through libfclib", "[friction]
                       "write_friction_solution", "entries");
 }
 
+TEST_CASE("a written solution holds each contact's state in /solution/status",
+          "[friction][io][fclib]") {
+  // W = I, mu = 1/2: each contact decoupled, solved by hand. q = (1, 0, 0): r = 0, u = q
+  // (separated). q = (-1, 0.1, 0): r = (1, -0.1, 0), u = 0, |r_T| = 0.1 < mu r_N (stick).
+  // q = (-1, 2, 0): r = (1, -0.5, 0), u = (0, 1.5, 0): r_T = -mu r_N u_T / |u_T|, and
+  // u_hat = (0.75, 1.5, 0) is on the boundary of K*, r . u_hat = 0.75 - 0.75 = 0 (slip).
+  cpkit::FrictionContactProblem p;
+  p.W = MatrixXd::Identity(9, 9).sparseView();
+  p.q = (VectorXd(9) << 1, 0, 0, -1, 0.1, 0, -1, 2, 0).finished();
+  p.mu = VectorXd::Constant(3, 0.5);
+  const VectorXd r = (VectorXd(9) << 0, 0, 0, 1, -0.1, 0, 1, -0.5, 0).finished();
+  const VectorXd u = p.W * r + p.q;
+  const fs::path out = scratch() / "states.hdf5";
+  cpkit::write_friction_solution(out.string(), p, r, u);
+  {
+    H5File f(out);
+    CHECK(ints(f.id, "/solution/status") == std::vector<int>{0, 1, 2});
+    const hid_t d = H5Dopen2(f.id, "/solution/status", H5P_DEFAULT);
+    REQUIRE(d >= 0);
+    const hid_t a = H5Aopen(d, "states", H5P_DEFAULT);
+    REQUIRE(a >= 0);
+    const hid_t t = H5Aget_type(a);
+    std::string key(H5Tget_size(t), '\0');
+    REQUIRE(H5Aread(a, t, key.data()) >= 0);
+    CHECK(key.c_str() == std::string("0 separated, 1 stick, 2 slip"));
+    H5Tclose(t);
+    H5Aclose(a);
+    H5Dclose(d);
+  }
+  // The extra dataset does not disturb libfclib's readers.
+  const auto back = cpkit::read_friction_problem(out.string());
+  CHECK(back.q == p.q);
+  fclib_solution* s = fclib_read_solution(out.string().c_str());
+  REQUIRE(s != nullptr);
+  CHECK(Eigen::Map<const VectorXd>(s->r, r.size()) == r);
+  CHECK(Eigen::Map<const VectorXd>(s->u, u.size()) == u);
+  fclib_delete_solutions(s, 1);
+  fclib_local* l = fclib_read_local(out.string().c_str());
+  REQUIRE(l != nullptr);
+  CHECK(Eigen::Map<const VectorXd>(l->q, 9) == p.q);
+  fclib_delete_local(l);
+}
+
 TEST_CASE("truncated .dat files are input errors at every cut", "[friction][io][bad]") {
   // Siconos' test files end with one token after mu (Siconos ignores it; so does cpkit): a cut
   // that keeps every token up to mu is a complete file, every shorter one an input error.

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <Eigen/SparseCore>
+#include <cmath>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/friction/global.hpp"
@@ -62,4 +63,59 @@ TEST_CASE("global: a singular or indefinite M is said, not solved", "[friction][
   CHECK(out.result.status == cpkit::Status::kNotRun);
   CHECK(out.result.message.find("positive") != std::string::npos);
   CHECK_THROWS_AS(cpkit::lcp::friction::solve_global(g, "nope"), cpkit::InputError);
+}
+
+// The global proximal route on a singular M: M = diag(1, 1, 0) (the third degree of freedom
+// has no mass), H = I, w = 0, mu = 0.5, f = (-4, 3, 1). By hand: row 3 of the balance,
+// 0 v_2 = r_2 + f_2, forces r_2 = -1; u_N = v_0 = 0 with r_N = 4 (row 1: v_0 = r_N - 4);
+// stick would need r_T = -(3, 1), |r_T| = 3.16 > mu r_N = 2: slip, r_T = -2 (cos t, sin t)
+// with sin t = 1/2, so r = (4, -sqrt 3, -1); row 2: v_1 = 3 - sqrt 3; u_T parallel to
+// (cos t, sin t): v_2 = v_1 tan t = (3 - sqrt 3) / sqrt 3 -- fixed by the friction law alone.
+TEST_CASE("global proximal: a degree of freedom without mass, solved by hand at every scale",
+          "[friction][global]") {
+  for (double m : {1e-6, 1.0, 1e6}) {
+    for (double s : {1e-6, 1.0, 1e6}) {
+      CAPTURE(m, s);
+      auto g = one_contact(m, -4 * s, 3 * s);
+      Eigen::MatrixXd M = m * Eigen::MatrixXd::Identity(3, 3);
+      M(2, 2) = 0;
+      g.M = M.sparseView();
+      g.f[2] = 1 * s;
+      const auto plain = cpkit::lcp::friction::solve_global(g, "auto");
+      CHECK(plain.result.status == cpkit::Status::kNotRun);  // unchanged: opt-in route only
+      const auto out = cpkit::lcp::friction::solve_global_proximal(g, "auto");
+      INFO(out.result.message);
+      REQUIRE(out.result.status == cpkit::Status::kSolved);
+      const double r3 = std::sqrt(3.0);
+      const VectorXd r = (VectorXd(3) << 4, -r3, -1).finished() * s;
+      const VectorXd v = (VectorXd(3) << 0, 3 - r3, (3 - r3) / r3).finished() * (s / m);
+      CHECK((out.result.z - r).norm() <= 1e-7 * r.norm());
+      CHECK((out.v - v).norm() <= 1e-7 * v.norm());
+      CHECK(out.errors.balance <= 1e-10);
+    }
+  }
+}
+
+TEST_CASE("global proximal: no solution, never solved", "[friction][global]") {
+  // As above with f_2 = 3: row 3 needs r_2 = -3, beyond the cone (|r_T| <= mu r_N = 2): the
+  // massless degree of freedom cannot be held by friction; no (v, r) exists.
+  auto g = one_contact(1.0, -4, 3);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(3, 3);
+  M(2, 2) = 0;
+  g.M = M.sparseView();
+  g.f[2] = 3;
+  const auto out = cpkit::lcp::friction::solve_global_proximal(g, "auto");
+  INFO(out.result.message);
+  CHECK_FALSE(cpkit::is_solution(out.result.status));
+  CHECK(out.result.status == cpkit::Status::kStalled);  // stopped early, not after 200 steps
+}
+
+TEST_CASE("global proximal: an M without scale is said, not solved", "[friction][global]") {
+  auto g = one_contact(1.0, -4, 0);
+  g.M = Eigen::MatrixXd::Zero(3, 3).sparseView();
+  const auto out = cpkit::lcp::friction::solve_global_proximal(g, "auto");
+  CHECK(out.result.status == cpkit::Status::kNotRun);
+  CHECK(out.result.message.find("zero") != std::string::npos);
+  CHECK_THROWS_AS(cpkit::lcp::friction::solve_global_proximal(g, "auto", {}, -1.0),
+                  cpkit::InputError);
 }

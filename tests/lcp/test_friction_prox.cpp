@@ -84,6 +84,12 @@ TEST_CASE("prox: registered, refuses bad input", "[friction][prox]") {
   ProxOptions o;
   o.r0 = Eigen::VectorXd::Zero(2);
   CHECK_THROWS_AS(solve_prox(p, o), cpkit::InputError);
+  ProxOptions bad_alpha0;
+  bad_alpha0.alpha0 = -1;
+  CHECK_THROWS_AS(solve_prox(p, bad_alpha0), cpkit::InputError);
+  ProxOptions bad_shrink;
+  bad_shrink.shrink = 0.5;  // alpha would grow after every converged inner solve
+  CHECK_THROWS_AS(solve_prox(p, bad_shrink), cpkit::InputError);
   p.mu[0] = -1;
   CHECK_THROWS_AS(solve_prox(p), cpkit::InputError);
 }

@@ -63,18 +63,26 @@ struct Model {
   }
 };
 
+// Every entry of every block is stored, zeros included: the pattern of J = A + B W is then the
+// same at every iterate and the LU's ordering is computed once per solve.
 SpMat block_diagonal(const std::vector<Mat3>& blocks) {
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(blocks.size() * 9);
   for (size_t i = 0; i < blocks.size(); ++i)
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
-        if (blocks[i](a, b) != 0)
-          t.emplace_back(static_cast<int>(3 * i) + a, static_cast<int>(3 * i) + b, blocks[i](a, b));
+        t.emplace_back(static_cast<int>(3 * i) + a, static_cast<int>(3 * i) + b, blocks[i](a, b));
   const Eigen::Index n = static_cast<Eigen::Index>(3 * blocks.size());
   SpMat m(n, n);
   m.setFromTriplets(t.begin(), t.end());
   return m;
+}
+
+// True when a and b (compressed) have the same sparsity pattern.
+bool same_pattern(const SpMat& a, const SpMat& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
 }
 
 }  // namespace
@@ -109,6 +117,8 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   res.solver = "fb-soc";
   Status stop = best_res <= o.common.tol ? Status::kSolved : Status::kIterationLimit;
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
+  SpMat analysed_pattern;
+  bool analysed = false;
   Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
   SpMat I(n, n);
   I.setIdentity();
@@ -136,8 +146,14 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
       for (SpMat::InnerIterator jt(J, k); jt; ++jt) jmax = std::max(jmax, std::abs(jt.value()));
     // Newton direction, with a shift when J does not factorise.
     for (double shift : {0.0, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2}) {
-      const SpMat Js = shift == 0 ? J : SpMat(J + (shift * jmax) * I);
-      lu.compute(Js);
+      SpMat Js = shift == 0 ? J : SpMat(J + (shift * jmax) * I);
+      Js.makeCompressed();
+      if (!analysed || !same_pattern(Js, analysed_pattern)) {
+        lu.analyzePattern(Js);  // COLAMD once per pattern (the pattern of J does not change)
+        analysed_pattern = Js;
+        analysed = true;
+      }
+      lu.factorize(Js);
       if (lu.info() != Eigen::Success) continue;
       d = lu.solve(-phi);
       if (lu.info() == Eigen::Success && d.allFinite()) break;

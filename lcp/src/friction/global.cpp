@@ -16,6 +16,9 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 using Ldlt = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::AMDOrdering<int>>;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kRhoShrink = 10;    // global proximal route: rho_{k+1} = rho_k / 10 ...
+constexpr double kRhoFloor = 1e-6;   // ... but at least 1e-6 max|M_ii|
+constexpr int kRhoStagnation = 20;   // outer steps without halving the verdict's number
 
 double max_abs(const Sparse& A) {
   double m = 0;
@@ -136,6 +139,97 @@ GlobalSolveResult solve_global(const GlobalFrictionContactProblem& g, const std:
                          std::to_string(out.errors.balance) + ", local " +
                          std::to_string(out.errors.local) + ")";
   }
+  out.result.seconds = clock.seconds();
+  return out;
+}
+
+GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
+                                        const std::string& solver, const CommonOptions& o,
+                                        double rho_factor) {
+  const Stopwatch clock;
+  throw_if_invalid(g.validate(),
+                   "global friction problem" + (g.name.empty() ? "" : " '" + g.name + "'"));
+  throw_if_invalid(o.validate(), "solver options");
+  if (!(rho_factor > 0) || !std::isfinite(rho_factor))
+    throw InputError("rho_factor must be positive and finite");
+  GlobalSolveResult out;
+  out.result.solver = solver;
+  const double big = max_abs(g.M);
+  const double asym = max_abs(Sparse(g.M.transpose()) - g.M);
+  double diag = 0;
+  for (Eigen::Index i = 0; i < g.M.rows(); ++i) diag = std::max(diag, std::abs(g.M.coeff(i, i)));
+  if (big == 0 || asym > 1e2 * kEps * big || diag == 0) {
+    out.result.status = Status::kNotRun;
+    out.result.message = big == 0    ? "M is zero: no scale for the proximal term"
+                         : diag == 0 ? "M has a zero diagonal: no scale for the proximal term"
+                                     : "M is not symmetric";
+    out.result.seconds = clock.seconds();
+    return out;
+  }
+  double rho = rho_factor * diag;
+  Sparse I(g.M.rows(), g.M.cols());
+  I.setIdentity();
+  GlobalFrictionContactProblem reg = g;
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(g.dofs());
+  const int max_outer = o.max_iterations > 0 ? o.max_iterations : 200;
+  int k = 0, progress_k = 0;
+  double progress = std::numeric_limits<double>::infinity();
+  Status stop = Status::kIterationLimit;
+  for (; k < max_outer; ++k) {
+    if (clock.exceeded(o.time_limit_s)) {
+      stop = Status::kTimeLimit;
+      break;
+    }
+    reg.M = g.M + rho * I;
+    reg.f = g.f + rho * v;
+    CommonOptions io = o;
+    io.max_iterations = 0;  // the inner solver's own default
+    io.time_limit_s = o.time_limit_s - clock.seconds();
+    GlobalSolveResult in = solve_global(reg, solver, io);
+    if (!in.condensed.ok || in.v.size() != g.dofs() || in.result.z.size() != g.H.cols()) {
+      out = std::move(in);
+      stop = Status::kNumericalFailure;
+      out.result.message = "regularized problem " + std::to_string(k) + ": " + out.result.message;
+      break;
+    }
+    v = in.v;
+    out = std::move(in);
+    // rho falls geometrically (as prox's alpha, prox.hpp) down to a floor that keeps M + rho I
+    // clear of the condensation's singularity test (pivots above m eps of the largest).
+    rho = std::max(rho / kRhoShrink, kRhoFloor * diag);
+    out.errors = global_errors(g, out.condensed.local, v, out.result.z);
+    const double worst = std::max(out.errors.balance, out.errors.local);
+    if (worst <= o.tol) {
+      stop = Status::kSolved;
+      ++k;
+      break;
+    }
+    // Stagnation: no halving of the verdict's number in kRhoStagnation outer steps (a problem
+    // without solution: v grows and each regularized problem gets harder to solve).
+    if (worst <= 0.5 * progress) {
+      progress = worst;
+      progress_k = k;
+    } else if (k - progress_k >= kRhoStagnation) {
+      stop = Status::kStalled;
+      ++k;
+      break;
+    }
+  }
+  if (out.v.size() == g.dofs()) out.result.w = g.H.transpose() * out.v + g.w;
+  const double worst = std::max(out.errors.balance, out.errors.local);
+  if (stop == Status::kSolved) {
+    out.result.status = Status::kSolved;
+  } else if (out.v.size() == g.dofs() && worst <= o.tol_acceptable) {
+    out.result.status = Status::kSolvedInaccurate;
+  } else {
+    out.result.status = stop;
+  }
+  out.result.iterations = k;
+  out.result.message = "global proximal point (rho = " + std::to_string(rho_factor) +
+                       " max|M_ii|): " + std::to_string(k) + " outer iterations, balance " +
+                       std::to_string(out.errors.balance) + ", local " +
+                       std::to_string(out.errors.local) +
+                       (out.result.message.empty() ? "" : "; last inner: " + out.result.message);
   out.result.seconds = clock.seconds();
   return out;
 }

@@ -35,8 +35,11 @@ GlobalFrictionContactProblem read_global_friction_problem(const std::string& pat
 
 /// Writes `problem` and a solution (r, u = W r + q, each 3 n_c) as an FCLIB local file that
 /// libfclib (fclib_read_local, fclib_read_solution) reads back. W is stored compressed by
-/// columns. An existing file at `path` is replaced. InputError on inconsistent sizes or when
-/// the file cannot be written.
+/// columns. The solution group also holds `/solution/status`, one 32-bit integer a contact:
+/// 0 separated, 1 stick, 2 slip (friction_contacts(problem, r), the state `fc solve --json`
+/// prints in per_contact; the key is in its string attribute "states"); libfclib and Siconos
+/// ignore that extra dataset. An existing file at `path` is replaced. InputError on
+/// inconsistent sizes or when the file cannot be written.
 void write_friction_solution(const std::string& path, const FrictionContactProblem& problem,
                              const Eigen::VectorXd& r, const Eigen::VectorXd& u);
 

@@ -6,8 +6,12 @@
 /// (names looked up in cpkit::lcp::solvers() at call time; a name not registered, or whose entry
 /// has no solve_fc, is recorded as skipped). fb-soc (Newton: fast when it converges) comes first,
 /// with its non-monotone line search and, when that fails, again from r = 0 with the monotone
-/// one (fb_soc.hpp: neither wins on every FCLIB file); nsgs then starts from the best r seen so far (the smallest unit-free residual), as does a
-/// second fb-soc run after nsgs when nsgs ends short of tol (Newton polishing a Gauss-Seidel
+/// one (fb_soc.hpp: neither wins on every FCLIB file). When the first fb-soc stops by itself
+/// without kSolved (kStalled, or kSolvedInaccurate: stagnation, the non-isolated solutions of a
+/// rank-deficient W), prox (prox.hpp: W + alpha I) runs next from fb-soc's best iterate, before
+/// the monotone retry, and is not run again at its place in the chain (Capsules-i125-1213: 1.9 s
+/// through nsgs before, 0.5 s now); nsgs then starts from the best r seen so far (the smallest
+/// unit-free residual), as does a second fb-soc run after nsgs when nsgs ends short of tol (Newton polishing a Gauss-Seidel
 /// iterate). Every attempt is recorded in SolveResult::attempts (solver, status, unit-free
 /// residual, seconds, message). A kSolvedInaccurate answer is kept while later solvers try for
 /// kSolved. An answer accepted with a unit-free residual above tol / 10 is polished by up to

@@ -60,4 +60,26 @@ struct GlobalSolveResult {
 GlobalSolveResult solve_global(const GlobalFrictionContactProblem& problem,
                                const std::string& solver, const CommonOptions& options = {});
 
+/// A solver in the global variables for a symmetric M that cannot be condensed (singular:
+/// degrees of freedom without mass), opt-in (solve_global still says kNotRun there). Proximal
+/// point in v [Rockafellar 1976]: (v_{k+1}, r_{k+1}) solves the global problem with
+///   M + rho I   and   f + rho v_k,
+/// whose M + rho I is positive definite and is condensed and solved by solve_global(); a fixed
+/// point v_{k+1} = v_k is a solution of the original problem, since then M v = H r + f.
+/// rho_0 = rho_factor * max_i |M_ii| (M's units, so the iterates scale with the problem), then
+/// rho_{k+1} = max(rho_k / 10, 1e-6 max_i |M_ii|) (a geometric fall as prox's alpha: 6 outer
+/// iterations instead of 48 at a fixed rho on tests/lcp/test_friction_global.cpp's case). Stops
+/// when the verdict passes: balance of the ORIGINAL M v = H r + f (global.hpp's unit-free number)
+/// and the local number of r with u = H^T v + w, in the units of the last regularized
+/// condensed problem (H^T (M + rho I)^-1 H and its q), both <= tol; kStalled when the larger
+/// of the two has not halved in 20 outer iterations (a problem without solution: v grows and
+/// each regularized problem gets harder). options.max_iterations bounds the outer iterations
+/// (0: 200). result.iterations = outer iterations; `condensed` is
+/// the last regularized problem. kNotRun when M is not symmetric or is zero (no scale for rho);
+/// InputError as solve_global.
+GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& problem,
+                                        const std::string& solver,
+                                        const CommonOptions& options = {},
+                                        double rho_factor = 1.0);
+
 }  // namespace cpkit::lcp::friction
