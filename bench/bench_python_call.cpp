@@ -20,7 +20,12 @@
 
 #include "cpkit/lcp/solvers.hpp"
 
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__has_feature)  // clang spells the AddressSanitizer test this way
+#if __has_feature(address_sanitizer)
+#define CPKIT_UNDER_ASAN 1
+#endif
+#endif
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(CPKIT_UNDER_ASAN)
 #define CPKIT_COUNT_ALLOCATIONS 1
 namespace {
 std::atomic<unsigned long long> g_allocations{0};
