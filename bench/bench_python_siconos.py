@@ -17,10 +17,12 @@ process (issue 27).
 Every answer is checked against the other route (same z to 1e-9).
 
 Usage: PYTHONPATH=build/python /usr/bin/python3 bench/bench_python_siconos.py [--quick]
-[--trials T] [--calls C] [--cpu K] [--wall] [--instructions] (default 21 trials of 20000 calls; --quick: 7 of 2000; --cpu:
-pin the process to CPU K; --wall: wall-clock instead of CPU time; --instructions: also the
-instructions per call counted by valgrind's callgrind, independent of the load: (count of 2N
-calls - count of N calls) / N for each route, ~2 min) (exit 77 with the reason when siconos or the module cannot be imported). Numbers: docs/python.md.
+  [--trials T] [--calls C] [--cpu K] [--wall] [--instructions]
+Default 21 trials of 20000 calls (--quick: 7 of 2000). --cpu K: pin the process to CPU K.
+--wall: wall-clock time instead of CPU time. --instructions: also the instructions per call
+counted by valgrind's callgrind, independent of the load ((count of 2N calls - count of N
+calls) / N per route, ~2 min). Exit 77 with the reason when siconos or the module cannot be
+imported. Numbers: docs/python.md.
 """
 import math
 import os
