@@ -698,8 +698,12 @@ TEST_CASE("Per-thread storage: an answer does not depend on the calls made befor
   CHECK(r.z[1] == Approx(7.0 / 3.0).epsilon(1e-15));
   // Two threads at once, each with its own storage: the same answers as the sequence.
   std::vector<SolveResult> a(problems.size()), b(problems.size());
-  std::thread ta([&] { for (size_t t = 0; t < problems.size(); ++t) a[t] = solve_lemke(problems[t]); });
-  std::thread tb([&] { for (size_t t = problems.size(); t-- > 0;) b[t] = solve_lemke(problems[t]); });
+  std::thread ta([&] {
+    for (size_t t = 0; t < problems.size(); ++t) a[t] = solve_lemke(problems[t]);
+  });
+  std::thread tb([&] {
+    for (size_t t = problems.size(); t-- > 0;) b[t] = solve_lemke(problems[t]);
+  });
   ta.join();
   tb.join();
   for (size_t t = 0; t < problems.size(); ++t) {
