@@ -2,11 +2,16 @@
 // q = (-5, -6), Lemke: 2 pivots) solved through the solver registry in C++ (the path the Python
 // binding takes) and from Python: cpkit.solve(M, q, "lemke") (argument checks, numpy <-> Eigen,
 // the result object) and the bare extension call cpkit._cpkit.solve_dense_fast (no
-// pure-Python layer). bench/bench_python_siconos.py compares with Siconos' module. Each figure is the median per-call time of 15 batches.
+// pure-Python layer). bench/bench_python_siconos.py compares with Siconos' module. Each figure is
+// the median per-call time of 15 batches. The heap allocations per C++ call are counted (this
+// program's own malloc/calloc/realloc forward to glibc's and count; not under AddressSanitizer,
+// which has its own) for n = 2 and n = 10 after a first call (issue 27: the Lemke arrays are
+// reused per thread).
 // Usage: bench_python_call [--quick]. Needs the Python module of this build
 // (CPKIT_PYTHON_DIR; skipped with a message otherwise). Numbers: docs/python.md.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +19,37 @@
 #include <vector>
 
 #include "cpkit/lcp/solvers.hpp"
+
+#if defined(__has_feature)  // clang spells the AddressSanitizer test this way
+#if __has_feature(address_sanitizer)
+#define CPKIT_UNDER_ASAN 1
+#endif
+#endif
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(CPKIT_UNDER_ASAN)
+#define CPKIT_COUNT_ALLOCATIONS 1
+namespace {
+std::atomic<unsigned long long> g_allocations{0};
+}
+// glibc's allocator under its internal names; the definitions below replace malloc & co for
+// the whole process (Eigen's arrays and operator new both end in malloc).
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* malloc(std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(n);
+}
+void* calloc(std::size_t k, std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(k, n);
+}
+void* realloc(void* p, std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(p, n);
+}
+}
+#endif
 
 namespace {
 
@@ -37,6 +73,27 @@ double cpp_call(int calls) {
   }
   if (sink < 0) std::printf("unexpected\n");  // keeps the calls from being optimised away
   return median(batches);
+}
+
+/// Heap allocations per call of the registry's Lemke on an n x n SPD LCP (after one call, so
+/// per-thread storage is in place); -1 when not counted.
+double allocations_per_call(Eigen::Index n) {
+#ifdef CPKIT_COUNT_ALLOCATIONS
+  cpkit::Mat M = cpkit::Mat::Constant(n, n, 1.0) + cpkit::Mat::Identity(n, n) * double(n);
+  const cpkit::LcpProblem p(M, cpkit::Vec::LinSpaced(n, -5.0, -6.0));
+  const cpkit::SolverEntry* lemke = cpkit::lcp::solvers().find("lemke");
+  const cpkit::CommonOptions o;
+  double sink = lemke->solve_lcp(p, o).z[0];
+  constexpr int kCalls = 100;
+  const unsigned long long before = g_allocations.load();
+  for (int i = 0; i < kCalls; ++i) sink += lemke->solve_lcp(p, o).z[0];
+  const unsigned long long after = g_allocations.load();
+  if (sink < 0) std::printf("unexpected\n");
+  return static_cast<double>(after - before) / kCalls;
+#else
+  (void)n;
+  return -1;
+#endif
 }
 
 /// Runs the Python side; fills {wrapper, bare} seconds per call. False when it cannot run.
@@ -81,6 +138,10 @@ int main(int argc, char** argv) {
               calls);
   std::printf("| path | per call | vs C++ |\n|---|---|---|\n");
   std::printf("| C++: solvers().find(\"lemke\")->solve_lcp | %.2f us | 1.0x |\n", cpp * 1e6);
+  const double a2 = allocations_per_call(2), a10 = allocations_per_call(10);
+  if (a2 >= 0)
+    std::printf("heap allocations per C++ call (the result's arrays included): n = 2: %.1f, "
+                "n = 10: %.1f\n", a2, a10);
   double wrapper = 0, bare = 0;
   if (!python_calls(calls, wrapper, bare)) {
     std::printf("Python module not available in this build: Python rows skipped\n");

@@ -4,16 +4,28 @@ process (issue 27).
 
 1. Per call: the tiny LCP M = [[2, 1], [1, 2]], q = (-5, -6) through cpkit.solve(M, q,
    solver="lemke") and through Siconos' LCP(M, q) + SolverOptions + lcp_lexicolemke (the
-   arrays z, w made per call, as a user's call does). The two are timed in alternating batches
-   (a busy machine slows both alike); each figure is the median per-call time over the batches.
-   Target: ratio cpkit / Siconos <= 1.
+   arrays z, w made per call, as a user's call does). Trials of `calls` calls each, the two
+   interleaved (Siconos then cpkit in even trials, cpkit then Siconos in odd ones: the load of
+   the machine and the order hit both alike); each trial gives a paired ratio cpkit / Siconos.
+   Printed: the medians per call, the median paired ratio and its spread (min, quartiles, max
+   over the trials), and the verdict: ratio <= 1 "beyond the noise" when a sign test over the
+   paired trials says so (the chance of as many trials below 1 without a difference < 1%).
+   Times are the CPU time of the thread (robust to the load). Target: <= 1.
+   The load average is printed before and after (numbers in the docs quote it).
 2. Batched: k problems (2x2 and 3x3 SPD, one per contact) by cpkit.solve_batch in one call,
    against a Python loop of Siconos calls and a Python loop of cpkit.solve: problems per second.
 Every answer is checked against the other route (same z to 1e-9).
 
 Usage: PYTHONPATH=build/python /usr/bin/python3 bench/bench_python_siconos.py [--quick]
-(exit 77 with the reason when siconos or the module cannot be imported). Numbers: docs/python.md.
+  [--trials T] [--calls C] [--cpu K] [--wall] [--instructions]
+Default 21 trials of 20000 calls (--quick: 7 of 2000). --cpu K: pin the process to CPU K.
+--wall: wall-clock time instead of CPU time. --instructions: also the instructions per call
+counted by valgrind's callgrind, independent of the load ((count of 2N calls - count of N
+calls) / N per route, ~2 min). Exit 77 with the reason when siconos or the module cannot be
+imported. Numbers: docs/python.md.
 """
+import math
+import os
 import statistics
 import sys
 import time
@@ -44,38 +56,149 @@ def siconos_solve(M, q):
     return info, z
 
 
-def per_call(fn, calls):
-    t0 = time.perf_counter()
+def option(name, default):
+    if name in sys.argv:
+        return int(sys.argv[sys.argv.index(name) + 1])
+    return default
+
+
+# The CPU time of this thread (time.thread_time): a trial that is descheduled by other
+# programs is not charged for it (wall time on a loaded machine swung the paired ratios between
+# 0.6 and 1.6); --wall: wall-clock time instead.
+CLOCK = time.perf_counter if "--wall" in sys.argv else time.thread_time
+
+
+# Plain loops (no lambda per call): what a user's loop of calls costs, the same loop overhead
+# for both routes.
+def time_siconos(M, q, calls):
+    LCP, SolverOptions, lexicolemke, zeros = sn.LCP, sn.SolverOptions, sn.lcp_lexicolemke, np.zeros
+    lemke_id = sn.SICONOS_LCP_LEMKE
+    n = q.size
+    t0 = CLOCK()
     for _ in range(calls):
-        fn()
-    return (time.perf_counter() - t0) / calls
+        problem = LCP(M, q)
+        z = zeros(n)
+        w = zeros(n)
+        lexicolemke(problem, z, w, SolverOptions(lemke_id))
+    return (CLOCK() - t0) / calls
+
+
+def time_cpkit(M, q, calls, solver="lemke"):
+    solve = cpkit.solve
+    t0 = CLOCK()
+    for _ in range(calls):
+        solve(M, q, solver)
+    return (CLOCK() - t0) / calls
+
+
+def quartiles(x):
+    """(min, lower quartile, median, upper quartile, max) of x."""
+    q1, q2, q3 = statistics.quantiles(x, n=4, method="inclusive")
+    return min(x), q1, q2, q3, max(x)
+
+
+def loop_only(route, calls):
+    """--loop ROUTE N: N calls of one route after 200 warm-up calls (run under callgrind)."""
+    M = np.array([[2.0, 1.0], [1.0, 2.0]])
+    q = np.array([-5.0, -6.0])
+    fn = time_siconos if route == "siconos" else time_cpkit
+    fn(M, q, 200)
+    fn(M, q, calls)
+
+
+def instructions_per_call(route, calls=2000):
+    """Instructions per call of `route` counted by callgrind: the difference of the counts of
+    2 calls and `calls` calls of a whole process (start-up cancels), divided by `calls`.
+    None when valgrind is missing or fails."""
+    import re
+    import shutil
+    import subprocess
+    if shutil.which("valgrind") is None:
+        return None
+    env = dict(os.environ, PYTHONHASHSEED="0")
+    counts = []
+    for n in (calls, 2 * calls):
+        p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                            sys.executable, __file__, "--loop", route, str(n)],
+                           env=env, capture_output=True, text=True)
+        m = re.search(r"Collected : (\d+)", p.stderr)
+        if p.returncode != 0 or m is None:
+            return None
+        counts.append(int(m.group(1)))
+    return (counts[1] - counts[0]) / calls
+
+
+def print_instructions():
+    got = {route: instructions_per_call(route) for route in ("siconos", "cpkit")}
+    if None in got.values():
+        print("instructions per call: valgrind not available (Debian: valgrind)")
+        return
+    print(f"instructions per call (callgrind, 2000 calls beyond 2000): Siconos "
+          f"{got['siconos'] / 1e3:.1f}k, cpkit.solve {got['cpkit'] / 1e3:.1f}k, ratio "
+          f"{got['cpkit'] / got['siconos']:.3f}")
 
 
 def main():
+    if "--loop" in sys.argv:
+        i = sys.argv.index("--loop")
+        loop_only(sys.argv[i + 1], int(sys.argv[i + 2]))
+        return
     M = np.array([[2.0, 1.0], [1.0, 2.0]])
     q = np.array([-5.0, -6.0])
     r = cpkit.solve(M, q, solver="lemke")
     info, zs = siconos_solve(M, q)
-    assert r.status == "solved" and info == 0 and np.allclose(r.z, zs, rtol=1e-12), (r, zs)
+    # Both against the closed form: 2 z1 + z2 = 5, z1 + 2 z2 = 6 -> z = (4/3, 7/3), w = 0.
+    assert r.status == "solved" and info == 0, (r, info)
+    assert np.allclose(r.z, [4 / 3, 7 / 3], rtol=1e-14) and np.allclose(zs, [4 / 3, 7 / 3]), (r, zs)
 
-    batches, calls = (7, 2000) if QUICK else (21, 20000)
-    sic, cpk, auto = [], [], []
-    for _ in range(batches):  # alternating: the load of the machine hits both alike
-        sic.append(per_call(lambda: siconos_solve(M, q), calls))
-        cpk.append(per_call(lambda: cpkit.solve(M, q, solver="lemke"), calls))
-        auto.append(per_call(lambda: cpkit.solve(M, q), calls))
+    cpu = option("--cpu", -1)
+    if cpu >= 0 and hasattr(os, "sched_setaffinity"):
+        os.sched_setaffinity(0, {cpu})
+    trials = option("--trials", 7 if QUICK else 21)
+    calls = option("--calls", 2000 if QUICK else 20000)
+    load0 = os.getloadavg()[0]
+    time_siconos(M, q, calls // 10), time_cpkit(M, q, calls // 10)  # warm-up
+    sic, cpk, auto, ratio = [], [], [], []
+    for t in range(trials):
+        if t % 2 == 0:
+            s_t = time_siconos(M, q, calls)
+            c_t = time_cpkit(M, q, calls)
+        else:
+            c_t = time_cpkit(M, q, calls)
+            s_t = time_siconos(M, q, calls)
+        sic.append(s_t)
+        cpk.append(c_t)
+        ratio.append(c_t / s_t)
+        auto.append(time_cpkit(M, q, calls, "auto"))
+    load1 = os.getloadavg()[0]
     s, c, a = (statistics.median(x) * 1e6 for x in (sic, cpk, auto))
-    print(f"tiny LCP (n = 2, Lemke), median per call over {batches} alternating batches of "
-          f"{calls} calls")
-    print("| path | per call | vs Siconos |")
-    print("|---|---|---|")
-    print(f"| Siconos: LCP + SolverOptions + lcp_lexicolemke | {s:.2f} us | 1.00 |")
-    print(f"| cpkit.solve(M, q, solver=\"lemke\") | {c:.2f} us | {c / s:.2f} |")
-    print(f"| cpkit.solve(M, q) (auto chain) | {a:.2f} us | {a / s:.2f} |")
-    print(f"per-call ratio cpkit / Siconos: {c / s:.2f} (target <= 1)")
+    rq = quartiles(ratio)
+    clock = "wall-clock time" if CLOCK is time.perf_counter else "CPU time of the thread"
+    print(f"tiny LCP (n = 2, Lemke): {trials} interleaved trials of {calls} calls, one process, "
+          f"{clock}"
+          f"{f', pinned to CPU {cpu}' if cpu >= 0 else ''}; load average {load0:.2f} before, "
+          f"{load1:.2f} after")
+    print("| path | median per call | spread over the trials (min - max) | vs Siconos |")
+    print("|---|---|---|---|")
+    print(f"| Siconos: LCP + SolverOptions + lcp_lexicolemke | {s:.2f} us | "
+          f"{min(sic) * 1e6:.2f} - {max(sic) * 1e6:.2f} us | 1.00 |")
+    print(f"| cpkit.solve(M, q, \"lemke\") | {c:.2f} us | "
+          f"{min(cpk) * 1e6:.2f} - {max(cpk) * 1e6:.2f} us | {rq[2]:.2f} |")
+    print(f"| cpkit.solve(M, q) (auto chain) | {a:.2f} us | "
+          f"{min(auto) * 1e6:.2f} - {max(auto) * 1e6:.2f} us | {a / s:.2f} |")
+    # Sign test over the paired trials: under "no difference" each trial is below 1 with
+    # probability 1/2; "beyond the noise" when the chance of as many trials below 1 is < 1%.
+    below = sum(x < 1 for x in ratio)
+    p_value = sum(math.comb(trials, j) for j in range(below, trials + 1)) / 2**trials
+    verdict = ("<= 1 beyond the noise" if p_value < 0.01 else "not shown beyond the noise")
+    print(f"per-call ratio cpkit / Siconos: median {rq[2]:.3f} over {trials} paired trials "
+          f"(min {rq[0]:.3f}, quartiles {rq[1]:.3f} - {rq[3]:.3f}, max {rq[4]:.3f}); "
+          f"{below} of {trials} trials below 1 (sign test p = {p_value:.2g}): {verdict}")
+    if "--instructions" in sys.argv:
+        print_instructions()
 
     k = 2000 if QUICK else 20000
-    print(f"\nbatched: {k} SPD problems per size (random, seed 1)")
+    print(f"\nbatched: {k} SPD problems per size (random, seed 1), best of 3, {clock}")
     print("| n | cpkit.solve_batch | Python loop of Siconos | Python loop of cpkit.solve | "
           "batch / Siconos loop |")
     print("|---|---|---|---|---|")
@@ -86,15 +209,15 @@ def main():
         qs = rng.standard_normal((k, n)) * 3
         best = {}
         for rep in range(3):
-            t0 = time.perf_counter()
+            t0 = CLOCK()
             b = cpkit.solve_batch(Ms, qs, solver="lemke")
-            best["batch"] = min(best.get("batch", 1e9), time.perf_counter() - t0)
-            t0 = time.perf_counter()
+            best["batch"] = min(best.get("batch", 1e9), CLOCK() - t0)
+            t0 = CLOCK()
             zs = [siconos_solve(Ms[i], qs[i])[1] for i in range(k)]
-            best["siconos"] = min(best.get("siconos", 1e9), time.perf_counter() - t0)
-            t0 = time.perf_counter()
+            best["siconos"] = min(best.get("siconos", 1e9), CLOCK() - t0)
+            t0 = CLOCK()
             zc = [cpkit.solve(Ms[i], qs[i], solver="lemke").z for i in range(k)]
-            best["loop"] = min(best.get("loop", 1e9), time.perf_counter() - t0)
+            best["loop"] = min(best.get("loop", 1e9), CLOCK() - t0)
         assert b.is_solution.all()
         assert np.allclose(b.z, np.array(zs), rtol=1e-9, atol=1e-12)
         assert np.allclose(b.z, np.array(zc), rtol=1e-12, atol=1e-14)

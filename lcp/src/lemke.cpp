@@ -394,7 +394,8 @@ SolveResult LemkeRun::run() {
   SolveResult claim;
   double z0 = 0;
   // Starting basis: all w basic, or the warm basis.
-  std::vector<int> zset;
+  std::vector<int>& zset = s_.zset;
+  zset.clear();
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(o_.warm_basis.size()); ++i)
     if (o_.warm_basis[static_cast<size_t>(i)] >= 0) zset.push_back(static_cast<int>(i));
   if (!basis_.reset(zset)) {
@@ -414,6 +415,7 @@ SolveResult LemkeRun::run() {
     if (res.natural <= o_.common.tol || basis_.k() == 0) {
       claim.status = Status::kSolved;
       claim.iterations = 0;
+      claim.basis.reserve(static_cast<size_t>(n_));
       for (Eigen::Index i = 0; i < n_; ++i)
         claim.basis.push_back(basis_.zpos(static_cast<int>(i)) >= 0 ? static_cast<int>(i)
                                                                    : ~static_cast<int>(i));
@@ -426,9 +428,11 @@ SolveResult LemkeRun::run() {
   // share the scale-aware tolerances; this rescales z0 only and leaves the path unchanged.
   // User-facing values of z0 (trace, ray) are converted back to the units of d.
   beta_ = mmax_ > 0 ? mmax_ : 1.0;
-  const Vec d = o_.covering.size() ? o_.covering : default_covering();
-  Vec rate0(n_);
-  Vec c = Vec::Zero(n_);
+  const Vec& d = o_.covering.size() ? o_.covering : default_covering();
+  Vec& rate0 = s_.rate0;
+  rate0.resize(n_);
+  Vec& c = s_.column;
+  c.setZero(n_);
   for (Eigen::Index i = 0; i < n_; ++i) {
     rate0[i] = basis_.rpos(i) < 0 ? beta_ * d[i] : d[i];
     if (basis_.rpos(i) < 0) c[i] = rate0[i];
@@ -572,6 +576,7 @@ SolveResult LemkeRun::run() {
       add_message(claim, "final basis is singular");
     } else {
       basis_.recompute_values();
+      claim.basis.reserve(static_cast<size_t>(n_));
       for (Eigen::Index i = 0; i < n_; ++i)
         claim.basis.push_back(basis_.zpos(static_cast<int>(i)) >= 0 ? static_cast<int>(i)
                                                                    : ~static_cast<int>(i));
@@ -618,6 +623,10 @@ std::string LemkeOptions::validate(Eigen::Index n) const {
   return {};
 }
 
+// Largest n whose arrays are kept per thread between calls (O(n^2) doubles: 2 x 64^2 x 8 bytes
+// for H^{-1} and G(:, Z), plus X when a tie occurred).
+constexpr Eigen::Index kReuseMaxN = 64;
+
 SolveResult solve_lemke(const LcpProblem& problem, const LemkeOptions& options) {
   throw_if_invalid(problem.validate(), "lemke: problem");
   throw_if_invalid(options.validate(problem.size()), "lemke: options");
@@ -632,10 +641,24 @@ SolveResult solve_lemke(const LcpProblem& problem, const LemkeOptions& options) 
       return finalize(problem, std::move(claim), options.common);
     }
     const Mat dense = problem.dense_M();
-    LemkeRun run(problem, dense, options);
+    LemkeStorage storage;
+    LemkeRun run(problem, dense, options, storage);
     return run.run();
   }
-  LemkeRun run(problem, problem.M, options);
+  // Small problems reuse this thread's arrays (no allocation in the run when n repeats, issue
+  // 27); a large one, or a nested call while they are in use, gets its own.
+  thread_local LemkeStorage reused;
+  thread_local bool in_use = false;
+  if (problem.size() <= kReuseMaxN && !in_use) {
+    in_use = true;
+    struct Release {
+      ~Release() { in_use = false; }
+    } release;
+    LemkeRun run(problem, problem.M, options, reused);
+    return run.run();
+  }
+  LemkeStorage storage;
+  LemkeRun run(problem, problem.M, options, storage);
   return run.run();
 }
 

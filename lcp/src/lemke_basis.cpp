@@ -5,21 +5,37 @@
 
 namespace cpkit::lcp::detail {
 
-LemkeBasis::LemkeBasis(const Mat& M, const Vec& q)
+LemkeBasis::LemkeBasis(const Mat& M, const Vec& q, LemkeBasisStorage* storage)
     : M_(M),
       q_(q),
       n_(q.size()),
-      c_(Vec::Ones(q.size())),
-      hinv_(q.size(), q.size()),
-      xz_(Vec::Zero(q.size() + 1)),
-      w_(q),
-      zcols_(static_cast<size_t>(q.size() + 1), -1),
-      rrows_(static_cast<size_t>(q.size() + 1), -1),
-      zpos_(static_cast<size_t>(q.size() + 1), -1),
-      rpos_(static_cast<size_t>(q.size()), -1),
-      gz_(q.size(), q.size()),
-      tmp_(q.size() + 1),
-      tmp2_(q.size() + 1) {}
+      s_(storage != nullptr ? *storage : own_),
+      c_(s_.c),
+      hinv_(s_.hinv),
+      xz_(s_.xz),
+      w_(s_.w),
+      zcols_(s_.zcols),
+      rrows_(s_.rrows),
+      zpos_(s_.zpos),
+      rpos_(s_.rpos),
+      gz_(s_.gz),
+      x_(s_.x),
+      tmp_(s_.tmp),
+      tmp2_(s_.tmp2) {
+  // resize/assign keep the storage when the size repeats; hinv_, gz_ and the workspaces are
+  // written before they are read (only their leading k columns/entries are used).
+  c_.setOnes(n_);
+  hinv_.resize(n_, n_);
+  xz_.setZero(n_ + 1);
+  w_ = q;
+  zcols_.assign(static_cast<size_t>(n_ + 1), -1);
+  rrows_.assign(static_cast<size_t>(n_ + 1), -1);
+  zpos_.assign(static_cast<size_t>(n_ + 1), -1);
+  rpos_.assign(static_cast<size_t>(n_), -1);
+  gz_.resize(n_, n_);
+  tmp_.resize(n_ + 1);
+  tmp2_.resize(n_ + 1);
+}
 
 bool LemkeBasis::reset(const std::vector<int>& zset) {
   std::fill(zpos_.begin(), zpos_.end(), -1);

@@ -29,10 +29,22 @@ namespace cpkit::lcp::detail {
 using Vec = Eigen::VectorXd;
 using Mat = Eigen::MatrixXd;
 
+/// The arrays of a LemkeBasis. A caller that solves many problems keeps one and passes it to
+/// each basis: the arrays are resized, not reallocated, when n repeats (no allocation per call
+/// for small problems, issue 27). Every entry that is read is set by the basis first.
+struct LemkeBasisStorage {
+  Vec c, xz, w, tmp, tmp2;
+  Mat hinv, gz, x;
+  std::vector<int> zcols, rrows, zpos, rpos;
+};
+
 class LemkeBasis {
  public:
-  /// M (n x n, column-major, not owned: must outlive the basis) and q (not owned).
-  LemkeBasis(const Mat& M, const Vec& q);
+  /// M (n x n, column-major, not owned: must outlive the basis) and q (not owned). `storage`:
+  /// the arrays to use (not owned, one basis at a time); nullptr: the basis owns its arrays.
+  LemkeBasis(const Mat& M, const Vec& q, LemkeBasisStorage* storage = nullptr);
+  LemkeBasis(const LemkeBasis&) = delete;
+  LemkeBasis& operator=(const LemkeBasis&) = delete;
 
   Eigen::Index n() const { return n_; }
   const Mat& matrix() const { return M_; }
@@ -103,15 +115,17 @@ class LemkeBasis {
   const Mat& M_;
   const Vec& q_;
   Eigen::Index n_;
-  Vec c_;
+  LemkeBasisStorage own_;  // used when no storage is given
+  LemkeBasisStorage& s_;
+  Vec& c_;
   int k_ = 0;
-  Mat hinv_;              // top-left k x k block is H^{-1}
-  Vec xz_, w_;            // basic values
-  std::vector<int> zcols_, rrows_, zpos_, rpos_;
-  Mat gz_;                // column p = G(:, zcols_[p]) (contiguous copy for gemv)
-  Mat x_;                 // X = G(:, Z) H^{-1} (n x k) when x_on_ (rows of R: unit rows)
+  Mat& hinv_;             // top-left k x k block is H^{-1}
+  Vec &xz_, &w_;          // basic values
+  std::vector<int> &zcols_, &rrows_, &zpos_, &rpos_;
+  Mat& gz_;               // column p = G(:, zcols_[p]) (contiguous copy for gemv)
+  Mat& x_;                // X = G(:, Z) H^{-1} (n x k) when x_on_ (rows of R: unit rows)
   bool x_on_ = false;
-  Vec tmp_, tmp2_;        // workspaces (size n + 1)
+  Vec &tmp_, &tmp2_;      // workspaces (size n + 1)
 };
 
 }  // namespace cpkit::lcp::detail

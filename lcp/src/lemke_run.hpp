@@ -55,26 +55,65 @@ std::string var_name(int var, Eigen::Index n) {
   return "w" + std::to_string(var - n);
 }
 
-/// Per-call state of one Lemke run (no hidden state shared between calls).
+// A blocking candidate of the ratio test: basic `var` changes at rate -a (a > 0; the
+// initial z0 pivot: +a), ratio theta = value / a.
+struct LemkeCandidate {
+  int var;
+  double a, theta;
+};
+
+/// The arrays of a LemkeRun (its basis' included), kept by solve_lemke per thread and reused
+/// by the next call on a problem of the same size: a small problem then solves without heap
+/// allocations in the run (issue 27). Every entry that is read is set by the run first.
+struct LemkeStorage {
+  detail::LemkeBasisStorage basis;
+  Vec dxz, dw, row_best, row_cand, g_rowmax, row_max, covering, rate0, column;
+  std::vector<LemkeCandidate> cands, tied;
+  std::vector<double> tied_scale;
+  std::vector<size_t> tied_pos;
+  std::vector<char> excluded;
+  std::vector<uint64_t> seen;
+  std::vector<int> zset;
+};
+
+/// Per-call state of one Lemke run (no hidden state shared between calls: the arrays of
+/// `storage` are reset by the constructor).
 class LemkeRun {
  public:
-  LemkeRun(const LcpProblem& problem, const Mat& M, const LemkeOptions& o)
+  LemkeRun(const LcpProblem& problem, const Mat& M, const LemkeOptions& o, LemkeStorage& storage)
       : problem_(problem),
         o_(o),
         n_(problem.size()),
-        basis_(M, problem.q),
-        dxz_(Vec::Zero(n_ + 1)),
-        dw_(Vec::Zero(n_)),
-        row_best_(n_),
-        row_cand_(n_) {
+        s_(storage),
+        basis_(M, problem.q, &storage.basis),
+        dxz_(storage.dxz),
+        dw_(storage.dw),
+        row_best_(storage.row_best),
+        row_cand_(storage.row_cand),
+        cands_(storage.cands),
+        tied_(storage.tied),
+        tied_scale_(storage.tied_scale),
+        tied_pos_(storage.tied_pos),
+        g_rowmax_(storage.g_rowmax),
+        excluded_(storage.excluded),
+        seen_(storage.seen),
+        row_max_(storage.row_max) {
+    dxz_.setZero(n_ + 1);
+    dw_.setZero(n_);
+    row_best_.resize(n_);
+    row_cand_.resize(n_);
     mmax_ = n_ > 0 ? M.cwiseAbs().maxCoeff() : 0.0;
     qmax_ = problem.q.lpNorm<Eigen::Infinity>();
-    row_max_ = n_ > 0 ? Vec(M.cwiseAbs().rowwise().maxCoeff()) : Vec();
+    if (n_ > 0) row_max_ = M.cwiseAbs().rowwise().maxCoeff();
+    else row_max_.resize(0);
     cands_.resize(static_cast<size_t>(n_ + 1));
+    tied_.clear();
     tied_.reserve(static_cast<size_t>(n_ + 1));
+    tied_scale_.clear();
     tied_scale_.reserve(static_cast<size_t>(n_ + 1));
     excluded_.assign(static_cast<size_t>(2 * n_ + 1), 0);
     tied_pos_.assign(static_cast<size_t>(2 * n_ + 1), kNone);
+    seen_.assign(kSeenStart, 0);  // the capacity of a previous run is kept
   }
 
   SolveResult run();
@@ -87,12 +126,7 @@ class LemkeRun {
   double value(int var) const {
     return var <= n_ ? basis_.xz()[basis_.zpos(var)] : basis_.w()[var - n_ - 1];
   }
-  // A blocking candidate of the ratio test: basic `var` changes at rate -a (a > 0; the
-  // initial z0 pivot: +a), ratio theta = value / a.
-  struct Candidate {
-    int var;
-    double a, theta;
-  };
+  using Candidate = LemkeCandidate;
   // Lexicographic minimum of (value, B^{-1} row) / a over tied_ (>= 2 candidates).
   int lexmin_of_tied();
   // Relative rounding level of the computed values, ratios and B^{-1} rows at this pivot
@@ -133,16 +167,18 @@ class LemkeRun {
   const LcpProblem& problem_;
   const LemkeOptions& o_;
   Eigen::Index n_;
+  LemkeStorage& s_;
   LemkeBasis basis_;
-  Vec dxz_, dw_, row_best_, row_cand_;
-  std::vector<Candidate> cands_, tied_;
-  std::vector<double> tied_scale_;
+  Vec &dxz_, &dw_, &row_best_, &row_cand_;
+  std::vector<Candidate> &cands_, &tied_;
+  std::vector<double>& tied_scale_;
   static constexpr size_t kNone = static_cast<size_t>(-1);
-  std::vector<size_t> tied_pos_;     // per variable id: position in tied_ (kNone: not tied)
-  Vec g_rowmax_;                     // max_j |G(i, j)| per row (G = [M | c])
+  static constexpr size_t kSeenStart = 64;  // initial size of seen_ (a power of 2)
+  std::vector<size_t>& tied_pos_;    // per variable id: position in tied_ (kNone: not tied)
+  Vec& g_rowmax_;                    // max_j |G(i, j)| per row (G = [M | c])
   double dxz_l1_ = 0;                // ||dxz||_1 of the current direction
-  std::vector<char> excluded_;       // per variable id, reset after each ratio test
-  std::vector<uint64_t> seen_;       // open-addressing set of basis hashes (0 = empty)
+  std::vector<char>& excluded_;      // per variable id, reset after each ratio test
+  std::vector<uint64_t>& seen_;      // open-addressing set of basis hashes (0 = empty)
   size_t seen_count_ = 0;
   uint64_t hash_ = 0;                // Zobrist hash of the current basis
   std::vector<TraceEntry> trace_;
@@ -150,7 +186,7 @@ class LemkeRun {
   double gmax_ = 1;            // max |[M | c]_ij| (set with the artificial column c)
   double qmax_ = 0;            // ||q||_inf
   double beta_ = 1;            // internal z0 = user z0 / beta_ (see run())
-  Vec row_max_;                // max_j |M_ij| per row (default_covering)
+  Vec& row_max_;               // max_j |M_ij| per row (default_covering)
 
   /// The default covering vector: all ones when the rows of [M q] have comparable sizes
   /// (within kRowSpread), else each row in its own units, d_i = r_i / max r (r_i = max_j
@@ -159,20 +195,22 @@ class LemkeRun {
   /// mix those units until one is numerically singular (issue 24: a 40x40 SPD matrix with
   /// rows scaled by 10^-(i mod 17) ended in numerical_failure). Row scaling M -> D M,
   /// q -> D q then scales d by D and leaves the path unchanged.
-  Vec default_covering() const {
+  /// Written into s_.covering (returned).
+  const Vec& default_covering() {
     constexpr double kRowSpread = 1024;
-    Vec r(n_);
+    Vec& r = s_.covering;
+    r.resize(n_);
     double rmax = 0;
     for (Eigen::Index i = 0; i < n_; ++i) {
       r[i] = row_max_[i];
       if (!(r[i] > 0)) r[i] = std::abs(problem_.q[i]);
       rmax = std::max(rmax, r[i]);
     }
-    if (!(rmax > 0) || !std::isfinite(rmax)) return Vec::Ones(n_);
+    if (!(rmax > 0) || !std::isfinite(rmax)) return r.setOnes();
     double rmin = rmax;
     for (Eigen::Index i = 0; i < n_; ++i)
       if (r[i] > 0) rmin = std::min(rmin, r[i]);
-    if (rmax <= kRowSpread * rmin) return Vec::Ones(n_);
+    if (rmax <= kRowSpread * rmin) return r.setOnes();
     for (Eigen::Index i = 0; i < n_; ++i) r[i] = r[i] > 0 ? r[i] / rmax : 1.0;
     return r;
   }

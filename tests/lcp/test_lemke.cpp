@@ -13,6 +13,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
@@ -649,5 +650,65 @@ TEST_CASE("Scale invariance: scaling M and q does not change the path or the ver
       CHECK(r.iterations == ref.iterations);
       CHECK(r.basis == ref.basis);
     }
+  }
+}
+
+TEST_CASE("Per-thread storage: an answer does not depend on the calls made before it",
+          "[lemke][reuse]") {
+  // solve_lemke keeps the arrays of small runs per thread (issue 27). A thread that has solved
+  // nothing yet (std::thread: fresh storage) is the second route: every answer of a long mixed
+  // sequence on one thread (sizes 1..12 interleaved, degenerate integer data with ties, rays,
+  // n = 70 beyond the reuse bound) must equal it bit for bit.
+  std::mt19937 rng(27);
+  std::vector<LcpProblem> problems;
+  for (int t = 0; t < 120; ++t) {
+    const Eigen::Index n = t % 40 == 39 ? 70 : 1 + static_cast<Eigen::Index>(rng() % 12);
+    Mat M(n, n);
+    Vec q(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      q[i] = static_cast<double>(static_cast<int>(rng() % 6) - 3);
+      for (Eigen::Index j = 0; j < n; ++j)
+        M(i, j) = t % 2 == 0 ? static_cast<double>(static_cast<int>(rng() % 5) - 2)
+                             : static_cast<double>(rng() % 2) + (i == j ? 1.0 : 0.0);
+    }
+    problems.emplace_back(M, q);
+  }
+  auto same = [](const SolveResult& a, const SolveResult& b) {
+    return a.status == b.status && a.iterations == b.iterations && a.basis == b.basis &&
+           a.message == b.message && a.z.size() == b.z.size() &&
+           std::equal(a.z.data(), a.z.data() + a.z.size(), b.z.data()) &&
+           a.ray.has_value() == b.ray.has_value() && (!a.ray || *a.ray == *b.ray);
+  };
+  std::vector<SolveResult> sequence;
+  for (const auto& p : problems) sequence.push_back(solve_lemke(p));
+  int solved = 0, other = 0;
+  for (size_t t = 0; t < problems.size(); ++t) {
+    SolveResult fresh;
+    std::thread([&] { fresh = solve_lemke(problems[t]); }).join();
+    CAPTURE(t, problems[t].size());
+    CHECK(same(sequence[t], fresh));
+    (fresh.status == Status::kSolved ? solved : other) += 1;
+  }
+  CHECK(solved > 20);  // both kinds of outcome occur in the sequence
+  CHECK(other > 20);
+  // The closed form after all that: 2 z1 + z2 = 5, z1 + 2 z2 = 6 gives z = (4/3, 7/3).
+  const auto r = solve_lemke(LcpProblem(Mat{{2, 1}, {1, 2}}, Vec{{-5, -6}}));
+  REQUIRE(r.status == Status::kSolved);
+  CHECK(r.z[0] == Approx(4.0 / 3.0).epsilon(1e-15));
+  CHECK(r.z[1] == Approx(7.0 / 3.0).epsilon(1e-15));
+  // Two threads at once, each with its own storage: the same answers as the sequence.
+  std::vector<SolveResult> a(problems.size()), b(problems.size());
+  std::thread ta([&] {
+    for (size_t t = 0; t < problems.size(); ++t) a[t] = solve_lemke(problems[t]);
+  });
+  std::thread tb([&] {
+    for (size_t t = problems.size(); t-- > 0;) b[t] = solve_lemke(problems[t]);
+  });
+  ta.join();
+  tb.join();
+  for (size_t t = 0; t < problems.size(); ++t) {
+    CAPTURE(t);
+    CHECK(same(a[t], sequence[t]));
+    CHECK(same(b[t], sequence[t]));
   }
 }

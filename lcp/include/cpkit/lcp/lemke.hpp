@@ -38,6 +38,9 @@
 /// The inverse's accuracy is checked every 16 pivots from the data and it is recomputed when
 /// the check fails.
 /// Sparse input is densified when n <= kLemkeMaxDensify, else the result is kUnsupported.
+/// Memory: for a dense problem with n <= 64 the arrays of a run are kept per thread and reused
+/// by the next call (no heap allocation inside the run when n repeats; about 100 KB per thread
+/// at most); the answer never depends on earlier calls (bit-identical to a fresh thread's).
 #include <vector>
 
 #include "cpkit/core/finalize.hpp"
