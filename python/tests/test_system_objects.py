@@ -1,8 +1,9 @@
 """Systems are passed as parsed objects (issue 25): a ContactSystem / ContactSystem3d is read ONCE
 by the C++ reader and every call receives the parsed system. Checked against the `cpkit` program
 of the same build (`cpkit rate --system F --json` reads the file itself: an independent route),
-after the file has been overwritten (a re-read would see the new file), and with bad input still
-a ValueError naming the field."""
+after the file has been overwritten (a re-read would see the new file), by counting the
+serialisations to JSON text (none per call), and with bad input still a ValueError naming the
+field."""
 import copy
 import json
 import os
@@ -36,7 +37,7 @@ def assert_3d_equals_cli(r, cli):
             np.testing.assert_allclose([x[key] for x in mine["rates"]], values, atol=1e-10)
 
 
-def test_2d_system_is_parsed_once(tmp_path):
+def test_2d_from_file_answers_as_the_cli_read_before_the_file_changed(tmp_path):
     # The CLI answer of the original file; then the file is replaced by another system (mu of
     # both points 0.1, so the answer differs: checked) and the object must still answer as the
     # original.
@@ -133,3 +134,35 @@ def test_bad_3d_input_names_the_field(tmp_path):
         cpkit.ContactSystem3d.from_file(path)
     with pytest.raises(TypeError):
         cpkit.ContactSystem3d.from_dict("not a dict")
+
+
+def test_no_json_text_on_the_call_path(monkeypatch):
+    # Before, every call serialised the system (to_json) and C++ parsed the text again; count
+    # the serialisations: none per call now, one after a field is assigned (then parsed again).
+    calls = []
+    to_json = cpkit.ContactSystem.to_json
+    monkeypatch.setattr(cpkit.ContactSystem, "to_json", lambda self: calls.append(1) or to_json(self))
+    s = cpkit.ContactSystem(np.eye(4), [{"state": "b", "mu": 1}, {"state": "b", "mu": 1}],
+                            patterns=(np.eye(4)[0], np.eye(4)[1]))
+    assert len(calls) == 1
+    for _ in range(5):
+        cpkit.solve_system_rate(s, np.ones(4))
+        cpkit.solve_rate_problem(s, np.ones(4))
+        cpkit.system_direction_counts(s, [0.0, 1.0])
+    assert len(calls) == 1
+    s.criterion = "35"
+    cpkit.solve_system_rate(s, np.ones(4))
+    cpkit.solve_system_rate(s, np.ones(4))
+    assert len(calls) == 2 and s.criterion == "35"
+    # 3-D: the object is never turned back into text; a dict is, once per call
+    texts = []
+    system_text = cpkit.system.system_text
+    monkeypatch.setattr(cpkit.system, "system_text", lambda x: texts.append(1) or system_text(x))
+    doc = json.load(open(os.path.join(EXAMPLES, "two_point_system_3d.json")))
+    s3 = cpkit.ContactSystem3d(doc)
+    assert len(texts) == 1
+    for _ in range(3):
+        cpkit.solve_system_rate_3d(s3, facets=8)
+    assert len(texts) == 1
+    cpkit.solve_system_rate_3d(doc, facets=8)
+    assert len(texts) == 2
