@@ -65,7 +65,9 @@ class ContactSystem:
     with "P_N" for c/d and "sgnPT" for d, "g" < 0 for a) or the current values "P_N", "g"
     (and "P_T"). dF: an optional load rate, patterns: optional load patterns (e1, e2) for
     direction maps, both 2N-vectors. Validated on construction (ValueError naming the field and
-    the point, 1-based); A is then symmetrised and each point completed with its state."""
+    the point, 1-based); A is then symmetrised and each point completed with its state. Parsed
+    once by the C++ reader: calls receive the parsed system. The fields are read-only in place;
+    assigning one (system.points = [...]) has the system parsed and checked at the next call."""
     A: Any
     points: List[Dict[str, Any]]
     criterion: str = "38"
