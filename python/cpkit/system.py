@@ -198,13 +198,19 @@ class ContactSystem3d:
     takes a 3-D system accepts one (and a path, JSON text or dict, parsed at the call)."""
 
     def __init__(self, source):
-        self._data = _cpkit.ContactSystem3dData.from_json(system_text(source))
+        self._text = system_text(source)  # kept for pickling (the parsed object is not)
+        self._data = _cpkit.ContactSystem3dData.from_json(self._text)
 
     @classmethod
     def from_file(cls, path) -> "ContactSystem3d":
         s = cls.__new__(cls)
-        s._data = _cpkit.ContactSystem3dData.from_file(os.fspath(path))
+        s._data = _cpkit.ContactSystem3dData.from_file(os.fspath(path))  # its messages first
+        with open(os.fspath(path), encoding="utf-8") as f:
+            s._text = f.read()
         return s
+
+    def __reduce__(self):  # pickled as its text, parsed again on loading
+        return (self.__class__, (self._text,))
 
     @classmethod
     def from_dict(cls, doc: Dict[str, Any]) -> "ContactSystem3d":

@@ -101,6 +101,8 @@ def test_3d_system_is_parsed_once_and_agrees_with_the_cli(tmp_path):
     for r in (cpkit.solve_system_rate_3d(s, facets=8),
               cpkit.solve_system_rate_3d(cpkit.ContactSystem3d(json.load(open(src))), facets=8),
               cpkit.solve_system_rate_3d(cpkit.ContactSystem3d.from_dict(json.load(open(src))), 8),
+              cpkit.solve_system_rate_3d(pickle.loads(pickle.dumps(s)), facets=8),
+              cpkit.solve_system_rate_3d(copy.deepcopy(s), facets=8),
               cpkit.solve_system_rate_3d(src, facets=8)):
         assert_3d_equals_cli(r, cli)
 
