@@ -7,7 +7,7 @@ Stromberg, Johansson & Klarbring (1996). See docs/python.md.
 """
 from . import _cpkit
 from .model import ContactParameters, ContactState, Point3d
-from .system import ContactSystem, solve_system_rate, system_direction_counts
+from .system import ContactSystem, ContactSystem3d, solve_system_rate, system_direction_counts
 from .rate import (Rate3dSolutionSet, rate_indicators, solve_rate_3d, solve_rate_problem,
                    solve_system_rate_3d)
 from .step import (FacetedStep3dSolutionSet, Step3dSolutionSet, StepChain3dResult,

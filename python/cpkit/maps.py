@@ -10,9 +10,10 @@ from typing import Dict, Optional, Sequence
 import numpy as np
 
 from . import _cpkit
-from ._checks import facet_count, integer, real, system_text, vec
+from ._checks import facet_count, integer, real, vec
 from .model import ContactParameters
 from .results import DirectionMap, ParamDirectionMap, ParamParamMap
+from .system import system_3d
 
 __all__ = ["direction_map", "param_direction_map", "param_param_map", "Map3d", "sphere_map_3d",
            "param_direction_map_3d", "param_param_map_3d"]
@@ -94,7 +95,7 @@ def sphere_map_3d(system, n_beta: int = 91, n_gamma: int = 180,
     (the system's dF) or "auto" (the file's when N > 1 and it has one; as the CLI)."""
     b0, b1 = _range(beta_range, "beta_range")
     return Map3d(**_cpkit.sphere_map_3d(
-        system_text(system), integer(n_beta, "n_beta", 1), integer(n_gamma, "n_gamma", 1), b0, b1,
+        system_3d(system), integer(n_beta, "n_beta", 1), integer(n_gamma, "n_gamma", 1), b0, b1,
         facet_count(facets), integer(point, "point"), str(others), integer(threads, "threads", 0)))
 
 
@@ -107,7 +108,7 @@ def param_direction_map_3d(system, param: str, start: float, stop: float, n: int
     centres of theta_range (0 < width <= 2 pi)."""
     t0, t1 = _range(theta_range, "theta_range")
     return Map3d(**_cpkit.param_direction_map_3d(
-        system_text(system), str(param), real(start, "start"), real(stop, "stop"),
+        system_3d(system), str(param), real(start, "start"), real(stop, "stop"),
         integer(n, "n", 1), integer(theta_n, "theta_n", 1), t0, t1, real(gamma, "gamma"),
         facet_count(facets), integer(point, "point"), str(others), integer(threads, "threads", 0)))
 
@@ -118,7 +119,7 @@ def param_param_map_3d(system, param1: str, start1: float, stop1: float, n1: int
     """Two parameters at the system's "dF" (required): rows param1, columns param2; `types`
     of point `point`."""
     return Map3d(**_cpkit.param_param_map_3d(
-        system_text(system), str(param1), real(start1, "start1"), real(stop1, "stop1"),
+        system_3d(system), str(param1), real(start1, "start1"), real(stop1, "stop1"),
         integer(n1, "n1", 1), str(param2), real(start2, "start2"), real(stop2, "stop2"),
         integer(n2, "n2", 1), facet_count(facets), integer(point, "point"), str(others),
         integer(threads, "threads", 0)))

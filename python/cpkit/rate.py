@@ -8,10 +8,10 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from . import _cpkit
-from ._checks import facet_count, load_2d, system_text, vec
+from ._checks import facet_count, load_2d, vec
 from .model import ContactParameters, Point3d
 from .results import RateSolutionSet
-from .system import ContactSystem, solve_system_rate
+from .system import ContactSystem, solve_system_rate, system_3d
 
 __all__ = ["solve_rate_problem", "rate_indicators", "Rate3dSolutionSet", "solve_rate_3d",
            "solve_system_rate_3d"]
@@ -79,7 +79,7 @@ def solve_rate_3d(point: Point3d, state: str, dF, P_T=(0.0, 0.0), P_N: float = 0
 
 def solve_system_rate_3d(system, facets: int, dF=None) -> Rate3dSolutionSet:
     """Every solution of the faceted rate problem of N coupled 3-D points. system: a path to a
-    "dim": 3 system file, its JSON text, or a dict of it (docs/file_formats.md)."""
-    text = system_text(system)
+    "dim": 3 system file, its JSON text, a dict of it (docs/file_formats.md) or a ContactSystem3d."""
+    data = system_3d(system)
     load = None if dF is None else np.asarray(dF, dtype=float).ravel().tolist()
-    return Rate3dSolutionSet(**_cpkit.solve_system_rate_3d(text, load, int(facets)))
+    return Rate3dSolutionSet(**_cpkit.solve_system_rate_3d(data, load, int(facets)))

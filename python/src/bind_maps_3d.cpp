@@ -1,6 +1,6 @@
 // Maps of a "dim": 3 system (docs/contact_3d.md) over the sphere of load directions and over
-// parameters, as numpy grids; the 2-D maps are bind_maps.cpp. The GIL is released while C++
-// computes.
+// parameters, as numpy grids; the 2-D maps are bind_maps.cpp. The system is the parsed
+// _cpkit.ContactSystem3dData (bind_system.cpp). The GIL is released while C++ computes.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -86,10 +86,9 @@ pyb::dict map_dict(const rate::Map3d& m, const rate::Map3dOptions& o) {
   return d;
 }
 
-pyb::dict sphere_map_3d(const std::string& json_text, int n_beta, int n_gamma, double beta_from,
-                        double beta_to, int facets, int point, const std::string& others,
-                        int threads) {
-  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
+pyb::dict sphere_map_3d(const rate::ContactSystem3d& sys, int n_beta, int n_gamma,
+                        double beta_from, double beta_to, int facets, int point,
+                        const std::string& others, int threads) {
   const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
   rate::SphereGrid g;
   g.n_beta = n_beta;
@@ -109,11 +108,10 @@ pyb::dict sphere_map_3d(const std::string& json_text, int n_beta, int n_gamma, d
   return d;
 }
 
-pyb::dict param_direction_map_3d(const std::string& json_text, const std::string& param,
+pyb::dict param_direction_map_3d(const rate::ContactSystem3d& sys, const std::string& param,
                                  double from, double to, int n, int theta_n, double theta_from,
                                  double theta_to, double gamma, int facets, int point,
                                  const std::string& others, int threads) {
-  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
   const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
   const rate::Map3dAxis a = axis_from(param, from, to, n, sys.n_points(), "axis");
   if (theta_n < 1 || theta_n > 1000000)
@@ -131,11 +129,10 @@ pyb::dict param_direction_map_3d(const std::string& json_text, const std::string
   return d;
 }
 
-pyb::dict param_param_map_3d(const std::string& json_text, const std::string& param1,
+pyb::dict param_param_map_3d(const rate::ContactSystem3d& sys, const std::string& param1,
                              double from1, double to1, int n1, const std::string& param2,
                              double from2, double to2, int n2, int facets, int point,
                              const std::string& others, int threads) {
-  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
   const rate::Map3dOptions o = map_options(sys, facets, point, others, threads);
   const rate::Map3dAxis a1 = axis_from(param1, from1, to1, n1, sys.n_points(), "first axis");
   const rate::Map3dAxis a2 = axis_from(param2, from2, to2, n2, sys.n_points(), "second axis");
@@ -155,14 +152,14 @@ pyb::dict param_param_map_3d(const std::string& json_text, const std::string& pa
 }  // namespace
 
 void bind_maps_3d(pyb::module_& m) {
-  m.def("sphere_map_3d", &sphere_map_3d, pyb::arg("json_text"), pyb::arg("n_beta"),
+  m.def("sphere_map_3d", &sphere_map_3d, pyb::arg("system"), pyb::arg("n_beta"),
         pyb::arg("n_gamma"), pyb::arg("beta_from"), pyb::arg("beta_to"), pyb::arg("facets"),
         pyb::arg("point"), pyb::arg("others"), pyb::arg("threads"));
-  m.def("param_direction_map_3d", &param_direction_map_3d, pyb::arg("json_text"),
+  m.def("param_direction_map_3d", &param_direction_map_3d, pyb::arg("system"),
         pyb::arg("param"), pyb::arg("from_"), pyb::arg("to"), pyb::arg("n"), pyb::arg("theta_n"),
         pyb::arg("theta_from"), pyb::arg("theta_to"), pyb::arg("gamma"), pyb::arg("facets"),
         pyb::arg("point"), pyb::arg("others"), pyb::arg("threads"));
-  m.def("param_param_map_3d", &param_param_map_3d, pyb::arg("json_text"), pyb::arg("param1"),
+  m.def("param_param_map_3d", &param_param_map_3d, pyb::arg("system"), pyb::arg("param1"),
         pyb::arg("from1"), pyb::arg("to1"), pyb::arg("n1"), pyb::arg("param2"), pyb::arg("from2"),
         pyb::arg("to2"), pyb::arg("n2"), pyb::arg("facets"), pyb::arg("point"),
         pyb::arg("others"), pyb::arg("threads"));

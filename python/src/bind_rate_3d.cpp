@@ -90,8 +90,7 @@ pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, cons
   return d;
 }
 
-pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& dF, int facets) {
-  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(json_text, "system");
+pyb::dict solve_system_rate_3d(const rate::ContactSystem3d& sys, const pyb::object& dF, int facets) {
   Eigen::VectorXd load;
   if (dF.is_none()) {
     if (!sys.dF) throw InputError("no load rate: give dF (3N numbers) or put \"dF\" in the system");
@@ -132,7 +131,7 @@ pyb::dict solve_system_rate_3d(const std::string& json_text, const pyb::object& 
 void bind_rate_3d(pyb::module_& m) {
   m.def("solve_rate_3d", &solve_rate_3d, pyb::arg("point"), pyb::arg("state"), pyb::arg("P_T"),
         pyb::arg("P_N"), pyb::arg("dF"), pyb::arg("facets"));
-  m.def("solve_system_rate_3d", &solve_system_rate_3d, pyb::arg("json_text"), pyb::arg("dF"),
+  m.def("solve_system_rate_3d", &solve_system_rate_3d, pyb::arg("system"), pyb::arg("dF"),
         pyb::arg("facets"));
 }
 

@@ -1,18 +1,20 @@
-// N-point contact systems (rate_problem/system/): the Python ContactSystem is plain data that
-// is handed over as the JSON of a system file, so that the one reader (parse_contact_system)
-// validates it with its own messages (field and point named, docs/file_formats.md).
+// N-point contact systems (rate_problem/system/): the parsed C++ systems as opaque Python objects
+// (_cpkit.ContactSystemData, _cpkit.ContactSystem3dData), built ONCE from a system file's JSON
+// text or path by the one reader (parse/read_contact_system[_3d]: its validation and messages,
+// field and point named, docs/file_formats.md), then handed to every binding that takes a system
+// without re-parsing (python/cpkit/system.py keeps them on the Python objects).
 #include <string>
 
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::py {
+namespace {
 
-rate::ContactSystem system_from_json(const std::string& json_text) {
-  return rate::parse_contact_system(json_text, "system");
-}
-
+/// The normalised fields (A symmetrised, each point completed with its state) that the Python
+/// ContactSystem shows.
 pyb::dict system_to_dict(const rate::ContactSystem& s) {
   pyb::dict d;
   d["name"] = s.name;
@@ -41,13 +43,25 @@ pyb::dict system_to_dict(const rate::ContactSystem& s) {
   return d;
 }
 
+}  // namespace
+
 void bind_system(pyb::module_& m) {
-  m.def("system_normalized", [](const std::string& json_text) {
-    return system_to_dict(system_from_json(json_text));
-  });
-  m.def("system_from_file", [](const std::string& path) {
-    return system_to_dict(rate::read_contact_system(path));
-  });
+  pyb::class_<rate::ContactSystem>(m, "ContactSystemData",
+                                   "A parsed 2-D N-point system (rate::ContactSystem); opaque")
+      .def_static("from_json", [](const std::string& json_text) {
+        return rate::parse_contact_system(json_text, "system");
+      })
+      .def_static("from_file", &rate::read_contact_system)
+      .def_property_readonly("n_points", &rate::ContactSystem::n_points)
+      .def("to_dict", &system_to_dict);
+  pyb::class_<rate::ContactSystem3d>(m, "ContactSystem3dData",
+                                     "A parsed \"dim\": 3 system (rate::ContactSystem3d); opaque")
+      .def_static("from_json", [](const std::string& json_text) {
+        return rate::parse_contact_system_3d(json_text, "system");
+      })
+      .def_static("from_file", &rate::read_contact_system_3d)
+      .def_property_readonly("n_points", &rate::ContactSystem3d::n_points)
+      .def_property_readonly("name", [](const rate::ContactSystem3d& s) { return s.name; });
 }
 
 }  // namespace cpkit::py

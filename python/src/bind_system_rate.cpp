@@ -1,5 +1,6 @@
 // The N-point rate problem (rate_problem/rate/system_rate.hpp): every solution for a load
-// rate dF, and the counts over many load directions (the fast summary path, one call).
+// rate dF, and the counts over many load directions (the fast summary path, one call). The
+// system is the parsed _cpkit.ContactSystemData (bind_system.cpp), not re-read per call.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -10,8 +11,6 @@
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 
 namespace cpkit::py {
-
-rate::ContactSystem system_from_json(const std::string& json_text);
 
 namespace {
 
@@ -32,8 +31,7 @@ pyb::list type_list(const std::vector<rate::SolutionType>& types) {
   return out;
 }
 
-pyb::dict solve_system_rate(const std::string& json_text, const Vec& dF, const std::string& method) {
-  const rate::ContactSystem sys = system_from_json(json_text);
+pyb::dict solve_system_rate(const rate::ContactSystem& sys, const Vec& dF, const std::string& method) {
   const auto m = rate::rate_method_from_string(method);
   if (!m) throw InputError("method must be one of enumerate, lemke, fb-newton, ipopt, got '" + method + "'");
   rate::SystemRateSolutionSet set;
@@ -68,9 +66,8 @@ pyb::dict solve_system_rate(const std::string& json_text, const Vec& dF, const s
 
 /// Count, number of distinct type tuples and reliability for dF = cos(theta) e1 + sin(theta) e2
 /// at every theta, by the precomputed fast path (GIL released for the loop).
-pyb::dict system_direction_counts(const std::string& json_text, const Vec& e1, const Vec& e2,
+pyb::dict system_direction_counts(const rate::ContactSystem& sys, const Vec& e1, const Vec& e2,
                                   const Vec& theta) {
-  const rate::ContactSystem sys = system_from_json(json_text);
   const Eigen::Index n = 2 * sys.n_points();
   if (e1.size() != n || e2.size() != n)
     throw InputError("load patterns e1, e2 must have 2N = " + std::to_string(n) + " entries, got " +
