@@ -4,10 +4,14 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cli_common.hpp"
 #include "data_files.hpp"
+#include "machine_resources.hpp"
+#include "memory_limit.hpp"
 #include "platform/mpi_session.hpp"
 #include "run_program.hpp"
 
@@ -160,6 +164,42 @@ void GridFiles::discard() {
     fs::remove(f + ".partial", ec);
   }
   finals_.clear();
+}
+
+bool write_map_json(const std::string& prefix, bool plot, nlohmann::json& j,
+                    nlohmann::json& files) {
+  files["json"] = fs::path(prefix).filename().string() + ".json";
+  j["files"] = files;
+  write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+  if (!plot) return true;
+  const bool drawn = run_map_plot(prefix, files);
+  j["files"] = files;
+  write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+  return drawn;
+}
+
+void print_written(const std::string& prefix, const nlohmann::json& files) {
+  std::cout << "wrote";
+  for (const auto& [k, v] : files.items())
+    std::cout << ' ' << (fs::path(prefix).parent_path() / v.get<std::string>()).string();
+  std::cout << '\n';
+}
+
+void check_output_fits(const std::string& cells, const std::string& fewer, double output,
+                       double max_output, const std::string& dir, const std::string& limit_hint,
+                       const std::string& disk_hint, bool gb) {
+  if (output > max_output)
+    throw InputError("the map has " + cells + " and its output would take about " +
+                     byte_text(output) + " (estimated), more than --max-output " +
+                     byte_text(max_output) + ": " + fewer + limit_hint + ", or raise --max-output");
+  if (!(output > 0)) return;
+  const double free = free_disk_bytes(dir);
+  if (free < 0 || !(output > 0.95 * free)) return;
+  std::ostringstream gbs;  // the N-point maps' wording: "1.23 GB but only 0.5 GB"
+  gbs << std::setprecision(3) << output / 1e9 << " GB but only " << free / 1e9 << " GB";
+  throw InputError("the map has " + cells + " and its output would take about " +
+                   (gb ? gbs.str() : byte_text(output) + " but only " + byte_text(free)) +
+                   " is free in '" + (dir.empty() ? "." : dir) + "': " + fewer + disk_hint);
 }
 
 void prepare_out_prefix(const std::string& prefix) {

@@ -79,6 +79,31 @@ bool run_to_files(GridFiles& out, Result& res, Call&& call) {
   return true;
 }
 
+/// The values of a map axis (MapAxis, SystemMapAxis: n and value(i)), for PREFIX_x.npy.
+template <class Axis>
+std::vector<double> axis_values(const Axis& ax) {
+  std::vector<double> v(static_cast<std::size_t>(ax.n));
+  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
+  return v;
+}
+
+/// Writes PREFIX.json (files["json"] added, j["files"] = files; under a temporary name, renamed)
+/// and, with `plot`, draws the picture (run_map_plot) and writes PREFIX.json again with the
+/// picture's files. False when the picture was asked for and not drawn (the caller exits 4).
+bool write_map_json(const std::string& prefix, bool plot, nlohmann::json& j,
+                    nlohmann::json& files);
+
+/// "wrote DIR/F1 DIR/F2 ..." on stdout: the files of `files`, next to PREFIX.
+void print_written(const std::string& prefix, const nlohmann::json& files);
+
+/// Refuses (InputError, exit 2) a map whose estimated `output` bytes exceed --max-output or 95 %
+/// of the free disk in `dir` ("the map has CELLS and its output would take about ..."; `fewer`
+/// says what to reduce; the hints are appended to the two messages; `gb`: the disk message in
+/// GB, as the N-point maps word it).
+void check_output_fits(const std::string& cells, const std::string& fewer, double output,
+                       double max_output, const std::string& dir, const std::string& limit_hint,
+                       const std::string& disk_hint, bool gb = false);
+
 /// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.
 void prepare_out_prefix(const std::string& prefix);
 

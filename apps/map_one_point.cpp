@@ -183,13 +183,6 @@ struct OnePointRun {
   std::function<void()> print_text;
 };
 
-/// The vector of an axis's values (the _x/_y files).
-std::vector<double> axis_values(const MapAxis& ax) {
-  std::vector<double> v(static_cast<std::size_t>(ax.n));
-  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
-  return v;
-}
-
 /// A grid map's summary into the run's JSON, its disagreements and unreliable evaluations on
 /// stderr.
 template <class Map>
