@@ -132,6 +132,7 @@ void write_system_csv_header(const SystemMapAxis& axis, std::ostream& out) {
 void write_system_csv_rows(const SystemMapAxis& axis, const std::vector<double>& theta,
                            const SystemParamDirectionRows& rows, std::ostream& out) {
   const std::size_t cols = theta.size();
+  out << std::setprecision(17);
   for (int i = rows.row_begin; i < rows.row_end; ++i)
     for (std::size_t jj = 0; jj < cols; ++jj) {
       const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;
@@ -149,6 +150,7 @@ void write_system_csv_header(const SystemMapAxis& axis1, const SystemMapAxis& ax
 void write_system_csv_rows(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
                            const SystemParamParamRows& rows, std::ostream& out) {
   const std::size_t cols = static_cast<std::size_t>(axis2.n);
+  out << std::setprecision(17);
   for (int i = rows.row_begin; i < rows.row_end; ++i)
     for (int jj = 0; jj < axis2.n; ++jj) {
       const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;

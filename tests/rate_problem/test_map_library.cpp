@@ -1,0 +1,328 @@
+// The map functions moved out of `cpkit map` into the library (issue 25), called directly:
+// the JSON and CSV of the N-point maps against the one-point closed form (the analytic route),
+// the 3-D map plan and its JSON against the 2-D closed form on the great circle g = 0, the
+// estimate and output size against hand counts, the system fingerprint against FNV-1a computed
+// independently (Python struct packing of the documented byte order).
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/direction_map.hpp"
+#include "cpkit/rate_problem/maps/map_3d_plan.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
+#include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/report/map_json.hpp"
+
+using namespace cpkit::rate;
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+/// One point in state b, a11 = 1, a12 = 0.8, a22 = 1.5, mu = 2 > a11/a12: a wedge of load
+/// directions with three solutions (the Fig. 5 situation).
+ContactSystem wedge_system() {
+  ContactSystem S;
+  S.name = "wedge";
+  S.A.resize(2, 2);
+  S.A << 1.0, 0.8, 0.8, 1.5;
+  SystemPoint p;
+  p.mu = 2.0;
+  p.C_T = 0.25;
+  S.points = {p};
+  return S;
+}
+
+/// The same point as a one-point model (the closed form's input).
+ContactParameters wedge_params(double mu = 2.0) {
+  ContactParameters p;
+  p.a11 = 1.0;
+  p.a12 = 0.8;
+  p.a22 = 1.5;
+  p.mu = mu;
+  p.C_T = 0.25;
+  return p;
+}
+
+Map3dRequest request_3d(const std::string& text, const std::string& kind,
+                        std::vector<std::string> given) {
+  Map3dRequest r;
+  r.path = "test.json";
+  r.file = parse_system_file(text, "test.json");
+  r.kind = kind;
+  r.given = std::move(given);
+  return r;
+}
+
+// The decoupled isotropic point of test_sphere_map_3d.cpp: its great circle g = 0 is the 2-D
+// model with a11 = 1, a12 = 0.8, a22 = 1.5.
+const char* kDecoupled3d = R"({"name": "decoupled", "dim": 3,
+  "A": [[1.0, 0.0, 0.8], [0.0, 2.0, 0.0], [0.8, 0.0, 1.5]],
+  "points": [{"state": "b", "mu": 2, "C_T": 0.25, "alpha": [1, 1]}]})";
+
+}  // namespace
+
+TEST_CASE("system direction map JSON: N = 1 measures equal the one-point closed form",
+          "[rate][maps][report]") {
+  const ContactSystem S = wedge_system();
+  const SystemDirectionMap m = compute_system_direction_map(S);
+  const nlohmann::json j = system_direction_map_json(m, S, "wedge.json");
+  CHECK(j["kind"] == "direction");
+  CHECK(j["complete"] == true);
+  CHECK(j["input"]["system"] == "wedge.json");
+  CHECK(j["input"]["n_points"] == 1);
+  // Default patterns (docs/maps.md): e1 = (1, 0), e2 = (0, 1).
+  CHECK(j["input"]["patterns"] == nlohmann::json::parse("[[1.0, 0.0], [0.0, 1.0]]"));
+  // The open sectors cover the circle: their measures add up to 2 pi.
+  double total = 0;
+  for (const auto& [count, v] : j["counts"].items()) total += v["radians"].get<double>();
+  CHECK(total == Approx(kTwoPi).epsilon(1e-12));
+  // Per count, the measure of the directions with that count from the one-point analytic
+  // route, sampled densely (the sector ends are the only error: 2 pi / samples per end).
+  std::map<int, double> sampled;
+  const int samples = 20000;
+  for (int k = 0; k < samples; ++k) {
+    const double t = (k + 0.5) * kTwoPi / samples;
+    const RateSummary r =
+        summarize_rate_analytic(wedge_params(), ContactState{}, LoadRate{std::cos(t), std::sin(t)});
+    sampled[r.count] += kTwoPi / samples;
+  }
+  REQUIRE(sampled.size() >= 2);  // the wedge: 1 and 3 solutions
+  for (const auto& [count, w] : sampled) {
+    CAPTURE(count);
+    REQUIRE(j["counts"].contains(std::to_string(count)));
+    CHECK(std::abs(j["counts"][std::to_string(count)]["radians"].get<double>() - w) <
+          4 * kTwoPi / samples);
+  }
+  // The CSV: a header, one line per sector and per critical direction.
+  std::ostringstream csv;
+  write_system_direction_csv(m, 1, csv);
+  std::istringstream in(csv.str());
+  std::string line;
+  int lines = 0;
+  std::getline(in, line);
+  CHECK(line == "kind,theta_from,theta_to,count,types");
+  while (std::getline(in, line)) ++lines;
+  CHECK(lines == static_cast<int>(j["sectors"].size() + j["critical"].size()));
+}
+
+TEST_CASE("system param-direction JSON: every cell's count is the one-point closed form",
+          "[rate][maps][report]") {
+  const ContactSystem S = wedge_system();
+  SystemMapAxis axis;
+  axis.param = parse_system_map_parameter("mu", 1);
+  axis.from = 0.5;
+  axis.to = 3.0;
+  axis.n = 6;
+  const int theta_n = 24;
+  const SystemParamDirectionMap m = compute_system_param_direction_map(S, axis, theta_n);
+  const nlohmann::json input = {{"system", "wedge.json"}};
+  const nlohmann::json j = system_param_direction_json(m, 1, input);
+  CHECK(j["kind"] == "param-direction");
+  CHECK(j["input"] == input);
+  CHECK(j["cells"] == 6 * 24);
+  CHECK(j["complete"] == true);
+  // Cells per count from the analytic route at the cell centres theta_j = (j + 1/2) 2 pi / n.
+  std::map<int, int64_t> expected;
+  for (int i = 0; i < axis.n; ++i)
+    for (int k = 0; k < theta_n; ++k) {
+      const double t = (k + 0.5) * kTwoPi / theta_n;
+      const double mu = 0.5 + 2.5 * i / 5.0;
+      ++expected[summarize_rate_analytic(wedge_params(mu), ContactState{},
+                                         LoadRate{std::cos(t), std::sin(t)})
+                     .count];
+    }
+  REQUIRE(expected.size() >= 2);
+  std::map<int, int64_t> got;
+  int64_t cells = 0;
+  for (const auto& c : j["counts"]) {
+    got[c["count"].get<int>()] = c["cells"].get<int64_t>();
+    cells += c["cells"].get<int64_t>();
+  }
+  CHECK(got == expected);
+  CHECK(cells == 6 * 24);
+  int64_t pattern_cells = 0;
+  for (const auto& p : j["patterns"]) pattern_cells += p["cells"].get<int64_t>();
+  CHECK(pattern_cells == 6 * 24);
+  // CSV: the header names the axis; the first row is mu = 0.5 at theta_0 = pi / 24.
+  std::ostringstream csv;
+  write_system_csv_header(axis, csv);
+  CHECK(csv.str() == "mu,theta,count,pattern\n");
+  SystemParamDirectionRows rows;
+  rows.row_begin = 0;
+  rows.row_end = 1;
+  rows.count = m.count.data();
+  rows.pattern = m.pattern.data();
+  std::ostringstream row;
+  write_system_csv_rows(axis, m.theta, rows, row);
+  std::istringstream in(row.str());
+  double mu = 0, theta = 0;
+  char comma = 0;
+  in >> mu >> comma >> theta;
+  CHECK(mu == 0.5);
+  CHECK(theta == Approx(kTwoPi / 48).epsilon(1e-15));
+}
+
+TEST_CASE("system param-param JSON: documented class codes, cells add up",
+          "[rate][maps][report]") {
+  const ContactSystem S = wedge_system();
+  SystemMapAxis a1, a2;
+  a1.param = parse_system_map_parameter("mu", 1);
+  a1.from = 0.5;
+  a1.to = 3.0;
+  a1.n = 4;
+  a2.param = parse_system_map_parameter("C_T", 1);
+  a2.from = 0.0;
+  a2.to = 1.0;
+  a2.n = 3;
+  const SystemParamParamMap m = compute_system_param_param_map(S, a1, a2);
+  const nlohmann::json j = system_param_param_json(m, 1, nlohmann::json::object());
+  // docs/maps.md: unique 0, non-unique 1, no-solution 2, none-and-several 3.
+  CHECK(j["class_codes"] == nlohmann::json::parse(
+                                R"({"unique": 0, "non-unique": 1, "no-solution": 2,
+                                    "none-and-several": 3})"));
+  CHECK(j["cells"] == 12);
+  int64_t cells = 0;
+  for (const auto& c : j["classes"]) cells += c["cells"].get<int64_t>();
+  CHECK(cells == 12);
+  // Per cell, the class from the one-point analytic route sampled densely over directions
+  // (unique: 1 everywhere; non-unique: some > 1, none 0; no-solution: some 0, none > 1).
+  std::map<std::string, int64_t> expected, got;
+  for (int i = 0; i < a1.n; ++i)
+    for (int k = 0; k < a2.n; ++k) {
+      ContactParameters q = wedge_params(a1.value(i));
+      q.C_T = a2.value(k);
+      bool none = false, several = false;
+      for (int t = 0; t < 4000; ++t) {
+        const double th = (t + 0.5) * kTwoPi / 4000;
+        const int c = summarize_rate_analytic(q, ContactState{}, LoadRate{std::cos(th), std::sin(th)}).count;
+        none = none || c == 0;
+        several = several || c > 1 || c < 0;
+      }
+      ++expected[none && several ? "none-and-several"
+                 : none          ? "no-solution"
+                 : several       ? "non-unique"
+                                 : "unique"];
+    }
+  for (const auto& c : j["classes"]) got[c["class"].get<std::string>()] = c["cells"].get<int64_t>();
+  CHECK(got == expected);
+  CHECK(expected.size() >= 2);
+}
+
+TEST_CASE("system fingerprint: FNV-1a of the documented byte order", "[rate][maps]") {
+  ContactSystem S;
+  S.A.resize(2, 2);
+  S.A << 2.0, 0.5, 0.5, 1.0;
+  SystemPoint p;
+  p.mu = 0.7;
+  p.C_T = 0.25;
+  S.points = {p};
+  // Python: struct.pack('<qq4d8d3ii3q', ...) hashed with FNV-1a 64 (offset 1469598103934665603,
+  // prime 1099511628211).
+  CHECK(system_data_fingerprint(S) == "a447e5c029e6decd");
+  Eigen::VectorXd dF(2);
+  dF << 1.0, -0.5;
+  S.dF = dF;
+  CHECK(system_data_fingerprint(S) == "c522d79dcc465047");
+}
+
+TEST_CASE("3-D map plan: the sphere map on g = 0 is the 2-D closed form; JSON and sizes",
+          "[rate3d][maps][report]") {
+  Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+  r.n = 9;
+  r.n2 = 8;  // g = 0 is column 3 (g in (-pi, pi])
+  const Map3dPlan p = make_map_3d_plan(r);
+  CHECK(p.cells == 72);
+  CHECK(p.cells_text == "9 x 8 cells (--n x --n2)");
+  CHECK(p.fewer == "use a smaller --n or --n2");
+  CHECK(p.input["route"] == "exact");
+  CHECK(p.input["others"] == "zero");
+  CHECK(p.input["beta_to"].get<double>() == Approx(kTwoPi / 2));
+  // 3 bytes a cell, 8 per axis value, 5 headers of 4096: 216 + 136 + 20480.
+  CHECK(map_3d_output_bytes(p) == 20832.0);
+  const Map3d m = compute_map_3d(p, p.options);
+  REQUIRE(m.rows == 9);
+  REQUIRE(m.cols == 8);
+  REQUIRE(m.y[3] == 0.0);
+  ContactParameters p2 = wedge_params();
+  for (int i = 0; i < m.rows; ++i) {
+    const double b = m.x[static_cast<std::size_t>(i)];
+    const RateSummary two = summarize_rate_analytic(p2, ContactState{},
+                                                    LoadRate{std::sin(b), std::cos(b)});
+    CAPTURE(i, b);
+    CHECK(m.count_at(i, 3) == two.count);
+  }
+  const nlohmann::json j = map_3d_json(m, "sphere", p.input, p.xname, p.yname);
+  CHECK(j["dim"] == 3);
+  CHECK(j["axes"] == nlohmann::json::parse(R"({"x": "beta", "y": "gamma"})"));
+  // docs/contact_3d.md: open 1, separation 2, stick 4, slip 8.
+  CHECK(j["type_bits"] ==
+        nlohmann::json::parse(R"({"open": 1, "separation": 2, "stick": 4, "slip": 8})"));
+  CHECK(j["complete"] == true);
+  CHECK(j["time_limit_reached"] == false);
+  int64_t by_count = 0, by_type = 0;
+  for (const auto& c : j["counts"]) by_count += c["cells"].get<int64_t>();
+  for (const auto& t : j["types"]) by_type += t["cells"].get<int64_t>();
+  CHECK(by_count == 72);
+  CHECK(by_type == 72);
+}
+
+TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
+  SECTION("a map no larger than the 4 x 8 sample is not estimated") {
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+    r.n = 3;
+    r.n2 = 8;
+    const Map3dPlan p = make_map_3d_plan(r);
+    int64_t sampled = -7;
+    const cpkit::Stopwatch clock;
+    CHECK(estimate_map_3d_seconds(p, 1, sampled, clock, 600) == -1);
+    CHECK(sampled == 0);
+  }
+  SECTION("a larger one is estimated from the 4 x 8 sample") {
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+    r.n = 20;
+    r.n2 = 30;
+    const Map3dPlan p = make_map_3d_plan(r);
+    int64_t sampled = 0;
+    const cpkit::Stopwatch clock;
+    CHECK(estimate_map_3d_seconds(p, 2, sampled, clock, 600) > 0);
+    CHECK(sampled == 32);
+  }
+  SECTION("param-direction: the directions and the echo") {
+    Map3dRequest r = request_3d(kDecoupled3d, "param-direction",
+                                {"--param", "--from", "--to", "--n", "--theta-n"});
+    r.param = "mu";
+    r.from = 1;
+    r.to = 3;
+    r.n = 5;
+    r.theta_n = 12;
+    const Map3dPlan p = make_map_3d_plan(r);
+    CHECK(p.cells == 60);
+    CHECK(p.cells_text == "5 x 12 cells (--n x --theta-n)");
+    CHECK(p.xname == "mu");
+    CHECK(p.yname == "theta");
+    CHECK(p.input["theta_to"].get<double>() == Approx(kTwoPi));
+  }
+  SECTION("refusals name the option") {
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--facets"});
+    r.facets = 2;
+    CHECK_THROWS_WITH(make_map_3d_plan(r), "--facets must be in [3, 64], got 2");
+    r = request_3d(kDecoupled3d, "sphere", {"--point"});
+    r.point = 2;
+    CHECK_THROWS_WITH(make_map_3d_plan(r), "--point must be in [1, 1], got 2");
+    r = request_3d(kDecoupled3d, "param-param",
+                   {"--param", "--from", "--to", "--param2", "--from2", "--to2"});
+    r.param = "mu";
+    r.param2 = "C_T";
+    r.from = 1;
+    r.to = 2;
+    r.to2 = 1;
+    CHECK_THROWS_WITH(make_map_3d_plan(r), Catch::Contains("needs \"dF\""));
+  }
+}
