@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
-#include "cpkit/rate_problem/maps/npy_writer.hpp"
+#include "cpkit/rate_problem/maps/map_files.hpp"
 #include "output_guard.hpp"
 #include "platform/mpi_session.hpp"
 
@@ -24,45 +24,14 @@ namespace cpkit::cli {
 /// more than a second, and the phase's final line at 100 %.
 rate::MapProgress make_map_progress();
 
-/// Writes a text file through fn, under a temporary name renamed at the end (atomic); throws
-/// InputError naming the file when it cannot be written.
-void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn);
-
 /// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
 /// written either way; the caller then exits 4: a requested plot that fails is a failure).
 /// Adds "png" and "svg" to `files` on success.
 bool run_map_plot(const std::string& prefix, nlohmann::json& files);
 
-/// The cell files of a grid map under PREFIX: .npy arrays appended block by block (or one CSV),
-/// each recorded in `files` under its key (file names relative to PREFIX's folder). Files are
-/// written as NAME.partial and renamed by finish(); a map that fails part-way calls discard():
-/// no file that looks complete stays behind.
-class GridFiles {
- public:
-  GridFiles(std::string prefix, nlohmann::json& files);
-  /// PREFIX_<key>.npy, rows x cols items of item_bytes (descr "|i1", "|u1", "<u2").
-  void add_npy(const std::string& key, const char* descr, int64_t rows, int64_t cols,
-               int item_bytes = 1);
-  /// PREFIX_<key>.npy written at once (axis values).
-  void write_vector(const std::string& key, const std::vector<double>& v);
-  /// PREFIX.csv, opened for writing.
-  std::ostream& open_csv();
-  bool has_csv() const { return csv_.is_open(); }
-  std::ostream& csv() { return csv_; }
-  /// Appends `cells` items of each array to the .npy files in the order they were added
-  /// (nullptr entries are skipped).
-  void append(std::initializer_list<const void*> arrays, int64_t cells);
-  void finish();
-  void discard();
-
- private:
-  std::string prefix_, name_;
-  nlohmann::json& files_;
-  std::vector<std::unique_ptr<rate::NpyWriter>> npy_;
-  std::ofstream csv_;
-  std::vector<std::string> finals_;  ///< final paths, written as <path>.partial until finish()
-  std::string partial(const std::string& final_path);
-};
+/// The map's files (maps/map_files.hpp).
+using rate::GridFiles;
+using rate::write_text_file;
 
 /// A map kind's chunked library run (`call`, returning the result) with the files discarded if
 /// it fails; false on ranks other than 0 (rank 0 writes and prints).

@@ -151,21 +151,9 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
   if (e.memory > limit)
     throw InputError("the map has " + cells + " and would need about " + byte_text(e.memory) +
                      " of memory; " + byte_text(limit) + " is available: " + fewer);
-  if (e.output > max_output)
-    throw InputError("the map has " + cells + " and its output would take about " +
-                     byte_text(e.output) + " (estimated), more than --max-output " +
-                     byte_text(max_output) + ": " + fewer +
-                     (csv ? ", drop --format csv (the .npy output takes 1-5 bytes per cell)" : "") +
-                     ", or raise --max-output");
-  if (e.output > 0) {
-    const double free = free_disk_bytes(out_dir);
-    if (free >= 0 && e.output > 0.95 * free)
-      throw InputError("the map has " + cells + " and its output would take about " +
-                       byte_text(e.output) + " but only " + byte_text(free) + " is free in '" +
-                       (out_dir.empty() ? "." : out_dir) + "': " + fewer +
-                       (csv ? ", or drop --format csv (the .npy output takes 1-5 bytes per cell)"
-                            : ""));
-  }
+  const std::string drop = csv ? " drop --format csv (the .npy output takes 1-5 bytes per cell)" : "";
+  check_output_fits(cells, fewer, e.output, max_output, out_dir, csv ? "," + drop : "",
+                    csv ? ", or" + drop : "");
 }
 
 /// What the parts of a one-point map run share (run_map_one_point, run_grid_map).
@@ -484,14 +472,7 @@ int run_map_one_point(const MapArgs& a) {
   }
   bool plot_failed = false;
   if (!prefix.empty()) {
-    files["json"] = name + ".json";
-    j["files"] = files;
-    write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
-    if (a.plot) {
-      plot_failed = !run_map_plot(prefix, files);
-      j["files"] = files;
-      write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
-    }
+    plot_failed = !write_map_json(prefix, a.plot, j, files);
     // The outputs are complete: the finished chunks kept for --resume are no longer needed.
     if (s.kind != MapKind::kDirection) rate::remove_checkpoint(prefix + ".parts");
   }
@@ -499,11 +480,7 @@ int run_map_one_point(const MapArgs& a) {
     print_json(j);
   } else {
     print_text();
-    if (!prefix.empty()) {
-      std::cout << "wrote";
-      for (const auto& [k, v] : files.items()) std::cout << ' ' << (fs::path(prefix).parent_path() / v.get<std::string>()).string();
-      std::cout << '\n';
-    }
+    if (!prefix.empty()) print_written(prefix, files);
   }
   if (disagreements > 0) return kExitDisagreement;
   return plot_failed ? kExitInternal : kExitOk;  // the picture was asked for and is missing

@@ -2,17 +2,25 @@
 // the JSON and CSV of the N-point maps against the one-point closed form (the analytic route),
 // the 3-D map plan and its JSON against the 2-D closed form on the great circle g = 0, the
 // estimate and output size against hand counts, the system fingerprint against FNV-1a computed
-// independently (Python struct packing of the documented byte order).
+// independently (Python struct packing of the documented byte order), the grid files against
+// the NPY format specification (numpy.lib.format: magic, version 1.0, header dict, 64-byte
+// aligned data).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <cstring>
 #include <map>
+#include <unistd.h>
 #include <sstream>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/map_3d_plan.hpp"
+#include "cpkit/rate_problem/maps/map_files.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
@@ -325,4 +333,60 @@ TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
     r.to2 = 1;
     CHECK_THROWS_WITH(make_map_3d_plan(r), Catch::Contains("needs \"dF\""));
   }
+}
+
+TEST_CASE("grid files: .partial until finish, NPY v1.0 bytes, nothing left by discard",
+          "[rate][maps]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("cpkit_test_map_files_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string prefix = (dir / "m").string();
+  auto read = [](const fs::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  SECTION("finish") {
+    nlohmann::json files = nlohmann::json::object();
+    GridFiles g(prefix, files);
+    g.add_npy("count", "|i1", 2, 3);
+    g.write_vector("x", {0.5, 2.0});
+    const int8_t cells[6] = {1, 3, 0, -1, 1, 1};
+    g.append({cells}, 6);
+    CHECK(fs::exists(prefix + "_count.npy.partial"));
+    CHECK_FALSE(fs::exists(prefix + "_count.npy"));
+    g.finish();
+    CHECK_FALSE(fs::exists(prefix + "_count.npy.partial"));
+    CHECK(files == nlohmann::json::parse(R"({"count": "m_count.npy", "x": "m_x.npy"})"));
+    const std::string npy = read(prefix + "_count.npy");
+    REQUIRE(npy.size() > 10);
+    CHECK(npy.substr(0, 8) == std::string("\x93NUMPY\x01\x00", 8));
+    const std::size_t header = static_cast<unsigned char>(npy[8]) + 256u * static_cast<unsigned char>(npy[9]);
+    CHECK((10 + header) % 64 == 0);
+    const std::string dict = npy.substr(10, header);
+    CHECK(dict.find("'descr': '|i1'") != std::string::npos);
+    CHECK(dict.find("'fortran_order': False") != std::string::npos);
+    CHECK(dict.find("'shape': (2, 3)") != std::string::npos);
+    REQUIRE(npy.size() == 10 + header + 6);
+    CHECK(npy.substr(10 + header) == std::string(reinterpret_cast<const char*>(cells), 6));
+    const std::string x = read(prefix + "_x.npy");
+    REQUIRE(x.size() >= 16);
+    double last = 0;
+    std::memcpy(&last, x.data() + x.size() - 8, 8);
+    CHECK(last == 2.0);
+  }
+  SECTION("discard") {
+    nlohmann::json files = nlohmann::json::object();
+    GridFiles g(prefix, files);
+    g.add_npy("types", "|u1", 1, 1);
+    g.open_csv() << "a,b\n";
+    g.discard();
+    CHECK(fs::is_empty(dir));
+  }
+  SECTION("write_text_file") {
+    write_text_file(prefix + ".json", [](std::ostream& o) { o << "{}\n"; });
+    CHECK(read(prefix + ".json") == "{}\n");
+    CHECK_FALSE(fs::exists(prefix + ".json.partial"));
+  }
+  fs::remove_all(dir);
 }
