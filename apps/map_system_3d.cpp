@@ -21,6 +21,7 @@
 #include "cli_common.hpp"
 #include "map_args.hpp"
 #include "map_files.hpp"
+#include "memory_limit.hpp"
 #include "platform/mpi_session.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
@@ -68,7 +69,7 @@ void check_request(const Map3dRequest& r) {
   const std::vector<std::string> allowed = allowed_options(r.kind);
   std::string list;
   for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-  for (const auto& o : r.given)
+  for (const auto& o : r.options_given)
     if (std::find(allowed.begin(), allowed.end(), o) == allowed.end())
       throw InputError(o + " has no effect with a dim 3 system and --kind " + r.kind +
                        " (the model comes from the system file; options: " + list +
@@ -107,7 +108,7 @@ void print_text_3d(const Map3dRequest& r, const Map3dPlan& p, const Map3d& m,
   const int N = p.sys.n_points();
   const std::string &xname = p.xname, &yname = p.yname;
   std::cout << r.kind << " map of " << N << (N == 1 ? " 3-D point" : " 3-D points") << " ("
-            << r.path << "), ";
+            << r.system << "), ";
   if (r.kind != "param-param") std::cout << "load at point " << r.point << ", ";
   std::cout << (o.facets ? "faceted with " + std::to_string(o.facets) + " facets" : std::string("exact"))
             << ": " << m.cells() << " cells\n";
@@ -138,9 +139,10 @@ void print_text_3d(const Map3dRequest& r, const Map3dPlan& p, const Map3d& m,
 }  // namespace
 
 int run_map_system_3d(const Map3dRequest& r) {
+  const double max_output = parse_byte_size(r.max_output, "--max-output");
   check_request(r);
   std::unique_ptr<PrefixLock> lock;  // held until the map is written
-  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
+  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.system}});
   const Stopwatch clock;
   Map3dPlan p = make_map_3d_plan(r);
   Map3dOptions& o = p.options;
@@ -148,7 +150,7 @@ int run_map_system_3d(const Map3dRequest& r) {
     throw InputError("the map has " + p.cells_text + ", more than the " +
                      std::to_string(kMaxMap3dCells) + " cells a 3-D map holds: " + p.fewer);
   if (!r.out.empty())  // before any cell is computed
-    check_output_fits(p.cells_text, p.fewer, map_3d_output_bytes(p), r.max_output,
+    check_output_fits(p.cells_text, p.fewer, map_3d_output_bytes(p), max_output,
                       fs::path(r.out).parent_path().string(), "", "");
   // Up-front cost from a timed sample (which also reports invalid input before the long run).
   const int threads = map_worker_threads(r.threads, p.rows());

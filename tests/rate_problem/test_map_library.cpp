@@ -21,6 +21,7 @@
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/map_3d_plan.hpp"
 #include "cpkit/rate_problem/maps/map_files.hpp"
+#include "cpkit/rate_problem/maps/map_request.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
@@ -61,10 +62,10 @@ ContactParameters wedge_params(double mu = 2.0) {
 Map3dRequest request_3d(const std::string& text, const std::string& kind,
                         std::vector<std::string> given) {
   Map3dRequest r;
-  r.path = "test.json";
+  r.system = "test.json";
   r.file = parse_system_file(text, "test.json");
   r.kind = kind;
-  r.given = std::move(given);
+  r.options_given = std::move(given);
   return r;
 }
 
@@ -389,4 +390,66 @@ TEST_CASE("grid files: .partial until finish, NPY v1.0 bytes, nothing left by di
     CHECK_FALSE(fs::exists(prefix + ".json.partial"));
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("map request: the one-point setup from a preset and the options over it",
+          "[rate][maps]") {
+  MapRequest a;
+  SECTION("fig5b is the paper's Fig. 5(b) model; --mu overrides it") {
+    a.preset = "fig5b";
+    MapSetup s = make_map_setup(a);
+    // Stromberg-Johansson-Klarbring Fig. 5: a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25, mu = 3.
+    CHECK(s.params.a11 == 1.0);
+    CHECK(s.params.a12 == 0.5);
+    CHECK(s.params.a22 == 1.0);
+    CHECK(s.params.C_T == 0.25);
+    CHECK(s.params.mu == 3.0);
+    CHECK(s.state.label == StateLabel::kB);
+    CHECK(s.kind == MapKind::kDirection);
+    a.mu = 0.75;
+    a.options_given = {"--mu"};
+    s = make_map_setup(a);
+    CHECK(s.params.mu == 0.75);
+  }
+  SECTION("a model from the options; a param-direction axis") {
+    a.a11 = 2;
+    a.a12 = 0.5;
+    a.a22 = 1;
+    a.kind = "param-direction";
+    a.param = "mu";
+    a.from = 0.1;
+    a.to = 2;
+    a.n = 7;
+    a.options_given = {"--a11", "--a12", "--a22", "--kind", "--param", "--from", "--to", "--n"};
+    const MapSetup s = make_map_setup(a);
+    CHECK(s.kind == MapKind::kParamDirection);
+    CHECK(s.axis.param == MapParameter::kMu);
+    CHECK(s.axis.n == 7);
+    CHECK(s.axis.value(6) == Approx(2.0).epsilon(1e-15));
+    CHECK(s.params.a11 == 2.0);
+  }
+  SECTION("refusals and notes") {
+    a.preset = "fig5a";
+    a.options_given = {"--P_N"};
+    a.P_N = 1;
+    CHECK_THROWS_WITH(make_map_setup(a), Catch::StartsWith("--P_N has no effect in state b"));
+    a.options_given = {"--mu", "--param", "--from", "--to", "--kind"};
+    a.kind = "param-direction";
+    a.param = "mu";
+    a.to = 1;
+    CHECK_THROWS_WITH(make_map_setup(a),
+                      Catch::StartsWith("--mu has no effect: mu varies along the map's"));
+    MapRequest b;
+    b.options_given = {"--a11"};
+    b.a11 = 1;
+    CHECK_THROWS_WITH(make_map_setup(b), Catch::Contains("(missing: --a12 --a22 --mu)"));
+    MapRequest c;
+    c.preset = "fig5a";
+    c.k_a = 0.5;
+    c.options_given = {"--k_a"};
+    std::vector<std::string> notes;
+    (void)make_map_setup(c, [&](const std::string& n) { notes.push_back(n); });
+    REQUIRE(notes.size() == 1);
+    CHECK(notes[0].rfind("--k_a does not enter state b", 0) == 0);
+  }
 }

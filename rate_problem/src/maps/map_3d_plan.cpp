@@ -56,11 +56,11 @@ void set_route(const Map3dRequest& r, Map3dPlan& p) {
     int nb = 0, nd = 0;
     for (const auto& pt : p.sys.points) nb += pt.state.state == 'b', nd += pt.state.state == 'd';
     if (nb > kMaxGrazing3d)
-      throw InputError(r.path + ": " + std::to_string(nb) + " grazing points (state b); the "
+      throw InputError(r.system + ": " + std::to_string(nb) + " grazing points (state b); the "
                        "faceted route takes at most " + std::to_string(kMaxGrazing3d) +
                        " (2^n_b separation cases per cell)");
     if (nd + o.facets * nb > lcp::kMaxEnumerationSize)
-      throw InputError(r.path + ": the faceted LCP would have size n_d + K n_b = " +
+      throw InputError(r.system + ": the faceted LCP would have size n_d + K n_b = " +
                        std::to_string(nd + o.facets * nb) + " > " +
                        std::to_string(lcp::kMaxEnumerationSize) + ": use fewer --facets");
   }
@@ -146,10 +146,6 @@ void set_second_axis(const Map3dRequest& r, Map3dPlan& p) {
 
 }  // namespace
 
-bool Map3dRequest::has(const std::string& o) const {
-  return std::find(given.begin(), given.end(), o) != given.end();
-}
-
 Map3dPlan make_map_3d_plan(const Map3dRequest& r) {
   Map3dPlan p;
   p.kind = r.kind;
@@ -157,7 +153,7 @@ Map3dPlan make_map_3d_plan(const Map3dRequest& r) {
   const int N = p.sys.n_points();
   set_route(r, p);
   const Map3dOptions& o = p.options;
-  p.input = {{"system", r.path}, {"name", p.sys.name}, {"n_points", N}, {"point", r.point},
+  p.input = {{"system", r.system}, {"name", p.sys.name}, {"n_points", N}, {"point", r.point},
              {"route", o.facets ? "faceted" : "exact"},
              {"facets", o.facets ? nlohmann::json(o.facets) : nlohmann::json()}};
   if (r.kind == "sphere") {

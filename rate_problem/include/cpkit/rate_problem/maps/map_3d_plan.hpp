@@ -13,25 +13,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cpkit/core/timer.hpp"
+#include "cpkit/rate_problem/maps/map_request.hpp"
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
-#include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {
 
-/// What a 3-D map was asked: the options of `cpkit map` that apply, as given.
-struct Map3dRequest {
-  std::string path, kind, out, param, param2, others;  ///< kind: sphere|param-direction|param-param
-  SystemFile file;  ///< the --system file, read once (its dim is 3)
-  bool json = false, plot = false;
-  double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0, gamma = 0;
-  double time_limit = 600;                        ///< seconds for the whole command
-  double max_output = 4.0 * 1024 * 1024 * 1024;  ///< bytes (written outputs)
-  int n = 0, n2 = 0, theta_n = 0, threads = 0, facets = 0, point = 1;  ///< point: 1-based
-  std::string format;
-  std::vector<std::string> given;  ///< the options given (names as "--n")
-  bool has(const std::string& o) const;
-};
+/// What a 3-D map was asked: the request of `cpkit map` (map_request.hpp); `system` is the file's
+/// path (for messages and the echo), `file` the file read once.
+using Map3dRequest = MapRequest;
 
 /// The map a request computes, with its echo (`input`) and the words of the messages.
 struct Map3dPlan {

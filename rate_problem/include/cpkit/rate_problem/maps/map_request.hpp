@@ -1,0 +1,61 @@
+#pragma once
+/// \file map_request.hpp
+/// What `cpkit map` was asked (docs/maps.md), as given: one request for every map kind (one
+/// point, N points, 3-D systems), and the one-point map it describes (make_map_setup: the
+/// preset, the model options over it, the kind and the axes). Values in the model's units;
+/// angles in radians. Bad input: InputError whose message names the option (--a11, --param,
+/// ...), as the program prints it (exit 2).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_presets.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
+
+namespace cpkit::rate {
+
+/// The options of `cpkit map` as given. Defaults are those `cpkit map --help` shows; options
+/// whose default depends on the map (--n, --theta-to, ...) are read only when given.
+struct MapRequest {
+  std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
+  std::string system;  ///< --system FILE (N points or a 3-D system)
+  SystemFile file;     ///< the --system file, read once by the caller (dim known)
+  std::string format = "npy";
+  double time_limit = 600;  ///< seconds the map may take (--time-limit)
+  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 1, P_N = 0;
+  int sgnPT = 1;
+  double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
+  int n = 0, n2 = 0, theta_n = 360, threads = 0;
+  std::string max_output = "4G";  ///< --max-output SIZE (core/memory_limit.hpp)
+  bool plot = false, json = false, list_presets = false, resume = false;
+  // 3-D systems only: --facets K, --point i (1-based), --others zero|file, --gamma G
+  int facets = 0, point = 1;
+  std::string others;
+  double gamma = 0;
+  std::vector<std::string> options_given;  ///< the options given, as "--n"
+  bool given(const std::string& option) const;
+  bool has(const std::string& option) const { return given(option); }
+};
+
+/// The one-point map of a request: the model, the kind and the axes.
+struct MapSetup {
+  ContactParameters params;
+  ContactState state;
+  MapKind kind = MapKind::kDirection;
+  MapAxis axis, axis2;
+  bool have_axis = false, have_axis2 = false;
+  int theta_n = 360;
+};
+
+/// The one-point map of the request: the preset's model, kind and axes (if any), then the
+/// options given over them (--kind, --state, --criterion, the model values, --param/--from/
+/// --to/--n and the second axis, --theta-n). Refuses options that would have no effect (never a
+/// hidden default), a missing model, invalid model values or states, an axis without its range,
+/// a kind without its axes. `note` receives remarks on accepted options (a material parameter
+/// that does not enter the state). The axes' own checks (MapAxis::validate: n, from, to) and
+/// the --theta-n range are left to the caller, which words them in options.
+MapSetup make_map_setup(const MapRequest& a,
+                        const std::function<void(const std::string&)>& note = {});
+
+}  // namespace cpkit::rate
