@@ -33,8 +33,6 @@ namespace {
 
 using namespace cpkit::rate;
 
-std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-
 std::string joined(const std::vector<std::string>& v, const char* sep) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
@@ -112,16 +110,6 @@ struct GridRun {
   }
 };
 
-MapOptions request_options(const SystemMapRequest& r) {
-  MapOptions o;
-  o.threads = r.threads;
-  o.theta_from = r.theta_from;
-  o.theta_to = r.theta_to;
-  if (std::string e = o.validate(); !e.empty())
-    throw InputError("--theta-from/--theta-to: " + e);
-  return o;
-}
-
 /// How a grid map of the request runs (grid_map_run.hpp): checkpointed under PREFIX.parts when
 /// writing; the manifest names the version, kind, input echo (axes included) and the system's data.
 rate::GridRunOptions grid_run_options(const SystemMapRequest& r, const ContactSystem& sys,
@@ -137,38 +125,19 @@ rate::GridRunOptions grid_run_options(const SystemMapRequest& r, const ContactSy
   return o;
 }
 
-/// An axis of the request: NAME (checked against the map parameter table), from, to, n.
-SystemMapAxis axis_of(const std::string& param, double from, double to, int n, int n_points) {
-  SystemMapAxis a;
-  a.param = parse_system_map_parameter(param, n_points);
-  a.from = from;
-  a.to = to;
-  a.n = n;
-  return a;
-}
-
 /// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
 int run_param_direction(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = parse_contact_system(r.file);
-  // Limits that depend on N and the states, before any work in proportion to N.
-  check_system_map_lcp_size(sys, "a map of its cells");
+  const SystemGridPlan p = make_system_grid_plan(r);
+  const ContactSystem& sys = p.sys;
   const int N = sys.n_points();
-  const SystemMapAxis axis = axis_of(r.param, r.from, r.to, r.n, N);
-  const MapOptions options = request_options(r);
-  Eigen::VectorXd e1, e2;
-  system_map_patterns(sys, e1, e2);
+  const SystemMapAxis& axis = p.axis;
+  const MapOptions& options = p.options;
+  const nlohmann::json& input = p.input;
   GridRun run(r);
-  const std::string cells = std::to_string(r.n) + " x " + std::to_string(r.theta_n) +
-                            " cells (--n x --theta-n)";
   const nlohmann::json estimate =
       check_estimate(estimate_system_param_direction_map(sys, axis, r.theta_n, options), r,
-                     cells, "use a smaller --n or --theta-n", 3);
-  const nlohmann::json input = {
-      {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", axis.param.name()},
-      {"from", r.from}, {"to", r.to}, {"n", r.n}, {"theta_n", r.theta_n},
-      {"theta_from", r.theta_from}, {"theta_to", r.theta_to},
-      {"patterns", {as_list(e1), as_list(e2)}}};
+                     p.cells_text, p.fewer, 3);
   const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
   bool opened = false;
   auto open_files = [&] {
@@ -228,25 +197,15 @@ int run_param_direction(const SystemMapRequest& r) {
 /// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
 int run_param_param(const SystemMapRequest& r) {
   const Stopwatch clock;
-  const ContactSystem sys = parse_contact_system(r.file);
-  // Limits that depend on N and the states, before any work in proportion to N.
-  check_system_map_lcp_size(sys, "a map of its cells");
+  const SystemGridPlan p = make_system_grid_plan(r);
+  const ContactSystem& sys = p.sys;
   const int N = sys.n_points();
-  const SystemMapAxis a1 = axis_of(r.param, r.from, r.to, r.n, N);
-  const SystemMapAxis a2 = axis_of(r.param2, r.from2, r.to2, r.n2, N);
-  MapOptions options;
-  options.threads = r.threads;
-  Eigen::VectorXd e1, e2;
-  system_map_patterns(sys, e1, e2);
+  const SystemMapAxis &a1 = p.axis, &a2 = p.axis2;
+  const MapOptions& options = p.options;
+  const nlohmann::json& input = p.input;
   GridRun run(r);
-  const std::string cells =
-      std::to_string(r.n) + " x " + std::to_string(r.n2) + " cells (--n x --n2)";
   const nlohmann::json estimate = check_estimate(
-      estimate_system_param_param_map(sys, a1, a2, options), r, cells, "use a smaller --n or --n2", 5);
-  const nlohmann::json input = {
-      {"system", r.path}, {"name", sys.name}, {"n_points", N}, {"param", a1.param.name()},
-      {"from", r.from}, {"to", r.to}, {"n", r.n}, {"param2", a2.param.name()},
-      {"from2", r.from2}, {"to2", r.to2}, {"n2", r.n2}, {"patterns", {as_list(e1), as_list(e2)}}};
+      estimate_system_param_param_map(sys, a1, a2, options), r, p.cells_text, p.fewer, 5);
   bool opened = false;
   auto open_files = [&] {
     if (run.writing_npy()) {

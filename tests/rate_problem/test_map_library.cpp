@@ -453,3 +453,50 @@ TEST_CASE("map request: the one-point setup from a preset and the options over i
     CHECK(notes[0].rfind("--k_a does not enter state b", 0) == 0);
   }
 }
+
+TEST_CASE("N-point grid plan: axes, echo and refusals from the request", "[rate][maps]") {
+  SystemMapRequest r;
+  r.path = "two.json";
+  r.file = parse_system_file(R"({"name": "two", "A": [[2, 0.5, 0.2, 0], [0.5, 1, 0, 0.1],
+      [0.2, 0, 2, 0.5], [0, 0.1, 0.5, 1]],
+      "points": [{"state": "b", "mu": 1}, {"state": "c", "mu": 1, "P_N": 1}]})", "two.json");
+  r.kind = "param-direction";
+  r.param = "mu@2";
+  r.from = 0.5;
+  r.to = 1.5;
+  r.n = 11;
+  r.theta_n = 90;
+  SECTION("param-direction") {
+    const SystemGridPlan p = make_system_grid_plan(r);
+    CHECK(p.sys.n_points() == 2);
+    CHECK(p.axis.param.name() == "mu@2");
+    CHECK(p.axis.value(10) == 1.5);
+    CHECK(p.cells_text == "11 x 90 cells (--n x --theta-n)");
+    CHECK(p.fewer == "use a smaller --n or --theta-n");
+    CHECK(p.input["n_points"] == 2);
+    CHECK(p.input["theta_to"].get<double>() == Approx(kTwoPi));
+    // Default patterns (docs/maps.md): e1 = (1, 0, 1, 0), e2 = (0, 1, 0, 1).
+    CHECK(p.input["patterns"] ==
+          nlohmann::json::parse("[[1.0, 0.0, 1.0, 0.0], [0.0, 1.0, 0.0, 1.0]]"));
+  }
+  SECTION("param-param") {
+    r.kind = "param-param";
+    r.param2 = "coupling";
+    r.from2 = 0;
+    r.to2 = 1;
+    r.n2 = 5;
+    const SystemGridPlan p = make_system_grid_plan(r);
+    CHECK(p.axis2.param.name() == "coupling");
+    CHECK(p.cells_text == "11 x 5 cells (--n x --n2)");
+    CHECK(p.input["param2"] == "coupling");
+    CHECK_FALSE(p.input.contains("theta_n"));
+  }
+  SECTION("refusals") {
+    r.param = "mu@3";
+    CHECK_THROWS_AS(make_system_grid_plan(r), cpkit::InputError);
+    r.param = "mu";
+    r.theta_from = 1;
+    r.theta_to = 0.5;
+    CHECK_THROWS_WITH(make_system_grid_plan(r), Catch::StartsWith("--theta-from/--theta-to: "));
+  }
+}

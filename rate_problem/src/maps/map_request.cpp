@@ -10,6 +10,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
 
 namespace cpkit::rate {
 
@@ -168,6 +169,51 @@ MapSetup make_map_setup(const MapRequest& a,
   if (s.kind == MapKind::kParamParam && !s.have_axis2)
     throw InputError("param-param map needs --param2 NAME --from2 X --to2 Y");
   return s;
+}
+
+SystemGridPlan make_system_grid_plan(const SystemMapRequest& r) {
+  SystemGridPlan p;
+  p.sys = parse_contact_system(r.file);
+  // Limits that depend on N and the states, before any work in proportion to N.
+  check_system_map_lcp_size(p.sys, "a map of its cells");
+  const int N = p.sys.n_points();
+  auto axis_of = [N](const std::string& param, double from, double to, int n) {
+    SystemMapAxis a;
+    a.param = parse_system_map_parameter(param, N);
+    a.from = from;
+    a.to = to;
+    a.n = n;
+    return a;
+  };
+  p.axis = axis_of(r.param, r.from, r.to, r.n);
+  const bool pd = r.kind == "param-direction";
+  if (!pd) p.axis2 = axis_of(r.param2, r.from2, r.to2, r.n2);
+  p.options.threads = r.threads;
+  if (pd) {
+    p.options.theta_from = r.theta_from;
+    p.options.theta_to = r.theta_to;
+    if (std::string e = p.options.validate(); !e.empty())
+      throw InputError("--theta-from/--theta-to: " + e);
+  }
+  Eigen::VectorXd e1, e2;
+  system_map_patterns(p.sys, e1, e2);
+  auto list = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+  p.input = {{"system", r.path}, {"name", p.sys.name}, {"n_points", N},
+             {"param", p.axis.param.name()}, {"from", r.from}, {"to", r.to}, {"n", r.n},
+             {"patterns", {list(e1), list(e2)}}};
+  if (pd) {
+    p.input.update({{"theta_n", r.theta_n}, {"theta_from", r.theta_from},
+                    {"theta_to", r.theta_to}});
+    p.cells_text = std::to_string(r.n) + " x " + std::to_string(r.theta_n) +
+                   " cells (--n x --theta-n)";
+    p.fewer = "use a smaller --n or --theta-n";
+  } else {
+    p.input.update({{"param2", p.axis2.param.name()}, {"from2", r.from2}, {"to2", r.to2},
+                    {"n2", r.n2}});
+    p.cells_text = std::to_string(r.n) + " x " + std::to_string(r.n2) + " cells (--n x --n2)";
+    p.fewer = "use a smaller --n or --n2";
+  }
+  return p;
 }
 
 }  // namespace cpkit::rate

@@ -6,11 +6,13 @@
 /// angles in radians. Bad input: InputError whose message names the option (--a11, --param,
 /// ...), as the program prints it (exit 2).
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {
@@ -57,5 +59,36 @@ struct MapSetup {
 /// the --theta-n range are left to the caller, which words them in options.
 MapSetup make_map_setup(const MapRequest& a,
                         const std::function<void(const std::string&)>& note = {});
+
+/// What `cpkit map --system` was asked (the program fills it from MapRequest; defaults are the N-point maps').
+struct SystemMapRequest {
+  std::string path, kind, out, param, param2;  ///< --system, --kind, --out, --param, --param2
+  SystemFile file;                       ///< the --system file, read once (dim 2)
+  std::string format = "npy";                  ///< --format (grid maps written with --out)
+  bool json = false, plot = false;
+  bool resume = false;  ///< --resume: reuse the finished chunks in PREFIX.parts
+  double from = 0, to = 0, from2 = 0, to2 = 0;  ///< --from, --to, --from2, --to2
+  int n = 100, n2 = 100, theta_n = 360;         ///< --n, --n2, --theta-n
+  int threads = 0;                              ///< --threads (0: all cores)
+  bool theta_range = false;                     ///< --theta-from/--theta-to given
+  double theta_from = 0, theta_to = 6.283185307179586;
+  double time_limit = 600;                      ///< --time-limit (grid maps)
+  double max_output = 4.0 * 1024 * 1024 * 1024;  ///< --max-output in bytes (grid maps, --out)
+};
+
+/// A grid map of N points (--kind param-direction or param-param) as the request describes it.
+struct SystemGridPlan {
+  ContactSystem sys;
+  SystemMapAxis axis, axis2;  ///< axis2: param-param only
+  MapOptions options;         ///< threads; param-direction: the sampled theta range
+  nlohmann::json input;       ///< the "input" echo of the result (axes and patterns included)
+  std::string cells_text;     ///< "100 x 360 cells (--n x --theta-n)"
+  std::string fewer;          ///< "use a smaller --n or --theta-n"
+};
+
+/// Parses the system (its rate LCP size checked before any work in proportion to N), the axes
+/// (names checked against the map parameter table), the options and the load patterns.
+/// InputError naming the option or the file.
+SystemGridPlan make_system_grid_plan(const SystemMapRequest& r);
 
 }  // namespace cpkit::rate
