@@ -32,6 +32,7 @@ bool run_map_plot(const std::string& prefix, nlohmann::json& files);
 /// The map's files (maps/map_files.hpp).
 using rate::GridFiles;
 using rate::write_text_file;
+using rate::axis_values;
 
 /// A map kind's chunked library run (`call`, returning the result) with the files discarded if
 /// it fails; false on ranks other than 0 (rank 0 writes and prints).
@@ -46,14 +47,6 @@ bool run_to_files(GridFiles& out, Result& res, Call&& call) {
     throw;
   }
   return true;
-}
-
-/// The values of a map axis (MapAxis, SystemMapAxis: n and value(i)), for PREFIX_x.npy.
-template <class Axis>
-std::vector<double> axis_values(const Axis& ax) {
-  std::vector<double> v(static_cast<std::size_t>(ax.n));
-  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
-  return v;
 }
 
 /// Writes PREFIX.json (files["json"] added, j["files"] = files; under a temporary name, renamed)

@@ -199,26 +199,13 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRu
   const std::vector<double> theta =
       map_theta_values(s.theta_n, options.theta_from, options.theta_to);
   // Rank 0 alone writes: the files are opened when the first chunk arrives.
-  bool opened = false;
-  auto open_files = [&] {
-    if (!prefix.empty() && !csv) {
-      out.add_npy("count", "|i1", s.axis.n, s.theta_n);
-      out.add_npy("types", "|u1", s.axis.n, s.theta_n);
-      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
-      out.write_vector("x", axis_values(s.axis));
-      out.write_vector("theta", theta);
-    } else if (!prefix.empty()) {
-      write_csv_header(s.axis, cross, out.open_csv());
-    }
-    opened = true;
-  };
+  const ParamDirectionSink write_rows = param_direction_files(
+      out, s.axis, theta, !prefix.empty() && !csv, !prefix.empty() && csv, cross);
   std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
   auto sink = [&](const ParamDirectionRows& r) {
-    if (!opened) open_files();
+    write_rows(r);
     const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
                               static_cast<std::size_t>(s.theta_n);
-    out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
-    if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
     for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
       if (r.disagree[k])
         shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
@@ -281,29 +268,9 @@ bool run_param_param_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOpt
   if (!prefix.empty() && !csv)
     j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
                         {"none-and-several", 3}};
-  bool opened = false;  // rank 0 alone writes, from the first chunk on
-  auto open_files = [&] {
-    if (!prefix.empty() && !csv) {
-      out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
-      out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
-      out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
-      out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
-      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
-      out.write_vector("x", axis_values(s.axis));
-      out.write_vector("y", axis_values(s.axis2));
-    } else if (!prefix.empty()) {
-      write_csv_header(s.axis, s.axis2, cross, out.open_csv());
-    }
-    opened = true;
-  };
-  auto sink = [&](const ParamParamRows& r) {
-    if (!opened) open_files();
-    const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                              static_cast<std::size_t>(s.axis2.n);
-    out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
-               static_cast<int64_t>(cells));
-    if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
-  };
+  // Rank 0 alone writes, from the first chunk on.
+  const ParamParamSink sink = param_param_files(out, s.axis, s.axis2, !prefix.empty() && !csv,
+                                                !prefix.empty() && csv, cross);
   rate::ParamParamRun res;
   if (!run_to_files(out, res, [&] {
         return rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);

@@ -139,25 +139,8 @@ int run_param_direction(const SystemMapRequest& r) {
       check_estimate(estimate_system_param_direction_map(sys, axis, r.theta_n, options), r,
                      p.cells_text, p.fewer, 3);
   const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
-  bool opened = false;
-  auto open_files = [&] {
-    if (run.writing_npy()) {
-      run.out.add_npy("count", "|i1", r.n, r.theta_n);
-      run.out.add_npy("pattern", "<u2", r.n, r.theta_n, 2);
-      run.out.write_vector("x", axis_values(axis));
-      run.out.write_vector("theta", theta);
-    } else if (run.writing_csv()) {
-      write_system_csv_header(axis, run.out.open_csv());
-    }
-    opened = true;
-  };
-  auto sink = [&](const SystemParamDirectionRows& rows) {
-    if (!opened) open_files();
-    const std::size_t n_cells =
-        static_cast<std::size_t>(rows.row_end - rows.row_begin) * static_cast<std::size_t>(r.theta_n);
-    run.out.append({rows.count, rows.pattern}, static_cast<int64_t>(n_cells));
-    if (run.out.has_csv()) write_system_csv_rows(axis, theta, rows, run.out.csv());
-  };
+  const SystemParamDirectionSink sink =
+      system_param_direction_files(run.out, axis, theta, run.writing_npy(), run.writing_csv());
   rate::SystemParamDirectionRun res;
   if (!run_to_files(run.out, res, [&] {
         return rate::run_system_param_direction_map(sys, axis, r.theta_n, options,
@@ -206,27 +189,8 @@ int run_param_param(const SystemMapRequest& r) {
   GridRun run(r);
   const nlohmann::json estimate = check_estimate(
       estimate_system_param_param_map(sys, a1, a2, options), r, p.cells_text, p.fewer, 5);
-  bool opened = false;
-  auto open_files = [&] {
-    if (run.writing_npy()) {
-      run.out.add_npy("class", "|u1", r.n, r.n2);
-      run.out.add_npy("min_count", "|i1", r.n, r.n2);
-      run.out.add_npy("max_count", "|i1", r.n, r.n2);
-      run.out.add_npy("pattern", "<u2", r.n, r.n2, 2);
-      run.out.write_vector("x", axis_values(a1));
-      run.out.write_vector("y", axis_values(a2));
-    } else if (run.writing_csv()) {
-      write_system_csv_header(a1, a2, run.out.open_csv());
-    }
-    opened = true;
-  };
-  auto sink = [&](const SystemParamParamRows& rows) {
-    if (!opened) open_files();
-    const std::size_t n_cells = static_cast<std::size_t>(rows.row_end - rows.row_begin) * r.n2;
-    run.out.append({rows.cls, rows.min_count, rows.max_count, rows.pattern},
-                   static_cast<int64_t>(n_cells));
-    if (run.out.has_csv()) write_system_csv_rows(a1, a2, rows, run.out.csv());
-  };
+  const SystemParamParamSink sink =
+      system_param_param_files(run.out, a1, a2, run.writing_npy(), run.writing_csv());
   rate::SystemParamParamRun res;
   if (!run_to_files(run.out, res, [&] {
         return rate::run_system_param_param_map(sys, a1, a2, options,

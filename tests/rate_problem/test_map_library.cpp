@@ -500,3 +500,50 @@ TEST_CASE("N-point grid plan: axes, echo and refusals from the request", "[rate]
     CHECK_THROWS_WITH(make_system_grid_plan(r), Catch::StartsWith("--theta-from/--theta-to: "));
   }
 }
+
+TEST_CASE("grid map file sinks: the .npy cells are the one-point closed form", "[rate][maps]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("cpkit_test_map_sinks_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string prefix = (dir / "pd").string();
+  MapAxis axis;
+  axis.param = MapParameter::kMu;
+  axis.from = 0.5;
+  axis.to = 3.0;
+  axis.n = 4;
+  const int theta_n = 12;
+  const ParamDirectionMap m =
+      compute_param_direction_map(wedge_params(), ContactState{}, axis, theta_n);
+  nlohmann::json files = nlohmann::json::object();
+  GridFiles out(prefix, files);
+  const ParamDirectionSink sink = param_direction_files(out, axis, m.theta, true, false, false);
+  for (int i = 0; i < axis.n; i += 2) {  // two blocks of two rows, in row order
+    ParamDirectionRows rows;
+    rows.row_begin = i;
+    rows.row_end = i + 2;
+    rows.count = m.count.data() + static_cast<std::size_t>(i) * theta_n;
+    rows.types = m.types.data() + static_cast<std::size_t>(i) * theta_n;
+    sink(rows);
+  }
+  out.finish();
+  CHECK(files == nlohmann::json::parse(R"({"count": "pd_count.npy", "types": "pd_types.npy",
+                                           "x": "pd_x.npy", "theta": "pd_theta.npy"})"));
+  std::ifstream in(prefix + "_count.npy", std::ios::binary);
+  const std::string npy((std::istreambuf_iterator<char>(in)), {});
+  REQUIRE(npy.size() > 10);
+  const std::size_t header = static_cast<unsigned char>(npy[8]) + 256u * static_cast<unsigned char>(npy[9]);
+  CHECK(npy.find("'shape': (4, 12)") != std::string::npos);
+  REQUIRE(npy.size() == 10 + header + 48);
+  for (int i = 0; i < axis.n; ++i)
+    for (int k = 0; k < theta_n; ++k) {
+      const double t = (k + 0.5) * kTwoPi / theta_n;
+      const int expected = summarize_rate_analytic(wedge_params(axis.value(i)), ContactState{},
+                                                   LoadRate{std::cos(t), std::sin(t)})
+                               .count;
+      CAPTURE(i, k);
+      CHECK(static_cast<int8_t>(npy[10 + header + static_cast<std::size_t>(i * theta_n + k)]) ==
+            expected);
+    }
+  fs::remove_all(dir);
+}

@@ -6,6 +6,8 @@
 #include <filesystem>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
+#include "cpkit/rate_problem/report/map_json.hpp"
 
 namespace cpkit::rate {
 
@@ -87,6 +89,98 @@ void GridFiles::discard() {
     fs::remove(f + ".partial", ec);
   }
   finals_.clear();
+}
+
+ParamDirectionSink param_direction_files(GridFiles& out, const MapAxis& axis,
+                                         const std::vector<double>& theta, bool npy, bool csv,
+                                         bool cross) {
+  auto opened = std::make_shared<bool>(false);
+  return [&out, axis, theta, npy, csv, cross, opened](const ParamDirectionRows& r) {
+    const int64_t cols = static_cast<int64_t>(theta.size());
+    if (!*opened) {
+      if (npy) {
+        out.add_npy("count", "|i1", axis.n, cols);
+        out.add_npy("types", "|u1", axis.n, cols);
+        if (cross) out.add_npy("disagree", "|u1", axis.n, cols);
+        out.write_vector("x", axis_values(axis));
+        out.write_vector("theta", theta);
+      } else if (csv) {
+        write_csv_header(axis, cross, out.open_csv());
+      }
+      *opened = true;
+    }
+    out.append({r.count, r.types, r.disagree}, (r.row_end - r.row_begin) * cols);
+    if (out.has_csv()) write_csv_rows(axis, theta, r, out.csv());
+  };
+}
+
+ParamParamSink param_param_files(GridFiles& out, const MapAxis& axis1, const MapAxis& axis2,
+                                 bool npy, bool csv, bool cross) {
+  auto opened = std::make_shared<bool>(false);
+  return [&out, axis1, axis2, npy, csv, cross, opened](const ParamParamRows& r) {
+    if (!*opened) {
+      if (npy) {
+        out.add_npy("class", "|u1", axis1.n, axis2.n);
+        out.add_npy("min_count", "|i1", axis1.n, axis2.n);
+        out.add_npy("max_count", "|i1", axis1.n, axis2.n);
+        out.add_npy("types", "|u1", axis1.n, axis2.n);
+        if (cross) out.add_npy("disagree", "|u1", axis1.n, axis2.n);
+        out.write_vector("x", axis_values(axis1));
+        out.write_vector("y", axis_values(axis2));
+      } else if (csv) {
+        write_csv_header(axis1, axis2, cross, out.open_csv());
+      }
+      *opened = true;
+    }
+    out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
+               static_cast<int64_t>(r.row_end - r.row_begin) * axis2.n);
+    if (out.has_csv()) write_csv_rows(axis1, axis2, r, out.csv());
+  };
+}
+
+SystemParamDirectionSink system_param_direction_files(GridFiles& out, const SystemMapAxis& axis,
+                                                      const std::vector<double>& theta,
+                                                      bool npy, bool csv) {
+  auto opened = std::make_shared<bool>(false);
+  return [&out, axis, theta, npy, csv, opened](const SystemParamDirectionRows& r) {
+    const int64_t cols = static_cast<int64_t>(theta.size());
+    if (!*opened) {
+      if (npy) {
+        out.add_npy("count", "|i1", axis.n, cols);
+        out.add_npy("pattern", "<u2", axis.n, cols, 2);
+        out.write_vector("x", axis_values(axis));
+        out.write_vector("theta", theta);
+      } else if (csv) {
+        write_system_csv_header(axis, out.open_csv());
+      }
+      *opened = true;
+    }
+    out.append({r.count, r.pattern}, (r.row_end - r.row_begin) * cols);
+    if (out.has_csv()) write_system_csv_rows(axis, theta, r, out.csv());
+  };
+}
+
+SystemParamParamSink system_param_param_files(GridFiles& out, const SystemMapAxis& axis1,
+                                              const SystemMapAxis& axis2, bool npy, bool csv) {
+  auto opened = std::make_shared<bool>(false);
+  return [&out, axis1, axis2, npy, csv, opened](const SystemParamParamRows& r) {
+    if (!*opened) {
+      if (npy) {
+        out.add_npy("class", "|u1", axis1.n, axis2.n);
+        out.add_npy("min_count", "|i1", axis1.n, axis2.n);
+        out.add_npy("max_count", "|i1", axis1.n, axis2.n);
+        out.add_npy("pattern", "<u2", axis1.n, axis2.n, 2);
+        out.write_vector("x", axis_values(axis1));
+        out.write_vector("y", axis_values(axis2));
+      } else if (csv) {
+        write_system_csv_header(axis1, axis2, out.open_csv());
+      }
+      *opened = true;
+    }
+    out.append({r.cls, r.min_count, r.max_count, r.pattern},
+               static_cast<int64_t>(r.row_end - r.row_begin) * axis2.n);
+    if (out.has_csv()) write_system_csv_rows(axis1, axis2, r, out.csv());
+  };
 }
 
 }  // namespace cpkit::rate

@@ -16,7 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/npy_writer.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
 
 namespace cpkit::rate {
 
@@ -54,5 +56,33 @@ class GridFiles {
   std::vector<std::string> finals_;  ///< final paths, written as <path>.partial until finish()
   std::string partial(const std::string& final_path);
 };
+
+/// The values of a map axis (MapAxis, SystemMapAxis: n and value(i)), for PREFIX_x.npy.
+template <class Axis>
+std::vector<double> axis_values(const Axis& ax) {
+  std::vector<double> v(static_cast<std::size_t>(ax.n));
+  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
+  return v;
+}
+
+/// The sinks that stream a grid map's rows (in row order) to its files under `out`: with
+/// `npy`, one .npy array per cell field (docs/maps.md, "Files") and the axis values (x, and
+/// theta or y); with `csv`, PREFIX.csv (header, one line per cell, 17 digits); with neither,
+/// nothing. The files are opened at the first rows (on the rank that writes). `cross`: the map
+/// is cross-checked (analytic route): a "disagree" array / CSV column.
+/// One point, parameter x direction: count (|i1), types (|u1), disagree (|u1), x, theta.
+ParamDirectionSink param_direction_files(GridFiles& out, const MapAxis& axis,
+                                         const std::vector<double>& theta, bool npy, bool csv,
+                                         bool cross);
+/// One point, parameter x parameter: class, min_count, max_count, types, disagree, x, y.
+ParamParamSink param_param_files(GridFiles& out, const MapAxis& axis1, const MapAxis& axis2,
+                                 bool npy, bool csv, bool cross);
+/// N points, parameter x direction: count (|i1), pattern (<u2), x, theta.
+SystemParamDirectionSink system_param_direction_files(GridFiles& out, const SystemMapAxis& axis,
+                                                      const std::vector<double>& theta,
+                                                      bool npy, bool csv);
+/// N points, parameter x parameter: class, min_count, max_count, pattern, x, y.
+SystemParamParamSink system_param_param_files(GridFiles& out, const SystemMapAxis& axis1,
+                                              const SystemMapAxis& axis2, bool npy, bool csv);
 
 }  // namespace cpkit::rate
