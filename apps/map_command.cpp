@@ -92,77 +92,9 @@ MapSetup build_setup(const MapArgs& a) {
 
 namespace {
 
-/// `cpkit map --system FILE` of N 2-D points: the options that apply, the request of
-/// map_system.hpp.
-int run_map_n_points(const MapArgs& a, const rate::SystemFile& file) {
-  const std::string kind = a.given("--kind") ? a.kind : "direction";
-  std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
-  const double max_output = parse_byte_size(a.max_output, "--max-output");
-  std::vector<std::string> needed;
-  if (kind == "param-direction")
-    needed = {"--param", "--from", "--to"};
-  else if (kind == "param-param")
-    needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
-  else if (kind != "direction")
-    throw InputError("--kind with --system must be direction, param-direction or param-param, "
-                     "got '" + kind + "'");
-  allowed.insert(allowed.end(), needed.begin(), needed.end());
-  if (kind != "direction")
-    for (const char* o : {"--n", "--format", "--time-limit", "--max-output", "--resume"})
-      allowed.push_back(o);
-  if (kind == "param-direction")
-    for (const char* o : {"--theta-n", "--theta-from", "--theta-to"}) allowed.push_back(o);
-  if (kind == "param-param") allowed.push_back("--n2");
-  std::string list;
-  for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-  for (const auto& [name, o] : a.opt)
-    if (o->count() > 0 && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
-      throw InputError(name + " does not apply with --system --kind " + kind +
-                       " (the state, parameters and load patterns come from the system file; "
-                       "options: " + list + (kind == "direction" ? "" : ", --plot") + ")");
-  for (const auto& o : needed)
-    if (!a.given(o)) throw InputError("--system --kind " + kind + " needs " + o);
-  if (a.plot && kind == "direction")
-    throw InputError("--plot with --system applies to --kind param-direction and param-param");
-  if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
-  if (a.resume && a.out.empty())
-    throw InputError("--resume needs --out PREFIX (the finished chunks are kept in PREFIX.parts)");
-  if (kind == "direction" && mpi::size() > 1)
-    throw InputError("a direction map is one exact computation, not a grid of cells: run it "
-                     "without mpirun (--threads uses the cores of one machine)");
-  if (a.given("--format") && a.out.empty())
-    throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
-  if (a.format != "npy" && a.format != "csv")
-    throw InputError("--format must be npy or csv, got '" + a.format + "'");
-  if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
-    throw InputError("--time-limit must be a positive number of seconds");
-  if (a.threads < 0 || a.threads > 1024)
-    throw InputError("--threads must be in [0, 1024] (0: all cores), got " +
-                     std::to_string(a.threads));
-  SystemMapRequest r;
-  r.path = a.system;
-  r.file = file;
-  r.kind = kind;
-  r.out = a.out;
-  r.json = a.json;
-  r.plot = a.plot;
-  r.resume = a.resume;
-  r.format = a.format;
-  r.threads = a.threads;
-  r.time_limit = a.time_limit;
-  r.max_output = max_output;
-  r.param = a.param;
-  r.from = a.from;
-  r.to = a.to;
-  r.param2 = a.param2;
-  r.from2 = a.from2;
-  r.to2 = a.to2;
-  if (a.given("--n")) r.n = a.n;
-  if (a.given("--n2")) r.n2 = a.n2;
-  if (a.given("--theta-n")) r.theta_n = a.theta_n;
-  r.theta_range = a.given("--theta-from") || a.given("--theta-to");
-  if (a.given("--theta-from")) r.theta_from = a.theta_from;
-  if (a.given("--theta-to")) r.theta_to = a.theta_to;
+/// `cpkit map --system FILE` of N 2-D points.
+int run_map_n_points(const MapArgs& a, rate::SystemFile file) {
+  const SystemMapRequest r = rate::system_map_request(a, std::move(file), mpi::size());
   std::unique_ptr<PrefixLock> lock;  // held until the map is written
   if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
   return run_map_system(r);
@@ -186,7 +118,7 @@ int run_map(const MapArgs& a) {
     if (a.given(o))
       throw InputError(std::string(o) + " applies to maps of 3-D systems (--system FILE with "
                        "\"dim\": 3)");
-  if (file) return run_map_n_points(a, *file);
+  if (file) return run_map_n_points(a, std::move(*file));
   return run_map_one_point(a);
 }
 

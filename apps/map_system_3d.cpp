@@ -42,65 +42,6 @@ std::string count_text(int count) {
   return std::to_string(count) + (count == 1 ? " solution" : " solutions");
 }
 
-/// Options that apply to a kind; every other option given is refused (no silent defaults).
-std::vector<std::string> allowed_options(const std::string& kind) {
-  std::vector<std::string> a = {"--system", "--kind",   "--out",   "--threads",
-                                "--time-limit", "--max-output", "--facets", "--point", "--format"};
-  const std::vector<std::string> extra =
-      kind == "sphere"
-          ? std::vector<std::string>{"--n", "--n2", "--from", "--to", "--others"}
-      : kind == "param-direction"
-          ? std::vector<std::string>{"--param", "--from", "--to", "--n", "--theta-n",
-                                     "--theta-from", "--theta-to", "--gamma", "--others"}
-          : std::vector<std::string>{"--param", "--from", "--to", "--n", "--param2", "--from2",
-                                     "--to2", "--n2"};
-  a.insert(a.end(), extra.begin(), extra.end());
-  return a;
-}
-
-void check_request(const Map3dRequest& r) {
-  if (r.kind.empty())
-    throw InputError("maps of a dim 3 system need --kind sphere, param-direction or param-param "
-                     "(the 2-D direction map has no 3-D counterpart: --kind sphere maps the "
-                     "sphere of load directions)");
-  if (r.kind != "sphere" && r.kind != "param-direction" && r.kind != "param-param")
-    throw InputError("--kind with a dim 3 system must be sphere, param-direction or param-param, "
-                     "got '" + r.kind + "'");
-  const std::vector<std::string> allowed = allowed_options(r.kind);
-  std::string list;
-  for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-  for (const auto& o : r.options_given)
-    if (std::find(allowed.begin(), allowed.end(), o) == allowed.end())
-      throw InputError(o + " has no effect with a dim 3 system and --kind " + r.kind +
-                       " (the model comes from the system file; options: " + list +
-                       ", --json, --plot)");
-  std::vector<std::string> needed;
-  if (r.kind == "param-direction") needed = {"--param", "--from", "--to"};
-  if (r.kind == "param-param") needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
-  for (const auto& o : needed)
-    if (!r.has(o)) throw InputError("--kind " + r.kind + " with a dim 3 system needs " + o);
-  if (r.kind == "sphere" && (r.has("--from") != r.has("--to")))
-    throw InputError("--from and --to (the range of b, rad) go together");
-  const std::pair<const char*, double> reals[] = {
-      {"--from", r.from},   {"--to", r.to},         {"--from2", r.from2},
-      {"--to2", r.to2},     {"--theta-from", r.theta_from}, {"--theta-to", r.theta_to},
-      {"--gamma", r.gamma}, {"--time-limit", r.time_limit}};
-  for (const auto& [name, v] : reals)
-    if (r.has(name) && !std::isfinite(v)) throw InputError(std::string(name) + " must be finite");
-  if (!(r.time_limit > 0)) throw InputError("--time-limit must be a positive number of seconds");
-  if (r.has("--format") && r.format != "npy")
-    throw InputError("--format: 3-D maps are written as .npy arrays only, got '" + r.format + "'");
-  if (r.has("--format") && r.out.empty()) throw InputError("--format needs --out PREFIX");
-  if (r.plot && r.out.empty()) throw InputError("--plot needs --out PREFIX");
-  if (r.threads < 0 || r.threads > 1024)
-    throw InputError("--threads must be in [0, 1024] (0: all cores), got " + std::to_string(r.threads));
-  if (r.has("--others") && r.others != "zero" && r.others != "file")
-    throw InputError("--others must be zero or file, got '" + r.others + "'");
-  if (mpi::size() > 1)
-    throw InputError("3-D maps run on the threads of one process: run them without mpirun "
-                     "(--threads)");
-}
-
 /// The summary in words (without --json).
 void print_text_3d(const Map3dRequest& r, const Map3dPlan& p, const Map3d& m,
                    const nlohmann::json& files) {
@@ -140,7 +81,7 @@ void print_text_3d(const Map3dRequest& r, const Map3dPlan& p, const Map3d& m,
 
 int run_map_system_3d(const Map3dRequest& r) {
   const double max_output = parse_byte_size(r.max_output, "--max-output");
-  check_request(r);
+  check_map_3d_request(r, mpi::size());
   std::unique_ptr<PrefixLock> lock;  // held until the map is written
   if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.system}});
   const Stopwatch clock;

@@ -43,7 +43,14 @@ struct Map3dPlan {
   }
 };
 
-/// The plan of a request whose kind and options were checked by the program: parses the
+/// Checks a 3-D map request before any work: the kind (sphere, param-direction, param-param),
+/// the options that apply to it (any other option given is refused: no silent default), the
+/// ones it needs, finite values, --time-limit, --format (npy only), --plot/--format with --out,
+/// --threads in [0, 1024], --others. `processes`: of the job (3-D maps run in one process).
+/// InputError naming the option.
+void check_map_3d_request(const MapRequest& r, int processes = 1);
+
+/// The plan of a request checked by check_map_3d_request: parses the
 /// system, checks the route's limits (--facets, grazing points, LCP size), --point, --others,
 /// the grid or the axes. Throws InputError naming the option or the file.
 Map3dPlan make_map_3d_plan(const Map3dRequest& r);

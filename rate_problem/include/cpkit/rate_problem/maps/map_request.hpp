@@ -76,6 +76,13 @@ struct SystemMapRequest {
   double max_output = 4.0 * 1024 * 1024 * 1024;  ///< --max-output in bytes (grid maps, --out)
 };
 
+/// The N-point map of a request (--system FILE of dim 2, `file` read once): refuses options that
+/// do not apply to the kind (direction by default; the model comes from the file), a missing
+/// axis option, --plot/--resume/--format without --out, a direction map over `processes` > 1,
+/// bad --format, --time-limit, --threads, --max-output. Defaults: --n and --n2 100, --theta-n
+/// 360, theta in [0, 2 pi). InputError naming the option.
+SystemMapRequest system_map_request(const MapRequest& a, SystemFile file, int processes = 1);
+
 /// A grid map of N points (--kind param-direction or param-param) as the request describes it.
 struct SystemGridPlan {
   ContactSystem sys;
