@@ -547,3 +547,41 @@ TEST_CASE("grid map file sinks: the .npy cells are the one-point closed form", "
     }
   fs::remove_all(dir);
 }
+
+TEST_CASE("map requests: the options that apply to N-point and 3-D maps", "[rate][maps]") {
+  MapRequest a;
+  a.system = "two.json";
+  SECTION("N points: defaults, and options that do not apply") {
+    a.kind = "param-direction";
+    a.param = "mu";
+    a.to = 1;
+    a.options_given = {"--from", "--kind", "--param", "--system", "--to"};
+    const SystemMapRequest r = system_map_request(a, SystemFile{}, 1);
+    CHECK(r.kind == "param-direction");
+    CHECK(r.n == 100);  // docs/maps.md: --system maps default to 100 values per axis
+    CHECK(r.theta_n == 360);
+    CHECK(r.theta_to == Approx(kTwoPi));
+    CHECK(r.max_output == 4.0 * 1024 * 1024 * 1024);  // --max-output 4G
+    a.options_given.push_back("--mu");
+    CHECK_THROWS_WITH(system_map_request(a, SystemFile{}, 1),
+                      Catch::StartsWith("--mu does not apply with --system --kind param-direction"));
+    MapRequest d;
+    d.options_given = {"--system"};
+    CHECK_THROWS_WITH(system_map_request(d, SystemFile{}, 2),
+                      Catch::StartsWith("a direction map is one exact computation"));
+    d.options_given = {"--system", "--kind", "--param", "--from"};
+    d.kind = "param-direction";
+    CHECK_THROWS_WITH(system_map_request(d, SystemFile{}, 1),
+                      "--system --kind param-direction needs --to");
+  }
+  SECTION("3-D: the kind is required; options of other kinds are refused") {
+    CHECK_THROWS_WITH(check_map_3d_request(a), Catch::StartsWith("maps of a dim 3 system need --kind"));
+    a.kind = "sphere";
+    a.options_given = {"--kind", "--system", "--theta-n"};
+    CHECK_THROWS_WITH(check_map_3d_request(a),
+                      Catch::StartsWith("--theta-n has no effect with a dim 3 system and --kind sphere"));
+    a.options_given = {"--kind", "--system"};
+    CHECK_NOTHROW(check_map_3d_request(a));
+    CHECK_THROWS_WITH(check_map_3d_request(a, 2), Catch::StartsWith("3-D maps run on the threads of one process"));
+  }
+}
