@@ -92,6 +92,17 @@ struct GridRun {
   explicit GridRun(const SystemMapRequest& req) : r(req), out(req.out, files) {}
   bool writing_npy() const { return !r.out.empty() && r.format == "npy"; }
   bool writing_csv() const { return !r.out.empty() && r.format == "csv"; }
+  /// The result: the library's document and what the program adds; true when complete.
+  bool set_result(nlohmann::json doc, const rate::ChunkRunStats& stats,
+                  const nlohmann::json& estimate) {
+    j = std::move(doc);
+    j["cpkit_version"] = CPKIT_VERSION;
+    j["threads"] = map_worker_threads(r.threads, std::numeric_limits<int>::max());
+    j["estimate"] = estimate;
+    rate::add_run_figures(j, stats);
+    if (!r.out.empty()) j["format"] = r.format;
+    return j["complete"].get<bool>();
+  }
   /// Writes PREFIX.json (and the picture); prints; returns the exit code.
   int finish(bool complete, const std::function<void()>& print_text) {
     bool plot_failed = false;
@@ -149,13 +160,7 @@ int run_param_direction(const SystemMapRequest& r) {
     return kExitOk;  // rank 0 writes and prints
   const SystemParamDirectionMap& merge = res.map;
   const rate::ChunkRunStats& stats = res.stats;
-  run.j = system_param_direction_json(merge, N, input);
-  const bool complete = run.j["complete"].get<bool>();
-  run.j["cpkit_version"] = CPKIT_VERSION;
-  run.j["threads"] = map_worker_threads(r.threads, std::numeric_limits<int>::max());
-  run.j["estimate"] = estimate;
-  rate::add_run_figures(run.j, stats);
-  if (!r.out.empty()) run.j["format"] = r.format;
+  const bool complete = run.set_result(system_param_direction_json(merge, N, input), stats, estimate);
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable
               << " cells too close to call: the map is not proved complete\n";
@@ -199,13 +204,7 @@ int run_param_param(const SystemMapRequest& r) {
     return kExitOk;
   const SystemParamParamMap& merge = res.map;
   const rate::ChunkRunStats& stats = res.stats;
-  run.j = system_param_param_json(merge, N, input);
-  const bool complete = run.j["complete"].get<bool>();
-  run.j["cpkit_version"] = CPKIT_VERSION;
-  run.j["threads"] = map_worker_threads(r.threads, std::numeric_limits<int>::max());
-  run.j["estimate"] = estimate;
-  rate::add_run_figures(run.j, stats);
-  if (!r.out.empty()) run.j["format"] = r.format;
+  const bool complete = run.set_result(system_param_param_json(merge, N, input), stats, estimate);
   if (!complete)
     std::cerr << "cpkit map: " << merge.unreliable << " evaluations too close to call and "
               << merge.inconsistent_sectors << " sectors not uniform: the map is not proved complete\n";
