@@ -4,10 +4,14 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
+#include "cli_common.hpp"
 #include "data_files.hpp"
+#include "machine_resources.hpp"
+#include "memory_limit.hpp"
 #include "platform/mpi_session.hpp"
 #include "run_program.hpp"
 
@@ -52,25 +56,6 @@ rate::MapProgress make_map_progress() {
   };
 }
 
-void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn) {
-  // Written under a temporary name and renamed: a reader never sees a half-written file.
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw InputError("cannot write '" + path + "'");
-    fn(f);
-    f.close();
-    if (!f) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError("error writing '" + path + "' (disk full?)");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw InputError("cannot write '" + path + "': " + ec.message());
-}
-
 bool run_map_plot(const std::string& prefix, nlohmann::json& files) {
   std::string searched;
   const std::string script = find_data_file("cpkit_plot.py", &searched);
@@ -103,63 +88,40 @@ bool run_map_plot(const std::string& prefix, nlohmann::json& files) {
   return false;
 }
 
-GridFiles::GridFiles(std::string prefix, nlohmann::json& files)
-    : prefix_(std::move(prefix)), name_(fs::path(prefix_).filename().string()), files_(files) {}
-
-// Every file is written as <name>.partial and renamed by finish(): a map that stops part-way
-// (an error, a killed job) never leaves a file that looks complete.
-std::string GridFiles::partial(const std::string& final_path) {
-  finals_.push_back(final_path);
-  return final_path + ".partial";
+bool write_map_json(const std::string& prefix, bool plot, nlohmann::json& j,
+                    nlohmann::json& files) {
+  files["json"] = fs::path(prefix).filename().string() + ".json";
+  j["files"] = files;
+  write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+  if (!plot) return true;
+  const bool drawn = run_map_plot(prefix, files);
+  j["files"] = files;
+  write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
+  return drawn;
 }
 
-void GridFiles::add_npy(const std::string& key, const char* descr, int64_t rows, int64_t cols,
-                        int item_bytes) {
-  npy_.push_back(std::make_unique<rate::NpyWriter>(partial(prefix_ + "_" + key + ".npy"), descr,
-                                                   std::vector<int64_t>{rows, cols}, item_bytes));
-  files_[key] = name_ + "_" + key + ".npy";
+void print_written(const std::string& prefix, const nlohmann::json& files) {
+  std::cout << "wrote";
+  for (const auto& [k, v] : files.items())
+    std::cout << ' ' << (fs::path(prefix).parent_path() / v.get<std::string>()).string();
+  std::cout << '\n';
 }
 
-void GridFiles::write_vector(const std::string& key, const std::vector<double>& v) {
-  files_[key] = name_ + "_" + key + ".npy";
-  rate::write_npy_vector(partial(prefix_ + "_" + key + ".npy"), v);
-}
-
-std::ostream& GridFiles::open_csv() {
-  csv_.open(partial(prefix_ + ".csv"));
-  if (!csv_) throw InputError("cannot write '" + prefix_ + ".csv'");
-  files_["csv"] = name_ + ".csv";
-  return csv_;
-}
-
-void GridFiles::append(std::initializer_list<const void*> arrays, int64_t cells) {
-  std::size_t k = 0;
-  for (const void* p : arrays)
-    if (p && k < npy_.size()) npy_[k++]->append(p, cells);
-}
-
-void GridFiles::finish() {
-  for (auto& w : npy_) w->finish();
-  if (csv_.is_open()) {
-    csv_.close();
-    if (!csv_) throw InputError("error writing '" + prefix_ + ".csv' (disk full?)");
-  }
-  for (const auto& f : finals_) {
-    std::error_code ec;
-    fs::rename(f + ".partial", f, ec);
-    if (ec) throw InputError("cannot write '" + f + "': " + ec.message());
-  }
-  finals_.clear();
-}
-
-void GridFiles::discard() {
-  npy_.clear();
-  if (csv_.is_open()) csv_.close();
-  for (const auto& f : finals_) {
-    std::error_code ec;
-    fs::remove(f + ".partial", ec);
-  }
-  finals_.clear();
+void check_output_fits(const std::string& cells, const std::string& fewer, double output,
+                       double max_output, const std::string& dir, const std::string& limit_hint,
+                       const std::string& disk_hint, bool gb) {
+  if (output > max_output)
+    throw InputError("the map has " + cells + " and its output would take about " +
+                     byte_text(output) + " (estimated), more than --max-output " +
+                     byte_text(max_output) + ": " + fewer + limit_hint + ", or raise --max-output");
+  if (!(output > 0)) return;
+  const double free = free_disk_bytes(dir);
+  if (free < 0 || !(output > 0.95 * free)) return;
+  std::ostringstream gbs;  // the N-point maps' wording: "1.23 GB but only 0.5 GB"
+  gbs << std::setprecision(3) << output / 1e9 << " GB but only " << free / 1e9 << " GB";
+  throw InputError("the map has " + cells + " and its output would take about " +
+                   (gb ? gbs.str() : byte_text(output) + " but only " + byte_text(free)) +
+                   " is free in '" + (dir.empty() ? "." : dir) + "': " + fewer + disk_hint);
 }
 
 void prepare_out_prefix(const std::string& prefix) {

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
-#include "cpkit/rate_problem/maps/npy_writer.hpp"
+#include "cpkit/rate_problem/maps/map_files.hpp"
 #include "output_guard.hpp"
 #include "platform/mpi_session.hpp"
 
@@ -24,45 +24,15 @@ namespace cpkit::cli {
 /// more than a second, and the phase's final line at 100 %.
 rate::MapProgress make_map_progress();
 
-/// Writes a text file through fn, under a temporary name renamed at the end (atomic); throws
-/// InputError naming the file when it cannot be written.
-void write_text_file(const std::string& path, const std::function<void(std::ostream&)>& fn);
-
 /// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
 /// written either way; the caller then exits 4: a requested plot that fails is a failure).
 /// Adds "png" and "svg" to `files` on success.
 bool run_map_plot(const std::string& prefix, nlohmann::json& files);
 
-/// The cell files of a grid map under PREFIX: .npy arrays appended block by block (or one CSV),
-/// each recorded in `files` under its key (file names relative to PREFIX's folder). Files are
-/// written as NAME.partial and renamed by finish(); a map that fails part-way calls discard():
-/// no file that looks complete stays behind.
-class GridFiles {
- public:
-  GridFiles(std::string prefix, nlohmann::json& files);
-  /// PREFIX_<key>.npy, rows x cols items of item_bytes (descr "|i1", "|u1", "<u2").
-  void add_npy(const std::string& key, const char* descr, int64_t rows, int64_t cols,
-               int item_bytes = 1);
-  /// PREFIX_<key>.npy written at once (axis values).
-  void write_vector(const std::string& key, const std::vector<double>& v);
-  /// PREFIX.csv, opened for writing.
-  std::ostream& open_csv();
-  bool has_csv() const { return csv_.is_open(); }
-  std::ostream& csv() { return csv_; }
-  /// Appends `cells` items of each array to the .npy files in the order they were added
-  /// (nullptr entries are skipped).
-  void append(std::initializer_list<const void*> arrays, int64_t cells);
-  void finish();
-  void discard();
-
- private:
-  std::string prefix_, name_;
-  nlohmann::json& files_;
-  std::vector<std::unique_ptr<rate::NpyWriter>> npy_;
-  std::ofstream csv_;
-  std::vector<std::string> finals_;  ///< final paths, written as <path>.partial until finish()
-  std::string partial(const std::string& final_path);
-};
+/// The map's files (maps/map_files.hpp).
+using rate::GridFiles;
+using rate::write_text_file;
+using rate::axis_values;
 
 /// A map kind's chunked library run (`call`, returning the result) with the files discarded if
 /// it fails; false on ranks other than 0 (rank 0 writes and prints).
@@ -78,6 +48,23 @@ bool run_to_files(GridFiles& out, Result& res, Call&& call) {
   }
   return true;
 }
+
+/// Writes PREFIX.json (files["json"] added, j["files"] = files; under a temporary name, renamed)
+/// and, with `plot`, draws the picture (run_map_plot) and writes PREFIX.json again with the
+/// picture's files. False when the picture was asked for and not drawn (the caller exits 4).
+bool write_map_json(const std::string& prefix, bool plot, nlohmann::json& j,
+                    nlohmann::json& files);
+
+/// "wrote DIR/F1 DIR/F2 ..." on stdout: the files of `files`, next to PREFIX.
+void print_written(const std::string& prefix, const nlohmann::json& files);
+
+/// Refuses (InputError, exit 2) a map whose estimated `output` bytes exceed --max-output or 95 %
+/// of the free disk in `dir` ("the map has CELLS and its output would take about ..."; `fewer`
+/// says what to reduce; the hints are appended to the two messages; `gb`: the disk message in
+/// GB, as the N-point maps word it).
+void check_output_fits(const std::string& cells, const std::string& fewer, double output,
+                       double max_output, const std::string& dir, const std::string& limit_hint,
+                       const std::string& disk_hint, bool gb = false);
 
 /// Creates PREFIX's folder; throws InputError when --out is not a usable file prefix.
 void prepare_out_prefix(const std::string& prefix);

@@ -151,21 +151,9 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
   if (e.memory > limit)
     throw InputError("the map has " + cells + " and would need about " + byte_text(e.memory) +
                      " of memory; " + byte_text(limit) + " is available: " + fewer);
-  if (e.output > max_output)
-    throw InputError("the map has " + cells + " and its output would take about " +
-                     byte_text(e.output) + " (estimated), more than --max-output " +
-                     byte_text(max_output) + ": " + fewer +
-                     (csv ? ", drop --format csv (the .npy output takes 1-5 bytes per cell)" : "") +
-                     ", or raise --max-output");
-  if (e.output > 0) {
-    const double free = free_disk_bytes(out_dir);
-    if (free >= 0 && e.output > 0.95 * free)
-      throw InputError("the map has " + cells + " and its output would take about " +
-                       byte_text(e.output) + " but only " + byte_text(free) + " is free in '" +
-                       (out_dir.empty() ? "." : out_dir) + "': " + fewer +
-                       (csv ? ", or drop --format csv (the .npy output takes 1-5 bytes per cell)"
-                            : ""));
-  }
+  const std::string drop = csv ? " drop --format csv (the .npy output takes 1-5 bytes per cell)" : "";
+  check_output_fits(cells, fewer, e.output, max_output, out_dir, csv ? "," + drop : "",
+                    csv ? ", or" + drop : "");
 }
 
 /// What the parts of a one-point map run share (run_map_one_point, run_grid_map).
@@ -182,13 +170,6 @@ struct OnePointRun {
   Stopwatch clock;
   std::function<void()> print_text;
 };
-
-/// The vector of an axis's values (the _x/_y files).
-std::vector<double> axis_values(const MapAxis& ax) {
-  std::vector<double> v(static_cast<std::size_t>(ax.n));
-  for (int i = 0; i < ax.n; ++i) v[static_cast<std::size_t>(i)] = ax.value(i);
-  return v;
-}
 
 /// A grid map's summary into the run's JSON, its disagreements and unreliable evaluations on
 /// stderr.
@@ -218,26 +199,13 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const rate::GridRu
   const std::vector<double> theta =
       map_theta_values(s.theta_n, options.theta_from, options.theta_to);
   // Rank 0 alone writes: the files are opened when the first chunk arrives.
-  bool opened = false;
-  auto open_files = [&] {
-    if (!prefix.empty() && !csv) {
-      out.add_npy("count", "|i1", s.axis.n, s.theta_n);
-      out.add_npy("types", "|u1", s.axis.n, s.theta_n);
-      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.theta_n);
-      out.write_vector("x", axis_values(s.axis));
-      out.write_vector("theta", theta);
-    } else if (!prefix.empty()) {
-      write_csv_header(s.axis, cross, out.open_csv());
-    }
-    opened = true;
-  };
+  const ParamDirectionSink write_rows = param_direction_files(
+      out, s.axis, theta, !prefix.empty() && !csv, !prefix.empty() && csv, cross);
   std::vector<std::pair<int, int>> shown;  // the first disagreeing cells (for stderr)
   auto sink = [&](const ParamDirectionRows& r) {
-    if (!opened) open_files();
+    write_rows(r);
     const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
                               static_cast<std::size_t>(s.theta_n);
-    out.append({r.count, r.types, r.disagree}, static_cast<int64_t>(cells));
-    if (out.has_csv()) write_csv_rows(s.axis, theta, r, out.csv());
     for (std::size_t k = 0; r.disagree && k < cells && shown.size() < 10; ++k)
       if (r.disagree[k])
         shown.emplace_back(r.row_begin + static_cast<int>(k / s.theta_n),
@@ -300,29 +268,9 @@ bool run_param_param_grid(OnePointRun& p, GridFiles& out, const rate::GridRunOpt
   if (!prefix.empty() && !csv)
     j["class_codes"] = {{"unique", 0}, {"non-unique", 1}, {"no-solution", 2},
                         {"none-and-several", 3}};
-  bool opened = false;  // rank 0 alone writes, from the first chunk on
-  auto open_files = [&] {
-    if (!prefix.empty() && !csv) {
-      out.add_npy("class", "|u1", s.axis.n, s.axis2.n);
-      out.add_npy("min_count", "|i1", s.axis.n, s.axis2.n);
-      out.add_npy("max_count", "|i1", s.axis.n, s.axis2.n);
-      out.add_npy("types", "|u1", s.axis.n, s.axis2.n);
-      if (cross) out.add_npy("disagree", "|u1", s.axis.n, s.axis2.n);
-      out.write_vector("x", axis_values(s.axis));
-      out.write_vector("y", axis_values(s.axis2));
-    } else if (!prefix.empty()) {
-      write_csv_header(s.axis, s.axis2, cross, out.open_csv());
-    }
-    opened = true;
-  };
-  auto sink = [&](const ParamParamRows& r) {
-    if (!opened) open_files();
-    const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                              static_cast<std::size_t>(s.axis2.n);
-    out.append({r.cls, r.min_count, r.max_count, r.types, r.disagree},
-               static_cast<int64_t>(cells));
-    if (out.has_csv()) write_csv_rows(s.axis, s.axis2, r, out.csv());
-  };
+  // Rank 0 alone writes, from the first chunk on.
+  const ParamParamSink sink = param_param_files(out, s.axis, s.axis2, !prefix.empty() && !csv,
+                                                !prefix.empty() && csv, cross);
   rate::ParamParamRun res;
   if (!run_to_files(out, res, [&] {
         return rate::run_param_param_map(s.params, s.state, s.axis, s.axis2, options, run, sink);
@@ -491,14 +439,7 @@ int run_map_one_point(const MapArgs& a) {
   }
   bool plot_failed = false;
   if (!prefix.empty()) {
-    files["json"] = name + ".json";
-    j["files"] = files;
-    write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
-    if (a.plot) {
-      plot_failed = !run_map_plot(prefix, files);
-      j["files"] = files;
-      write_text_file(prefix + ".json", [&](std::ostream& o) { o << json_text(j) << '\n'; });
-    }
+    plot_failed = !write_map_json(prefix, a.plot, j, files);
     // The outputs are complete: the finished chunks kept for --resume are no longer needed.
     if (s.kind != MapKind::kDirection) rate::remove_checkpoint(prefix + ".parts");
   }
@@ -506,11 +447,7 @@ int run_map_one_point(const MapArgs& a) {
     print_json(j);
   } else {
     print_text();
-    if (!prefix.empty()) {
-      std::cout << "wrote";
-      for (const auto& [k, v] : files.items()) std::cout << ' ' << (fs::path(prefix).parent_path() / v.get<std::string>()).string();
-      std::cout << '\n';
-    }
+    if (!prefix.empty()) print_written(prefix, files);
   }
   if (disagreements > 0) return kExitDisagreement;
   return plot_failed ? kExitInternal : kExitOk;  // the picture was asked for and is missing

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cstring>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -211,6 +213,40 @@ SystemParamParamRun run_system_param_param_map(const ContactSystem& sys,
   m.threads = map_worker_threads(options.threads, a1.n);
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+std::string system_data_fingerprint(const ContactSystem& sys) {
+  uint64_t h = 1469598103934665603ull;
+  auto bytes = [&](const void* p, std::size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= c[i];
+      h *= 1099511628211ull;
+    }
+  };
+  auto real = [&](double x) { bytes(&x, sizeof x); };
+  auto vec = [&](const std::optional<Eigen::VectorXd>& v) {
+    const int64_t n = v ? v->size() : -1;
+    bytes(&n, sizeof n);
+    if (v) bytes(v->data(), sizeof(double) * static_cast<std::size_t>(v->size()));
+  };
+  const int64_t rows = sys.A.rows(), cols = sys.A.cols();
+  bytes(&rows, sizeof rows);
+  bytes(&cols, sizeof cols);
+  bytes(sys.A.data(), sizeof(double) * static_cast<std::size_t>(sys.A.size()));
+  for (const SystemPoint& p : sys.points) {
+    for (double x : {p.mu, p.C_T, p.k_a, p.P_s, p.state.P_N, p.P_T, p.P_N, p.g}) real(x);
+    const int ints[] = {static_cast<int>(p.state.label), p.state.sgn_PT, p.values_given ? 1 : 0};
+    bytes(ints, sizeof ints);
+  }
+  const int crit = static_cast<int>(sys.criterion);
+  bytes(&crit, sizeof crit);
+  vec(sys.dF);
+  vec(sys.pattern1);
+  vec(sys.pattern2);
+  std::ostringstream o;
+  o << std::hex << h;
+  return o.str();
 }
 
 }  // namespace cpkit::rate

@@ -7,6 +7,8 @@
 #include "cpkit/rate_problem/maps/grid_map_run.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
 
+#include <string>
+
 namespace cpkit::rate {
 
 struct SystemParamDirectionRun {
@@ -31,5 +33,13 @@ SystemParamParamRun run_system_param_param_map(const ContactSystem& system,
                                                const MapOptions& options,
                                                const GridRunOptions& run,
                                                const SystemParamParamSink& sink = {});
+
+/// FNV-1a (64 bit, lower-case hex) of a system's data as read: A (rows, cols, then the
+/// column-major entries), per point mu, C_T, k_a, P_s, state.P_N, P_T, P_N, g and the ints
+/// (state label, sgn_PT, values_given), the criterion, then dF, pattern1, pattern2 (each its
+/// length as int64, -1 when absent, then its entries); every number in its native bytes. A
+/// resumed map must read the same system (it is in the checkpoint's manifest); taken from the
+/// parsed system, not the file (a --system <(...) pipe can be read once only).
+std::string system_data_fingerprint(const ContactSystem& system);
 
 }  // namespace cpkit::rate

@@ -1,0 +1,101 @@
+#pragma once
+/// \file map_request.hpp
+/// What `cpkit map` was asked (docs/maps.md), as given: one request for every map kind (one
+/// point, N points, 3-D systems), and the one-point map it describes (make_map_setup: the
+/// preset, the model options over it, the kind and the axes). Values in the model's units;
+/// angles in radians. Bad input: InputError whose message names the option (--a11, --param,
+/// ...), as the program prints it (exit 2).
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_presets.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
+
+namespace cpkit::rate {
+
+/// The options of `cpkit map` as given. Defaults are those `cpkit map --help` shows; options
+/// whose default depends on the map (--n, --theta-to, ...) are read only when given.
+struct MapRequest {
+  std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
+  std::string system;  ///< --system FILE (N points or a 3-D system)
+  SystemFile file;     ///< the --system file, read once by the caller (dim known)
+  std::string format = "npy";
+  double time_limit = 600;  ///< seconds the map may take (--time-limit)
+  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 1, P_N = 0;
+  int sgnPT = 1;
+  double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
+  int n = 0, n2 = 0, theta_n = 360, threads = 0;
+  std::string max_output = "4G";  ///< --max-output SIZE (core/memory_limit.hpp)
+  bool plot = false, json = false, list_presets = false, resume = false;
+  // 3-D systems only: --facets K, --point i (1-based), --others zero|file, --gamma G
+  int facets = 0, point = 1;
+  std::string others;
+  double gamma = 0;
+  std::vector<std::string> options_given;  ///< the options given, as "--n"
+  bool given(const std::string& option) const;
+  bool has(const std::string& option) const { return given(option); }
+};
+
+/// The one-point map of a request: the model, the kind and the axes.
+struct MapSetup {
+  ContactParameters params;
+  ContactState state;
+  MapKind kind = MapKind::kDirection;
+  MapAxis axis, axis2;
+  bool have_axis = false, have_axis2 = false;
+  int theta_n = 360;
+};
+
+/// The one-point map of the request: the preset's model, kind and axes (if any), then the
+/// options given over them (--kind, --state, --criterion, the model values, --param/--from/
+/// --to/--n and the second axis, --theta-n). Refuses options that would have no effect (never a
+/// hidden default), a missing model, invalid model values or states, an axis without its range,
+/// a kind without its axes. `note` receives remarks on accepted options (a material parameter
+/// that does not enter the state). The axes' own checks (MapAxis::validate: n, from, to) and
+/// the --theta-n range are left to the caller, which words them in options.
+MapSetup make_map_setup(const MapRequest& a,
+                        const std::function<void(const std::string&)>& note = {});
+
+/// What `cpkit map --system` was asked (the program fills it from MapRequest; defaults are the N-point maps').
+struct SystemMapRequest {
+  std::string path, kind, out, param, param2;  ///< --system, --kind, --out, --param, --param2
+  SystemFile file;                       ///< the --system file, read once (dim 2)
+  std::string format = "npy";                  ///< --format (grid maps written with --out)
+  bool json = false, plot = false;
+  bool resume = false;  ///< --resume: reuse the finished chunks in PREFIX.parts
+  double from = 0, to = 0, from2 = 0, to2 = 0;  ///< --from, --to, --from2, --to2
+  int n = 100, n2 = 100, theta_n = 360;         ///< --n, --n2, --theta-n
+  int threads = 0;                              ///< --threads (0: all cores)
+  bool theta_range = false;                     ///< --theta-from/--theta-to given
+  double theta_from = 0, theta_to = 6.283185307179586;
+  double time_limit = 600;                      ///< --time-limit (grid maps)
+  double max_output = 4.0 * 1024 * 1024 * 1024;  ///< --max-output in bytes (grid maps, --out)
+};
+
+/// The N-point map of a request (--system FILE of dim 2, `file` read once): refuses options that
+/// do not apply to the kind (direction by default; the model comes from the file), a missing
+/// axis option, --plot/--resume/--format without --out, a direction map over `processes` > 1,
+/// bad --format, --time-limit, --threads, --max-output. Defaults: --n and --n2 100, --theta-n
+/// 360, theta in [0, 2 pi). InputError naming the option.
+SystemMapRequest system_map_request(const MapRequest& a, SystemFile file, int processes = 1);
+
+/// A grid map of N points (--kind param-direction or param-param) as the request describes it.
+struct SystemGridPlan {
+  ContactSystem sys;
+  SystemMapAxis axis, axis2;  ///< axis2: param-param only
+  MapOptions options;         ///< threads; param-direction: the sampled theta range
+  nlohmann::json input;       ///< the "input" echo of the result (axes and patterns included)
+  std::string cells_text;     ///< "100 x 360 cells (--n x --theta-n)"
+  std::string fewer;          ///< "use a smaller --n or --theta-n"
+};
+
+/// Parses the system (its rate LCP size checked before any work in proportion to N), the axes
+/// (names checked against the map parameter table), the options and the load patterns.
+/// InputError naming the option or the file.
+SystemGridPlan make_system_grid_plan(const SystemMapRequest& r);
+
+}  // namespace cpkit::rate
