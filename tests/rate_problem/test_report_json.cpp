@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
@@ -266,4 +269,91 @@ TEST_CASE("step JSON: the N-point input echo", "[report]") {
   CHECK(j.at("points")[1].at("mu") == 0.3);
   CHECK(j.at("points")[1].at("P_N") == 2.0);
   CHECK(j.at("points")[1].size() == 7);  // mu, C_T, k_a, P_s, P_T, P_N, g
+}
+
+TEST_CASE("checked rate: the grazing example through every route, against the hand solutions",
+          "[report][routes]") {
+  // The three hand solutions of the grazing example (first test case): separation, stick, slip+.
+  const std::vector<std::pair<std::string, Rates>> hand = {
+      {"separation", {0, 0, 2.6, -0.8, 2.6, 0}}, {"stick", {1, 1.2, 0, 0, 0, 0}},
+      {"slip+", {0.8, 0.8, 0.2, 0, 0.2, 0}}};
+  const ContactState st{StateLabel::kB, 0, 1};
+  for (RateMethod m : {RateMethod::kEnumerate, RateMethod::kAnalytic}) {
+    CAPTURE(to_string(m));
+    const CheckedRateSolution c = solve_rate_problem_checked(grazing_params(1), st, {1, 1.2}, m);
+    CHECK(c.problem.empty());
+    CHECK_FALSE(c.inconclusive);
+    CHECK_FALSE(c.reference.has_value());  // the second route is internal: nothing to report
+    CHECK(c.set.count() == 3);
+  }
+  std::vector<RateMethod> single = {RateMethod::kLemke};
+  if (cpkit::lcp::solvers().find("fb-newton") != nullptr) single.push_back(RateMethod::kFbNewton);
+  for (RateMethod m : single) {
+    CAPTURE(to_string(m));
+    const CheckedRateSolution c = solve_rate_problem_checked(grazing_params(1), st, {1, 1.2}, m);
+    REQUIRE(c.reference.has_value());
+    CHECK(c.reference->count() == 3);
+    CHECK(c.problem.empty());
+    REQUIRE(c.set.solutions.size() == 1);
+    // the solver's point is one of the hand solutions, of the same type
+    const RateSolution& x = c.set.solutions.front();
+    int matches = 0;
+    for (const auto& [type, r] : hand) {
+      const bool same = std::abs(x.start.dP_T - r.dP_T) < 1e-6 &&
+                        std::abs(x.start.dP_N - r.dP_N) < 1e-6 &&
+                        std::abs(x.start.dw_T - r.dw_T) < 1e-6 &&
+                        std::abs(x.start.dw_N - r.dw_N) < 1e-6;
+      if (same) {
+        ++matches;
+        CHECK(std::string(to_string(x.type)) == type);
+      }
+    }
+    CHECK(matches == 1);
+  }
+}
+
+TEST_CASE("3-D system route: stick points by hand, their JSON, and what is refused",
+          "[report][3d]") {
+  // Points in state c (P_T inside the ellipse, P_N > 0): the rate problem has the one solution
+  // stick, dP = dF, dw = 0 (no slip, no separation: dw_N = 0 in contact).
+  ContactSystem3d sys;
+  sys.A = Eigen::MatrixXd::Identity(3, 3) * 2;
+  sys.points.resize(1);
+  sys.points[0].state.state = 'c';
+  sys.points[0].state.P_N = 1;
+  const SystemRateRoute3d one = solve_system_rate_3d(sys, Eigen::Vector3d(1, 2, 3), 0);
+  REQUIRE(one.complete);
+  REQUIRE(one.count() == 1);
+  const json j = system_rate_3d_json(one);
+  CHECK(j.at("route") == "exact");
+  CHECK(j.at("complete") == true);
+  CHECK(j.at("count") == 1);
+  CHECK_FALSE(j.contains("found"));
+  CHECK_FALSE(j.contains("time_limit_reached"));
+  const json& e = j.at("solutions")[0];
+  CHECK(e.at("types") == json({"stick"}));
+  CHECK(e.at("kind") == "point");
+  CHECK(e.at("values").at("dP_T")[0][0].get<double>() == Approx(1));
+  CHECK(e.at("values").at("dP_T")[0][1].get<double>() == Approx(2));
+  CHECK(e.at("values").at("dP_N")[0].get<double>() == Approx(3));
+  CHECK(e.at("values").at("dw_N")[0].get<double>() == Approx(0).margin(1e-12));
+  CHECK_FALSE(e.contains("slip_angle"));  // nothing slips
+
+  // Two decoupled stick points: the faceted N-point route, the product of the one-point sets.
+  ContactSystem3d two = sys;
+  two.A = Eigen::MatrixXd::Identity(6, 6) * 2;
+  two.points.push_back(sys.points[0]);
+  Eigen::VectorXd dF(6);
+  dF << 1, 2, 3, -1, 0.5, 4;
+  const SystemRateRoute3d both = solve_system_rate_3d(two, dF, 8);
+  REQUIRE(both.count() == 1);
+  const json k = system_rate_3d_json(both);
+  CHECK(k.at("route") == "faceted");
+  CHECK(k.at("solutions")[0].at("types") == json({"stick", "stick"}));
+  CHECK(k.at("solutions")[0].at("values").at("dP_N")[1].get<double>() == Approx(4));
+  CHECK(k.at("solutions")[0].at("values").at("dP_T")[1][0].get<double>() == Approx(-1));
+
+  // Coupled points need facets; one point not grazing has no faceted problem.
+  CHECK_THROWS_AS(solve_system_rate_3d(two, dF, 0), cpkit::InputError);
+  CHECK_THROWS_AS(solve_system_rate_3d(sys, Eigen::Vector3d(1, 2, 3), 8), cpkit::InputError);
 }

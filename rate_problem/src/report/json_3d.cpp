@@ -80,4 +80,33 @@ nlohmann::json fretting_3d_sample_json(const Fretting3dSample& s) {
           {"type", std::string(to_string(s.type))}};
 }
 
+nlohmann::json system_rate_3d_json(const SystemRateRoute3d& r) {
+  nlohmann::json j;
+  j["route"] = r.facets != 0 ? "faceted" : "exact";
+  j["complete"] = r.complete;
+  if (r.timed_out) j["time_limit_reached"] = true;
+  if (!r.complete) j["found"] = r.count();
+  else if (r.infinite()) j["count"] = "inf";
+  else j["count"] = r.count();
+  if (!r.message.empty()) j["message"] = r.message;
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& x : r.solutions) {
+    nlohmann::json e;
+    e["types"] = nlohmann::json::array();
+    for (auto t : x.types) e["types"].push_back(std::string(to_string(t)));
+    e["kind"] = x.ray ? "ray" : "point";
+    if (x.ray) {
+      e["start"] = rates_3d_json(x.rates);
+      e["start_closed"] = x.origin_included;
+      e["direction"] = rates_3d_json(x.direction);
+    } else {
+      e["values"] = rates_3d_json(x.rates);
+    }
+    add_slip_json(e, x.types, x.ray ? x.direction : x.rates);
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  return j;
+}
+
 }  // namespace cpkit::rate

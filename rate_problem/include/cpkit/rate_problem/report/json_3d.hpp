@@ -9,6 +9,7 @@
 
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 
 namespace cpkit::rate {
@@ -22,6 +23,13 @@ nlohmann::json rates_3d_json(const std::vector<Rates3d>& rates);
 /// slips. `dw_source` holds the rates whose dw_Ti gives the direction (a ray's direction).
 void add_slip_json(nlohmann::json& e, const std::vector<SolutionType>& types,
                    const std::vector<Rates3d>& dw_source);
+
+/// The result part of a 3-D system's rate problem (docs/contact_3d.md): "route" (exact or
+/// faceted), "complete", "time_limit_reached" (only when true), "count" (a number, or "inf" when
+/// a solution is a ray) when complete else "found", "message" (when not empty) and "solutions":
+/// per solution "types", "kind" (point or ray), "values" (a point) or "start", "start_closed" and
+/// "direction" (a ray), and the slip directions (add_slip_json). The caller adds "input".
+nlohmann::json system_rate_3d_json(const SystemRateRoute3d& r);
 
 /// One step solution: type, P_T1 (pair), P_N1, DP and Dw ([T_x, T_y, N]), Dw_Ti (pair), Dw_w,
 /// g1, lambda, slip_direction and slip_angle (null unless slip), residual.
