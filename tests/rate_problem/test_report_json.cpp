@@ -5,6 +5,7 @@
 // and solution sets written field by field here, whose JSON must carry exactly those numbers.
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -356,4 +357,52 @@ TEST_CASE("3-D system route: stick points by hand, their JSON, and what is refus
   // Coupled points need facets; one point not grazing has no faceted problem.
   CHECK_THROWS_AS(solve_system_rate_3d(two, dF, 0), cpkit::InputError);
   CHECK_THROWS_AS(solve_system_rate_3d(sys, Eigen::Vector3d(1, 2, 3), 8), cpkit::InputError);
+}
+
+TEST_CASE("3-D step JSON: attempts, a set and a coupled set, field by field", "[report][3d]") {
+  // Attempts written here: the JSON carries exactly these values; a non-finite residual is null.
+  cpkit::Attempt ok{"fb-soc", cpkit::Status::kSolved, 1e-14, 0.5, "", 7};
+  cpkit::Attempt bad{"ipopt", cpkit::Status::kNumericalFailure,
+                     std::numeric_limits<double>::quiet_NaN(), 0.25, "diverged", 3};
+  const json at = attempts_json({ok, bad});
+  REQUIRE(at.size() == 2);
+  CHECK(at[0].at("solver") == "fb-soc");
+  CHECK(at[0].at("solved") == true);
+  CHECK(at[0].at("residual") == 1e-14);
+  CHECK(at[0].at("iterations") == 7);
+  CHECK(at[0].at("seconds") == 0.5);
+  CHECK(at[1].at("solved") == false);
+  CHECK(at[1].at("residual").is_null());
+  CHECK(at[1].at("message") == "diverged");
+
+  Step3dSolution stick;
+  stick.type = SolutionType::kStick;
+  stick.values.P_N1 = 2;
+  Step3dSolutionSet set;
+  set.solutions = {stick, stick};
+  const json all = step_3d_set_json(set);
+  CHECK(all.at("complete") == true);
+  CHECK(all.at("count") == 2);
+  CHECK_FALSE(all.contains("found"));
+  CHECK_FALSE(all.contains("message"));
+  CHECK(all.at("solutions")[1].at("P_N1") == 2.0);
+  set.complete = false;
+  set.message = "two roots too close";
+  const json part = step_3d_set_json(set);
+  CHECK(part.at("found") == 2);
+  CHECK_FALSE(part.contains("count"));
+  CHECK(part.at("message") == "two roots too close");
+  const json chain = step_3d_set_json(set, false);  // a chain's answer: no count, no complete
+  CHECK_FALSE(chain.contains("complete"));
+  CHECK_FALSE(chain.contains("found"));
+  CHECK(chain.at("solutions").size() == 2);
+
+  SystemStep3dSolutionSet coupled;
+  coupled.solutions.push_back({{stick, stick}, 3e-13});
+  const json c = system_step_3d_set_json(coupled);
+  CHECK(c.at("complete") == false);  // never a count for coupled 3-D points
+  CHECK(c.at("found") == 1);
+  CHECK(c.at("solutions")[0].at("residual") == 3e-13);
+  CHECK(c.at("solutions")[0].at("points").size() == 2);
+  CHECK(c.at("solutions")[0].at("points")[0].at("type") == "stick");
 }

@@ -109,4 +109,45 @@ nlohmann::json system_rate_3d_json(const SystemRateRoute3d& r) {
   return j;
 }
 
+nlohmann::json attempts_json(const std::vector<Attempt>& attempts) {
+  nlohmann::json at = nlohmann::json::array();
+  for (const auto& x : attempts)
+    at.push_back({{"solver", x.solver},
+                  {"solved", x.status == Status::kSolved},
+                  {"residual", std::isfinite(x.residual) ? nlohmann::json(x.residual)
+                                                         : nlohmann::json(nullptr)},
+                  {"iterations", x.iterations},
+                  {"seconds", x.seconds},
+                  {"message", x.message}});
+  return at;
+}
+
+nlohmann::json step_3d_set_json(const Step3dSolutionSet& set, bool with_count) {
+  nlohmann::json j;
+  if (with_count) {
+    j["complete"] = set.complete;
+    j[set.complete ? "count" : "found"] = set.count();
+  }
+  if (!set.message.empty()) j["message"] = set.message;
+  j["solutions"] = nlohmann::json::array();
+  for (const auto& s : set.solutions) j["solutions"].push_back(step_3d_solution_json(s));
+  return j;
+}
+
+nlohmann::json system_step_3d_set_json(const SystemStep3dSolutionSet& set, bool with_count) {
+  nlohmann::json j;
+  if (with_count) {
+    j["complete"] = false;
+    j["found"] = set.count();
+  }
+  if (!set.message.empty()) j["message"] = set.message;
+  j["solutions"] = nlohmann::json::array();
+  for (const auto& s : set.solutions) {
+    nlohmann::json pts = nlohmann::json::array();
+    for (const auto& x : s.points) pts.push_back(step_3d_solution_json(x));
+    j["solutions"].push_back({{"points", pts}, {"residual", s.residual}});
+  }
+  return j;
+}
+
 }  // namespace cpkit::rate
