@@ -8,13 +8,14 @@
 //                  [--heat --heat-capacity X --T-ref X --T-initial X --T-body T1 T2
 //                  --conductance C1 C2] [--branch-rule closest|stop]
 //                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
-//   cpkit simulate --system POINT3D.json --orbit aX aY ...   ("dim": 3: simulate_3d.hpp)
+//   cpkit simulate --system POINT3D.json --orbit aX aY ...   ("dim": 3: run_simulate_3d below)
 //
 // Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, a branch point
 // with --branch-rule stop, or numerical_failure: values beyond the range of double; the reason
 // on stdout/in the summary), 2 bad input (also an output file that cannot be written).
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -28,16 +29,315 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
-#include "simulate_3d.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
+#include "cpkit/rate_problem/simulation/system_simulation.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/simulation/simulate_config.hpp"
-#include "simulate_system.hpp"
 #include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::cli {
 namespace {
+
+// ---- "dim": 3 system files ----
+// `cpkit simulate --system FILE` with a "dim": 3 file: fretting of one 3-D point under an
+// elliptic tangential load orbit (docs/contact_3d.md, "Fretting with an elliptic load orbit";
+// library: cpkit/rate_problem/simulation/fretting_3d.hpp).
+//
+//   cpkit simulate --system POINT3D.json --orbit aX aY [--orbit-angle RAD] [--lead-steps N]
+//                  [--F_N X --period X --cycles N --steps-per-cycle N --ramp-steps N]
+//                  [--wear-law archard|mroz --k_M X] [--branch-rule closest|stop]
+//                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
+//
+// Exit codes: 0 completed, 1 stopped (no solution, a branch point with --branch-rule stop,
+// numerical failure), 5 stopped at a step with several solutions whose enumeration is not
+// proved complete (ambiguous), 2 bad input (N > 1 points, a start state other than grazing,
+// options of the 2-D simulation, bad values), 4 the figures were asked for and are missing.
+/// The options only the 3-D run has (registered by add_simulate_3d_options).
+struct Simulate3dArgs {
+  std::vector<double> orbit;  ///< a_X a_Y
+  double orbit_angle = 0;
+  bool angle_given = false;
+  int lead_steps = -1;
+  bool lead_given = false;
+  /// The first 3-D option given ("--orbit", ...), or empty.
+  std::string first_given() const;
+};
+
+/// What the 3-D run takes from the 2-D command's parsed options.
+struct Simulate3dCommon {
+  std::string system;
+  rate::SystemFile file;  ///< the system file, read once (its dim is 3)
+  std::map<std::string, double> num;  ///< numeric options given (key without "--")
+  std::string wear_law, branch_rule, csv, summary, plot;
+  int every = 1;
+  bool every_given = false;
+  bool json = false;
+  /// Options of the 2-D simulation given on the command line (refused with a "dim": 3 file).
+  std::vector<std::string> other_given;
+};
+
+std::string Simulate3dArgs::first_given() const {
+  if (!orbit.empty()) return "--orbit";
+  if (angle_given) return "--orbit-angle";
+  if (lead_given) return "--lead-steps";
+  return {};
+}
+
+void add_simulate_3d_options(CLI::App* cmd, Simulate3dArgs& a) {
+  cmd->add_option("--orbit", a.orbit,
+                  "dim 3: half-axes aX aY of the elliptic tangential load orbit "
+                  "F_T = R(angle) (aX cos, aY sin) (aY < 0: clockwise)")
+      ->expected(2);
+  cmd->add_option_function<double>(
+      "--orbit-angle", [&a](const double& v) { a.orbit_angle = v; a.angle_given = true; },
+      "dim 3: rotation of the orbit in the tangential plane (rad, default 0)");
+  cmd->add_option_function<int>(
+      "--lead-steps", [&a](const int& v) { a.lead_steps = v; a.lead_given = true; },
+      "dim 3: steps of the tangential lead-in from 0 to the orbit's start (default "
+      "steps-per-cycle / 4)");
+}
+
+int count_option(const Simulate3dCommon& c, const char* key, int dflt) {
+  const auto it = c.num.find(key);
+  if (it == c.num.end()) return dflt;
+  const double d = it->second;
+  if (!(d == std::floor(d)) || d < 1 || d > INT_MAX)
+    throw InputError(std::string("--") + key + " must be an integer in [1, " +
+                     std::to_string(INT_MAX) + "], got " + num_text(d));
+  return static_cast<int>(d);
+}
+
+int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(c.file);
+  if (sys.n_points() != 1)
+    throw InputError(c.system + ": " + std::to_string(sys.n_points()) +
+                     " points; the 3-D simulation (fretting with an elliptic load orbit) is for "
+                     "one point (\"dim\": 3 with one point)");
+  if (!c.other_given.empty())
+    throw InputError(c.other_given.front() +
+                     " has no effect with a \"dim\": 3 system (the file gives the point's "
+                     "parameters; the load is the elliptic orbit: --orbit, --orbit-angle, "
+                     "--lead-steps, --F_N, --period, --cycles, --steps-per-cycle, --ramp-steps)");
+  if (sys.points[0].state.state != 'b')
+    throw InputError(c.system + ": the simulation starts unloaded and grazing (state b, "
+                     "P = 0, F = 0); the file gives state " +
+                     std::string(1, sys.points[0].state.state));
+  if (a3.orbit.size() != 2)
+    throw InputError("a \"dim\": 3 simulation needs --orbit aX aY (the half-axes of the "
+                     "tangential load orbit)");
+  rate::EllipticOrbit orbit;
+  orbit.a_X = a3.orbit[0];
+  orbit.a_Y = a3.orbit[1];
+  orbit.angle = a3.orbit_angle;
+  orbit.lead_steps = a3.lead_steps;
+  if (a3.lead_given && a3.lead_steps < 0)
+    throw InputError("--lead-steps must be >= 0, got " + std::to_string(a3.lead_steps));
+  auto num = [&](const char* key, double& dst) {
+    if (const auto it = c.num.find(key); it != c.num.end()) dst = it->second;
+  };
+  num("F_N", orbit.F_N);
+  num("period", orbit.period);
+  orbit.cycles = count_option(c, "cycles", orbit.cycles);
+  orbit.steps_per_cycle = count_option(c, "steps-per-cycle", orbit.steps_per_cycle);
+  orbit.ramp_steps = count_option(c, "ramp-steps", orbit.ramp_steps);
+  throw_if_invalid(orbit.validate(), "orbit");
+  // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
+  rate::check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
+                         true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
+
+  rate::Fretting3dOptions o;
+  o.params = sys.point_parameters(0);
+  if (!c.wear_law.empty()) {
+    const auto law = rate::wear_law_from_string(c.wear_law);
+    if (!law) throw InputError("--wear-law must be archard or mroz, got '" + c.wear_law + "'");
+    o.wear.law = *law;
+  }
+  num("k_M", o.wear.k_M);
+  const bool mroz = o.wear.law == rate::WearLaw::kMrozStupkiewicz;
+  if (!mroz && c.num.count("k_M"))
+    throw InputError("--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
+  if (mroz && !(o.wear.k_M > 0))
+    throw InputError("the wear law mroz needs --k_M > 0; for no wear use archard with k_a = 0");
+  if (mroz && o.params.k_a != 0)
+    throw InputError(c.system + ": k_a has no effect with the wear law mroz (its constant is "
+                     "--k_M); set k_a to 0 in the file");
+  if (!c.branch_rule.empty()) {
+    const auto rule = rate::branch_rule_from_string(c.branch_rule);
+    if (!rule)
+      throw InputError("--branch-rule must be closest or stop, got '" + c.branch_rule + "'");
+    o.branch_rule = *rule;
+  }
+  if (c.every_given && c.every < 0) throw InputError("--every must be >= 0");
+  throw_if_invalid(o.validate(), c.system);
+
+  std::string csv = c.csv;
+  if (csv.empty() && !c.plot.empty()) csv = c.plot + ".csv";
+  std::string summary = c.summary;
+  if (summary.empty() && !c.plot.empty()) summary = c.plot + ".json";
+  std::ofstream f;
+  if (!csv.empty()) {
+    f = open_output(csv);
+    f.precision(12);
+    f << "step,t,F_TX,F_TY,F_N,P_TX,P_TY,P_N,g,w_TX,w_TY,w_N,w_TiX,w_TiY,Dw_TiX,Dw_TiY,lambda,"
+         "Dw_w,w_w,type,count,complete,dissipation,cycle\n";
+    o.record_every = c.every_given ? c.every : 1;
+    o.on_sample = [&f](const rate::Fretting3dSample& s) {
+      f << s.step << ',' << s.t << ',' << s.F_T(0) << ',' << s.F_T(1) << ',' << s.F_N << ','
+        << s.P_T(0) << ',' << s.P_T(1) << ',' << s.P_N << ',' << s.g << ',' << s.w_T(0) << ','
+        << s.w_T(1) << ',' << s.w_N << ',' << s.w_Ti(0) << ',' << s.w_Ti(1) << ','
+        << s.Dw_Ti(0) << ',' << s.Dw_Ti(1) << ',' << s.lambda << ',' << s.Dw_w << ',' << s.w_w
+        << ',' << rate::to_string(s.type) << ',' << s.count << ',' << (s.complete ? 1 : 0)
+        << ',' << s.dissipation << ',' << s.cycle << '\n';
+    };
+  } else {
+    o.record_every = 0;  // summary only: nothing is kept
+  }
+  const rate::Fretting3dResult r = rate::simulate_fretting_3d(orbit, o);
+  if (f.is_open()) {
+    f.flush();
+    if (!f) throw InputError("error writing '" + csv + "' (disk full or not writable?)");
+  }
+
+  nlohmann::json j = rate::fretting_3d_summary_json(r, orbit, o, c.system, sys.name);
+  j["cpkit_version"] = CPKIT_VERSION;
+  j["run"] = run_echo();
+  if (!summary.empty()) {
+    std::ofstream sf = open_output(summary);
+    sf << json_text(j) << '\n';
+    sf.flush();
+    if (!sf) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
+  }
+  if (c.json) {
+    print_json(j);
+  } else {
+    std::cout << "simulate (3-D point): " << rate::to_string(r.outcome) << " after " << r.steps
+              << " steps\n  " << r.message << "\n  wear depth " << r.wear_depth << " ("
+              << (mroz ? "Mroz" : "Archard") << " integral " << r.wear_integral
+              << "), slip path length " << r.total_slip << "\n";
+    if (!r.wear_per_cycle.empty())
+      std::cout << "  last cycle: wear " << r.wear_per_cycle.back() << " (by X slip "
+                << r.wear_X_per_cycle.back() << ", by Y slip " << r.wear_Y_per_cycle.back()
+                << "), slip " << r.slip_per_cycle.back() << "\n";
+    std::cout << "  branch points " << r.branch_steps << ", steps not proved complete "
+              << r.incomplete_steps << "\n";
+    if (r.local_steps > 0)
+      std::cout << "  steps solved by the local fallback " << r.local_steps
+                << " (the enumeration had claimed none for " << r.enumeration_missed << ")\n";
+  }
+  std::vector<std::string> written;
+  if (!csv.empty()) written.push_back(csv);
+  if (!summary.empty()) written.push_back(summary);
+  const bool plot_failed =
+      !c.plot.empty() && !draw_simulation_figures("cpkit_plot_fretting_3d.py", csv, summary,
+                                                  c.plot, {"_orbit", "_wear"}, written);
+  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
+  if (plot_failed) return kExitInternal;
+  switch (r.outcome) {
+    case rate::Fretting3dResult::Outcome::kCompleted: return kExitOk;
+    case rate::Fretting3dResult::Outcome::kAmbiguous: return kExitInconclusive;
+    default: return kExitNoSolution;
+  }
+}
+
+
+// N-point system files (docs/simulation.md, "N points"): the run of rate::simulate_system, its
+// CSV streamed row by row, its JSON summary and figures.
+/// A csv load for N points: rows t, F_T1, F_N1, ..., F_TN, F_NN ('#' comments, optional header).
+std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int N) {
+  return rate::parse_system_load_csv(
+      rate::read_bounded(path, rate::kMaxLoadCsvBytes, "load history"), path, N);
+}
+
+int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFile& file,
+                          bool print_json_summary) {
+  const rate::ContactSystem sys = rate::parse_contact_system(file);
+  const int N = sys.n_points();
+  rate::SystemLoadSource load;
+  std::vector<rate::SystemLoadPoint> stored;
+  if (s.load_type == "fretting") {
+    if (!sys.pattern1 || !sys.pattern2)
+      throw InputError("system '" + s.system + "' has no patterns: the fretting cycle is "
+                       "applied through them (F = F_T(t) e1 + F_N(t) e2); give patterns or a csv load");
+    load = rate::system_fretting_source(s.fretting, *sys.pattern1, *sys.pattern2);
+  } else {
+    stored = read_system_csv(s.load_csv, N);
+    rate::check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
+    load = rate::system_history_source(stored, s.csv_period);
+  }
+  rate::SystemSimulationOptions o;
+  o.heat = s.opt.heat;
+  o.branch_rule = s.opt.branch_rule;
+  o.tol = s.opt.tol;
+  std::string csv = s.csv;
+  if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
+  std::ofstream f;
+  if (!csv.empty()) {
+    f = open_output(csv);
+    f.precision(12);
+    f << "step,t";
+    for (int i = 1; i <= N; ++i)
+      for (const char* c : {"F_T", "F_N", "P_T", "P_N", "w_T", "w_N", "w_w", "w_Ti", "g", "state",
+                            "type", "temperature"})
+        f << ',' << c << '_' << i;
+    f << ",count,complete,dissipation_total,work_total,stored\n";
+    o.record_every = s.every;
+    o.on_sample = [&f, N](const rate::SystemSimulationSample& x) {
+      f << x.step << ',' << x.t;
+      for (int i = 0; i < N; ++i)
+        f << ',' << x.F[2 * i] << ',' << x.F[2 * i + 1] << ',' << x.P_T[i] << ',' << x.P_N[i]
+          << ',' << x.w[2 * i] << ',' << x.w[2 * i + 1] << ',' << x.w_w[i] << ',' << x.w_Ti[i]
+          << ',' << x.g[i] << ',' << rate::to_string(x.state[static_cast<std::size_t>(i)]) << ','
+          << rate::to_string(x.type[static_cast<std::size_t>(i)]) << ',' << x.temperature[i];
+      f << ',' << x.count << ',' << (x.complete ? 1 : 0) << ',' << x.dissipation_total << ','
+        << x.work_total << ',' << x.stored << '\n';
+    };
+  } else {
+    o.record_every = 0;
+  }
+  const rate::SystemSimulationResult r = rate::simulate_system(sys, load, o);
+  if (f.is_open()) {
+    f.flush();
+    if (!f) throw InputError("error writing '" + csv + "' (disk full or not writable?)");
+  }
+  nlohmann::json j = rate::system_simulation_summary_json(r, s, sys);
+  j["cpkit_version"] = CPKIT_VERSION;
+  const auto& fs = r.final_state;
+  std::string summary = s.summary;
+  if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
+  if (!summary.empty()) {
+    std::ofstream sf = open_output(summary);
+    sf << json_text(j) << '\n';
+    sf.flush();
+    if (!sf) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
+  }
+  if (print_json_summary) {
+    print_json(j);
+  } else {
+    std::cout << "simulate (" << N << " points): " << j["outcome"].get<std::string>() << " after "
+              << r.steps << " steps\n  " << r.message << "\n  wear depth per point:";
+    for (int i = 0; i < N; ++i) std::cout << ' ' << fs.w_w[i];
+    std::cout << "\n  Archard integral per point:";
+    for (int i = 0; i < N; ++i) std::cout << ' ' << r.wear_integral[i];
+    std::cout << "\n  energy balance relative error " << r.energy_error << ", branch points "
+              << r.branch_steps << ", steps not proved complete " << r.incomplete_steps << "\n";
+  }
+  std::vector<std::string> written;  // named at the end: the user sees what the run produced
+  if (!csv.empty()) written.push_back(csv);
+  if (!summary.empty()) written.push_back(summary);
+  const bool plot_failed =
+      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_system_simulation.py", csv, summary,
+                                                  s.plot, {"_wear", "_slip"}, written);
+  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
+  // A requested picture that could not be drawn is a failure (exit 4), as for one point.
+  if (plot_failed) return kExitInternal;
+  if (r.outcome == rate::SimulationResult::Outcome::kCompleted) return kExitOk;
+  return r.inconclusive ? kExitInconclusive : kExitNoSolution;
+}
+
+
 
 struct SimArgs {
   std::string config;
@@ -47,7 +347,7 @@ struct SimArgs {
   bool heat = false, json = false;
   int every = 1;
   bool every_given = false;
-  Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (simulate_3d.cpp)
+  Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (run_simulate_3d)
 };
 
 using Settings = rate::SimulateSettings;
@@ -169,7 +469,7 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
   return j;
 }
 
-/// A "dim": 3 system: one 3-D point under an elliptic load orbit (simulate_3d.cpp); the options
+/// A "dim": 3 system: one 3-D point under an elliptic load orbit (run_simulate_3d); the options
 /// of the 2-D simulation are passed on to be refused there.
 int run_3d(const SimArgs& a, const rate::SystemFile& file) {
   Simulate3dCommon c;

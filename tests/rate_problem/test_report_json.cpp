@@ -15,6 +15,7 @@
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
+#include "cpkit/rate_problem/report/simulation_json.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
 
@@ -405,4 +406,62 @@ TEST_CASE("3-D step JSON: attempts, a set and a coupled set, field by field", "[
   CHECK(c.at("solutions")[0].at("residual") == 3e-13);
   CHECK(c.at("solutions")[0].at("points").size() == 2);
   CHECK(c.at("solutions")[0].at("points")[0].at("type") == "stick");
+}
+
+TEST_CASE("simulation summaries: N points and 3-D fretting, field by field", "[report][simulation]") {
+  // An N-point result written here (two points): the JSON carries exactly these numbers.
+  ContactSystem sys;
+  sys.name = "pair";
+  sys.points.resize(2);
+  SimulateSettings s;
+  s.system = "pair.json";
+  s.load_type = "csv";
+  s.load_csv = "load.csv";
+  SystemSimulationResult r;
+  r.inconclusive = true;  // stopped without a proof: "inconclusive", whatever the outcome
+  r.outcome = SimulationResult::Outcome::kNoSolution;
+  r.steps = 12;
+  r.incomplete_steps = 1;
+  r.final_state.w_w = Eigen::Vector2d(0.5, 0.25);
+  r.wear_integral = Eigen::Vector2d(1, 2);
+  r.wear_per_cycle = {Eigen::Vector2d(3, 4)};
+  const json j = system_simulation_summary_json(r, s, sys);
+  CHECK(j.at("input").at("system") == "pair.json");
+  CHECK(j.at("input").at("file") == "load.csv");
+  CHECK_FALSE(j.at("input").contains("fretting"));
+  CHECK(j.at("outcome") == "inconclusive");
+  CHECK(j.at("n_points") == 2);
+  CHECK(j.at("final_wear_depth") == json({0.5, 0.25}));
+  CHECK(j.at("wear_integral") == json({1.0, 2.0}));
+  CHECK(j.at("wear_per_cycle") == json({{3.0, 4.0}}));
+  CHECK(j.at("complete") == false);  // one step not proved complete
+  CHECK_FALSE(j.contains("temperature"));  // heat off
+
+  // 3-D fretting: the lead-in defaults to steps_per_cycle / 4 = 40 / 4 = 10 steps; an ambiguous
+  // stop is never complete, even with every step proved complete.
+  EllipticOrbit orbit;
+  orbit.a_X = 0.3;
+  orbit.a_Y = -0.2;
+  orbit.steps_per_cycle = 40;
+  Fretting3dOptions o;
+  o.params.A = Eigen::Matrix3d::Identity() * 2;
+  o.params.alpha = {1, 0.5};
+  o.wear.law = WearLaw::kMrozStupkiewicz;
+  o.wear.k_M = 0.01;
+  Fretting3dResult f;
+  f.outcome = Fretting3dResult::Outcome::kAmbiguous;
+  f.wear_per_cycle = {0.125};
+  const json k = fretting_3d_summary_json(f, orbit, o, "point.json", "one");
+  CHECK(k.at("dim") == 3);
+  CHECK(k.at("input").at("orbit").at("lead_steps") == 10);
+  CHECK(k.at("input").at("orbit").at("a_Y") == -0.2);
+  CHECK(k.at("input").at("point").at("A")[1] == json({0.0, 2.0, 0.0}));
+  CHECK(k.at("input").at("point").at("alpha") == json({1.0, 0.5}));
+  CHECK(k.at("input").at("wear").at("law") == "mroz-stupkiewicz");  // wear.hpp's name
+  CHECK(k.at("input").at("wear").at("k_M") == 0.01);
+  CHECK(k.at("incomplete_steps") == 0);
+  CHECK(k.at("complete") == false);
+  CHECK(k.at("wear_per_cycle") == json({0.125}));
+  f.outcome = Fretting3dResult::Outcome::kCompleted;
+  CHECK(fretting_3d_summary_json(f, orbit, o, "point.json", "one").at("complete") == true);
 }
