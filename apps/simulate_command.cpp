@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
@@ -151,9 +152,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   rate::Fretting3dOptions o;
   o.params = sys.point_parameters(0);
   if (!c.wear_law.empty()) {
-    const auto law = rate::wear_law_from_string(c.wear_law);
-    if (!law) throw InputError("--wear-law must be archard or mroz, got '" + c.wear_law + "'");
-    o.wear.law = *law;
+    o.wear.law = wear_law_option(c.wear_law);
   }
   num("k_M", o.wear.k_M);
   const bool mroz = o.wear.law == rate::WearLaw::kMrozStupkiewicz;
@@ -164,12 +163,7 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   if (mroz && o.params.k_a != 0)
     throw InputError(c.system + ": k_a has no effect with the wear law mroz (its constant is "
                      "--k_M); set k_a to 0 in the file");
-  if (!c.branch_rule.empty()) {
-    const auto rule = rate::branch_rule_from_string(c.branch_rule);
-    if (!rule)
-      throw InputError("--branch-rule must be closest or stop, got '" + c.branch_rule + "'");
-    o.branch_rule = *rule;
-  }
+  if (!c.branch_rule.empty()) o.branch_rule = branch_rule_option(c.branch_rule);
   if (c.every_given && c.every < 0) throw InputError("--every must be >= 0");
   throw_if_invalid(o.validate(), c.system);
 
@@ -352,24 +346,6 @@ struct SimArgs {
 
 using Settings = rate::SimulateSettings;
 
-void set_criterion(Settings& s, const std::string& c) {
-  const auto crit = rate::criterion_from_string(c);
-  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + c + "'");
-  s.opt.params.criterion = *crit;
-}
-
-void set_wear_law(Settings& s, const std::string& w) {
-  const auto law = rate::wear_law_from_string(w);
-  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + w + "'");
-  s.opt.wear.law = *law;
-}
-
-void set_branch_rule(Settings& s, const std::string& r) {
-  const auto rule = rate::branch_rule_from_string(r);
-  if (!rule) throw InputError("--branch-rule must be closest or stop, got '" + r + "'");
-  s.opt.branch_rule = *rule;
-}
-
 void apply_args(const SimArgs& a, Settings& s) {
   auto& P = s.opt.params;
   auto num = [&](const char* key, double& dst) {
@@ -423,9 +399,9 @@ void apply_args(const SimArgs& a, Settings& s) {
     s.opt.heat.conductance[1] = a.conductance[1];
   }
   if (a.heat) s.opt.heat.enabled = true;
-  if (!a.criterion.empty()) set_criterion(s, a.criterion);
-  if (!a.wear_law.empty()) set_wear_law(s, a.wear_law);
-  if (!a.branch_rule.empty()) set_branch_rule(s, a.branch_rule);
+  if (!a.criterion.empty()) s.opt.params.criterion = criterion_option(a.criterion);
+  if (!a.wear_law.empty()) s.opt.wear.law = wear_law_option(a.wear_law);
+  if (!a.branch_rule.empty()) s.opt.branch_rule = branch_rule_option(a.branch_rule);
   if (!a.load.empty()) s.load_type = a.load;
   if (!a.load_csv.empty()) {
     s.load_csv = a.load_csv;

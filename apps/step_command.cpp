@@ -70,9 +70,7 @@ const char* end_text(bool closed) { return closed ? " (closed)" : " (open)"; }
 rate::StepProblem make_problem(const StepArgs& a) {
   rate::StepProblem p;
   p.params = model_parameters(a.model);
-  const auto law = rate::wear_law_from_string(a.wear_law);
-  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
-  p.wear.law = *law;
+  p.wear.law = wear_law_option(a.wear_law);
   p.wear.k_M = a.k_M;
   p.state = {a.P_T0, a.P_N0, a.g0};
   if (a.DF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
@@ -263,14 +261,12 @@ int run_system_step_3d(const StepArgs& a, const CLI::App& cmd,
                      std::to_string(a.DF.size()));
   rate::SystemStep3dProblem p;
   p.system = sys;
-  const auto law = rate::wear_law_from_string(a.wear_law);
-  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
-  p.wear.law = *law;
+  p.wear.law = wear_law_option(a.wear_law);
   p.wear.k_M = a.k_M;
   bool any_open = false;
   for (int i = 0; i < N; ++i) {
     const rate::SystemPoint3d& pt = sys.points[static_cast<std::size_t>(i)];
-    if (*law == rate::WearLaw::kMrozStupkiewicz && pt.k_a != 0)
+    if (p.wear.law == rate::WearLaw::kMrozStupkiewicz && pt.k_a != 0)
       throw InputError(a.system + ": point " + std::to_string(i + 1) + ": its k_a (Archard) has "
                        "no effect with --wear-law mroz: remove it from the file or use "
                        "--wear-law archard");
@@ -387,11 +383,9 @@ int run_step_3d(const StepArgs& a, const CLI::App& cmd, const rate::SystemFile& 
                      std::to_string(a.DF.size()));
   rate::Step3dProblem p;
   p.params = sys.point_parameters(0);
-  const auto law = rate::wear_law_from_string(a.wear_law);
-  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + a.wear_law + "'");
-  p.wear.law = *law;
+  p.wear.law = wear_law_option(a.wear_law);
   p.wear.k_M = a.k_M;
-  if (*law == rate::WearLaw::kMrozStupkiewicz && p.params.k_a != 0)
+  if (p.wear.law == rate::WearLaw::kMrozStupkiewicz && p.params.k_a != 0)
     throw InputError(a.system + ": the point's k_a (Archard) has no effect with --wear-law mroz: "
                      "remove it from the file or use --wear-law archard");
   const rate::ContactState3d& st = sys.points[0].state;
