@@ -30,6 +30,7 @@
 #include "cli_common.hpp"
 #include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/report/simulation_csv.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 #include "cpkit/rate_problem/simulation/system_simulation.hpp"
@@ -175,17 +176,9 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
   if (!csv.empty()) {
     f = open_output(csv);
     f.precision(12);
-    f << "step,t,F_TX,F_TY,F_N,P_TX,P_TY,P_N,g,w_TX,w_TY,w_N,w_TiX,w_TiY,Dw_TiX,Dw_TiY,lambda,"
-         "Dw_w,w_w,type,count,complete,dissipation,cycle\n";
+    f << rate::fretting_3d_csv_header();
     o.record_every = c.every_given ? c.every : 1;
-    o.on_sample = [&f](const rate::Fretting3dSample& s) {
-      f << s.step << ',' << s.t << ',' << s.F_T(0) << ',' << s.F_T(1) << ',' << s.F_N << ','
-        << s.P_T(0) << ',' << s.P_T(1) << ',' << s.P_N << ',' << s.g << ',' << s.w_T(0) << ','
-        << s.w_T(1) << ',' << s.w_N << ',' << s.w_Ti(0) << ',' << s.w_Ti(1) << ','
-        << s.Dw_Ti(0) << ',' << s.Dw_Ti(1) << ',' << s.lambda << ',' << s.Dw_w << ',' << s.w_w
-        << ',' << rate::to_string(s.type) << ',' << s.count << ',' << (s.complete ? 1 : 0)
-        << ',' << s.dissipation << ',' << s.cycle << '\n';
-    };
+    o.on_sample = [&f](const rate::Fretting3dSample& x) { rate::write_fretting_3d_csv_row(f, x); };
   } else {
     o.record_every = 0;  // summary only: nothing is kept
   }
@@ -271,22 +264,10 @@ int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFil
   if (!csv.empty()) {
     f = open_output(csv);
     f.precision(12);
-    f << "step,t";
-    for (int i = 1; i <= N; ++i)
-      for (const char* c : {"F_T", "F_N", "P_T", "P_N", "w_T", "w_N", "w_w", "w_Ti", "g", "state",
-                            "type", "temperature"})
-        f << ',' << c << '_' << i;
-    f << ",count,complete,dissipation_total,work_total,stored\n";
+    f << rate::system_simulation_csv_header(N);
     o.record_every = s.every;
-    o.on_sample = [&f, N](const rate::SystemSimulationSample& x) {
-      f << x.step << ',' << x.t;
-      for (int i = 0; i < N; ++i)
-        f << ',' << x.F[2 * i] << ',' << x.F[2 * i + 1] << ',' << x.P_T[i] << ',' << x.P_N[i]
-          << ',' << x.w[2 * i] << ',' << x.w[2 * i + 1] << ',' << x.w_w[i] << ',' << x.w_Ti[i]
-          << ',' << x.g[i] << ',' << rate::to_string(x.state[static_cast<std::size_t>(i)]) << ','
-          << rate::to_string(x.type[static_cast<std::size_t>(i)]) << ',' << x.temperature[i];
-      f << ',' << x.count << ',' << (x.complete ? 1 : 0) << ',' << x.dissipation_total << ','
-        << x.work_total << ',' << x.stored << '\n';
+    o.on_sample = [&f](const rate::SystemSimulationSample& x) {
+      rate::write_system_simulation_csv_row(f, x);
     };
   } else {
     o.record_every = 0;
@@ -419,16 +400,9 @@ class CsvSeries {
  public:
   explicit CsvSeries(const std::string& path) : path_(path), f_(open_output(path)) {
     f_.precision(12);
-    f_ << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
-          "dissipation_total,work_total,stored,temperature\n";
+    f_ << rate::simulation_csv_header();
   }
-  void write(const rate::SimulationSample& s) {
-    f_ << s.step << ',' << s.t << ',' << s.F_T << ',' << s.F_N << ',' << s.P_T << ',' << s.P_N
-       << ',' << s.w_T << ',' << s.w_N << ',' << s.w_w << ',' << s.w_Ti << ',' << s.g << ','
-       << rate::to_string(s.state) << ',' << rate::to_string(s.type) << ',' << s.count << ','
-       << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
-       << ',' << s.temperature << '\n';
-  }
+  void write(const rate::SimulationSample& s) { rate::write_simulation_csv_row(f_, s); }
   void close() {
     f_.flush();
     if (!f_) throw InputError("error writing '" + path_ + "' (disk full or not writable?)");

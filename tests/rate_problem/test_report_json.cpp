@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
+#include "cpkit/rate_problem/report/simulation_csv.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "cpkit/rate_problem/step/step_solve.hpp"
@@ -464,4 +466,63 @@ TEST_CASE("simulation summaries: N points and 3-D fretting, field by field", "[r
   CHECK(k.at("wear_per_cycle") == json({0.125}));
   f.outcome = Fretting3dResult::Outcome::kCompleted;
   CHECK(fretting_3d_summary_json(f, orbit, o, "point.json", "one").at("complete") == true);
+}
+
+TEST_CASE("simulation CSV: headers and rows written here by hand", "[report][simulation]") {
+  CHECK(simulation_csv_header() ==
+        "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
+        "dissipation_total,work_total,stored,temperature\n");
+  SimulationSample s;
+  s.step = 3;
+  s.t = 0.5;
+  s.F_T = 1;
+  s.F_N = 2;
+  s.P_T = -0.25;
+  s.P_N = 2;
+  s.state = StateLabel::kD;
+  s.type = SolutionType::kSlipMinus;
+  s.count = 1;
+  s.temperature = 20;
+  std::ostringstream one;
+  write_simulation_csv_row(one, s);
+  CHECK(one.str() == "3,0.5,1,2,-0.25,2,0,0,0,0,0,d,slip-,1,0,0,0,0,20\n");
+
+  CHECK(system_simulation_csv_header(2) ==
+        "step,t,F_T_1,F_N_1,P_T_1,P_N_1,w_T_1,w_N_1,w_w_1,w_Ti_1,g_1,state_1,type_1,"
+        "temperature_1,F_T_2,F_N_2,P_T_2,P_N_2,w_T_2,w_N_2,w_w_2,w_Ti_2,g_2,state_2,type_2,"
+        "temperature_2,count,complete,dissipation_total,work_total,stored\n");
+  SystemSimulationSample x;
+  x.step = 1;
+  x.t = 2;
+  x.F = Eigen::Vector4d(1, 2, 3, 4);
+  x.w = Eigen::Vector4d(0, -1, 0, -2);
+  x.P_T = Eigen::Vector2d(0.5, 0.75);
+  x.P_N = Eigen::Vector2d(2, 4);
+  x.w_w = Eigen::Vector2d::Zero();
+  x.w_Ti = Eigen::Vector2d::Zero();
+  x.g = Eigen::Vector2d(0, -0.5);
+  x.temperature = Eigen::Vector2d(20, 21);
+  x.state = {StateLabel::kC, StateLabel::kA};
+  x.type = {SolutionType::kStick, SolutionType::kSeparation};
+  x.count = 2;
+  x.complete = false;
+  std::ostringstream two;
+  write_system_simulation_csv_row(two, x);
+  CHECK(two.str() == "1,2,1,2,0.5,2,0,-1,0,0,0,c,stick,20,3,4,0.75,4,0,-2,0,0,-0.5,a,separation,"
+                     "21,2,0,0,0,0\n");
+
+  CHECK(fretting_3d_csv_header() ==
+        "step,t,F_TX,F_TY,F_N,P_TX,P_TY,P_N,g,w_TX,w_TY,w_N,w_TiX,w_TiY,Dw_TiX,Dw_TiY,lambda,"
+        "Dw_w,w_w,type,count,complete,dissipation,cycle\n");
+  Fretting3dSample f;
+  f.step = 7;
+  f.F_T = {0.5, -0.5};
+  f.F_N = 1;
+  f.type = SolutionType::kSlip;
+  f.count = 1;
+  f.complete = true;
+  f.cycle = 2;
+  std::ostringstream three;
+  write_fretting_3d_csv_row(three, f);
+  CHECK(three.str() == "7,0,0.5,-0.5,1,0,0,0,0,0,0,0,0,0,0,0,0,0,0,slip,1,1,0,2\n");
 }
