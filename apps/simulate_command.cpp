@@ -183,20 +183,12 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
     o.record_every = 0;  // summary only: nothing is kept
   }
   const rate::Fretting3dResult r = rate::simulate_fretting_3d(orbit, o);
-  if (f.is_open()) {
-    f.flush();
-    if (!f) throw InputError("error writing '" + csv + "' (disk full or not writable?)");
-  }
+  if (f.is_open()) finish_output(f, csv);
 
   nlohmann::json j = rate::fretting_3d_summary_json(r, orbit, o, c.system, sys.name);
   j["cpkit_version"] = CPKIT_VERSION;
   j["run"] = run_echo();
-  if (!summary.empty()) {
-    std::ofstream sf = open_output(summary);
-    sf << json_text(j) << '\n';
-    sf.flush();
-    if (!sf) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
-  }
+  if (!summary.empty()) write_json_file(summary, j);
   if (c.json) {
     print_json(j);
   } else {
@@ -214,14 +206,9 @@ int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
       std::cout << "  steps solved by the local fallback " << r.local_steps
                 << " (the enumeration had claimed none for " << r.enumeration_missed << ")\n";
   }
-  std::vector<std::string> written;
-  if (!csv.empty()) written.push_back(csv);
-  if (!summary.empty()) written.push_back(summary);
-  const bool plot_failed =
-      !c.plot.empty() && !draw_simulation_figures("cpkit_plot_fretting_3d.py", csv, summary,
-                                                  c.plot, {"_orbit", "_wear"}, written);
-  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
-  if (plot_failed) return kExitInternal;
+  if (!draw_and_name_outputs("cpkit_plot_fretting_3d.py", csv, summary, c.plot,
+                             {"_orbit", "_wear"}))
+    return kExitInternal;  // the figures were asked for and are missing
   switch (r.outcome) {
     case rate::Fretting3dResult::Outcome::kCompleted: return kExitOk;
     case rate::Fretting3dResult::Outcome::kAmbiguous: return kExitInconclusive;
@@ -273,21 +260,13 @@ int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFil
     o.record_every = 0;
   }
   const rate::SystemSimulationResult r = rate::simulate_system(sys, load, o);
-  if (f.is_open()) {
-    f.flush();
-    if (!f) throw InputError("error writing '" + csv + "' (disk full or not writable?)");
-  }
+  if (f.is_open()) finish_output(f, csv);
   nlohmann::json j = rate::system_simulation_summary_json(r, s, sys);
   j["cpkit_version"] = CPKIT_VERSION;
   const auto& fs = r.final_state;
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
-  if (!summary.empty()) {
-    std::ofstream sf = open_output(summary);
-    sf << json_text(j) << '\n';
-    sf.flush();
-    if (!sf) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
-  }
+  if (!summary.empty()) write_json_file(summary, j);
   if (print_json_summary) {
     print_json(j);
   } else {
@@ -299,15 +278,10 @@ int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFil
     std::cout << "\n  energy balance relative error " << r.energy_error << ", branch points "
               << r.branch_steps << ", steps not proved complete " << r.incomplete_steps << "\n";
   }
-  std::vector<std::string> written;  // named at the end: the user sees what the run produced
-  if (!csv.empty()) written.push_back(csv);
-  if (!summary.empty()) written.push_back(summary);
-  const bool plot_failed =
-      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_system_simulation.py", csv, summary,
-                                                  s.plot, {"_wear", "_slip"}, written);
-  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
   // A requested picture that could not be drawn is a failure (exit 4), as for one point.
-  if (plot_failed) return kExitInternal;
+  if (!draw_and_name_outputs("cpkit_plot_system_simulation.py", csv, summary, s.plot,
+                             {"_wear", "_slip"}))
+    return kExitInternal;
   if (r.outcome == rate::SimulationResult::Outcome::kCompleted) return kExitOk;
   return r.inconclusive ? kExitInconclusive : kExitNoSolution;
 }
@@ -403,10 +377,7 @@ class CsvSeries {
     f_ << rate::simulation_csv_header();
   }
   void write(const rate::SimulationSample& s) { rate::write_simulation_csv_row(f_, s); }
-  void close() {
-    f_.flush();
-    if (!f_) throw InputError("error writing '" + path_ + "' (disk full or not writable?)");
-  }
+  void close() { finish_output(f_, path_); }
 
  private:
   std::string path_;
@@ -510,7 +481,6 @@ int run(const SimArgs& a) {
   if (file) return run_system_simulation(s, *file, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
-  std::vector<std::string> written;  // named at the end: the user sees what the run produced
   // The series goes to its file as it is produced; without a file nothing is recorded, so the
   // memory does not grow with the steps (issue 14).
   std::unique_ptr<CsvSeries> series;
@@ -525,17 +495,10 @@ int run(const SimArgs& a) {
   const rate::LoadSource load = rate::make_simulate_source(s, stored);
   const rate::SimulationResult r = rate::simulate(load, s.opt);
   if (series) series->close();
-  if (series) written.push_back(csv);
   const nlohmann::json sum = summary_json(r, s);
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
-  if (!summary.empty()) {
-    std::ofstream f = open_output(summary);
-    f << json_text(sum) << '\n';
-    f.flush();
-    if (!f) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
-    written.push_back(summary);
-  }
+  if (!summary.empty()) write_json_file(summary, sum);
   if (a.json) {
     print_json(sum);
   } else {
@@ -550,11 +513,9 @@ int run(const SimArgs& a) {
       std::cout << "  temperature: final " << r.final_state.temperature << ", max "
                 << r.max_temperature << "\n";
   }
-  const bool plot_failed =
-      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_simulation.py", csv, summary, s.plot,
-                                                  {"_loop", "_wear", "_state"}, written);
-  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
-  if (plot_failed) return kExitInternal;  // the figures were asked for and are missing
+  if (!draw_and_name_outputs("cpkit_plot_simulation.py", csv, summary, s.plot,
+                             {"_loop", "_wear", "_state"}))
+    return kExitInternal;  // the figures were asked for and are missing
   return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
 }
 
