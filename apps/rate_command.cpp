@@ -41,6 +41,31 @@
 namespace cpkit::cli {
 namespace {
 
+/// How a system's load rate is described in messages (2-D and 3-D differ).
+struct LoadRateWords {
+  const char* layout;       ///< the order of the numbers
+  const char* points;       ///< "points" or "point(s)"
+  const char* none_suffix;  ///< appended to "2N numbers" when there is no load rate
+};
+
+/// The load rate of an N-point system: --dF (per_point x N numbers) or else the file's "dF".
+Eigen::VectorXd system_load_rate(const std::vector<double>& arg,
+                                 const std::optional<Eigen::VectorXd>& from_file, int per_point,
+                                 int N, const std::string& path, const LoadRateWords& words) {
+  const std::string n = std::to_string(per_point);
+  if (arg.empty()) {
+    if (from_file) return *from_file;
+    throw InputError("no load rate: give --dF (" + n + "N numbers" + words.none_suffix +
+                     ") or \"dF\" in " + path);
+  }
+  if (static_cast<int>(arg.size()) != per_point * N)
+    throw InputError("--dF needs " + n + "N = " + std::to_string(per_point * N) + " numbers (" +
+                     words.layout + ") for the " + std::to_string(N) + " " + words.points +
+                     " of " + path + ", got " + std::to_string(arg.size()));
+  return Eigen::Map<const Eigen::VectorXd>(arg.data(), per_point * N);
+}
+
+
 
 std::string values_3d_text(const std::vector<rate::Rates3d>& rs) {
   std::ostringstream o;
@@ -95,17 +120,8 @@ static int run_rate_system_3d(const rate::SystemFile& file, const std::vector<do
   if (N > 1 && facets == 0)
     throw InputError(path + ": " + std::to_string(N) + " coupled 3-D points are solved with the "
                      "faceted friction ellipses: give --facets K (e.g. 16; docs/contact_3d.md)");
-  Eigen::VectorXd dF;
-  if (!dF_arg.empty()) {
-    if (static_cast<int>(dF_arg.size()) != 3 * N)
-      throw InputError("--dF needs 3N = " + std::to_string(3 * N) + " numbers (T_X T_Y N per point) for the " +
-                       std::to_string(N) + " point(s) of " + path + ", got " + std::to_string(dF_arg.size()));
-    dF = Eigen::Map<const Eigen::VectorXd>(dF_arg.data(), 3 * N);
-  } else if (sys.dF) {
-    dF = *sys.dF;
-  } else {
-    throw InputError("no load rate: give --dF (3N numbers: T_X T_Y N per point) or \"dF\" in " + path);
-  }
+  const Eigen::VectorXd dF = system_load_rate(dF_arg, sys.dF, 3, N, path, {"T_X T_Y N per point",
+                                              "point(s)", ": T_X T_Y N per point"});
   if (N == 1 && facets != 0 && sys.points[0].state.state != 'b')
     throw InputError(std::string("--facets applies to state b (grazing); state ") +
                      sys.points[0].state.state +
@@ -188,17 +204,8 @@ static int run_rate_system(const std::string& path, const std::vector<double>& d
                      "docs/contact_3d.md); " + path + " is a 2-D system");
   const rate::ContactSystem sys = rate::parse_contact_system(file);
   const int N = sys.n_points();
-  Eigen::VectorXd dF;
-  if (!dF_arg.empty()) {
-    if (static_cast<int>(dF_arg.size()) != 2 * N)
-      throw InputError("--dF needs 2N = " + std::to_string(2 * N) + " numbers (T_1 N_1 T_2 N_2 ...) for the " +
-                       std::to_string(N) + " points of " + path + ", got " + std::to_string(dF_arg.size()));
-    dF = Eigen::Map<const Eigen::VectorXd>(dF_arg.data(), 2 * N);
-  } else if (sys.dF) {
-    dF = *sys.dF;
-  } else {
-    throw InputError("no load rate: give --dF (2N numbers) or \"dF\" in " + path);
-  }
+  const Eigen::VectorXd dF =
+      system_load_rate(dF_arg, sys.dF, 2, N, path, {"T_1 N_1 T_2 N_2 ...", "points", ""});
   const auto method = rate::rate_method_from_string(method_name);
   if (!method || *method == rate::RateMethod::kAnalytic)
     throw InputError("--method with --system must be enumerate, lemke, fb-newton or ipopt, got '" +
