@@ -26,11 +26,27 @@ rate::ContactParameters model_parameters(const ModelArgs& m) {
   p.C_T = m.C_T;
   p.k_a = m.k_a;
   p.P_s = m.P_s;
-  const auto crit = rate::criterion_from_string(m.criterion);
-  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + m.criterion + "'");
-  p.criterion = *crit;
+  p.criterion = criterion_option(m.criterion);
   throw_if_invalid(p.validate(), "contact parameters");
   return p;
+}
+
+rate::Criterion criterion_option(const std::string& name) {
+  const auto c = rate::criterion_from_string(name);
+  if (!c) throw InputError("--criterion must be 38 or 35, got '" + name + "'");
+  return *c;
+}
+
+rate::WearLaw wear_law_option(const std::string& name) {
+  const auto law = rate::wear_law_from_string(name);
+  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + name + "'");
+  return *law;
+}
+
+rate::BranchRule branch_rule_option(const std::string& name) {
+  const auto rule = rate::branch_rule_from_string(name);
+  if (!rule) throw InputError("--branch-rule must be closest or stop, got '" + name + "'");
+  return *rule;
 }
 
 }  // namespace cpkit::cli

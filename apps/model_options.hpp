@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "cpkit/rate_problem/model/branch_rule.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 
 namespace cpkit::cli {
 
@@ -18,5 +20,11 @@ void add_model_options(CLI::App& cmd, ModelArgs& m);
 
 /// The parameters; throws InputError naming the bad option or parameter (A not SPD, mu <= 0, ...).
 rate::ContactParameters model_parameters(const ModelArgs& m);
+
+/// The values of --criterion, --wear-law and --branch-rule (rate, step, simulate); each throws
+/// InputError "--X must be ..., got '...'" for a name it does not know.
+rate::Criterion criterion_option(const std::string& name);
+rate::WearLaw wear_law_option(const std::string& name);
+rate::BranchRule branch_rule_option(const std::string& name);
 
 }  // namespace cpkit::cli

@@ -14,7 +14,7 @@
 // tests too close to call; the routes run in normalised units, so this is conditioning, not
 // units).
 //
-// N points (rate_system.cpp): cpkit rate --system FILE [--dF ... 2N numbers] [--json]
+// N points (run_rate_system below; "dim": 3 files: run_rate_system_3d): cpkit rate --system FILE [--dF ... 2N numbers] [--json]
 //              [--method enumerate|lemke|fb-newton|ipopt]
 #include <algorithm>
 #include <iostream>
@@ -30,14 +30,241 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::cli {
+namespace {
 
-/// `cpkit rate --system FILE` (rate_system.cpp).
-int run_rate_system(const std::string& path, const std::vector<double>& dF,
-                    const std::string& method, int facets, bool json,
-                    std::optional<double> time_limit);
+/// How a system's load rate is described in messages (2-D and 3-D differ).
+struct LoadRateWords {
+  const char* layout;       ///< the order of the numbers
+  const char* points;       ///< "points" or "point(s)"
+  const char* none_suffix;  ///< appended to "2N numbers" when there is no load rate
+};
+
+/// The load rate of an N-point system: --dF (per_point x N numbers) or else the file's "dF".
+Eigen::VectorXd system_load_rate(const std::vector<double>& arg,
+                                 const std::optional<Eigen::VectorXd>& from_file, int per_point,
+                                 int N, const std::string& path, const LoadRateWords& words) {
+  const std::string n = std::to_string(per_point);
+  if (arg.empty()) {
+    if (from_file) return *from_file;
+    throw InputError("no load rate: give --dF (" + n + "N numbers" + words.none_suffix +
+                     ") or \"dF\" in " + path);
+  }
+  if (static_cast<int>(arg.size()) != per_point * N)
+    throw InputError("--dF needs " + n + "N = " + std::to_string(per_point * N) + " numbers (" +
+                     words.layout + ") for the " + std::to_string(N) + " " + words.points +
+                     " of " + path + ", got " + std::to_string(arg.size()));
+  return Eigen::Map<const Eigen::VectorXd>(arg.data(), per_point * N);
+}
+
+
+
+std::string values_3d_text(const std::vector<rate::Rates3d>& rs) {
+  std::ostringstream o;
+  o.precision(10);
+  auto pairs = [&](const char* name, auto get) {
+    o << ' ' << name << "=[";
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      const Eigen::Vector2d v = get(rs[i]);
+      o << (i ? ", " : "") << '[' << v(0) << ", " << v(1) << ']';
+    }
+    o << ']';
+  };
+  auto scalars = [&](const char* name, auto get) {
+    o << ' ' << name << "=[";
+    for (std::size_t i = 0; i < rs.size(); ++i) o << (i ? ", " : "") << get(rs[i]);
+    o << ']';
+  };
+  pairs("dP_T", [](const rate::Rates3d& r) { return r.dP_T; });
+  scalars("dP_N", [](const rate::Rates3d& r) { return r.dP_N; });
+  pairs("dw_T", [](const rate::Rates3d& r) { return r.dw_T; });
+  scalars("dw_N", [](const rate::Rates3d& r) { return r.dw_N; });
+  pairs("dw_Ti", [](const rate::Rates3d& r) { return r.dw_Ti; });
+  scalars("dw_w", [](const rate::Rates3d& r) { return r.dw_w; });
+  return o.str();
+}
+
+std::string types_3d_text(const std::vector<rate::SolutionType>& t) {
+  std::string s;
+  for (std::size_t i = 0; i < t.size(); ++i) s += (i ? "/" : "") + std::string(rate::to_string(t[i]));
+  return s;
+}
+
+}  // namespace
+
+static int run_rate_system_3d(const rate::SystemFile& file, const std::vector<double>& dF_arg,
+                       const std::string& method, int facets, bool json,
+                       std::optional<double> time_limit_arg) {
+  if (time_limit_arg && !(*time_limit_arg > 0 && *time_limit_arg <= 1e9))
+    throw InputError("--time-limit must be a positive number of seconds (at most 1e9), got " +
+                     num_text(*time_limit_arg));
+  if (time_limit_arg && facets == 0)
+    throw InputError("--time-limit applies with --facets K (the faceted enumeration); the exact "
+                     "one-point route is solved in bounded time");
+  // One budget for the whole solve (every separation case of the N-point problem).
+  const double time_limit = time_limit_arg.value_or(60.0);
+  const std::string& path = file.source;
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(file);
+  const int N = sys.n_points();
+  if (method != "enumerate")
+    throw InputError("--method " + method + " is not available for 3-D points: the solution set "
+                     "is computed exactly (or with --facets K as a faceted LCP by enumeration)");
+  if (N > 1 && facets == 0)
+    throw InputError(path + ": " + std::to_string(N) + " coupled 3-D points are solved with the "
+                     "faceted friction ellipses: give --facets K (e.g. 16; docs/contact_3d.md)");
+  const Eigen::VectorXd dF = system_load_rate(dF_arg, sys.dF, 3, N, path, {"T_X T_Y N per point",
+                                              "point(s)", ": T_X T_Y N per point"});
+  if (N == 1 && facets != 0 && sys.points[0].state.state != 'b')
+    throw InputError(std::string("--facets applies to state b (grazing); state ") +
+                     sys.points[0].state.state +
+                     " has a linear rate problem, solved exactly without it");
+  const rate::SystemRateRoute3d s = rate::solve_system_rate_3d(sys, dF, facets, time_limit);
+  const bool complete = s.complete;
+  const std::string& message = s.message;
+  const int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
+  if (json) {
+    nlohmann::json j = rate::system_rate_3d_json(s);
+    j["cpkit_version"] = CPKIT_VERSION;
+    j["input"] = {{"system", path}, {"name", sys.name}, {"dF", std::vector<double>(dF.data(), dF.data() + dF.size())},
+                  {"method", method}, {"facets", facets}};
+    j["dim"] = 3;
+    j["n_points"] = N;
+    print_json(j);
+  } else {
+    std::cout << "rate problem, 3-D system " << (sys.name.empty() ? path : sys.name) << " (" << N
+              << (N == 1 ? " point, state " + std::string(1, sys.points[0].state.state) : std::string(" points"))
+              << "), " << (facets != 0 ? "faceted with " + std::to_string(facets) + " facets" : "exact")
+              << "\n";
+    if (complete) std::cout << "count: " << (s.infinite() ? std::string("inf") : std::to_string(s.count())) << "\n";
+    else std::cout << "solutions found: " << s.count() << " (INCOMPLETE: not a count)\n";
+    for (const auto& r : s.solutions) {
+      std::cout << "  " << types_3d_text(r.types) << (r.ray ? " ray from" : " point:") << values_3d_text(r.rates);
+      nlohmann::json e;
+      rate::add_slip_json(e, r.types, r.ray ? r.direction : r.rates);
+      if (e.contains("slip_angle")) {
+        std::cout << " slip_angle=[";
+        for (std::size_t i = 0; i < r.types.size(); ++i) {
+          const auto& x = e["slip_angle"][i];
+          std::cout << (i ? ", " : "");
+          if (x.is_null()) std::cout << '-'; else std::cout << x.get<double>();
+        }
+        std::cout << ']';
+      }
+      std::cout << "\n";
+      if (r.ray) std::cout << "      direction" << values_3d_text(r.direction) << "\n";
+    }
+    if (!message.empty()) std::cout << "note: " << message << "\n";
+  }
+  if (!complete) std::cerr << "cpkit rate: not proved complete: " << message << '\n';
+  return complete ? code : kExitInconclusive;
+}
+
+namespace {
+
+std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+std::string system_values_text(const rate::SystemRates& r) {
+  std::ostringstream o;
+  o.precision(10);
+  auto vec = [&](const char* name, const Eigen::VectorXd& v) {
+    o << ' ' << name << "=[";
+    for (Eigen::Index i = 0; i < v.size(); ++i) o << (i ? ", " : "") << v(i);
+    o << ']';
+  };
+  vec("dP_T", r.dP_T);
+  vec("dP_N", r.dP_N);
+  vec("dw_T", r.dw_T);
+  vec("dw_N", r.dw_N);
+  vec("dw_Ti", r.dw_Ti);
+  vec("dw_w", r.dw_w);
+  return o.str();
+}
+
+}  // namespace
+
+static int run_rate_system(const std::string& path, const std::vector<double>& dF_arg,
+                    const std::string& method_name, int facets, bool json,
+                    std::optional<double> time_limit) {
+  // read once (a pipe can be read only once), then by its dimension
+  const rate::SystemFile file = rate::read_system_file(path);
+  if (file.dim == 3) return run_rate_system_3d(file, dF_arg, method_name, facets, json, time_limit);
+  if (time_limit)
+    throw InputError("--time-limit applies to the faceted 3-D rate problems (\"dim\": 3 and "
+                     "--facets K); " + path + " is a 2-D system");
+  if (facets != 0)
+    throw InputError("--facets applies to 3-D points (\"dim\": 3 in the system file, "
+                     "docs/contact_3d.md); " + path + " is a 2-D system");
+  const rate::ContactSystem sys = rate::parse_contact_system(file);
+  const int N = sys.n_points();
+  const Eigen::VectorXd dF =
+      system_load_rate(dF_arg, sys.dF, 2, N, path, {"T_1 N_1 T_2 N_2 ...", "points", ""});
+  const auto method = rate::rate_method_from_string(method_name);
+  if (!method || *method == rate::RateMethod::kAnalytic)
+    throw InputError("--method with --system must be enumerate, lemke, fb-newton or ipopt, got '" +
+                     method_name + "'");
+  // A limit that depends on N and the states, checked before the N^3 precomputation (a
+  // 1000-point system was refused only after minutes; issue 24, item 12).
+  if (const int m = rate::system_map_lcp_size(sys);
+      *method == rate::RateMethod::kEnumerate && m > lcp::kMaxEnumerationSize)
+    throw InputError(path + ": the rate LCP has size " + std::to_string(m) +
+                     " (3 per point in state b, 1 per point in state d); the complete "
+                     "enumeration takes at most " + std::to_string(lcp::kMaxEnumerationSize) +
+                     " (--method lemke, fb-newton or ipopt find one verified solution)");
+  const rate::SystemRateSolutionSet s = rate::solve_rate_problem(sys, dF, *method);
+  const bool single = *method != rate::RateMethod::kEnumerate;
+  int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
+  std::string problem;
+  if (single && s.disagreement) {
+    problem = method_name + "'s solution is not in the enumerated solution set";
+    code = kExitDisagreement;
+  } else if (!single && !s.complete) {
+    problem = "the enumeration is not conclusive: " + s.message;
+    code = kExitInconclusive;
+  }
+  const std::string count = s.count() < 0 ? std::string("inf") : std::to_string(s.count());
+  if (json) {
+    nlohmann::json j;
+    j["cpkit_version"] = CPKIT_VERSION;
+    j["input"] = {{"system", path}, {"name", sys.name}, {"dF", as_list(dF)}, {"method", method_name}};
+    j["n_points"] = N;
+    j.update(rate::system_rate_set_json(s));
+    print_json(j);
+  } else {
+    std::cout << "rate problem, system " << (sys.name.empty() ? path : sys.name) << " (" << N
+              << " points), method " << method_name << "\n";
+    if (s.complete) std::cout << "count: " << count << "\n";
+    else if (single) std::cout << (s.solutions.empty() ? "no solution found" : "a solution") << " (found by " << method_name << "; not a count)\n";
+    else std::cout << "solutions found: " << s.solutions.size() << " (INCOMPLETE: not a count)\n";
+    for (const auto& p : s.solutions) {
+      std::cout << "  " << rate::types_string(p.types) << ' ' << rate::to_string(p.kind) << ":";
+      switch (p.kind) {
+        case rate::RateSolution::Kind::kPoint:
+          std::cout << system_values_text(p.start) << "\n";
+          break;
+        case rate::RateSolution::Kind::kSegment:
+          std::cout << " from" << system_values_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                    << "\n      to" << system_values_text(p.end) << (p.end_closed ? " (closed)" : " (open)") << "\n";
+          break;
+        case rate::RateSolution::Kind::kRay:
+          std::cout << " from" << system_values_text(p.start) << (p.start_closed ? " (closed)" : " (open)")
+                    << "\n      direction" << system_values_text(p.direction) << "\n";
+          break;
+      }
+    }
+    if (!s.message.empty()) std::cout << "note: " << s.message << "\n";
+  }
+  if (!problem.empty()) std::cerr << "cpkit rate: " << problem << '\n';
+  return code;
+}
+
 
 namespace {
 
@@ -151,50 +378,21 @@ int run_rate(const RateArgs& a) {
   if (!method)
     throw InputError("--method must be enumerate, analytic, lemke, fb-newton or ipopt, got '" +
                      a.method + "'");
-  const rate::RateSolutionSet s = rate::solve_rate_problem(p, st, f, *method);
+  const rate::CheckedRateSolution checked = rate::solve_rate_problem_checked(p, st, f, *method);
+  const rate::RateSolutionSet& s = checked.set;
   int code = s.solutions.empty() ? kExitNoSolution : kExitOk;
-  std::string problem;
-  bool inconclusive = false;  // the enumeration could not decide: exit 5, never 3
-  rate::RateSolutionSet ref;
-  const bool single = single_solver(*method);
-  if (*method == rate::RateMethod::kEnumerate) {
-    const rate::RateSolutionSet analytic =
-        rate::solve_rate_problem(p, st, f, rate::RateMethod::kAnalytic);
-    std::string why;
-    if (!s.complete) {
-      problem = "the enumeration is not conclusive: " + s.message;
-      inconclusive = true;
-    } else if (!analytic.complete) {
-      problem = "the analytic route cannot decide a sign: " + analytic.message;
-      inconclusive = true;
-    } else if (!rate::same_solution_sets(s, analytic, 1e-7, &why)) {
-      problem = "enumeration and analytic routes disagree: " + why;
-    }
-  } else if (*method == rate::RateMethod::kAnalytic && !s.complete) {
-    problem = "the analytic route cannot decide a sign: " + s.message;
-    inconclusive = true;
-  } else if (single) {
-    ref = rate::solve_rate_problem(p, st, f, rate::RateMethod::kEnumerate);
-    // the solver's point is accurate to its residual (solved_inaccurate allows up to 1e-6)
-    const double tol = std::max(1e-6, 1e3 * s.residual);
-    if (!s.solutions.empty() && !rate::contains(ref, s.solutions.front().start, tol)) {
-      problem = a.method + "'s solution is not in the enumerated solution set";
-    } else if (!s.solutions.empty() &&
-               ref.solutions[rate::find_piece(ref, s.solutions.front().start, tol)].type !=
-                   s.solutions.front().type) {
-      problem = a.method + "'s solution has another type than the enumerated set's piece";
-    } else if (s.solutions.empty()) {
-      std::cerr << "cpkit rate: " << s.message << "; the enumeration has "
-                << (ref.count() < 0 ? std::string("infinitely many")
-                                    : std::to_string(ref.count()))
-                << " solution(s)\n";
-    }
-  }
-  const rate::RateSolutionSet* reference = single ? &ref : nullptr;
+  const std::string& problem = checked.problem;
+  const bool single = checked.reference.has_value();
+  if (single && s.solutions.empty())
+    std::cerr << "cpkit rate: " << s.message << "; the enumeration has "
+              << (checked.reference->count() < 0 ? std::string("infinitely many")
+                                                 : std::to_string(checked.reference->count()))
+              << " solution(s)\n";
+  const rate::RateSolutionSet* reference = single ? &*checked.reference : nullptr;
   if (a.json) print_json(rate::rate_set_json(s, reference)); else print_text(s, a, reference);
   if (!problem.empty()) {
     std::cerr << "cpkit rate: " << problem << '\n';
-    code = inconclusive ? kExitInconclusive : kExitDisagreement;
+    code = checked.inconclusive ? kExitInconclusive : kExitDisagreement;
   }
   return code;
 }

@@ -8,13 +8,14 @@
 //                  [--heat --heat-capacity X --T-ref X --T-initial X --T-body T1 T2
 //                  --conductance C1 C2] [--branch-rule closest|stop]
 //                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
-//   cpkit simulate --system POINT3D.json --orbit aX aY ...   ("dim": 3: simulate_3d.hpp)
+//   cpkit simulate --system POINT3D.json --orbit aX aY ...   ("dim": 3: run_simulate_3d below)
 //
 // Exit codes: 0 the run completed, 1 it stopped (no solution, a continuum, a branch point
 // with --branch-rule stop, or numerical_failure: values beyond the range of double; the reason
 // on stdout/in the summary), 2 bad input (also an output file that cannot be written).
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -27,17 +28,265 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "model_options.hpp"
 #include "cpkit/core/errors.hpp"
-#include "simulate_3d.hpp"
+#include "cpkit/rate_problem/report/simulation_csv.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
+#include "cpkit/rate_problem/simulation/fretting_3d.hpp"
+#include "cpkit/rate_problem/simulation/system_simulation.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/simulation/simulate_config.hpp"
-#include "simulate_system.hpp"
 #include "simulation_outputs.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::cli {
 namespace {
+
+// ---- "dim": 3 system files ----
+// `cpkit simulate --system FILE` with a "dim": 3 file: fretting of one 3-D point under an
+// elliptic tangential load orbit (docs/contact_3d.md, "Fretting with an elliptic load orbit";
+// library: cpkit/rate_problem/simulation/fretting_3d.hpp).
+//
+//   cpkit simulate --system POINT3D.json --orbit aX aY [--orbit-angle RAD] [--lead-steps N]
+//                  [--F_N X --period X --cycles N --steps-per-cycle N --ramp-steps N]
+//                  [--wear-law archard|mroz --k_M X] [--branch-rule closest|stop]
+//                  [--csv OUT.csv] [--summary OUT.json] [--plot PREFIX] [--every N] [--json]
+//
+// Exit codes: 0 completed, 1 stopped (no solution, a branch point with --branch-rule stop,
+// numerical failure), 5 stopped at a step with several solutions whose enumeration is not
+// proved complete (ambiguous), 2 bad input (N > 1 points, a start state other than grazing,
+// options of the 2-D simulation, bad values), 4 the figures were asked for and are missing.
+/// The options only the 3-D run has (registered by add_simulate_3d_options).
+struct Simulate3dArgs {
+  std::vector<double> orbit;  ///< a_X a_Y
+  double orbit_angle = 0;
+  bool angle_given = false;
+  int lead_steps = -1;
+  bool lead_given = false;
+  /// The first 3-D option given ("--orbit", ...), or empty.
+  std::string first_given() const;
+};
+
+/// What the 3-D run takes from the 2-D command's parsed options.
+struct Simulate3dCommon {
+  std::string system;
+  rate::SystemFile file;  ///< the system file, read once (its dim is 3)
+  std::map<std::string, double> num;  ///< numeric options given (key without "--")
+  std::string wear_law, branch_rule, csv, summary, plot;
+  int every = 1;
+  bool every_given = false;
+  bool json = false;
+  /// Options of the 2-D simulation given on the command line (refused with a "dim": 3 file).
+  std::vector<std::string> other_given;
+};
+
+std::string Simulate3dArgs::first_given() const {
+  if (!orbit.empty()) return "--orbit";
+  if (angle_given) return "--orbit-angle";
+  if (lead_given) return "--lead-steps";
+  return {};
+}
+
+void add_simulate_3d_options(CLI::App* cmd, Simulate3dArgs& a) {
+  cmd->add_option("--orbit", a.orbit,
+                  "dim 3: half-axes aX aY of the elliptic tangential load orbit "
+                  "F_T = R(angle) (aX cos, aY sin) (aY < 0: clockwise)")
+      ->expected(2);
+  cmd->add_option_function<double>(
+      "--orbit-angle", [&a](const double& v) { a.orbit_angle = v; a.angle_given = true; },
+      "dim 3: rotation of the orbit in the tangential plane (rad, default 0)");
+  cmd->add_option_function<int>(
+      "--lead-steps", [&a](const int& v) { a.lead_steps = v; a.lead_given = true; },
+      "dim 3: steps of the tangential lead-in from 0 to the orbit's start (default "
+      "steps-per-cycle / 4)");
+}
+
+int count_option(const Simulate3dCommon& c, const char* key, int dflt) {
+  const auto it = c.num.find(key);
+  if (it == c.num.end()) return dflt;
+  const double d = it->second;
+  if (!(d == std::floor(d)) || d < 1 || d > INT_MAX)
+    throw InputError(std::string("--") + key + " must be an integer in [1, " +
+                     std::to_string(INT_MAX) + "], got " + num_text(d));
+  return static_cast<int>(d);
+}
+
+int run_simulate_3d(const Simulate3dArgs& a3, const Simulate3dCommon& c) {
+  const rate::ContactSystem3d sys = rate::parse_contact_system_3d(c.file);
+  if (sys.n_points() != 1)
+    throw InputError(c.system + ": " + std::to_string(sys.n_points()) +
+                     " points; the 3-D simulation (fretting with an elliptic load orbit) is for "
+                     "one point (\"dim\": 3 with one point)");
+  if (!c.other_given.empty())
+    throw InputError(c.other_given.front() +
+                     " has no effect with a \"dim\": 3 system (the file gives the point's "
+                     "parameters; the load is the elliptic orbit: --orbit, --orbit-angle, "
+                     "--lead-steps, --F_N, --period, --cycles, --steps-per-cycle, --ramp-steps)");
+  if (sys.points[0].state.state != 'b')
+    throw InputError(c.system + ": the simulation starts unloaded and grazing (state b, "
+                     "P = 0, F = 0); the file gives state " +
+                     std::string(1, sys.points[0].state.state));
+  if (a3.orbit.size() != 2)
+    throw InputError("a \"dim\": 3 simulation needs --orbit aX aY (the half-axes of the "
+                     "tangential load orbit)");
+  rate::EllipticOrbit orbit;
+  orbit.a_X = a3.orbit[0];
+  orbit.a_Y = a3.orbit[1];
+  orbit.angle = a3.orbit_angle;
+  orbit.lead_steps = a3.lead_steps;
+  if (a3.lead_given && a3.lead_steps < 0)
+    throw InputError("--lead-steps must be >= 0, got " + std::to_string(a3.lead_steps));
+  auto num = [&](const char* key, double& dst) {
+    if (const auto it = c.num.find(key); it != c.num.end()) dst = it->second;
+  };
+  num("F_N", orbit.F_N);
+  num("period", orbit.period);
+  orbit.cycles = count_option(c, "cycles", orbit.cycles);
+  orbit.steps_per_cycle = count_option(c, "steps-per-cycle", orbit.steps_per_cycle);
+  orbit.ramp_steps = count_option(c, "ramp-steps", orbit.ramp_steps);
+  throw_if_invalid(orbit.validate(), "orbit");
+  // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
+  rate::check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
+                         true, "lead_steps + ramp_steps + cycles x steps_per_cycle");
+
+  rate::Fretting3dOptions o;
+  o.params = sys.point_parameters(0);
+  if (!c.wear_law.empty()) {
+    o.wear.law = wear_law_option(c.wear_law);
+  }
+  num("k_M", o.wear.k_M);
+  const bool mroz = o.wear.law == rate::WearLaw::kMrozStupkiewicz;
+  if (!mroz && c.num.count("k_M"))
+    throw InputError("--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
+  if (mroz && !(o.wear.k_M > 0))
+    throw InputError("the wear law mroz needs --k_M > 0; for no wear use archard with k_a = 0");
+  if (mroz && o.params.k_a != 0)
+    throw InputError(c.system + ": k_a has no effect with the wear law mroz (its constant is "
+                     "--k_M); set k_a to 0 in the file");
+  if (!c.branch_rule.empty()) o.branch_rule = branch_rule_option(c.branch_rule);
+  if (c.every_given && c.every < 0) throw InputError("--every must be >= 0");
+  throw_if_invalid(o.validate(), c.system);
+
+  std::string csv = c.csv;
+  if (csv.empty() && !c.plot.empty()) csv = c.plot + ".csv";
+  std::string summary = c.summary;
+  if (summary.empty() && !c.plot.empty()) summary = c.plot + ".json";
+  std::ofstream f;
+  if (!csv.empty()) {
+    f = open_output(csv);
+    f.precision(12);
+    f << rate::fretting_3d_csv_header();
+    o.record_every = c.every_given ? c.every : 1;
+    o.on_sample = [&f](const rate::Fretting3dSample& x) { rate::write_fretting_3d_csv_row(f, x); };
+  } else {
+    o.record_every = 0;  // summary only: nothing is kept
+  }
+  const rate::Fretting3dResult r = rate::simulate_fretting_3d(orbit, o);
+  if (f.is_open()) finish_output(f, csv);
+
+  nlohmann::json j = rate::fretting_3d_summary_json(r, orbit, o, c.system, sys.name);
+  j["cpkit_version"] = CPKIT_VERSION;
+  j["run"] = run_echo();
+  if (!summary.empty()) write_json_file(summary, j);
+  if (c.json) {
+    print_json(j);
+  } else {
+    std::cout << "simulate (3-D point): " << rate::to_string(r.outcome) << " after " << r.steps
+              << " steps\n  " << r.message << "\n  wear depth " << r.wear_depth << " ("
+              << (mroz ? "Mroz" : "Archard") << " integral " << r.wear_integral
+              << "), slip path length " << r.total_slip << "\n";
+    if (!r.wear_per_cycle.empty())
+      std::cout << "  last cycle: wear " << r.wear_per_cycle.back() << " (by X slip "
+                << r.wear_X_per_cycle.back() << ", by Y slip " << r.wear_Y_per_cycle.back()
+                << "), slip " << r.slip_per_cycle.back() << "\n";
+    std::cout << "  branch points " << r.branch_steps << ", steps not proved complete "
+              << r.incomplete_steps << "\n";
+    if (r.local_steps > 0)
+      std::cout << "  steps solved by the local fallback " << r.local_steps
+                << " (the enumeration had claimed none for " << r.enumeration_missed << ")\n";
+  }
+  if (!draw_and_name_outputs("cpkit_plot_fretting_3d.py", csv, summary, c.plot,
+                             {"_orbit", "_wear"}))
+    return kExitInternal;  // the figures were asked for and are missing
+  switch (r.outcome) {
+    case rate::Fretting3dResult::Outcome::kCompleted: return kExitOk;
+    case rate::Fretting3dResult::Outcome::kAmbiguous: return kExitInconclusive;
+    default: return kExitNoSolution;
+  }
+}
+
+
+// N-point system files (docs/simulation.md, "N points"): the run of rate::simulate_system, its
+// CSV streamed row by row, its JSON summary and figures.
+/// A csv load for N points: rows t, F_T1, F_N1, ..., F_TN, F_NN ('#' comments, optional header).
+std::vector<rate::SystemLoadPoint> read_system_csv(const std::string& path, int N) {
+  return rate::parse_system_load_csv(
+      rate::read_bounded(path, rate::kMaxLoadCsvBytes, "load history"), path, N);
+}
+
+int run_system_simulation(const rate::SimulateSettings& s, const rate::SystemFile& file,
+                          bool print_json_summary) {
+  const rate::ContactSystem sys = rate::parse_contact_system(file);
+  const int N = sys.n_points();
+  rate::SystemLoadSource load;
+  std::vector<rate::SystemLoadPoint> stored;
+  if (s.load_type == "fretting") {
+    if (!sys.pattern1 || !sys.pattern2)
+      throw InputError("system '" + s.system + "' has no patterns: the fretting cycle is "
+                       "applied through them (F = F_T(t) e1 + F_N(t) e2); give patterns or a csv load");
+    load = rate::system_fretting_source(s.fretting, *sys.pattern1, *sys.pattern2);
+  } else {
+    stored = read_system_csv(s.load_csv, N);
+    rate::check_simulation_steps(static_cast<std::int64_t>(stored.size()), true, "the rows of the CSV");
+    load = rate::system_history_source(stored, s.csv_period);
+  }
+  rate::SystemSimulationOptions o;
+  o.heat = s.opt.heat;
+  o.branch_rule = s.opt.branch_rule;
+  o.tol = s.opt.tol;
+  std::string csv = s.csv;
+  if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
+  std::ofstream f;
+  if (!csv.empty()) {
+    f = open_output(csv);
+    f.precision(12);
+    f << rate::system_simulation_csv_header(N);
+    o.record_every = s.every;
+    o.on_sample = [&f](const rate::SystemSimulationSample& x) {
+      rate::write_system_simulation_csv_row(f, x);
+    };
+  } else {
+    o.record_every = 0;
+  }
+  const rate::SystemSimulationResult r = rate::simulate_system(sys, load, o);
+  if (f.is_open()) finish_output(f, csv);
+  nlohmann::json j = rate::system_simulation_summary_json(r, s, sys);
+  j["cpkit_version"] = CPKIT_VERSION;
+  const auto& fs = r.final_state;
+  std::string summary = s.summary;
+  if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
+  if (!summary.empty()) write_json_file(summary, j);
+  if (print_json_summary) {
+    print_json(j);
+  } else {
+    std::cout << "simulate (" << N << " points): " << j["outcome"].get<std::string>() << " after "
+              << r.steps << " steps\n  " << r.message << "\n  wear depth per point:";
+    for (int i = 0; i < N; ++i) std::cout << ' ' << fs.w_w[i];
+    std::cout << "\n  Archard integral per point:";
+    for (int i = 0; i < N; ++i) std::cout << ' ' << r.wear_integral[i];
+    std::cout << "\n  energy balance relative error " << r.energy_error << ", branch points "
+              << r.branch_steps << ", steps not proved complete " << r.incomplete_steps << "\n";
+  }
+  // A requested picture that could not be drawn is a failure (exit 4), as for one point.
+  if (!draw_and_name_outputs("cpkit_plot_system_simulation.py", csv, summary, s.plot,
+                             {"_wear", "_slip"}))
+    return kExitInternal;
+  if (r.outcome == rate::SimulationResult::Outcome::kCompleted) return kExitOk;
+  return r.inconclusive ? kExitInconclusive : kExitNoSolution;
+}
+
+
 
 struct SimArgs {
   std::string config;
@@ -47,28 +296,10 @@ struct SimArgs {
   bool heat = false, json = false;
   int every = 1;
   bool every_given = false;
-  Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (simulate_3d.cpp)
+  Simulate3dArgs three_d;  // --orbit ...: a "dim": 3 system (run_simulate_3d)
 };
 
 using Settings = rate::SimulateSettings;
-
-void set_criterion(Settings& s, const std::string& c) {
-  const auto crit = rate::criterion_from_string(c);
-  if (!crit) throw InputError("--criterion must be 38 or 35, got '" + c + "'");
-  s.opt.params.criterion = *crit;
-}
-
-void set_wear_law(Settings& s, const std::string& w) {
-  const auto law = rate::wear_law_from_string(w);
-  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + w + "'");
-  s.opt.wear.law = *law;
-}
-
-void set_branch_rule(Settings& s, const std::string& r) {
-  const auto rule = rate::branch_rule_from_string(r);
-  if (!rule) throw InputError("--branch-rule must be closest or stop, got '" + r + "'");
-  s.opt.branch_rule = *rule;
-}
 
 void apply_args(const SimArgs& a, Settings& s) {
   auto& P = s.opt.params;
@@ -123,9 +354,9 @@ void apply_args(const SimArgs& a, Settings& s) {
     s.opt.heat.conductance[1] = a.conductance[1];
   }
   if (a.heat) s.opt.heat.enabled = true;
-  if (!a.criterion.empty()) set_criterion(s, a.criterion);
-  if (!a.wear_law.empty()) set_wear_law(s, a.wear_law);
-  if (!a.branch_rule.empty()) set_branch_rule(s, a.branch_rule);
+  if (!a.criterion.empty()) s.opt.params.criterion = criterion_option(a.criterion);
+  if (!a.wear_law.empty()) s.opt.wear.law = wear_law_option(a.wear_law);
+  if (!a.branch_rule.empty()) s.opt.branch_rule = branch_rule_option(a.branch_rule);
   if (!a.load.empty()) s.load_type = a.load;
   if (!a.load_csv.empty()) {
     s.load_csv = a.load_csv;
@@ -143,20 +374,10 @@ class CsvSeries {
  public:
   explicit CsvSeries(const std::string& path) : path_(path), f_(open_output(path)) {
     f_.precision(12);
-    f_ << "step,t,F_T,F_N,P_T,P_N,w_T,w_N,w_w,w_Ti,g,state,type,count,dissipation,"
-          "dissipation_total,work_total,stored,temperature\n";
+    f_ << rate::simulation_csv_header();
   }
-  void write(const rate::SimulationSample& s) {
-    f_ << s.step << ',' << s.t << ',' << s.F_T << ',' << s.F_N << ',' << s.P_T << ',' << s.P_N
-       << ',' << s.w_T << ',' << s.w_N << ',' << s.w_w << ',' << s.w_Ti << ',' << s.g << ','
-       << rate::to_string(s.state) << ',' << rate::to_string(s.type) << ',' << s.count << ','
-       << s.dissipation << ',' << s.dissipation_total << ',' << s.work_total << ',' << s.stored
-       << ',' << s.temperature << '\n';
-  }
-  void close() {
-    f_.flush();
-    if (!f_) throw InputError("error writing '" + path_ + "' (disk full or not writable?)");
-  }
+  void write(const rate::SimulationSample& s) { rate::write_simulation_csv_row(f_, s); }
+  void close() { finish_output(f_, path_); }
 
  private:
   std::string path_;
@@ -169,7 +390,7 @@ nlohmann::json summary_json(const rate::SimulationResult& r, const Settings& s) 
   return j;
 }
 
-/// A "dim": 3 system: one 3-D point under an elliptic load orbit (simulate_3d.cpp); the options
+/// A "dim": 3 system: one 3-D point under an elliptic load orbit (run_simulate_3d); the options
 /// of the 2-D simulation are passed on to be refused there.
 int run_3d(const SimArgs& a, const rate::SystemFile& file) {
   Simulate3dCommon c;
@@ -260,7 +481,6 @@ int run(const SimArgs& a) {
   if (file) return run_system_simulation(s, *file, a.json);
   std::string csv = s.csv;
   if (csv.empty() && !s.plot.empty()) csv = s.plot + ".csv";
-  std::vector<std::string> written;  // named at the end: the user sees what the run produced
   // The series goes to its file as it is produced; without a file nothing is recorded, so the
   // memory does not grow with the steps (issue 14).
   std::unique_ptr<CsvSeries> series;
@@ -275,17 +495,10 @@ int run(const SimArgs& a) {
   const rate::LoadSource load = rate::make_simulate_source(s, stored);
   const rate::SimulationResult r = rate::simulate(load, s.opt);
   if (series) series->close();
-  if (series) written.push_back(csv);
   const nlohmann::json sum = summary_json(r, s);
   std::string summary = s.summary;
   if (summary.empty() && !s.plot.empty()) summary = s.plot + ".json";
-  if (!summary.empty()) {
-    std::ofstream f = open_output(summary);
-    f << json_text(sum) << '\n';
-    f.flush();
-    if (!f) throw InputError("error writing '" + summary + "' (disk full or not writable?)");
-    written.push_back(summary);
-  }
+  if (!summary.empty()) write_json_file(summary, sum);
   if (a.json) {
     print_json(sum);
   } else {
@@ -300,11 +513,9 @@ int run(const SimArgs& a) {
       std::cout << "  temperature: final " << r.final_state.temperature << ", max "
                 << r.max_temperature << "\n";
   }
-  const bool plot_failed =
-      !s.plot.empty() && !draw_simulation_figures("cpkit_plot_simulation.py", csv, summary, s.plot,
-                                                  {"_loop", "_wear", "_state"}, written);
-  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
-  if (plot_failed) return kExitInternal;  // the figures were asked for and are missing
+  if (!draw_and_name_outputs("cpkit_plot_simulation.py", csv, summary, s.plot,
+                             {"_loop", "_wear", "_state"}))
+    return kExitInternal;  // the figures were asked for and are missing
   return r.outcome == rate::SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
 }
 

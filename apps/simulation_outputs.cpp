@@ -4,6 +4,7 @@
 #include <iostream>
 #include <system_error>
 
+#include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
 #include "data_files.hpp"
 #include "run_program.hpp"
@@ -60,6 +61,29 @@ bool draw_simulation_figures(const std::string& script_name, const std::string& 
   for (const auto& fig : figures)
     for (const char* ext : {".png", ".svg"}) written.push_back(plot + fig + ext);
   return true;
+}
+
+void finish_output(std::ofstream& f, const std::string& path) {
+  f.flush();
+  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
+}
+
+void write_json_file(const std::string& path, const nlohmann::json& j) {
+  std::ofstream f = open_output(path);
+  f << json_text(j) << '\n';
+  finish_output(f, path);
+}
+
+bool draw_and_name_outputs(const std::string& script_name, const std::string& csv,
+                           const std::string& summary, const std::string& plot,
+                           const std::vector<std::string>& figures) {
+  std::vector<std::string> written;  // named at the end: the user sees what the run produced
+  if (!csv.empty()) written.push_back(csv);
+  if (!summary.empty()) written.push_back(summary);
+  const bool plot_failed =
+      !plot.empty() && !draw_simulation_figures(script_name, csv, summary, plot, figures, written);
+  for (const auto& w : written) std::cerr << "cpkit simulate: wrote " << w << '\n';
+  return !plot_failed;
 }
 
 }  // namespace cpkit::cli

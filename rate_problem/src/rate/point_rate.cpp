@@ -312,4 +312,44 @@ bool same_solution_sets(const RateSolutionSet& a, const RateSolutionSet& b, doub
   return true;
 }
 
+CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
+                                               const ContactState& state, const LoadRate& load,
+                                               RateMethod method) {
+  CheckedRateSolution out;
+  out.set = solve_rate_problem(params, state, load, method);
+  const RateSolutionSet& s = out.set;
+  if (method == RateMethod::kEnumerate) {
+    const RateSolutionSet analytic = solve_rate_problem(params, state, load, RateMethod::kAnalytic);
+    std::string why;
+    if (!s.complete) {
+      out.problem = "the enumeration is not conclusive: " + s.message;
+      out.inconclusive = true;
+    } else if (!analytic.complete) {
+      out.problem = "the analytic route cannot decide a sign: " + analytic.message;
+      out.inconclusive = true;
+    } else if (!same_solution_sets(s, analytic, 1e-7, &why)) {
+      out.problem = "enumeration and analytic routes disagree: " + why;
+    }
+    return out;
+  }
+  if (method == RateMethod::kAnalytic) {
+    if (!s.complete) {
+      out.problem = "the analytic route cannot decide a sign: " + s.message;
+      out.inconclusive = true;
+    }
+    return out;
+  }
+  out.reference = solve_rate_problem(params, state, load, RateMethod::kEnumerate);
+  if (s.solutions.empty()) return out;
+  // the solver's point is accurate to its residual (solved_inaccurate allows up to 1e-6)
+  const double tol = std::max(1e-6, 1e3 * s.residual);
+  const std::string name(to_string(method));
+  if (!contains(*out.reference, s.solutions.front().start, tol))
+    out.problem = name + "'s solution is not in the enumerated solution set";
+  else if (out.reference->solutions[find_piece(*out.reference, s.solutions.front().start, tol)]
+               .type != s.solutions.front().type)
+    out.problem = name + "'s solution has another type than the enumerated set's piece";
+  return out;
+}
+
 }  // namespace cpkit::rate

@@ -363,4 +363,41 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
   return out;
 }
 
+bool SystemRateRoute3d::infinite() const noexcept {
+  for (const auto& r : solutions)
+    if (r.ray) return true;
+  return false;
+}
+
+SystemRateRoute3d solve_system_rate_3d(const ContactSystem3d& system, const Eigen::VectorXd& dF,
+                                       int facets, double time_limit_s) {
+  SystemRateRoute3d out;
+  out.facets = facets;
+  if (system.n_points() != 1) {
+    if (facets == 0)
+      throw InputError("coupled 3-D points are solved with the faceted friction ellipses: "
+                       "facets must be given (3.." + std::to_string(kMaxFacets) + ")");
+    const SystemRateSet3d s = solve_system_rate_3d_faceted(system, dF, facets, time_limit_s);
+    out.complete = s.complete;
+    out.timed_out = s.timed_out;
+    out.message = s.message;
+    for (const auto& x : s.solutions) out.solutions.push_back({x.types, x.rates, {}, false, true});
+    return out;
+  }
+  const ContactState3d& st = system.points[0].state;
+  if (facets != 0 && st.state != 'b')
+    throw InputError(std::string("the faceted rate problem is that of state b (grazing); state ") +
+                     st.state + " has a linear rate problem, solved exactly");
+  if (dF.size() != 3) throw InputError("dF must have 3 entries for one 3-D point");
+  const ContactParameters3d p = system.point_parameters(0);
+  const Eigen::Vector3d f = dF;
+  const RateSolutionSet3d s = facets != 0 ? solve_rate_3d_faceted(p, f, facets, time_limit_s).set
+                                          : solve_rate_3d(p, st, f);
+  out.complete = s.complete;
+  out.message = s.message;
+  for (const auto& x : s.solutions)
+    out.solutions.push_back({{x.type}, {x.at}, {x.direction}, x.ray, x.origin_included});
+  return out;
+}
+
 }  // namespace cpkit::rate

@@ -80,4 +80,74 @@ nlohmann::json fretting_3d_sample_json(const Fretting3dSample& s) {
           {"type", std::string(to_string(s.type))}};
 }
 
+nlohmann::json system_rate_3d_json(const SystemRateRoute3d& r) {
+  nlohmann::json j;
+  j["route"] = r.facets != 0 ? "faceted" : "exact";
+  j["complete"] = r.complete;
+  if (r.timed_out) j["time_limit_reached"] = true;
+  if (!r.complete) j["found"] = r.count();
+  else if (r.infinite()) j["count"] = "inf";
+  else j["count"] = r.count();
+  if (!r.message.empty()) j["message"] = r.message;
+  nlohmann::json sols = nlohmann::json::array();
+  for (const auto& x : r.solutions) {
+    nlohmann::json e;
+    e["types"] = nlohmann::json::array();
+    for (auto t : x.types) e["types"].push_back(std::string(to_string(t)));
+    e["kind"] = x.ray ? "ray" : "point";
+    if (x.ray) {
+      e["start"] = rates_3d_json(x.rates);
+      e["start_closed"] = x.origin_included;
+      e["direction"] = rates_3d_json(x.direction);
+    } else {
+      e["values"] = rates_3d_json(x.rates);
+    }
+    add_slip_json(e, x.types, x.ray ? x.direction : x.rates);
+    sols.push_back(e);
+  }
+  j["solutions"] = sols;
+  return j;
+}
+
+nlohmann::json attempts_json(const std::vector<Attempt>& attempts) {
+  nlohmann::json at = nlohmann::json::array();
+  for (const auto& x : attempts)
+    at.push_back({{"solver", x.solver},
+                  {"solved", x.status == Status::kSolved},
+                  {"residual", std::isfinite(x.residual) ? nlohmann::json(x.residual)
+                                                         : nlohmann::json(nullptr)},
+                  {"iterations", x.iterations},
+                  {"seconds", x.seconds},
+                  {"message", x.message}});
+  return at;
+}
+
+nlohmann::json step_3d_set_json(const Step3dSolutionSet& set, bool with_count) {
+  nlohmann::json j;
+  if (with_count) {
+    j["complete"] = set.complete;
+    j[set.complete ? "count" : "found"] = set.count();
+  }
+  if (!set.message.empty()) j["message"] = set.message;
+  j["solutions"] = nlohmann::json::array();
+  for (const auto& s : set.solutions) j["solutions"].push_back(step_3d_solution_json(s));
+  return j;
+}
+
+nlohmann::json system_step_3d_set_json(const SystemStep3dSolutionSet& set, bool with_count) {
+  nlohmann::json j;
+  if (with_count) {
+    j["complete"] = false;
+    j["found"] = set.count();
+  }
+  if (!set.message.empty()) j["message"] = set.message;
+  j["solutions"] = nlohmann::json::array();
+  for (const auto& s : set.solutions) {
+    nlohmann::json pts = nlohmann::json::array();
+    for (const auto& x : s.points) pts.push_back(step_3d_solution_json(x));
+    j["solutions"].push_back({{"points", pts}, {"residual", s.residual}});
+  }
+  return j;
+}
+
 }  // namespace cpkit::rate

@@ -63,6 +63,20 @@ RateSolutionSet solve_rate_problem(const ContactParameters& params, const Contac
 bool same_solution_sets(const RateSolutionSet& a, const RateSolutionSet& b, double rel_tol = 1e-7,
                         std::string* why = nullptr);
 
+/// The rate problem solved by `method` and checked by a second route, as `cpkit rate` reports
+/// it: enumerate against analytic (the same pieces to 1e-7), analytic alone (complete), and a
+/// single solver (lemke, fb-newton, ipopt) against the complete enumeration (its point lies in the
+/// enumerated set, to max(1e-6, 1e3 x its residual), on a piece of the same type).
+struct CheckedRateSolution {
+  RateSolutionSet set;                       ///< the method's answer
+  std::optional<RateSolutionSet> reference;  ///< single solvers: the complete enumeration
+  std::string problem;        ///< empty when the check passed; else why not (one line)
+  bool inconclusive = false;  ///< a route could not decide a sign: proves nothing, no disagreement
+};
+CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
+                                               const ContactState& state, const LoadRate& load,
+                                               RateMethod method);
+
 /// Count (-1: infinite) and type mask only: the allocation-free fast path the maps call
 /// millions of times. Inputs must already be valid (no validation here: call
 /// params.validate() / state.validate() once per map).
