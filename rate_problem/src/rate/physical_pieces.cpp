@@ -309,7 +309,9 @@ int admissible(const Ctx& c, const Geo& g) {
   int verdict = 1;
   // v >= 0 with bound e
   auto ge0 = [&](double v, double e) {
-    const int s = sign3(Rounded{v, e});
+    // an exact 0.0 is a structural zero (a zero load or z entry, an exact cancellation of the
+    // same terms): the inequality holds with equality
+    const int s = v == 0 ? 0 : sign3(Rounded{v, e});
     if (s == -1) verdict = 0;
     else if (s == kUndecided && verdict == 1) verdict = kUndecided;
   };
@@ -498,7 +500,8 @@ std::vector<Geo> assemble(const Ctx& c, std::vector<Geo>& cand) {
 
 }  // namespace
 
-SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF) {
+SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF,
+                                       bool on_critical) {
   const int N = pre.system.n_points();
   SystemRateSolutionSet out;
   const Vec base = pre.Pf * dF;
@@ -577,37 +580,13 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     Bounded b{verts[k].cwiseQuotient(c.scale), {}};
     b.e = (kRoundUnits * 0x1p-52 * vmag[k].cwiseQuotient(c.scale)).array() +
           kr * b.y.lpNorm<Eigen::Infinity>();
-    c.tol = std::max(c.tol, b.e.maxCoeff());
+    c.tol = std::max(c.tol, std::min(b.e.maxCoeff(), kGeoTol));
     y.push_back(std::move(b));
   }
   std::vector<Geo> cand;
   for (const Bounded& v : y) cand.push_back(Geo{Kind::kPoint, v.y, {}, true, true, tuple_at(c, v), v.e, {}});
   for (const ZPiece& p : zp) piece_to_geo(c, kr, y, p, cand, out, msg);
   std::vector<Geo> kept = assemble(c, cand);
-  // Every isolated point's inequalities judged against their rounding: a point on a knife
-  // edge (one ulp past a critical load the data may exclude it) is listed, but the set is not
-  // proved; one the data exclude is not listed (issue 24).
-  int undecided = 0, excluded = 0;
-  for (std::size_t k = 0; k < kept.size();) {
-    const int a = kept[k].kind == Kind::kPoint ? admissible(c, kept[k]) : 1;
-    undecided += a == kUndecided ? 1 : 0;
-    if (a == 0) {
-      ++excluded;
-      kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
-    } else {
-      ++k;
-    }
-  }
-  if (undecided > 0) {
-    out.complete = false;
-    msg << undecided << " listed point(s) satisfy an inequality of their type only within its "
-        << "rounding (a critical load): the set is not proved; ";
-  }
-  if (excluded > 0) {
-    out.complete = false;
-    msg << excluded << " candidate point(s) of the LCP route violate an inequality of their type "
-        << "beyond its rounding: not listed; ";
-  }
   // rounding noise of exact zeros (e.g. dP_T of a separating point) printed as 0
   auto clean = [](Vec v, const Vec& e) {
     for (Eigen::Index k = 0; k < v.size(); ++k)
@@ -629,6 +608,33 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     msg << rejected << " candidate piece(s) of the LCP route violate the rate laws (unit-free "
         << "violation up to " << worst << " > " << kRateLawTol
         << ": an ill-conditioned or degenerate case): not listed; ";
+  }
+  // Every isolated point's inequalities judged against their rounding: a point on a knife
+  // edge (one ulp past a critical load the data may exclude it) is listed, but the set is not
+  // proved; one the data exclude is not listed (issue 24).
+  int undecided = 0, excluded = 0;
+  for (std::size_t k = 0; k < kept.size();) {
+    // the end of a listed piece has an active inequality by construction (the piece ends there)
+    bool end = false;
+    for (const Geo& g : kept) end = end || (g.kind != Kind::kPoint && on_piece(g, kept[k].a, c.tol));
+    const int a = kept[k].kind == Kind::kPoint && !end ? admissible(c, kept[k]) : 1;
+    undecided += a == kUndecided && !on_critical ? 1 : 0;
+    if (a == 0) {
+      ++excluded;
+      kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+    } else {
+      ++k;
+    }
+  }
+  if (undecided > 0) {
+    out.complete = false;
+    msg << undecided << " listed point(s) satisfy an inequality of their type only within its "
+        << "rounding (a critical load): the set is not proved; ";
+  }
+  if (excluded > 0) {
+    out.complete = false;
+    msg << excluded << " candidate point(s) of the LCP route violate an inequality of their type "
+        << "beyond its rounding: not listed; ";
   }
   for (const Geo& g : kept) {
     SystemRateSolution s;

@@ -358,7 +358,7 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
 }
 
 SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
-                                         const Eigen::VectorXd& dF) noexcept {
+                                         const Eigen::VectorXd& dF, bool on_critical) noexcept {
   SystemRateSummary out;
   if (dF.size() != pre.Pf.cols() || !dF.allFinite()) {  // invalid input: say so, do not guess
     out.reliable = false;
@@ -368,7 +368,7 @@ SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
     // counts and types are positively homogeneous in dF: judge the load at unit size
     const double f = dF.lpNorm<Eigen::Infinity>();
     const SystemRateSolutionSet set =
-        detail::enumerate_system(pre, f > 0 ? Eigen::VectorXd(dF / f) : dF);
+        detail::enumerate_system(pre, f > 0 ? Eigen::VectorXd(dF / f) : dF, on_critical);
     out.count = set.count();
     out.reliable = set.complete;
     for (const auto& s : set.solutions) {
