@@ -240,8 +240,11 @@ Eigen::VectorXd system_q(const SystemRatePrecomputed& pre, const Eigen::VectorXd
   Eigen::VectorXd q = pre.Q * dF;
   // the size of the terms of w at z = 0
   const Eigen::VectorXd t = pre.G.cwiseAbs() * (pre.Pf.cwiseAbs() * dF.cwiseAbs());
+  // only rounding is snapped (256 ulps x cond(A) of the terms, as physical_pieces bounds the
+  // rates): a q_r of the data one ulp past a critical load keeps its sign (issue 24)
+  const double snap = std::min(kSnap, 256 * 0x1p-52 * std::max(1.0, pre.inv_min_eig / pre.inv_max_eig));
   for (int r = 0; r < pre.m; ++r)
-    if (std::abs(q(r)) <= kSnap * t(r)) q(r) = 0;
+    if (std::abs(q(r)) <= snap * t(r)) q(r) = 0;
   return q;
 }
 
