@@ -398,6 +398,17 @@ int keep_verified(const SystemRatePrecomputed& pre, const Ctx& c, const Vec& dF,
 
 namespace {
 
+/// |P| |x| (the sizes of the terms of P x) without a temporary |P|: called per map cell.
+Vec term_sizes(const Eigen::MatrixXd& P, const Eigen::Ref<const Vec>& x) {
+  Vec t = Vec::Zero(P.rows());
+  for (Eigen::Index k = 0; k < P.cols(); ++k) {
+    const double a = std::abs(x(k));
+    if (a != 0)
+      for (Eigen::Index r = 0; r < P.rows(); ++r) t(r) += std::abs(P(r, k)) * a;
+  }
+  return t;
+}
+
 /// An LCP piece: its vertices (indices) and its rays mapped to physical rates, with the sizes
 /// of their terms (|Pz| |d|).
 struct ZPiece {
@@ -410,7 +421,7 @@ ZPiece z_piece(const SystemRatePrecomputed& pre, const std::vector<int>& v, cons
   z.v = v;
   for (const auto& d : rays) {
     z.rays.push_back(pre.Pz * d);
-    z.mag.push_back(pre.Pz.cwiseAbs() * Vec(d).cwiseAbs());
+    z.mag.push_back(term_sizes(pre.Pz, d));
   }
   return z;
 }
@@ -520,7 +531,7 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   const int N = pre.system.n_points();
   SystemRateSolutionSet out;
   const Vec base = pre.Pf * dF;
-  const Vec base_mag = pre.Pf.cwiseAbs() * dF.cwiseAbs();
+  const Vec base_mag = term_sizes(pre.Pf, dF);
   std::vector<Vec> verts, vmag;  // vertices and the sizes of their terms
   std::vector<ZPiece> zp;
   std::ostringstream msg;
@@ -553,7 +564,7 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     }
     for (const Vec& z : zs) {
       verts.push_back(base + pre.Pz * z);
-      vmag.push_back(base_mag + pre.Pz.cwiseAbs() * z.cwiseAbs());
+      vmag.push_back(base_mag + term_sizes(pre.Pz, z));
     }
     for (const auto& p : pieces) zp.push_back(z_piece(pre, p.first, p.second));
   } else {
@@ -571,7 +582,7 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     }
     for (const auto& s : set.solutions) {
       verts.push_back(base + pre.Pz * s.z);
-      vmag.push_back(base_mag + pre.Pz.cwiseAbs() * s.z.cwiseAbs());
+      vmag.push_back(base_mag + term_sizes(pre.Pz, s.z));
     }
     for (const auto& p : set.pieces) zp.push_back(z_piece(pre, p.vertices, p.rays));
   }
