@@ -190,14 +190,14 @@ bool have_numpy() {
 const char* kFig5bAlone = R"({"name": "fig5b alone", "A": [[1, 2], [2, 5]], "points": [{"state": "b", "mu": 1}]})";
 }  // namespace
 
-// Known failure (issue 24, the N-point route's bands in physical_pieces): one ulp past the
-// critical direction L+ = dF_T - dF_N = 0 of the fig. 5b point (mu = 1, C_T = 0), the stick
-// violates |dP_T| <= mu dP_N by one ulp, so the exact set of these doubles is the separation
-// alone (the one-point route, which judges every sign against its rounding, says so). The
-// N-point route also lists the stick and says complete. Remove [!shouldfail] when it answers
-// one solution or "not complete".
+// Issue 24 (the N-point route's bands in physical_pieces): one ulp past the critical direction
+// L+ = dF_T - dF_N = 0 of the fig. 5b point (mu = 1, C_T = 0), the stick violates
+// |dP_T| <= mu dP_N by one ulp, so the exact set of these doubles is the separation alone (the
+// one-point route, which judges every sign against its rounding, says so). The N-point route
+// listed the stick too and said complete; it now judges the stick's inequality against its
+// rounding bound and says "not complete" (exit 5) rather than guess.
 TEST_CASE("cpkit rate --system: one ulp past a critical direction, the stick is not a solution",
-          "[cli][map][system][!shouldfail]") {
+          "[cli][map][system]") {
   const std::string f = write_system("rate_knife.json", kSystem);
   const std::string dF = " --dF 0.7071067811865476 0.7071067811865475 0 0";
   const auto one = cpkit::test::run_cpkit(

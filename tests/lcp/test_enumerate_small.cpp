@@ -288,3 +288,67 @@ TEST_CASE("enumerate_small: rate LCP, degenerate a11 = mu |a12| gives a segment"
   CHECK(out.pieces[0].num_rays == 1);
   CHECK(__builtin_popcount(out.pieces[0].vertex_mask) == 1);
 }
+
+// Issue 24 (the bands of enumerate_small): the near-singular band (|det| <= 1e4 tol perm sends a
+// block to the elimination path) and the sign bands are relative to the terms, so the verdict of
+// a near-degenerate state-b rate LCP (a11 = mu a12 (1 + delta)) and of the 1x1 LCP of a state-d
+// point must not change under q -> a q and (M, q) -> b (M, q), a, b in 1e-12..1e12. Reference:
+// the unscaled problem's closed form (closed_form above; the 1x1 LCP by hand), not the code.
+TEST_CASE("enumerate_small: near-singular and 1x1 rate LCPs keep their verdict in other units",
+          "[enumerate_small][rate][scale]") {
+  const double kF[] = {1e-12, 1e-6, 1.0, 1e6, 1e12};
+  for (double delta : {1e-2, 1e-5, 1e-7, 1e-9, -1e-9, -1e-7, -1e-5, -1e-2}) {
+    for (auto [dFT, dFN] : std::vector<std::pair<double, double>>{{1, 1.5}, {0.3, 1}, {-1, 0.5}, {1, -1}}) {
+      // a12 = 2, mu = 0.5: D_+ = a11 - mu a12 = delta (relative to mu a12 = 1)
+      const RateData p{1 + delta, 2, 5, 0.2, 0.5, dFT, dFN};
+      CAPTURE(delta, dFT, dFN);
+      Eigen::Matrix3d M;
+      Eigen::Vector3d q;
+      rate_lcp(p, M, q);
+      const auto cf = closed_form(p);
+      int ref_count = -2, ref_amb = -1;
+      bool ref_inf = false;
+      for (double a : kF) {
+        for (double b : kF) {
+          CAPTURE(a, b);
+          const Eigen::Matrix3d Mb = b * M;
+          const Eigen::Vector3d qb = (a * b) * q;
+          cpkit::lcp::SmallSolutionSet<3> out;
+          cpkit::lcp::enumerate_small<3>(Mb, qb, out);
+          // the physical points of z / a (the unscaled problem's z)
+          cpkit::lcp::SmallSolutionSet<3> back = out;
+          for (int k = 0; k < back.num_points; ++k) back.z[k] /= a;
+          const int count = static_cast<int>(physical(p, back).size());
+          if (ref_count == -2) {
+            ref_count = count;
+            ref_amb = out.ambiguous;
+            ref_inf = out.infinite;
+            // decided and finite in the reference units: the closed form's set
+            if (ref_amb == 0 && (!ref_inf || cf.size() == 1)) CHECK(count == static_cast<int>(cf.size()));
+          }
+          CHECK(out.ambiguous == ref_amb);
+          CHECK(out.infinite == ref_inf);
+          CHECK(count == ref_count);
+        }
+      }
+    }
+  }
+  // 1x1 (a state-d point): m z + q = w, z, w >= 0, z w = 0. m > 0: one solution; m < 0: two
+  // when q > 0, none when q < 0; m = 0: z = 0 when q > 0, a ray when q = 0, none when q < 0.
+  struct Case { double m, q; int count; bool infinite; };
+  for (const Case c : {Case{1, -2, 1, false}, Case{1, 3, 1, false}, Case{-1, 2, 2, false},
+                       Case{-1, -2, 0, false}, Case{0, 1, 1, false}, Case{0, 0, 1, true},
+                       Case{0, -1, 0, false}, Case{3e-9, -1, 1, false}, Case{-3e-9, 1, 2, false}}) {
+    for (double a : kF) {
+      for (double b : kF) {
+        CAPTURE(c.m, c.q, a, b);
+        cpkit::lcp::SmallSolutionSet<1> out;
+        cpkit::lcp::enumerate_small<1>(Eigen::Matrix<double, 1, 1>(b * c.m),
+                                       Eigen::Matrix<double, 1, 1>(a * b * c.q), out);
+        CHECK(out.ambiguous == 0);
+        CHECK(out.num_points == c.count);
+        CHECK(out.infinite == c.infinite);
+      }
+    }
+  }
+}

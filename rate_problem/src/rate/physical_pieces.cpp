@@ -12,13 +12,25 @@
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "physical_pieces.hpp"
 #include "rate_laws_check.hpp"
+#include "rounded.hpp"
 
 namespace cpkit::rate::detail {
 namespace {
 
-/// Coincidence and type tolerance in normalised coordinates (forces / force scale, displacement
-/// rates / displacement scale), as the one-point enumeration route's kGeoTol.
+/// Type tolerance in normalised coordinates (forces / force scale, displacement rates /
+/// displacement scale) of classify_system_rates only, which has no error bounds (a single
+/// solution of an iterative LCP solver); enumerate_system decides every sign and coincidence
+/// against the rounding bound of its own values (RoundBound below).
 constexpr double kGeoTol = 1e-9;
+/// Rounding of one coordinate of the physical rates y = Pf dF + Pz z, relative to the size of its
+/// terms (|Pf| |dF| + |Pz| |z|): the data Pf, Pz, M, q are formed from A by eliminations
+/// (Schur complements) whose rounding grows with cond(A), and z is a solve of a block of M (at
+/// most a few dozen operations, blocks closer to singular than 1e-8 of their terms are left
+/// to the enumeration's ambiguous count). Bound: kRoundUnits ulps x cond(A) x the terms. An
+/// estimate, not a proof (cond(A) bounds the growth of the eliminations, not every path of the
+/// enumeration), but unit-free and from the data: a sign, a knot or a coincidence inside it is
+/// not decided (the set is then not complete), outside it the data decide.
+constexpr double kRoundUnits = 256;
 /// Largest cond(A) (2-norm) for which the enumeration is called complete (measured: a seeded
 /// sweep of 2- and 3-point systems against a long-double brute force is right up to 1e9).
 constexpr double kMaxProvedCond = 1e8;
@@ -31,29 +43,42 @@ struct Geo {
   Vec a, b;  ///< point / segment ends / ray origin and unit direction (b)
   bool ca = true, cb = true;
   TypeTuple type = 0;
+  Vec ea, eb;  ///< rounding bounds of a and b (coordinate-wise)
+  Vec raw;     ///< a as computed, before rounding noise is printed as 0 (the sign tests' value)
 };
 
 struct Ctx {
   const SystemRatePrecomputed& pre;
   int N;
   Vec scale;  ///< 6N: the normalisation of every coordinate
+  /// merges and knots: two normalised points are one when they differ by at most `tol` (the
+  /// largest rounding bound of the listed values; kGeoTol for classify_system_rates)
+  double tol = kGeoTol;
 };
 
-std::vector<SolutionType> types_at(const Ctx& c, const Vec& y) {
+/// A normalised point with the rounding bound of each coordinate (same units).
+struct Bounded {
+  Vec y, e;
+};
+
+/// The types at y, a coordinate's sign judged against its bound e (a value within it is zero:
+/// a stick's dw_T^i and dw_N are zero by structure, computed as rounding noise).
+std::vector<SolutionType> types_at(const Ctx& c, const Vec& y, const Vec& e) {
   std::vector<SolutionType> t(static_cast<std::size_t>(c.N));
   for (int i = 0; i < c.N; ++i) {
     const StateLabel l = c.pre.system.points[static_cast<std::size_t>(i)].state.label;
     SolutionType& x = t[static_cast<std::size_t>(i)];
     if (l == StateLabel::kA) { x = SolutionType::kOpen; continue; }
     if (l == StateLabel::kC) { x = SolutionType::kStick; continue; }
-    if (l == StateLabel::kB && y(3 * c.N + i) < -kGeoTol) { x = SolutionType::kSeparation; continue; }
-    const double xi = y(4 * c.N + i);
-    x = xi > kGeoTol ? SolutionType::kSlipPlus
-                     : (xi < -kGeoTol ? SolutionType::kSlipMinus : SolutionType::kStick);
+    const int n = 3 * c.N + i, s = 4 * c.N + i;
+    if (l == StateLabel::kB && y(n) < -e(n)) { x = SolutionType::kSeparation; continue; }
+    const double xi = y(s);
+    x = xi > e(s) ? SolutionType::kSlipPlus
+                  : (xi < -e(s) ? SolutionType::kSlipMinus : SolutionType::kStick);
   }
   return t;
 }
-TypeTuple tuple_at(const Ctx& c, const Vec& y) { return encode_types(types_at(c, y)); }
+TypeTuple tuple_at(const Ctx& c, const Bounded& b) { return encode_types(types_at(c, b.y, b.e)); }
 
 /// m <= 4: the fixed-size enumeration (the path enumerate_all takes for these sizes, without
 /// its copies and allocations). Fills the extreme solutions and the pieces.
@@ -93,44 +118,52 @@ double dist(const Vec& a, const Vec& b) { return (a - b).lpNorm<Eigen::Infinity>
 
 /// Splits the segment a-b (ray: a + t b, t >= 0, when `ray`) where a type changes; every end
 /// of a sub-piece is also emitted as a point (absorbed later when its type is the piece's).
-void split(const Ctx& c, const Vec& a, const Vec& b, bool ray, std::vector<Geo>& out) {
+/// A type changes inside only where a row's sign is decided at both ends (or at the origin and
+/// along the direction) and differs: a row within its bound at an end changes type there.
+void split(const Ctx& c, const Bounded& a, const Bounded& b, bool ray, std::vector<Geo>& out) {
   std::vector<double> ts;
   for (int r : type_rows(c)) {
-    if (!ray) {
-      const double f0 = a(r), f1 = b(r);
-      if ((f0 < -kGeoTol && f1 > kGeoTol) || (f0 > kGeoTol && f1 < -kGeoTol)) ts.push_back(f0 / (f0 - f1));
-    } else {
-      const double f0 = a(r), g = b(r);
-      if ((f0 < -kGeoTol && g > kGeoTol) || (f0 > kGeoTol && g < -kGeoTol)) ts.push_back(-f0 / g);
-    }
+    const double f0 = a.y(r), f1 = b.y(r), e0 = a.e(r), e1 = b.e(r);
+    const bool change = (f0 < -e0 && f1 > e1) || (f0 > e0 && f1 < -e1);
+    if (change) ts.push_back(ray ? -f0 / f1 : f0 / (f0 - f1));
   }
   std::sort(ts.begin(), ts.end());
-  auto at = [&](double t) -> Vec { return ray ? Vec(a + t * b) : Vec(a + t * (b - a)); };
+  auto at = [&](double t) -> Bounded {
+    if (ray) return {Vec(a.y + t * b.y), Vec(a.e + t * b.e)};
+    return {Vec(a.y + t * (b.y - a.y)), Vec((1 - t) * a.e + t * b.e)};
+  };
   std::vector<double> knots{0.0};
   for (double t : ts)
-    if (dist(at(t), at(knots.back())) > kGeoTol) knots.push_back(t);
+    if (dist(at(t).y, at(knots.back()).y) > c.tol) knots.push_back(t);
   if (!ray) {
-    if (dist(at(1.0), at(knots.back())) > kGeoTol) knots.push_back(1.0);
+    if (dist(at(1.0).y, at(knots.back()).y) > c.tol) knots.push_back(1.0);
     else knots.back() = 1.0;
   }
-  for (std::size_t k = 0; k < knots.size(); ++k) out.push_back(Geo{Kind::kPoint, at(knots[k]), {}, true, true, tuple_at(c, at(knots[k]))});
+  for (std::size_t k = 0; k < knots.size(); ++k) {
+    const Bounded p = at(knots[k]);
+    out.push_back(Geo{Kind::kPoint, p.y, {}, true, true, tuple_at(c, p), p.e, {}, {}});
+  }
   const std::size_t nseg = ray ? knots.size() : knots.size() - 1;
   for (std::size_t k = 0; k < nseg; ++k) {
     const bool last_ray = ray && k + 1 == knots.size();
     const double t0 = knots[k];
     const double t1 = last_ray ? t0 + 1.0 : knots[k + 1];
-    const Vec mid = at(0.5 * (t0 + t1));
     Geo g;
-    g.type = tuple_at(c, last_ray ? at(t0 + 1.0) : mid);
-    g.a = at(t0);
-    g.ca = tuple_at(c, g.a) == g.type;
+    g.type = tuple_at(c, last_ray ? at(t0 + 1.0) : at(0.5 * (t0 + t1)));
+    const Bounded p0 = at(t0);
+    g.a = p0.y;
+    g.ea = p0.e;
+    g.ca = tuple_at(c, p0) == g.type;
     if (last_ray) {
       g.kind = Kind::kRay;
-      g.b = b;
+      g.b = b.y;
+      g.eb = b.e;
     } else {
+      const Bounded p1 = at(t1);
       g.kind = Kind::kSegment;
-      g.b = at(t1);
-      g.cb = tuple_at(c, g.b) == g.type;
+      g.b = p1.y;
+      g.eb = p1.e;
+      g.cb = tuple_at(c, p1) == g.type;
     }
     out.push_back(std::move(g));
   }
@@ -157,7 +190,7 @@ bool on_piece(const Geo& g, const Vec& y, double tol) {
 }
 
 /// Merges collinear overlapping segments/rays of one type tuple; drops duplicates.
-void merge_pieces(std::vector<Geo>& pcs) {
+void merge_pieces(std::vector<Geo>& pcs, double tol) {
   bool changed = true;
   while (changed) {
     changed = false;
@@ -174,29 +207,29 @@ void merge_pieces(std::vector<Geo>& pcs) {
           } else {
             on_line(g, h.b, t, d);
           }
-          return d <= kGeoTol;
+          return d <= tol;
         }();
         double ta, da;
         on_line(g, h.a, ta, da);
-        if (da > kGeoTol || !hb_on_line) continue;
-        if (!(on_piece(g, h.a, kGeoTol) || (h.kind != Kind::kRay && on_piece(g, h.b, kGeoTol)) ||
-              on_piece(h, g.a, kGeoTol)))
+        if (da > tol || !hb_on_line) continue;
+        if (!(on_piece(g, h.a, tol) || (h.kind != Kind::kRay && on_piece(g, h.b, tol)) ||
+              on_piece(h, g.a, tol)))
           continue;
         // union on g's line: parameters of all ends
         const Vec dir = g.kind == Kind::kRay ? g.b : Vec(g.b - g.a);
         auto param = [&](const Vec& y) { return (y - g.a).dot(dir) / dir.squaredNorm(); };
-        struct End { double t; Vec y; bool closed; };
-        std::vector<End> ends{{0.0, g.a, g.ca}, {param(h.a), h.a, h.ca}};
+        struct End { double t; Vec y; bool closed; Vec e; };
+        std::vector<End> ends{{0.0, g.a, g.ca, g.ea}, {param(h.a), h.a, h.ca, h.ea}};
         bool is_ray = false;
         double ray_sign = 0;
-        if (g.kind == Kind::kRay) { is_ray = true; ray_sign = 1; } else ends.push_back({1.0, g.b, g.cb});
+        if (g.kind == Kind::kRay) { is_ray = true; ray_sign = 1; } else ends.push_back({1.0, g.b, g.cb, g.eb});
         if (h.kind == Kind::kRay) {
           const double s = h.b.dot(dir) > 0 ? 1 : -1;
           if (is_ray && s != ray_sign) continue;  // opposite rays: a line, leave both
           is_ray = true;
           ray_sign = s;
         } else {
-          ends.push_back({param(h.b), h.b, h.cb});
+          ends.push_back({param(h.b), h.b, h.cb, h.eb});
         }
         std::sort(ends.begin(), ends.end(), [](const End& x, const End& y) { return x.t < y.t; });
         Geo u;
@@ -206,16 +239,20 @@ void merge_pieces(std::vector<Geo>& pcs) {
           u.kind = Kind::kRay;
           u.a = o.y;
           u.ca = o.closed;
-          for (const End& e : ends) if (dist(e.y, o.y) <= kGeoTol) u.ca = u.ca || e.closed;
+          u.ea = o.e;
+          for (const End& e : ends) if (dist(e.y, o.y) <= tol) u.ca = u.ca || e.closed;
           u.b = g.kind == Kind::kRay ? g.b : h.b;
+          u.eb = g.kind == Kind::kRay ? g.eb : h.eb;
         } else {
           u.kind = Kind::kSegment;
           u.a = ends.front().y;
           u.b = ends.back().y;
+          u.ea = ends.front().e;
+          u.eb = ends.back().e;
           u.ca = u.cb = false;
           for (const End& e : ends) {
-            if (dist(e.y, u.a) <= kGeoTol) u.ca = u.ca || e.closed;
-            if (dist(e.y, u.b) <= kGeoTol) u.cb = u.cb || e.closed;
+            if (dist(e.y, u.a) <= tol) u.ca = u.ca || e.closed;
+            if (dist(e.y, u.b) <= tol) u.cb = u.cb || e.closed;
           }
         }
         pcs[i] = u;
@@ -260,7 +297,69 @@ std::vector<SolutionType> classify_system_rates(const SystemRatePrecomputed& pre
                                                 double disp_scale) {
   const int N = pre.system.n_points();
   Ctx c{pre, N, scale_vector(N, force_scale, disp_scale)};
-  return types_at(c, Vec(stack(r).cwiseQuotient(c.scale)));
+  return types_at(c, Vec(stack(r).cwiseQuotient(c.scale)), Vec::Constant(6 * N, kGeoTol));
+}
+
+/// Is the isolated point g admissible for its type? Every inequality of its points' laws
+/// (dP_N >= 0, |dP_T| <= mu dP_N, s dw_T^i >= 0, dw_N <= 0 of a separation, the state-d
+/// cone) is judged against the rounding bound of its value: 1 all decided true, 0 one decided
+/// false, kUndecided when one lies within its bound (a knife edge: a critical load).
+int admissible(const Ctx& c, const Geo& g) {
+  const int N = c.N;
+  const std::vector<SolutionType> t = decode_types(g.type, N);
+  int verdict = 1;
+  // v >= 0 with bound e
+  // structural: v is one coordinate, or a combination of coordinates that are all exactly 0.0;
+  // its exact 0.0 then comes from a zero z entry or load (the inequality holds with equality),
+  // while a 0.0 by cancellation of nonzero terms (mu dP_N = |dP_T| to the last bit) is not
+  // decided
+  auto ge0 = [&](double v, double e, bool structural = true) {
+    const int s = v == 0 && structural ? 0 : sign3(Rounded{v, e});
+    if (s == -1) verdict = 0;
+    else if (s == kUndecided && verdict == 1) verdict = kUndecided;
+  };
+  const Vec& y = g.raw;
+  const Vec& e = g.ea;
+  const double u = 0x1p-52;
+  for (int i = 0; i < N; ++i) {
+    const SystemPoint& P = c.pre.system.points[static_cast<std::size_t>(i)];
+    const int iT = i, iN = N + i, iwN = 3 * N + i, iTi = 4 * N + i;
+    const SolutionType ti = t[static_cast<std::size_t>(i)];
+    const double s = ti == SolutionType::kSlipPlus ? 1.0 : -1.0;
+    // forces are normalised by one scale: mu dP_N - |dP_T| is a unit-free combination
+    auto cone = [&](double m, double sg) {
+      const double v = m * y(iN) - sg * y(iT);
+      ge0(v, std::abs(m) * e(iN) + e(iT) + 4 * u * (std::abs(m * y(iN)) + std::abs(y(iT))),
+          y(iN) == 0 && y(iT) == 0);
+    };
+    if (P.state.label == StateLabel::kB) {
+      if (ti == SolutionType::kSeparation) {
+        ge0(-y(iwN), e(iwN));
+      } else {
+        ge0(y(iN), e(iN));
+        // no force rate and dw_N = 0 only within its rounding: contact or separation is not
+        // decided (an exact 0.0 of dP_N is the vertex's, not the data's)
+        if (std::abs(y(iN)) <= e(iN) && y(iwN) != 0 && std::abs(y(iwN)) <= e(iwN) &&
+            verdict == 1)
+          verdict = kUndecided;
+        if (ti == SolutionType::kStick) {
+          cone(P.mu, y(iT) >= 0 ? 1.0 : -1.0);
+        } else {
+          ge0(s * y(iTi), e(iTi));
+        }
+      }
+    } else if (P.state.label == StateLabel::kD) {
+      const double sg = P.state.sgn_PT;
+      if (ti == SolutionType::kStick) {
+        const ContactParameters par = c.pre.system.point_parameters(i);
+        const double kappa = par.kappa(P.state.P_N);
+        cone(c.pre.system.criterion == Criterion::kSoftening ? P.mu - 2.0 * kappa : P.mu, sg);
+      } else {
+        ge0(sg * y(iTi), e(iTi));
+      }
+    }
+  }
+  return verdict;
 }
 
 /// Keeps the pieces whose points (every point, the ends and the middle of a segment, a ray's
@@ -279,9 +378,9 @@ int keep_verified(const SystemRatePrecomputed& pre, const Ctx& c, const Vec& dF,
     return v <= kRateLawTol;
   };
   for (Geo& g : kept) {
-    bool ok = check(g.a, g.kind == Kind::kPoint ? g.type : tuple_at(c, g.a), dF, sF, sW);
+    bool ok = check(g.a, g.kind == Kind::kPoint ? g.type : tuple_at(c, {g.a, g.ea}), dF, sF, sW);
     if (g.kind == Kind::kSegment)
-      ok = ok && check(g.b, tuple_at(c, g.b), dF, sF, sW) &&
+      ok = ok && check(g.b, tuple_at(c, {g.b, g.eb}), dF, sF, sW) &&
            check(Vec(0.5 * (g.a + g.b)), g.type, dF, sF, sW);
     if (g.kind == Kind::kRay) {
       const Vec d = phys(g.b);
@@ -297,17 +396,149 @@ int keep_verified(const SystemRatePrecomputed& pre, const Ctx& c, const Vec& dF,
   return rejected;
 }
 
-SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF) {
+namespace {
+
+/// |P| |x| (the sizes of the terms of P x) without a temporary |P|: called per map cell.
+Vec term_sizes(const Eigen::MatrixXd& P, const Eigen::Ref<const Vec>& x) {
+  Vec t = Vec::Zero(P.rows());
+  for (Eigen::Index k = 0; k < P.cols(); ++k) {
+    const double a = std::abs(x(k));
+    if (a != 0)
+      for (Eigen::Index r = 0; r < P.rows(); ++r) t(r) += std::abs(P(r, k)) * a;
+  }
+  return t;
+}
+
+/// An LCP piece: its vertices (indices) and its rays mapped to physical rates, with the sizes
+/// of their terms (|Pz| |d|).
+struct ZPiece {
+  std::vector<int> v;
+  std::vector<Vec> rays, mag;
+};
+template <class Rays>
+ZPiece z_piece(const SystemRatePrecomputed& pre, const std::vector<int>& v, const Rays& rays) {
+  ZPiece z;
+  z.v = v;
+  for (const auto& d : rays) {
+    z.rays.push_back(pre.Pz * d);
+    z.mag.push_back(term_sizes(pre.Pz, d));
+  }
+  return z;
+}
+
+/// The physical pieces of one LCP piece: a segment or a ray (split by type), a face of
+/// dimension >= 2 or a whole line (reported, not listed: out.complete = false), or nothing
+/// new (one physical point). kr: the relative rounding bound (kRoundUnits ulps x cond(A)).
+void piece_to_geo(const Ctx& c, double kr, const std::vector<Bounded>& y, const ZPiece& p,
+                  std::vector<Geo>& cand, SystemRateSolutionSet& out, std::ostringstream& msg) {
+  const int N = c.N;
+  if (p.v.empty()) return;  // a piece always has a vertex (pointed polyhedron)
+  std::vector<Bounded> rays;
+  for (std::size_t k = 0; k < p.rays.size(); ++k) {
+    const Vec rn = p.rays[k].cwiseQuotient(c.scale);
+    const Vec en = kRoundUnits * 0x1p-52 * p.mag[k].cwiseQuotient(c.scale);
+    const double n = rn.lpNorm<Eigen::Infinity>();
+    // a z-direction whose physical image is rounding (a b point's z1 = z2 ray) adds no point
+    if (n > en.maxCoeff() + kr * n) rays.push_back({rn / n, Vec((en / n).array() + kr)});
+  }
+  const Vec& y0 = y[static_cast<std::size_t>(p.v[0])].y;
+  Eigen::MatrixXd D(6 * N, static_cast<Eigen::Index>(p.v.size() - 1 + rays.size()));
+  Eigen::Index col = 0;
+  for (std::size_t k = 1; k < p.v.size(); ++k) D.col(col++) = y[static_cast<std::size_t>(p.v[k])].y - y0;
+  for (const Bounded& r : rays) D.col(col++) = r.y;
+  if (D.cols() == 0 || D.lpNorm<Eigen::Infinity>() <= c.tol) return;  // one physical point
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(D, Eigen::ComputeThinU);
+  const auto sv = svd.singularValues();
+  // rank: singular values above 1e-7 of the largest; between that and the rounding of D's
+  // entries the dimension is not decided by the data
+  const double noise = std::max(c.tol, kr) * std::sqrt(static_cast<double>(D.rows() * D.cols()));
+  int rank = 0;
+  bool gray = false;
+  for (Eigen::Index k = 0; k < sv.size(); ++k) {
+    const bool big = sv(k) > 1e-7 * std::max(1.0, sv(0));
+    rank += big ? 1 : 0;
+    gray = gray || (!big && sv(k) > noise);
+  }
+  if (gray) {
+    out.complete = false;
+    msg << "the dimension of a piece of the solution set is within its rounding: not proved; ";
+  }
+  if (rank == 0) return;
+  if (rank >= 2) {
+    out.complete = false;
+    out.infinite = true;
+    msg << "the solution set has a piece of dimension " << rank
+        << " (a face of physical solutions, e.g. two degenerate points): it is not listed; ";
+    return;
+  }
+  const Vec u = svd.matrixU().col(0);
+  double tmin = 0, tmax = 0;
+  std::size_t imin = 0, imax = 0;
+  for (std::size_t k = 0; k < p.v.size(); ++k) {
+    const double t = u.dot(y[static_cast<std::size_t>(p.v[k])].y - y0);
+    if (t < tmin) { tmin = t; imin = k; }
+    if (t > tmax) { tmax = t; imax = k; }
+  }
+  bool pos = false, neg = false;
+  Vec edir = Vec::Constant(6 * N, kr);
+  for (const Bounded& r : rays) {
+    (u.dot(r.y) > 0 ? pos : neg) = true;
+    edir = edir.cwiseMax(r.e);
+  }
+  if (pos && neg) {
+    out.complete = false;
+    out.infinite = true;
+    msg << "the solution set contains a whole line: it is not listed; ";
+    return;
+  }
+  const Bounded& ya = y[static_cast<std::size_t>(p.v[imin])];
+  const Bounded& yb = y[static_cast<std::size_t>(p.v[imax])];
+  if (pos || neg) {
+    Vec dir = pos ? u : Vec(-u);
+    dir /= dir.lpNorm<Eigen::Infinity>();
+    split(c, pos ? ya : yb, Bounded{dir, edir}, true, cand);
+  } else {
+    split(c, ya, yb, false, cand);
+  }
+}
+
+/// Pieces merged, points deduplicated and absorbed by the pieces of their type. Two points of
+/// different type tuples within the merge tolerance are one point to the rounding but not to the
+/// data (a critical load: a stick and a slip one ulp apart): counted in `unsure`.
+std::vector<Geo> assemble(const Ctx& c, std::vector<Geo>& cand, int& unsure) {
+  std::vector<Geo> pcs, pts;
+  for (Geo& g : cand) (g.kind == Kind::kPoint ? pts : pcs).push_back(std::move(g));
+  merge_pieces(pcs, c.tol);
+  std::vector<Geo> kept;
+  for (const Geo& p : pts) {
+    bool drop = false;
+    for (const Geo& k : kept) {
+      const bool same = dist(k.a, p.a) <= c.tol;
+      drop = drop || same;
+      unsure += same && k.type != p.type ? 1 : 0;
+    }
+    for (const Geo& g : pcs) drop = drop || (g.type == p.type && on_piece(g, p.a, c.tol));
+    if (!drop) kept.push_back(p);
+  }
+  for (const Geo& g : pcs) kept.push_back(g);
+  return kept;
+}
+
+}  // namespace
+
+SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF,
+                                       bool on_critical) {
   const int N = pre.system.n_points();
   SystemRateSolutionSet out;
   const Vec base = pre.Pf * dF;
-  std::vector<Vec> verts;
-  struct ZPiece { std::vector<int> v; std::vector<Vec> rays; };
+  const Vec base_mag = term_sizes(pre.Pf, dF);
+  std::vector<Vec> verts, vmag;  // vertices and the sizes of their terms
   std::vector<ZPiece> zp;
   std::ostringstream msg;
   constexpr int kMaxLcp = 24;  // EnumerationOptions::max_size's default
   if (pre.m == 0) {
     verts.push_back(base);
+    vmag.push_back(base_mag);
   } else if (pre.m > kMaxLcp) {
     out.complete = false;
     msg << "the rate LCP has size " << pre.m << " (3 per point in state b, 1 per point in state d), "
@@ -331,13 +562,11 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
       out.complete = false;
       msg << dropped << " candidates of the enumeration could not be represented; ";
     }
-    for (const Vec& z : zs) verts.push_back(base + pre.Pz * z);
-    for (const auto& p : pieces) {
-      ZPiece z;
-      z.v = p.first;
-      for (const Vec& d : p.second) z.rays.push_back(pre.Pz * d);
-      zp.push_back(std::move(z));
+    for (const Vec& z : zs) {
+      verts.push_back(base + pre.Pz * z);
+      vmag.push_back(base_mag + term_sizes(pre.Pz, z));
     }
+    for (const auto& p : pieces) zp.push_back(z_piece(pre, p.first, p.second));
   } else {
     lcp::EnumerationOptions opt;
     opt.time_limit_s = 30;
@@ -351,13 +580,11 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
       out.complete = false;
       msg << set.ambiguous << " sign tests of the enumeration were too close to call; ";
     }
-    for (const auto& s : set.solutions) verts.push_back(base + pre.Pz * s.z);
-    for (const auto& p : set.pieces) {
-      ZPiece z;
-      z.v = p.vertices;
-      for (const auto& d : p.rays) z.rays.push_back(pre.Pz * d);
-      zp.push_back(std::move(z));
+    for (const auto& s : set.solutions) {
+      verts.push_back(base + pre.Pz * s.z);
+      vmag.push_back(base_mag + term_sizes(pre.Pz, s.z));
     }
+    for (const auto& p : set.pieces) zp.push_back(z_piece(pre, p.vertices, p.rays));
   }
   // scales: the load, the stiffness, and the solutions' own magnitudes
   double sF = dF.lpNorm<1>();
@@ -371,83 +598,37 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   out.force_scale = sF;
   out.disp_scale = sW;
   Ctx c{pre, N, scale_vector(N, sF, sW)};
-  std::vector<Vec> y;
-  for (const Vec& v : verts) y.push_back(v.cwiseQuotient(c.scale));
+  const double cond = pre.inv_min_eig / pre.inv_max_eig;
+  const double kr = kRoundUnits * 0x1p-52 * std::max(1.0, cond);
+  std::vector<Bounded> y;
+  c.tol = 0;
+  for (std::size_t k = 0; k < verts.size(); ++k) {
+    Bounded b{verts[k].cwiseQuotient(c.scale), {}};
+    b.e = (kRoundUnits * 0x1p-52 * vmag[k].cwiseQuotient(c.scale)).array() +
+          kr * b.y.lpNorm<Eigen::Infinity>();
+    c.tol = std::max(c.tol, std::min(b.e.maxCoeff(), kGeoTol));
+    y.push_back(std::move(b));
+  }
   std::vector<Geo> cand;
-  for (const Vec& v : y) cand.push_back(Geo{Kind::kPoint, v, {}, true, true, tuple_at(c, v)});
-  for (const ZPiece& p : zp) {
-    std::vector<Vec> rays;
-    for (const Vec& r : p.rays) {
-      const Vec rn = r.cwiseQuotient(c.scale);
-      const double n = rn.lpNorm<Eigen::Infinity>();
-      if (n > kGeoTol) rays.push_back(rn / n);
-    }
-    const Vec& y0 = y[static_cast<std::size_t>(p.v.empty() ? 0 : p.v[0])];
-    if (p.v.empty()) continue;  // a piece always has a vertex (pointed polyhedron)
-    Eigen::MatrixXd D(6 * N, static_cast<Eigen::Index>(p.v.size() - 1 + rays.size()));
-    Eigen::Index col = 0;
-    for (std::size_t k = 1; k < p.v.size(); ++k) D.col(col++) = y[static_cast<std::size_t>(p.v[k])] - y0;
-    for (const Vec& r : rays) D.col(col++) = r;
-    if (D.cols() == 0 || D.lpNorm<Eigen::Infinity>() <= kGeoTol) continue;  // one physical point
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(D, Eigen::ComputeThinU);
-    const auto sv = svd.singularValues();
-    int rank = 0;
-    for (Eigen::Index k = 0; k < sv.size(); ++k) rank += sv(k) > 1e-7 * std::max(1.0, sv(0)) ? 1 : 0;
-    if (rank == 0) continue;
-    if (rank >= 2) {
-      out.complete = false;
-      out.infinite = true;
-      msg << "the solution set has a piece of dimension " << rank
-          << " (a face of physical solutions, e.g. two degenerate points): it is not listed; ";
-      continue;
-    }
-    const Vec u = svd.matrixU().col(0);
-    double tmin = 0, tmax = 0;
-    std::size_t imin = 0, imax = 0;
-    for (std::size_t k = 0; k < p.v.size(); ++k) {
-      const double t = u.dot(y[static_cast<std::size_t>(p.v[k])] - y0);
-      if (t < tmin) { tmin = t; imin = k; }
-      if (t > tmax) { tmax = t; imax = k; }
-    }
-    bool pos = false, neg = false;
-    for (const Vec& r : rays) (u.dot(r) > 0 ? pos : neg) = true;
-    if (pos && neg) {
-      out.complete = false;
-      out.infinite = true;
-      msg << "the solution set contains a whole line: it is not listed; ";
-      continue;
-    }
-    const Vec& ya = y[static_cast<std::size_t>(p.v[imin])];
-    const Vec& yb = y[static_cast<std::size_t>(p.v[imax])];
-    if (pos || neg) {
-      Vec dir = pos ? u : Vec(-u);
-      dir /= dir.lpNorm<Eigen::Infinity>();
-      split(c, pos ? ya : yb, dir, true, cand);
-    } else {
-      split(c, ya, yb, false, cand);
-    }
+  for (const Bounded& v : y) cand.push_back(Geo{Kind::kPoint, v.y, {}, true, true, tuple_at(c, v), v.e, {}, {}});
+  for (const ZPiece& p : zp) piece_to_geo(c, kr, y, p, cand, out, msg);
+  int unsure = 0;
+  std::vector<Geo> kept = assemble(c, cand, unsure);
+  if (unsure > 0 && !on_critical) {
+    out.complete = false;
+    msg << unsure << " pair(s) of candidate points of different types coincide within their "
+        << "rounding (a critical load): merged, the set is not proved; ";
   }
-  // assemble: pieces merged, points deduplicated and absorbed by the pieces of their type
-  std::vector<Geo> pcs, pts;
-  for (Geo& g : cand) (g.kind == Kind::kPoint ? pts : pcs).push_back(std::move(g));
-  merge_pieces(pcs);
-  std::vector<Geo> kept;
-  for (const Geo& p : pts) {
-    bool drop = false;
-    for (const Geo& k : kept) drop = drop || dist(k.a, p.a) <= kGeoTol;
-    for (const Geo& g : pcs) drop = drop || (g.type == p.type && on_piece(g, p.a, kGeoTol));
-    if (!drop) kept.push_back(p);
-  }
-  for (const Geo& g : pcs) kept.push_back(g);
   // rounding noise of exact zeros (e.g. dP_T of a separating point) printed as 0
-  auto clean = [](Vec v) {
+  auto clean = [](Vec v, const Vec& e) {
     for (Eigen::Index k = 0; k < v.size(); ++k)
-      if (std::abs(v(k)) <= 1e-3 * kGeoTol) v(k) = 0;
+      if (std::abs(v(k)) <= e(k)) v(k) = 0;
     return v;
   };
   for (Geo& g : kept) {
-    g.a = clean(g.a);
-    if (g.kind == Kind::kSegment) g.b = clean(g.b);
+    g.raw = g.a;
+    g.a = clean(g.a, g.ea);
+    if (g.kind == Kind::kSegment) g.b = clean(g.b, g.eb);
   }
   // Every listed point, every end (and the inside) of a segment and every ray must satisfy the
   // rate laws from the data (rate_laws_check.hpp): what the LCP route cannot vouch for (e.g. a
@@ -460,6 +641,33 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
     msg << rejected << " candidate piece(s) of the LCP route violate the rate laws (unit-free "
         << "violation up to " << worst << " > " << kRateLawTol
         << ": an ill-conditioned or degenerate case): not listed; ";
+  }
+  // Every isolated point's inequalities judged against their rounding: a point on a knife
+  // edge (one ulp past a critical load the data may exclude it) is listed, but the set is not
+  // proved; one the data exclude is not listed (issue 24).
+  int undecided = 0, excluded = 0;
+  for (std::size_t k = 0; k < kept.size();) {
+    // the end of a listed piece has an active inequality by construction (the piece ends there)
+    bool end = false;
+    for (const Geo& g : kept) end = end || (g.kind != Kind::kPoint && on_piece(g, kept[k].a, c.tol));
+    const int a = kept[k].kind == Kind::kPoint && !end ? admissible(c, kept[k]) : 1;
+    undecided += a == kUndecided && !on_critical ? 1 : 0;
+    if (a == 0) {
+      ++excluded;
+      kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(k));
+    } else {
+      ++k;
+    }
+  }
+  if (undecided > 0) {
+    out.complete = false;
+    msg << undecided << " listed point(s) satisfy an inequality of their type only within its "
+        << "rounding (a critical load): the set is not proved; ";
+  }
+  if (excluded > 0) {
+    out.complete = false;
+    msg << excluded << " candidate point(s) of the LCP route violate an inequality of their type "
+        << "beyond its rounding: not listed; ";
   }
   for (const Geo& g : kept) {
     SystemRateSolution s;
@@ -482,7 +690,6 @@ SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const E
   // Beyond cond(A) = 1e8 the reduced LCP's data (Schur complements of A) carry rounding errors
   // that can hide a solution (a full separation missed at cond 1e10, found by a long-double
   // brute force): what is listed is verified above, but the list is not proved complete.
-  const double cond = pre.inv_min_eig / pre.inv_max_eig;
   if (!(cond <= kMaxProvedCond)) {
     out.complete = false;
     msg << "A is ill-conditioned (cond(A) = " << cond << " > " << kMaxProvedCond

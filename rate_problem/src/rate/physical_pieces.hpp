@@ -14,7 +14,10 @@ SystemRates to_rates(const SystemRatePrecomputed& pre, const Eigen::VectorXd& x)
 std::vector<SolutionType> classify_system_rates(const SystemRatePrecomputed& pre,
                                                 const SystemRates& r, double force_scale,
                                                 double disp_scale);
-/// Complete enumeration of the LCP and the physical pieces split by type tuple.
-SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF);
+/// Complete enumeration of the LCP and the physical pieces split by type tuple. on_critical: dF
+/// is a computed critical direction (summarize_rate_problem): a point's inequality within its
+/// rounding is taken to hold with equality instead of making the set incomplete.
+SystemRateSolutionSet enumerate_system(const SystemRatePrecomputed& pre, const Eigen::VectorXd& dF,
+                                       bool on_critical = false);
 
 }  // namespace cpkit::rate::detail

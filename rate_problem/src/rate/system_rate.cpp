@@ -240,8 +240,11 @@ Eigen::VectorXd system_q(const SystemRatePrecomputed& pre, const Eigen::VectorXd
   Eigen::VectorXd q = pre.Q * dF;
   // the size of the terms of w at z = 0
   const Eigen::VectorXd t = pre.G.cwiseAbs() * (pre.Pf.cwiseAbs() * dF.cwiseAbs());
+  // only rounding is snapped (256 ulps x cond(A) of the terms, as physical_pieces bounds the
+  // rates): a q_r of the data one ulp past a critical load keeps its sign (issue 24)
+  const double snap = std::min(kSnap, 256 * 0x1p-52 * std::max(1.0, pre.inv_min_eig / pre.inv_max_eig));
   for (int r = 0; r < pre.m; ++r)
-    if (std::abs(q(r)) <= kSnap * t(r)) q(r) = 0;
+    if (std::abs(q(r)) <= snap * t(r)) q(r) = 0;
   return q;
 }
 
@@ -358,7 +361,7 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
 }
 
 SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
-                                         const Eigen::VectorXd& dF) noexcept {
+                                         const Eigen::VectorXd& dF, bool on_critical) noexcept {
   SystemRateSummary out;
   if (dF.size() != pre.Pf.cols() || !dF.allFinite()) {  // invalid input: say so, do not guess
     out.reliable = false;
@@ -368,7 +371,7 @@ SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
     // counts and types are positively homogeneous in dF: judge the load at unit size
     const double f = dF.lpNorm<Eigen::Infinity>();
     const SystemRateSolutionSet set =
-        detail::enumerate_system(pre, f > 0 ? Eigen::VectorXd(dF / f) : dF);
+        detail::enumerate_system(pre, f > 0 ? Eigen::VectorXd(dF / f) : dF, on_critical);
     out.count = set.count();
     out.reliable = set.complete;
     for (const auto& s : set.solutions) {

@@ -112,8 +112,11 @@ struct SystemRateSummary {
   bool reliable = true;
 };
 /// Same count and tuples as solve_rate_problem(pre.system, dF). Inputs must be valid (dF of
-/// size 2N, finite). Thread-safe.
+/// size 2N, finite). Thread-safe. on_critical: dF is a computed critical direction (the direction
+/// map's candidates), whose exact set is wanted: an inequality that holds only within its
+/// rounding holds with equality there, and does not make the summary unreliable.
 SystemRateSummary summarize_rate_problem(const SystemRatePrecomputed& pre,
-                                         const Eigen::VectorXd& dF) noexcept;
+                                         const Eigen::VectorXd& dF,
+                                         bool on_critical = false) noexcept;
 
 }  // namespace cpkit::rate
