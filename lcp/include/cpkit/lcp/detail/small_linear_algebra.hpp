@@ -1,0 +1,218 @@
+#pragma once
+/// \file small_linear_algebra.hpp
+/// Internal kernels of enumerate_small (enumerate_small.hpp) and its prepared variant
+/// (enumerate_small_prepared.hpp): sign tests with the gray band, determinants and their
+/// "permanents", complete-pivoting elimination with a replayable record, null vectors, square
+/// solves and Cramer's rule for blocks of at most 4 x 4. Not an API. Tolerances as documented in
+/// enumerate_small.hpp ("Tolerance").
+#include <cmath>
+#include <utility>
+
+namespace cpkit::lcp::detail {
+
+inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tests
+
+// Rare paths (degenerate or extreme candidates) are kept out of line so that the hot
+// add_point stays small enough to be inlined (bench/bench_enumerate.cpp, section 1).
+#if defined(__GNUC__) || defined(__clang__)
+#define CPKIT_SMALL_COLD __attribute__((noinline, cold))
+#define CPKIT_SMALL_HOT __attribute__((always_inline))
+#else
+#define CPKIT_SMALL_COLD
+#define CPKIT_SMALL_HOT
+#endif
+
+constexpr int small_popcount(unsigned x) noexcept {
+  int c = 0;
+  for (; x; x &= x - 1) ++c;
+  return c;
+}
+inline double small_abs(double x) noexcept { return std::fabs(x); }
+inline double small_max(double a, double b) noexcept { return a < b ? b : a; }
+
+/// Outcome of a sign test v >= 0 at scale s: 0 pass, 1 ambiguous, 2 fail.
+inline int small_sign(double v, double s, double tol) noexcept {
+  if (v >= -tol * s) return 0;
+  if (v >= -kSmallGray * tol * s) return 1;
+  return 2;
+}
+
+/// True when x is finite (not inf, not NaN).
+inline bool small_finite(double x) noexcept { return small_abs(x) <= 1.7976931348623157e308; }
+
+/// The Cramer path may be used for a principal block with determinant det and "permanent" perm
+/// (small_det): the block is clearly nonsingular (|det| > 1e4 tol perm, a test invariant under
+/// any scaling of M) and perm is a normal finite number (no overflow or underflow in the products
+/// of the determinant). Otherwise the block goes to the elimination path (singular_piece).
+inline bool small_det_ok(double det, double perm, double tol) noexcept {
+  return small_abs(det) > kSmallGray * tol * perm && perm >= 2.2250738585072014e-308 &&
+         perm <= 1.7976931348623157e308;
+}
+
+/// det and "permanent" (sum of the absolute values of the determinant's terms) of a k x k
+/// block, k <= 3, taken from rows r[] and columns c[] of M.
+template <typename Mat>
+inline void small_det(const Mat& M, const int* r, const int* c, int k, double& det,
+                      double& perm) noexcept {
+  if (k == 1) {
+    det = M(r[0], c[0]);
+    perm = small_abs(det);
+  } else if (k == 2) {
+    const double t1 = M(r[0], c[0]) * M(r[1], c[1]), t2 = M(r[0], c[1]) * M(r[1], c[0]);
+    det = t1 - t2;
+    perm = small_abs(t1) + small_abs(t2);
+  } else {
+    det = 0;
+    perm = 0;
+    constexpr int p[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+    for (int t = 0; t < 6; ++t) {
+      const double v = M(r[0], c[p[t][0]]) * M(r[1], c[p[t][1]]) * M(r[2], c[p[t][2]]);
+      det += t < 3 ? v : -v;
+      perm += small_abs(v);
+    }
+  }
+}
+
+/// The row operations of one small_eliminate call, for replaying them on other right-hand
+/// sides (SmallPreparedLcp, enumerate_small_prepared.hpp).
+struct SmallElimRecord {
+  int rank = 0;
+  int perm[5] = {};     ///< column order
+  int swap[4] = {};     ///< row exchanged with row p at step p
+  double f[4][4] = {};  ///< f[p][r]: multiple of row p subtracted from row r > p
+  double a[4][5] = {};  ///< the eliminated block (column 4 unused)
+};
+
+/// Complete-pivoting elimination of the k x c block a (c <= k + 1 columns, column 4 is a
+/// right-hand side) in place. Returns the rank found (pivots > piv_tol); perm receives the
+/// column order; `gray` is set when an accepted pivot lies within kSmallGray of the threshold.
+/// With `rec`, the matrix part only is eliminated (column 4 is left alone) and the row
+/// operations are recorded in *rec (then perm must be rec->perm).
+inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], double piv_tol,
+                           bool& gray, SmallElimRecord* rec = nullptr) noexcept {
+  for (int j = 0; j < c; ++j) perm[j] = j;
+  int rank = 0;
+  for (int p = 0; p < k && p < c; ++p) {
+    int br = p, bc = p;
+    double best = -1;
+    for (int r = p; r < k; ++r)
+      for (int cc = p; cc < c; ++cc) {
+        const double v = small_abs(a[r][perm[cc]]);
+        if (v > best) { best = v; br = r; bc = cc; }
+      }
+    if (!(best > piv_tol)) break;
+    if (best <= kSmallGray * piv_tol) gray = true;
+    if (rec) rec->swap[p] = br;
+    if (br != p)
+      for (int cc = 0; cc < 5; ++cc) std::swap(a[p][cc], a[br][cc]);
+    std::swap(perm[p], perm[bc]);
+    const double piv = a[p][perm[p]];
+    for (int r = p + 1; r < k; ++r) {
+      const double f = a[r][perm[p]] / piv;
+      if (rec) rec->f[p][r] = f;
+      if (f == 0) continue;
+      for (int cc = p; cc < c; ++cc) a[r][perm[cc]] -= f * a[p][perm[cc]];
+      if (!rec) a[r][4] -= f * a[p][4];
+    }
+    ++rank;
+  }
+  if (rec) {
+    rec->rank = rank;
+    for (int r = 0; r < 4; ++r)
+      for (int cc = 0; cc < 5; ++cc) rec->a[r][cc] = a[r][cc];
+  }
+  return rank;
+}
+
+/// Null vector x (m entries, x[pm[m-1]] = 1) of an m x m block whose first m - 1 rows were
+/// eliminated by small_eliminate with column order pm (rank m - 1): back substitution.
+inline void small_null_vector(const double (&e)[4][5], int m, const int (&pm)[5],
+                              double* x) noexcept {
+  x[pm[m - 1]] = 1;
+  for (int p = m - 2; p >= 0; --p) {
+    double sum = -e[p][pm[m - 1]];
+    for (int c = p + 1; c < m - 1; ++c) sum -= e[p][pm[c]] * x[pm[c]];
+    x[pm[p]] = sum / e[p][pm[p]];
+  }
+}
+
+/// Solves M[R,C] x = -q[R] (|R| = |C| = k <= 4). Returns false when the block is singular at
+/// tolerance tol; sets gray when the decision was close.
+template <typename Mat, typename Vq>
+inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const int* cols, int k,
+                               double tol, double* x, bool& gray) noexcept {
+  if (k <= 3) {
+    double det, perm;
+    small_det(M, rows, cols, k, det, perm);
+    if (!(small_abs(det) > tol * perm)) return false;
+    if (small_abs(det) <= kSmallGray * tol * perm) gray = true;
+    const double inv = 1.0 / det;
+    if (k == 1) {
+      x[0] = -q(rows[0]) * inv;
+    } else if (k == 2) {
+      const double b0 = -q(rows[0]), b1 = -q(rows[1]);
+      x[0] = (b0 * M(rows[1], cols[1]) - M(rows[0], cols[1]) * b1) * inv;
+      x[1] = (M(rows[0], cols[0]) * b1 - b0 * M(rows[1], cols[0])) * inv;
+    } else {
+      // Cramer with cofactors of the 3x3 block
+      const double a00 = M(rows[0], cols[0]), a01 = M(rows[0], cols[1]), a02 = M(rows[0], cols[2]);
+      const double a10 = M(rows[1], cols[0]), a11 = M(rows[1], cols[1]), a12 = M(rows[1], cols[2]);
+      const double a20 = M(rows[2], cols[0]), a21 = M(rows[2], cols[1]), a22 = M(rows[2], cols[2]);
+      const double b0 = -q(rows[0]), b1 = -q(rows[1]), b2 = -q(rows[2]);
+      x[0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
+              a02 * (b1 * a21 - a11 * b2)) * inv;
+      x[1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
+              a02 * (a10 * b2 - b1 * a20)) * inv;
+      x[2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
+              b0 * (a10 * a21 - a11 * a20)) * inv;
+    }
+    return true;
+  }
+  double a[4][5] = {};
+  double amax = 0;
+  for (int r = 0; r < k; ++r) {
+    for (int c = 0; c < k; ++c) {
+      a[r][c] = M(rows[r], cols[c]);
+      amax = small_max(amax, small_abs(a[r][c]));
+    }
+    a[r][4] = -q(rows[r]);
+  }
+  int perm[5] = {};
+  if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
+  for (int p = k - 1; p >= 0; --p) {
+    double s = a[p][4];
+    for (int c = p + 1; c < k; ++c) s -= a[p][perm[c]] * x[perm[c]];
+    x[perm[p]] = s / a[p][perm[p]];
+  }
+  return true;
+}
+
+/// Cramer's rule for the principal block M[S,S] z_S = -q_S (k = |S| <= 3) whose determinant
+/// det (nonzero, from small_det) is already known; writes z[idx[c]].
+template <typename Mat, typename Vq>
+inline void small_cramer(const Mat& M, const Vq& q, const int* idx, int k, double det,
+                         double* z) noexcept {
+  const double inv = 1.0 / det;
+  if (k == 1) {
+    z[idx[0]] = -q(idx[0]) * inv;
+  } else if (k == 2) {
+    const int i0 = idx[0], i1 = idx[1];
+    const double b0 = -q(i0), b1 = -q(i1);
+    z[i0] = (b0 * M(i1, i1) - M(i0, i1) * b1) * inv;
+    z[i1] = (M(i0, i0) * b1 - b0 * M(i1, i0)) * inv;
+  } else {
+    const int i0 = idx[0], i1 = idx[1], i2 = idx[2];
+    const double a00 = M(i0, i0), a01 = M(i0, i1), a02 = M(i0, i2);
+    const double a10 = M(i1, i0), a11 = M(i1, i1), a12 = M(i1, i2);
+    const double a20 = M(i2, i0), a21 = M(i2, i1), a22 = M(i2, i2);
+    const double b0 = -q(i0), b1 = -q(i1), b2 = -q(i2);
+    z[i0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
+             a02 * (b1 * a21 - a11 * b2)) * inv;
+    z[i1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
+             a02 * (a10 * b2 - b1 * a20)) * inv;
+    z[i2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
+             b0 * (a10 * a21 - a11 * a20)) * inv;
+  }
+}
+
+}  // namespace cpkit::lcp::detail
