@@ -124,16 +124,21 @@ int exit_code(Status s) {
 }
 
 /// A global problem (M v = H r + f, u = H^T v + w): condensed, solved locally, judged in the
-/// global variables (lcp/friction/global.hpp). The output adds v, the dofs and the two
-/// unit-free global errors; "errors" are the condensed local problem's.
+/// global variables (lcp/friction/global.hpp); where M is singular (degrees of freedom without
+/// mass) it is solved in its own variables by the proximal point in v (solve_global_proximal).
+/// The output adds v, the dofs, the route and the two unit-free global errors; "errors" are the
+/// condensed (for the proximal route: the last regularized) local problem's.
 int run_fc_solve_global(const FcArgs& a, const GlobalFrictionContactProblem& g) {
   const CommonOptions options = common_options(a);
   const SolverEntry& entry = fc_solver(a.solver);
-  const auto out = lcp::friction::solve_global(g, entry.info.name, options);
+  auto out = lcp::friction::solve_global(g, entry.info.name, options);
+  const bool singular = !out.condensed.ok && out.condensed.message.rfind("M is singular", 0) == 0;
+  if (singular) out = lcp::friction::solve_global_proximal(g, entry.info.name, options);
   const auto& c = out.condensed;
   const SolveResult& r = out.result;
   const nlohmann::json global = {{"dofs", g.dofs()},
-                                 {"condensed", c.ok},
+                                 {"condensed", c.ok && !singular},  // M itself
+                                 {"route", singular ? "proximal" : "condensed"},
                                  {"errors", {{"balance", out.errors.balance},
                                              {"local", out.errors.local}}}};
   if (a.json) {
@@ -145,6 +150,9 @@ int run_fc_solve_global(const FcArgs& a, const GlobalFrictionContactProblem& g) 
   } else {
     std::cout << "problem:    " << g.name << " (global: " << g.contacts() << " contacts, "
               << g.dofs() << " dofs)\n";
+    if (singular)
+      std::cout << "route:      proximal point in v (M is singular: no condensation), "
+                << r.iterations << " outer iterations\n";
     if (c.ok) std::cout << "global:     balance " << out.errors.balance << ", local "
                         << out.errors.local << " (unit-free)\n" << result_line(r, c.local);
     else std::cout << "status:     " << to_string(r.status) << "\nmessage:    " << r.message << '\n';

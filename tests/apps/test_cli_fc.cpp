@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -168,6 +169,36 @@ TEST_CASE("fc solve --json solves the global files, checked in the global variab
     CHECK((vec(j.at("u")) - u).cwiseAbs().maxCoeff() <= 1e-10 * us);
     require_cone(r, u, g.mu, std::max(r.cwiseAbs().maxCoeff(), 1e-300), us);
   }
+}
+
+// A global problem whose M is singular (the third degree of freedom has no mass), written as a
+// Siconos GlobalFrictionContact .dat (dense storage 0, as core/src/io_dat.cpp reads it): M = diag(1, 1, 0), H = I, f = (-4, 3, 1),
+// w = 0, mu = 0.5. By hand (as tests/lcp/test_friction_global.cpp): row 3 of the balance forces
+// r_2 = -1; u_N = v_0 = 0 with r_N = 4; stick would need |r_T| = sqrt 10 > mu r_N = 2, so slip
+// with r_T = -2 (cos t, sin t), sin t = 1/2: r = (4, -sqrt 3, -1), v = (0, 3 - sqrt 3,
+// (3 - sqrt 3) / sqrt 3). Condensation is impossible; fc solve takes the proximal route.
+TEST_CASE("fc solve: a global problem with a singular M is solved in its own variables",
+          "[cli][fc][global]") {
+  const auto file = cpkit::test::scratch_dir() / "global_singular_mass.dat";
+  // d, nc; M: storage 0, m x m, the sizes repeated, column-major entries; H likewise; f; w; mu
+  std::ofstream(file) << "3\n1\n0\n3\n3\n3 3\n1 0 0\n0 1 0\n0 0 0\n0\n3\n3\n3 3\n1 0 0\n0 1 0\n"
+                         "0 0 1\n-4 3 1\n0 0 0\n0.5\n";
+  const auto run = run_cpkit("fc solve '" + file.string() + "' --json --tol 1e-10");
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const auto j = parse(run);
+  CHECK(j.at("status") == "solved");
+  CHECK(j.at("global").at("route") == "proximal");
+  CHECK(j.at("global").at("condensed") == false);
+  const double r3 = std::sqrt(3.0);
+  const VectorXd r = (VectorXd(3) << 4, -r3, -1).finished();
+  const VectorXd v = (VectorXd(3) << 0, 3 - r3, (3 - r3) / r3).finished();
+  CHECK((vec(j.at("r")) - r).norm() <= 1e-7 * r.norm());
+  CHECK((vec(j.at("v")) - v).norm() <= 1e-7 * v.norm());
+  // the text output names the route
+  const auto text = run_cpkit("fc solve '" + file.string() + "' --tol 1e-10");
+  CHECK(text.code == 0);
+  CHECK(text.out.find("route:      proximal point in v") != std::string::npos);
 }
 
 TEST_CASE("fc solve: bad input is exit 2 with a message naming it", "[cli][fc][bad]") {

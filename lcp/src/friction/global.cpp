@@ -7,6 +7,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/short_number.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
@@ -35,7 +36,7 @@ std::string factorize(const Sparse& M, Ldlt& ldlt) {
   if (big == 0) return "M is zero";
   const Sparse asym = Sparse(M.transpose()) - M;
   if (max_abs(asym) > 1e2 * kEps * big)
-    return "M is not symmetric (max |M - M^T| = " + std::to_string(max_abs(asym)) + ")";
+    return "M is not symmetric (max |M - M^T| = " + short_number(max_abs(asym)) + ")";
   ldlt.compute(M);
   if (ldlt.info() != Eigen::Success) return "M is singular (its LDL^T factorization met a zero pivot)";
   const Eigen::VectorXd d = ldlt.vectorD();
@@ -136,8 +137,8 @@ GlobalSolveResult solve_global(const GlobalFrictionContactProblem& g, const std:
   } else if (is_solution(local_status)) {
     out.result.status = Status::kNumericalFailure;
     out.result.message = "the condensed solution fails the global verdict (balance " +
-                         std::to_string(out.errors.balance) + ", local " +
-                         std::to_string(out.errors.local) + ")";
+                         short_number(out.errors.balance) + ", local " +
+                         short_number(out.errors.local) + ")";
   }
   out.result.seconds = clock.seconds();
   return out;
@@ -225,10 +226,10 @@ GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
     out.result.status = stop;
   }
   out.result.iterations = k;
-  out.result.message = "global proximal point (rho = " + std::to_string(rho_factor) +
+  out.result.message = "global proximal point (rho = " + short_number(rho_factor) +
                        " max|M_ii|): " + std::to_string(k) + " outer iterations, balance " +
-                       std::to_string(out.errors.balance) + ", local " +
-                       std::to_string(out.errors.local) +
+                       short_number(out.errors.balance) + ", local " +
+                       short_number(out.errors.local) +
                        (out.result.message.empty() ? "" : "; last inner: " + out.result.message);
   out.result.seconds = clock.seconds();
   return out;

@@ -14,7 +14,8 @@
 ///             condensed problem's units, so invariant under the same scalings);
 ///   kSolved when both are <= tol, kSolvedInaccurate when both are <= tol_acceptable.
 /// A singular (or not positive definite, or not symmetric) M is said in the message and the
-/// status is kNotRun: no solver in the global variables exists yet.
+/// status is kNotRun; a singular symmetric M is solved in the global variables by
+/// solve_global_proximal (below), which `cpkit fc solve` calls then.
 #include <string>
 
 #include <Eigen/Core>
