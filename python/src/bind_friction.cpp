@@ -90,11 +90,7 @@ pyb::dict fc_result_dict(const SolveResult& r, const FrictionContactProblem& p) 
 }
 
 pyb::dict read_fclib(const std::string& path) {
-  FrictionContactProblem p;
-  {
-    pyb::gil_scoped_release release;
-    p = read_friction_problem(path);
-  }
+  FrictionContactProblem p = without_gil([&] { return read_friction_problem(path); });
   pyb::dict d;
   d["W"] = p.W;  // scipy.sparse.csc_matrix (pybind11's Eigen caster)
   d["q"] = to_numpy(p.q);
@@ -105,11 +101,7 @@ pyb::dict read_fclib(const std::string& path) {
 }
 
 pyb::dict read_fclib_global(const std::string& path) {
-  GlobalFrictionContactProblem p;
-  {
-    pyb::gil_scoped_release release;
-    p = read_global_friction_problem(path);
-  }
+  GlobalFrictionContactProblem p = without_gil([&] { return read_global_friction_problem(path); });
   pyb::dict d;
   d["M"] = p.M;
   d["H"] = p.H;
@@ -144,12 +136,10 @@ pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Ve
   throw_if_invalid(g.validate(), "global friction problem");
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry& e = friction_entry(solver);
-  lcp::friction::GlobalSolveResult out;
-  {
-    pyb::gil_scoped_release release;
-    out = proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
-                   : lcp::friction::solve_global(g, e.info.name, o);
-  }
+  lcp::friction::GlobalSolveResult out = without_gil([&] {
+    return proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
+                    : lcp::friction::solve_global(g, e.info.name, o);
+  });
   if (out.result.solver.empty()) out.result.solver = e.info.name;
   pyb::dict d = fc_result_dict(out.result, out.condensed.local);
   d["v"] = to_numpy(out.v);
@@ -168,11 +158,7 @@ pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
   const FrictionContactProblem p = make_problem(W, q, mu);
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry* e = &friction_entry(solver);
-  SolveResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = e->solve_fc(p, o);
-  }
+  SolveResult r = without_gil([&] { return e->solve_fc(p, o); });
   if (r.solver.empty()) r.solver = e->info.name;
   return fc_result_dict(r, p);
 }
@@ -186,11 +172,8 @@ pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, in
   o.starts = starts;
   o.seed = seed;
   throw_if_invalid(o.validate(), "friction_solutions options");
-  lcp::friction::FrictionSolutionSet s;
-  {
-    pyb::gil_scoped_release release;
-    s = lcp::friction::friction_solutions(p, o);
-  }
+  lcp::friction::FrictionSolutionSet s =
+      without_gil([&] { return lcp::friction::friction_solutions(p, o); });
   pyb::dict d;
   pyb::list sols;
   for (const auto& r : s.solutions) sols.append(fc_result_dict(r, p));

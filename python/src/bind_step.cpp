@@ -53,11 +53,7 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
   const auto p = step_problem(params, P_T0, P_N0, g0, DF_T, DF_N, wear_law, k_M);
   rate::StepEnumerationOptions o;
   o.detect_jumps = detect_jumps;
-  rate::StepSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::enumerate_step(p, o);
-  }
+  rate::StepSolutionSet set = without_gil([&] { return rate::enumerate_step(p, o); });
   pyb::dict d;
   pyb::list sols;
   for (const auto& s : set.solutions) {
@@ -92,11 +88,7 @@ pyb::dict solve_step(const pyb::object& params, double P_T0, double P_N0, double
   rate::StepSolveOptions o;
   if (!chain.empty()) o.chain = chain;
   throw_if_invalid(o.validate(), "step options");
-  rate::StepSolveResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::solve_step(p, o);
-  }
+  rate::StepSolveResult r = without_gil([&] { return rate::solve_step(p, o); });
   pyb::dict d;
   d["result"] = to_dict(r.result);
   d["values"] = values_dict(r.values);
@@ -162,11 +154,7 @@ pyb::dict simulate(const pyb::object& params, const Vec& t, const Vec& F_T, cons
   o.tol = tol;
   o.record_every = record_every;
   throw_if_invalid(o.validate(), "simulation");
-  rate::SimulationResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::simulate(h, o);
-  }
+  rate::SimulationResult r = without_gil([&] { return rate::simulate(h, o); });
   using S = rate::SimulationSample;
   const auto& s = r.series;
   pyb::dict series;
