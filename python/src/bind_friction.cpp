@@ -42,13 +42,6 @@ CommonOptions fc_options(double tol, double tol_acceptable, int max_iterations,
   return common_options(tol, tol_acceptable, max_iterations, time_limit);
 }
 
-std::string fc_solver_list() {
-  std::string out;
-  for (const auto& n : lcp::solvers().names(ProblemKind::kFrictionContact))
-    out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 pyb::dict errors_dict(const FrictionErrors& e) {
   pyb::dict d;
   d["unit_free"] = e.unit_free;
@@ -114,11 +107,7 @@ pyb::dict read_fclib_global(const std::string& path) {
 }
 
 const SolverEntry& friction_entry(const std::string& solver) {
-  const SolverEntry* e = lcp::solvers().find(solver);
-  if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
-    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " +
-                     fc_solver_list() + ")");
-  return *e;
+  return find_solver(solver, ProblemKind::kFrictionContact, "friction solver");
 }
 
 /// The condensation route of `cpkit fc solve` on a global file (lcp/friction/global.hpp): the
@@ -127,12 +116,7 @@ pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Ve
                                 const Vec& w, const Vec& mu, const std::string& solver,
                                 double tol, double tol_acceptable, int max_iterations,
                                 double time_limit, bool proximal) {
-  GlobalFrictionContactProblem g;
-  g.M = M;
-  g.H = H;
-  g.f = f;
-  g.w = w;
-  g.mu = mu;
+  const GlobalFrictionContactProblem g{M, H, f, w, mu, /*name=*/"", /*note=*/""};
   throw_if_invalid(g.validate(), "global friction problem");
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry& e = friction_entry(solver);
