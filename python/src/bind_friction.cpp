@@ -159,9 +159,7 @@ pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, in
   lcp::friction::FrictionSolutionSet s =
       without_gil([&] { return lcp::friction::friction_solutions(p, o); });
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& r : s.solutions) sols.append(fc_result_dict(r, p));
-  d["solutions"] = sols;
+  d["solutions"] = list_of(s.solutions, [&](const SolveResult& r) { return fc_result_dict(r, p); });
   d["complete"] = s.complete;
   d["message"] = s.message;
   return d;

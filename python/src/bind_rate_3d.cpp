@@ -86,18 +86,13 @@ pyb::dict solve_system_rate_3d(const rate::ContactSystem3d& sys, const pyb::obje
   }
   rate::SystemRateSet3d r =
       without_gil([&] { return rate::solve_system_rate_3d_faceted(sys, load, facets); });
-  pyb::list sols;
-  for (const auto& s : r.solutions) {
-    pyb::list types, rates;
-    for (auto t : s.types) types.append(std::string(rate::to_string(t)));
-    for (const auto& x : s.rates) rates.append(rates_dict(x));
-    pyb::dict sd;
-    sd["types"] = types;
-    sd["rates"] = rates;
-    sols.append(sd);
-  }
   pyb::dict d;
-  d["solutions"] = sols;
+  d["solutions"] = list_of(r.solutions, [](const auto& s) {
+    pyb::dict sd;
+    sd["types"] = list_of(s.types, [](auto t) { return std::string(rate::to_string(t)); });
+    sd["rates"] = list_of(s.rates, rates_dict);
+    return sd;
+  });
   d["complete"] = r.complete;
   d["message"] = r.message;
   d["facets"] = r.facets;

@@ -55,8 +55,7 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
   o.detect_jumps = detect_jumps;
   rate::StepSolutionSet set = without_gil([&] { return rate::enumerate_step(p, o); });
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& s : set.solutions) {
+  d["solutions"] = list_of(set.solutions, [](const auto& s) {
     pyb::dict sd;
     sd["type"] = std::string(rate::to_string(s.type));
     sd["kind"] = std::string(rate::to_string(s.kind));
@@ -69,9 +68,8 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
     if (s.kind == rate::RateSolution::Kind::kRay) sd["direction"] = values_dict(s.direction);
     sd["residual"] = s.residual;
     sd["jump"] = s.jump;
-    sols.append(sd);
-  }
-  d["solutions"] = sols;
+    return sd;
+  });
   d["infinite"] = set.infinite;
   d["count"] = set.count();
   d["continuous_count"] = set.continuous_count;
@@ -118,14 +116,6 @@ rate::HeatOptions heat_from(const pyb::object& heat) {
     }
   }
   return h;
-}
-
-template <class F>
-pyb::array_t<double> column(const std::vector<rate::SimulationSample>& s, F get) {
-  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
-  auto m = a.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
-  return a;
 }
 
 pyb::dict simulate(const pyb::object& params, const Vec& t, const Vec& F_T, const Vec& F_N,

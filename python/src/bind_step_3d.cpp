@@ -95,14 +95,6 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
 using Sample = rate::Fretting3dSample;
 
 template <class F>
-pyb::array_t<double> column(const std::vector<Sample>& s, F get) {
-  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
-  auto m = a.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
-  return a;
-}
-
-template <class F>
 pyb::array_t<double> column2(const std::vector<Sample>& s, F get) {
   pyb::array_t<double> a({static_cast<pyb::ssize_t>(s.size()), static_cast<pyb::ssize_t>(2)});
   auto m = a.mutable_unchecked<2>();
@@ -134,9 +126,7 @@ pyb::dict series_dict(const std::vector<Sample>& s) {
   d["complete"] = column(s, [](const Sample& x) { return x.complete ? 1.0 : 0.0; });
   d["dissipation"] = column(s, [](const Sample& x) { return x.dissipation; });
   d["cycle"] = column(s, [](const Sample& x) { return static_cast<double>(x.cycle); });
-  pyb::list types;
-  for (const auto& x : s) types.append(std::string(rate::to_string(x.type)));
-  d["type"] = types;
+  d["type"] = list_of(s, [](const Sample& x) { return std::string(rate::to_string(x.type)); });
   return d;
 }
 

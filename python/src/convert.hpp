@@ -37,6 +37,15 @@ pyb::list list_of(const Seq& seq, F&& f) {
   return out;
 }
 
+/// A numpy column of get(x) for each record x of a series (the simulations' time series).
+template <class T, class F>
+pyb::array_t<double> column(const std::vector<T>& s, F get) {
+  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
+  auto m = a.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
+  return a;
+}
+
 /// A numpy copy of an Eigen vector (owns its data: safe after the C++ object is gone).
 pyb::array_t<double> to_numpy(const Vec& v);
 /// A numpy copy of a std::vector.
