@@ -1,7 +1,7 @@
 #pragma once
 // Reading a 3-D point (cpkit.Point3d), small vectors and one-point step problems from Python
-// objects, and step solutions back as dicts, shared by bind_rate_3d.cpp and bind_step_3d.cpp. Errors are InputError (ValueError in Python)
-// naming the field.
+// objects, and 3-D quantities and step solutions back as dicts, shared by bind_rate_3d.cpp and
+// bind_step_3d.cpp. Errors are InputError (ValueError in Python) naming the field.
 #include <string>
 #include <vector>
 
@@ -14,15 +14,22 @@
 
 namespace cpkit::py {
 
+/// Exactly n numbers from a Python sequence; InputError "<what> must hold n numbers, got m".
+inline std::vector<double> numbers_of(const pyb::handle& o, std::size_t n, const char* what) {
+  auto v = o.cast<std::vector<double>>();
+  if (v.size() != n)
+    throw InputError(std::string(what) + " must hold " + std::to_string(n) + " numbers, got " +
+                     std::to_string(v.size()));
+  return v;
+}
+
 inline Eigen::Vector2d vec2(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 2) throw InputError(std::string(what) + " must hold 2 numbers, got " + std::to_string(v.size()));
+  const auto v = numbers_of(o, 2, what);
   return {v[0], v[1]};
 }
 
 inline Eigen::Vector3d vec3(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 3) throw InputError(std::string(what) + " must hold 3 numbers, got " + std::to_string(v.size()));
+  const auto v = numbers_of(o, 3, what);
   return {v[0], v[1], v[2]};
 }
 
