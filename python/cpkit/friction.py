@@ -25,8 +25,16 @@ __all__ = ["FrictionProblem", "FrictionErrors", "FrictionResult", "FrictionSolut
 _INF = math.inf
 
 
+class _Contacts:
+    """What the local and the global problem share: mu holds one coefficient a contact."""
+
+    @property
+    def contacts(self) -> int:
+        return int(self.mu.size)
+
+
 @dataclass(repr=False)
-class FrictionProblem:
+class FrictionProblem(_Contacts):
     """A local problem as read from a file: W (scipy.sparse.csc_matrix, 3 n_c square), q (3 n_c),
     mu (n_c), name (file stem or the file's own label), note (free text of the file)."""
     W: Any
@@ -34,10 +42,6 @@ class FrictionProblem:
     mu: np.ndarray
     name: str = ""
     note: str = ""
-
-    @property
-    def contacts(self) -> int:
-        return int(self.mu.size)
 
     def __repr__(self):
         return (f"FrictionProblem(name={self.name!r}, contacts={self.contacts}, "
@@ -102,7 +106,7 @@ class FrictionResult:
 
 
 @dataclass(repr=False)
-class GlobalFrictionProblem:
+class GlobalFrictionProblem(_Contacts):
     """A global problem M v = H r + f, u = H^T v + w as read from a file: M (m x m) and H
     (m x 3 n_c) scipy.sparse.csc_matrix, f (m), w (3 n_c), mu (n_c), name, note."""
     M: Any
@@ -112,10 +116,6 @@ class GlobalFrictionProblem:
     mu: np.ndarray
     name: str = ""
     note: str = ""
-
-    @property
-    def contacts(self) -> int:
-        return int(self.mu.size)
 
     @property
     def dofs(self) -> int:

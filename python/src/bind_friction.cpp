@@ -42,13 +42,6 @@ CommonOptions fc_options(double tol, double tol_acceptable, int max_iterations,
   return common_options(tol, tol_acceptable, max_iterations, time_limit);
 }
 
-std::string fc_solver_list() {
-  std::string out;
-  for (const auto& n : lcp::solvers().names(ProblemKind::kFrictionContact))
-    out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 pyb::dict errors_dict(const FrictionErrors& e) {
   pyb::dict d;
   d["unit_free"] = e.unit_free;
@@ -90,11 +83,7 @@ pyb::dict fc_result_dict(const SolveResult& r, const FrictionContactProblem& p) 
 }
 
 pyb::dict read_fclib(const std::string& path) {
-  FrictionContactProblem p;
-  {
-    pyb::gil_scoped_release release;
-    p = read_friction_problem(path);
-  }
+  FrictionContactProblem p = without_gil([&] { return read_friction_problem(path); });
   pyb::dict d;
   d["W"] = p.W;  // scipy.sparse.csc_matrix (pybind11's Eigen caster)
   d["q"] = to_numpy(p.q);
@@ -105,11 +94,7 @@ pyb::dict read_fclib(const std::string& path) {
 }
 
 pyb::dict read_fclib_global(const std::string& path) {
-  GlobalFrictionContactProblem p;
-  {
-    pyb::gil_scoped_release release;
-    p = read_global_friction_problem(path);
-  }
+  GlobalFrictionContactProblem p = without_gil([&] { return read_global_friction_problem(path); });
   pyb::dict d;
   d["M"] = p.M;
   d["H"] = p.H;
@@ -122,11 +107,7 @@ pyb::dict read_fclib_global(const std::string& path) {
 }
 
 const SolverEntry& friction_entry(const std::string& solver) {
-  const SolverEntry* e = lcp::solvers().find(solver);
-  if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
-    throw InputError("solver: unknown friction solver '" + solver + "' (valid: " +
-                     fc_solver_list() + ")");
-  return *e;
+  return find_solver(solver, ProblemKind::kFrictionContact, "friction solver");
 }
 
 /// The condensation route of `cpkit fc solve` on a global file (lcp/friction/global.hpp): the
@@ -135,21 +116,14 @@ pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Ve
                                 const Vec& w, const Vec& mu, const std::string& solver,
                                 double tol, double tol_acceptable, int max_iterations,
                                 double time_limit, bool proximal) {
-  GlobalFrictionContactProblem g;
-  g.M = M;
-  g.H = H;
-  g.f = f;
-  g.w = w;
-  g.mu = mu;
+  const GlobalFrictionContactProblem g{M, H, f, w, mu, /*name=*/"", /*note=*/""};
   throw_if_invalid(g.validate(), "global friction problem");
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry& e = friction_entry(solver);
-  lcp::friction::GlobalSolveResult out;
-  {
-    pyb::gil_scoped_release release;
-    out = proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
-                   : lcp::friction::solve_global(g, e.info.name, o);
-  }
+  lcp::friction::GlobalSolveResult out = without_gil([&] {
+    return proximal ? lcp::friction::solve_global_proximal(g, e.info.name, o)
+                    : lcp::friction::solve_global(g, e.info.name, o);
+  });
   if (out.result.solver.empty()) out.result.solver = e.info.name;
   pyb::dict d = fc_result_dict(out.result, out.condensed.local);
   d["v"] = to_numpy(out.v);
@@ -168,11 +142,7 @@ pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
   const FrictionContactProblem p = make_problem(W, q, mu);
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry* e = &friction_entry(solver);
-  SolveResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = e->solve_fc(p, o);
-  }
+  SolveResult r = without_gil([&] { return e->solve_fc(p, o); });
   if (r.solver.empty()) r.solver = e->info.name;
   return fc_result_dict(r, p);
 }
@@ -186,15 +156,10 @@ pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, in
   o.starts = starts;
   o.seed = seed;
   throw_if_invalid(o.validate(), "friction_solutions options");
-  lcp::friction::FrictionSolutionSet s;
-  {
-    pyb::gil_scoped_release release;
-    s = lcp::friction::friction_solutions(p, o);
-  }
+  lcp::friction::FrictionSolutionSet s =
+      without_gil([&] { return lcp::friction::friction_solutions(p, o); });
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& r : s.solutions) sols.append(fc_result_dict(r, p));
-  d["solutions"] = sols;
+  d["solutions"] = list_of(s.solutions, [&](const SolveResult& r) { return fc_result_dict(r, p); });
   d["complete"] = s.complete;
   d["message"] = s.message;
   return d;

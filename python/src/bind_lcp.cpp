@@ -23,11 +23,7 @@ SolveResult solve_checked(const LcpProblem& p, const std::string& solver, const 
   if (!e.accepts(p))
     throw InputError("solver '" + solver + "' does not accept " +
                      std::string(p.is_sparse() ? "sparse" : "dense") + " LCPs");
-  SolveResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = e.solve_lcp(p, o);
-  }
+  SolveResult r = without_gil([&] { return e.solve_lcp(p, o); });
   if (r.solver.empty()) r.solver = e.info.name;
   return r;
 }
@@ -117,29 +113,22 @@ LcpProblem sparse_problem(const SparseMat& M, const Vec& q) {
 
 pyb::dict set_to_dict(const lcp::SolutionSet& s) {
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& e : s.solutions) {
+  const auto numpy = [](const Vec& v) { return to_numpy(v); };
+  d["solutions"] = list_of(s.solutions, [](const auto& e) {
     pyb::dict sd;
     sd["z"] = to_numpy(e.z);
     sd["w"] = to_numpy(e.w);
     sd["basis"] = e.basis;
-    sols.append(sd);
-  }
-  d["solutions"] = sols;
-  pyb::list pieces;
-  for (const auto& pc : s.pieces) {
+    return sd;
+  });
+  d["pieces"] = list_of(s.pieces, [&](const auto& pc) {
     pyb::dict pd;
     pd["support"] = pc.support;
     pd["vertices"] = pc.vertices;
-    pyb::list rays;
-    for (const auto& r : pc.rays) rays.append(to_numpy(r));
-    pd["rays"] = rays;
-    pieces.append(pd);
-  }
-  d["pieces"] = pieces;
-  pyb::list dirs;
-  for (const auto& v : s.directions) dirs.append(to_numpy(v));
-  d["directions"] = dirs;
+    pd["rays"] = list_of(pc.rays, numpy);
+    return pd;
+  });
+  d["directions"] = list_of(s.directions, numpy);
   d["complete"] = s.complete;
   d["infinite"] = s.infinite;
   d["ambiguous"] = s.ambiguous;
@@ -163,11 +152,7 @@ lcp::EnumerationOptions enumeration_options(int max_size, double time_limit) {
 pyb::dict enumerate_problem(const LcpProblem& p, int max_size, double time_limit) {
   throw_if_invalid(p.validate(), "LCP");
   const auto o = enumeration_options(max_size, time_limit);
-  lcp::SolutionSet s;
-  {
-    pyb::gil_scoped_release release;
-    s = lcp::enumerate_all(p, o);
-  }
+  lcp::SolutionSet s = without_gil([&] { return lcp::enumerate_all(p, o); });
   return set_to_dict(s);
 }
 
@@ -179,15 +164,10 @@ pyb::dict cross_verify_problem(const LcpProblem& p, const std::vector<std::strin
   for (const auto& name : skip) find_solver(name, ProblemKind::kLcp);  // names must exist
   o.skip = skip;
   throw_if_invalid(o.validate(), "cross_verify options");
-  lcp::CrossVerifyReport rep;
-  {
-    pyb::gil_scoped_release release;
-    rep = lcp::cross_verify(p, o);
-  }
+  lcp::CrossVerifyReport rep = without_gil([&] { return lcp::cross_verify(p, o); });
   pyb::dict d;
   d["set"] = set_to_dict(rep.set);
-  pyb::list checks;
-  for (const auto& c : rep.checks) {
+  d["checks"] = list_of(rep.checks, [](const auto& c) {
     pyb::dict cd;
     cd["solver"] = c.solver;
     cd["status"] = std::string(to_string(c.status));
@@ -198,9 +178,8 @@ pyb::dict cross_verify_problem(const LcpProblem& p, const std::vector<std::strin
     cd["verdict"] = std::string(lcp::to_string(c.verdict));
     cd["seconds"] = c.seconds;
     cd["message"] = c.message;
-    checks.append(cd);
-  }
-  d["checks"] = checks;
+    return cd;
+  });
   d["disagreements"] = rep.disagreements;
   d["consistent"] = rep.consistent();
   return d;

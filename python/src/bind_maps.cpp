@@ -53,7 +53,7 @@ pyb::array_t<T> grid(const std::vector<T>& v, pyb::ssize_t rows, pyb::ssize_t co
 pyb::array_t<double> axis_values(const rate::MapAxis& a) {
   std::vector<double> v(static_cast<std::size_t>(a.n));
   for (int i = 0; i < a.n; ++i) v[static_cast<std::size_t>(i)] = a.value(i);
-  return pyb::array_t<double>(static_cast<pyb::ssize_t>(v.size()), v.data());
+  return to_numpy(v);
 }
 
 pyb::dict summary_dict(const rate::RateSummary& s) {
@@ -66,15 +66,13 @@ pyb::dict summary_dict(const rate::RateSummary& s) {
 }
 
 pyb::list critical_values(const std::vector<rate::CriticalValue>& cv) {
-  pyb::list out;
-  for (const auto& c : cv) {
+  return list_of(cv, [](const rate::CriticalValue& c) {
     pyb::dict d;
     d["name"] = c.name;
     d["x"] = c.x;
     d["y"] = c.y;
-    out.append(d);
-  }
-  return out;
+    return d;
+  });
 }
 
 pyb::dict direction_map(const pyb::object& params, const pyb::object& state,
@@ -82,32 +80,24 @@ pyb::dict direction_map(const pyb::object& params, const pyb::object& state,
   const auto p = parameters_from(params);
   const auto s = state_from(state, p);
   const auto o = map_options(method, 1);
-  rate::DirectionMap map;
-  {
-    pyb::gil_scoped_release release;
-    map = rate::compute_direction_map(p, s, o);
-  }
+  rate::DirectionMap map = without_gil([&] { return rate::compute_direction_map(p, s, o); });
   pyb::dict d;
-  pyb::list sectors;
-  for (const auto& sec : map.sectors) {
+  d["sectors"] = list_of(map.sectors, [](const auto& sec) {
     pyb::dict sd = summary_dict(sec.summary);
     sd["theta_from"] = sec.theta_from;
     sd["theta_to"] = sec.theta_to;
     sd["consistent"] = sec.consistent;
     sd["check"] = summary_dict(sec.check);
-    sectors.append(sd);
-  }
-  d["sectors"] = sectors;
-  pyb::list critical;
-  for (const auto& c : map.critical) {
+    return sd;
+  });
+  d["critical"] = list_of(map.critical, [](const auto& c) {
     pyb::dict cd = summary_dict(c.summary);
     cd["theta"] = c.theta;
     cd["load"] = pyb::make_tuple(c.load.dF_T, c.load.dF_N);
     cd["conditions"] = c.conditions;
     cd["check"] = summary_dict(c.check);
-    critical.append(cd);
-  }
-  d["critical"] = critical;
+    return cd;
+  });
   d["evaluations"] = map.evaluations;
   d["disagreements"] = map.disagreements;
   d["inconsistent_sectors"] = map.inconsistent_sectors;
@@ -126,15 +116,12 @@ pyb::dict param_direction_map(const pyb::object& params, const pyb::object& stat
   if (theta_n < 1) throw InputError("theta_n must be at least 1, got " + std::to_string(theta_n));
   check_memory(3.0 * n * theta_n, "the map of " + std::to_string(n) + " x " +
                                       std::to_string(theta_n) + " (n x theta_n) cells");
-  rate::ParamDirectionMap map;
-  {
-    pyb::gil_scoped_release release;
-    map = rate::compute_param_direction_map(p, s, axis, theta_n, o);
-  }
+  rate::ParamDirectionMap map =
+      without_gil([&] { return rate::compute_param_direction_map(p, s, axis, theta_n, o); });
   pyb::dict d;
   d["param"] = param;
   d["x"] = axis_values(map.axis);
-  d["theta"] = pyb::array_t<double>(static_cast<pyb::ssize_t>(map.theta.size()), map.theta.data());
+  d["theta"] = to_numpy(map.theta);
   d["count"] = grid(map.count, n, theta_n);
   d["types"] = grid(map.types, n, theta_n);
   d["disagree"] = map.disagree.empty() ? pyb::object(pyb::none())
@@ -143,15 +130,13 @@ pyb::dict param_direction_map(const pyb::object& params, const pyb::object& stat
   d["unreliable"] = map.unreliable;
   d["cross_checked"] = map.cross_checked;
   d["critical_values"] = critical_values(map.critical_values);
-  pyb::list cd;
-  for (const auto& c : map.critical_directions) {
+  d["critical_directions"] = list_of(map.critical_directions, [](const auto& c) {
     pyb::dict e = summary_dict(c.summary);
     e["x"] = c.x;
     e["theta"] = c.theta;
     e["conditions"] = c.conditions;
-    cd.append(e);
-  }
-  d["critical_directions"] = cd;
+    return e;
+  });
   d["seconds"] = map.seconds;
   d["threads"] = map.threads;
   return d;
@@ -168,11 +153,8 @@ pyb::dict param_param_map(const pyb::object& params, const pyb::object& state,
   const auto a2 = axis_from(param2, from2, to2, n2);
   check_memory(5.0 * n1 * n2, "the map of " + std::to_string(n1) + " x " + std::to_string(n2) +
                                   " (n1 x n2) cells");
-  rate::ParamParamMap map;
-  {
-    pyb::gil_scoped_release release;
-    map = rate::compute_param_param_map(p, s, a1, a2, o);
-  }
+  rate::ParamParamMap map =
+      without_gil([&] { return rate::compute_param_param_map(p, s, a1, a2, o); });
   pyb::dict d;
   d["param1"] = param1;
   d["param2"] = param2;

@@ -98,11 +98,7 @@ pyb::dict sphere_map_3d(const rate::ContactSystem3d& sys, int n_beta, int n_gamm
   throw_if_invalid(g.validate(), "sphere grid");
   check_cells(n_beta, n_gamma, std::to_string(n_beta) + " x " + std::to_string(n_gamma) +
                                    " (n_beta x n_gamma)");
-  rate::Map3d m;
-  {
-    pyb::gil_scoped_release release;
-    m = rate::compute_sphere_map_3d(sys, g, o);
-  }
+  rate::Map3d m = without_gil([&] { return rate::compute_sphere_map_3d(sys, g, o); });
   pyb::dict d = map_dict(m, o);
   d["kind"] = "sphere";
   return d;
@@ -117,11 +113,9 @@ pyb::dict param_direction_map_3d(const rate::ContactSystem3d& sys, const std::st
   if (theta_n < 1 || theta_n > 1000000)
     throw InputError("theta_n must be in [1, 1000000], got " + std::to_string(theta_n));
   check_cells(n, theta_n, std::to_string(n) + " x " + std::to_string(theta_n) + " (n x theta_n)");
-  rate::Map3d m;
-  {
-    pyb::gil_scoped_release release;
-    m = rate::compute_param_direction_map_3d(sys, a, theta_n, theta_from, theta_to, gamma, o);
-  }
+  rate::Map3d m = without_gil([&] {
+    return rate::compute_param_direction_map_3d(sys, a, theta_n, theta_from, theta_to, gamma, o);
+  });
   pyb::dict d = map_dict(m, o);
   d["kind"] = "param-direction";
   d["param"] = a.param.name();
@@ -137,11 +131,7 @@ pyb::dict param_param_map_3d(const rate::ContactSystem3d& sys, const std::string
   const rate::Map3dAxis a1 = axis_from(param1, from1, to1, n1, sys.n_points(), "first axis");
   const rate::Map3dAxis a2 = axis_from(param2, from2, to2, n2, sys.n_points(), "second axis");
   check_cells(n1, n2, std::to_string(n1) + " x " + std::to_string(n2) + " (n1 x n2)");
-  rate::Map3d m;
-  {
-    pyb::gil_scoped_release release;
-    m = rate::compute_param_param_map_3d(sys, a1, a2, o);
-  }
+  rate::Map3d m = without_gil([&] { return rate::compute_param_param_map_3d(sys, a1, a2, o); });
   pyb::dict d = map_dict(m, o);
   d["kind"] = "param-param";
   d["param1"] = a1.param.name();

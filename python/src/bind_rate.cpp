@@ -43,15 +43,9 @@ pyb::dict solve_rate(const pyb::object& params, const pyb::object& state, double
     throw InputError("dF must be finite, got (" + std::to_string(dF_T) + ", " +
                      std::to_string(dF_N) + ")");
   const rate::LoadRate load{dF_T, dF_N};
-  rate::RateSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::solve_rate_problem(p, s, load, m);
-  }
+  rate::RateSolutionSet set = without_gil([&] { return rate::solve_rate_problem(p, s, load, m); });
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& sol : set.solutions) sols.append(solution_to_dict(sol));
-  d["solutions"] = sols;
+  d["solutions"] = list_of(set.solutions, solution_to_dict);
   d["complete"] = set.complete;
   d["infinite"] = set.infinite;
   d["count"] = set.count();

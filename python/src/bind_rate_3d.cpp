@@ -19,18 +19,13 @@ using rate::ContactParameters3d;
 
 pyb::dict rates_dict(const rate::Rates3d& r) {
   pyb::dict d;
-  d["dP_T"] = np2(r.dP_T);
-  d["dP_N"] = r.dP_N;
-  d["dw_T"] = np2(r.dw_T);
-  d["dw_N"] = r.dw_N;
-  d["dw_Ti"] = np2(r.dw_Ti);
-  d["dw_w"] = r.dw_w;
+  put_tn(d, "dP", r.dP_T, r.dP_N);
+  put_wear(d, "dw", r.dw_T, r.dw_N, r.dw_Ti, r.dw_w);
   return d;
 }
 
 pyb::dict set_dict(const rate::RateSolutionSet3d& set) {
-  pyb::list sols;
-  for (const auto& s : set.solutions) {
+  pyb::list sols = list_of(set.solutions, [](const auto& s) {
     pyb::dict sd;
     sd["type"] = std::string(rate::to_string(s.type));
     sd["kind"] = s.ray ? "ray" : "point";
@@ -39,15 +34,9 @@ pyb::dict set_dict(const rate::RateSolutionSet3d& set) {
       sd["direction"] = rates_dict(s.direction);
       sd["origin_included"] = s.origin_included;
     }
-    if (s.type == rate::SolutionType::kSlip) {
-      sd["slip_direction"] = np2(s.slip_direction);
-      sd["slip_angle"] = s.slip_angle;
-    } else {
-      sd["slip_direction"] = pyb::none();
-      sd["slip_angle"] = pyb::none();
-    }
-    sols.append(sd);
-  }
+    put_slip(sd, s.type, s.slip_direction, s.slip_angle);
+    return sd;
+  });
   pyb::dict d;
   d["solutions"] = sols;
   d["complete"] = set.complete;
@@ -68,21 +57,14 @@ pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, cons
   pyb::dict d;
   if (facets > 0) {
     if (s.state != 'b') throw InputError("facets apply to the grazing state b (a, c, d are linear)");
-    rate::FacetedRateResult r;
-    {
-      pyb::gil_scoped_release release;
-      r = rate::solve_rate_3d_faceted(p, load, facets);
-    }
+    rate::FacetedRateResult r =
+        without_gil([&] { return rate::solve_rate_3d_faceted(p, load, facets); });
     d = set_dict(r.set);
     d["facets"] = r.facets;
     d["route"] = "faceted";
   } else {
     if (const std::string e = s.validate(p); !e.empty()) throw InputError("state: " + e);
-    rate::RateSolutionSet3d r;
-    {
-      pyb::gil_scoped_release release;
-      r = rate::solve_rate_3d(p, s, load);
-    }
+    rate::RateSolutionSet3d r = without_gil([&] { return rate::solve_rate_3d(p, s, load); });
     d = set_dict(r);
     d["facets"] = 0;
     d["route"] = "exact";
@@ -102,23 +84,15 @@ pyb::dict solve_system_rate_3d(const rate::ContactSystem3d& sys, const pyb::obje
                        std::to_string(v.size()));
     load = Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
   }
-  rate::SystemRateSet3d r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::solve_system_rate_3d_faceted(sys, load, facets);
-  }
-  pyb::list sols;
-  for (const auto& s : r.solutions) {
-    pyb::list types, rates;
-    for (auto t : s.types) types.append(std::string(rate::to_string(t)));
-    for (const auto& x : s.rates) rates.append(rates_dict(x));
-    pyb::dict sd;
-    sd["types"] = types;
-    sd["rates"] = rates;
-    sols.append(sd);
-  }
+  rate::SystemRateSet3d r =
+      without_gil([&] { return rate::solve_system_rate_3d_faceted(sys, load, facets); });
   pyb::dict d;
-  d["solutions"] = sols;
+  d["solutions"] = list_of(r.solutions, [](const auto& s) {
+    pyb::dict sd;
+    sd["types"] = list_of(s.types, [](auto t) { return std::string(rate::to_string(t)); });
+    sd["rates"] = list_of(s.rates, rates_dict);
+    return sd;
+  });
   d["complete"] = r.complete;
   d["message"] = r.message;
   d["facets"] = r.facets;

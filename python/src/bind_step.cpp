@@ -53,14 +53,9 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
   const auto p = step_problem(params, P_T0, P_N0, g0, DF_T, DF_N, wear_law, k_M);
   rate::StepEnumerationOptions o;
   o.detect_jumps = detect_jumps;
-  rate::StepSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::enumerate_step(p, o);
-  }
+  rate::StepSolutionSet set = without_gil([&] { return rate::enumerate_step(p, o); });
   pyb::dict d;
-  pyb::list sols;
-  for (const auto& s : set.solutions) {
+  d["solutions"] = list_of(set.solutions, [](const auto& s) {
     pyb::dict sd;
     sd["type"] = std::string(rate::to_string(s.type));
     sd["kind"] = std::string(rate::to_string(s.kind));
@@ -73,9 +68,8 @@ pyb::dict enumerate_step(const pyb::object& params, double P_T0, double P_N0, do
     if (s.kind == rate::RateSolution::Kind::kRay) sd["direction"] = values_dict(s.direction);
     sd["residual"] = s.residual;
     sd["jump"] = s.jump;
-    sols.append(sd);
-  }
-  d["solutions"] = sols;
+    return sd;
+  });
   d["infinite"] = set.infinite;
   d["count"] = set.count();
   d["continuous_count"] = set.continuous_count;
@@ -92,11 +86,7 @@ pyb::dict solve_step(const pyb::object& params, double P_T0, double P_N0, double
   rate::StepSolveOptions o;
   if (!chain.empty()) o.chain = chain;
   throw_if_invalid(o.validate(), "step options");
-  rate::StepSolveResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::solve_step(p, o);
-  }
+  rate::StepSolveResult r = without_gil([&] { return rate::solve_step(p, o); });
   pyb::dict d;
   d["result"] = to_dict(r.result);
   d["values"] = values_dict(r.values);
@@ -128,14 +118,6 @@ rate::HeatOptions heat_from(const pyb::object& heat) {
   return h;
 }
 
-template <class F>
-pyb::array_t<double> column(const std::vector<rate::SimulationSample>& s, F get) {
-  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
-  auto m = a.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
-  return a;
-}
-
 pyb::dict simulate(const pyb::object& params, const Vec& t, const Vec& F_T, const Vec& F_N,
                    double period, double cycle_start, const std::string& wear_law, double k_M,
                    const pyb::object& heat, const std::string& branch_rule, double tol,
@@ -162,11 +144,7 @@ pyb::dict simulate(const pyb::object& params, const Vec& t, const Vec& F_T, cons
   o.tol = tol;
   o.record_every = record_every;
   throw_if_invalid(o.validate(), "simulation");
-  rate::SimulationResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::simulate(h, o);
-  }
+  rate::SimulationResult r = without_gil([&] { return rate::simulate(h, o); });
   using S = rate::SimulationSample;
   const auto& s = r.series;
   pyb::dict series;

@@ -25,11 +25,7 @@ pyb::dict enumerate_step_3d(const pyb::object& point, const pyb::object& P_T0, d
                             double g0, const pyb::object& DF, const std::string& wear_law,
                             double k_M) {
   const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
-  rate::Step3dSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::enumerate_step_3d(p);
-  }
+  rate::Step3dSolutionSet set = without_gil([&] { return rate::enumerate_step_3d(p); });
   return step_set_dict(set);
 }
 
@@ -45,13 +41,8 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
   o.solver.tol_acceptable = tol;  // "solved" means step_3d_residual <= tol, nothing looser
   o.solver.time_limit_s = time_limit;
   throw_if_invalid(o.validate(), "solver options");
-  rate::Step3dChainResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::solve_step_3d(p, o);
-  }
-  pyb::list attempts;
-  for (const auto& a : r.attempts) {
+  rate::Step3dChainResult r = without_gil([&] { return rate::solve_step_3d(p, o); });
+  pyb::list attempts = list_of(r.attempts, [](const Attempt& a) {
     pyb::dict ad;
     ad["solver"] = a.solver;
     ad["solved"] = a.status == Status::kSolved;
@@ -59,8 +50,8 @@ pyb::dict solve_step_3d(const pyb::object& point, const pyb::object& P_T0, doubl
     ad["iterations"] = a.iterations;
     ad["seconds"] = a.seconds;
     ad["message"] = a.message;
-    attempts.append(ad);
-  }
+    return ad;
+  });
   pyb::dict d;
   const bool verified = r.status == Status::kSolved;
   d["solved"] = verified;
@@ -77,11 +68,8 @@ pyb::dict multistart_step_3d(const pyb::object& point, const pyb::object& P_T0, 
   const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 0) throw InputError("n_starts must be >= 0, got " + std::to_string(n_starts));
   rate::check_multistart_cap(n_starts, "n_starts");
-  rate::Step3dSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::multistart_step_3d(p, n_starts, seed);
-  }
+  rate::Step3dSolutionSet set =
+      without_gil([&] { return rate::multistart_step_3d(p, n_starts, seed); });
   return step_set_dict(set);
 }
 
@@ -91,11 +79,8 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
   const rate::Step3dProblem p = step_problem(point, P_T0, P_N0, g0, DF, wear_law, k_M);
   if (n_starts < 1) throw InputError("n_starts must be >= 1, got " + std::to_string(n_starts));
   rate::check_multistart_cap(n_starts, "n_starts");
-  rate::FacetedStep3dResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::solve_step_3d_faceted(p, facets, n_starts, seed);
-  }
+  rate::FacetedStep3dResult r =
+      without_gil([&] { return rate::solve_step_3d_faceted(p, facets, n_starts, seed); });
   pyb::dict d = step_set_dict(r.set);
   d["facets"] = r.facets;
   d["size"] = r.size;
@@ -108,14 +93,6 @@ pyb::dict solve_step_3d_faceted(const pyb::object& point, const pyb::object& P_T
 // ---- fretting --------------------------------------------------------------------------------
 
 using Sample = rate::Fretting3dSample;
-
-template <class F>
-pyb::array_t<double> column(const std::vector<Sample>& s, F get) {
-  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
-  auto m = a.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
-  return a;
-}
 
 template <class F>
 pyb::array_t<double> column2(const std::vector<Sample>& s, F get) {
@@ -149,9 +126,7 @@ pyb::dict series_dict(const std::vector<Sample>& s) {
   d["complete"] = column(s, [](const Sample& x) { return x.complete ? 1.0 : 0.0; });
   d["dissipation"] = column(s, [](const Sample& x) { return x.dissipation; });
   d["cycle"] = column(s, [](const Sample& x) { return static_cast<double>(x.cycle); });
-  pyb::list types;
-  for (const auto& x : s) types.append(std::string(rate::to_string(x.type)));
-  d["type"] = types;
+  d["type"] = list_of(s, [](const Sample& x) { return std::string(rate::to_string(x.type)); });
   return d;
 }
 
@@ -159,15 +134,10 @@ pyb::dict sample_dict(const Sample& x) {
   pyb::dict d;
   d["step"] = x.step;
   d["t"] = x.t;
-  d["F_T"] = np2(x.F_T);
-  d["F_N"] = x.F_N;
-  d["P_T"] = np2(x.P_T);
-  d["P_N"] = x.P_N;
+  put_tn(d, "F", x.F_T, x.F_N);
+  put_tn(d, "P", x.P_T, x.P_N);
   d["g"] = x.g;
-  d["w_T"] = np2(x.w_T);
-  d["w_N"] = x.w_N;
-  d["w_Ti"] = np2(x.w_Ti);
-  d["w_w"] = x.w_w;
+  put_wear(d, "w", x.w_T, x.w_N, x.w_Ti, x.w_w);
   d["type"] = std::string(rate::to_string(x.type));
   d["cycle"] = x.cycle;
   return d;
@@ -207,11 +177,7 @@ pyb::dict simulate_fretting_3d(const pyb::object& point, double F_N, double a_X,
   check_memory(kept * (sizeof(Sample) + 25 * sizeof(double)) + 2.0 * 4 * cycles * sizeof(double),
                "a fretting run of " + std::to_string(orbit.size()) + " steps (record_every " +
                    std::to_string(record_every) + ")");
-  rate::Fretting3dResult r;
-  {
-    pyb::gil_scoped_release release;
-    r = rate::simulate_fretting_3d(orbit, o);
-  }
+  rate::Fretting3dResult r = without_gil([&] { return rate::simulate_fretting_3d(orbit, o); });
   auto arr = [](const std::vector<double>& v) { return to_numpy(v); };
   pyb::dict d;
   d["series"] = series_dict(r.series);

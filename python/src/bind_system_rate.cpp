@@ -34,11 +34,8 @@ pyb::list type_list(const std::vector<rate::SolutionType>& types) {
 pyb::dict solve_system_rate(const rate::ContactSystem& sys, const Vec& dF, const std::string& method) {
   const auto m = rate::rate_method_from_string(method);
   if (!m) throw InputError("method must be one of enumerate, lemke, fb-newton, ipopt, got '" + method + "'");
-  rate::SystemRateSolutionSet set;
-  {
-    pyb::gil_scoped_release release;
-    set = rate::solve_rate_problem(sys, dF, *m);
-  }
+  rate::SystemRateSolutionSet set =
+      without_gil([&] { return rate::solve_rate_problem(sys, dF, *m); });
   pyb::dict d;
   pyb::list sols;
   for (const auto& s : set.solutions) {

@@ -76,17 +76,15 @@ pyb::dict to_dict(const SolveResult& r) {
   }
   d["ray"] = r.ray ? pyb::object(to_numpy(*r.ray)) : pyb::object(pyb::none());
   d["basis"] = r.basis;
-  pyb::list attempts;
-  for (const auto& a : r.attempts) {
+  d["attempts"] = list_of(r.attempts, [](const Attempt& a) {
     pyb::dict ad;
     ad["solver"] = a.solver;
     ad["status"] = std::string(to_string(a.status));
     ad["residual"] = a.residual;
     ad["seconds"] = a.seconds;
     ad["message"] = a.message;
-    attempts.append(ad);
-  }
-  d["attempts"] = attempts;
+    return ad;
+  });
   d["message"] = r.message;
   return d;
 }

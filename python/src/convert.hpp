@@ -20,6 +20,32 @@ namespace cpkit::py {
 
 namespace pyb = pybind11;
 
+/// f() run with the GIL released (other Python threads go on meanwhile), its result returned.
+/// f must not touch Python objects; its exceptions propagate once the GIL is held again.
+template <class F>
+auto without_gil(F&& f) -> decltype(f()) {
+  pyb::gil_scoped_release release;
+  return f();
+}
+
+/// A Python list of f(x) for each x of `seq`, in order (f returns a Python object or anything
+/// pybind11 converts).
+template <class Seq, class F>
+pyb::list list_of(const Seq& seq, F&& f) {
+  pyb::list out;
+  for (const auto& x : seq) out.append(f(x));
+  return out;
+}
+
+/// A numpy column of get(x) for each record x of a series (the simulations' time series).
+template <class T, class F>
+pyb::array_t<double> column(const std::vector<T>& s, F get) {
+  pyb::array_t<double> a(static_cast<pyb::ssize_t>(s.size()));
+  auto m = a.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < s.size(); ++i) m(static_cast<pyb::ssize_t>(i)) = get(s[i]);
+  return a;
+}
+
 /// A numpy copy of an Eigen vector (owns its data: safe after the C++ object is gone).
 pyb::array_t<double> to_numpy(const Vec& v);
 /// A numpy copy of a std::vector.

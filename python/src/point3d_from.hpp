@@ -1,7 +1,7 @@
 #pragma once
 // Reading a 3-D point (cpkit.Point3d), small vectors and one-point step problems from Python
-// objects, and step solutions back as dicts, shared by bind_rate_3d.cpp and bind_step_3d.cpp. Errors are InputError (ValueError in Python)
-// naming the field.
+// objects, and 3-D quantities and step solutions back as dicts, shared by bind_rate_3d.cpp and
+// bind_step_3d.cpp. Errors are InputError (ValueError in Python) naming the field.
 #include <string>
 #include <vector>
 
@@ -14,15 +14,22 @@
 
 namespace cpkit::py {
 
+/// Exactly n numbers from a Python sequence; InputError "<what> must hold n numbers, got m".
+inline std::vector<double> numbers_of(const pyb::handle& o, std::size_t n, const char* what) {
+  auto v = o.cast<std::vector<double>>();
+  if (v.size() != n)
+    throw InputError(std::string(what) + " must hold " + std::to_string(n) + " numbers, got " +
+                     std::to_string(v.size()));
+  return v;
+}
+
 inline Eigen::Vector2d vec2(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 2) throw InputError(std::string(what) + " must hold 2 numbers, got " + std::to_string(v.size()));
+  const auto v = numbers_of(o, 2, what);
   return {v[0], v[1]};
 }
 
 inline Eigen::Vector3d vec3(const pyb::handle& o, const char* what) {
-  const auto v = o.cast<std::vector<double>>();
-  if (v.size() != 3) throw InputError(std::string(what) + " must hold 3 numbers, got " + std::to_string(v.size()));
+  const auto v = numbers_of(o, 3, what);
   return {v[0], v[1], v[2]};
 }
 
@@ -46,6 +53,21 @@ inline rate::ContactParameters3d params_from(const pyb::handle& o) {
 
 inline pyb::array_t<double> np2(const Eigen::Vector2d& v) { return to_numpy(Vec(v)); }
 
+/// A 3-D quantity X as d["X_T"] (tangential 2-vector, numpy) and d["X_N"] (normal scalar).
+inline void put_tn(pyb::dict& d, const std::string& X, const Eigen::Vector2d& T, double N) {
+  d[pyb::str(X + "_T")] = np2(T);
+  d[pyb::str(X + "_N")] = N;
+}
+
+/// A 3-D wear quadruple (w_T, w_N, w_Ti, w_w, or its rate or increment named by X = "dw", "Dw")
+/// as d["X_T"], d["X_N"], d["X_Ti"], d["X_w"].
+inline void put_wear(pyb::dict& d, const std::string& X, const Eigen::Vector2d& T, double N,
+                     const Eigen::Vector2d& Ti, double w) {
+  put_tn(d, X, T, N);
+  d[pyb::str(X + "_Ti")] = np2(Ti);
+  d[pyb::str(X + "_w")] = w;
+}
+
 inline rate::Step3dProblem step_problem(const pyb::object& point, const pyb::object& P_T0,
                                    double P_N0, double g0, const pyb::object& DF,
                                    const std::string& wear_law, double k_M) {
@@ -62,26 +84,29 @@ inline rate::Step3dProblem step_problem(const pyb::object& point, const pyb::obj
   return p;
 }
 
+/// d["slip_direction"] (unit 2-vector) and d["slip_angle"] (radians) of a slip solution; None
+/// for the other types.
+inline void put_slip(pyb::dict& d, rate::SolutionType type, const Eigen::Vector2d& direction,
+                     double angle) {
+  const bool slip = type == rate::SolutionType::kSlip;
+  d["slip_direction"] = slip ? pyb::object(np2(direction)) : pyb::object(pyb::none());
+  d["slip_angle"] = slip ? pyb::object(pyb::float_(angle)) : pyb::object(pyb::none());
+}
+
 /// A step solution as a dict with the keys of enumerate_step_3d's solutions.
 inline pyb::dict step_solution_dict(const rate::Step3dSolution& s) {
   const rate::Step3dValues& v = s.values;
   pyb::dict values;
   values["P_T1"] = np2(v.P_T1);
   values["P_N1"] = v.P_N1;
-  values["DP_T"] = np2(v.DP_T);
-  values["DP_N"] = v.DP_N;
-  values["Dw_T"] = np2(v.Dw_T);
-  values["Dw_N"] = v.Dw_N;
-  values["Dw_Ti"] = np2(v.Dw_Ti);
-  values["Dw_w"] = v.Dw_w;
+  put_tn(values, "DP", v.DP_T, v.DP_N);
+  put_wear(values, "Dw", v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w);
   values["g1"] = v.g1;
   values["lambda"] = v.lambda;
   pyb::dict d;
   d["type"] = std::string(rate::to_string(s.type));
   d["values"] = values;
-  const bool slip = s.type == rate::SolutionType::kSlip;
-  d["slip_direction"] = slip ? pyb::object(np2(s.slip_direction)) : pyb::object(pyb::none());
-  d["slip_angle"] = slip ? pyb::object(pyb::float_(s.slip_angle)) : pyb::object(pyb::none());
+  put_slip(d, s.type, s.slip_direction, s.slip_angle);
   d["residual"] = s.residual;
   return d;
 }
