@@ -336,9 +336,11 @@ struct SmallEnumerator {
   }
 
   /// Vertex z += nb^T x of a piece of dimension m, x solving the regular m x m system
-  /// eliminated by small_eliminate (u, column order perm) with eliminated right-hand side rhs.
-  static void vertex_from(const double (&u)[4][5], const int (&perm)[5], int m,
-                          const double* rhs, const double (&nb)[4][N], double (&z)[N]) noexcept {
+  /// eliminated by small_eliminate (u, column order perm) with eliminated right-hand side
+  /// rhs(t).
+  template <typename Rhs>
+  static void vertex_from(const double (&u)[4][5], const int (&perm)[5], int m, const Rhs& rhs,
+                          const double (&nb)[4][N], double (&z)[N]) noexcept {
     double x[4] = {};
     small_back_substitute(u, m, perm, rhs, x);
     for (int f = 0; f < m; ++f)
@@ -366,9 +368,8 @@ struct SmallEnumerator {
     // particular solution (free variables 0) and null basis (one row per free variable)
     double z0[N] = {}, nb[4][N] = {};
     {
-      double x[4] = {}, rhs[4] = {};
-      for (int p = 0; p < r; ++p) rhs[p] = a[p][4];
-      small_back_substitute(a, r, perm, rhs, x);
+      double x[4] = {};
+      small_back_substitute(a, r, perm, [&](int p) { return a[p][4]; }, x);
       for (int c = 0; c < k; ++c) z0[idx[c]] = x[c];
     }
     small_null_basis<N>(a, r, k, perm, idx, nb);
@@ -404,9 +405,7 @@ struct SmallEnumerator {
           bool g2 = false;
           if (small_eliminate(e, m, m, pm, tol, g2) < m) continue;
           if (g2) ++out.ambiguous;
-          double rhs[4];
-          for (int t = 0; t < m; ++t) rhs[t] = e[t][4];
-          vertex_from(e, pm, m, rhs, nb, z);
+          vertex_from(e, pm, m, [&](int t) { return e[t][4]; }, nb, z);
         }
         add_point(S, z);
       }

@@ -189,7 +189,7 @@ class SmallPreparedLcp {
       for (int c = 0; c < k; ++c) rhs[c] = idx[c] == ii ? -1.0 : 0.0;
       detail::small_replay_rhs(s.el, k, rhs);
       double x[4] = {};
-      detail::small_back_substitute(s.el.a, r, s.el.perm, rhs, x);
+      detail::small_back_substitute(s.el.a, r, s.el.perm, [&](int p) { return rhs[p]; }, x);
       for (int c = 0; c < k; ++c) s.P[idx[c]][ii] = x[c];
     }
     for (int j = 0; j < N; ++j) {
@@ -287,7 +287,7 @@ class SmallPreparedLcp {
           for (int i = 0; i < N; ++i)
             if (s.acts[a] & (1u << i)) { e4[t] = -b[i] / s.act_rmax[a][t]; ++t; }
           detail::small_replay_rhs(rec, m, e4);
-          en.vertex_from(rec.a, rec.perm, m, e4, nb, z);
+          en.vertex_from(rec.a, rec.perm, m, [&](int p) { return e4[p]; }, nb, z);
         }
         en.add_point(S, z);
       }

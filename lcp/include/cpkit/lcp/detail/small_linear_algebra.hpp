@@ -125,13 +125,14 @@ inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], doub
 }
 
 /// Back substitution on the first r rows of a block eliminated by small_eliminate with column
-/// order perm: x[perm[p]] for p < r from the eliminated right-hand side rhs[0..r-1] (the entries
-/// x[perm[c]], c >= r, are left as they are: zero for a basic solution, the free value for a
-/// null vector).
+/// order perm: x[perm[p]] for p < r from the eliminated right-hand side rhs(p) (a column of
+/// the block itself or a separate vector). The entries x[perm[c]], c >= r, are left as they
+/// are: zero for a basic solution, the free value for a null vector.
+template <typename Rhs>
 inline void small_back_substitute(const double (&u)[4][5], int r, const int (&perm)[5],
-                                  const double* rhs, double* x) noexcept {
+                                  const Rhs& rhs, double* x) noexcept {
   for (int p = r - 1; p >= 0; --p) {
-    double s = rhs[p];
+    double s = rhs(p);
     for (int c = p + 1; c < r; ++c) s -= u[p][perm[c]] * x[perm[c]];
     x[perm[p]] = s / u[p][perm[p]];
   }
@@ -141,10 +142,9 @@ inline void small_back_substitute(const double (&u)[4][5], int r, const int (&pe
 /// free column perm[free] (free >= r) set to 1, the other free columns 0. y must be zeroed.
 inline void small_null_column(const double (&u)[4][5], int r, const int (&perm)[5], int free,
                               double* y) noexcept {
-  double rhs[4];
-  for (int p = 0; p < r; ++p) rhs[p] = -u[p][perm[free]];
-  y[perm[free]] = 1;
-  small_back_substitute(u, r, perm, rhs, y);
+  const int col = perm[free];
+  y[col] = 1;
+  small_back_substitute(u, r, perm, [&](int p) { return -u[p][col]; }, y);
 }
 
 /// Null vector x (m entries, x[pm[m-1]] = 1) of an m x m block whose first m - 1 rows were
@@ -217,9 +217,7 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
   }
   int perm[5] = {};
   if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
-  double rhs[4];
-  for (int p = 0; p < k; ++p) rhs[p] = a[p][4];
-  small_back_substitute(a, k, perm, rhs, x);
+  small_back_substitute(a, k, perm, [&](int p) { return a[p][4]; }, x);
   return true;
 }
 

@@ -81,9 +81,10 @@ inline bool small_equilibrated_rows(const double (&A)[N][4], const double* b, un
 /// Candidate extreme rays of a piece of dimension m >= 1 (null basis nb, constraint directions
 /// A): +-nb_0 for a line, else +-(nb^T x) for x spanning the null space of each regular set of
 /// m - 1 active constraints. Calls emit(d) for each (d is scratch the callee may change);
-/// `gray` counts close rank decisions.
+/// `gray` counts close rank decisions. Inlined: a line's two rays are on the per-call path of
+/// the rate LCPs (bench/bench_enumerate.cpp, section 1).
 template <int N, typename Emit>
-inline void small_ray_candidates(const double (&A)[N][4], const double (&nb)[4][N], int m,
+CPKIT_SMALL_HOT inline void small_ray_candidates(const double (&A)[N][4], const double (&nb)[4][N], int m,
                                  double tol, int& gray, Emit&& emit) {
   constexpr unsigned kAll = (1u << N) - 1;
   double d[N];
