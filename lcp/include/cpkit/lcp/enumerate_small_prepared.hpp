@@ -15,9 +15,10 @@
 /// operator P with z0 = P q of the particular solution, the null basis, the constraint
 /// directions of the piece, the eliminations that locate its vertices (recorded row operations,
 /// replayed on q) and the candidate rays with add_ray's tests already applied (they depend on M
-/// only). enumerate(q) then runs the q-dependent part with the same vertex tests
-/// (SmallEnumerator::add_point), the same deduplication and the same piece collection
-/// (detail::small_finish).
+/// only). enumerate(q) then runs the q-dependent part on the kernel of enumerate_small
+/// (detail::SmallEnumerator: add_point, piece_consistent, constraint_offsets, vertex_from,
+/// store_ray; detail::small_finish) with the M-only geometry of detail/small_piece.hpp computed
+/// once: only the way a basic solution is obtained differs (replay of the recorded elimination).
 ///
 /// Agreement with enumerate_small(M, q, out, tol): every M-only decision is identical, and the
 /// nonsingular supports use the very same operations. On singular blocks z0 = P q and the line
