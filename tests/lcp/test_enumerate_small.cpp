@@ -13,6 +13,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "lcp/enumerate_brute_force.hpp"
+#include "lcp/enumerate_small_found.hpp"
 
 namespace {
 
@@ -29,24 +30,10 @@ void compare(const std::vector<std::vector<int>>& Mi, const std::vector<int>& qi
   CAPTURE(M, q.transpose());
   REQUIRE(out.ambiguous == 0);
   REQUIRE(out.dropped == 0);
-  brute::Found f;
-  for (int p = 0; p < out.num_points; ++p) {
-    f.z.emplace_back(out.z[p].data(), out.z[p].data() + N);
-    f.w.emplace_back(out.w[p].data(), out.w[p].data() + N);
-    // the support is the set of positive z entries
+  // the support is the set of positive z entries
+  for (int p = 0; p < out.num_points; ++p)
     for (int j = 0; j < N; ++j) REQUIRE(bool((out.support[p] >> j) & 1u) == (out.z[p](j) > 0));
-  }
-  for (int k = 0; k < out.num_pieces; ++k) {
-    brute::Found::Piece pc;
-    pc.support = out.pieces[k].support;
-    for (int p = 0; p < out.num_points; ++p)
-      if ((out.pieces[k].vertex_mask >> p) & 1u) pc.vertices.push_back(p);
-    for (int r = 0; r < out.pieces[k].num_rays; ++r)
-      pc.rays.emplace_back(out.pieces[k].rays[r].data(), out.pieces[k].rays[r].data() + N);
-    f.pieces.push_back(pc);
-  }
-  f.infinite = out.infinite;
-  brute::check(Mi, qi, f);
+  brute::check(Mi, qi, to_found(out));
 }
 
 template <int N>
@@ -137,6 +124,16 @@ std::vector<Rates> physical(const RateData& p, const cpkit::lcp::SmallSolutionSe
   return phys;
 }
 
+/// enumerate_small of the rate LCP of p.
+cpkit::lcp::SmallSolutionSet<3> enumerate_rate(const RateData& p) {
+  Eigen::Matrix3d M;
+  Eigen::Vector3d q;
+  rate_lcp(p, M, q);
+  cpkit::lcp::SmallSolutionSet<3> out;
+  cpkit::lcp::enumerate_small<3>(M, q, out);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("enumerate_small: 1x1 textbook cases", "[enumerate_small]") {
@@ -198,11 +195,7 @@ TEST_CASE("enumerate_small: rate LCP, state b, a11 > mu |a12| (unique rates)", "
            {0.5, -1}, {0.1, 1}, {1, 1}, {-1, 1}, {-0.3, -0.2}, {0, 0.7}, {2, 0.5}}) {
     const RateData p{2, 0.5, 1, 0.1, 0.3, dFT, dFN};
     CAPTURE(dFT, dFN);
-    Eigen::Matrix3d M;
-    Eigen::Vector3d q;
-    rate_lcp(p, M, q);
-    cpkit::lcp::SmallSolutionSet<3> out;
-    cpkit::lcp::enumerate_small<3>(M, q, out);
+    const auto out = enumerate_rate(p);
     CHECK(out.ambiguous == 0);
     const auto cf = closed_form(p);
     REQUIRE(cf.size() == 1);
@@ -226,11 +219,7 @@ TEST_CASE("enumerate_small: rate LCP, state b, a11 < mu |a12| (several rates)", 
            {1, 1.5}, {1, 1}, {0.3, 0.2}, {-1, 0.5}, {1, -1}, {0.6, 1.1}}) {
     const RateData p{1, 2, 5, 0.2, 0.6, dFT, dFN};
     CAPTURE(dFT, dFN);
-    Eigen::Matrix3d M;
-    Eigen::Vector3d q;
-    rate_lcp(p, M, q);
-    cpkit::lcp::SmallSolutionSet<3> out;
-    cpkit::lcp::enumerate_small<3>(M, q, out);
+    const auto out = enumerate_rate(p);
     CHECK(out.ambiguous == 0);
     const auto cf = closed_form(p);
     const auto ph = physical(p, out);

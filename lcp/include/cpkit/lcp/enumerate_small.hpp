@@ -46,7 +46,7 @@
 #include <string>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/lcp/detail/small_linear_algebra.hpp"
+#include "cpkit/lcp/detail/small_piece.hpp"
 
 namespace cpkit::lcp {
 
@@ -104,7 +104,14 @@ struct SmallEnumerator {
 
   SmallEnumerator(const Eigen::Matrix<double, N, N>& m, const Eigen::Matrix<double, N, 1>& qq,
                   SmallSolutionSet<N>& o, double t)
-      : M(m), q(qq), out(o), tol(t) {}
+      : M(m), q(qq), out(o), tol(t) {  // out is overwritten: its counts are reset
+    out.num_points = 0;
+    out.num_pieces = 0;
+    out.infinite = false;
+    out.ambiguous = 0;
+    out.unrepresentable = 0;
+    out.dropped = 0;
+  }
 
   /// A candidate that double precision cannot represent or verify (never listed).
   CPKIT_SMALL_COLD void unrepresentable() noexcept {
@@ -264,36 +271,18 @@ struct SmallEnumerator {
   /// Judges the direction d (d_i = 0 off S, (M d)_i = 0 on S by construction) of the
   /// recession cone of piece S; stores it (scaled to ||d||_inf = 1) when it is a new ray.
   void add_ray(unsigned S, double (&d)[N]) {
-    double big = 0;
-    int arg = 0;
-    for (int j = 0; j < N; ++j) {
-      if (!small_finite(d[j])) { unrepresentable(); return; }
-      if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
+    unsigned zd = 0, zmd = 0;
+    switch (small_judge_ray<N>(M, S, d, tol, zd, zmd)) {
+      case kRayAccepted: store_ray(d, zd, zmd); return;
+      case kRayAmbiguous: ++out.ambiguous; return;
+      case kRayNotFinite: unrepresentable(); return;
+      default: return;
     }
-    if (!(big > 0) || d[arg] < 0) return;  // a ray is >= 0: its largest entry is positive
-    const double f = 1.0 / big;
-    int verdict = 0;
-    unsigned zd = ~S & kAll, zmd = S;
-    for (int j = 0; j < N; ++j) {
-      if (!(S & (1u << j))) { d[j] = 0; continue; }
-      d[j] *= f;
-      const int sgn = small_sign(d[j], 1.0, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(d[j]) <= tol) { d[j] = 0; zd |= 1u << j; }
-    }
-    for (int i = 0; i < N; ++i) {
-      if (S & (1u << i)) continue;
-      double v = 0, sc = 0;
-      for (int j = 0; j < N; ++j)
-        if (d[j] != 0) { v += M(i, j) * d[j]; sc += small_abs(M(i, j) * d[j]); }
-      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
-      const int sgn = small_sign(v, sc, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(v) <= tol * sc) zmd |= 1u << i;
-    }
-    if (verdict == 1) { ++out.ambiguous; return; }
+  }
+
+  /// Stores an accepted ray d (zero patterns zd, zmd) unless it is already listed; then its
+  /// zero patterns are merged into the listed one.
+  void store_ray(const double* d, unsigned zd, unsigned zmd) {
     for (int p = 0; p < num_rays; ++p) {
       double dd = 0;
       for (int j = 0; j < N; ++j) dd = small_max(dd, small_abs(rays[p][j] - d[j]));
@@ -308,6 +297,54 @@ struct SmallEnumerator {
     ray_zero_d[num_rays] = zd;
     ray_zero_md[num_rays] = zmd;
     ++num_rays;
+  }
+
+  /// Consistency of the basic solution z0 (||z0||_inf = z0n) of the block M_SS (members idx,
+  /// k of them): -q_S must lie in the range of M_SS (backward-error scale
+  /// |q_i| + ||M_i.||_1 ||z0||_inf: entries of z0 that should vanish carry round-off of the size
+  /// of the whole z0). False when the piece is empty, too close to call (counted in ambiguous)
+  /// or not representable (counted).
+  bool piece_consistent(const int* idx, int k, const double (&z0)[N], double z0n) {
+    for (int c = 0; c < k; ++c) {
+      const int i = idx[c];
+      double v = q(i), sc = small_abs(q(i));
+      for (int j = 0; j < N; ++j) {
+        v += M(i, j) * z0[j];
+        sc += small_abs(M(i, j)) * z0n;
+      }
+      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return false; }
+      if (small_abs(v) > kSmallGray * tol * sc) return false;  // empty piece
+      if (small_abs(v) > tol * sc) { ++out.ambiguous; return false; }
+    }
+    return true;
+  }
+
+  /// Offsets b_i = g_i(0) of the constraints of piece S at z0 (z_i on S, w_i off S; values at
+  /// round-off level of their own terms are zero). False when a value overflows.
+  bool constraint_offsets(unsigned S, const double (&z0)[N], double z0n, double (&b)[N]) const {
+    for (int i = 0; i < N; ++i) {
+      if (S & (1u << i)) {
+        b[i] = small_abs(z0[i]) <= tol * z0n ? 0.0 : z0[i];
+      } else {
+        double v = q(i), sv = small_abs(q(i));
+        for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
+        if (!small_finite(sv) || !small_finite(v)) return false;
+        b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
+      }
+    }
+    return true;
+  }
+
+  /// Vertex z += nb^T x of a piece of dimension m, x solving the regular m x m system
+  /// eliminated by small_eliminate (u, column order perm) with eliminated right-hand side
+  /// rhs(t).
+  template <typename Rhs>
+  static void vertex_from(const double (&u)[4][5], const int (&perm)[5], int m, const Rhs& rhs,
+                          const double (&nb)[4][N], double (&z)[N]) noexcept {
+    double x[4] = {};
+    small_back_substitute(u, m, perm, rhs, x);
+    for (int f = 0; f < m; ++f)
+      for (int j = 0; j < N; ++j) z[j] += x[f] * nb[f][j];
   }
 
   /// Piece S with a singular (or 4x4) block M_SS: P_S = {z0 + N t} cut by the n inequalities
@@ -328,169 +365,55 @@ struct SmallEnumerator {
     const int r = small_eliminate(a, k, k, perm, tol * amax, gray);
     if (gray) ++out.ambiguous;
     const int m = k - r;
-    // particular solution (free variables 0) and null basis (one column per free variable)
+    // particular solution (free variables 0) and null basis (one row per free variable)
     double z0[N] = {}, nb[4][N] = {};
     {
       double x[4] = {};
-      for (int p = r - 1; p >= 0; --p) {
-        double s = a[p][4];
-        for (int c = p + 1; c < r; ++c) s -= a[p][perm[c]] * x[perm[c]];
-        x[perm[p]] = s / a[p][perm[p]];
-      }
+      small_back_substitute(a, r, perm, [&](int p) { return a[p][4]; }, x);
       for (int c = 0; c < k; ++c) z0[idx[c]] = x[c];
-      for (int f = 0; f < m; ++f) {
-        double y[4] = {};
-        y[perm[r + f]] = 1;
-        for (int p = r - 1; p >= 0; --p) {
-          double s = -a[p][perm[r + f]];
-          for (int c = p + 1; c < r; ++c) s -= a[p][perm[c]] * y[perm[c]];
-          y[perm[p]] = s / a[p][perm[p]];
-        }
-        for (int c = 0; c < k; ++c) nb[f][idx[c]] = y[c];
-      }
     }
+    small_null_basis<N>(a, r, k, perm, idx, nb);
     // overflow (e.g. a pivot 1e-320 against q = 1): values double cannot hold
-    for (int j = 0; j < N; ++j) {
-      bool ok = small_finite(z0[j]);
-      for (int f = 0; f < m; ++f) ok = ok && small_finite(nb[f][j]);
-      if (!ok) { unrepresentable(); return; }
-    }
-    // consistency: -q_S must lie in the range of M_SS (backward-error scale
-    // |q_i| + ||M_i.||_1 ||z0||_inf: entries of z0 that should vanish carry round-off of the
-    // size of the whole z0)
+    bool ok = all_finite(z0);
+    for (int f = 0; f < m; ++f) ok = ok && all_finite(nb[f]);
+    if (!ok) { unrepresentable(); return; }
     double z0n = 0;
     for (int j = 0; j < N; ++j) z0n = small_max(z0n, small_abs(z0[j]));
-    for (int c = 0; c < k; ++c) {
-      const int i = idx[c];
-      double v = q(i), sc = small_abs(q(i));
-      for (int j = 0; j < N; ++j) {
-        v += M(i, j) * z0[j];
-        sc += small_abs(M(i, j)) * z0n;
-      }
-      if (!small_finite(sc) || !small_finite(v)) { unrepresentable(); return; }
-      if (small_abs(v) > kSmallGray * tol * sc) return;  // empty piece
-      if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
-    }
-    // constraint g_i(t) = b_i + sum_f A_if t_f >= 0 for every i (z_i on S, w_i off S)
-    // entries at round-off level of their own terms are zero (a constraint that is constant on
-    // the piece must not produce a "vertex" from noise / noise)
+    if (!piece_consistent(idx, k, z0, z0n)) return;
     double A[N][4] = {}, b[N];
-    for (int i = 0; i < N; ++i) {
-      if (S & (1u << i)) {
-        b[i] = small_abs(z0[i]) <= tol * z0n ? 0.0 : z0[i];
-        for (int f = 0; f < m; ++f) {
-          double nm = 0;
-          for (int j = 0; j < N; ++j) nm = small_max(nm, small_abs(nb[f][j]));
-          A[i][f] = small_abs(nb[f][i]) <= tol * nm ? 0.0 : nb[f][i];
-        }
-      } else {
-        double v = q(i), sv = small_abs(q(i));
-        for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
-        if (!small_finite(sv) || !small_finite(v)) { unrepresentable(); return; }
-        b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
-        for (int f = 0; f < m; ++f) {
-          double u = 0, su = 0;
-          for (int j = 0; j < N; ++j) { u += M(i, j) * nb[f][j]; su += small_abs(M(i, j) * nb[f][j]); }
-          if (!small_finite(su)) { unrepresentable(); return; }
-          A[i][f] = small_abs(u) <= tol * su ? 0.0 : u;
-        }
-      }
+    if (!constraint_offsets(S, z0, z0n, b) || !small_constraint_dirs<N>(M, S, nb, m, tol, A)) {
+      unrepresentable();
+      return;
     }
-    if (m == 1) {  // a line: vertices where one constraint is active, rays +-nb
+    if (m == 1) {  // a line: vertices where one constraint is active
       for (int i = 0; i < N; ++i) {
-        double sa = 0;
-        if (S & (1u << i)) {
-          for (int j = 0; j < N; ++j) sa = small_max(sa, small_abs(nb[0][j]));
-        } else {
-          for (int j = 0; j < N; ++j) sa += small_abs(M(i, j) * nb[0][j]);
-        }
-        if (!(small_abs(A[i][0]) > tol * sa)) continue;  // parallel to the line
+        if (!(small_abs(A[i][0]) > tol * small_line_scale<N>(M, S, i, nb))) continue;  // parallel
         const double t = -b[i] / A[i][0];
         double z[N];
         for (int j = 0; j < N; ++j) z[j] = z0[j] + t * nb[0][j];
         add_point(S, z);
       }
-      double d[N];
-      for (int j = 0; j < N; ++j) d[j] = nb[0][j];
-      add_ray(S, d);
-      for (int j = 0; j < N; ++j) d[j] = -nb[0][j];
-      add_ray(S, d);
-      return;
-    }
-    // vertices: m active constraints
-    for (unsigned act = 0; act <= kAll; ++act) {
-      if (small_popcount(act) != m) continue;
-      double z[N];
-      for (int j = 0; j < N; ++j) z[j] = z0[j];
-      if (m > 0) {
-        // rows equilibrated (each row of A has the units of its own z_i or w_i): the rank
-        // decision is then invariant under (M, q) -> b (M, q)
-        double e[4][5] = {};
-        int t = 0;
-        bool constant_row = false;
-        for (int i = 0; i < N; ++i) {
-          if (!(act & (1u << i))) continue;
-          double rmax = 0;
-          for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
-          constant_row = constant_row || rmax == 0;
-          if (constant_row) break;
-          for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;
-          e[t][4] = -b[i] / rmax;
-          ++t;
+    } else {  // vertices: m active constraints
+      for (unsigned act = 0; act <= kAll; ++act) {
+        if (small_popcount(act) != m) continue;
+        double z[N];
+        for (int j = 0; j < N; ++j) z[j] = z0[j];
+        if (m > 0) {
+          double e[4][5] = {}, rm[4];
+          if (!small_equilibrated_rows<N>(A, b, act, m, e, rm)) continue;
+          int pm[5] = {};
+          bool g2 = false;
+          if (small_eliminate(e, m, m, pm, tol, g2) < m) continue;
+          if (g2) ++out.ambiguous;
+          vertex_from(e, pm, m, [&](int t) { return e[t][4]; }, nb, z);
         }
-        if (constant_row) continue;
-        int pm[5] = {};
-        bool g2 = false;
-        if (small_eliminate(e, m, m, pm, tol, g2) < m) continue;
-        if (g2) ++out.ambiguous;
-        double x[4];
-        for (int p = m - 1; p >= 0; --p) {
-          double s = e[p][4];
-          for (int c = p + 1; c < m; ++c) s -= e[p][pm[c]] * x[pm[c]];
-          x[pm[p]] = s / e[p][pm[p]];
-        }
-        for (int f = 0; f < m; ++f)
-          for (int j = 0; j < N; ++j) z[j] += x[f] * nb[f][j];
+        add_point(S, z);
       }
-      add_point(S, z);
     }
-    // rays: m - 1 active constraints (only for m >= 1)
     if (m == 0) return;
-    for (unsigned act = 0; act <= kAll; ++act) {
-      if (small_popcount(act) != m - 1) continue;
-      double x[5] = {};
-      if (m == 1) {
-        x[0] = 1;
-      } else if constexpr (N == 1) {
-        continue;  // m <= N: unreachable for N = 1
-      } else {
-        double e[4][5] = {};
-        int t = 0;
-        bool constant_row = false;
-        for (int i = 0; i < N; ++i) {
-          if (!(act & (1u << i))) continue;
-          double rmax = 0;
-          for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
-          constant_row = constant_row || rmax == 0;
-          if (constant_row) break;
-          for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;  // equilibrated, as above
-          e[t][4] = 0;
-          ++t;
-        }
-        if (constant_row) continue;  // a zero row: rank < m - 1
-        int pm[5] = {};
-        bool g2 = false;
-        if (small_eliminate(e, m - 1, m, pm, tol, g2) < m - 1) continue;
-        if (g2) ++out.ambiguous;
-        small_null_vector(e, m, pm, x);
-      }
-      for (double sign : {1.0, -1.0}) {
-        double d[N] = {};
-        for (int f = 0; f < m; ++f)
-          for (int j = 0; j < N; ++j) d[j] += sign * x[f] * nb[f][j];
-        add_ray(S, d);
-      }
-    }
+    int g = 0;
+    small_ray_candidates<N>(A, nb, m, tol, g, [&](double (&d)[N]) { add_ray(S, d); });
+    out.ambiguous += g;
   }
 
   /// True when every entry is finite (z_j - z_j is 0 for finite z_j, NaN otherwise).
@@ -532,6 +455,12 @@ struct SmallEnumerator {
     }
   }
 };
+
+/// Throws InputError unless tol lies in (0, 1e-3] (`who` names the caller).
+inline void small_check_tol(const char* who, double tol) {
+  if (!(tol > 0 && tol <= 1e-3))
+    throw InputError(std::string(who) + ": tol must lie in (0, 1e-3], got " + std::to_string(tol));
+}
 
 /// Final pass shared by enumerate_small and SmallPreparedLcp: applies the zero patterns to the
 /// stored vertices, sets their supports and collects the inclusion-maximal pieces of positive
@@ -609,14 +538,7 @@ void enumerate_small(const Eigen::Matrix<double, N, N>& M, const Eigen::Matrix<d
                      SmallSolutionSet<N>& out, double tol = 1e-12) {
   if (!M.allFinite() || !q.allFinite())
     throw InputError("enumerate_small: M or q has a non-finite entry");
-  if (!(tol > 0 && tol <= 1e-3))
-    throw InputError("enumerate_small: tol must lie in (0, 1e-3], got " + std::to_string(tol));
-  out.num_points = 0;
-  out.num_pieces = 0;
-  out.infinite = false;
-  out.ambiguous = 0;
-  out.unrepresentable = 0;
-  out.dropped = 0;
+  detail::small_check_tol("enumerate_small", tol);
   detail::SmallEnumerator<N> en(M, q, out, tol);
   en.run();
   detail::small_finish<N>(en, out);

@@ -15,9 +15,10 @@
 /// operator P with z0 = P q of the particular solution, the null basis, the constraint
 /// directions of the piece, the eliminations that locate its vertices (recorded row operations,
 /// replayed on q) and the candidate rays with add_ray's tests already applied (they depend on M
-/// only). enumerate(q) then runs the q-dependent part with the same vertex tests
-/// (SmallEnumerator::add_point), the same deduplication and the same piece collection
-/// (detail::small_finish).
+/// only). enumerate(q) then runs the q-dependent part on the kernel of enumerate_small
+/// (detail::SmallEnumerator: add_point, piece_consistent, constraint_offsets, vertex_from,
+/// store_ray; detail::small_finish) with the M-only geometry of detail/small_piece.hpp computed
+/// once: only the way a basic solution is obtained differs (replay of the recorded elimination).
 ///
 /// Agreement with enumerate_small(M, q, out, tol): every M-only decision is identical, and the
 /// nonsingular supports use the very same operations. On singular blocks z0 = P q and the line
@@ -43,25 +44,6 @@
 namespace cpkit::lcp {
 
 namespace detail {
-
-/// small_eliminate (same arithmetic, same decisions) on the matrix part only, recording the row
-/// operations in rec (enumerate_small.hpp).
-inline int small_eliminate_recorded(double (&a)[4][5], int k, int c, SmallElimRecord& rec,
-                                    double piv_tol, bool& gray) noexcept {
-  return small_eliminate(a, k, c, rec.perm, piv_tol, gray, &rec);
-}
-
-/// Replays the recorded row operations on the right-hand side b (k rows).
-inline void small_replay_rhs(const SmallElimRecord& rec, int k, double (&b)[4]) noexcept {
-  for (int p = 0; p < rec.rank; ++p) {
-    if (rec.swap[p] != p) std::swap(b[p], b[rec.swap[p]]);
-    for (int r = p + 1; r < k; ++r) {
-      const double f = rec.f[p][r];
-      if (f == 0) continue;
-      b[r] -= f * b[p];
-    }
-  }
-}
 
 /// Everything of one support S that depends on M only.
 template <int N>
@@ -113,8 +95,7 @@ class SmallPreparedLcp {
   /// Does all M-only work. Throws InputError on non-finite M or tol outside (0, 1e-3].
   explicit SmallPreparedLcp(const Mat& M, double tol = 1e-12) : M_(M), tol_(tol) {
     if (!M.allFinite()) throw InputError("SmallPreparedLcp: M has a non-finite entry");
-    if (!(tol > 0 && tol <= 1e-3))
-      throw InputError("SmallPreparedLcp: tol must lie in (0, 1e-3], got " + std::to_string(tol));
+    detail::small_check_tol("SmallPreparedLcp", tol);
     for (unsigned S = 0; S <= kAll; ++S) {
       Sup& s = sup_[S];
       prepare(S, s);
@@ -135,19 +116,11 @@ class SmallPreparedLcp {
   /// tol outside (0, 1e-3]. Allocation-free; `out` is overwritten.
   void enumerate(const Vec& q, SmallSolutionSet<N>& out, double tol = 1e-12) const {
     if (!q.allFinite()) throw InputError("SmallPreparedLcp::enumerate: q has a non-finite entry");
-    if (!(tol > 0 && tol <= 1e-3))
-      throw InputError("SmallPreparedLcp::enumerate: tol must lie in (0, 1e-3], got " +
-                       std::to_string(tol));
+    detail::small_check_tol("SmallPreparedLcp::enumerate", tol);
     if (tol != tol_) {  // the preparation holds for tol_ only
       enumerate_small<N>(M_, q, out, tol);
       return;
     }
-    out.num_points = 0;
-    out.num_pieces = 0;
-    out.infinite = false;
-    out.ambiguous = 0;
-    out.unrepresentable = 0;
-    out.dropped = 0;
     detail::SmallEnumerator<N> en(M_, q, out, tol);
     for (unsigned S = 0; S <= kAll; ++S) {
       const auto& s = sup_[S];
@@ -161,7 +134,7 @@ class SmallPreparedLcp {
       }
       double z[N] = {};
       if (s.kind == 1) {
-        cramer(s, q, z);
+        detail::small_cramer_inv(M_, q, s.idx, s.idx, s.k, s.inv, s.idx, z);
         if (!en.all_finite(z)) {  // as enumerate_small: overflow in Cramer's products
           en.singular_piece_cold(S, s.idx, s.k);
           continue;
@@ -205,34 +178,19 @@ class SmallPreparedLcp {
         amax = small_max(amax, small_abs(a[r][c]));
       }
     bool gray = false;
-    const int r = detail::small_eliminate_recorded(a, k, k, s.el, tol * amax, gray);
+    const int r = detail::small_eliminate(a, k, k, s.el.perm, tol * amax, gray, &s.el);
     s.pre_ambiguous = gray ? 1 : 0;
     s.r = r;
     const int m = k - r;
     s.m = m;
-    const auto& U = s.el.a;
-    const int* perm = s.el.perm;
-    for (int f = 0; f < m; ++f) {
-      double y[4] = {};
-      y[perm[r + f]] = 1;
-      for (int p = r - 1; p >= 0; --p) {
-        double sum = -U[p][perm[r + f]];
-        for (int c = p + 1; c < r; ++c) sum -= U[p][perm[c]] * y[perm[c]];
-        y[perm[p]] = sum / U[p][perm[p]];
-      }
-      for (int c = 0; c < k; ++c) s.nb[f][idx[c]] = y[c];
-    }
+    detail::small_null_basis<N>(s.el.a, r, k, s.el.perm, idx, s.nb);
     // z0 is linear in q: its operator P is the recorded elimination applied to -e_i
     for (int ii = 0; ii < N; ++ii) {
       double rhs[4] = {};
       for (int c = 0; c < k; ++c) rhs[c] = idx[c] == ii ? -1.0 : 0.0;
       detail::small_replay_rhs(s.el, k, rhs);
       double x[4] = {};
-      for (int p = r - 1; p >= 0; --p) {
-        double sum = rhs[p];
-        for (int c = p + 1; c < r; ++c) sum -= U[p][perm[c]] * x[perm[c]];
-        x[perm[p]] = sum / U[p][perm[p]];
-      }
+      detail::small_back_substitute(s.el.a, r, s.el.perm, [&](int p) { return rhs[p]; }, x);
       for (int c = 0; c < k; ++c) s.P[idx[c]][ii] = x[c];
     }
     for (int j = 0; j < N; ++j) {
@@ -240,197 +198,50 @@ class SmallPreparedLcp {
       for (int i = 0; i < N; ++i) s.overflow = s.overflow || !detail::small_finite(s.P[j][i]);
     }
     if (s.overflow) return;
-    const auto& nb = s.nb;
-    for (int i = 0; i < N; ++i) {
-      if (S & (1u << i)) {
-        for (int f = 0; f < m; ++f) {
-          double nm = 0;
-          for (int j = 0; j < N; ++j) nm = small_max(nm, small_abs(nb[f][j]));
-          s.A[i][f] = small_abs(nb[f][i]) <= tol * nm ? 0.0 : nb[f][i];
-        }
-      } else {
-        for (int f = 0; f < m; ++f) {
-          double u = 0, su = 0;
-          for (int j = 0; j < N; ++j) { u += M(i, j) * nb[f][j]; su += small_abs(M(i, j) * nb[f][j]); }
-          if (!detail::small_finite(su)) { s.overflow = true; return; }
-          s.A[i][f] = small_abs(u) <= tol * su ? 0.0 : u;
-        }
-      }
-    }
-    const auto& A = s.A;
+    if (!detail::small_constraint_dirs<N>(M, S, s.nb, m, tol, s.A)) { s.overflow = true; return; }
     if (m == 1) {
       for (int i = 0; i < N; ++i) {
-        double sa = 0;
-        if (S & (1u << i)) {
-          for (int j = 0; j < N; ++j) sa = small_max(sa, small_abs(nb[0][j]));
-        } else {
-          for (int j = 0; j < N; ++j) sa += small_abs(M(i, j) * nb[0][j]);
-        }
-        if (small_abs(A[i][0]) > tol * sa) {
+        if (small_abs(s.A[i][0]) > tol * detail::small_line_scale<N>(M, S, i, s.nb)) {
           s.line_mask |= 1u << i;
-          s.inv_a[i] = 1.0 / A[i][0];
+          s.inv_a[i] = 1.0 / s.A[i][0];
         }
       }
-      double d[N];
-      for (int j = 0; j < N; ++j) d[j] = nb[0][j];
-      judge_ray(S, s, d);
-      for (int j = 0; j < N; ++j) d[j] = -nb[0][j];
-      judge_ray(S, s, d);
-      return;
-    }
-    // vertices: m active constraints
-    for (unsigned act = 0; act <= kAll; ++act) {
-      if (detail::small_popcount(act) != m) continue;
-      if (m == 0) {
+    } else {  // vertices: m active constraints
+      for (unsigned act = 0; act <= kAll; ++act) {
+        if (detail::small_popcount(act) != m) continue;
+        if (m == 0) {
+          s.acts[s.num_acts++] = act;
+          continue;
+        }
+        double e[4][5] = {};
+        if (!detail::small_equilibrated_rows<N>(s.A, nullptr, act, m, e, s.act_rmax[s.num_acts]))
+          continue;
+        bool g2 = false;
+        detail::SmallElimRecord& rec = s.act_el[s.num_acts];
+        if (detail::small_eliminate(e, m, m, rec.perm, tol, g2, &rec) < m) {
+          rec = detail::SmallElimRecord{};
+          continue;
+        }
+        if (g2) ++s.post_ambiguous;
         s.acts[s.num_acts++] = act;
-        continue;
       }
-      double e[4][5] = {};
-      double rm[4] = {};
-      int t = 0;
-      bool constant_row = false;
-      for (int i = 0; i < N; ++i) {
-        if (!(act & (1u << i))) continue;
-        double rmax = 0;
-        for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
-        constant_row = constant_row || rmax == 0;
-        if (constant_row) break;
-        for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;  // equilibrated (enumerate_small)
-        rm[t] = rmax;
-        ++t;
-      }
-      if (constant_row) continue;
-      bool g2 = false;
-      detail::SmallElimRecord& rec = s.act_el[s.num_acts];
-      if (detail::small_eliminate_recorded(e, m, m, rec, tol, g2) < m) {
-        rec = detail::SmallElimRecord{};
-        continue;
-      }
-      for (int r2 = 0; r2 < m; ++r2) s.act_rmax[s.num_acts][r2] = rm[r2];
-      if (g2) ++s.post_ambiguous;
-      s.acts[s.num_acts++] = act;
     }
     if (m == 0) return;
-    // rays: m - 1 active constraints
-    for (unsigned act = 0; act <= kAll; ++act) {
-      if (detail::small_popcount(act) != m - 1) continue;
-      double x[5] = {};
-      double e[4][5] = {};
-      int t = 0;
-      bool constant_row = false;
-      for (int i = 0; i < N; ++i) {
-        if (!(act & (1u << i))) continue;
-        double rmax = 0;
-        for (int f = 0; f < m; ++f) rmax = small_max(rmax, small_abs(A[i][f]));
-        constant_row = constant_row || rmax == 0;
-        if (constant_row) break;
-        for (int f = 0; f < m; ++f) e[t][f] = A[i][f] / rmax;
-        e[t][4] = 0;
-        ++t;
+    // rays: add_ray's tests depend on M only
+    detail::small_ray_candidates<N>(s.A, s.nb, m, tol, s.post_ambiguous, [&](double (&d)[N]) {
+      unsigned zd = 0, zmd = 0;
+      switch (detail::small_judge_ray<N>(M, S, d, tol, zd, zmd)) {
+        case detail::kRayAccepted:
+          for (int j = 0; j < N; ++j) s.rays[s.num_rays][j] = d[j];
+          s.ray_zero_d[s.num_rays] = zd;
+          s.ray_zero_md[s.num_rays] = zmd;
+          ++s.num_rays;
+          return;
+        case detail::kRayAmbiguous: ++s.ray_ambiguous; return;
+        case detail::kRayNotFinite: s.overflow = true; return;
+        default: return;
       }
-      if (constant_row) continue;
-      int pm[5] = {};
-      bool g2 = false;
-      if (detail::small_eliminate(e, m - 1, m, pm, tol, g2) < m - 1) continue;
-      if (g2) ++s.post_ambiguous;
-      detail::small_null_vector(e, m, pm, x);
-      for (double sign : {1.0, -1.0}) {
-        double d[N] = {};
-        for (int f = 0; f < m; ++f)
-          for (int j = 0; j < N; ++j) d[j] += sign * x[f] * nb[f][j];
-        judge_ray(S, s, d);
-      }
-    }
-  }
-
-  /// detail::small_cramer with the reciprocal of the determinant taken from the preparation
-  /// (the same operations, hence the same result).
-  void cramer(const Sup& s, const Vec& q, double (&z)[N]) const {
-    const auto& M = M_;
-    const double inv = s.inv;
-    const int k = s.k;
-    if (k == 1) {
-      z[s.idx[0]] = -q(s.idx[0]) * inv;
-    } else if (k == 2) {
-      const int i0 = s.idx[0], i1 = s.idx[1];
-      const double b0 = -q(i0), b1 = -q(i1);
-      z[i0] = (b0 * M(i1, i1) - M(i0, i1) * b1) * inv;
-      z[i1] = (M(i0, i0) * b1 - b0 * M(i1, i0)) * inv;
-    } else {
-      const int i0 = s.idx[0], i1 = s.idx[1], i2 = s.idx[2];
-      const double a00 = M(i0, i0), a01 = M(i0, i1), a02 = M(i0, i2);
-      const double a10 = M(i1, i0), a11 = M(i1, i1), a12 = M(i1, i2);
-      const double a20 = M(i2, i0), a21 = M(i2, i1), a22 = M(i2, i2);
-      const double b0 = -q(i0), b1 = -q(i1), b2 = -q(i2);
-      z[i0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
-               a02 * (b1 * a21 - a11 * b2)) * inv;
-      z[i1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
-               a02 * (a10 * b2 - b1 * a20)) * inv;
-      z[i2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
-               b0 * (a10 * a21 - a11 * a20)) * inv;
-    }
-  }
-
-  /// The M-only tests of SmallEnumerator::add_ray (same operations): stores the normalised
-  /// direction with its zero patterns when it passes, counts it when ambiguous.
-  void judge_ray(unsigned S, Sup& s, double (&d)[N]) const {
-    using detail::small_abs;
-    const double tol = tol_;
-    const auto& M = M_;
-    double big = 0;
-    int arg = 0;
-    for (int j = 0; j < N; ++j) {
-      if (!detail::small_finite(d[j])) { s.overflow = true; return; }
-      if (small_abs(d[j]) > big) { big = small_abs(d[j]); arg = j; }
-    }
-    if (!(big > 0) || d[arg] < 0) return;
-    const double f = 1.0 / big;
-    int verdict = 0;
-    unsigned zd = ~S & kAll, zmd = S;
-    for (int j = 0; j < N; ++j) {
-      if (!(S & (1u << j))) { d[j] = 0; continue; }
-      d[j] *= f;
-      const int sgn = detail::small_sign(d[j], 1.0, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(d[j]) <= tol) { d[j] = 0; zd |= 1u << j; }
-    }
-    for (int i = 0; i < N; ++i) {
-      if (S & (1u << i)) continue;
-      double v = 0, sc = 0;
-      for (int j = 0; j < N; ++j)
-        if (d[j] != 0) { v += M(i, j) * d[j]; sc += small_abs(M(i, j) * d[j]); }
-      if (!detail::small_finite(sc) || !detail::small_finite(v)) { s.overflow = true; return; }
-      const int sgn = detail::small_sign(v, sc, tol);
-      if (sgn == 2) return;
-      verdict = sgn > verdict ? sgn : verdict;
-      if (small_abs(v) <= tol * sc) zmd |= 1u << i;
-    }
-    if (verdict == 1) { ++s.ray_ambiguous; return; }
-    for (int j = 0; j < N; ++j) s.rays[s.num_rays][j] = d[j];
-    s.ray_zero_d[s.num_rays] = zd;
-    s.ray_zero_md[s.num_rays] = zmd;
-    ++s.num_rays;
-  }
-
-  /// The dedup / store part of SmallEnumerator::add_ray for a ray judged by judge_ray.
-  static void store_ray(detail::SmallEnumerator<N>& en, SmallSolutionSet<N>& out, const Sup& s,
-                        int c) {
-    const double* d = s.rays[c];
-    for (int p = 0; p < en.num_rays; ++p) {
-      double dd = 0;
-      for (int j = 0; j < N; ++j) dd = detail::small_max(dd, detail::small_abs(en.rays[p][j] - d[j]));
-      if (dd <= detail::kSmallGray * en.tol) {
-        en.ray_zero_d[p] |= s.ray_zero_d[c];
-        en.ray_zero_md[p] |= s.ray_zero_md[c];
-        return;
-      }
-    }
-    if (en.num_rays == detail::SmallEnumerator<N>::kRayCap) { ++out.dropped; return; }
-    for (int j = 0; j < N; ++j) en.rays[en.num_rays][j] = d[j];
-    en.ray_zero_d[en.num_rays] = s.ray_zero_d[c];
-    en.ray_zero_md[en.num_rays] = s.ray_zero_md[c];
-    ++en.num_rays;
+    });
   }
 
   /// The q-dependent part of SmallEnumerator::singular_piece, same operations in the same order.
@@ -438,8 +249,6 @@ class SmallPreparedLcp {
                       SmallSolutionSet<N>& out) const {
     using detail::small_abs;
     using detail::small_max;
-    const double tol = tol_;
-    const auto& M = M_;
     const int k = s.k, m = s.m;
     const int* idx = s.idx;
     double z0[N];
@@ -455,29 +264,10 @@ class SmallPreparedLcp {
     out.ambiguous += s.pre_ambiguous;
     double z0n = 0;
     for (int j = 0; j < N; ++j) z0n = small_max(z0n, small_abs(z0[j]));
-    for (int c = 0; c < k; ++c) {
-      const int i = idx[c];
-      double v = q(i), sc = small_abs(q(i));
-      for (int j = 0; j < N; ++j) {
-        v += M(i, j) * z0[j];
-        sc += small_abs(M(i, j)) * z0n;
-      }
-      if (!detail::small_finite(sc) || !detail::small_finite(v)) { en.unrepresentable(); return; }
-      if (small_abs(v) > detail::kSmallGray * tol * sc) return;  // empty piece
-      if (small_abs(v) > tol * sc) { ++out.ambiguous; return; }
-    }
+    if (!en.piece_consistent(idx, k, z0, z0n)) return;
     out.ambiguous += s.post_ambiguous;
     double b[N];
-    for (int i = 0; i < N; ++i) {
-      if (S & (1u << i)) {
-        b[i] = small_abs(z0[i]) <= tol * z0n ? 0.0 : z0[i];
-      } else {
-        double v = q(i), sv = small_abs(q(i));
-        for (int j = 0; j < N; ++j) { v += M(i, j) * z0[j]; sv += small_abs(M(i, j)) * z0n; }
-        if (!detail::small_finite(sv) || !detail::small_finite(v)) { en.unrepresentable(); return; }
-        b[i] = small_abs(v) <= tol * sv ? 0.0 : v;
-      }
-    }
+    if (!en.constraint_offsets(S, z0, z0n, b)) { en.unrepresentable(); return; }
     const auto& nb = s.nb;
     if (m == 1) {
       for (int i = 0; i < N; ++i) {
@@ -491,29 +281,21 @@ class SmallPreparedLcp {
       for (int a = 0; a < s.num_acts; ++a) {
         double z[N];
         for (int j = 0; j < N; ++j) z[j] = z0[j];
-        if (m > 0) {
-          const unsigned act = s.acts[a];
+        if (m > 0) {  // the vertex system's elimination replayed on its right-hand side
           const detail::SmallElimRecord& rec = s.act_el[a];
           double e4[4] = {};
           int t = 0;
           for (int i = 0; i < N; ++i)
-            if (act & (1u << i)) { e4[t] = -b[i] / s.act_rmax[a][t]; ++t; }
+            if (s.acts[a] & (1u << i)) { e4[t] = -b[i] / s.act_rmax[a][t]; ++t; }
           detail::small_replay_rhs(rec, m, e4);
-          double x[4] = {};
-          const int* pm = rec.perm;
-          for (int p = m - 1; p >= 0; --p) {
-            double sum = e4[p];
-            for (int c = p + 1; c < m; ++c) sum -= rec.a[p][pm[c]] * x[pm[c]];
-            x[pm[p]] = sum / rec.a[p][pm[p]];
-          }
-          for (int f = 0; f < m; ++f)
-            for (int j = 0; j < N; ++j) z[j] += x[f] * nb[f][j];
+          en.vertex_from(rec.a, rec.perm, m, [&](int p) { return e4[p]; }, nb, z);
         }
         en.add_point(S, z);
       }
     }
     out.ambiguous += s.ray_ambiguous;
-    for (int c = 0; c < s.num_rays; ++c) store_ray(en, out, s, c);
+    for (int c = 0; c < s.num_rays; ++c)
+      en.store_ray(s.rays[c], s.ray_zero_d[c], s.ray_zero_md[c]);
   }
 
   Mat M_;

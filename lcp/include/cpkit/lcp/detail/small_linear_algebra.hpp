@@ -124,15 +124,71 @@ inline int small_eliminate(double (&a)[4][5], int k, int c, int (&perm)[5], doub
   return rank;
 }
 
+/// Back substitution on the first r rows of a block eliminated by small_eliminate with column
+/// order perm: x[perm[p]] for p < r from the eliminated right-hand side rhs(p) (a column of
+/// the block itself or a separate vector). The entries x[perm[c]], c >= r, are left as they
+/// are: zero for a basic solution, the free value for a null vector.
+template <typename Rhs>
+inline void small_back_substitute(const double (&u)[4][5], int r, const int (&perm)[5],
+                                  const Rhs& rhs, double* x) noexcept {
+  for (int p = r - 1; p >= 0; --p) {
+    double s = rhs(p);
+    for (int c = p + 1; c < r; ++c) s -= u[p][perm[c]] * x[perm[c]];
+    x[perm[p]] = s / u[p][perm[p]];
+  }
+}
+
+/// Null vector y of a block of rank r eliminated by small_eliminate (column order perm): the
+/// free column perm[free] (free >= r) set to 1, the other free columns 0. y must be zeroed.
+inline void small_null_column(const double (&u)[4][5], int r, const int (&perm)[5], int free,
+                              double* y) noexcept {
+  const int col = perm[free];
+  y[col] = 1;
+  small_back_substitute(u, r, perm, [&](int p) { return -u[p][col]; }, y);
+}
+
 /// Null vector x (m entries, x[pm[m-1]] = 1) of an m x m block whose first m - 1 rows were
-/// eliminated by small_eliminate with column order pm (rank m - 1): back substitution.
+/// eliminated by small_eliminate with column order pm (rank m - 1).
 inline void small_null_vector(const double (&e)[4][5], int m, const int (&pm)[5],
                               double* x) noexcept {
-  x[pm[m - 1]] = 1;
-  for (int p = m - 2; p >= 0; --p) {
-    double sum = -e[p][pm[m - 1]];
-    for (int c = p + 1; c < m - 1; ++c) sum -= e[p][pm[c]] * x[pm[c]];
-    x[pm[p]] = sum / e[p][pm[p]];
+  small_null_column(e, m - 1, pm, m - 1, x);
+}
+
+/// Replays the row operations recorded by small_eliminate on the right-hand side b (k rows).
+inline void small_replay_rhs(const SmallElimRecord& rec, int k, double (&b)[4]) noexcept {
+  for (int p = 0; p < rec.rank; ++p) {
+    if (rec.swap[p] != p) std::swap(b[p], b[rec.swap[p]]);
+    for (int r = p + 1; r < k; ++r) {
+      const double f = rec.f[p][r];
+      if (f == 0) continue;
+      b[r] -= f * b[p];
+    }
+  }
+}
+
+/// Cramer's rule for M[R,C] x = -q[R] (k = |R| = |C| <= 3) given inv = 1 / det M[R,C]; writes
+/// x[out[c]] for the c-th column.
+template <typename Mat, typename Vq>
+inline void small_cramer_inv(const Mat& M, const Vq& q, const int* rows, const int* cols, int k,
+                             double inv, const int* out, double* x) noexcept {
+  if (k == 1) {
+    x[out[0]] = -q(rows[0]) * inv;
+  } else if (k == 2) {
+    const double b0 = -q(rows[0]), b1 = -q(rows[1]);
+    x[out[0]] = (b0 * M(rows[1], cols[1]) - M(rows[0], cols[1]) * b1) * inv;
+    x[out[1]] = (M(rows[0], cols[0]) * b1 - b0 * M(rows[1], cols[0])) * inv;
+  } else {
+    // cofactors of the 3x3 block
+    const double a00 = M(rows[0], cols[0]), a01 = M(rows[0], cols[1]), a02 = M(rows[0], cols[2]);
+    const double a10 = M(rows[1], cols[0]), a11 = M(rows[1], cols[1]), a12 = M(rows[1], cols[2]);
+    const double a20 = M(rows[2], cols[0]), a21 = M(rows[2], cols[1]), a22 = M(rows[2], cols[2]);
+    const double b0 = -q(rows[0]), b1 = -q(rows[1]), b2 = -q(rows[2]);
+    x[out[0]] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
+                 a02 * (b1 * a21 - a11 * b2)) * inv;
+    x[out[1]] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
+                 a02 * (a10 * b2 - b1 * a20)) * inv;
+    x[out[2]] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
+                 b0 * (a10 * a21 - a11 * a20)) * inv;
   }
 }
 
@@ -146,26 +202,8 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
     small_det(M, rows, cols, k, det, perm);
     if (!(small_abs(det) > tol * perm)) return false;
     if (small_abs(det) <= kSmallGray * tol * perm) gray = true;
-    const double inv = 1.0 / det;
-    if (k == 1) {
-      x[0] = -q(rows[0]) * inv;
-    } else if (k == 2) {
-      const double b0 = -q(rows[0]), b1 = -q(rows[1]);
-      x[0] = (b0 * M(rows[1], cols[1]) - M(rows[0], cols[1]) * b1) * inv;
-      x[1] = (M(rows[0], cols[0]) * b1 - b0 * M(rows[1], cols[0])) * inv;
-    } else {
-      // Cramer with cofactors of the 3x3 block
-      const double a00 = M(rows[0], cols[0]), a01 = M(rows[0], cols[1]), a02 = M(rows[0], cols[2]);
-      const double a10 = M(rows[1], cols[0]), a11 = M(rows[1], cols[1]), a12 = M(rows[1], cols[2]);
-      const double a20 = M(rows[2], cols[0]), a21 = M(rows[2], cols[1]), a22 = M(rows[2], cols[2]);
-      const double b0 = -q(rows[0]), b1 = -q(rows[1]), b2 = -q(rows[2]);
-      x[0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
-              a02 * (b1 * a21 - a11 * b2)) * inv;
-      x[1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
-              a02 * (a10 * b2 - b1 * a20)) * inv;
-      x[2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
-              b0 * (a10 * a21 - a11 * a20)) * inv;
-    }
+    constexpr int seq[3] = {0, 1, 2};
+    small_cramer_inv(M, q, rows, cols, k, 1.0 / det, seq, x);
     return true;
   }
   double a[4][5] = {};
@@ -179,11 +217,7 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
   }
   int perm[5] = {};
   if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
-  for (int p = k - 1; p >= 0; --p) {
-    double s = a[p][4];
-    for (int c = p + 1; c < k; ++c) s -= a[p][perm[c]] * x[perm[c]];
-    x[perm[p]] = s / a[p][perm[p]];
-  }
+  small_back_substitute(a, k, perm, [&](int p) { return a[p][4]; }, x);
   return true;
 }
 
@@ -192,27 +226,7 @@ inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const
 template <typename Mat, typename Vq>
 inline void small_cramer(const Mat& M, const Vq& q, const int* idx, int k, double det,
                          double* z) noexcept {
-  const double inv = 1.0 / det;
-  if (k == 1) {
-    z[idx[0]] = -q(idx[0]) * inv;
-  } else if (k == 2) {
-    const int i0 = idx[0], i1 = idx[1];
-    const double b0 = -q(i0), b1 = -q(i1);
-    z[i0] = (b0 * M(i1, i1) - M(i0, i1) * b1) * inv;
-    z[i1] = (M(i0, i0) * b1 - b0 * M(i1, i0)) * inv;
-  } else {
-    const int i0 = idx[0], i1 = idx[1], i2 = idx[2];
-    const double a00 = M(i0, i0), a01 = M(i0, i1), a02 = M(i0, i2);
-    const double a10 = M(i1, i0), a11 = M(i1, i1), a12 = M(i1, i2);
-    const double a20 = M(i2, i0), a21 = M(i2, i1), a22 = M(i2, i2);
-    const double b0 = -q(i0), b1 = -q(i1), b2 = -q(i2);
-    z[i0] = (b0 * (a11 * a22 - a12 * a21) - a01 * (b1 * a22 - a12 * b2) +
-             a02 * (b1 * a21 - a11 * b2)) * inv;
-    z[i1] = (a00 * (b1 * a22 - a12 * b2) - b0 * (a10 * a22 - a12 * a20) +
-             a02 * (a10 * b2 - b1 * a20)) * inv;
-    z[i2] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
-             b0 * (a10 * a21 - a11 * a20)) * inv;
-  }
+  small_cramer_inv(M, q, idx, idx, k, 1.0 / det, idx, z);
 }
 
 }  // namespace cpkit::lcp::detail
