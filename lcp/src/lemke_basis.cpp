@@ -118,7 +118,15 @@ double LemkeBasis::rate_terms(int var, int entering, const Vec& dxz) const {
   double s = 0.0;
   if (var <= n_) {
     const int p = zpos(var);
-    if (entering > n_) return std::abs(dxz[p]);  // a column of H^{-1}: no cancellation
+    if (entering > n_) {
+      // The rate is the entry H^{-1}(p, pj) itself, whose rounding (from the updates of
+      // H^{-1}) is relative to its row, not to the entry: |dxz[p]| as its own scale let a
+      // rate of 3e-16 (0 in exact arithmetic) pivot and derailed the path (issue 24, item 7).
+      (void)dxz;
+      double row_max = 0;
+      for (int t = 0; t < k_; ++t) row_max = std::max(row_max, std::abs(hinv_(p, t)));
+      return row_max;
+    }
     const double* col = gcol(entering);
     for (int t = 0; t < k_; ++t)
       s += std::abs(hinv_(p, t)) * std::abs(col[rrows_[static_cast<size_t>(t)]]);
