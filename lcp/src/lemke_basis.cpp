@@ -134,7 +134,14 @@ double LemkeBasis::rate_terms(int var, int entering, const Vec& dxz) const {
   }
   const Eigen::Index i = var - n_ - 1;
   if (entering <= n_) s = std::abs(gcol(entering)[i]);
-  for (int p = 0; p < k_; ++p) s += std::abs(gz_(i, p)) * std::abs(dxz[p]);
+  for (int p = 0; p < k_; ++p) {
+    // When a w enters, dxz is a column of H^{-1}: its entries are rounded relative to their
+    // rows (as above), O(k) each; reached only when the cheap bound of the caller fails.
+    double d = std::abs(dxz[p]);
+    if (entering > n_ && gz_(i, p) != 0.0)
+      for (int t = 0; t < k_; ++t) d = std::max(d, std::abs(hinv_(p, t)));
+    s += std::abs(gz_(i, p)) * d;
+  }
   return s;
 }
 
