@@ -232,7 +232,8 @@ TEST_CASE("Integer LCPs that cycled (issue 24 item 7): the lexicographic path of
   // stated number of pivots. Before the fix a rate of 3e-16 (0 exactly) was taken as a pivot.
   // Modes: plain, the debug invariant check at every pivot, a refactorization at every pivot.
   const std::pair<const char*, int> cases[] = {
-      {"cycle_rng7_t3070.json", 22}, {"cycle_rng7_t3398.json", 27}, {"cycle_rng7_t5990.json", 58}};
+      {"cycle_rng7_t3070.json", 22}, {"cycle_rng7_t3398.json", 27}, {"cycle_rng7_t5990.json", 58},
+      {"cycle_rng7_t3754.json", 4}};  // n = 8: no cycle, but a noise pivot, then a refuted z
   for (const auto& [name, pivots] : cases) {
     CAPTURE(name);
     const LcpProblem p = cpkit::read_lcp_json(lemke_data(name));
