@@ -118,7 +118,15 @@ double LemkeBasis::rate_terms(int var, int entering, const Vec& dxz) const {
   double s = 0.0;
   if (var <= n_) {
     const int p = zpos(var);
-    if (entering > n_) return std::abs(dxz[p]);  // a column of H^{-1}: no cancellation
+    if (entering > n_) {
+      // The rate is the entry H^{-1}(p, pj) itself, whose rounding (from the updates of
+      // H^{-1}) is relative to its row, not to the entry: |dxz[p]| as its own scale let a
+      // rate of 3e-16 (0 in exact arithmetic) pivot and derailed the path (issue 24, item 7).
+      (void)dxz;
+      double row_max = 0;
+      for (int t = 0; t < k_; ++t) row_max = std::max(row_max, std::abs(hinv_(p, t)));
+      return row_max;
+    }
     const double* col = gcol(entering);
     for (int t = 0; t < k_; ++t)
       s += std::abs(hinv_(p, t)) * std::abs(col[rrows_[static_cast<size_t>(t)]]);
@@ -126,7 +134,14 @@ double LemkeBasis::rate_terms(int var, int entering, const Vec& dxz) const {
   }
   const Eigen::Index i = var - n_ - 1;
   if (entering <= n_) s = std::abs(gcol(entering)[i]);
-  for (int p = 0; p < k_; ++p) s += std::abs(gz_(i, p)) * std::abs(dxz[p]);
+  for (int p = 0; p < k_; ++p) {
+    // When a w enters, dxz is a column of H^{-1}: its entries are rounded relative to their
+    // rows (as above), O(k) each; reached only when the cheap bound of the caller fails.
+    double d = std::abs(dxz[p]);
+    if (entering > n_ && gz_(i, p) != 0.0)
+      for (int t = 0; t < k_; ++t) d = std::max(d, std::abs(hinv_(p, t)));
+    s += std::abs(gz_(i, p)) * d;
+  }
   return s;
 }
 

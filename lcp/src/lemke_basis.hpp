@@ -99,7 +99,9 @@ class LemkeBasis {
   /// value of `var` = B^{-1}(var, :) q). O(k); needs enable_lexico_rows() for a basic w.
   void inverse_row_scales(int var, double& row_max, double& value_terms) const;
   /// Size of the terms of the rate of basic `var` in the last direction(`entering`):
-  /// sum |H^{-1}(p, :)| |G(R, entering)| for an x, |G(i, entering)| + |G(i, Z)| |dxz| for a w.
+  /// sum |H^{-1}(p, :)| |G(R, entering)| for an x (when a w enters, the rate is the entry
+  /// H^{-1}(p, pj), rounded relative to its row: max_t |H^{-1}(p, t)|), |G(i, entering)| +
+  /// |G(i, Z)| |dxz| for a w.
   /// O(k). Used to tell a pivot entry from rounding noise.
   double rate_terms(int var, int entering, const Vec& dxz) const;
 

@@ -223,3 +223,28 @@ TEST_CASE("Badly scaled positive definite problems are solved, never a ray",
     }
   }
 }
+
+TEST_CASE("Integer LCPs that cycled (issue 24 item 7): the lexicographic path of exact arithmetic",
+          "[lemke][degenerate][cycle]") {
+  // tests/data/lemke/cycle_rng7_t*.json (n = 20, integer M in [-2, 2], q in [-3, 2]; see the
+  // README there). Expected: tests/data/lemke/exact_lemke.py, the textbook lexicographic Lemke in
+  // exact rationals (invariant asserted at every pivot): each ends on a secondary ray after the
+  // stated number of pivots. Before the fix a rate of 3e-16 (0 exactly) was taken as a pivot.
+  // Modes: plain, the debug invariant check at every pivot, a refactorization at every pivot.
+  const std::pair<const char*, int> cases[] = {
+      {"cycle_rng7_t3070.json", 22}, {"cycle_rng7_t3398.json", 27}, {"cycle_rng7_t5990.json", 58},
+      {"cycle_rng7_t3754.json", 4}};  // n = 8: no cycle, but a noise pivot, then a refuted z
+  for (const auto& [name, pivots] : cases) {
+    CAPTURE(name);
+    const LcpProblem p = cpkit::read_lcp_json(lemke_data(name));
+    for (int mode = 0; mode < 3; ++mode) {
+      LemkeOptions o;
+      o.check_invariant = mode == 1;
+      o.refactor_every = mode == 2 ? 1 : 0;
+      const auto r = solve_lemke(p, o);
+      CAPTURE(mode, cpkit::to_string(r.status), r.message);
+      CHECK(r.status == Status::kRayTermination);
+      CHECK(r.iterations == pivots);
+    }
+  }
+}
