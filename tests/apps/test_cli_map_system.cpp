@@ -207,7 +207,9 @@ TEST_CASE("cpkit rate --system: one ulp past a critical direction, the stick is 
   const auto sys = cpkit::test::run_cpkit("rate --system " + f + dF + " --json");
   REQUIRE((sys.code == 0 || sys.code == 5));
   const auto j = nlohmann::json::parse(sys.out);
-  CHECK((j["count"] == 1 || j["complete"] == false));
+  // the N-point JSON has no "count": its solutions are listed (a const operator[] on a missing
+  // key is an assertion failure in Debug builds and undefined behaviour in Release)
+  CHECK((j.at("solutions").size() == 1 || j.at("complete") == false));
 }
 
 TEST_CASE("cpkit map --system grid maps: .npy files read by numpy equal the CSV of the same map",
