@@ -7,18 +7,11 @@
 #include <sstream>
 #include <string>
 
+#include "cpkit/core/exit_code.hpp"
+
 namespace cpkit::cli {
 
-/// Exit codes users script against (keep exactly).
-enum ExitCode : int {
-  kExitOk = 0,            ///< solved / at least one solution
-  kExitNoSolution = 1,    ///< the solve ran but found no solution
-  kExitBadInput = 2,      ///< bad input or usage; message on stderr, nothing on stdout
-  kExitDisagreement = 3,  ///< a disagreement between solvers or routes (`lcp verify`, `rate`, `map`)
-  kExitInternal = 4,      ///< internal error (a bug), or a requested picture that could not be drawn
-  kExitInconclusive = 5,  ///< incomplete enumeration that proves nothing (`lcp verify`: no
-                          ///< disagreement; `lcp enumerate`: no solution found so far)
-};
+// Exit codes (kExitOk, ...): cpkit/core/exit_code.hpp, visible here from namespace cpkit.
 
 /// Each subcommand registers itself and sets `exit_code` from its callback.
 /// Errors of the input kind are thrown as cpkit::InputError and mapped to kExitBadInput by main.

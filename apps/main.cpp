@@ -18,6 +18,7 @@ namespace {
 /// prints errors (they are the same on every rank: the input is).
 int run(int argc, char** argv) {
   using namespace cpkit::cli;
+  using namespace cpkit;
   CLI::App app{"cpkit: complementarity problems and contact, friction and wear models"};
   // Defaults are recorded so that JSON results can echo every option used (run_echo.hpp).
   app.option_defaults()->always_capture_default();
@@ -77,6 +78,7 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace cpkit::cli;
+  using namespace cpkit;
   use_one_blas_thread();
   try {
     mpi::init(&argc, &argv);
