@@ -10,27 +10,7 @@
 #include "run_program.hpp"
 
 namespace cpkit::cli {
-
-std::vector<NamedPath> simulation_output_files(const std::string& csv, const std::string& summary,
-                                               const std::string& plot) {
-  std::vector<NamedPath> out;
-  out.push_back({"--csv", csv.empty() && !plot.empty() ? plot + ".csv" : csv});
-  out.push_back({"--summary", summary.empty() && !plot.empty() ? plot + ".json" : summary});
-  if (!plot.empty())
-    for (const char* fig : {"_loop", "_wear", "_state", "_orbit"})
-      for (const char* ext : {".png", ".svg"})
-        out.push_back({"--plot " + plot + ": PLOT" + fig + ext, plot + fig + ext});
-  return out;
-}
-
-std::ofstream open_output(const std::string& path) {
-  const auto dir = std::filesystem::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-  std::ofstream f(path);
-  if (!f) throw InputError("cannot write '" + path + "'");
-  return f;
-}
+namespace {
 
 bool draw_simulation_figures(const std::string& script_name, const std::string& csv,
                              const std::string& summary, const std::string& plot,
@@ -63,15 +43,18 @@ bool draw_simulation_figures(const std::string& script_name, const std::string& 
   return true;
 }
 
-void finish_output(std::ofstream& f, const std::string& path) {
-  f.flush();
-  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
-}
+}  // namespace
 
-void write_json_file(const std::string& path, const nlohmann::json& j) {
-  std::ofstream f = open_output(path);
-  f << json_text(j) << '\n';
-  finish_output(f, path);
+std::vector<NamedPath> simulation_output_files(const std::string& csv, const std::string& summary,
+                                               const std::string& plot) {
+  std::vector<NamedPath> out;
+  out.push_back({"--csv", csv.empty() && !plot.empty() ? plot + ".csv" : csv});
+  out.push_back({"--summary", summary.empty() && !plot.empty() ? plot + ".json" : summary});
+  if (!plot.empty())
+    for (const char* fig : {"_loop", "_wear", "_state", "_orbit"})
+      for (const char* ext : {".png", ".svg"})
+        out.push_back({"--plot " + plot + ": PLOT" + fig + ext, plot + fig + ext});
+  return out;
 }
 
 bool draw_and_name_outputs(const std::string& script_name, const std::string& csv,

@@ -1,6 +1,10 @@
 #include "cpkit/rate_problem/report/simulation_csv.hpp"
 
 #include <cstddef>
+#include <filesystem>
+#include <system_error>
+
+#include "cpkit/core/errors.hpp"
 
 namespace cpkit::rate {
 
@@ -51,6 +55,20 @@ void write_fretting_3d_csv_row(std::ostream& f, const Fretting3dSample& s) {
     << ',' << s.Dw_Ti(1) << ',' << s.lambda << ',' << s.Dw_w << ',' << s.w_w << ','
     << to_string(s.type) << ',' << s.count << ',' << (s.complete ? 1 : 0) << ','
     << s.dissipation << ',' << s.cycle << '\n';
+}
+
+std::ofstream open_output(const std::string& path) {
+  const auto dir = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write '" + path + "'");
+  return f;
+}
+
+void finish_output(std::ofstream& f, const std::string& path) {
+  f.flush();
+  if (!f) throw InputError("error writing '" + path + "' (disk full or not writable?)");
 }
 
 }  // namespace cpkit::rate

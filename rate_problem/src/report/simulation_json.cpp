@@ -1,11 +1,27 @@
 #include "cpkit/rate_problem/report/simulation_json.hpp"
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
+#include "cpkit/rate_problem/report/simulation_csv.hpp"
 
+#include <fstream>
 #include <string>
 #include <vector>
 
 namespace cpkit::rate {
+namespace {
+
+/// The fields a one-point and a 3-D summary share (same names, same meaning): outcome,
+/// message, steps, final (the sample `final`), final_wear_depth, wear_integral, total_slip and
+/// the per-cycle slip and wear.
+template <class Result>
+nlohmann::json run_totals(const Result& r, nlohmann::json final) {
+  return {{"outcome", std::string(to_string(r.outcome))}, {"message", r.message},
+          {"steps", r.steps}, {"final", std::move(final)}, {"final_wear_depth", r.wear_depth},
+          {"wear_integral", r.wear_integral}, {"total_slip", r.total_slip},
+          {"slip_per_cycle", r.slip_per_cycle}, {"wear_per_cycle", r.wear_per_cycle}};
+}
+
+}  // namespace
 
 nlohmann::json simulation_sample_json(const SimulationSample& s) {
   return {{"step", s.step}, {"t", s.t}, {"F_T", s.F_T}, {"F_N", s.F_N}, {"P_T", s.P_T},
@@ -15,16 +31,7 @@ nlohmann::json simulation_sample_json(const SimulationSample& s) {
 }
 
 nlohmann::json simulation_summary_json(const SimulationResult& r, const SimulateSettings& s) {
-  nlohmann::json j;
-  j["outcome"] = std::string(to_string(r.outcome));
-  j["message"] = r.message;
-  j["steps"] = r.steps;
-  j["final"] = simulation_sample_json(r.final_state);
-  j["final_wear_depth"] = r.wear_depth;
-  j["wear_integral"] = r.wear_integral;
-  j["total_slip"] = r.total_slip;
-  j["slip_per_cycle"] = r.slip_per_cycle;
-  j["wear_per_cycle"] = r.wear_per_cycle;
+  nlohmann::json j = run_totals(r, simulation_sample_json(r.final_state));
   j["energy"] = {{"external_work", r.external_work}, {"stored", r.stored_energy},
                  {"dissipation", r.dissipation}, {"work_abs", r.work_abs},
                  {"balance_error_rel", r.energy_error},
@@ -138,16 +145,8 @@ nlohmann::json fretting_3d_summary_json(const Fretting3dResult& r, const Ellipti
                  {"lead_steps", orbit.lead()}}},
       {"branch_rule", std::string(to_string(o.branch_rule))},
       {"every", o.record_every}};
-  j["outcome"] = std::string(to_string(r.outcome));
-  j["message"] = r.message;
-  j["steps"] = r.steps;
-  j["final"] = fretting_3d_sample_json(r.final_state);
-  j["final_wear_depth"] = r.wear_depth;
-  j["wear_integral"] = r.wear_integral;
-  j["total_slip"] = r.total_slip;
+  j.update(run_totals(r, fretting_3d_sample_json(r.final_state)));
   j["total_lambda"] = r.total_lambda;
-  j["slip_per_cycle"] = r.slip_per_cycle;
-  j["wear_per_cycle"] = r.wear_per_cycle;
   j["wear_X_per_cycle"] = r.wear_X_per_cycle;
   j["wear_Y_per_cycle"] = r.wear_Y_per_cycle;
   j["dissipation"] = r.dissipation;
@@ -160,6 +159,12 @@ nlohmann::json fretting_3d_summary_json(const Fretting3dResult& r, const Ellipti
   j["complete"] = r.incomplete_steps == 0 && r.outcome != Fretting3dResult::Outcome::kAmbiguous;
   j["max_step_residual"] = r.max_residual;
   return j;
+}
+
+void write_json_file(const std::string& path, const nlohmann::json& j) {
+  std::ofstream f = open_output(path);
+  f << j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+  finish_output(f, path);
 }
 
 }  // namespace cpkit::rate

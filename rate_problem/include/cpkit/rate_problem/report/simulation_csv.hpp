@@ -4,6 +4,7 @@
 /// for 3-D): one header line and one line per recorded sample, written as the run produces them
 /// (never held in memory). Numbers are written with the stream's precision (`cpkit simulate`
 /// uses 12 digits); states and types by name; flags as 0/1. Units as the run's input.
+#include <fstream>
 #include <ostream>
 #include <string>
 
@@ -27,5 +28,13 @@ void write_system_simulation_csv_row(std::ostream& out, const SystemSimulationSa
 /// lambda,Dw_w,w_w,type,count,complete,dissipation,cycle.
 std::string fretting_3d_csv_header();
 void write_fretting_3d_csv_row(std::ostream& out, const Fretting3dSample& s);
+
+/// Opens an output file for writing, creating its folder first (configs name paths such as
+/// out/fretting.csv). Throws InputError "cannot write 'PATH'" when it cannot be written.
+std::ofstream open_output(const std::string& path);
+
+/// Flushes an output file; InputError "error writing 'PATH' (disk full or not writable?)" when
+/// it could not be written.
+void finish_output(std::ofstream& f, const std::string& path);
 
 }  // namespace cpkit::rate

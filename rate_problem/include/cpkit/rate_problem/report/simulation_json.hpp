@@ -46,4 +46,8 @@ nlohmann::json fretting_3d_summary_json(const Fretting3dResult& r, const Ellipti
                                         const Fretting3dOptions& o, const std::string& system,
                                         const std::string& name);
 
+/// Writes `j` as JSON text (indent 1; invalid UTF-8 in strings replaced by U+FFFD) and a line
+/// end to `path`, creating its folder (open_output). InputError naming the path on failure.
+void write_json_file(const std::string& path, const nlohmann::json& j);
+
 }  // namespace cpkit::rate
