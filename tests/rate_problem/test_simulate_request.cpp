@@ -18,6 +18,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/simulate_request.hpp"
@@ -29,14 +30,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// A folder of this test process for its files, removed at exit.
 fs::path scratch() {
-  static const fs::path d = [] {
-    const fs::path p = fs::temp_directory_path() /
-                       ("cpkit_simulate_request_" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    return p;
-  }();
-  return d;
+  struct Folder {
+    fs::path path = fs::temp_directory_path() /
+                    ("cpkit_simulate_request_" + std::to_string(::getpid()));
+    Folder() { fs::create_directories(path); }
+    ~Folder() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const Folder d;
+  return d.path;
 }
 
 std::string write(const std::string& name, const std::string& text) {
