@@ -5,15 +5,9 @@
 namespace cpkit::rate {
 
 ContactParameters model_parameters(const ModelOptions& m) {
-  ContactParameters p;
-  p.a11 = m.a11;
-  p.a12 = m.a12;
-  p.a22 = m.a22;
-  p.mu = m.mu;
-  p.C_T = m.C_T;
-  p.k_a = m.k_a;
-  p.P_s = m.P_s;
-  p.criterion = criterion_option(m.criterion);
+  // Fields in ContactParameters' order.
+  const ContactParameters p{m.a11, m.a12, m.a22, m.mu, m.C_T, m.k_a, m.P_s,
+                            criterion_option(m.criterion)};
   throw_if_invalid(p.validate(), "contact parameters");
   return p;
 }
