@@ -38,7 +38,9 @@ struct StepRequest {
   bool all = false;                   ///< --all
   std::string chain = "active-set,lemke,fb-newton,ipopt";  ///< --chain (comma-separated)
   std::string system;                 ///< --system FILE (empty: one 2-D point)
-  std::optional<SystemFile> file;     ///< the --system file, read once by the caller (dim known)
+  /// The --system file, read once (a pipe can be read only once): by the caller, or, when
+  /// absent, by run_step_request from `system` after the checks that come first.
+  std::optional<SystemFile> file;
   int facets = 0;                     ///< --facets K (3-D files)
   int multistart = 0;                 ///< --multistart N (3-D files)
   std::vector<std::string> options_given;  ///< the options given, as "--g0"
