@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/report/json_3d.hpp"
+#include "cpkit/rate_problem/step/step_request.hpp"
 #include "piece_json.hpp"
 
 namespace cpkit::rate {
@@ -97,6 +99,84 @@ nlohmann::json system_step_set_json(const SystemStepSolutionSet& s) {
   }
   j["solutions"] = sols;
   return j;
+}
+
+namespace {
+
+/// The echo of a 3-D request: the file, its points' start states (numbers for one point, arrays
+/// with one entry per point for N points), the load, the wear law and the mode's options.
+nlohmann::json step_3d_input_json(const StepOutcome& oc) {
+  const Step3dOutcome& o = oc.step_3d;
+  const int N = o.n_points();
+  nlohmann::json state = nlohmann::json::array(), P_T0 = nlohmann::json::array(),
+                 P_N0 = nlohmann::json::array(), g0 = nlohmann::json::array();
+  for (int i = 0; i < N; ++i) {
+    const Step3dState& st = o.states[static_cast<std::size_t>(i)];
+    state.push_back(std::string(1, o.system.points[static_cast<std::size_t>(i)].state.state));
+    P_T0.push_back(std::vector<double>{st.P_T0(0), st.P_T0(1)});
+    P_N0.push_back(st.P_N0);
+    g0.push_back(st.g0);
+  }
+  nlohmann::json in = {{"system", oc.system}, {"name", o.system.name}, {"DF", oc.DF},
+                       {"wear_law", std::string(to_string(o.wear.law))}, {"mode", o.mode}};
+  if (N == 1) {
+    in.update({{"state", state[0]}, {"P_T0", P_T0[0]}, {"P_N0", P_N0[0]}, {"g0", g0[0]}});
+  } else {
+    in.update({{"n_points", N}, {"state", state}, {"P_T0", P_T0}, {"P_N0", P_N0}, {"g0", g0}});
+  }
+  if (o.wear.law == WearLaw::kMrozStupkiewicz) in["k_M"] = o.wear.k_M;
+  if (o.mode == "facets") in["facets"] = oc.facets;
+  if (o.mode == "multistart") in["multistart"] = oc.multistart;
+  if (o.mode == "chain") in["chain"] = o.chain;
+  return in;
+}
+
+nlohmann::json step_3d_json(const StepOutcome& oc, const std::string& cpkit_version) {
+  const Step3dOutcome& o = oc.step_3d;
+  const bool chain = o.mode == "chain";
+  nlohmann::json j;
+  j["cpkit_version"] = cpkit_version;
+  j["input"] = step_3d_input_json(oc);
+  j["dim"] = 3;
+  j["mode"] = o.mode;
+  if (o.n_points() == 1) {
+    j.update(step_3d_set_json(o.set, !chain));
+  } else {
+    j["n_points"] = o.n_points();
+    j.update(system_step_3d_set_json(o.system_set, !chain));
+  }
+  if (chain) {
+    j["status"] = o.status == Status::kSolved ? "solved" : "no_solution";
+    j["solver"] = o.solver;
+    j["attempts"] = attempts_json(o.attempts);
+  }
+  if (o.mode == "facets") j["facets"] = oc.facets;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json step_outcome_json(const StepOutcome& outcome, const std::string& cpkit_version) {
+  switch (outcome.route) {
+    case StepRoute::kPointAll:
+      return step_set_json(outcome.set);
+    case StepRoute::kPointChain:
+      return step_result_json(outcome.one, outcome.has_enumeration ? &outcome.set : nullptr);
+    case StepRoute::kSystem: {
+      nlohmann::json j;
+      j["cpkit_version"] = cpkit_version;
+      j["input"] = contact_system_json(outcome.system_problem.system);
+      j["input"]["system"] = outcome.system;
+      j["input"]["DF"] = outcome.DF;
+      j["n_points"] = outcome.system_problem.system.n_points();
+      j.update(system_step_set_json(outcome.system_set));
+      return j;
+    }
+    case StepRoute::kPoint3d:
+    case StepRoute::kSystem3d:
+      break;
+  }
+  return step_3d_json(outcome, cpkit_version);
 }
 
 }  // namespace cpkit::rate

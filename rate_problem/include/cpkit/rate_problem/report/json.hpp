@@ -6,6 +6,7 @@
 /// increments of forces as dF / DF, of displacements as dF times the compliance A^-1; end
 /// values as P and g; signs as in docs/contact_model.md. 3-D results: json_3d.hpp.
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
@@ -59,5 +60,13 @@ nlohmann::json contact_system_json(const ContactSystem& system);
 /// values: each field an array with one number per point, residual). The program adds
 /// cpkit_version, input and n_points.
 nlohmann::json system_step_set_json(const SystemStepSolutionSet& s);
+
+struct StepOutcome;  // step/step_request.hpp
+
+/// The object `cpkit step --json` prints for the answer of a request (run_step_request), every
+/// route: one 2-D point (step_set_json, or step_result_json with the enumeration an active-set
+/// answer was picked from), N 2-D points and 3-D points (with "cpkit_version" and "input": the
+/// request's echo). The program adds "run".
+nlohmann::json step_outcome_json(const StepOutcome& outcome, const std::string& cpkit_version);
 
 }  // namespace cpkit::rate

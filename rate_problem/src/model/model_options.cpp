@@ -1,0 +1,33 @@
+#include "cpkit/rate_problem/model/model_options.hpp"
+
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::rate {
+
+ContactParameters model_parameters(const ModelOptions& m) {
+  // Fields in ContactParameters' order.
+  const ContactParameters p{m.a11, m.a12, m.a22, m.mu, m.C_T, m.k_a, m.P_s,
+                            criterion_option(m.criterion)};
+  throw_if_invalid(p.validate(), "contact parameters");
+  return p;
+}
+
+Criterion criterion_option(const std::string& name) {
+  const auto c = criterion_from_string(name);
+  if (!c) throw InputError("--criterion must be 38 or 35, got '" + name + "'");
+  return *c;
+}
+
+WearLaw wear_law_option(const std::string& name) {
+  const auto law = wear_law_from_string(name);
+  if (!law) throw InputError("--wear-law must be archard or mroz, got '" + name + "'");
+  return *law;
+}
+
+BranchRule branch_rule_option(const std::string& name) {
+  const auto rule = branch_rule_from_string(name);
+  if (!rule) throw InputError("--branch-rule must be closest or stop, got '" + name + "'");
+  return *rule;
+}
+
+}  // namespace cpkit::rate
