@@ -13,9 +13,10 @@ namespace cpkit::lcp {
 namespace {
 
 /// Everything of support S that depends on M only (the data of SmallPreparedSupport): the
-/// decisions and values of SmallEnumerator::run / singular_piece that do not involve q.
+/// decisions and values of SmallEnumerator::run / singular_piece that do not involve q. Kept
+/// out of line (as it was as a member): inlined into the constructor's loop it is slower.
 template <int N>
-void prepare_support(const Eigen::Matrix<double, N, N>& M, double tol, unsigned S,
+CPKIT_SMALL_NOINLINE void prepare_support(const Eigen::Matrix<double, N, N>& M, double tol, unsigned S,
                      detail::SmallPreparedSupport<N>& s) {
   using detail::small_abs;
   using detail::small_max;

@@ -20,9 +20,11 @@ inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tes
 #if defined(__GNUC__) || defined(__clang__)
 #define CPKIT_SMALL_COLD __attribute__((noinline, cold))
 #define CPKIT_SMALL_HOT __attribute__((always_inline))
+#define CPKIT_SMALL_NOINLINE __attribute__((noinline))
 #else
 #define CPKIT_SMALL_COLD
 #define CPKIT_SMALL_HOT
+#define CPKIT_SMALL_NOINLINE
 #endif
 
 constexpr int small_popcount(unsigned x) noexcept {
