@@ -16,8 +16,8 @@ namespace {
 /// decisions and values of SmallEnumerator::run / singular_piece that do not involve q. Kept
 /// out of line (as it was as a member): inlined into the constructor's loop it is slower.
 template <int N>
-CPKIT_SMALL_NOINLINE void prepare_support(const Eigen::Matrix<double, N, N>& M, double tol, unsigned S,
-                     detail::SmallPreparedSupport<N>& s) {
+CPKIT_SMALL_NOINLINE void prepare_support(const Eigen::Matrix<double, N, N>& M, double tol,
+                                          unsigned S, detail::SmallPreparedSupport<N>& s) {
   using detail::small_abs;
   using detail::small_max;
   constexpr unsigned kAll = (1u << N) - 1;

@@ -54,7 +54,8 @@ namespace cpkit::lcp {
 template <int N>
 struct SmallSolutionSet {
   static_assert(N >= 1 && N <= 4,
-                "enumerate_small / SmallPreparedLcp: only N = 1, 2, 3, 4 are compiled into cpkit_lcp");
+                "enumerate_small / SmallPreparedLcp: only N = 1, 2, 3, 4 are compiled into "
+                "cpkit_lcp");
   static constexpr int kMax = 1 << N;
   using V = Eigen::Matrix<double, N, 1>;
   struct Piece {                 ///< one complementary piece of positive dimension

@@ -97,7 +97,8 @@ struct SmallPreparedSupport {
 /// other than the one of the constructor it simply calls enumerate_small.
 template <int N>
 class SmallPreparedLcp {
-  static_assert(N >= 1 && N <= 4, "SmallPreparedLcp: only N = 1, 2, 3, 4 are compiled into cpkit_lcp");
+  static_assert(N >= 1 && N <= 4,
+                "SmallPreparedLcp: only N = 1, 2, 3, 4 are compiled into cpkit_lcp");
 
  public:
   using Mat = Eigen::Matrix<double, N, N>;
