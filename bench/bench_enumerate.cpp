@@ -57,6 +57,17 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
+/// enumerate_all(p) into s, timed: the best CPU seconds of 3 runs.
+double timed_enumerate_all(const cpkit::LcpProblem& p, cpkit::lcp::SolutionSet& s) {
+  double best = INFINITY;
+  for (int rep = 0; rep < 3; ++rep) {
+    const double t0 = cpu_now();
+    s = cpkit::lcp::enumerate_all(p);
+    best = std::min(best, cpu_now() - t0);
+  }
+  return best;
+}
+
 // ---------------- (1) tiny rate LCPs ----------------
 void bench_tiny(bool quick) {
   // state b, A = [[2, .5], [.5, 1]], C_T = .1, mu = .3; load directions around the circle
@@ -186,15 +197,8 @@ void bench_random(bool quick) {
         q(i) = u(rng);
         for (int j = 0; j < n; ++j) M(i, j) = u(rng);
       }
-      const cpkit::LcpProblem p(M, q);
-      double best = INFINITY;
       cpkit::lcp::SolutionSet s;
-      for (int rep = 0; rep < 3; ++rep) {
-        const double t0 = cpu_now();
-        s = cpkit::lcp::enumerate_all(p);
-        best = std::min(best, cpu_now() - t0);
-      }
-      tc.push_back(best * 1e3);
+      tc.push_back(timed_enumerate_all(cpkit::LcpProblem(M, q), s) * 1e3);
       nodes.push_back(double(s.nodes));
       total += s.count();
 #ifdef CPKIT_HAVE_SICONOS
@@ -276,14 +280,8 @@ void bench_games(bool quick) {
           M(m + j, i) = -B[i][j];
         }
       const cpkit::LcpProblem p(M, Vec::Ones(2 * m));
-      double best = INFINITY;
       cpkit::lcp::SolutionSet s;
-      for (int rep = 0; rep < 3; ++rep) {
-        const double t0 = cpu_now();
-        s = cpkit::lcp::enumerate_all(p);
-        best = std::min(best, cpu_now() - t0);
-      }
-      tc.push_back(best * 1e3);
+      tc.push_back(timed_enumerate_all(p, s) * 1e3);
       nstruct += s.structured;
       {
         cpkit::lcp::EnumerationOptions gen;

@@ -16,7 +16,6 @@
 #include "cpkit/core/residuals.hpp"
 #include "enumerate_detail.hpp"
 #include "rounding_ties.hpp"
-#include "cpkit/lcp/enumerate_small.hpp"
 
 namespace cpkit::lcp::detail {
 namespace {
@@ -458,7 +457,7 @@ class Engine {
 
   /// Judges the candidate z of piece S (z_i = 0 off S, w_i = 0 on S by construction) from the
   /// data and stores it when feasible and new; the same tests as SmallEnumerator::add_point
-  /// (enumerate_small.hpp): relative to ||z||_inf and W_i = |q_i| + sum_j |M_ij z_j|.
+  /// (small_enumerator.hpp): relative to ||z||_inf and W_i = |q_i| + sum_j |M_ij z_j|.
   void add_point(Mask S, Vec& z) {
     double zs = 0;
     bool ok = true;
@@ -543,7 +542,7 @@ class Engine {
   /// (|M_ij z_j| <= tol W_i), and one that is not negligible keeps its value, its sign deciding
   /// (e.g. M = diag(1e200, 1): z_0 = -1e-200 moves w_0 by 1, so the candidate is infeasible).
   /// False when the candidate is infeasible.
-  /// The same rule as SmallEnumerator::settle_tiny (enumerate_small.hpp).
+  /// The same rule as SmallEnumerator::settle_tiny (small_enumerator.hpp).
   bool settle_tiny(Mask S, Mask tiny, Vec& z, Mask& zz) const {
     const Vec W = row_scales(z);
     Vec zt = z;

@@ -92,6 +92,17 @@ detail::PlaneSet enumerated_plane(const lcp::SmallSolutionSet<N>& set, double sU
   return plane;
 }
 
+/// Registers the slip boundary v = dw_T^i = 0, splits the plane set by `type` into res.pieces
+/// and records its verdicts (infinite, bad geometry, undecided types) in res.
+template <class Type>
+void finish_plane(detail::PlaneSet& plane, const Type& type, PlaneResult& res) {
+  plane.add_affine(0.0, 0.0, 1.0);
+  res.infinite = plane.num_lines() > 0;
+  res.n = plane.finish(type, res.pieces);
+  res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
+}
+
 void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   const StateBLcp l = state_b_lcp(p, f);
   lcp::SmallSolutionSet<3> set;
@@ -111,12 +122,8 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   const double c1 = 1.0 + p.a11 * p.C_T;
   TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
              c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
-  plane.add_affine(type.S, -c1, -p.a12);
-  plane.add_affine(0.0, 0.0, 1.0);
-  res.infinite = plane.num_lines() > 0;
-  res.n = plane.finish(type, res.pieces);
-  res.bad = plane.bad();
-  res.ambiguous += plane.undecided();
+  plane.add_affine(type.S, -c1, -p.a12);  // the separation boundary dw_N = 0
+  finish_plane(plane, type, res);
 }
 
 void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
@@ -140,12 +147,7 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
       [&](const Eigen::Matrix<double, 1, 1>& d, double, double V) {
         return detail::P2{u1 * d(0) * V, s * d(0) * V};
       });
-  TypeD type{V0};
-  plane.add_affine(0.0, 0.0, 1.0);
-  res.infinite = plane.num_lines() > 0;
-  res.n = plane.finish(type, res.pieces);
-  res.bad = plane.bad();
-  res.ambiguous += plane.undecided();
+  finish_plane(plane, TypeD{V0}, res);
 }
 
 /// Physical rates of the plane point x (affine) and of a plane direction (linear part).

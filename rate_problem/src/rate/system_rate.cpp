@@ -21,6 +21,23 @@ namespace {
 /// made of is an exact zero (as the one-point state d LCP does, rate_lcp.cpp).
 constexpr double kSnap = 1e-10;
 
+/// Point i of the system as the elimination sees it: its rows T = 2i (tangential) and
+/// Nn = 2i + 1 (normal) of A, its first LCP variable k (-1 in states a and c), the force scale
+/// kc = A_TT of its z and its state label.
+struct PointRows {
+  const SystemPoint& P;
+  ContactParameters par;
+  int T, Nn, k;
+  double kc;
+  StateLabel l;
+};
+
+PointRows point_rows(const ContactSystem& S, const std::vector<int>& off, int i) {
+  const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
+  return {P, S.point_parameters(i), 2 * i, 2 * i + 1, off[static_cast<std::size_t>(i)],
+          S.A(2 * i, 2 * i), P.state.label};
+}
+
 }  // namespace
 
 int SystemRateSolutionSet::count() const noexcept {
@@ -81,11 +98,7 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n2, n2), Bf = Eigen::MatrixXd::Zero(n2, n2),
                   R = Eigen::MatrixXd::Zero(n2, std::max(m, 0));
   for (int i = 0; i < N; ++i) {
-    const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
-    const ContactParameters par = S.point_parameters(i);
-    const int T = 2 * i, Nn = 2 * i + 1, k = off[static_cast<std::size_t>(i)];
-    const double kc = A(T, T);
-    const StateLabel l = P.state.label;
+    const auto [P, par, T, Nn, k, kc, l] = point_rows(S, off, i);
     if (l == StateLabel::kA) {
       E.row(T) = A.row(T);
       Bf(T, T) = 1;
@@ -126,11 +139,7 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
   const Eigen::MatrixXd dPf = Eigen::MatrixXd::Identity(n2, n2) - A * Xf;
   const Eigen::MatrixXd dPz = -A * Xz;
   for (int i = 0; i < N; ++i) {
-    const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
-    const ContactParameters par = S.point_parameters(i);
-    const int T = 2 * i, Nn = 2 * i + 1, k = off[static_cast<std::size_t>(i)];
-    const double kc = A(T, T);
-    const StateLabel l = P.state.label;
+    const auto [P, par, T, Nn, k, kc, l] = point_rows(S, off, i);
     if (l != StateLabel::kA) {  // a: dP = 0 exactly
       pre.Pf.row(i) = dPf.row(T);
       pre.Pz.row(i) = dPz.row(T);

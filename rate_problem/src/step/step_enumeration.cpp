@@ -15,9 +15,10 @@ namespace {
 
 constexpr double kDegTol = 1e-12;  // relative size under which a coefficient is zero
 
-/// Everything the pieces need, computed once per problem.
+/// Everything the pieces need, computed once per problem (the parameters themselves are read
+/// from StepProblem::params).
 struct Setup {
-  double a11, a12, a22, mu, C_T, detA, D0, e, S, T, cw, kc;
+  double detA, D0, e, S, T, cw, kc;
   double P0, PT0, g0;
   double fscale, dscale;
 };
@@ -25,11 +26,6 @@ struct Setup {
 Setup make_setup(const StepProblem& p) noexcept {
   const ContactParameters& a = p.params;
   Setup s;
-  s.a11 = a.a11;
-  s.a12 = a.a12;
-  s.a22 = a.a22;
-  s.mu = a.mu;
-  s.C_T = a.C_T;
   s.detA = a.detA();
   s.D0 = a.D0();
   s.e = 1 + a.a11 * a.C_T;
@@ -42,7 +38,7 @@ Setup make_setup(const StepProblem& p) noexcept {
   s.g0 = p.state.g0;
   s.fscale = std::max({std::abs(s.PT0), s.P0, std::abs(p.load.dF_T), std::abs(p.load.dF_N),
                        std::numeric_limits<double>::min()});
-  s.dscale = std::abs(s.g0) + s.fscale * ((s.a11 + s.a22) / s.detA + s.C_T);
+  s.dscale = std::abs(s.g0) + s.fscale * ((a.a11 + a.a22) / s.detA + a.C_T);
   return s;
 }
 
@@ -453,6 +449,7 @@ void try_point(const StepProblem& n, int piece, double x, double xi, double tol,
 /// Every candidate of the normalised problem `p` (normalise()).
 void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
   const Setup st = make_setup(p);
+  const ContactParameters& a = p.params;
   w.pts.n = 0;
   w.pts.infinite = false;
   w.pts.undecided = 0;
@@ -461,7 +458,7 @@ void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
   // 1. P_N1 = 0: P_T1 = 0 fixes xi.
   {
     const double x = -st.P0;
-    const double xi = (st.D0 * st.PT0 + st.T - st.a12 * st.P0) / st.detA;
+    const double xi = (st.D0 * st.PT0 + st.T - a.a12 * st.P0) / st.detA;
     try_point(p, kPieceSep, x, xi, tol, w);
   }
   // 2. stick: g1 = 0 with xi = 0.
@@ -471,23 +468,23 @@ void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
   }
   // 3. slip s = +1, -1.
   for (int s = 1; s >= -1; s -= 2) {
-    const double Y0 = st.mu * st.P0 - st.kc * st.P0 * st.P0;
+    const double Y0 = a.mu * st.P0 - st.kc * st.P0 * st.P0;
     const double margin = Y0 - s * st.PT0;
     const double b0 = -st.D0 * margin + s * st.T;
-    const double b1 = s * st.a12 - st.D0 * st.mu + 2 * st.D0 * st.kc * st.P0;
+    const double b1 = s * a.a12 - st.D0 * a.mu + 2 * st.D0 * st.kc * st.P0;
     const double b2 = st.D0 * st.kc;
-    const double sb0 = st.D0 * (st.mu * st.P0 + st.kc * st.P0 * st.P0 + std::abs(st.PT0)) +
-                       std::abs(st.a22 * p.load.dF_T) + std::abs(st.a12 * p.load.dF_N);
-    const double sb1 = std::abs(st.a12) + st.D0 * st.mu + 2 * st.D0 * st.kc * st.P0;
+    const double sb0 = st.D0 * (a.mu * st.P0 + st.kc * st.P0 * st.P0 + std::abs(st.PT0)) +
+                       std::abs(a.a22 * p.load.dF_T) + std::abs(a.a12 * p.load.dF_N);
+    const double sb1 = std::abs(a.a12) + st.D0 * a.mu + 2 * st.D0 * st.kc * st.P0;
     const double sb2 = b2;
     const double a0 = st.D0 * st.g0 + st.S;
     const double a1 = -st.e;
-    const double a2 = -s * st.a12 - st.D0 * st.cw * st.P0;
+    const double a2 = -s * a.a12 - st.D0 * st.cw * st.P0;
     const double a3 = -st.D0 * st.cw;
     const double sa0 = st.D0 * std::abs(st.g0) + st.e * std::abs(p.load.dF_N) +
-                       std::abs(st.a12 * st.C_T * p.load.dF_T);
+                       std::abs(a.a12 * a.C_T * p.load.dF_T);
     const double sa1 = st.e;
-    const double sa2 = std::abs(st.a12) + st.D0 * st.cw * st.P0;
+    const double sa2 = std::abs(a.a12) + st.D0 * st.cw * st.P0;
     const double sa3 = -a3;
     const double c[4] = {st.detA * a0 + a2 * b0, st.detA * a1 + a2 * b1 + a3 * b0,
                          a3 * b1 + a2 * b2, a3 * b2};
@@ -498,7 +495,7 @@ void enumerate_core(const StepProblem& p, double tol, Work& w) noexcept {
     int nr;
     const double x_lo = -st.P0;
     if (c[3] != 0) {
-      const double x_hi = st.mu / st.kc - st.P0;  // Y(P_N1) >= 0, condition (46)
+      const double x_hi = a.mu / st.kc - st.P0;  // Y(P_N1) >= 0, condition (46)
       nr = detail::cubic_roots_in(c, sc, x_lo, x_hi, roots);
     } else {
       nr = stable_quadratic_roots(c[2], c[1], c[0], sc[2], sc[1], sc[0], kDegTol, roots);

@@ -1,12 +1,15 @@
 #pragma once
 /// \file small_linear_algebra.hpp
-/// Internal kernels of enumerate_small (enumerate_small.hpp) and its prepared variant
-/// (enumerate_small_prepared.hpp): sign tests with the gray band, determinants and their
-/// "permanents", complete-pivoting elimination with a replayable record, null vectors, square
-/// solves and Cramer's rule for blocks of at most 4 x 4. Not an API. Tolerances as documented in
-/// enumerate_small.hpp ("Tolerance").
+/// Internal (lcp/src) kernels of enumerate_small and its prepared variant SmallPreparedLcp
+/// (enumerate_small.cpp): sign tests with the gray band, determinants and their "permanents",
+/// complete-pivoting elimination with a replayable record (detail::SmallElimRecord, declared
+/// with the prepared data in cpkit/lcp/enumerate_small_prepared.hpp), null vectors, square
+/// solves and Cramer's rule for blocks of at most 4 x 4. Tolerances as documented in
+/// cpkit/lcp/enumerate_small.hpp ("Tolerance").
 #include <cmath>
 #include <utility>
+
+#include "cpkit/lcp/enumerate_small_prepared.hpp"
 
 namespace cpkit::lcp::detail {
 
@@ -17,9 +20,11 @@ inline constexpr double kSmallGray = 1e4;  ///< gray band factor of the sign tes
 #if defined(__GNUC__) || defined(__clang__)
 #define CPKIT_SMALL_COLD __attribute__((noinline, cold))
 #define CPKIT_SMALL_HOT __attribute__((always_inline))
+#define CPKIT_SMALL_NOINLINE __attribute__((noinline))
 #else
 #define CPKIT_SMALL_COLD
 #define CPKIT_SMALL_HOT
+#define CPKIT_SMALL_NOINLINE
 #endif
 
 constexpr int small_popcount(unsigned x) noexcept {
@@ -72,16 +77,6 @@ inline void small_det(const Mat& M, const int* r, const int* c, int k, double& d
     }
   }
 }
-
-/// The row operations of one small_eliminate call, for replaying them on other right-hand
-/// sides (SmallPreparedLcp, enumerate_small_prepared.hpp).
-struct SmallElimRecord {
-  int rank = 0;
-  int perm[5] = {};     ///< column order
-  int swap[4] = {};     ///< row exchanged with row p at step p
-  double f[4][4] = {};  ///< f[p][r]: multiple of row p subtracted from row r > p
-  double a[4][5] = {};  ///< the eliminated block (column 4 unused)
-};
 
 /// Complete-pivoting elimination of the k x c block a (c <= k + 1 columns, column 4 is a
 /// right-hand side) in place. Returns the rank found (pivots > piv_tol); perm receives the
@@ -167,10 +162,11 @@ inline void small_replay_rhs(const SmallElimRecord& rec, int k, double (&b)[4]) 
 }
 
 /// Cramer's rule for M[R,C] x = -q[R] (k = |R| = |C| <= 3) given inv = 1 / det M[R,C]; writes
-/// x[out[c]] for the c-th column.
+/// x[out[c]] for the c-th column. Always inlined: the per-call path of every nonsingular support.
 template <typename Mat, typename Vq>
-inline void small_cramer_inv(const Mat& M, const Vq& q, const int* rows, const int* cols, int k,
-                             double inv, const int* out, double* x) noexcept {
+CPKIT_SMALL_HOT inline void small_cramer_inv(const Mat& M, const Vq& q, const int* rows,
+                                             const int* cols, int k, double inv, const int* out,
+                                             double* x) noexcept {
   if (k == 1) {
     x[out[0]] = -q(rows[0]) * inv;
   } else if (k == 2) {
@@ -190,35 +186,6 @@ inline void small_cramer_inv(const Mat& M, const Vq& q, const int* rows, const i
     x[out[2]] = (a00 * (a11 * b2 - b1 * a21) - a01 * (a10 * b2 - b1 * a20) +
                  b0 * (a10 * a21 - a11 * a20)) * inv;
   }
-}
-
-/// Solves M[R,C] x = -q[R] (|R| = |C| = k <= 4). Returns false when the block is singular at
-/// tolerance tol; sets gray when the decision was close.
-template <typename Mat, typename Vq>
-inline bool small_square_solve(const Mat& M, const Vq& q, const int* rows, const int* cols, int k,
-                               double tol, double* x, bool& gray) noexcept {
-  if (k <= 3) {
-    double det, perm;
-    small_det(M, rows, cols, k, det, perm);
-    if (!(small_abs(det) > tol * perm)) return false;
-    if (small_abs(det) <= kSmallGray * tol * perm) gray = true;
-    constexpr int seq[3] = {0, 1, 2};
-    small_cramer_inv(M, q, rows, cols, k, 1.0 / det, seq, x);
-    return true;
-  }
-  double a[4][5] = {};
-  double amax = 0;
-  for (int r = 0; r < k; ++r) {
-    for (int c = 0; c < k; ++c) {
-      a[r][c] = M(rows[r], cols[c]);
-      amax = small_max(amax, small_abs(a[r][c]));
-    }
-    a[r][4] = -q(rows[r]);
-  }
-  int perm[5] = {};
-  if (small_eliminate(a, k, k, perm, tol * amax, gray) < k) return false;
-  small_back_substitute(a, k, perm, [&](int p) { return a[p][4]; }, x);
-  return true;
 }
 
 /// Cramer's rule for the principal block M[S,S] z_S = -q_S (k = |S| <= 3) whose determinant

@@ -1,11 +1,11 @@
 #pragma once
 /// \file small_piece.hpp
-/// Internal M-only geometry of one piece P_S of a tiny LCP, shared by enumerate_small
-/// (enumerate_small.hpp, computed per call) and SmallPreparedLcp (enumerate_small_prepared.hpp,
-/// computed once per matrix): null basis of a singular block, the constraint directions of the
-/// piece, the equilibrated systems of its vertices and rays, and the tests of a ray. Not an API;
-/// tolerances as documented in enumerate_small.hpp ("Tolerance").
-#include "cpkit/lcp/detail/small_linear_algebra.hpp"
+/// Internal (lcp/src) M-only geometry of one piece P_S of a tiny LCP, shared by enumerate_small
+/// (computed per call) and SmallPreparedLcp (computed once per matrix), both in
+/// enumerate_small.cpp: null basis of a singular block, the constraint directions of the piece,
+/// the equilibrated systems of its vertices and rays, and the tests of a ray. Tolerances as
+/// documented in cpkit/lcp/enumerate_small.hpp ("Tolerance").
+#include "small_linear_algebra.hpp"
 
 namespace cpkit::lcp::detail {
 
@@ -122,10 +122,12 @@ enum SmallRayVerdict { kRayRejected = 0, kRayAmbiguous = 1, kRayAccepted = 2, kR
 /// Judges the direction d (d_i = 0 off S, (M d)_i = 0 on S by construction) of the recession
 /// cone of piece S: a ray is >= 0 with M d >= 0 off S. On acceptance d is scaled to
 /// ||d||_inf = 1 with its zero entries set, and zd / zmd receive its zero patterns (d_i = 0,
-/// (M d)_i = 0). Depends on M only.
+/// (M d)_i = 0). Depends on M only. Always inlined: a line's two rays are judged on every call
+/// of enumerate_small for the rate LCPs.
 template <int N, typename Mat>
-inline SmallRayVerdict small_judge_ray(const Mat& M, unsigned S, double (&d)[N], double tol,
-                                       unsigned& zd, unsigned& zmd) noexcept {
+CPKIT_SMALL_HOT inline SmallRayVerdict small_judge_ray(const Mat& M, unsigned S, double (&d)[N],
+                                                       double tol, unsigned& zd,
+                                                       unsigned& zmd) noexcept {
   constexpr unsigned kAll = (1u << N) - 1;
   double big = 0;
   int arg = 0;
