@@ -22,6 +22,7 @@
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "soc_fb.hpp"
+#include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
@@ -255,23 +256,8 @@ CommonOptions step_3d_solver_options() {
 
 void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& r,
                       const CommonOptions& options) {
-  const bool claimed = is_solution(r.status);
   r.solution = make_step_3d_solution(problem, r.solution.values);
-  const Step3dValues& v = r.solution.values;
-  r.z = Eigen::Vector4d(v.P_T1(0), v.P_T1(1), v.P_N1, v.lambda);
-  const double res = r.solution.residual;
-  r.residuals = Residuals{};
-  r.residuals.natural = res;
-  r.residuals.finite = std::isfinite(res);
-  if (res <= options.tol) {
-    r.status = Status::kSolved;
-  } else if (res <= options.tol_acceptable) {
-    r.status = Status::kSolvedInaccurate;
-  } else if (claimed) {
-    r.status = Status::kNumericalFailure;
-    r.message += (r.message.empty() ? "" : "; ") + std::string("claimed solution refuted: residual ") +
-                 std::to_string(res);
-  }
+  detail::decide_step_3d(r, &r.solution.values, 1, r.solution.residual, options);
 }
 
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {

@@ -18,6 +18,7 @@
 #include "cpkit/lcp/damped_newton.hpp"
 #include "soc_fb.hpp"
 #include "step_3d_terms.hpp"
+#include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
@@ -271,28 +272,12 @@ Vec canonical(const SystemStep3dProblem& pr, const Normalized& n, Vec z, double 
   return z;
 }
 
-/// The verdict, as finalize_step_3d: the solution recomputed from the values and the data;
-/// kSolved when system_step_3d_residual <= tol, kSolvedInaccurate up to tol_acceptable; a
-/// refuted claim becomes kNumericalFailure; other claimed failures are kept.
+/// The verdict, as finalize_step_3d (step_3d_verdict.hpp): the solution recomputed from the
+/// values and the data, judged by system_step_3d_residual.
 void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValues>& values,
                      SystemStep3dSolveResult& r, const CommonOptions& o) {
-  const bool claimed = is_solution(r.status);
   r.solution = make_system_step_3d_solution(pr, values);
-  r.z.resize(static_cast<Eigen::Index>(4 * values.size()));
-  for (std::size_t i = 0; i < values.size(); ++i)
-    r.z.segment<4>(static_cast<Eigen::Index>(4 * i)) << values[i].P_T1, values[i].P_N1,
-        values[i].lambda;
-  const double res = r.solution.residual;
-  r.residuals = Residuals{};
-  r.residuals.natural = res;
-  r.residuals.finite = std::isfinite(res);
-  if (res <= o.tol) {
-    r.status = Status::kSolved;
-  } else if (res <= o.tol_acceptable) {
-    r.status = Status::kSolvedInaccurate;
-  } else if (claimed) {
-    r.status = Status::kNumericalFailure;
-  }
+  detail::decide_step_3d(r, values.data(), values.size(), r.solution.residual, o);
 }
 
 /// The semismooth Newton iteration by the one damped Newton loop (lcp/damped_newton.hpp).
