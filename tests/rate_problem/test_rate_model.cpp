@@ -56,6 +56,13 @@ TEST_CASE("enum names round-trip", "[rate][model]") {
   for (auto s : {StateLabel::kA, StateLabel::kB, StateLabel::kC, StateLabel::kD})
     CHECK(state_from_string(to_string(s)) == s);
   CHECK_FALSE(state_from_string("e"));
+  // The words of docs/model.md's states are aliases of the letters.
+  CHECK(state_from_string("open") == StateLabel::kA);
+  CHECK(state_from_string("grazing") == StateLabel::kB);
+  CHECK(state_from_string("stick") == StateLabel::kC);
+  CHECK(state_from_string("sliding") == StateLabel::kD);
+  CHECK(to_string(StateLabel::kC) == "c");
+  CHECK(to_string(Criterion::kCoulomb) == "coulomb");
   for (auto t : {SolutionType::kOpen, SolutionType::kSeparation, SolutionType::kStick,
                  SolutionType::kSlipPlus, SolutionType::kSlipMinus, SolutionType::kSlip})
     CHECK(solution_type_from_string(to_string(t)) == t);

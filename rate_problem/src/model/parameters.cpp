@@ -4,22 +4,25 @@
 #include <cmath>
 #include <sstream>
 
-namespace cpkit::rate {
+#include "cpkit/core/enum_names.hpp"
 
-std::string_view to_string(Criterion c) noexcept {
-  switch (c) {
-    case Criterion::kCoulomb:
-      return "coulomb";
-    case Criterion::kSoftening:
-      return "softening";
-  }
-  return "unknown";
-}
+namespace cpkit::rate {
+namespace {
+
+/// The names, then the paper's equation numbers (38) and (35) as aliases.
+constexpr EnumName<Criterion> kCriterionNames[] = {
+    {Criterion::kCoulomb, "coulomb"},
+    {Criterion::kSoftening, "softening"},
+    {Criterion::kCoulomb, "38"},
+    {Criterion::kSoftening, "35"},
+};
+
+}  // namespace
+
+std::string_view to_string(Criterion c) noexcept { return name_of(kCriterionNames, c); }
 
 std::optional<Criterion> criterion_from_string(std::string_view s) noexcept {
-  if (s == "coulomb" || s == "38") return Criterion::kCoulomb;
-  if (s == "softening" || s == "35") return Criterion::kSoftening;
-  return std::nullopt;
+  return value_of(kCriterionNames, s);
 }
 
 std::string ContactParameters::validate() const {
