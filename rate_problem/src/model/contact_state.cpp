@@ -4,31 +4,30 @@
 #include <cmath>
 #include <sstream>
 
-#include "cpkit/core/enum_names.hpp"
 #include "cpkit/core/errors.hpp"
 
 namespace cpkit::rate {
 
-namespace {
-
-/// The letters a-d are the names; the words are aliases.
-constexpr EnumName<StateLabel> kStateNames[] = {
-    {StateLabel::kA, "a"},
-    {StateLabel::kB, "b"},
-    {StateLabel::kC, "c"},
-    {StateLabel::kD, "d"},
-    {StateLabel::kA, "open"},
-    {StateLabel::kB, "grazing"},
-    {StateLabel::kC, "stick"},
-    {StateLabel::kD, "sliding"},
-};
-
-}  // namespace
-
-std::string_view to_string(StateLabel s) noexcept { return name_of(kStateNames, s); }
+std::string_view to_string(StateLabel s) noexcept {
+  switch (s) {
+    case StateLabel::kA:
+      return "a";
+    case StateLabel::kB:
+      return "b";
+    case StateLabel::kC:
+      return "c";
+    case StateLabel::kD:
+      return "d";
+  }
+  return "unknown";
+}
 
 std::optional<StateLabel> state_from_string(std::string_view s) noexcept {
-  return value_of(kStateNames, s);
+  if (s == "a" || s == "open") return StateLabel::kA;
+  if (s == "b" || s == "grazing") return StateLabel::kB;
+  if (s == "c" || s == "stick") return StateLabel::kC;
+  if (s == "d" || s == "sliding") return StateLabel::kD;
+  return std::nullopt;
 }
 
 std::string ContactState::validate(const ContactParameters& params) const {

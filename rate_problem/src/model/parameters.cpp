@@ -4,25 +4,22 @@
 #include <cmath>
 #include <sstream>
 
-#include "cpkit/core/enum_names.hpp"
-
 namespace cpkit::rate {
-namespace {
 
-/// The names, then the paper's equation numbers (38) and (35) as aliases.
-constexpr EnumName<Criterion> kCriterionNames[] = {
-    {Criterion::kCoulomb, "coulomb"},
-    {Criterion::kSoftening, "softening"},
-    {Criterion::kCoulomb, "38"},
-    {Criterion::kSoftening, "35"},
-};
-
-}  // namespace
-
-std::string_view to_string(Criterion c) noexcept { return name_of(kCriterionNames, c); }
+std::string_view to_string(Criterion c) noexcept {
+  switch (c) {
+    case Criterion::kCoulomb:
+      return "coulomb";
+    case Criterion::kSoftening:
+      return "softening";
+  }
+  return "unknown";
+}
 
 std::optional<Criterion> criterion_from_string(std::string_view s) noexcept {
-  return value_of(kCriterionNames, s);
+  if (s == "coulomb" || s == "38") return Criterion::kCoulomb;
+  if (s == "softening" || s == "35") return Criterion::kSoftening;
+  return std::nullopt;
 }
 
 std::string ContactParameters::validate() const {

@@ -1,32 +1,45 @@
 #include "cpkit/rate_problem/model/rates.hpp"
 
-#include "cpkit/core/enum_names.hpp"
-
 namespace cpkit::rate {
-namespace {
 
-constexpr EnumName<SolutionType> kSolutionTypeNames[] = {
-    {SolutionType::kOpen, "open"},
-    {SolutionType::kSeparation, "separation"},
-    {SolutionType::kStick, "stick"},
-    {SolutionType::kSlipPlus, "slip+"},
-    {SolutionType::kSlipMinus, "slip-"},
-    {SolutionType::kSlip, "slip"},
-};
-constexpr EnumName<RateSolution::Kind> kKindNames[] = {
-    {RateSolution::Kind::kPoint, "point"},
-    {RateSolution::Kind::kSegment, "segment"},
-    {RateSolution::Kind::kRay, "ray"},
-};
-
-}  // namespace
-
-std::string_view to_string(SolutionType t) noexcept { return name_of(kSolutionTypeNames, t); }
-
-std::optional<SolutionType> solution_type_from_string(std::string_view s) noexcept {
-  return value_of(kSolutionTypeNames, s);
+std::string_view to_string(SolutionType t) noexcept {
+  switch (t) {
+    case SolutionType::kOpen:
+      return "open";
+    case SolutionType::kSeparation:
+      return "separation";
+    case SolutionType::kStick:
+      return "stick";
+    case SolutionType::kSlipPlus:
+      return "slip+";
+    case SolutionType::kSlipMinus:
+      return "slip-";
+    case SolutionType::kSlip:
+      return "slip";
+  }
+  return "unknown";
 }
 
-std::string_view to_string(RateSolution::Kind k) noexcept { return name_of(kKindNames, k); }
+std::optional<SolutionType> solution_type_from_string(std::string_view s) noexcept {
+  if (s == "open") return SolutionType::kOpen;
+  if (s == "separation") return SolutionType::kSeparation;
+  if (s == "stick") return SolutionType::kStick;
+  if (s == "slip+") return SolutionType::kSlipPlus;
+  if (s == "slip-") return SolutionType::kSlipMinus;
+  if (s == "slip") return SolutionType::kSlip;
+  return std::nullopt;
+}
+
+std::string_view to_string(RateSolution::Kind k) noexcept {
+  switch (k) {
+    case RateSolution::Kind::kPoint:
+      return "point";
+    case RateSolution::Kind::kSegment:
+      return "segment";
+    case RateSolution::Kind::kRay:
+      return "ray";
+  }
+  return "unknown";
+}
 
 }  // namespace cpkit::rate

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "cpkit/core/enum_names.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/analytic.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
@@ -13,22 +12,29 @@
 
 namespace cpkit::rate {
 
-namespace {
-
-constexpr EnumName<RateMethod> kRateMethodNames[] = {
-    {RateMethod::kEnumerate, "enumerate"},
-    {RateMethod::kAnalytic, "analytic"},
-    {RateMethod::kLemke, "lemke"},
-    {RateMethod::kFbNewton, "fb-newton"},
-    {RateMethod::kIpopt, "ipopt"},
-};
-
-}  // namespace
-
-std::string_view to_string(RateMethod m) noexcept { return name_of(kRateMethodNames, m); }
+std::string_view to_string(RateMethod m) noexcept {
+  switch (m) {
+    case RateMethod::kEnumerate:
+      return "enumerate";
+    case RateMethod::kAnalytic:
+      return "analytic";
+    case RateMethod::kLemke:
+      return "lemke";
+    case RateMethod::kFbNewton:
+      return "fb-newton";
+    case RateMethod::kIpopt:
+      return "ipopt";
+  }
+  return "unknown";
+}
 
 std::optional<RateMethod> rate_method_from_string(std::string_view s) noexcept {
-  return value_of(kRateMethodNames, s);
+  if (s == "enumerate") return RateMethod::kEnumerate;
+  if (s == "analytic") return RateMethod::kAnalytic;
+  if (s == "lemke") return RateMethod::kLemke;
+  if (s == "fb-newton") return RateMethod::kFbNewton;
+  if (s == "ipopt") return RateMethod::kIpopt;
+  return std::nullopt;
 }
 
 int RateSolutionSet::count() const noexcept {
