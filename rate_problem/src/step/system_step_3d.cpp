@@ -18,6 +18,7 @@
 #include "cpkit/lcp/damped_newton.hpp"
 #include "soc_fb.hpp"
 #include "step_3d_terms.hpp"
+#include "step_3d_newton.hpp"
 #include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
@@ -288,26 +289,12 @@ void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z, const Com
     return Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
            system_step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
   };
-  lcp::DampedNewtonOptions dn;
-  dn.max_iterations = o.max_iterations > 0 ? o.max_iterations : 100;
-  lcp::DampedNewtonStats st;
-  const lcp::DampedNewtonStop stop = lcp::damped_newton<Vec, Mat>(z, eval, done, dn, st);
-  out.iterations = st.iterations;
-  out.line_search_steps = st.line_search_steps;
-  out.gradient_steps = st.gradient_steps;
-  out.function_evals = st.function_evals;
-  out.merit = st.merit;
+  const Status unverified = detail::run_newton_3d<Vec, Mat>(z, eval, done, o, out);
   const bool claim = verified(pr, n, z, o.tol);
   if (claim) z = canonical(pr, n, z, o.tol);
-  out.status = claim ? Status::kSolved
-               : stop == lcp::DampedNewtonStop::kIterationLimit ? Status::kIterationLimit
-               : stop == lcp::DampedNewtonStop::kNonFinite      ? Status::kNumericalFailure
-                                                                : Status::kStalled;
+  out.status = claim ? Status::kSolved : unverified;
   finalize_system(pr, physical(pr, n, z), out, o);
-  if (out.status != Status::kSolved)
-    out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
-                  " after " + std::to_string(out.iterations) + " iterations (merit " +
-                  std::to_string(st.merit) + ")";
+  detail::explain_unverified(out);
 }
 
 void check(const SystemStep3dProblem& pr) { throw_if_invalid(pr.validate(), "step"); }
