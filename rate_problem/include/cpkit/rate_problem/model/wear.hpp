@@ -2,7 +2,8 @@
 /// \file wear.hpp
 /// The wear laws of the model [Stromberg, Johansson & Klarbring 1996]: one enum for the 2-D
 /// point, N points and the 3-D point (the 3-D forms are (40) and (41) with the elliptic norm,
-/// docs/contact_3d.md). A new wear law is a new WearLaw value here, then its term in each step.
+/// docs/contact_3d.md). A new wear law is a new WearLaw value and its names (kWearLawNames) here,
+/// then its term in each step.
 ///
 /// Units: k_M is a length/force (wear gap per unit of frictional work); the Archard
 /// coefficient k = k_a / (3 P_s) comes from the contact parameters (k_a dimensionless, P_s a
