@@ -5,52 +5,45 @@ if(NOT PkgConfig_FOUND)
   message(FATAL_ERROR "pkg-config not found: install the Debian package 'pkg-config'")
 endif()
 
-find_package(Eigen3 3.4 QUIET NO_MODULE)
-if(NOT TARGET Eigen3::Eigen)
-  message(FATAL_ERROR "Eigen 3.4 not found: install the Debian package 'libeigen3-dev'")
-endif()
+# cpkit_require(<target> <what> <Debian package> <find command> <arguments>...): runs the find
+# command (find_package, or pkg_check_modules, which adds " via pkg-config" to the message) and
+# stops configure, naming the Debian package, when it did not provide <target>. A macro, so that
+# the variables the find command sets stay visible here.
+macro(cpkit_require target what package command)
+  cmake_language(CALL ${command} ${ARGN})
+  if(NOT TARGET ${target})
+    if("${command}" STREQUAL "pkg_check_modules")
+      message(FATAL_ERROR "${what} not found via pkg-config: install the Debian package '${package}'")
+    endif()
+    message(FATAL_ERROR "${what} not found: install the Debian package '${package}'")
+  endif()
+endmacro()
+
+cpkit_require(Eigen3::Eigen "Eigen 3.4" libeigen3-dev find_package Eigen3 3.4 QUIET NO_MODULE)
 
 # Debian's Ipopt 3.11.9 ships only ipopt.pc.
-pkg_check_modules(IPOPT QUIET IMPORTED_TARGET GLOBAL ipopt)
-if(NOT IPOPT_FOUND)
-  message(FATAL_ERROR "Ipopt not found via pkg-config: install the Debian package 'coinor-libipopt-dev'")
-endif()
+cpkit_require(PkgConfig::IPOPT "Ipopt" coinor-libipopt-dev
+              pkg_check_modules IPOPT QUIET IMPORTED_TARGET GLOBAL ipopt)
 
-find_package(NLopt CONFIG QUIET)
-if(NOT TARGET NLopt::nlopt)
-  message(FATAL_ERROR "NLopt not found: install the Debian package 'libnlopt-cxx-dev'")
-endif()
+cpkit_require(NLopt::nlopt "NLopt" libnlopt-cxx-dev find_package NLopt CONFIG QUIET)
 
-find_package(nlohmann_json 3 QUIET)
-if(NOT TARGET nlohmann_json::nlohmann_json)
-  message(FATAL_ERROR "nlohmann-json not found: install the Debian package 'nlohmann-json3-dev'")
-endif()
+cpkit_require(nlohmann_json::nlohmann_json "nlohmann-json" nlohmann-json3-dev
+              find_package nlohmann_json 3 QUIET)
 # simdjson: the fast reader of dense JSON problem files (docs/file_formats.md).
-find_package(simdjson QUIET CONFIG)
-if(NOT TARGET simdjson::simdjson)
-  message(FATAL_ERROR "simdjson not found: install the Debian package 'libsimdjson-dev'")
-endif()
+cpkit_require(simdjson::simdjson "simdjson" libsimdjson-dev find_package simdjson QUIET CONFIG)
 
 # fclib: reader and writer of FCLIB frictional contact problems (HDF5). Found through its
 # pkg-config file (which brings HDF5's): its CMake package (find_package(fclib CONFIG)) calls
 # FindHDF5 with the C language, which this C++-only project (and its consumers) do not enable.
-pkg_check_modules(FCLIB QUIET IMPORTED_TARGET GLOBAL fclib)
-if(NOT FCLIB_FOUND)
-  message(FATAL_ERROR "fclib not found via pkg-config: install the Debian package 'libfclib-dev'")
-endif()
+cpkit_require(PkgConfig::FCLIB "fclib" libfclib-dev
+              pkg_check_modules FCLIB QUIET IMPORTED_TARGET GLOBAL fclib)
 
 if(CPKIT_BUILD_APPS)
-  find_package(CLI11 CONFIG QUIET)
-  if(NOT TARGET CLI11::CLI11)
-    message(FATAL_ERROR "CLI11 not found: install the Debian package 'libcli11-dev'")
-  endif()
+  cpkit_require(CLI11::CLI11 "CLI11" libcli11-dev find_package CLI11 CONFIG QUIET)
 endif()
 
 if(CPKIT_BUILD_TESTS)
-  find_package(Catch2 2 QUIET)
-  if(NOT TARGET Catch2::Catch2)
-    message(FATAL_ERROR "Catch2 v2 not found: install the Debian package 'catch2'")
-  endif()
+  cpkit_require(Catch2::Catch2 "Catch2 v2" catch2 find_package Catch2 2 QUIET)
 endif()
 
 find_package(Threads REQUIRED)

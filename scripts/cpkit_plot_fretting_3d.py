@@ -102,11 +102,7 @@ def main(argv):
     wx = summary.get("wear_X_per_cycle") or []
     wy = summary.get("wear_Y_per_cycle") or []
     if wpc:
-        cum = [0.0]
-        for w in wpc:
-            cum.append(cum[-1] + w)
-        ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label="wear depth $w^w$ (orbit)")
-        ax.set_xlabel("cycles")
+        series.plot_wear_over_cycles(ax, wpc, "wear depth $w^w$ (orbit)")
         ax.set_ylabel("wear depth $w^w$ accumulated over the cycles")
         ax2 = ax.twinx()
         xs = [i + 0.5 for i in range(len(wpc))]

@@ -78,6 +78,17 @@ def pyplot(script):
         return None
 
 
+def plot_wear_over_cycles(ax, wear_per_cycle, label):
+    """The wear depth accumulated over the cycles (0 before the first, then the running sum of
+    wear_per_cycle) against the cycle count, as the wear figures of the simulation scripts draw
+    it."""
+    cum = [0.0]
+    for w in wear_per_cycle:
+        cum.append(cum[-1] + w)
+    ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label=label)
+    ax.set_xlabel("cycles")
+
+
 def save(plt, fig, prefix, formats, dpi, **kw):
     """Writes fig as prefix.FMT for every format, then closes it."""
     for fmt in formats:

@@ -66,11 +66,7 @@ def main(argv):
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     wpc = summary.get("wear_per_cycle") or []
     if wpc:
-        cum = [0.0]
-        for w in wpc:
-            cum.append(cum[-1] + w)
-        ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label="wear depth $w^w$")
-        ax.set_xlabel("cycles")
+        series.plot_wear_over_cycles(ax, wpc, "wear depth $w^w$")
         ax2 = ax.twinx()
         ax2.bar([i + 0.5 for i in range(len(wpc))], wpc, width=0.8, color="#dd8452", alpha=0.35,
                 label="wear per cycle")

@@ -13,6 +13,7 @@
 #include <vector>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
@@ -24,10 +25,8 @@ namespace {
 
 using io_dat::DatReader;
 
-/// One NumericsMatrix (storage 0 or 1) of the given size; `after` numbers must follow it.
-Eigen::SparseMatrix<double> read_matrix(DatReader& r, std::int64_t rows, std::int64_t cols,
-                                        std::uint64_t after, const std::string& name,
-                                        const std::string& after_what, const std::string& why) {
+/// The storage type of a NumericsMatrix: 0 (dense) or 1 (sparse block), the ones cpkit reads.
+std::int64_t read_storage(DatReader& r, const std::string& name) {
   const int storage_line = r.line();
   const std::int64_t storage = r.integer("the storage type of " + name,
                                          std::numeric_limits<std::int64_t>::min(),
@@ -36,6 +35,14 @@ Eigen::SparseMatrix<double> read_matrix(DatReader& r, std::int64_t rows, std::in
     r.fail(storage_line, "storage type " + std::to_string(storage) + " of " + name +
                              " is not read (Siconos: 0 dense, 1 sparse block, 2 sparse; cpkit "
                              "reads 0 and 1)");
+  return storage;
+}
+
+/// One NumericsMatrix (storage 0 or 1) of the given size; `after` numbers must follow it.
+Eigen::SparseMatrix<double> read_matrix(DatReader& r, std::int64_t rows, std::int64_t cols,
+                                        std::uint64_t after, const std::string& name,
+                                        const std::string& after_what, const std::string& why) {
+  const std::int64_t storage = read_storage(r, name);
   r.integer("the number of rows of " + name + why, rows, rows);
   r.integer("the number of columns of " + name + why, cols, cols);
   if (storage == 0) return io_dat::read_dense(r, rows, cols, after, name, after_what).sparseView(0.0, 0.0);
@@ -84,45 +91,65 @@ std::vector<io_text::Token> tokens_of(const std::string& text, const std::string
   return tokens;
 }
 
+/// A .dat file being read. Both kinds start with d and nc (read by the constructor) and end
+/// with mu and what follows it (finish).
+struct DatFile {
+  DatFile(const std::string& text_in, const std::string& origin_in, const char* expected)
+      : text(text_in),
+        origin_raw(origin_in),
+        origin(io_text::valid_utf8(origin_in)),
+        tokens(tokens_of(text_in, origin, expected)),
+        r(tokens, origin),
+        nc(read_header(r)),
+        n(3 * nc) {}
+  DatFile(const DatFile&) = delete;
+  DatFile& operator=(const DatFile&) = delete;
+
+  /// Reads mu and the trailing note (`kind` names the file kind in its message), names the
+  /// problem after the file and validates it.
+  template <class Problem>
+  Problem finish(Problem p, const char* kind) {
+    p.mu = read_vector(r, nc, "mu");
+    p.note = trailing_note(r, tokens, text, kind);
+    p.name = io_text::valid_utf8(std::filesystem::path(origin_raw).stem().string());
+    throw_if_invalid(p.validate(), origin);
+    return p;
+  }
+
+  const std::string& text;
+  const std::string& origin_raw;
+  const std::string origin;  // valid UTF-8, for messages
+  const std::vector<io_text::Token> tokens;
+  DatReader r;  // refers to tokens and origin above
+  const std::int64_t nc;  // contacts
+  const std::int64_t n;   // 3 nc
+};
+
 }  // namespace
 
 FrictionContactProblem parse_friction_dat(const std::string& text, const std::string& origin_in) {
-  const std::string origin = io_text::valid_utf8(origin_in);
-  const auto tokens = tokens_of(text, origin, "d, nc, W, q, mu");
-  DatReader r(tokens, origin);
-  const std::int64_t nc = read_header(r);
-  const std::int64_t n = 3 * nc;
+  DatFile f(text, origin_in, "d, nc, W, q, mu");
+  DatReader& r = f.r;
+  const std::int64_t n = f.n;
   // Whatever W's storage, the file must still hold its type, sizes, q and mu.
-  r.need(3 + static_cast<std::uint64_t>(n + nc), "the storage type and sizes of W, q and mu");
+  r.need(3 + static_cast<std::uint64_t>(n + f.nc), "the storage type and sizes of W, q and mu");
   const std::string why = " (3 nc = " + std::to_string(n) + ")";
   FrictionContactProblem p;
-  p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + nc), "W", "q and mu", why);
+  p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + f.nc), "W", "q and mu", why);
   p.q = read_vector(r, n, "q");
-  p.mu = read_vector(r, nc, "mu");
-  p.note = trailing_note(r, tokens, text, "FrictionContact (local problem)");
   p.W.makeCompressed();
-  p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());
-  throw_if_invalid(p.validate(), origin);
-  return p;
+  return f.finish(std::move(p), "FrictionContact (local problem)");
 }
 
 GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
                                                        const std::string& origin_in) {
-  const std::string origin = io_text::valid_utf8(origin_in);
-  const auto tokens = tokens_of(text, origin, "d, nc, M, H, q, b, mu");
-  DatReader r(tokens, origin);
-  const std::int64_t nc = read_header(r);
-  const std::int64_t n = 3 * nc;
+  DatFile f(text, origin_in, "d, nc, M, H, q, b, mu");
+  DatReader& r = f.r;
+  const std::int64_t n = f.n;
+  const std::int64_t nc = f.nc;
   r.need(6 + static_cast<std::uint64_t>(n + nc), "the storage types and sizes of M and H, b and mu");
   // M's size is the number of degrees of freedom m; it is read before M's storage is known.
-  const int storage_line = r.line();
-  const std::int64_t storage = r.integer("the storage type of M",
-                                         std::numeric_limits<std::int64_t>::min(),
-                                         std::numeric_limits<std::int64_t>::max());
-  if (storage != 0 && storage != 1)
-    r.fail(storage_line, "storage type " + std::to_string(storage) +
-                             " of M is not read (Siconos: 0 dense, 1 sparse block, 2 sparse; "
-                             "cpkit reads 0 and 1)");
+  const std::int64_t storage = read_storage(r, "M");
   const std::int64_t m = r.integer(
       "the number of rows of M (the degrees of freedom)", 1,
       std::min<std::int64_t>(io_dat::kMaxIndex, static_cast<std::int64_t>(r.remaining())));
@@ -137,13 +164,9 @@ GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
                     " (H is m x 3 nc = " + std::to_string(m) + " x " + std::to_string(n) + ")");
   p.f = read_vector(r, m, "q (cpkit's f)");
   p.w = read_vector(r, n, "b (cpkit's w)");
-  p.mu = read_vector(r, nc, "mu");
-  p.note = trailing_note(r, tokens, text, "GlobalFrictionContact");
   p.M.makeCompressed();
   p.H.makeCompressed();
-  p.name = io_text::valid_utf8(std::filesystem::path(origin_in).stem().string());
-  throw_if_invalid(p.validate(), origin);
-  return p;
+  return f.finish(std::move(p), "GlobalFrictionContact");
 }
 
 }  // namespace cpkit

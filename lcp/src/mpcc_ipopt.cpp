@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include "cpkit/core/enum_names.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/log.hpp"
 #include "cpkit/core/short_number.hpp"
@@ -13,32 +14,30 @@
 
 namespace cpkit::lcp {
 
-std::string_view to_string(MpccReformulation r) noexcept {
-  switch (r) {
-    case MpccReformulation::kScholtes: return "scholtes";
-    case MpccReformulation::kPenalty: return "penalty";
-  }
-  return "unknown";
-}
+namespace {
+
+constexpr EnumName<MpccReformulation> kReformulationNames[] = {
+    {MpccReformulation::kScholtes, "scholtes"},
+    {MpccReformulation::kPenalty, "penalty"},
+    {MpccReformulation::kPenalty, "l1-penalty"},
+};
+constexpr EnumName<NlpBackend> kBackendNames[] = {
+    {NlpBackend::kIpopt, "ipopt"},
+    {NlpBackend::kNlopt, "nlopt"},
+};
+
+}  // namespace
+
+std::string_view to_string(MpccReformulation r) noexcept { return name_of(kReformulationNames, r); }
 
 std::optional<MpccReformulation> mpcc_reformulation_from_string(std::string_view s) noexcept {
-  if (s == "scholtes") return MpccReformulation::kScholtes;
-  if (s == "penalty" || s == "l1-penalty") return MpccReformulation::kPenalty;
-  return std::nullopt;
+  return value_of(kReformulationNames, s);
 }
 
-std::string_view to_string(NlpBackend b) noexcept {
-  switch (b) {
-    case NlpBackend::kIpopt: return "ipopt";
-    case NlpBackend::kNlopt: return "nlopt";
-  }
-  return "unknown";
-}
+std::string_view to_string(NlpBackend b) noexcept { return name_of(kBackendNames, b); }
 
 std::optional<NlpBackend> nlp_backend_from_string(std::string_view s) noexcept {
-  if (s == "ipopt") return NlpBackend::kIpopt;
-  if (s == "nlopt") return NlpBackend::kNlopt;
-  return std::nullopt;
+  return value_of(kBackendNames, s);
 }
 
 namespace {

@@ -87,19 +87,15 @@ SolveResult solve_soc_fb(const SocProblem& p0, const SocFbOptions& o) {
     w += p.q;
     return soc_residuals(p, x, w).natural <= o.common.tol;
   };
-  DampedNewtonOptions dn;
-  dn.max_iterations = o.common.max_iterations > 0 ? o.common.max_iterations : 100;
-  DampedNewtonStats stats;
-  const DampedNewtonStop stop =
-      n ? damped_newton<VectorXd, MatrixXd>(z, eval, done, dn, stats) : DampedNewtonStop::kDone;
   SolveResult res;
   res.solver = "fb-soc";
+  DampedNewtonStats stats;
+  const DampedNewtonStop stop =
+      n ? damped_newton_counted<VectorXd, MatrixXd>(z, eval, done, o.common.max_iterations, res,
+                                                    stats)
+        : DampedNewtonStop::kDone;
   res.z = z * sz;
-  res.iterations = stats.iterations;
-  res.function_evals = stats.function_evals;
-  res.jacobian_evals = stats.function_evals;
-  res.line_search_steps = stats.line_search_steps;
-  res.gradient_steps = stats.gradient_steps;
+  res.jacobian_evals = res.function_evals;
   switch (stop) {
     case DampedNewtonStop::kDone: res.status = Status::kSolved; break;
     case DampedNewtonStop::kIterationLimit: res.status = Status::kIterationLimit; break;

@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "cpkit/core/enum_names.hpp"
 #include "cpkit/core/status.hpp"
 
 TEST_CASE("Status to_string / status_from_string round trip", "[status]") {
@@ -45,4 +46,21 @@ TEST_CASE("is_solution is true only for solved and solved_inaccurate", "[status]
                    Status::kNumericalFailure, Status::kInterrupted, Status::kUnsupported,
                    Status::kCycleDetected})
     CHECK_FALSE(cpkit::is_solution(s));
+}
+
+TEST_CASE("name tables: the first name of a value is its name, later ones are aliases",
+          "[status][names]") {
+  enum class Colour { kRed, kGreen, kBlue };
+  constexpr cpkit::EnumName<Colour> table[] = {
+      {Colour::kRed, "red"}, {Colour::kRed, "r"}, {Colour::kGreen, "green"}};
+  CHECK(cpkit::name_of(table, Colour::kRed) == "red");
+  CHECK(cpkit::name_of(table, Colour::kGreen) == "green");
+  CHECK(cpkit::name_of(table, Colour::kBlue) == "unknown");  // no entry
+  CHECK(cpkit::value_of(table, "red") == Colour::kRed);
+  CHECK(cpkit::value_of(table, "r") == Colour::kRed);
+  CHECK(cpkit::value_of(table, "green") == Colour::kGreen);
+  CHECK_FALSE(cpkit::value_of(table, "Red").has_value());  // exact, case-sensitive
+  CHECK_FALSE(cpkit::value_of(table, "").has_value());
+  CHECK_FALSE(cpkit::value_of(table, "unknown").has_value());
+  static_assert(cpkit::name_of(table, Colour::kRed) == "red", "usable at compile time");
 }

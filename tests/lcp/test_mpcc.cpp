@@ -392,3 +392,19 @@ TEST_CASE("invalid MPCC problems and options throw InputError", "[mpcc][input]")
   c.problem.upper = v({0, 1});
   CHECK_THROWS_AS(solve_mpcc(c.problem, {}), cpkit::InputError);
 }
+
+TEST_CASE("reformulation and backend names (mpcc.hpp)", "[mpcc][input]") {
+  using cpkit::lcp::MpccReformulation;
+  using cpkit::lcp::NlpBackend;
+  CHECK(cpkit::lcp::to_string(MpccReformulation::kScholtes) == "scholtes");
+  CHECK(cpkit::lcp::to_string(MpccReformulation::kPenalty) == "penalty");
+  CHECK(cpkit::lcp::mpcc_reformulation_from_string("scholtes") == MpccReformulation::kScholtes);
+  CHECK(cpkit::lcp::mpcc_reformulation_from_string("penalty") == MpccReformulation::kPenalty);
+  CHECK(cpkit::lcp::mpcc_reformulation_from_string("l1-penalty") == MpccReformulation::kPenalty);
+  CHECK_FALSE(cpkit::lcp::mpcc_reformulation_from_string("Scholtes"));
+  CHECK(cpkit::lcp::to_string(NlpBackend::kIpopt) == "ipopt");
+  CHECK(cpkit::lcp::to_string(NlpBackend::kNlopt) == "nlopt");
+  CHECK(cpkit::lcp::nlp_backend_from_string("ipopt") == NlpBackend::kIpopt);
+  CHECK(cpkit::lcp::nlp_backend_from_string("nlopt") == NlpBackend::kNlopt);
+  CHECK_FALSE(cpkit::lcp::nlp_backend_from_string(""));
+}

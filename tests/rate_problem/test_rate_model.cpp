@@ -5,8 +5,10 @@
 #include <limits>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/model/branch_rule.hpp"
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 
 using namespace cpkit::rate;
@@ -54,6 +56,13 @@ TEST_CASE("enum names round-trip", "[rate][model]") {
   for (auto s : {StateLabel::kA, StateLabel::kB, StateLabel::kC, StateLabel::kD})
     CHECK(state_from_string(to_string(s)) == s);
   CHECK_FALSE(state_from_string("e"));
+  // The words of docs/model.md's states are aliases of the letters.
+  CHECK(state_from_string("open") == StateLabel::kA);
+  CHECK(state_from_string("grazing") == StateLabel::kB);
+  CHECK(state_from_string("stick") == StateLabel::kC);
+  CHECK(state_from_string("sliding") == StateLabel::kD);
+  CHECK(to_string(StateLabel::kC) == "c");
+  CHECK(to_string(Criterion::kCoulomb) == "coulomb");
   for (auto t : {SolutionType::kOpen, SolutionType::kSeparation, SolutionType::kStick,
                  SolutionType::kSlipPlus, SolutionType::kSlipMinus, SolutionType::kSlip})
     CHECK(solution_type_from_string(to_string(t)) == t);
@@ -63,6 +72,22 @@ TEST_CASE("enum names round-trip", "[rate][model]") {
                  RateMethod::kFbNewton, RateMethod::kIpopt})
     CHECK(rate_method_from_string(to_string(m)) == m);
   CHECK(to_string(RateSolution::Kind::kRay) == "ray");
+}
+
+TEST_CASE("wear law and branch rule names (the CLI's --wear-law and --branch-rule values)",
+          "[rate][model]") {
+  // docs/model.md: the laws (37) Archard and (41) Mroz-Stupkiewicz, `--wear-law mroz`.
+  CHECK(to_string(WearLaw::kArchard) == "archard");
+  CHECK(to_string(WearLaw::kMrozStupkiewicz) == "mroz-stupkiewicz");
+  for (const char* name : {"archard", "37"}) CHECK(wear_law_from_string(name) == WearLaw::kArchard);
+  for (const char* name : {"mroz-stupkiewicz", "mroz", "41"})
+    CHECK(wear_law_from_string(name) == WearLaw::kMrozStupkiewicz);
+  for (const char* name : {"Archard", "38", "", "unknown"}) CHECK_FALSE(wear_law_from_string(name));
+  CHECK(to_string(BranchRule::kClosest) == "closest");
+  CHECK(to_string(BranchRule::kStop) == "stop");
+  CHECK(branch_rule_from_string("closest") == BranchRule::kClosest);
+  CHECK(branch_rule_from_string("stop") == BranchRule::kStop);
+  CHECK_FALSE(branch_rule_from_string("Stop"));
 }
 
 TEST_CASE("ContactState::validate", "[rate][model]") {

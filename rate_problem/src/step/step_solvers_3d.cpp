@@ -22,6 +22,8 @@
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "soc_fb.hpp"
+#include "step_3d_newton.hpp"
+#include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
@@ -177,15 +179,6 @@ Vec4 canonical(const Step3dProblem& pr, const Normalized& n, const Vec4& z, doub
   return z;
 }
 
-/// What a stop of the Newton loop claims when the iterate is not verified.
-Status stop_status(lcp::DampedNewtonStop stop) noexcept {
-  switch (stop) {
-    case lcp::DampedNewtonStop::kIterationLimit: return Status::kIterationLimit;
-    case lcp::DampedNewtonStop::kNonFinite: return Status::kNumericalFailure;
-    default: return Status::kStalled;
-  }
-}
-
 /// The semismooth Newton iteration from z (normalized), by the one damped Newton loop
 /// (lcp/damped_newton.hpp). Fills `out` through finalize_step_3d (not `seconds`).
 void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const CommonOptions& o,
@@ -194,24 +187,13 @@ void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const CommonOp
   auto done = [&](const Vec4& x, const Vec4& Phi) {
     return Phi.cwiseAbs().maxCoeff() <= 1e-15 && step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
   };
-  lcp::DampedNewtonOptions dn;
-  dn.max_iterations = o.max_iterations > 0 ? o.max_iterations : 100;
-  lcp::DampedNewtonStats st;
-  const lcp::DampedNewtonStop stop = lcp::damped_newton<Vec4, Mat4>(z, eval, done, dn, st);
-  out.iterations = st.iterations;
-  out.line_search_steps = st.line_search_steps;
-  out.gradient_steps = st.gradient_steps;
-  out.function_evals = st.function_evals;
-  out.merit = st.merit;
+  const Status unverified = detail::run_newton_3d<Vec4, Mat4>(z, eval, done, o, out);
   const bool claim = step_3d_residual(pr, physical(pr, n, z)) <= o.tol && fb_small(n, z);
   if (claim) z = canonical(pr, n, z, o.tol);
-  out.status = claim ? Status::kSolved : stop_status(stop);
+  out.status = claim ? Status::kSolved : unverified;
   out.solution.values = physical(pr, n, z);
   finalize_step_3d(pr, out, o);
-  if (out.status != Status::kSolved)
-    out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
-                  " after " + std::to_string(out.iterations) + " iterations (merit " +
-                  std::to_string(st.merit) + ")";
+  detail::explain_unverified(out);
 }
 
 void check(const Step3dProblem& pr) {
@@ -255,23 +237,8 @@ CommonOptions step_3d_solver_options() {
 
 void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& r,
                       const CommonOptions& options) {
-  const bool claimed = is_solution(r.status);
   r.solution = make_step_3d_solution(problem, r.solution.values);
-  const Step3dValues& v = r.solution.values;
-  r.z = Eigen::Vector4d(v.P_T1(0), v.P_T1(1), v.P_N1, v.lambda);
-  const double res = r.solution.residual;
-  r.residuals = Residuals{};
-  r.residuals.natural = res;
-  r.residuals.finite = std::isfinite(res);
-  if (res <= options.tol) {
-    r.status = Status::kSolved;
-  } else if (res <= options.tol_acceptable) {
-    r.status = Status::kSolvedInaccurate;
-  } else if (claimed) {
-    r.status = Status::kNumericalFailure;
-    r.message += (r.message.empty() ? "" : "; ") + std::string("claimed solution refuted: residual ") +
-                 std::to_string(res);
-  }
+  detail::decide_step_3d(r, &r.solution.values, 1, r.solution.residual, options);
 }
 
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {

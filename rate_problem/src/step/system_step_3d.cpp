@@ -18,6 +18,8 @@
 #include "cpkit/lcp/damped_newton.hpp"
 #include "soc_fb.hpp"
 #include "step_3d_terms.hpp"
+#include "step_3d_newton.hpp"
+#include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
@@ -271,28 +273,12 @@ Vec canonical(const SystemStep3dProblem& pr, const Normalized& n, Vec z, double 
   return z;
 }
 
-/// The verdict, as finalize_step_3d: the solution recomputed from the values and the data;
-/// kSolved when system_step_3d_residual <= tol, kSolvedInaccurate up to tol_acceptable; a
-/// refuted claim becomes kNumericalFailure; other claimed failures are kept.
+/// The verdict, as finalize_step_3d (step_3d_verdict.hpp): the solution recomputed from the
+/// values and the data, judged by system_step_3d_residual.
 void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValues>& values,
                      SystemStep3dSolveResult& r, const CommonOptions& o) {
-  const bool claimed = is_solution(r.status);
   r.solution = make_system_step_3d_solution(pr, values);
-  r.z.resize(static_cast<Eigen::Index>(4 * values.size()));
-  for (std::size_t i = 0; i < values.size(); ++i)
-    r.z.segment<4>(static_cast<Eigen::Index>(4 * i)) << values[i].P_T1, values[i].P_N1,
-        values[i].lambda;
-  const double res = r.solution.residual;
-  r.residuals = Residuals{};
-  r.residuals.natural = res;
-  r.residuals.finite = std::isfinite(res);
-  if (res <= o.tol) {
-    r.status = Status::kSolved;
-  } else if (res <= o.tol_acceptable) {
-    r.status = Status::kSolvedInaccurate;
-  } else if (claimed) {
-    r.status = Status::kNumericalFailure;
-  }
+  detail::decide_step_3d(r, values.data(), values.size(), r.solution.residual, o);
 }
 
 /// The semismooth Newton iteration by the one damped Newton loop (lcp/damped_newton.hpp).
@@ -303,26 +289,12 @@ void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z, const Com
     return Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
            system_step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
   };
-  lcp::DampedNewtonOptions dn;
-  dn.max_iterations = o.max_iterations > 0 ? o.max_iterations : 100;
-  lcp::DampedNewtonStats st;
-  const lcp::DampedNewtonStop stop = lcp::damped_newton<Vec, Mat>(z, eval, done, dn, st);
-  out.iterations = st.iterations;
-  out.line_search_steps = st.line_search_steps;
-  out.gradient_steps = st.gradient_steps;
-  out.function_evals = st.function_evals;
-  out.merit = st.merit;
+  const Status unverified = detail::run_newton_3d<Vec, Mat>(z, eval, done, o, out);
   const bool claim = verified(pr, n, z, o.tol);
   if (claim) z = canonical(pr, n, z, o.tol);
-  out.status = claim ? Status::kSolved
-               : stop == lcp::DampedNewtonStop::kIterationLimit ? Status::kIterationLimit
-               : stop == lcp::DampedNewtonStop::kNonFinite      ? Status::kNumericalFailure
-                                                                : Status::kStalled;
+  out.status = claim ? Status::kSolved : unverified;
   finalize_system(pr, physical(pr, n, z), out, o);
-  if (out.status != Status::kSolved)
-    out.message = "no verified solution: residual " + std::to_string(out.solution.residual) +
-                  " after " + std::to_string(out.iterations) + " iterations (merit " +
-                  std::to_string(st.merit) + ")";
+  detail::explain_unverified(out);
 }
 
 void check(const SystemStep3dProblem& pr) { throw_if_invalid(pr.validate(), "step"); }

@@ -117,4 +117,21 @@ DampedNewtonStop damped_newton(Vector& z, Eval&& eval, Done&& done, const Damped
   return stop;
 }
 
+/// The loop as a solver runs it: max_iterations is the solver's limit in the convention of
+/// CommonOptions::max_iterations (0: the loop's default, 100), and the counters of the run go
+/// to `result` (a SolveResult or one derived from it: iterations, function_evals,
+/// line_search_steps, gradient_steps). `stats` receives the whole statistics (merit included).
+template <class Vector, class Matrix, class Eval, class Done, class Result>
+DampedNewtonStop damped_newton_counted(Vector& z, Eval&& eval, Done&& done, int max_iterations,
+                                       Result& result, DampedNewtonStats& stats) {
+  DampedNewtonOptions o;
+  o.max_iterations = max_iterations > 0 ? max_iterations : 100;
+  const DampedNewtonStop stop = damped_newton<Vector, Matrix>(z, eval, done, o, stats);
+  result.iterations = stats.iterations;
+  result.function_evals = stats.function_evals;
+  result.line_search_steps = stats.line_search_steps;
+  result.gradient_steps = stats.gradient_steps;
+  return stop;
+}
+
 }  // namespace cpkit::lcp

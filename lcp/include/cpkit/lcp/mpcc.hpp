@@ -87,7 +87,9 @@ enum class MpccReformulation {
   /// rho_factor while complementarity is violated, up to rho_max [Ralph & Wright 2004].
   kPenalty,
 };
+/// "scholtes" / "penalty"
 std::string_view to_string(MpccReformulation r) noexcept;
+/// Also accepts "l1-penalty".
 std::optional<MpccReformulation> mpcc_reformulation_from_string(std::string_view s) noexcept;
 
 /// Which NLP solver solves the smooth subproblems.
@@ -95,6 +97,7 @@ enum class NlpBackend {
   kIpopt,  ///< Ipopt 3.11 (interior point, MUMPS), calls serialized by a global mutex
   kNlopt,  ///< NLopt SLSQP (sequential quadratic programming, dense), exceptions mapped
 };
+/// "ipopt" / "nlopt"
 std::string_view to_string(NlpBackend b) noexcept;
 std::optional<NlpBackend> nlp_backend_from_string(std::string_view s) noexcept;
 

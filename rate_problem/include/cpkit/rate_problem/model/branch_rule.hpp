@@ -5,6 +5,8 @@
 #include <optional>
 #include <string_view>
 
+#include "cpkit/core/enum_names.hpp"
+
 namespace cpkit::rate {
 
 enum class BranchRule {
@@ -12,21 +14,17 @@ enum class BranchRule {
   kStop,     ///< stop the run at the first branch point
 };
 
+/// The names of the rules ("closest", "stop"), for to_string and branch_rule_from_string.
+inline constexpr EnumName<BranchRule> kBranchRuleNames[] = {
+    {BranchRule::kClosest, "closest"},
+    {BranchRule::kStop, "stop"},
+};
+
 /// "closest" / "stop"
-inline std::string_view to_string(BranchRule r) noexcept {
-  switch (r) {
-    case BranchRule::kClosest:
-      return "closest";
-    case BranchRule::kStop:
-      return "stop";
-  }
-  return "unknown";
-}
+inline std::string_view to_string(BranchRule r) noexcept { return name_of(kBranchRuleNames, r); }
 
 inline std::optional<BranchRule> branch_rule_from_string(std::string_view s) noexcept {
-  if (s == "closest") return BranchRule::kClosest;
-  if (s == "stop") return BranchRule::kStop;
-  return std::nullopt;
+  return value_of(kBranchRuleNames, s);
 }
 
 }  // namespace cpkit::rate
