@@ -368,8 +368,7 @@ GridRunOptions grid_run_options(const SystemMapRequest& r, const SystemGridPlan&
 MapOutcome finish_system_grid(const SystemMapRequest& r, nlohmann::json j, nlohmann::json& files,
                               const ChunkRunStats& stats, const nlohmann::json& estimate,
                               const Stopwatch& clock, const std::string& incomplete,
-                              const std::function<std::string()>& text,
-                              const MapEnvironment& env) {
+                              const std::string& text, const MapEnvironment& env) {
   j["cpkit_version"] = env.version;
   j["threads"] = map_worker_threads(r.threads, std::numeric_limits<int>::max());
   j["estimate"] = estimate;
@@ -384,65 +383,55 @@ MapOutcome finish_system_grid(const SystemMapRequest& r, nlohmann::json j, nlohm
     plot_failed = !write_map_json(r.out, r.plot, j, files, env);
   }
   MapOutcome o;
-  o.text = text() + (r.out.empty() ? "" : map_files_text(r.out, files));
+  o.text = text + (r.out.empty() ? "" : map_files_text(r.out, files));
   o.json = std::move(j);
   o.exit_code = !complete ? kExitInconclusive : plot_failed ? kExitInternal : kExitOk;
   if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
   return o;
 }
 
-/// `--kind param-direction`: count and point-type pattern per (parameter, direction) cell.
-MapOutcome run_system_param_direction(const SystemMapRequest& r, const MapEnvironment& env) {
+/// `--kind param-direction` (count and point-type pattern per (parameter, direction) cell) and
+/// `--kind param-param` (per cell, the class of its exact direction map and the union pattern).
+MapOutcome run_system_grid(const SystemMapRequest& r, const MapEnvironment& env) {
   const Stopwatch clock;
   const SystemGridPlan p = make_system_grid_plan(r);
   const int N = p.sys.n_points();
+  const bool pd = r.kind == "param-direction";
+  const bool npy = !r.out.empty() && r.format == "npy", csv = !r.out.empty() && r.format == "csv";
   nlohmann::json files = nlohmann::json::object();
   GridFiles out(r.out, files);
   const nlohmann::json estimate = check_estimate(
-      estimate_system_param_direction_map(p.sys, p.axis, r.theta_n, p.options), r, p, 3, env);
-  const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
-  const bool writing = !r.out.empty();
-  const SystemParamDirectionSink sink = system_param_direction_files(
-      out, p.axis, theta, writing && r.format == "npy", writing && r.format == "csv");
-  SystemParamDirectionRun res;
-  if (!run_to_files(out, res, env, [&] {
-        return run_system_param_direction_map(p.sys, p.axis, r.theta_n, p.options,
-                                              grid_run_options(r, p, env), sink);
-      }))
-    return other_rank();
-  const SystemParamDirectionMap& m = res.map;
-  return finish_system_grid(
-      r, system_param_direction_json(m, N, p.input), files, res.stats, estimate, clock,
-      "cpkit map: " + std::to_string(m.unreliable) +
-          " cells too close to call: the map is not proved complete\n",
-      [&] { return system_param_direction_map_text(m, N, r, p.axis); }, env);
-}
-
-/// `--kind param-param`: per cell, the class of its exact direction map and the union pattern.
-MapOutcome run_system_param_param(const SystemMapRequest& r, const MapEnvironment& env) {
-  const Stopwatch clock;
-  const SystemGridPlan p = make_system_grid_plan(r);
-  const int N = p.sys.n_points();
-  nlohmann::json files = nlohmann::json::object();
-  GridFiles out(r.out, files);
-  const nlohmann::json estimate = check_estimate(
-      estimate_system_param_param_map(p.sys, p.axis, p.axis2, p.options), r, p, 5, env);
-  const bool writing = !r.out.empty();
-  const SystemParamParamSink sink = system_param_param_files(
-      out, p.axis, p.axis2, writing && r.format == "npy", writing && r.format == "csv");
+      pd ? estimate_system_param_direction_map(p.sys, p.axis, r.theta_n, p.options)
+         : estimate_system_param_param_map(p.sys, p.axis, p.axis2, p.options),
+      r, p, pd ? 3 : 5, env);
+  if (pd) {
+    const std::vector<double> theta = map_theta_values(r.theta_n, r.theta_from, r.theta_to);
+    SystemParamDirectionRun res;
+    if (!run_to_files(out, res, env, [&] {
+          return run_system_param_direction_map(
+              p.sys, p.axis, r.theta_n, p.options, grid_run_options(r, p, env),
+              system_param_direction_files(out, p.axis, theta, npy, csv));
+        }))
+      return other_rank();
+    return finish_system_grid(r, system_param_direction_json(res.map, N, p.input), files,
+                              res.stats, estimate, clock,
+                              "cpkit map: " + std::to_string(res.map.unreliable) +
+                                  " cells too close to call: the map is not proved complete\n",
+                              system_param_direction_map_text(res.map, N, r, p.axis), env);
+  }
   SystemParamParamRun res;
   if (!run_to_files(out, res, env, [&] {
         return run_system_param_param_map(p.sys, p.axis, p.axis2, p.options,
-                                          grid_run_options(r, p, env), sink);
+                                          grid_run_options(r, p, env),
+                                          system_param_param_files(out, p.axis, p.axis2, npy, csv));
       }))
     return other_rank();
-  const SystemParamParamMap& m = res.map;
   return finish_system_grid(
-      r, system_param_param_json(m, N, p.input), files, res.stats, estimate, clock,
-      "cpkit map: " + std::to_string(m.unreliable) + " evaluations too close to call and " +
-          std::to_string(m.inconsistent_sectors) +
+      r, system_param_param_json(res.map, N, p.input), files, res.stats, estimate, clock,
+      "cpkit map: " + std::to_string(res.map.unreliable) + " evaluations too close to call and " +
+          std::to_string(res.map.inconsistent_sectors) +
           " sectors not uniform: the map is not proved complete\n",
-      [&] { return system_param_param_map_text(m, N, r, p.axis, p.axis2); }, env);
+      system_param_param_map_text(res.map, N, r, p.axis, p.axis2), env);
 }
 
 /// The exact direction map of N points (sectors and critical directions), its CSV.
@@ -602,8 +591,7 @@ MapOutcome run_one_point_map(const MapRequest& a, const MapEnvironment& env) {
 
 MapOutcome run_system_map(const SystemMapRequest& r, const MapEnvironment& env) {
   const std::shared_ptr<void> lock = claim(env, r.out, {{"--system", r.path}});
-  if (r.kind == "param-direction") return run_system_param_direction(r, env);
-  if (r.kind == "param-param") return run_system_param_param(r, env);
+  if (r.kind == "param-direction" || r.kind == "param-param") return run_system_grid(r, env);
   return run_system_direction(r, env);
 }
 
