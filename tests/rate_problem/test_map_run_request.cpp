@@ -24,15 +24,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The Fig. 5(b) model (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25, mu = 3, state b) as options.
-MapRequest fig5b_request() {
+/// The Fig. 5(b) preset (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25, mu = 3, state b; a direction
+/// map, or a mu axis over [0.1, 4]) with the options `given` over it.
+MapRequest fig5b_request(std::vector<std::string> given = {}) {
   MapRequest a;
-  a.a11 = 1;
-  a.a12 = 0.5;
-  a.a22 = 1;
-  a.mu = 3;
-  a.C_T = 0.25;
-  a.options_given = {"--a11", "--a12", "--a22", "--mu", "--C_T"};
+  a.preset = "fig5b";
+  a.options_given = {"--preset"};
+  a.options_given.insert(a.options_given.end(), given.begin(), given.end());
   return a;
 }
 
@@ -89,6 +87,7 @@ TEST_CASE("Fig. 5(b) direction map from the request: closed-form critical direct
   CHECK(o.exit_code == cpkit::kExitOk);
   CHECK(o.printing);
   CHECK(o.json["kind"] == "direction");
+  CHECK(o.json["preset"] == "fig5b");
   CHECK(o.json["cpkit_version"] == "test-version");
   CHECK(o.json["run"] == env.run_echo);
   check_fig5b_critical(o.json["critical"]);
@@ -114,16 +113,11 @@ TEST_CASE("The same model as a one-point system file: the N-point route's critic
 
 TEST_CASE("A param-direction grid over mu: the critical value D+ = 0 at mu = a11/a12 = 2",
           "[rate][maps][request]") {
-  MapRequest a = fig5b_request();
+  MapRequest a = fig5b_request({"--kind", "--n", "--theta-n", "--threads"});
   a.kind = "param-direction";
-  a.param = "mu";
-  a.from = 0.5;
-  a.to = 3.5;
-  a.n = 7;
+  a.n = 7;  // mu = 0.1, 0.75, ..., 4
   a.theta_n = 24;
   a.threads = 1;
-  a.options_given = {"--a11", "--a12", "--a22", "--C_T", "--kind", "--param", "--from", "--to",
-                     "--n", "--theta-n", "--threads"};
   const MapOutcome o = run_map_request(a);
   CHECK(o.exit_code == cpkit::kExitOk);
   CHECK(o.json["cells"] == 7 * 24);
@@ -146,7 +140,7 @@ TEST_CASE("Exit codes of a picture asked for: 4 when not drawn, 0 when drawn",
   MapRequest a = fig5b_request();
   a.out = (dir / "m").string();
   a.plot = true;
-  a.options_given.insert(a.options_given.end(), {"--out", "--plot"});
+  a.options_given = {"--preset", "--out", "--plot"};
   int claims = 0;
   MapEnvironment env;
   env.claim_prefix = [&](const std::string& prefix, const auto& inputs) {
@@ -182,13 +176,9 @@ TEST_CASE("Refused requests: the messages users see (exit 2)", "[rate][maps][req
                                           "PREFIX (the finished chunks are kept in PREFIX.parts)");
   }
   SECTION("an axis of no values, in options") {
+    a = fig5b_request({"--kind", "--n"});
     a.kind = "param-direction";
-    a.param = "mu";
-    a.from = 0.5;
-    a.to = 3.5;
     a.n = 0;
-    a.options_given = {"--a11", "--a12", "--a22", "--C_T", "--kind", "--param", "--from", "--to",
-                       "--n"};
     CHECK_THROWS_WITH(run_map_request(a), "--n must be >= 1, got 0");
   }
   SECTION("a direction map's range of directions, in options") {
