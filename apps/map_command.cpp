@@ -1,125 +1,114 @@
 // `cpkit map`: non-existence and non-uniqueness maps of the rate problem (docs/maps.md).
-// Thin: parse, call the library (cpkit/rate_problem/{direction_map,grid_map,map_output}.hpp),
-// write CSV/JSON, run the plotting script.
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <optional>
-#include <string>
+// Thin: the options into the request (maps/map_request.hpp), the --system file read once, one
+// library call (maps/map_request_run.hpp) with what only the program has (MPI, stderr, the
+// lock of --out PREFIX, the plotting script, free memory and disk), the summary printed.
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <iomanip>
-#include <initializer_list>
+#include <iostream>
 #include <map>
-#include <vector>
 #include <memory>
-#include <thread>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_common.hpp"
-#include "map_args.hpp"
-#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
-#include "map_files.hpp"
-#include "map_system.hpp"
-#include "map_system_3d.hpp"
-#include "platform/mpi_session.hpp"
-#include "cli_options.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "cpkit/rate_problem/maps/map_request_run.hpp"
 #include "data_files.hpp"
-#include "run_program.hpp"
 #include "machine_resources.hpp"
-#include "memory_limit.hpp"
-#include "cpkit/core/timer.hpp"
-#include "cpkit/rate_problem/maps/direction_map.hpp"
-#include "cpkit/rate_problem/maps/grid_map.hpp"
-#include "cpkit/rate_problem/maps/map_output.hpp"
-#include "cpkit/rate_problem/maps/map_presets.hpp"
-#include "cpkit/rate_problem/maps/npy_writer.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "output_guard.hpp"
+#include "platform/mpi_session.hpp"
+#include "run_program.hpp"
 
 namespace cpkit::cli {
-
-std::string fmt(double x, int digits) {
-  std::ostringstream s;
-  s << std::setprecision(digits) << x;
-  return s.str();
-}
-
-std::string types_text(unsigned mask) {
-  std::string s = rate::types_to_string(mask);
-  for (auto& c : s)
-    if (c == '|') c = ',';
-  std::string out;
-  for (char c : s) {
-    out += c;
-    if (c == ',') out += ' ';
-  }
-  return out;
-}
-
-std::string count_text(int count) {
-  if (count < 0) return "a continuum of solutions";
-  if (count == 0) return "no solution";
-  return std::to_string(count) + (count == 1 ? " solution" : " solutions");
-}
-
-
 
 namespace {
 
 namespace fs = std::filesystem;
-using namespace cpkit::rate;
 
+constexpr int kPlotNoMatplotlib = 5;  // exit code of cpkit_plot.py when matplotlib is missing
 
-}  // namespace
+/// The options of `cpkit map` as given, with their CLI11 options.
+struct MapArgs : rate::MapRequest {
+  std::map<std::string, CLI::Option*> opt;
+};
 
-MapSetup build_setup(const MapArgs& a) {
-  MapSetup s = rate::make_map_setup(a, [](const std::string& note) {
-    if (mpi::rank() == 0) std::cerr << "cpkit map: note: " << note << '\n';
-  });
-  // MapAxis::validate() names the fields n, from, to: here they are options.
-  if (s.kind != MapKind::kDirection)
-    throw_if_invalid_option(s.axis.validate(), {{"n", "--n"}, {"from", "--from"}, {"to", "--to"}});
-  if (s.kind == MapKind::kParamParam)
-    throw_if_invalid_option(s.axis2.validate(),
-                            {{"n", "--n2"}, {"from", "--from2"}, {"to", "--to2"}});
-  if (s.kind == MapKind::kParamDirection && (s.theta_n < 1 || s.theta_n > 1000000))
-    throw InputError("--theta-n must be in [1, 1000000]");
-  return s;
+/// Runs the plotting script on PREFIX.json; false when no picture was drawn (the data is
+/// written either way). Adds "png" and "svg" to `files` on success.
+bool run_map_plot(const std::string& prefix, nlohmann::json& files) {
+  std::string searched;
+  const std::string script = find_data_file("cpkit_plot.py", &searched);
+  if (script.empty()) {
+    std::cerr << "cpkit map: plotting script cpkit_plot.py not found (looked in " << searched
+              << "); the data is in " << prefix << ".json and the files it lists\n";
+    return false;
+  }
+  const std::vector<std::string> argv = {plot_python(), script, prefix + ".json"};
+  const std::string cmd = command_text(argv);
+  const ProgramRun pr = run_program(argv, true, kPlotTimeLimit);
+  const int code = pr.started ? pr.exit_code : -1;
+  if (code == 0) {
+    files["png"] = fs::path(prefix + ".png").filename().string();
+    files["svg"] = fs::path(prefix + ".svg").filename().string();
+    std::cerr << "cpkit map: wrote " << prefix << ".png and " << prefix << ".svg\n";
+    return true;
+  }
+  if (code == kPlotNoMatplotlib) {
+    std::cerr << "cpkit map: no picture: matplotlib is not available to " << plot_python()
+              << ". The data was written (" << prefix
+              << ".json and the files it lists). To get the picture install matplotlib (Debian: "
+                 "apt-get install python3-matplotlib) and run:\n  "
+              << cmd << '\n';
+  } else {
+    std::cerr << "cpkit map: the plotting script failed ("
+              << (pr.error.empty() ? "exit " + std::to_string(code) : pr.error)
+              << "); the data was written. Command:\n  " << cmd << '\n';
+  }
+  return false;
 }
 
-namespace {
-
-/// `cpkit map --system FILE` of N 2-D points.
-int run_map_n_points(const MapArgs& a, rate::SystemFile file) {
-  const SystemMapRequest r = rate::system_map_request(a, std::move(file), mpi::size());
-  std::unique_ptr<PrefixLock> lock;  // held until the map is written
-  if (!r.out.empty()) lock = claim_map_prefix(r.out, {{"--system", r.path}});
-  return run_map_system(r);
+/// Everything a map does with --out PREFIX before it writes: refuses a PREFIX whose files or
+/// checkpoint folder PREFIX.parts would overwrite or remove an input, creates PREFIX's folder,
+/// and on rank 0 locks the prefix for the run (null on other ranks).
+std::shared_ptr<void> claim_map_prefix(
+    const std::string& prefix, const std::vector<std::pair<std::string, std::string>>& named) {
+  std::vector<NamedPath> inputs;
+  for (const auto& [what, path] : named) inputs.push_back({what, path});
+  if (fs::path(prefix).filename().empty())
+    throw InputError("--out needs a file prefix such as out/map (got '" + prefix + "')");
+  refuse_outputs_over_inputs("cpkit map", map_output_files(prefix), inputs);
+  for (const auto& i : inputs)
+    if (inside_folder(i.path, prefix + ".parts"))
+      throw InputError("cpkit map: the input '" + i.path + "' (" + i.what +
+                       ") lies in the checkpoint folder '" + prefix +
+                       ".parts' of --out " + prefix + ", which a map replaces; move it first");
+  const fs::path parent = fs::path(prefix).parent_path();
+  std::error_code ec;
+  if (!parent.empty()) fs::create_directories(parent, ec);
+  if (ec) throw InputError("cannot create the output folder '" + parent.string() + "'");
+  if (mpi::rank() != 0) return nullptr;
+  return std::make_unique<PrefixLock>(prefix);
 }
 
-int run_map(const MapArgs& a) {
-  if (a.list_presets) {
-    for (const auto& p : map_presets())
-      std::cout << p.name << " (" << to_string(p.kind) << "): " << p.description << '\n';
-    return kExitOk;
-  }
-  // The system file is read once (a pipe can be read only once) and dispatched on its dim.
-  std::optional<rate::SystemFile> file;
-  if (a.given("--system")) file = rate::read_system_file(a.system);
-  if (file && file->dim == 3) {
-    rate::MapRequest r = a;
-    r.file = std::move(*file);
-    return run_map_system_3d(r);
-  }
-  for (const char* o : {"--facets", "--point", "--others", "--gamma"})
-    if (a.given(o))
-      throw InputError(std::string(o) + " applies to maps of 3-D systems (--system FILE with "
-                       "\"dim\": 3)");
-  if (file) return run_map_n_points(a, std::move(*file));
-  return run_map_one_point(a);
+int run_map(MapArgs& a) {
+  // The system file is read once (a pipe can be read only once); the library dispatches on its dim.
+  if (a.given("--system") && !a.list_presets) a.file = rate::read_system_file(a.system);
+  rate::MapEnvironment env;
+  env.transport = mpi::map_transport();
+  env.err = &std::cerr;
+  env.progress = true;
+  env.version = CPKIT_VERSION;
+  env.run_echo = run_echo();
+  env.claim_prefix = claim_map_prefix;
+  env.plot = run_map_plot;
+  env.available_memory = available_memory_bytes;
+  env.free_disk = free_disk_bytes;
+  const rate::MapOutcome o = rate::run_map_request(a, env);
+  if (!o.printing) return o.exit_code;  // ranks other than 0: rank 0 writes and prints
+  if (a.json && !o.json.is_null())
+    print_json(o.json);
+  else
+    std::cout << o.text;
+  return o.exit_code;
 }
 
 }  // namespace
@@ -150,7 +139,7 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                      "friction-and-wear criterion: 38 (Coulomb, default) or 35 "
                                      "(softening; state d uses mu_eff = mu - 2 kappa)");
   o["--param"] = cmd->add_option("--param", args->param,
-                                 "first axis: " + map_parameter_names(kMapOnePoint) +
+                                 "first axis: " + rate::map_parameter_names(rate::kMapOnePoint) +
                                      " (systems: see --system)");
   o["--from"] = cmd->add_option("--from", args->from, "first axis start")->default_str("");
   o["--to"] = cmd->add_option("--to", args->to, "first axis end")->default_str("");

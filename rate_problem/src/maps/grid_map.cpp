@@ -10,6 +10,7 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
@@ -19,6 +20,34 @@
 namespace cpkit::rate {
 
 namespace {
+
+/// Rows [row0, row1) of a grid map in blocks of `block_rows` (the rows' buffers hold one block,
+/// indexed from `block_begin`): every row of a block computed (`row(i)` on `threads`), then
+/// `block(block_begin, block_end)` (its summary, its sink); progress "cells" throughout.
+template <class Row, class Block>
+void run_row_blocks(int row0, int row1, int block_rows, int threads, int& block_begin,
+                    const MapProgress& progress, const Row& row, const Block& block) {
+  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
+    const int block_end = std::min(row1, block_begin + block_rows);
+    run_items(block_begin, block_end, threads, row, [&](int done) {
+      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
+    });
+    block(block_begin, block_end);
+  }
+  if (progress) progress("cells", 1.0);
+}
+
+/// The classes with cells, in code order (code = index + first_code).
+template <std::size_t K>
+std::vector<GridClassBox> present_classes(std::array<GridClassBox, K>& boxes, int first_code) {
+  std::vector<GridClassBox> v;
+  for (std::size_t c = 0; c < K; ++c)
+    if (boxes[c].cells > 0) {
+      boxes[c].code = static_cast<int>(c) + first_code;
+      v.push_back(boxes[c]);
+    }
+  return v;
+}
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 struct ParamName {
@@ -362,33 +391,17 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     }
   };
 
-  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
-    const int block_end = std::min(row1, block_begin + block_rows);
-    run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
-    });
-    summarize_rows(block_begin, block_end);
-    if (sink) {
-      ParamDirectionRows rows;
-      rows.row_begin = block_begin;
-      rows.row_end = block_end;
-      rows.count = count.data();
-      rows.types = types.data();
-      rows.disagree = cross ? disagree.data() : nullptr;
-      sink(rows);
-    }
-  }
-  if (progress) progress("cells", 1.0);
-  if (!sink) {
-    map.count = std::move(count);
-    map.types = std::move(types);
-    map.disagree = std::move(disagree);
-  }
-  for (std::size_t c = 0; c < boxes.size(); ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c) - 1;
-      map.classes.push_back(boxes[c]);
-    }
+  run_row_blocks(row0, row1, block_rows, map.threads, block_begin, progress, row,
+                 [&](int b0, int b1) {
+                   summarize_rows(b0, b1);
+                   if (sink)
+                     sink(ParamDirectionRows{b0, b1, count.data(), types.data(),
+                                             cross ? disagree.data() : nullptr});
+                 });
+  if (!sink)
+    std::tie(map.count, map.types, map.disagree) =
+        std::forward_as_tuple(std::move(count), std::move(types), std::move(disagree));
+  map.classes = present_classes(boxes, -1);
   for (int i = row0; i < row1; ++i) {
     map.disagreements += row_disagree[i - row0];
     map.unreliable += row_unreliable[i - row0];
@@ -495,40 +508,22 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
     }
   };
   std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
-  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
-    const int block_end = std::min(row1, block_begin + block_rows);
-    run_items(block_begin, block_end, map.threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
-    });
-    for (int i = block_begin; i < block_end; ++i)
-      for (int j = 0; j < n2; ++j)
-        boxes[cls[static_cast<std::size_t>(i - block_begin) * n2 + j]].add(axis1.value(i),
-                                                                         axis2.value(j));
-    if (sink) {
-      ParamParamRows rows;
-      rows.row_begin = block_begin;
-      rows.row_end = block_end;
-      rows.cls = cls.data();
-      rows.min_count = min_count.data();
-      rows.max_count = max_count.data();
-      rows.types = types.data();
-      rows.disagree = map.cross_checked ? disagree.data() : nullptr;
-      sink(rows);
-    }
-  }
-  if (progress) progress("cells", 1.0);
-  if (!sink) {
-    map.cls = std::move(cls);
-    map.min_count = std::move(min_count);
-    map.max_count = std::move(max_count);
-    map.types = std::move(types);
-    map.disagree = std::move(disagree);
-  }
-  for (std::size_t c = 0; c < boxes.size(); ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c);
-      map.classes.push_back(boxes[c]);
-    }
+  run_row_blocks(row0, row1, block_rows, map.threads, block_begin, progress, row,
+                 [&](int b0, int b1) {
+                   for (int i = b0; i < b1; ++i)
+                     for (int j = 0; j < n2; ++j)
+                       boxes[cls[static_cast<std::size_t>(i - b0) * n2 + j]].add(
+                           axis1.value(i), axis2.value(j));
+                   if (sink)
+                     sink(ParamParamRows{b0, b1, cls.data(), min_count.data(), max_count.data(),
+                                         types.data(),
+                                         map.cross_checked ? disagree.data() : nullptr});
+                 });
+  if (!sink)
+    std::tie(map.cls, map.min_count, map.max_count, map.types, map.disagree) =
+        std::forward_as_tuple(std::move(cls), std::move(min_count), std::move(max_count),
+                              std::move(types), std::move(disagree));
+  map.classes = present_classes(boxes, 0);
   for (int i = row0; i < row1; ++i) {
     map.disagreements += row_dis[i - row0];
     map.inconsistent_sectors += row_inc[i - row0];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "run_items.hpp"
 
 namespace cpkit::rate {
 
@@ -37,9 +38,6 @@ void append_bytes(std::vector<T>& v, const std::string& bytes) {
   v.insert(v.end(), p, p + bytes.size() / sizeof(T));
 }
 
-void append_raw(std::string& s, const void* p, std::size_t n) {
-  s.append(static_cast<const char*>(p), n);
-}
 
 
 }  // namespace
@@ -73,11 +71,8 @@ ParamDirectionRun run_param_direction_map(const ContactParameters& params,
     const ParamDirectionMap part = compute_param_direction_map(
         params, state, axis, theta_n, options, {},
         [&](const ParamDirectionRows& r) {
-          const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                    static_cast<std::size_t>(theta_n);
-          append_raw(cnt, r.count, cells);
-          append_raw(typ, r.types, cells);
-          if (r.disagree) append_raw(dis, r.disagree, cells);
+          append_raw_cells(block_cells(r, theta_n),
+                           {{&cnt, r.count}, {&typ, r.types}, {&dis, r.disagree}});
         },
         RowRange{c.row_begin, c.row_end});
     nlohmann::json crit = nlohmann::json::array(), values = nlohmann::json::array();
@@ -160,13 +155,11 @@ ParamParamRun run_param_param_map(const ContactParameters& params, const Contact
     const ParamParamMap part = compute_param_param_map(
         params, state, axis1, axis2, options, {},
         [&](const ParamParamRows& r) {
-          const std::size_t cells = static_cast<std::size_t>(r.row_end - r.row_begin) *
-                                    static_cast<std::size_t>(axis2.n);
-          append_raw(cls, r.cls, cells);
-          append_raw(lo, r.min_count, cells);
-          append_raw(hi, r.max_count, cells);
-          append_raw(typ, r.types, cells);
-          if (r.disagree) append_raw(dis, r.disagree, cells);
+          append_raw_cells(block_cells(r, axis2.n), {{&cls, r.cls},
+                                                     {&lo, r.min_count},
+                                                     {&hi, r.max_count},
+                                                     {&typ, r.types},
+                                                     {&dis, r.disagree}});
         },
         RowRange{c.row_begin, c.row_end});
     nlohmann::json curve = nlohmann::json::array();

@@ -1,28 +1,21 @@
 // The plan, the run and the up-front cost of a 3-D map (maps/map_3d_plan.hpp), moved out of
-// the program (apps/map_system_3d.cpp keeps the option checks and the printing).
+// the program (maps/map_request_run.cpp runs the request, report/map_text.cpp words the summary).
 #include "cpkit/rate_problem/maps/map_3d_plan.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
+#include "cpkit/rate_problem/report/map_text.hpp"
 
 namespace cpkit::rate {
 
 namespace {
 
 constexpr double kPi = 3.141592653589793;
-
-std::string fmt(double x, int digits = 4) {
-  std::ostringstream s;
-  s << std::setprecision(digits) << x;
-  return s.str();
-}
 
 /// A map axis of the request: --paramS NAME (the map parameter table's), --fromS, --toS, --nS.
 Map3dAxis axis_of(const std::string& param, double from, double to, int n, int n_points,
@@ -270,7 +263,7 @@ double estimate_map_3d_seconds(const Map3dPlan& p, int threads, int64_t& sampled
     if (!(one.time_limit_s > 0) || m.timed_out_cells > 0)
       throw InputError("the map has " + p.cells_text + "; a timed sample of " +
                        std::to_string(std::max<int64_t>(1, m.cells())) +
-                       " of them alone ran past --time-limit " + fmt(time_limit) +
+                       " of them alone ran past --time-limit " + map_number_text(time_limit) +
                        " s (the time limit was reached): " + p.fewer +
                        (p.options.facets ? ", fewer --facets or fewer grazing points" : "") +
                        ", or raise --time-limit");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <tuple>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/memory_limit.hpp"
@@ -266,20 +267,12 @@ SystemMapRequest system_map_request(const MapRequest& a, SystemFile file, int pr
   r.path = a.system;
   r.file = std::move(file);
   r.kind = kind;
-  r.out = a.out;
-  r.json = a.json;
-  r.plot = a.plot;
-  r.resume = a.resume;
-  r.format = a.format;
-  r.threads = a.threads;
-  r.time_limit = a.time_limit;
   r.max_output = max_output;
-  r.param = a.param;
-  r.from = a.from;
-  r.to = a.to;
-  r.param2 = a.param2;
-  r.from2 = a.from2;
-  r.to2 = a.to2;
+  std::tie(r.out, r.format, r.threads, r.time_limit) =
+      std::tie(a.out, a.format, a.threads, a.time_limit);
+  std::tie(r.json, r.plot, r.resume) = std::tie(a.json, a.plot, a.resume);
+  std::tie(r.param, r.from, r.to) = std::tie(a.param, a.from, a.to);
+  std::tie(r.param2, r.from2, r.to2) = std::tie(a.param2, a.from2, a.to2);
   if (a.given("--n")) r.n = a.n;
   if (a.given("--n2")) r.n2 = a.n2;
   if (a.given("--theta-n")) r.theta_n = a.theta_n;

@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <initializer_list>
 #include <mutex>
 #include <thread>
 #include <string>
@@ -16,6 +17,25 @@
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 
 namespace cpkit::rate {
+
+/// One cell array of a block of rows, as the bytes of a map chunk (map_run.hpp).
+struct RawCells {
+  std::string* bytes;
+  const void* data;  ///< null: an absent array (skipped)
+  std::size_t item_bytes = 1;
+};
+
+/// Appends `cells` items of every present array to its bytes.
+inline void append_raw_cells(std::size_t cells, std::initializer_list<RawCells> arrays) {
+  for (const RawCells& a : arrays)
+    if (a.data) a.bytes->append(static_cast<const char*>(a.data), cells * a.item_bytes);
+}
+
+/// Cells of a block of rows [row_begin, row_end) of a grid with `cols` columns.
+template <class Rows>
+std::size_t block_cells(const Rows& r, int cols) {
+  return static_cast<std::size_t>(r.row_end - r.row_begin) * static_cast<std::size_t>(cols);
+}
 
 /// The rows [first, last) a call computes; throws InputError for a range outside [0, rows].
 inline std::pair<int, int> checked_range(const RowRange& r, int rows) {

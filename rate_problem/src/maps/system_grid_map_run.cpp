@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "run_items.hpp"
 
 namespace cpkit::rate {
 
@@ -71,13 +72,31 @@ std::vector<uint16_t> ids_of(const std::string& bytes) {
   return ids;
 }
 
-void append_raw(std::string& s, const void* p, std::size_t n) {
-  s.append(static_cast<const char*>(p), n);
-}
 
 template <class T>
 void append_cells(std::vector<T>& v, const T* p, std::size_t n) {
   v.insert(v.end(), p, p + n);
+}
+
+/// The rows of a chunk (their arrays set by the caller).
+template <class Rows>
+Rows rows_of(const MapChunk& c) {
+  Rows r;
+  r.row_begin = c.row_begin;
+  r.row_end = c.row_end;
+  return r;
+}
+
+/// A map's cells kept in the map (no sink): `n` cells of every array.
+void store_rows(SystemParamDirectionMap& m, const SystemParamDirectionRows& r, std::size_t n) {
+  append_cells(m.count, r.count, n);
+  append_cells(m.pattern, r.pattern, n);
+}
+void store_rows(SystemParamParamMap& m, const SystemParamParamRows& r, std::size_t n) {
+  append_cells(m.cls, r.cls, n);
+  append_cells(m.min_count, r.min_count, n);
+  append_cells(m.max_count, r.max_count, n);
+  append_cells(m.pattern, r.pattern, n);
 }
 
 nlohmann::json axis_json(const SystemMapAxis& a) {
@@ -100,10 +119,8 @@ SystemParamDirectionRun run_system_param_direction_map(const ContactSystem& sys,
     const SystemParamDirectionMap m = compute_system_param_direction_map(
         sys, axis, theta_n, options, {},
         [&](const SystemParamDirectionRows& rows) {
-          const std::size_t n = static_cast<std::size_t>(rows.row_end - rows.row_begin) *
-                                static_cast<std::size_t>(theta_n);
-          append_raw(count, rows.count, n);
-          append_raw(pattern, rows.pattern, 2 * n);
+          append_raw_cells(block_cells(rows, theta_n),
+                           {{&count, rows.count}, {&pattern, rows.pattern, 2}});
         },
         RowRange{c.row_begin, c.row_end});
     c.summary = chunk_summary(m.classes, m.table, m.unreliable, 0, m.m_max);
@@ -120,17 +137,10 @@ SystemParamDirectionRun run_system_param_direction_map(const ContactSystem& sys,
         count.size() != static_cast<std::size_t>(c.row_end - c.row_begin) * theta_n)
       throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
     merge.add(c.summary, ids);
-    SystemParamDirectionRows rows;
-    rows.row_begin = c.row_begin;
-    rows.row_end = c.row_end;
+    auto rows = rows_of<SystemParamDirectionRows>(c);
     rows.count = reinterpret_cast<const int8_t*>(count.data());
     rows.pattern = ids.data();
-    if (sink) {
-      sink(rows);
-    } else {
-      append_cells(m.count, rows.count, ids.size());
-      append_cells(m.pattern, rows.pattern, ids.size());
-    }
+    sink ? sink(rows) : store_rows(m, rows, ids.size());
   };
   const nlohmann::json manifest = {
       {"axis", axis_json(axis)},
@@ -163,12 +173,10 @@ SystemParamParamRun run_system_param_param_map(const ContactSystem& sys,
     const SystemParamParamMap m = compute_system_param_param_map(
         sys, a1, a2, options, {},
         [&](const SystemParamParamRows& rows) {
-          const std::size_t n = static_cast<std::size_t>(rows.row_end - rows.row_begin) *
-                                static_cast<std::size_t>(a2.n);
-          append_raw(cls, rows.cls, n);
-          append_raw(lo, rows.min_count, n);
-          append_raw(hi, rows.max_count, n);
-          append_raw(pattern, rows.pattern, 2 * n);
+          append_raw_cells(block_cells(rows, a2.n), {{&cls, rows.cls},
+                                                     {&lo, rows.min_count},
+                                                     {&hi, rows.max_count},
+                                                     {&pattern, rows.pattern, 2}});
         },
         RowRange{c.row_begin, c.row_end});
     c.summary = chunk_summary(m.classes, m.table, m.unreliable, m.inconsistent_sectors, m.m_max);
@@ -185,21 +193,12 @@ SystemParamParamRun run_system_param_param_map(const ContactSystem& sys,
     if (cls.size() != n || lo.size() != n || hi.size() != n || ids.size() != n)
       throw InputError("corrupt map chunk " + std::to_string(c.index) + " (sizes)");
     merge.add(c.summary, ids);
-    SystemParamParamRows rows;
-    rows.row_begin = c.row_begin;
-    rows.row_end = c.row_end;
+    auto rows = rows_of<SystemParamParamRows>(c);
     rows.cls = reinterpret_cast<const uint8_t*>(cls.data());
     rows.min_count = reinterpret_cast<const int8_t*>(lo.data());
     rows.max_count = reinterpret_cast<const int8_t*>(hi.data());
     rows.pattern = ids.data();
-    if (sink) {
-      sink(rows);
-    } else {
-      append_cells(m.cls, rows.cls, n);
-      append_cells(m.min_count, rows.min_count, n);
-      append_cells(m.max_count, rows.max_count, n);
-      append_cells(m.pattern, rows.pattern, n);
-    }
+    sink ? sink(rows) : store_rows(m, rows, n);
   };
   const nlohmann::json manifest = {{"axis", axis_json(a1)}, {"axis2", axis_json(a2)}};
   out.stats = run_grid_chunks(run, manifest, plan, compute, consume);
