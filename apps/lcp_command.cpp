@@ -21,16 +21,6 @@
 namespace cpkit::cli {
 namespace {
 
-/// Prints an outcome (JSON with --json, else text) and returns its exit code.
-template <class Outcome, class Json, class Text>
-int print_outcome(const Outcome& out, bool json, Json to_json, Text to_text) {
-  if (json)
-    print_json(to_json(out));
-  else
-    std::cout << to_text(out) << std::flush;
-  return out.exit_code;
-}
-
 void add_lcp_solve(CLI::App& lcp, Context& ctx) {
   auto args = std::make_shared<lcp::LcpSolveRequest>();
   auto* cmd = lcp.add_subcommand("solve", "Solve an LCP 0 <= z _|_ Mz + q >= 0 from a .json, "

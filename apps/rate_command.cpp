@@ -40,13 +40,14 @@ struct RateArgs {
 /// The one library call: the request as given (which options were given included), then print.
 int run_rate(RateArgs& a, const CLI::App& cmd) {
   rate::RateRequest& r = a.request;
-  r.a11 = a.model.a11;
-  r.a12 = a.model.a12;
-  r.a22 = a.model.a22;
-  r.mu = a.model.mu;
-  r.C_T = a.model.C_T;
-  r.k_a = a.model.k_a;
-  r.P_s = a.model.P_s;
+  const ModelArgs& m = a.model;
+  r.params.a11 = m.a11;
+  r.params.a12 = m.a12;
+  r.params.a22 = m.a22;
+  r.params.mu = m.mu;
+  r.params.C_T = m.C_T;
+  r.params.k_a = m.k_a;
+  r.params.P_s = m.P_s;
   r.criterion = a.model.criterion;
   for (const CLI::Option* o : cmd.get_options())
     if (o->count() > 0) r.options_given.push_back(o->get_name());

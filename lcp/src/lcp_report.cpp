@@ -237,19 +237,19 @@ std::string lcp_solve_text(const LcpSolveOutcome& out) {
 }
 
 nlohmann::json lcp_verify_json(const LcpVerifyOutcome& out) {
-  return report_json(out.report, out.problem);
+  return report_json(out.result, out.problem);
 }
 
 std::string lcp_verify_text(const LcpVerifyOutcome& out) {
-  return report_text(out.report, out.problem);
+  return report_text(out.result, out.problem);
 }
 
 nlohmann::json lcp_enumerate_json(const LcpEnumerateOutcome& out) {
-  return set_json(out.set, out.problem);
+  return set_json(out.result, out.problem);
 }
 
 std::string lcp_enumerate_text(const LcpEnumerateOutcome& out) {
-  return set_text(out.set, out.problem);
+  return set_text(out.result, out.problem);
 }
 
 }  // namespace cpkit::lcp

@@ -106,9 +106,9 @@ LcpVerifyOutcome run_lcp_verify_request(const LcpVerifyRequest& a) {
   opt.enumeration.time_limit_s = a.time_limit_s;
   throw_if_invalid_option(opt.validate(), {{"EnumerationOptions::time_limit_s", "--time-limit"},
                                            {"time_limit_s", "--time-limit"}});
-  out.report = cross_verify(out.problem, opt);
-  if (!out.report.consistent()) out.exit_code = kExitDisagreement;
-  else out.exit_code = out.report.set.complete ? kExitOk : kExitInconclusive;
+  out.result = cross_verify(out.problem, opt);
+  if (!out.result.consistent()) out.exit_code = kExitDisagreement;
+  else out.exit_code = out.result.set.complete ? kExitOk : kExitInconclusive;
   return out;
 }
 
@@ -122,9 +122,9 @@ LcpEnumerateOutcome run_lcp_enumerate_request(const LcpEnumerateRequest& a) {
   throw_if_invalid_option(opt.validate(), {{"EnumerationOptions::max_size", "--max-size"},
                                            {"EnumerationOptions::tol", "--tol"},
                                            {"EnumerationOptions::time_limit_s", "--time-limit"}});
-  out.set = enumerate_all(out.problem, opt);
-  if (!out.set.solutions.empty()) out.exit_code = kExitOk;
-  else out.exit_code = out.set.complete ? kExitNoSolution : kExitInconclusive;
+  out.result = enumerate_all(out.problem, opt);
+  if (!out.result.solutions.empty()) out.exit_code = kExitOk;
+  else out.exit_code = out.result.complete ? kExitNoSolution : kExitInconclusive;
   return out;
 }
 

@@ -62,9 +62,9 @@ TEST_CASE("lcp request: a 2x2 LCP solved by hand, by solve, enumerate and verify
   e.file = pd_file();
   const LcpEnumerateOutcome all = run_lcp_enumerate_request(e);
   CHECK(all.exit_code == kExitOk);
-  CHECK(all.set.complete);
-  REQUIRE(all.set.count() == 1);
-  CHECK(all.set.solutions[0].z(0) == Approx(4.0 / 3));
+  CHECK(all.result.complete);
+  REQUIRE(all.result.count() == 1);
+  CHECK(all.result.solutions[0].z(0) == Approx(4.0 / 3));
   const auto j = lcp_enumerate_json(all);
   CHECK(j["count"] == 1);
   CHECK(j["complete"] == true);
@@ -94,8 +94,8 @@ TEST_CASE("lcp request: no solution exits 1 (solve, every solver, a complete enu
   LcpEnumerateRequest e;
   e.file = infeasible_file();
   const LcpEnumerateOutcome all = run_lcp_enumerate_request(e);
-  CHECK(all.set.complete);
-  CHECK(all.set.count() == 0);
+  CHECK(all.result.complete);
+  CHECK(all.result.count() == 0);
   CHECK(all.exit_code == kExitNoSolution);
 }
 
@@ -109,8 +109,8 @@ TEST_CASE("lcp request: an enumeration that is not complete and found nothing ex
                           "q": [-1, -1, -1, -1, -1]})");
   e.max_size = 4;
   const LcpEnumerateOutcome all = run_lcp_enumerate_request(e);
-  CHECK_FALSE(all.set.complete);
-  CHECK(all.set.solutions.empty());
+  CHECK_FALSE(all.result.complete);
+  CHECK(all.result.solutions.empty());
   CHECK(all.exit_code == kExitInconclusive);
   CHECK(lcp_enumerate_json(all)["complete"] == false);
   std::filesystem::remove(e.file);

@@ -23,10 +23,10 @@ namespace {
 RateRequest fig5b() {
   RateRequest r;
   r.state = "b";
-  r.a11 = 1;
-  r.a12 = 2;
-  r.a22 = 5;
-  r.mu = 1;
+  r.params.a11 = 1;
+  r.params.a12 = 2;
+  r.params.a22 = 5;
+  r.params.mu = 1;
   r.dF = {1, 1.2};
   r.options_given = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF"};
   return r;
@@ -107,10 +107,10 @@ TEST_CASE("rate request: no solution exits 1 (state d, Lambda < 0, L_+ > 0)", "[
   // L_+ = dF_T - mu dF_N = 4 - 3 = 1 > 0: stick needs L_+ <= 0, slip needs L_+/Lambda > 0.
   RateRequest r;
   r.state = "d";
-  r.a11 = 1;
-  r.a12 = 0.5;
-  r.a22 = 1;
-  r.mu = 3;
+  r.params.a11 = 1;
+  r.params.a12 = 0.5;
+  r.params.a22 = 1;
+  r.params.mu = 3;
   r.P_N = 1;
   r.dF = {4, 1};
   r.options_given = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF", "--P_N"};
@@ -124,10 +124,10 @@ TEST_CASE("rate request: a boundary the signs cannot decide exits 5, never 3", "
   // dF = (a11, a12): N = a11 dF_N - a12 dF_T is 0 in exact arithmetic (issue 24 item 17: the
   // separation / slip+ boundary, inconclusive rather than a disagreement between routes).
   RateRequest r = fig5b();
-  r.a11 = 1.0142831963176735;
-  r.a12 = 0.8450714454408795;
-  r.a22 = 1.2075902949448927;
-  r.mu = 1.038170126179592;
+  r.params.a11 = 1.0142831963176735;
+  r.params.a12 = 0.8450714454408795;
+  r.params.a22 = 1.2075902949448927;
+  r.params.mu = 1.038170126179592;
   r.dF = {1.0142831963176735, 0.8450714454408795};
   const RateOutcome out = run_rate_request(r);
   CHECK(out.exit_code == cpkit::kExitInconclusive);
@@ -158,7 +158,7 @@ TEST_CASE("rate request: refusals name the option", "[rate][request]") {
   r.criterion = "36";
   CHECK(refusal(r) == "--criterion must be 38 or 35, got '36'");
   r = fig5b();
-  r.a22 = 1;  // det A = 1 - 4 < 0
+  r.params.a22 = 1;  // det A = 1 - 4 < 0
   CHECK(refusal(r).find("contact parameters") == 0);
   r = fig5b();
   r.facets = 8;
@@ -172,7 +172,7 @@ TEST_CASE("rate request: refusals name the option", "[rate][request]") {
 
 TEST_CASE("rate request: a material parameter that does not enter the state is noted", "[rate][request]") {
   RateRequest r = fig5b();
-  r.k_a = 0.1;
+  r.params.k_a = 0.1;
   r.options_given.push_back("--k_a");
   std::vector<std::string> notes;
   const RateOutcome out = run_rate_request(r, [&](const std::string& n) { notes.push_back(n); });

@@ -92,6 +92,17 @@ detail::PlaneSet enumerated_plane(const lcp::SmallSolutionSet<N>& set, double sU
   return plane;
 }
 
+/// Both states' planes end alike: v (the slip rate dw_T^i, whose sign splits slip+ from slip-)
+/// is a breakpoint function too; then the pieces, typed by `type`.
+template <class Type>
+void finish_plane(detail::PlaneSet& plane, const Type& type, PlaneResult& res) {
+  plane.add_affine(0.0, 0.0, 1.0);
+  res.infinite = plane.num_lines() > 0;
+  res.n = plane.finish(type, res.pieces);
+  res.bad = plane.bad();
+  res.ambiguous += plane.undecided();
+}
+
 void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   const StateBLcp l = state_b_lcp(p, f);
   lcp::SmallSolutionSet<3> set;
@@ -112,11 +123,7 @@ void plane_b(const ContactParameters& p, const LoadRate& f, PlaneResult& res) {
   TypeB type{c1 * f.dF_N - p.a12 * p.C_T * f.dF_T, c1, p.a12,
              c1 * std::abs(f.dF_N) + std::abs(p.a12 * p.C_T * f.dF_T), V0};
   plane.add_affine(type.S, -c1, -p.a12);
-  plane.add_affine(0.0, 0.0, 1.0);
-  res.infinite = plane.num_lines() > 0;
-  res.n = plane.finish(type, res.pieces);
-  res.bad = plane.bad();
-  res.ambiguous += plane.undecided();
+  finish_plane(plane, type, res);
 }
 
 void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
@@ -140,12 +147,7 @@ void plane_d(const ContactParameters& p, const ContactState& st, const LoadRate&
       [&](const Eigen::Matrix<double, 1, 1>& d, double, double V) {
         return detail::P2{u1 * d(0) * V, s * d(0) * V};
       });
-  TypeD type{V0};
-  plane.add_affine(0.0, 0.0, 1.0);
-  res.infinite = plane.num_lines() > 0;
-  res.n = plane.finish(type, res.pieces);
-  res.bad = plane.bad();
-  res.ambiguous += plane.undecided();
+  finish_plane(plane, TypeD{V0}, res);
 }
 
 /// Physical rates of the plane point x (affine) and of a plane direction (linear part).

@@ -161,14 +161,7 @@ void run_one_point(const RateRequest& a, RateOutcome& out) {
                      "docs/contact_3d.md)");
   for (const char* o : kOnePointOptions)
     if (!a.given(o)) throw InputError(std::string(o) + " is required (or give --system FILE)");
-  ContactParameters p;
-  p.a11 = a.a11;
-  p.a12 = a.a12;
-  p.a22 = a.a22;
-  p.mu = a.mu;
-  p.C_T = a.C_T;
-  p.k_a = a.k_a;
-  p.P_s = a.P_s;
+  ContactParameters p = a.params;
   const auto criterion = criterion_from_string(a.criterion);
   if (!criterion) throw InputError("--criterion must be 38 or 35, got '" + a.criterion + "'");
   p.criterion = *criterion;

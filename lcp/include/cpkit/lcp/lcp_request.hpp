@@ -21,6 +21,15 @@ namespace cpkit::lcp {
 /// "a, b, c": the registered LCP solver names (messages and --help).
 std::string lcp_solver_list();
 
+/// The answer to a verify or enumerate request: the problem as read, the library's result and
+/// the exit code decided from it.
+template <class Result>
+struct LcpOutcome {
+  LcpProblem problem;
+  Result result;
+  ExitCode exit_code = kExitOk;
+};
+
 // `cpkit lcp solve`.
 
 struct LcpSolveRequest {
@@ -60,14 +69,9 @@ struct LcpVerifyRequest {
   double time_limit_s = 60;       ///< per solver and for the enumeration
 };
 
-struct LcpVerifyOutcome {
-  LcpProblem problem;
-  CrossVerifyReport report;
-  /// 0 complete and consistent; 3 a disagreement (even against an incomplete enumeration);
-  /// 5 inconclusive: incomplete enumeration, no disagreement.
-  ExitCode exit_code = kExitOk;
-};
-
+/// Exit 0 complete and consistent; 3 a disagreement (even against an incomplete enumeration);
+/// 5 inconclusive: incomplete enumeration, no disagreement.
+using LcpVerifyOutcome = LcpOutcome<CrossVerifyReport>;
 LcpVerifyOutcome run_lcp_verify_request(const LcpVerifyRequest& request);
 /// enumeration {complete, count, continuum, num_extreme, ambiguous, seconds}, solvers [...],
 /// disagreements, consistent, verdict ("consistent", "disagreement" or "inconclusive").
@@ -83,13 +87,8 @@ struct LcpEnumerateRequest {
   int max_size = EnumerationOptions{}.max_size;
 };
 
-struct LcpEnumerateOutcome {
-  LcpProblem problem;
-  SolutionSet set;
-  /// 0 a solution; 1 none and the enumeration is complete; 5 none found, incomplete.
-  ExitCode exit_code = kExitOk;
-};
-
+/// Exit 0 a solution; 1 none and the enumeration is complete; 5 none found, incomplete.
+using LcpEnumerateOutcome = LcpOutcome<SolutionSet>;
 LcpEnumerateOutcome run_lcp_enumerate_request(const LcpEnumerateRequest& request);
 /// n, complete, count ("inf" when infinite), num_extreme, continuum, solutions [{z, w, basis}],
 /// directions and pieces (when infinite), ambiguous, nodes, seconds, message.

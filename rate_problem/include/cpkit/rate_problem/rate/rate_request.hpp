@@ -22,7 +22,7 @@ namespace cpkit::rate {
 /// The options of `cpkit rate` as given. Defaults are those `cpkit rate --help` shows.
 struct RateRequest {
   std::string state;  ///< --state a|b|c|d (one point)
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 1;  ///< the model options
+  ContactParameters params;      ///< --a11 ... --P_s (the criterion comes from `criterion`)
   std::string criterion = "38";  ///< --criterion 38|35
   double P_N = 0;                ///< --P_N (states c and d)
   int sgn_PT = 1;                ///< --sgnPT (state d)
