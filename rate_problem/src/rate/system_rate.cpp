@@ -71,6 +71,20 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
     if (l == StateLabel::kD) { off[static_cast<std::size_t>(i)] = m; m += 1; }
   }
   pre.m = m;
+  // Point i: its data, its rows T (tangential) and Nn (normal), its first LCP variable k, its
+  // scale kc = A_TT and its state.
+  struct PointRows {
+    const SystemPoint& P;
+    ContactParameters par;
+    int T, Nn, k;
+    double kc;
+    StateLabel l;
+  };
+  auto point_rows = [&](int i) {
+    const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
+    return PointRows{P, S.point_parameters(i), 2 * i, 2 * i + 1,
+                     off[static_cast<std::size_t>(i)], A(2 * i, 2 * i), P.state.label};
+  };
   // Equations for dw: E dw = Bf dF + R z, two rows per point (docs/contact_model.md):
   //   a: A_i dw = dF_i (dP_i = 0)
   //   b: dw_T + C_T A_T dw = C_T dF_T + (l+ - l-);   A_N dw = dF_N - dP_N
@@ -81,11 +95,7 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n2, n2), Bf = Eigen::MatrixXd::Zero(n2, n2),
                   R = Eigen::MatrixXd::Zero(n2, std::max(m, 0));
   for (int i = 0; i < N; ++i) {
-    const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
-    const ContactParameters par = S.point_parameters(i);
-    const int T = 2 * i, Nn = 2 * i + 1, k = off[static_cast<std::size_t>(i)];
-    const double kc = A(T, T);
-    const StateLabel l = P.state.label;
+    const auto [P, par, T, Nn, k, kc, l] = point_rows(i);
     if (l == StateLabel::kA) {
       E.row(T) = A.row(T);
       Bf(T, T) = 1;
@@ -126,11 +136,7 @@ SystemRatePrecomputed precompute_system_rate(const ContactSystem& system) {
   const Eigen::MatrixXd dPf = Eigen::MatrixXd::Identity(n2, n2) - A * Xf;
   const Eigen::MatrixXd dPz = -A * Xz;
   for (int i = 0; i < N; ++i) {
-    const SystemPoint& P = S.points[static_cast<std::size_t>(i)];
-    const ContactParameters par = S.point_parameters(i);
-    const int T = 2 * i, Nn = 2 * i + 1, k = off[static_cast<std::size_t>(i)];
-    const double kc = A(T, T);
-    const StateLabel l = P.state.label;
+    const auto [P, par, T, Nn, k, kc, l] = point_rows(i);
     if (l != StateLabel::kA) {  // a: dP = 0 exactly
       pre.Pf.row(i) = dPf.row(T);
       pre.Pz.row(i) = dPz.row(T);
