@@ -118,6 +118,13 @@ TEST_CASE("rate request: no solution exits 1 (state d, Lambda < 0, L_+ > 0)", "[
   CHECK(out.exit_code == cpkit::kExitNoSolution);
   CHECK(out.one_point->set.count() == 0);
   CHECK(out.one_point->set.Lambda == Approx(-0.5));
+  // a single solver finds nothing either, and says that the enumeration has none
+  r.method = "lemke";
+  std::vector<std::string> notes;
+  const RateOutcome single = run_rate_request(r, [&](const std::string& n) { notes.push_back(n); });
+  CHECK(single.exit_code == cpkit::kExitNoSolution);
+  REQUIRE(notes.size() == 1);
+  CHECK(notes[0].find("; the enumeration has 0 solution(s)") != std::string::npos);
 }
 
 TEST_CASE("rate request: a boundary the signs cannot decide exits 5, never 3", "[rate][request]") {

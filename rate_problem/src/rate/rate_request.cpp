@@ -151,7 +151,7 @@ void run_system(const RateRequest& a, RateOutcome& out) {
   }
 }
 
-void run_one_point(const RateRequest& a, RateOutcome& out) {
+void run_one_point(const RateRequest& a, RateOutcome& out, const Note& note) {
   if (a.time_limit)
     throw InputError("--time-limit applies to the faceted 3-D rate problems (--system FILE "
                      "with \"dim\": 3 and --facets K); the one-point 2-D problem is solved in "
@@ -183,12 +183,12 @@ void run_one_point(const RateRequest& a, RateOutcome& out) {
       *(out.one_point = solve_rate_problem_checked(p, st, f, *method));
   const RateSolutionSet& s = checked.set;
   out.exit_code = s.solutions.empty() ? kExitNoSolution : kExitOk;
-  if (checked.reference && s.solutions.empty())
-    out.notes.push_back(s.message + "; the enumeration has " +
-                        (checked.reference->count() < 0
-                             ? std::string("infinitely many")
-                             : std::to_string(checked.reference->count())) +
-                        " solution(s)");
+  // a single solver that found nothing: said before the result is printed (as always)
+  if (checked.reference && s.solutions.empty() && note)
+    note(s.message + "; the enumeration has " +
+         (checked.reference->count() < 0 ? std::string("infinitely many")
+                                         : std::to_string(checked.reference->count())) +
+         " solution(s)");
   if (!checked.problem.empty()) {
     out.notes.push_back(checked.problem);
     out.exit_code = checked.inconclusive ? kExitInconclusive : kExitDisagreement;
@@ -203,7 +203,7 @@ RateOutcome run_rate_request(const RateRequest& a, const Note& note) {
   out.method = a.method;
   out.state = a.state;
   if (a.system.empty()) {
-    run_one_point(a, out);
+    run_one_point(a, out, note);
     return out;
   }
   for (const char* o : kOnePointOptions)

@@ -52,14 +52,15 @@ struct RateOutcome {
   int facets = 0;                                  ///< 3-D: --facets (0: exact)
   char first_state = 0;                            ///< 3-D: the state of point 1
   ExitCode exit_code = kExitOk;  ///< 0 a solution, 1 none, 3 disagreement, 5 inconclusive
-  std::vector<std::string> notes;  ///< why the exit code is 1, 3 or 5, for stderr
+  std::vector<std::string> notes;  ///< why the exit code is 3 or 5, for stderr
 };
 
 /// Validates `request` in the order `cpkit rate` always has (options that have no effect in
 /// the state, one-point options with --system, the model, the state, dF, the method), solves it
 /// by its route (solve_rate_problem_checked, solve_rate_problem for N points,
-/// solve_system_rate_3d) and decides the exit code. `note` receives remarks on accepted options
-/// (a material parameter that does not enter the state) before anything can be refused.
+/// solve_system_rate_3d) and decides the exit code. `note` receives, as they arise, remarks on
+/// accepted options (a material parameter that does not enter the state; before anything can be
+/// refused) and, when a single solver found no solution, why and the enumerated count.
 RateOutcome run_rate_request(const RateRequest& request,
                              const std::function<void(const std::string&)>& note = {});
 
