@@ -50,4 +50,15 @@ inline void print_json(nlohmann::json j) {
   std::cout << json_text(j) << std::endl;
 }
 
+/// Prints a library outcome (`to_json` of it with --json, else `to_text`) and returns its
+/// exit code (the requests of cpkit/lcp/lcp_request.hpp, friction/fc_request.hpp).
+template <class Outcome, class Json, class Text>
+int print_outcome(const Outcome& out, bool json, Json to_json, Text to_text) {
+  if (json)
+    print_json(to_json(out));
+  else
+    std::cout << to_text(out) << std::flush;
+  return out.exit_code;
+}
+
 }  // namespace cpkit::cli

@@ -110,36 +110,6 @@ std::string command_path(const CLI::App* app) {
 
 void check_all_option_values(CLI::App& app) { check_options_of(app); }
 
-std::string in_option_words(std::string message,
-                            const std::vector<std::pair<std::string, std::string>>& field_to_option) {
-  auto table = field_to_option;
-  std::sort(table.begin(), table.end(),
-            [](const auto& x, const auto& y) { return x.first.size() > y.first.size(); });
-  auto word_char = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '-';
-  };
-  for (const auto& [field, option] : table) {
-    for (std::size_t at = message.find(field); at != std::string::npos;
-         at = message.find(field, at)) {
-      const std::size_t end = at + field.size();
-      const bool whole = (at == 0 || !word_char(message[at - 1])) &&
-                         (end == message.size() || !word_char(message[end]));
-      if (whole) {
-        message.replace(at, field.size(), option);
-        at += option.size();
-      } else {
-        at = end;
-      }
-    }
-  }
-  return message;
-}
-
-void throw_if_invalid_option(const std::string& message,
-                             const std::vector<std::pair<std::string, std::string>>& field_to_option) {
-  if (!message.empty()) throw InputError(in_option_words(message, field_to_option));
-}
-
 std::string check_command_words(const CLI::App& app, const std::vector<std::string>& args) {
   const CLI::App* cur = &app;
   for (std::size_t k = 0; k < args.size(); ++k) {

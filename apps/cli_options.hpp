@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "cpkit/core/option_words.hpp"  // in_option_words, throw_if_invalid_option
+
 namespace cpkit::cli {
 
 /// Walks `app` and all its subcommands (call after every option is registered) and checks
@@ -21,16 +23,6 @@ void check_all_option_values(CLI::App& app);
 /// (`cpkit foo`: "unknown subcommand 'foo' for 'cpkit' (valid: lcp, map, ...)") or an unknown
 /// long option (`cpkit step --bogus`: "unknown option --bogus for 'cpkit step'", not "--a11 is
 /// required"). Empty when fine.
-/// A library validation message in the user's words: every whole-word occurrence of a C++ field
-/// name (`EnumerationOptions::max_size`, `time_limit_s`) is replaced by its command-line option
-/// (`--max-size`, `--time-limit`); longer names are replaced first.
-std::string in_option_words(std::string message,
-                            const std::vector<std::pair<std::string, std::string>>& field_to_option);
-
-/// Throws cpkit::InputError with in_option_words(message) when `message` is not empty.
-void throw_if_invalid_option(const std::string& message,
-                             const std::vector<std::pair<std::string, std::string>>& field_to_option);
-
 std::string check_command_words(const CLI::App& app, const std::vector<std::string>& args);
 
 }  // namespace cpkit::cli

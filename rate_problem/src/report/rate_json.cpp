@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/report/json_3d.hpp"
 #include "piece_json.hpp"
 
 namespace cpkit::rate {
@@ -66,6 +68,26 @@ nlohmann::json system_rate_set_json(const SystemRateSolutionSet& s) {
     sols.push_back(e);
   }
   j["solutions"] = sols;
+  return j;
+}
+
+nlohmann::json rate_outcome_json(const RateOutcome& out, const std::string& version) {
+  if (out.route == RateOutcome::Route::kOnePoint) {
+    const CheckedRateSolution& c = *out.one_point;
+    return rate_set_json(c.set, c.reference ? &*c.reference : nullptr);
+  }
+  const bool three_d = out.route == RateOutcome::Route::kSystem3d;
+  nlohmann::json j = three_d ? system_rate_3d_json(*out.system_3d) : system_rate_set_json(*out.system);
+  j["cpkit_version"] = version;
+  j["input"] = {{"system", out.path},
+                {"name", out.name},
+                {"dF", std::vector<double>(out.dF.data(), out.dF.data() + out.dF.size())},
+                {"method", out.method}};
+  if (three_d) {
+    j["input"]["facets"] = out.facets;
+    j["dim"] = 3;
+  }
+  j["n_points"] = out.n_points;
   return j;
 }
 

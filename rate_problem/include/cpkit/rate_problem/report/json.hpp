@@ -18,6 +18,8 @@
 
 namespace cpkit::rate {
 
+struct RateOutcome;  // rate/rate_request.hpp
+
 // Rate problem.
 
 /// {"dP_T", "dP_N", "dw_T", "dw_N", "dw_Ti", "dw_w"}: numbers (one point).
@@ -35,6 +37,12 @@ nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* re
 /// An N-point solution set: complete; count or found as above; message (when not empty);
 /// solutions (types per point, kind, values | start[, ...]). The program adds the input echo.
 nlohmann::json system_rate_set_json(const SystemRateSolutionSet& s);
+
+/// The object `cpkit rate --json` prints for an outcome (rate/rate_request.hpp): one point,
+/// rate_set_json (with the enumerated reference of a single solver); N points and 3-D systems,
+/// the set with "cpkit_version" (`version`), "input" (system, name, dF, method; 3-D: facets)
+/// and "n_points" (3-D: "dim": 3). The program adds "run".
+nlohmann::json rate_outcome_json(const RateOutcome& outcome, const std::string& version);
 
 // Incremental step.
 

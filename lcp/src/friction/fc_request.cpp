@@ -1,0 +1,229 @@
+// `cpkit fc solve|solutions`: the option checks, the solves, the exit codes, the text and JSON
+// (field names and text are what users script against, kept character for character).
+#include "cpkit/lcp/friction/fc_request.hpp"
+
+#include <limits>
+#include <sstream>
+
+#include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/option_words.hpp"
+#include "cpkit/core/registry.hpp"
+#include "cpkit/core/report.hpp"
+#include "cpkit/core/status.hpp"
+#include "cpkit/lcp/solvers.hpp"
+
+namespace cpkit::lcp::friction {
+namespace {
+
+std::string num_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+CommonOptions common_options(const FcRequest& a) {
+  CommonOptions o;
+  if (!(a.tol > 0 && a.tol <= 1e-3))
+    throw InputError("--tol must be in (0, 1e-3] (the unit-free residual: a larger tolerance "
+                     "would call almost any r solved), got " + num_text(a.tol));
+  o.tol = a.tol;
+  if (o.tol_acceptable < o.tol) o.tol_acceptable = o.tol;
+  o.max_iterations = a.max_iter;
+  o.time_limit_s = a.time_limit_s;
+  throw_if_invalid_option(o.validate(), {{"tol", "--tol"},
+                                         {"max_iterations", "--max-iter"},
+                                         {"time_limit_s", "--time-limit"}});
+  return o;
+}
+
+/// One result as the fc commands print it: r and u flat (contact by contact, normal first),
+/// the three errors of friction_verdict.hpp recomputed from the data, and the solver's counts.
+nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem& p) {
+  const nlohmann::json full = to_json(r);
+  nlohmann::json j;
+  j["status"] = full["status"];
+  j["solver"] = r.solver;
+  j["r"] = full["z"];
+  j["u"] = full["w"];
+  const bool sized = r.z.size() == p.W.rows();
+  const FrictionErrors e = sized ? friction_errors(p, r.z)
+                                 : FrictionErrors{std::numeric_limits<double>::infinity(),
+                                                  std::numeric_limits<double>::quiet_NaN(),
+                                                  std::numeric_limits<double>::quiet_NaN()};
+  j["errors"] = {{"unit_free", e.unit_free}, {"relative_q", e.relative_q},
+                 {"relative_max", e.relative_max}};
+  auto& per = j["per_contact"] = nlohmann::json::array();
+  if (sized)
+    for (const auto& c : friction_contacts(p, r.z))
+      per.push_back({{"state", to_string(c.state)}, {"error", c.error}});
+  j["iterations"] = r.iterations;
+  j["seconds"] = r.seconds;
+  j["message"] = r.message;
+  if (full.contains("attempts")) j["attempts"] = full["attempts"];
+  return j;
+}
+
+nlohmann::json problem_json(const std::string& file, const FrictionContactProblem& p) {
+  return {{"file", file}, {"problem", p.name}, {"contacts", p.contacts()},
+          {"W_nonzeros", p.W.nonZeros()}};
+}
+
+std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
+  std::ostringstream s;
+  s << "status:     " << to_string(r.status) << "\nsolver:     " << r.solver;
+  if (r.z.size() == p.W.rows()) {
+    const FrictionErrors e = friction_errors(p, r.z);
+    s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
+      << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
+    int count[3] = {0, 0, 0};
+    for (const auto& c : friction_contacts(p, r.z)) ++count[static_cast<int>(c.state)];
+    s << "\ncontacts:   " << count[1] << " stick, " << count[2] << " slip, " << count[0]
+      << " separated";
+  }
+  s << "\niterations: " << r.iterations << "\nseconds:    " << r.seconds;
+  if (!r.message.empty()) s << "\nmessage:    " << r.message;
+  s << '\n';
+  return s.str();
+}
+
+const SolverEntry& fc_solver(const std::string& name) {
+  const SolverEntry* entry = solvers().find(name);
+  if (entry == nullptr || !entry->accepts(ProblemKind::kFrictionContact))
+    throw InputError("unknown friction solver '" + name + "' (valid: " + fc_solver_list() + ")");
+  return *entry;
+}
+
+ExitCode exit_code(Status s) {
+  if (is_solution(s)) return kExitOk;
+  return s == Status::kInfeasible ? kExitNoSolution : kExitInconclusive;
+}
+
+/// A global problem (M v = H r + f, u = H^T v + w): condensed, solved locally, judged in the
+/// global variables (global.hpp); where M is singular (degrees of freedom without mass) it is
+/// solved in its own variables by the proximal point in v (solve_global_proximal).
+void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
+  const CommonOptions options = common_options(a);
+  const SolverEntry& entry = fc_solver(a.solver);
+  const GlobalFrictionContactProblem& g = out.global_problem;
+  out.global = solve_global(g, entry.info.name, options);
+  const CondensedProblem& c = out.global.condensed;
+  out.proximal = !c.ok && c.message.rfind("M is singular", 0) == 0;
+  if (out.proximal) out.global = solve_global_proximal(g, entry.info.name, options);
+  out.problem = out.global.condensed.local;
+  out.result = out.global.result;
+}
+
+}  // namespace
+
+std::string fc_solver_list() {
+  std::string out;
+  for (const auto& name : solvers().names(ProblemKind::kFrictionContact))
+    out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+FcSolveOutcome run_fc_solve_request(const FcRequest& a) {
+  FcSolveOutcome out;
+  out.file = a.file;
+  try {
+    out.problem = read_friction_problem(a.file);  // validates; names the file
+  } catch (const InputError& local_error) {
+    // Not a local problem: a global one is solved; anything else reports the local reader's
+    // message (the file is most likely a damaged local problem).
+    try {
+      out.global_problem = read_global_friction_problem(a.file);
+    } catch (const InputError&) {
+      throw local_error;
+    }
+    out.is_global = true;
+    solve_global_request(a, out);
+    out.exit_code = exit_code(out.result.status);
+    return out;
+  }
+  const CommonOptions options = common_options(a);
+  const SolverEntry& entry = fc_solver(a.solver);
+  out.result = entry.solve_fc(out.problem, options);
+  if (out.result.solver.empty()) out.result.solver = entry.info.name;
+  out.exit_code = exit_code(out.result.status);
+  return out;
+}
+
+nlohmann::json fc_solve_json(const FcSolveOutcome& out) {
+  if (!out.is_global) {
+    nlohmann::json j = problem_json(out.file, out.problem);
+    j.update(fc_result_json(out.result, out.problem));
+    return j;
+  }
+  const GlobalFrictionContactProblem& g = out.global_problem;
+  const GlobalSolveResult& s = out.global;
+  const nlohmann::json global = {{"dofs", g.dofs()},
+                                 {"condensed", s.condensed.ok && !out.proximal},  // M itself
+                                 {"route", out.proximal ? "proximal" : "condensed"},
+                                 {"errors", {{"balance", s.errors.balance},
+                                             {"local", s.errors.local}}}};
+  nlohmann::json j = {{"file", out.file}, {"problem", g.name}, {"contacts", g.contacts()},
+                      {"global", global}};
+  j.update(fc_result_json(out.result, out.problem));
+  j["v"] = std::vector<double>(s.v.data(), s.v.data() + s.v.size());
+  return j;
+}
+
+std::string fc_solve_text(const FcSolveOutcome& out) {
+  std::ostringstream o;
+  const SolveResult& r = out.result;
+  if (!out.is_global) {
+    o << "problem:    " << out.problem.name << " (" << out.problem.contacts() << " contacts)\n"
+      << result_line(r, out.problem);
+    return o.str();
+  }
+  const GlobalFrictionContactProblem& g = out.global_problem;
+  o << "problem:    " << g.name << " (global: " << g.contacts() << " contacts, " << g.dofs()
+    << " dofs)\n";
+  if (out.proximal)
+    o << "route:      proximal point in v (M is singular: no condensation), " << r.iterations
+      << " outer iterations\n";
+  if (out.global.condensed.ok)
+    o << "global:     balance " << out.global.errors.balance << ", local "
+      << out.global.errors.local << " (unit-free)\n" << result_line(r, out.problem);
+  else
+    o << "status:     " << to_string(r.status) << "\nmessage:    " << r.message << '\n';
+  return o.str();
+}
+
+FcSolutionsOutcome run_fc_solutions_request(const FcRequest& a) {
+  FcSolutionsOutcome out;
+  out.file = a.file;
+  out.problem = read_friction_problem(a.file);
+  FrictionSolutionsOptions o;
+  o.common = common_options(a);
+  if (a.starts < 1) throw InputError("--starts must be at least 1, got " + std::to_string(a.starts));
+  o.starts = a.starts;
+  o.seed = a.seed;
+  throw_if_invalid(o.validate(), "fc solutions");
+  out.set = friction_solutions(out.problem, o);
+  out.exit_code = out.set.solutions.empty() ? kExitInconclusive : kExitOk;
+  return out;
+}
+
+nlohmann::json fc_solutions_json(const FcSolutionsOutcome& out) {
+  nlohmann::json j = problem_json(out.file, out.problem);
+  auto& list = j["solutions"] = nlohmann::json::array();
+  for (const auto& s : out.set.solutions) list.push_back(fc_result_json(s, out.problem));
+  j["complete"] = out.set.complete;
+  j["message"] = out.set.message;
+  return j;
+}
+
+std::string fc_solutions_text(const FcSolutionsOutcome& out) {
+  std::ostringstream o;
+  o << "problem:    " << out.problem.name << " (" << out.problem.contacts() << " contacts)\n"
+    << out.set.solutions.size() << " distinct verified solution(s), complete: "
+    << (out.set.complete ? "yes" : "no") << "\n" << out.set.message << '\n';
+  for (std::size_t k = 0; k < out.set.solutions.size(); ++k)
+    o << "-- solution " << k + 1 << '\n' << result_line(out.set.solutions[k], out.problem);
+  return o.str();
+}
+
+}  // namespace cpkit::lcp::friction

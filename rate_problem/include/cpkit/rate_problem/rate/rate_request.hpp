@@ -1,0 +1,67 @@
+#pragma once
+/// \file rate_request.hpp
+/// What `cpkit rate` was asked (docs/cli.md), as given, and the one call that answers it: one
+/// point (the model options, --state, --dF DFT DFN), an N-point 2-D system file or a 3-D system
+/// file (--system FILE, read once here; its "dim" chooses the route). Values in the model's
+/// units (forces as dF, stiffnesses as A); the sign of P_T as in docs/contact_model.md.
+/// Bad input: InputError whose message names the option (--dF, --method, ...), as the program
+/// prints it (exit 2). The text and JSON of the outcome: report/rate_text.hpp, report/json.hpp.
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cpkit/core/exit_code.hpp"
+#include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate.hpp"
+#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
+
+namespace cpkit::rate {
+
+/// The options of `cpkit rate` as given. Defaults are those `cpkit rate --help` shows.
+struct RateRequest {
+  std::string state;  ///< --state a|b|c|d (one point)
+  ContactParameters params;      ///< --a11 ... --P_s (the criterion comes from `criterion`)
+  std::string criterion = "38";  ///< --criterion 38|35
+  double P_N = 0;                ///< --P_N (states c and d)
+  int sgn_PT = 1;                ///< --sgnPT (state d)
+  std::vector<double> dF;        ///< --dF: DFT DFN (one point), 2N or 3N numbers (--system)
+  std::string method = "enumerate";
+  std::string system;                ///< --system FILE: an N-point or 3-D system (empty: one point)
+  int facets = 0;                    ///< --facets K: a 3-D system's faceted route (0: exact)
+  std::optional<double> time_limit;  ///< --time-limit S: the faceted 3-D solves' budget
+  std::vector<std::string> options_given;  ///< the options given, as "--dF"
+  bool given(const std::string& option) const;
+};
+
+/// The answer to a RateRequest: the route's result, the echo of its input, the exit code and
+/// the lines for stderr (without the "cpkit rate: " the program puts before each).
+struct RateOutcome {
+  enum class Route { kOnePoint, kSystem, kSystem3d };
+  Route route = Route::kOnePoint;
+  std::string method;  ///< as given
+  std::string state;   ///< one point: the state as given
+  std::optional<CheckedRateSolution> one_point;
+  // --system: the file, its name, its points and the load rate used (--dF or the file's)
+  std::string path, name;
+  int n_points = 0;
+  Eigen::VectorXd dF;
+  std::optional<SystemRateSolutionSet> system;     ///< a 2-D system
+  std::optional<SystemRateRoute3d> system_3d;      ///< a 3-D system
+  int facets = 0;                                  ///< 3-D: --facets (0: exact)
+  char first_state = 0;                            ///< 3-D: the state of point 1
+  ExitCode exit_code = kExitOk;  ///< 0 a solution, 1 none, 3 disagreement, 5 inconclusive
+  std::vector<std::string> notes;  ///< why the exit code is 3 or 5, for stderr
+};
+
+/// Validates `request` in the order `cpkit rate` always has (options that have no effect in
+/// the state, one-point options with --system, the model, the state, dF, the method), solves it
+/// by its route (solve_rate_problem_checked, solve_rate_problem for N points,
+/// solve_system_rate_3d) and decides the exit code. `note` receives, as they arise, remarks on
+/// accepted options (a material parameter that does not enter the state; before anything can be
+/// refused) and, when a single solver found no solution, why and the enumerated count.
+RateOutcome run_rate_request(const RateRequest& request,
+                             const std::function<void(const std::string&)>& note = {});
+
+}  // namespace cpkit::rate
