@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cpkit/core/exit_code.hpp"
+#include "cpkit/core/number_text.hpp"
 
 namespace cpkit::cli {
 
@@ -26,13 +27,6 @@ void add_step_command(CLI::App& app, Context& ctx);      ///< `cpkit step`
 void add_simulate_command(CLI::App& app, Context& ctx);  ///< `cpkit simulate`
 void add_fc_command(CLI::App& app, Context& ctx);        ///< `cpkit fc` (friction problems)
 // Further subcommands (rate, map, step, simulate) declare their registration functions here.
-
-/// A number for messages ("1e+300", "0.25"; std::to_string prints 300 digits or 0.000000).
-inline std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 /// JSON text (indent 1). Strings that are not valid UTF-8 (a file name in another encoding)
 /// get U+FFFD in place of the bad bytes instead of making dump() throw.

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <system_error>
 
 #include "cpkit/core/errors.hpp"
@@ -128,6 +129,12 @@ std::string describe_number(NumberText outcome, std::string_view token) {
       return q + " is below the smallest double (4.9e-324) and would be read as 0";
   }
   return "bad number " + q;
+}
+
+std::string num_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
 
 }  // namespace cpkit

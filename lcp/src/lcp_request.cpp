@@ -6,18 +6,13 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/io.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/option_words.hpp"
 #include "cpkit/core/status.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::lcp {
 namespace {
-
-std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 /// Looks `name` up in the registry; InputError listing the valid names when unknown or when the
 /// solver does not accept this problem's storage.

@@ -8,6 +8,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/option_words.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/core/report.hpp"
@@ -16,12 +17,6 @@
 
 namespace cpkit::lcp::friction {
 namespace {
-
-std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 CommonOptions common_options(const FcRequest& a) {
   CommonOptions o;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
@@ -21,12 +22,6 @@ bool RateRequest::given(const std::string& option) const {
 namespace {
 
 using Note = std::function<void(const std::string&)>;
-
-std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 /// The options a one-point problem needs (with --system they come from the file, --dF aside).
 const char* const kOnePointOptions[] = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF"};

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
@@ -19,11 +20,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 constexpr double kTol = 1e-10;
 
 /// The inscribed polygon of a point's ellipse: outward unit facet normals and supports.

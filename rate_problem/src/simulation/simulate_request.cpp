@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/report/simulation_csv.hpp"
 #include "cpkit/rate_problem/report/simulation_json.hpp"
 #include "cpkit/rate_problem/report/simulation_text.hpp"
@@ -22,13 +23,6 @@
 
 namespace cpkit::rate {
 namespace {
-
-/// A number for messages ("1e+300", "0.25").
-std::string num_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 
 /// A named choice (--criterion, --wear-law, --branch-rule) or InputError "MUST, got 'NAME'".
 template <class T>
