@@ -96,7 +96,7 @@ void step_3d_text(std::ostream& out, const StepOutcome& oc) {
   const Step3dOutcome& o = oc.step_3d;
   const int N = o.n_points();
   const std::string name = o.system.name.empty() ? oc.system : o.system.name;
-  const bool solved = o.status == Status::kSolved;
+  const bool found = o.status == Status::kSolved;
   if (N == 1) {
     out << "step, 3-D point " << name << " (state " << o.system.points[0].state.state << "), ";
   } else {
@@ -105,10 +105,10 @@ void step_3d_text(std::ostream& out, const StepOutcome& oc) {
     out << "), ";
   }
   if (o.mode == "chain" && N == 1) {
-    out << "solver chain: " << (solved ? "solved by " + o.solver : "no solution found") << "\n";
+    out << "solver chain: " << (found ? "solved by " + o.solver : "no solution found") << "\n";
   } else if (o.mode == "chain") {
     out << "FB-SOC Newton: "
-        << (solved ? "solved in " + std::to_string(o.iterations) + " iterations"
+        << (found ? "solved in " + std::to_string(o.iterations) + " iterations"
                    : "no solution found")
         << "\n";
   } else {

@@ -174,12 +174,12 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
     o.system_set = multistart_system_step_3d(p, r.multistart, 1);
   } else {
     const SystemStep3dSolveResult s = solve_system_step_3d_fb_soc(p);
-    const bool solved = s.status == Status::kSolved;
-    if (solved) o.system_set.solutions.push_back(s.solution);
+    const bool found = s.status == Status::kSolved;
+    if (found) o.system_set.solutions.push_back(s.solution);
     o.system_set.message = s.message;
     o.chain = {"fb-soc"};
     o.status = s.status;
-    o.solver = solved ? "fb-soc" : "";
+    o.solver = found ? "fb-soc" : "";
     o.attempts = {{"fb-soc", s.status, s.solution.residual, s.seconds, s.message, s.iterations}};
     o.iterations = s.iterations;
   }
