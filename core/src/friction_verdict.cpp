@@ -45,35 +45,133 @@ void check_sizes(const FrictionContactProblem& p, const Eigen::VectorXd& r) {
 
 FrictionUnits friction_units(const FrictionContactProblem& p) {
   FrictionUnits d;
-  const Eigen::Index n = p.q.size();
+  const Eigen::Index n = p.q.size(), nc = p.contacts();
   d.q_inf = n ? p.q.lpNorm<Eigen::Infinity>() : 0.0;
-  d.abs_W = p.W.cwiseAbs();
+  d.W_rows = p.W;
   d.row_sums = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd count = Eigen::VectorXd::Zero(n);
-  for (Eigen::Index k = 0; k < d.abs_W.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(d.abs_W, k); it; ++it) {
-      d.row_sums[it.row()] += it.value();
-      count[it.row()] += 1;
-      d.w_max = std::max(d.w_max, it.value());
-    }
   d.row_gamma.resize(n);
-  for (Eigen::Index k = 0; k < n; ++k) d.row_gamma[k] = gamma_bound(count[k] + 1);
+  d.block_max = Eigen::VectorXd::Zero(nc);
+  for (Eigen::Index k = 0; k < d.W_rows.outerSize(); ++k) {
+    double count = 0;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
+      const double a = std::abs(it.value());
+      d.row_sums[k] += a;
+      count += 1;
+      d.w_max = std::max(d.w_max, a);
+      if (it.col() / 3 == k / 3) d.block_max[k / 3] = std::max(d.block_max[k / 3], a);
+    }
+    d.row_gamma[k] = gamma_bound(count + 1);
+  }
+  const bool has_ref = d.q_inf > 0 && d.w_max > 0;
+  const double r_ref = has_ref ? d.q_inf / d.w_max : kInf;
+  d.r_cap = Eigen::VectorXd::Constant(nc, r_ref);
+  for (Eigen::Index i = 0; i < nc; ++i) {
+    if (!(d.block_max[i] > 0)) d.block_max[i] = d.w_max;
+    if (has_ref && d.block_max[i] > 0)
+      d.r_cap[i] = std::max(r_ref, p.q.segment<3>(3 * i).lpNorm<Eigen::Infinity>() / d.block_max[i]);
+  }
   return d;
+}
+
+namespace {
+
+// u_k = (W r)_k + q_k in twice the working precision (Dot2, Ogita, Rump & Oishi, SIAM J. Sci.
+// Comput. 26(6), 2005, Alg. 5.3): error-free products (fma) and sums, so that its error is
+// at most u |u_k| + gamma_{m+1}^2 ((|W||r|)_k + |q_k|) (their Prop. 5.5), not gamma (|W||r|)_k.
+double accurate_row(const FrictionUnits& d, Eigen::Index k, const Eigen::VectorXd& r, double q) {
+  double s = q, c = 0;
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
+    const double x = it.value() * r[it.col()];
+    const double e = std::fma(it.value(), r[it.col()], -x);
+    const double t = s + x, z = t - s;
+    c += ((s - (t - z)) + (x - z)) + e;
+    s = t;
+  }
+  return s + c;
+}
+
+// What the verdict reads of one contact: its units, its velocity after the rounding allowance,
+// and whether the allowance stayed within the data's size.
+struct ContactReading {
+  ContactUnits3 units;
+  Vec3 u_reduced = Vec3::Zero();
+  double rounding = 0;     // max_k a_k / s_k
+  bool verifiable = true;  // false when u cannot be formed within the data's allowance
+};
+
+ContactReading read_contact(const FrictionContactProblem& p, const FrictionUnits& d,
+                            Eigen::Index i, const Eigen::VectorXd& r, const Eigen::VectorXd& u) {
+  ContactReading cu;
+  double c_max = 0;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Index k = 3 * i + j;
+    double c = 0, full = 0;  // (|W| rc)_k and (|W| |r|)_k
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
+      const double a = std::abs(it.value()), ar = std::abs(r[it.col()]);
+      c += a * std::min(ar, d.r_cap[it.col() / 3]);
+      full += a * ar;
+    }
+    const double qk = std::abs(p.q[k]);
+    double a = d.row_gamma[k] * (c + qk), uk = u[k];
+    if (full > c) {  // some |r_j| beyond the data's size: form u_k accurately (header comment)
+      uk = accurate_row(d, k, r, p.q[k]);
+      const double g = d.row_gamma[k];
+      const double own = 2 * kEps * std::abs(uk) + g * g * (full + qk);
+      if (g * g * (full + qk) > a) cu.verifiable = false;
+      a += own;
+    }
+    c_max = std::max(c_max, c);
+    const double s = qk + c;
+    if (j == 0) cu.units.s_N = s;
+    cu.u_reduced[j] = std::copysign(std::max(0.0, std::abs(uk) - a), uk);
+    cu.rounding = std::max(cu.rounding, ratio(a, s));
+  }
+  cu.units.S = p.q.segment<3>(3 * i).norm() + c_max;
+  // W = 0 (no d_i): r does not move u, and r_i is judged in its own size alone.
+  const double r_own = r.segment<3>(3 * i).lpNorm<Eigen::Infinity>();
+  cu.units.R = d.block_max[i] > 0 ? std::max(r_own, cu.units.S / d.block_max[i]) : r_own;
+  return cu;
+}
+
+}  // namespace
+
+ContactReport judge_contact(const Vec3& r, const Vec3& u_reduced, const ContactUnits3& units,
+                            double mu, double state_tol) {
+  // The cone law in unit-free variables at the velocity rounding cannot tell from u.
+  Vec3 rn, un;
+  for (int j = 0; j < 3; ++j) {
+    rn[j] = ratio(r[j], units.R);
+    un[j] = ratio(u_reduced[j], units.S);
+  }
+  const double cone = natural_map(rn, un, mu).norm();
+  // Signorini on the normal row, in that row's own units (the LCP rule). r_N counts as a force
+  // by what it allows (mu r_N bounds r_T): at a huge mu a tiny r_N carrying a large r_T is a
+  // contact, and then u_N must be 0.
+  const double normal =
+      std::abs(std::min(std::max(1.0, mu) * rn[0], ratio(u_reduced[0], units.s_N)));
+  // Coulomb's bound |r_T| <= mu r_N read in r_T's units: the friction force beyond what the
+  // normal force allows. For mu <= 1 this is at most sqrt(2) times the distance to the cone;
+  // for a huge mu the distance (~|r_T| / mu) would excuse r_T != 0 at r_N = 0 (F4-04).
+  const double excess = std::max(0.0, rn.tail<2>().norm() - mu * rn[0]);
+  ContactReport c;
+  c.error = std::max({cone, normal, excess});
+  if (std::isnan(c.error) || !r.allFinite() || !u_reduced.allFinite() ||
+      !std::isfinite(units.S) || !std::isfinite(units.R) || !std::isfinite(units.s_N))
+    c.error = kInf;
+  c.state = rn[0] <= state_tol                 ? ContactState::kSeparated
+            : un.tail<2>().norm() <= state_tol ? ContactState::kStick
+                                               : ContactState::kSlip;
+  return c;
 }
 
 Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnits& d,
                              const Eigen::VectorXd& r, const Eigen::VectorXd& u,
-                             FrictionErrors* errors, std::vector<ContactReport>* contacts) {
+                             FrictionErrors* errors, std::vector<ContactReport>* contacts,
+                             double state_tol) {
   if (contacts) contacts->assign(static_cast<std::size_t>(p.contacts()), ContactReport{});
   const Eigen::Index nc = p.contacts();
   Residuals res;
   res.finite = r.allFinite() && u.allFinite();
-  const double r_inf = r.size() ? r.lpNorm<Eigen::Infinity>() : 0.0;
-  const bool has_ref = d.q_inf > 0 && d.w_max > 0;
-  // R = max(||r||, r_ref); r_ref may overflow to inf (then nothing is small).
-  const double R = has_ref ? std::max(r_inf, d.q_inf / d.w_max) : r_inf;
-  const Eigen::VectorXd Wr_abs = d.abs_W * r.cwiseAbs();
-  res.z_scale = R;
   res.worst_index = nc ? 0 : -1;
   res.min_z = kInf;
   res.min_w = kInf;
@@ -81,49 +179,17 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
   for (Eigen::Index i = 0; i < nc; ++i) {
     const double mu = p.mu[i];
     const Vec3 ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
-    double c_max = 0, s_N = 0;
-    Vec3 a;
-    for (int j = 0; j < 3; ++j) {
-      const Eigen::Index k = 3 * i + j;
-      // c_k = ||W_k||_1 min(||r||, r_ref), the cap written as a ratio so it cannot overflow.
-      double c = d.row_sums[k] * r_inf;
-      if (has_ref) c = std::min(c, (d.row_sums[k] / d.w_max) * d.q_inf);
-      c_max = std::max(c_max, c);
-      if (j == 0) s_N = std::abs(p.q[k]) + c;
-      a[j] = d.row_gamma[k] * (Wr_abs[k] + std::abs(p.q[k]));
-    }
-    const double S = p.q.segment<3>(3 * i).norm() + c_max;
-    res.scale = std::max(res.scale, S);
-
-    // The cone law in unit-free variables, less what rounding of u_i can change in it.
-    Vec3 rn, un;
-    for (int j = 0; j < 3; ++j) {
-      rn[j] = ratio(ri[j], R);
-      un[j] = ratio(ui[j], S);
-    }
-    const double allowance = (1 + mu) * ratio(a.norm(), S);
-    const double cone = std::max(0.0, natural_map(rn, un, mu).norm() - allowance);
-    // Signorini on the normal row, in that row's own units (the LCP rule).
-    const double excess = std::max(0.0, std::abs(ui[0]) - a[0]);
-    const double wn = excess > 0 ? std::copysign(ratio(excess, s_N), ui[0]) : 0.0;
-    const double normal = std::abs(std::min(rn[0], wn));
-    double v = std::max(cone, normal);
-    if (std::isnan(v) || !ri.allFinite() || !ui.allFinite() || !std::isfinite(S) ||
-        !a.allFinite())
-      v = kInf;
-    if (contacts) {
-      ContactReport& c = (*contacts)[static_cast<std::size_t>(i)];
-      c.error = v;
-      const double margin = mu * rn[0] - rn.tail<2>().norm();
-      c.state = rn[0] < wn ? ContactState::kSeparated
-                : margin >= un.tail<2>().norm() ? ContactState::kStick
-                                                : ContactState::kSlip;
-    }
+    const ContactReading cu = read_contact(p, d, i, r, u);
+    res.scale = std::max(res.scale, cu.units.S);
+    res.z_scale = std::max(res.z_scale, cu.units.R);
+    const ContactReport c = judge_contact(ri, cu.u_reduced, cu.units, mu, state_tol);
+    const double v = cu.verifiable && ui.allFinite() ? c.error : kInf;
+    if (contacts) (*contacts)[static_cast<std::size_t>(i)] = ContactReport{c.state, v};
     if (v > res.natural) {
       res.natural = v;
       res.worst_index = 3 * i;
     }
-    res.rounding = std::max(res.rounding, allowance);
+    res.rounding = std::max(res.rounding, cu.rounding);
 
     const Vec3 m = natural_map(ri, ui, mu);
     abs_sq += m.squaredNorm();
@@ -153,10 +219,10 @@ const char* to_string(ContactState s) noexcept {
 }
 
 std::vector<ContactReport> friction_contacts(const FrictionContactProblem& p,
-                                             const Eigen::VectorXd& r) {
+                                             const Eigen::VectorXd& r, double tol) {
   check_sizes(p, r);
   std::vector<ContactReport> out;
-  friction_residuals(p, friction_units(p), r, p.W * r + p.q, nullptr, &out);
+  friction_residuals(p, friction_units(p), r, p.W * r + p.q, nullptr, &out, tol);
   return out;
 }
 

@@ -228,23 +228,28 @@ TEST_CASE("non-finite or mis-sized candidates are refused; invalid problems thro
 
 TEST_CASE("a diverging r is never accepted", "[friction][verdict]") {
   // W = [[1, -1], [-1, 1]] on the normals of two contacts (tangents decoupled, W_T = I),
-  // q_N = (-1, -1): r_N = (t, t) has u_N = (-1, -1) for every t. Units (t > 1): r_ref = 1,
-  // R = t, rn = (1, 0, 0); c_N = ||W_N||_1 min(t, r_ref) = 2, s_N = S = 1 + 2 = 3, so
-  // un = (-1/3, 0, 0): normal |min(1, -1/3)| = 1/3, cone |(1,0,0) - P(4/3, 0, 0)| = 1/3, less
-  // the rounding allowance gamma_3 (2 t + 1) / 3 (0.02 at t = 1e14).
+  // q_N = (-1, -1): r_N = (t, t) has u_N = (-1, -1) for every t. Units (t > 3): r_ref = 1,
+  // d_i = 1, cap_i = 1, R_i = t, rn = (1, 0, 0); c_N = |W_N| min(|r|, cap) = 2, s_N = S = 3, so
+  // un = (-1/3, 0, 0): normal |min(1, -1/3)| = 1/3 and cone |(1,0,0) - P(4/3, 0, 0)| = 1/3. The
+  // rounding allowance no longer grows with t (issue 34, F4-01): u_N is formed in twice the
+  // working precision (exactly -1 here), and the allowance is gamma_3 (c_N + |q_N|) + 2u|u_N| +
+  // gamma_3^2 (2t + 1), below 1e-15 for every t here: 1/3 at t = 1e3, 1e8, 1e14 and 1e15.
   MatrixXd W = MatrixXd::Identity(6, 6);
   W(0, 0) = W(3, 3) = 1;
   W(0, 3) = W(3, 0) = -1;
   VectorXd q = VectorXd::Zero(6);
   q[0] = q[3] = -1;
   const auto p = make(W, q, (VectorXd(2) << 0.5, 0.5).finished());
-  for (double t : {1e3, 1e8, 1e14}) {
+  for (double t : {1e3, 1e8, 1e14, 1e15}) {
     VectorXd r = VectorXd::Zero(6);
     r[0] = r[3] = t;
-    const double g3 = 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
-    CHECK(cpkit::friction_errors(p, r).unit_free ==
-          Approx((1 - g3 * (2 * t + 1)) / 3).epsilon(1e-12));
+    CAPTURE(t);
+    CHECK(cpkit::friction_errors(p, r).unit_free == Approx(1.0 / 3).epsilon(1e-12));
   }
+  // Beyond 1/eps of the data's size, r cannot be verified at all: +inf (never solved).
+  VectorXd r = VectorXd::Zero(6);
+  r[0] = r[3] = 1e40;
+  CHECK(std::isinf(cpkit::friction_errors(p, r).unit_free));
 }
 
 TEST_CASE("unit invariance: same verdict under q -> a q and (W, q) -> b (W, q)",

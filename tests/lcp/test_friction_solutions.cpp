@@ -45,6 +45,23 @@ TEST_CASE("solutions: a rigid box on 4 corners has a continuum: distinct verifie
   for (std::size_t i = 0; i < set.solutions.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       CHECK(rel_distance(set.solutions[i].z, set.solutions[j].z) > 1e-6);
+  // At rest every corner sticks (u = 0, Newton's law above): the distinct r are ONE continuum,
+  // reported as one family sharing u, whose r span an affine set of dimension >= 1 (issue 34).
+  REQUIRE(set.families.size() == 1);
+  CHECK(set.families[0].members.size() == set.solutions.size());
+  CHECK(set.families[0].dimension() >= 1);
+  CHECK(set.families[0].dimension() <= static_cast<int>(set.solutions.size()) - 1);
+  // Its basis spans the differences of the members (orthonormal columns).
+  const Eigen::MatrixXd& B = set.families[0].basis;
+  CHECK((B.transpose() * B - Eigen::MatrixXd::Identity(B.cols(), B.cols())).norm() <= 1e-12);
+  for (const auto& s : set.solutions) {
+    const Eigen::VectorXd d = s.z - set.solutions[0].z;
+    CHECK((d - B * (B.transpose() * d)).lpNorm<Eigen::Infinity>() <= 1e-6 * s.z.lpNorm<Eigen::Infinity>());
+  }
+  // The continuum claim, checked independently: the midpoint of two members solves the problem.
+  const Eigen::VectorXd mid = 0.5 * (set.solutions[0].z + set.solutions[1].z);
+  CHECK(cpkit::test::violation(p, mid) <= 1e-8);
+  CHECK(set.message.find("one continuum") != std::string::npos);
 }
 
 TEST_CASE("solutions: unique problems give one solution, the closed form",

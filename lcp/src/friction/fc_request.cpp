@@ -2,6 +2,7 @@
 // (field names and text are what users script against, kept character for character).
 #include "cpkit/lcp/friction/fc_request.hpp"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -33,6 +34,10 @@ CommonOptions common_options(const FcRequest& a) {
   return o;
 }
 
+/// The bound a contact's state is decided against: the answer's own unit-free error (a force
+/// or a sliding velocity smaller than the accuracy of the answer is not told from zero).
+double state_bound(const FrictionErrors& e) { return std::isfinite(e.unit_free) ? e.unit_free : 0.0; }
+
 /// One result as the fc commands print it: r and u flat (contact by contact, normal first),
 /// the three errors of friction_verdict.hpp recomputed from the data, and the solver's counts.
 nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem& p) {
@@ -51,7 +56,7 @@ nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem
                  {"relative_max", e.relative_max}};
   auto& per = j["per_contact"] = nlohmann::json::array();
   if (sized)
-    for (const auto& c : friction_contacts(p, r.z))
+    for (const auto& c : friction_contacts(p, r.z, state_bound(e)))
       per.push_back({{"state", to_string(c.state)}, {"error", c.error}});
   j["iterations"] = r.iterations;
   j["seconds"] = r.seconds;
@@ -73,7 +78,8 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
     s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
       << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
     int count[3] = {0, 0, 0};
-    for (const auto& c : friction_contacts(p, r.z)) ++count[static_cast<int>(c.state)];
+    for (const auto& c : friction_contacts(p, r.z, state_bound(e)))
+      ++count[static_cast<int>(c.state)];
     s << "\ncontacts:   " << count[1] << " stick, " << count[2] << " slip, " << count[0]
       << " separated";
   }
@@ -206,6 +212,15 @@ nlohmann::json fc_solutions_json(const FcSolutionsOutcome& out) {
   nlohmann::json j = problem_json(out.file, out.problem);
   auto& list = j["solutions"] = nlohmann::json::array();
   for (const auto& s : out.set.solutions) list.push_back(fc_result_json(s, out.problem));
+  auto& families = j["families"] = nlohmann::json::array();
+  for (const auto& f : out.set.families) {
+    nlohmann::json basis = nlohmann::json::array();
+    for (Eigen::Index c = 0; c < f.basis.cols(); ++c)
+      basis.push_back(std::vector<double>(f.basis.col(c).data(), f.basis.col(c).data() + f.basis.rows()));
+    std::vector<int> members;
+    for (int m : f.members) members.push_back(m + 1);
+    families.push_back({{"solutions", members}, {"dimension", f.dimension()}, {"basis", basis}});
+  }
   j["complete"] = out.set.complete;
   j["message"] = out.set.message;
   return j;

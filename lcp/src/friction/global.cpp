@@ -49,6 +49,80 @@ std::string factorize(const Sparse& M, Ldlt& ldlt) {
   return {};
 }
 
+// gamma_k = k u / (1 - k u), u = eps / 2 [Higham 2002, Lemma 3.1].
+double gamma_bound(double k) {
+  const double ku = k * kEps / 2;
+  return ku < 0.5 ? ku / (1 - ku) : std::numeric_limits<double>::infinity();
+}
+
+// The local number of (r, u = H^T v + w) in the global problem's own units (global.hpp). u is
+// w + H^T M^-1 (H r + f): its row k has the unit s_k = |w_k| + (|H^T| v_size)_k, with
+// v_size_j = (|f_j| + (|H| rc)_j) / M_jj the size the balance's terms give v_j on a degree of
+// freedom with mass (rc: r entry by entry, capped at the condensed problem's cap_i, so that a
+// diverging r gains nothing), never v itself (v = 0 at a stick by cancellation). A rounded
+// rank-deficient M (a rigid mode) makes the condensed W and v huge along the mode; these units
+// stay at the data's size, so a penetration u_N = -7782 next to |f| ~ 3 is seen
+// (hostile-friction F4-02). u_k is formed in twice the working precision (Dot2) where some |v_j|
+// exceeds v_size_j, as the local verdict does where r exceeds its cap.
+double local_in_global_units(const GlobalFrictionContactProblem& g,
+                             const FrictionContactProblem& condensed, const Eigen::VectorXd& v,
+                             const Eigen::VectorXd& r) {
+  const Eigen::Index m = g.dofs(), nc = g.contacts();
+  const FrictionUnits cond = friction_units(condensed);
+  Eigen::VectorXd rc = r.cwiseAbs();
+  if (cond.r_cap.size() == nc)
+    for (Eigen::Index i = 0; i < 3 * nc; ++i) rc[i] = std::min(rc[i], cond.r_cap[i / 3]);
+  const Eigen::VectorXd force = g.f.cwiseAbs() + g.H.cwiseAbs() * rc;
+  const Eigen::VectorXd diag = g.M.diagonal();
+  Eigen::VectorXd v_size(m);
+  for (Eigen::Index j = 0; j < m; ++j)  // no mass on j: v_j's own size is all there is
+    v_size[j] = diag[j] > 0 ? force[j] / diag[j] : std::abs(v[j]);
+  // d_i: the largest entry of contact i's block of the condensed W (u per r), when there is one.
+  Eigen::VectorXd block = Eigen::VectorXd::Zero(nc);
+  if (condensed.W.rows() == 3 * nc)
+    for (Eigen::Index k = 0; k < condensed.W.outerSize(); ++k)
+      for (Sparse::InnerIterator it(condensed.W, k); it; ++it)
+        if (it.row() / 3 == it.col() / 3)
+          block[k / 3] = std::max(block[k / 3], std::abs(it.value()));
+  double worst = 0;
+  for (Eigen::Index i = 0; i < nc; ++i) {
+    Vec3 u_reduced;
+    ContactUnits3 units;
+    double c_max = 0;
+    bool verifiable = true;
+    for (int jr = 0; jr < 3; ++jr) {
+      const Eigen::Index k = 3 * i + jr;  // column k of H is row k of H^T
+      double c = 0, full = 0, plain = g.w[k], s = g.w[k], comp = 0, count = 1;  // c: (|H^T| v_size)_k
+      for (Sparse::InnerIterator it(g.H, k); it; ++it) {
+        const double h = it.value(), x = v[it.row()];
+        c += std::abs(h) * v_size[it.row()];
+        full += std::abs(h * x);
+        plain += h * x;
+        const double p = h * x, e = std::fma(h, x, -p), t = s + p, z = t - s;  // Dot2
+        comp += ((s - (t - z)) + (p - z)) + e;
+        s = t;
+        count += 1;
+      }
+      const double wk = std::abs(g.w[k]), gk = gamma_bound(count);
+      double a = gk * (c + wk), uk = plain;
+      if (full > c) {  // some |v_j| beyond v_size_j
+        uk = s + comp;
+        if (gk * gk * (full + wk) > a) verifiable = false;
+        a += 2 * kEps * std::abs(uk) + gk * gk * (full + wk);
+      }
+      c_max = std::max(c_max, c);
+      if (jr == 0) units.s_N = wk + c;
+      u_reduced[jr] = std::copysign(std::max(0.0, std::abs(uk) - a), uk);
+    }
+    units.S = g.w.segment<3>(3 * i).norm() + c_max;
+    const double r_own = r.segment<3>(3 * i).lpNorm<Eigen::Infinity>();
+    units.R = block[i] > 0 ? std::max(r_own, units.S / block[i]) : r_own;
+    const double e = judge_contact(r.segment<3>(3 * i), u_reduced, units, g.mu[i]).error;
+    worst = std::max(worst, verifiable ? e : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
 }  // namespace
 
 CondensedProblem condense(const GlobalFrictionContactProblem& g) {
@@ -90,8 +164,7 @@ GlobalErrors global_errors(const GlobalFrictionContactProblem& g,
                                g.f.cwiseAbs();
   for (Eigen::Index k = 0; k < res.size(); ++k)
     if (res[k] != 0) e.balance = std::max(e.balance, std::abs(res[k]) / size[k]);
-  const Eigen::VectorXd u = g.H.transpose() * v + g.w;
-  e.local = friction_residuals(condensed, friction_units(condensed), r, u).natural;
+  e.local = local_in_global_units(g, condensed, v, r);
   return e;
 }
 

@@ -1,6 +1,7 @@
 // Several solutions of a frictional contact problem (solutions.hpp).
 #include "cpkit/lcp/friction/solutions.hpp"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -59,6 +60,45 @@ struct Collector {
   }
 };
 
+// The families of solutions.hpp: group by u, then the affine hull of each group's r by SVD.
+std::vector<SolutionFamily> families_of(const std::vector<SolveResult>& list, double q_inf,
+                                        double r_ref) {
+  std::vector<SolutionFamily> out;
+  std::vector<bool> taken(list.size(), false);
+  for (std::size_t a = 0; a < list.size(); ++a) {
+    if (taken[a]) continue;
+    SolutionFamily f;
+    f.members.push_back(static_cast<int>(a));
+    const Eigen::VectorXd& ua = list[a].w;
+    for (std::size_t b = a + 1; b < list.size(); ++b) {
+      const Eigen::VectorXd& ub = list[b].w;
+      const double size = std::max({ua.lpNorm<Eigen::Infinity>(), ub.lpNorm<Eigen::Infinity>(), q_inf});
+      if (!taken[b] && (ua - ub).lpNorm<Eigen::Infinity>() <= kDistinct * size) {
+        taken[b] = true;
+        f.members.push_back(static_cast<int>(b));
+      }
+    }
+    const Eigen::VectorXd& r0 = list[a].z;
+    Eigen::MatrixXd D(r0.size(), static_cast<Eigen::Index>(f.members.size()) - 1);
+    double size = r_ref;
+    for (std::size_t k = 1; k < f.members.size(); ++k) {
+      const Eigen::VectorXd& rk = list[static_cast<std::size_t>(f.members[k])].z;
+      D.col(static_cast<Eigen::Index>(k) - 1) = rk - r0;
+      size = std::max({size, rk.lpNorm<Eigen::Infinity>(), r0.lpNorm<Eigen::Infinity>()});
+    }
+    f.basis.resize(r0.size(), 0);
+    if (D.cols() > 0) {
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(D, Eigen::ComputeThinU);
+      Eigen::Index rank = 0;
+      while (rank < svd.singularValues().size() && svd.singularValues()[rank] > kDistinct * size)
+        ++rank;
+      f.basis = svd.matrixU().leftCols(rank);
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string FrictionSolutionsOptions::validate() const {
@@ -115,7 +155,10 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
         " unknowns): " + std::to_string(fs.extreme) + " extreme LCP solutions, " +
         std::to_string(fs.r.size()) + " distinct r, enumeration " +
         (fs.complete ? "complete for the faceted problem" : "NOT complete (" + fs.message + ")") +
-        (fs.infinite ? ", with continua (listed by their vertices)" : "") + "; " +
+        (fs.infinite ? ", with continua in the LCP's facet multipliers (listed by their "
+                       "vertices; " + std::to_string(fs.r.size()) + " distinct r)"
+                     : "") +
+        "; " +
         std::to_string(col.verified) +
         " of them verified on the true cone (exact or polished); "
         "complete for the faceted problem is not complete for the true cone; ";
@@ -182,6 +225,7 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     col.add(solve_prox(p, po));
   }
   for (SolveResult& s : set.solutions) s.solver = s.solver.empty() ? "?" : s.solver;
+  set.families = families_of(set.solutions, units.q_inf, r_ref);
   set.complete = false;
   set.message =
       faceted_note + "multistart: " + std::to_string(col.tried) +
@@ -195,6 +239,15 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
       "), " + std::to_string(col.verified) + " verified, " + std::to_string(set.solutions.size()) +
       " distinct; complete: false (a solution no start led to is not found)";
   if (remaining() <= 0) set.message += "; the time limit stopped the search";
+  set.message += "; " + std::to_string(set.solutions.size()) + " distinct r with " +
+                 std::to_string(set.families.size()) + " distinct u";
+  for (const SolutionFamily& f : set.families) {
+    if (f.dimension() == 0) continue;
+    set.message += "; solutions";
+    for (int m : f.members) set.message += " " + std::to_string(m + 1);
+    set.message += " share u: one continuum, r in a convex set of dimension >= " +
+                   std::to_string(f.dimension()) + " (every convex combination of them solves)";
+  }
   return set;
 }
 

@@ -19,8 +19,14 @@ inline Vec3 project_on_cone(const Vec3& x, double mu) {
   const double nt = std::hypot(x[1], x[2]);
   if (mu * nt <= -x[0]) return Vec3::Zero();
   if (nt <= mu * x[0]) return x;
-  const double n = (x[0] + mu * nt) / (1 + mu * mu);
-  return Vec3(n, mu * n * x[1] / nt, mu * n * x[2] / nt);
+  if (mu <= 1) {
+    const double n = (x[0] + mu * nt) / (1 + mu * mu);
+    return Vec3(n, mu * n * x[1] / nt, mu * n * x[2] / nt);
+  }
+  // The same point written with t = 1/mu, so that a huge mu (1e13 models "no slip"; mu^2
+  // overflows beyond 1e154) neither overflows nor loses the normal part.
+  const double t = 1 / mu, tangential = (t * x[0] + nt) / (1 + t * t);  // = mu n
+  return Vec3(tangential * t, tangential * x[1] / nt, tangential * x[2] / nt);
 }
 
 /// De Saxce's modified velocity u_hat = u + (mu |u_T|, 0, 0).

@@ -10,8 +10,14 @@
 /// The verdict is in the GLOBAL variables and unit-free:
 ///   balance = max_k |M v - H r - f|_k / ((|M| |v|)_k + (|H| |r|)_k + |f_k|)   (0/0 = 0),
 ///             invariant under f -> a f (r, v -> a r, a v) and M -> b M (v -> v / b);
-///   local   = the unit-free number of friction_verdict.hpp for r with u = H^T v + w (the
-///             condensed problem's units, so invariant under the same scalings);
+///   local   = the unit-free number of friction_verdict.hpp for r with u = H^T v + w, in the
+///             GLOBAL data's units: u = w + H^T M^-1 (H r + f), so row k of u has the unit
+///             s_k = |w_k| + (|H^T| v_size)_k, v_size_j = (|f_j| + (|H| rc)_j) / M_jj (the size
+///             the balance's terms give v_j on a degree of freedom with mass; rc = |r| capped
+///             entry by entry at the condensed problem's cap_i), so that a W = H^T M^-1 H inflated
+///             by a rounded rigid mode of M (entries ~1e16) excuses nothing; r_i in
+///             max(||r_i||, S_i / d_i), d_i the condensed W's block; invariant under the same
+///             scalings;
 ///   kSolved when both are <= tol, kSolvedInaccurate when both are <= tol_acceptable.
 /// A singular (or not positive definite, or not symmetric) M is said in the message and the
 /// status is kNotRun; a singular symmetric M is solved in the global variables by

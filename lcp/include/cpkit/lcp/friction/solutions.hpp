@@ -24,7 +24,10 @@
 /// Distinct: two verified r are the same solution when
 ///   ||r_a - r_b||_inf <= 1e-6 max(||r_a||_inf, ||r_b||_inf, r_ref),  r_ref = ||q||_inf/||W||_max
 /// (unit-free: unchanged when q is scaled, or W and q together). Only finalize() verdicts of
-/// kSolved are listed (tol of `common`), each a full SolveResult (z = r, w = u).
+/// kSolved are listed (tol of `common`), each a full SolveResult (z = r, w = u). Distinct r need
+/// not be distinct solutions in the sense a user counts: `families` says which share u (a
+/// rank-deficient W lets r move in a convex set at fixed u: one continuum, not several).
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
@@ -34,8 +37,23 @@
 
 namespace cpkit::lcp::friction {
 
+/// Listed solutions that share u (to 1e-6 of max(||u||_inf, ||q||_inf)). For a fixed u the
+/// solutions r form a convex set (W r = u - q, and each contact's law is convex in r once u_i
+/// is known: r_i = 0 where u_N > 0, a ray where it slides, the cone where it sticks), so the
+/// members and every convex combination of them solve the problem: a continuum, not separate
+/// solutions. `basis` spans the affine hull of the members' r (orthonormal columns, rank
+/// decided at 1e-6 of max(||r||_inf, r_ref)); its dimension is a lower bound of the continuum's.
+struct SolutionFamily {
+  std::vector<int> members;  ///< indices into FrictionSolutionSet::solutions (0-based)
+  Eigen::MatrixXd basis;     ///< 3 n_c x dimension
+  int dimension() const { return static_cast<int>(basis.cols()); }
+};
+
 struct FrictionSolutionSet {
   std::vector<SolveResult> solutions;  ///< distinct verified solutions, in the order found
+  /// The solutions grouped by their u: one family per distinct u, in order of first member;
+  /// a family of dimension >= 1 is a continuum of r.
+  std::vector<SolutionFamily> families;
   bool complete = false;               ///< true only when proved: every solution is listed
   std::string message;                 ///< the route, counts, and what complete means here
 };
