@@ -76,8 +76,30 @@ TEST_CASE("fc request: refusals name the option", "[fc][request]") {
   CHECK(refusal(r) == "unknown friction solver 'simplex' (valid: " + fc_solver_list() + ")");
   r.solver = "auto";
   r.starts = 0;
-  CHECK(refusal(r, true) == "--starts must be at least 1, got 0");
+  CHECK(refusal(r, true) == "--starts must be in [1, 10000], got 0");
+  r.starts = 10001;  // the documented bound (FrictionSolutionsOptions::kMaxStarts)
+  CHECK(refusal(r, true) == "--starts must be in [1, 10000], got 10001");
+  r.starts = 20;
   std::filesystem::remove(r.file);
   r.file = "/nonexistent/problem.dat";
   CHECK(refusal(r).find("/nonexistent/problem.dat") != std::string::npos);
+}
+
+// Issue 34, F4-12: a global problem whose M is diag(1, ..., 1, -1) (indefinite: no LDL^T of a
+// positive definite matrix, and not singular, so no proximal route) is not run; its JSON says
+// so (it threw "W is 0 x 0"), with null errors, and the exit code is the text output's, 5.
+TEST_CASE("fc request: a global M that cannot be condensed is not_run in the JSON too",
+          "[fc][request][global]") {
+  FcRequest r;
+  r.file = std::string(CPKIT_TEST_DATA_DIR) + "/fclib/hostile/F4-12_M_indefinite.dat";
+  const FcSolveOutcome out = run_fc_solve_request(r);
+  REQUIRE(out.is_global);
+  CHECK(out.exit_code == kExitInconclusive);
+  CHECK(out.result.status == Status::kNotRun);
+  const auto j = fc_solve_json(out);
+  CHECK(j["status"] == "not_run");
+  CHECK(j["global"]["errors"]["balance"].is_null());
+  CHECK(j["global"]["errors"]["local"].is_null());
+  CHECK(j["per_contact"].empty());
+  CHECK(fc_solve_text(out).find("status:     not_run\n") != std::string::npos);
 }
