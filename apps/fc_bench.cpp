@@ -21,8 +21,9 @@ int run_fc_bench(const FcBenchArgs& a) {
   // Nothing of --out may be a problem file, before anything is read or written (as `cpkit map`).
   std::vector<NamedPath> inputs;
   for (const auto& f : a.files) inputs.push_back({"FILE", f});
-  refuse_outputs_over_inputs("cpkit fc bench", prefix_output_files(a.out, {".csv", ".png", ".lock"}),
-                             inputs);
+  const std::vector<NamedPath> outputs = prefix_output_files(a.out, {".csv", ".png", ".lock"});
+  refuse_outputs_over_inputs("cpkit fc bench", outputs, inputs);
+  refuse_special_outputs("cpkit fc bench", outputs);  // e.g. PREFIX.csv -> /dev/full
   const lcp::friction::FcBench bench = lcp::friction::prepare_fc_bench(a);
   const fs::path parent = fs::path(a.out).parent_path();
   std::error_code ec;

@@ -66,6 +66,16 @@ void refuse_outputs_over_inputs(const std::string& command, const std::vector<Na
                          "): one would overwrite the other; give them different paths");
 }
 
+void refuse_special_outputs(const std::string& command, const std::vector<NamedPath>& outputs) {
+  for (const auto& o : outputs) {
+    struct stat st {};
+    if (o.path.empty() || ::stat(o.path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) continue;
+    throw InputError(command + ": the output '" + o.path + "' (" + o.what +
+                     ") exists and is not a regular file (a device, a pipe, a folder or a link "
+                     "to one): it cannot hold the output; remove it or choose another path");
+  }
+}
+
 std::vector<NamedPath> prefix_output_files(const std::string& prefix,
                                            const std::vector<std::string>& suffixes) {
   std::vector<NamedPath> out;

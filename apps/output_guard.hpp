@@ -28,6 +28,12 @@ bool inside_folder(const std::string& path, const std::string& folder);
 void refuse_outputs_over_inputs(const std::string& command, const std::vector<NamedPath>& outputs,
                                 const std::vector<NamedPath>& inputs);
 
+/// Throws InputError (exit 2) naming it when an output exists and is not a regular file: a
+/// device such as /dev/full, a FIFO, a folder, or a symbolic link to one. Such outputs are
+/// refused, not replaced: a table written as NAME.partial and renamed would replace the link,
+/// and a device cannot hold the table (`cpkit fc bench`).
+void refuse_special_outputs(const std::string& command, const std::vector<NamedPath>& outputs);
+
 /// The files PREFIX<suffix> and their ".partial" names (written until complete), named for
 /// messages ("--out PREFIX: PREFIX.csv"): what a command writes under its --out prefix.
 std::vector<NamedPath> prefix_output_files(const std::string& prefix,

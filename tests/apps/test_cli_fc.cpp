@@ -8,6 +8,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <csignal>
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <filesystem>
@@ -356,6 +358,34 @@ int progress_lines(const std::string& err, const std::string& problem) {
   return n;
 }
 
+/// `cpkit ARGS` with every file it writes limited to 1024 bytes (RLIMIT_FSIZE, no core file):
+/// the write that crosses the limit ends the run (SIGXFSZ), or with `ignore_signal` fails
+/// (EFBIG) as on a full disk. A deterministic stop part-way through a run.
+cpkit::test::CliRun run_with_file_limit(const std::string& args, bool ignore_signal) {
+  rlimit old_fsize{}, old_core{};
+  REQUIRE(::getrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
+  REQUIRE(::getrlimit(RLIMIT_CORE, &old_core) == 0);
+  rlimit small = old_fsize, no_core = old_core;
+  small.rlim_cur = 1024;
+  no_core.rlim_cur = 0;
+  const auto old_handler = ::signal(SIGXFSZ, ignore_signal ? SIG_IGN : SIG_DFL);
+  REQUIRE(::setrlimit(RLIMIT_CORE, &no_core) == 0);
+  REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+  const auto run = cpkit::test::run_cpkit(args);
+  REQUIRE(::setrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
+  REQUIRE(::setrlimit(RLIMIT_CORE, &old_core) == 0);
+  ::signal(SIGXFSZ, old_handler);
+  return run;
+}
+
+/// `fc bench` of 6 copies of a 1-contact file x 3 solvers: 18 rows of over 60 bytes each (the
+/// file's path alone), so the table crosses 1024 bytes part-way.
+std::string bench_18_rows(const std::string& prefix) {
+  std::string files;
+  for (int k = 0; k < 6; ++k) files += " " + data("local/FrictionContact3D_1c.dat");
+  return "fc bench" + files + " --solvers nsgs,fb-soc,prox --no-plot --out '" + prefix + "'";
+}
+
 }  // namespace
 
 // Issue 34, F4-09: PREFIX.csv is written as PREFIX.csv.partial, each row flushed, renamed when
@@ -365,18 +395,33 @@ TEST_CASE("fc bench: a write error is exit 2 and the previous table is kept", "[
   std::filesystem::create_directories(dir);
   const std::string prefix = (dir / "full").string();
   std::ofstream(prefix + ".csv") << "old table\n";
-  // The table being written lands on a full device: ENOSPC at the first flush.
-  std::filesystem::create_symlink("/dev/full", prefix + ".csv.partial");
-  const auto run = run_cpkit("fc bench " + data("local/FrictionContact3D_1c.dat") +
-                             " --solvers nsgs,prox --no-plot --out '" + prefix + "'");
+  // The file system refuses the write that crosses 1024 bytes (EFBIG, as a full disk's ENOSPC).
+  const auto run = run_with_file_limit(bench_18_rows(prefix), true);
   INFO(run.err);
   CHECK(run.code == 2);
   CHECK(run.out.empty());
   CHECK(run.err.find("error writing '" + prefix + ".csv' (disk full or not writable?)") !=
         std::string::npos);
-  CHECK(progress_lines(run.err, "FrictionContact3D_1c") == 0);  // stopped before any solve
   CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
+  // Stopped at the row that failed, not after the remaining solves: one progress line per row
+  // on disk.
+  const int finished = complete_rows(cpkit::test::slurp(prefix + ".csv.partial"));
+  CHECK(finished >= 1);
+  CHECK(finished < 18);
+  CHECK(progress_lines(run.err, "FrictionContact3D_1c") == finished);
   CHECK_FALSE(std::filesystem::exists(prefix + ".lock"));
+  // A table that would land on a device (F4-09's PREFIX.csv -> /dev/full) is refused up front.
+  for (const std::string& name : {prefix + "_dev.csv", prefix + "_dev.csv.partial"}) {
+    std::filesystem::create_symlink("/dev/full", name);
+    const auto dev = run_cpkit("fc bench " + data("local/FrictionContact3D_1c.dat") +
+                               " --solvers nsgs --no-plot --out '" + prefix + "_dev'");
+    INFO(dev.err);
+    CHECK(dev.code == 2);
+    CHECK(dev.err.find("the output '" + name + "'") != std::string::npos);
+    CHECK(dev.err.find("is not a regular file") != std::string::npos);
+    CHECK(std::filesystem::is_symlink(name));  // left as it was
+    std::filesystem::remove(name);
+  }
 }
 
 TEST_CASE("fc bench: a run killed part-way keeps the previous table and its finished rows",
@@ -385,25 +430,9 @@ TEST_CASE("fc bench: a run killed part-way keeps the previous table and its fini
   std::filesystem::create_directories(dir);
   const std::string prefix = (dir / "half").string();
   std::ofstream(prefix + ".csv") << "old table\n";
-  std::string files;
-  for (int k = 0; k < 6; ++k) files += " " + data("local/FrictionContact3D_1c.dat");
-  const std::string bench = "fc bench" + files + " --solvers nsgs,fb-soc,prox --no-plot --out '" +
-                            prefix + "'";
-  const int rows = 18;  // 6 files x 3 solvers, each row over 60 bytes (the file's path alone)
-  // A deterministic kill: the file size limit (1024 bytes) stops the run (SIGXFSZ, or EFBIG
-  // where the signal is ignored) at the row that crosses it, after the rows before it were
-  // written. Rows flushed as they finish are in PREFIX.csv.partial, one per progress line.
-  rlimit old_fsize{}, old_core{};
-  REQUIRE(::getrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
-  REQUIRE(::getrlimit(RLIMIT_CORE, &old_core) == 0);
-  rlimit small = old_fsize, no_core = old_core;
-  small.rlim_cur = 1024;
-  no_core.rlim_cur = 0;
-  REQUIRE(::setrlimit(RLIMIT_CORE, &no_core) == 0);
-  REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
-  const auto killed = run_cpkit(bench);
-  REQUIRE(::setrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
-  REQUIRE(::setrlimit(RLIMIT_CORE, &old_core) == 0);
+  // Killed (SIGXFSZ) at the row that crosses 1024 bytes: the rows before it, flushed as they
+  // finished, are in PREFIX.csv.partial, one per progress line; PREFIX.csv is untouched.
+  const auto killed = run_with_file_limit(bench_18_rows(prefix), false);
   INFO(killed.err);
   CHECK(killed.code != 0);
   CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
@@ -412,14 +441,14 @@ TEST_CASE("fc bench: a run killed part-way keeps the previous table and its fini
   CHECK(partial.rfind("file,problem,contacts,solver,status,", 0) == 0);
   const int finished = complete_rows(partial);
   CHECK(finished >= 1);
-  CHECK(finished < rows);
+  CHECK(finished < 18);
   CHECK(progress_lines(killed.err, "FrictionContact3D_1c") == finished);
   // The next run is not blocked by the lock file the killed run left: the whole table.
-  const auto full = run_cpkit(bench);
+  const auto full = run_cpkit(bench_18_rows(prefix));
   INFO(full.err);
   REQUIRE(full.code == 0);
   const std::string table = cpkit::test::slurp(prefix + ".csv");
-  CHECK(complete_rows(table) == rows);
+  CHECK(complete_rows(table) == 18);
   CHECK(table.rfind("file,problem,contacts,solver,status,", 0) == 0);
   CHECK_FALSE(std::filesystem::exists(prefix + ".csv.partial"));
   CHECK_FALSE(std::filesystem::exists(prefix + ".lock"));
