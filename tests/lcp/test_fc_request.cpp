@@ -6,9 +6,11 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/friction/fc_bench.hpp"
 #include "cpkit/lcp/friction/fc_request.hpp"
 
 using namespace cpkit;
@@ -102,4 +104,48 @@ TEST_CASE("fc request: a global M that cannot be condensed is not_run in the JSO
   CHECK(j["global"]["errors"]["local"].is_null());
   CHECK(j["per_contact"].empty());
   CHECK(fc_solve_text(out).find("status:     not_run\n") != std::string::npos);
+}
+
+// `cpkit fc bench`'s table (fc_bench.hpp) on the hand-solved stick contact above: the header, a
+// row per solver with the hand answer's state solved; refusals before any solve; a stream that
+// fails stops the table at once (issue 34, F4-09).
+TEST_CASE("fc bench table: rows, refusals, and a failing stream", "[fc][request][bench]") {
+  FcBenchRequest r;
+  r.files = {one_contact("cpkit_test_fc_bench_stick.dat", "-1\n0.2\n0")};
+  r.solvers = {"nsgs", "prox"};
+  const FcBench bench = prepare_fc_bench(r);
+  std::ostringstream csv, progress;
+  write_fc_bench_table(bench, csv, "t.csv", &progress);
+  std::istringstream lines(csv.str());
+  std::string line;
+  REQUIRE(std::getline(lines, line));
+  CHECK(line == "file,problem,contacts,solver,status,iterations,seconds,unit_free,relative_q,"
+                "relative_max");
+  int rows = 0;
+  for (const char* solver : {"nsgs", "prox"}) {
+    REQUIRE(std::getline(lines, line));
+    ++rows;
+    CHECK(line.rfind("\"" + r.files[0] + "\",", 0) == 0);
+    CHECK(line.find(std::string(",1,") + solver + ",solved,") != std::string::npos);
+  }
+  CHECK_FALSE(std::getline(lines, line));
+  CHECK(rows == 2);
+  // A stream that cannot be written: InputError naming the table, before the first solve.
+  std::ostream broken(nullptr);
+  std::ostringstream none;
+  try {
+    write_fc_bench_table(bench, broken, "t.csv", &none);
+    FAIL("accepted a stream that cannot be written");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "error writing 't.csv' (disk full or not writable?)");
+  }
+  CHECK(none.str().empty());
+  // Refusals in the user's words.
+  FcBenchRequest bad = r;
+  bad.solvers = {"simplex"};
+  CHECK_THROWS_WITH(prepare_fc_bench(bad), "unknown friction solver 'simplex' in --solvers");
+  bad = r;
+  bad.tol = 0.5;
+  CHECK_THROWS_WITH(prepare_fc_bench(bad), "--tol must be in (0, 1e-3], got 0.5");
+  std::filesystem::remove(r.files[0]);
 }
