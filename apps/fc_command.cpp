@@ -54,7 +54,8 @@ void add_fc_command(CLI::App& app, Context& ctx) {
                                             "the faceted problem for small n_c; multistart, "
                                             "complete: false, otherwise)");
   add_common(l, *sols);
-  l->add_option("--starts", sols->starts, "seeded starts of the multistart route (default 20)");
+  l->add_option("--starts", sols->starts, "seeded starts of the multistart route (default 20, at most " +
+                    std::to_string(lcp::friction::FrictionSolutionsOptions::kMaxStarts) + ")");
   l->add_option("--seed", sols->seed, "seed of the starts (default 1)");
   l->callback([sols, &ctx]() {
     ctx.exit_code = print_outcome(lcp::friction::run_fc_solutions_request(*sols), sols->json,
@@ -71,7 +72,9 @@ void add_fc_command(CLI::App& app, Context& ctx) {
                 "comma-separated solver names (default: every friction solver: " +
                     lcp::friction::fc_solver_list() + ")")
       ->delimiter(',');
-  b->add_option("--out", bench->out, "prefix of PREFIX.csv and PREFIX.png")->required();
+  b->add_option("--out", bench->out, "prefix of PREFIX.csv and PREFIX.png (refused when one is "
+                                     "a FILE; PREFIX.lock is held while the bench runs)")
+      ->required();
   b->add_option("--tol", bench->tol, "tolerance on the unit-free residual (default 1e-10)");
   b->add_option("--time-limit", bench->time_limit_s, "seconds per solve (default 60)");
   b->add_flag("--no-plot", bench->no_plot, "write the CSV only");

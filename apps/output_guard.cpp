@@ -66,19 +66,34 @@ void refuse_outputs_over_inputs(const std::string& command, const std::vector<Na
                          "): one would overwrite the other; give them different paths");
 }
 
-std::vector<NamedPath> map_output_files(const std::string& prefix) {
+void refuse_special_outputs(const std::string& command, const std::vector<NamedPath>& outputs) {
+  for (const auto& o : outputs) {
+    struct stat st {};
+    if (o.path.empty() || ::stat(o.path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) continue;
+    throw InputError(command + ": the output '" + o.path + "' (" + o.what +
+                     ") exists and is not a regular file (a device, a pipe, a folder or a link "
+                     "to one): it cannot hold the output; remove it or choose another path");
+  }
+}
+
+std::vector<NamedPath> prefix_output_files(const std::string& prefix,
+                                           const std::vector<std::string>& suffixes) {
   std::vector<NamedPath> out;
   if (prefix.empty()) return out;
   const std::string head = "--out " + prefix + ": ";
-  std::vector<std::string> names = {".json", ".csv", ".png", ".svg", ".lock", "_critical.csv"};
-  for (const char* key : {"count", "types", "disagree", "x", "y", "theta", "class", "min_count",
-                          "max_count", "pattern", "complete"})
-    names.push_back(std::string("_") + key + ".npy");
-  for (const auto& n : names) {
+  for (const auto& n : suffixes) {
     out.push_back({head + "PREFIX" + n, prefix + n});
     out.push_back({head + "PREFIX" + n + ".partial", prefix + n + ".partial"});
   }
   return out;
+}
+
+std::vector<NamedPath> map_output_files(const std::string& prefix) {
+  std::vector<std::string> names = {".json", ".csv", ".png", ".svg", ".lock", "_critical.csv"};
+  for (const char* key : {"count", "types", "disagree", "x", "y", "theta", "class", "min_count",
+                          "max_count", "pattern", "complete"})
+    names.push_back(std::string("_") + key + ".npy");
+  return prefix_output_files(prefix, names);
 }
 
 PrefixLock::PrefixLock(const std::string& prefix) : path_(prefix + ".lock") {

@@ -2,7 +2,8 @@
 // Outputs that must not destroy data (issue 24, items 8 and 9): a command refuses an output path
 // that is one of its inputs (or another of its outputs) before it writes anything, and a map
 // holds an exclusive lock on its --out prefix for the whole run, so two runs never mix their
-// files or checkpoints.
+// files or checkpoints. `cpkit fc bench` guards and locks its PREFIX.csv and .png the same way
+// (issue 34, F4-08 and F4-09).
 #include <string>
 #include <vector>
 
@@ -26,6 +27,17 @@ bool inside_folder(const std::string& path, const std::string& folder);
 /// same file. Empty paths are skipped. `command` heads the message ("cpkit map").
 void refuse_outputs_over_inputs(const std::string& command, const std::vector<NamedPath>& outputs,
                                 const std::vector<NamedPath>& inputs);
+
+/// Throws InputError (exit 2) naming it when an output exists and is not a regular file: a
+/// device such as /dev/full, a FIFO, a folder, or a symbolic link to one. Such outputs are
+/// refused, not replaced: a table written as NAME.partial and renamed would replace the link,
+/// and a device cannot hold the table (`cpkit fc bench`).
+void refuse_special_outputs(const std::string& command, const std::vector<NamedPath>& outputs);
+
+/// The files PREFIX<suffix> and their ".partial" names (written until complete), named for
+/// messages ("--out PREFIX: PREFIX.csv"): what a command writes under its --out prefix.
+std::vector<NamedPath> prefix_output_files(const std::string& prefix,
+                                           const std::vector<std::string>& suffixes);
 
 /// Every file a map may write under PREFIX (PREFIX.json, .csv, .png, .svg, .lock,
 /// PREFIX_critical.csv, PREFIX_<array>.npy, and their ".partial" names while written), named

@@ -3,7 +3,14 @@
 // the problem as read, then per contact r in the Coulomb cone, De Saxce's u_hat in the dual cone
 // and r . u_hat = 0, each to 1e-8 of the problem's own sizes; the printed u must be that u.
 #include <catch2/catch.hpp>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <csignal>
+
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -121,13 +128,42 @@ TEST_CASE("fc solve --json solves real files, and the printed r is a solution", 
   }
 }
 
+// One contact, W = I, mu = 0.5, solved by hand (u = r + q; the solution is unique):
+//   q = (-1, 0.2, 0): stick, r = -q = (1, -0.2, 0) (|r_T| = 0.2 <= mu r_N = 0.5), u = 0;
+//   q = (-1, 2, 0): stick would need |r_T| = 2 > 0.5, so slip: u_N = 0 gives r_N = 1,
+//     r_T = -0.5 u_T / |u_T| with u_T = r_T + (2, 0) = (1.5, 0): r = (1, -0.5, 0);
+//   q = (1, 0.3, 0): separation, r = 0 (u = q: u_N + mu |u_T| = 1.15 >= |u_T| / mu = 0.6).
+namespace {
+std::string one_contact_file(const std::string& name, const std::string& q) {
+  const auto file = cpkit::test::scratch_dir() / name;
+  std::ofstream(file) << "3\n1\n\n0\n3\n3\n\n3\n3\n\n1\n0\n0\n\n0\n1\n0\n\n0\n0\n1\n\n" << q
+                      << "\n\n0.5\n";
+  return "'" + file.string() + "'";
+}
+}  // namespace
+
 TEST_CASE("fc solve: each named solver, text output, and not solved is exit 5", "[cli][fc]") {
+  // Every named solver must decide: solved (exit 0) with the hand-solved r, never exit 5.
+  const std::pair<std::string, VectorXd> by_hand[] = {
+      {one_contact_file("stick.dat", "-1 0.2 0"), (VectorXd(3) << 1, -0.2, 0).finished()},
+      {one_contact_file("slip.dat", "-1 2 0"), (VectorXd(3) << 1, -0.5, 0).finished()},
+      {one_contact_file("separation.dat", "1 0.3 0"), VectorXd::Zero(3)}};
   const auto p = cpkit::read_friction_problem(path("local/Rover4396.dat"));
   for (const char* s : {"nsgs", "fb-soc", "prox"}) {
     INFO(s);
+    for (const auto& [file, r] : by_hand) {
+      INFO(file);
+      const auto run = run_cpkit("fc solve " + file + " --json --tol 1e-10 --solver " + s);
+      REQUIRE(run.code == 0);
+      const auto j = parse(run);
+      CHECK(j.at("status") == "solved");
+      CHECK((vec(j.at("r")) - r).cwiseAbs().maxCoeff() <= 1e-8);
+    }
+    // A real file (no published solution): solved, and r checked by hand as above.
     const auto run = run_cpkit("fc solve " + data("local/Rover4396.dat") + " --json --solver " + s);
-    if (run.code == 0) require_friction_solution(p, parse(run));
-    else CHECK(run.code == 5);
+    INFO(run.err);
+    REQUIRE(run.code == 0);
+    require_friction_solution(p, parse(run));
   }
   const auto text = run_cpkit("fc solve " + data("local/FrictionContact3D_1c.dat"));
   CHECK(text.code == 0);
@@ -211,7 +247,8 @@ TEST_CASE("fc solve: bad input is exit 2 with a message naming it", "[cli][fc][b
       // (test "fc solve --json solves the global files" below).
       {"fc solve " + data("README.md"), "README.md"},
       {"fc solve /nonexistent/x.dat", "/nonexistent/x.dat"},
-      {"fc solutions " + f + " --starts 0", "--starts"},
+      {"fc solutions " + f + " --starts 0", "--starts must be in [1, 10000], got 0"},
+      {"fc solutions " + f + " --starts 10001", "--starts must be in [1, 10000], got 10001"},
   };
   for (const auto& [args, what] : cases) {
     INFO(args);
@@ -263,4 +300,177 @@ TEST_CASE("fc bench writes one CSV row per file and solver", "[cli][fc][bench]")
                              (dir / "x").string() + "'");
   CHECK(bad.code == 2);
   CHECK(!std::filesystem::exists(dir / "x.csv"));
+}
+
+// Issue 34, F4-12: a global problem whose M can be neither condensed nor solved in v (indefinite,
+// not symmetric, zero) is not run: status not_run, exit 5, in the text and the JSON output alike
+// (docs/friction_contact.md), and its global errors are null, never 0 (which reads as perfect).
+// Each M's defect is established here, with Eigen, before the program is asked.
+TEST_CASE("fc solve: a global M that cannot be condensed is not_run, exit 5, text and JSON",
+          "[cli][fc][global]") {
+  int decided = 0;
+  for (const char* f : {"hostile/F4-12_M_indefinite.dat", "hostile/F4-12_M_nonsymmetric.dat",
+                        "hostile/F4-12_M_zero.dat"}) {
+    INFO(f);
+    const auto g = cpkit::read_global_friction_problem(path(f));
+    const Eigen::MatrixXd M(g.M);
+    const bool symmetric = (M - M.transpose()).cwiseAbs().maxCoeff() == 0;
+    const bool indefinite =
+        symmetric && Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues().minCoeff() < 0;
+    const bool zero = M.cwiseAbs().maxCoeff() == 0;
+    REQUIRE((!symmetric || indefinite || zero));  // no LDL^T of a positive definite M exists
+    const auto text = run_cpkit("fc solve " + data(f));
+    INFO(text.err);
+    CHECK(text.code == 5);
+    CHECK(text.out.find("status:     not_run") != std::string::npos);
+    CHECK(text.out.find("balance") == std::string::npos);  // no global errors printed
+    const auto json = run_cpkit("fc solve " + data(f) + " --json");
+    INFO(json.err);
+    CHECK(json.code == 5);
+    CHECK(json.err.find("bad input") == std::string::npos);
+    const auto j = parse(json);
+    CHECK(j.at("status") == "not_run");
+    CHECK(!j.at("message").get<std::string>().empty());
+    CHECK(j.at("contacts") == g.contacts());
+    CHECK(j.at("r").empty());
+    CHECK(j.at("global").at("errors").at("balance").is_null());
+    CHECK(j.at("global").at("errors").at("local").is_null());
+    CHECK(j.at("errors").at("unit_free").is_null());
+    decided += json.code == 5 && text.code == 5 ? 1 : 0;
+  }
+  CHECK(decided == 3);
+}
+
+namespace {
+
+/// The data rows of a bench CSV (the lines after the header that end in a newline).
+int complete_rows(const std::string& csv) {
+  int lines = 0;
+  for (char c : csv) lines += c == '\n' ? 1 : 0;
+  return lines - 1;
+}
+
+/// The progress lines a bench prints on stderr, one per finished solve ("NAME SOLVER: ...").
+int progress_lines(const std::string& err, const std::string& problem) {
+  std::istringstream in(err);
+  int n = 0;
+  for (std::string line; std::getline(in, line);) n += line.rfind(problem + " ", 0) == 0 ? 1 : 0;
+  return n;
+}
+
+/// `cpkit ARGS` with every file it writes limited to 1024 bytes (RLIMIT_FSIZE, no core file):
+/// the write that crosses the limit ends the run (SIGXFSZ), or with `ignore_signal` fails
+/// (EFBIG) as on a full disk. A deterministic stop part-way through a run.
+cpkit::test::CliRun run_with_file_limit(const std::string& args, bool ignore_signal) {
+  rlimit old_fsize{}, old_core{};
+  REQUIRE(::getrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
+  REQUIRE(::getrlimit(RLIMIT_CORE, &old_core) == 0);
+  rlimit small = old_fsize, no_core = old_core;
+  small.rlim_cur = 1024;
+  no_core.rlim_cur = 0;
+  const auto old_handler = ::signal(SIGXFSZ, ignore_signal ? SIG_IGN : SIG_DFL);
+  REQUIRE(::setrlimit(RLIMIT_CORE, &no_core) == 0);
+  REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+  const auto run = cpkit::test::run_cpkit(args);
+  REQUIRE(::setrlimit(RLIMIT_FSIZE, &old_fsize) == 0);
+  REQUIRE(::setrlimit(RLIMIT_CORE, &old_core) == 0);
+  ::signal(SIGXFSZ, old_handler);
+  return run;
+}
+
+/// `fc bench` of 6 copies of a 1-contact file x 3 solvers: 18 rows of over 60 bytes each (the
+/// file's path alone), so the table crosses 1024 bytes part-way.
+std::string bench_18_rows(const std::string& prefix) {
+  std::string files;
+  for (int k = 0; k < 6; ++k) files += " " + data("local/FrictionContact3D_1c.dat");
+  return "fc bench" + files + " --solvers nsgs,fb-soc,prox --no-plot --out '" + prefix + "'";
+}
+
+}  // namespace
+
+// Issue 34, F4-09: PREFIX.csv is written as PREFIX.csv.partial, each row flushed, renamed when
+// complete; a write error is an error; a second run on the prefix is refused (PREFIX.lock).
+TEST_CASE("fc bench: a write error is exit 2 and the previous table is kept", "[cli][fc][bench]") {
+  const auto dir = cpkit::test::scratch_dir() / "bench_full";
+  std::filesystem::create_directories(dir);
+  const std::string prefix = (dir / "full").string();
+  std::ofstream(prefix + ".csv") << "old table\n";
+  // The file system refuses the write that crosses 1024 bytes (EFBIG, as a full disk's ENOSPC).
+  const auto run = run_with_file_limit(bench_18_rows(prefix), true);
+  INFO(run.err);
+  CHECK(run.code == 2);
+  CHECK(run.out.empty());
+  CHECK(run.err.find("error writing '" + prefix + ".csv' (disk full or not writable?)") !=
+        std::string::npos);
+  CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
+  // Stopped at the row that failed, not after the remaining solves: one progress line per row
+  // on disk.
+  const int finished = complete_rows(cpkit::test::slurp(prefix + ".csv.partial"));
+  CHECK(finished >= 1);
+  CHECK(finished < 18);
+  CHECK(progress_lines(run.err, "FrictionContact3D_1c") == finished);
+  CHECK_FALSE(std::filesystem::exists(prefix + ".lock"));
+  // A table that would land on a device (F4-09's PREFIX.csv -> /dev/full) is refused up front.
+  for (const std::string& name : {prefix + "_dev.csv", prefix + "_dev.csv.partial"}) {
+    std::filesystem::create_symlink("/dev/full", name);
+    const auto dev = run_cpkit("fc bench " + data("local/FrictionContact3D_1c.dat") +
+                               " --solvers nsgs --no-plot --out '" + prefix + "_dev'");
+    INFO(dev.err);
+    CHECK(dev.code == 2);
+    CHECK(dev.err.find("the output '" + name + "'") != std::string::npos);
+    CHECK(dev.err.find("is not a regular file") != std::string::npos);
+    CHECK(std::filesystem::is_symlink(name));  // left as it was
+    std::filesystem::remove(name);
+  }
+}
+
+TEST_CASE("fc bench: a run killed part-way keeps the previous table and its finished rows",
+          "[cli][fc][bench]") {
+  const auto dir = cpkit::test::scratch_dir() / "bench_killed";
+  std::filesystem::create_directories(dir);
+  const std::string prefix = (dir / "half").string();
+  std::ofstream(prefix + ".csv") << "old table\n";
+  // Killed (SIGXFSZ) at the row that crosses 1024 bytes: the rows before it, flushed as they
+  // finished, are in PREFIX.csv.partial, one per progress line; PREFIX.csv is untouched.
+  const auto killed = run_with_file_limit(bench_18_rows(prefix), false);
+  INFO(killed.err);
+  CHECK(killed.code != 0);
+  CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
+  const std::string partial = cpkit::test::slurp(prefix + ".csv.partial");
+  CHECK(partial.size() == 1024);
+  CHECK(partial.rfind("file,problem,contacts,solver,status,", 0) == 0);
+  const int finished = complete_rows(partial);
+  CHECK(finished >= 1);
+  CHECK(finished < 18);
+  CHECK(progress_lines(killed.err, "FrictionContact3D_1c") == finished);
+  // The next run is not blocked by the lock file the killed run left: the whole table.
+  const auto full = run_cpkit(bench_18_rows(prefix));
+  INFO(full.err);
+  REQUIRE(full.code == 0);
+  const std::string table = cpkit::test::slurp(prefix + ".csv");
+  CHECK(complete_rows(table) == 18);
+  CHECK(table.rfind("file,problem,contacts,solver,status,", 0) == 0);
+  CHECK_FALSE(std::filesystem::exists(prefix + ".csv.partial"));
+  CHECK_FALSE(std::filesystem::exists(prefix + ".lock"));
+}
+
+TEST_CASE("fc bench: a second run on the same --out prefix is refused", "[cli][fc][bench]") {
+  const auto dir = cpkit::test::scratch_dir() / "bench_lock";
+  std::filesystem::create_directories(dir);
+  const std::string prefix = (dir / "same").string(), lock = prefix + ".lock";
+  std::ofstream(prefix + ".csv") << "old table\n";
+  // Another process holds the lock (as a running bench or map does).
+  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+  REQUIRE(::write(fd, "4242\n", 5) == 5);
+  const auto run = run_cpkit("fc bench " + data("local/FrictionContact3D_1c.dat") +
+                             " --solvers nsgs --no-plot --out '" + prefix + "'");
+  ::close(fd);
+  INFO(run.err);
+  CHECK(run.code == 2);
+  CHECK(run.out.empty());
+  CHECK(run.err.find("'" + lock + "' is locked by process 4242") != std::string::npos);
+  CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
+  CHECK_FALSE(std::filesystem::exists(prefix + ".csv.partial"));
 }

@@ -105,3 +105,45 @@ TEST_CASE("simulate refuses outputs that are its inputs or each other", "[cli][s
   require_refused("simulate --system '" + sys.string() + "' --csv '" + sys.string() + "'", sys,
                   "is the input file");
 }
+
+// Issue 34, F4-08: `cpkit fc bench FILE... --out PREFIX` wrote PREFIX.csv (and PREFIX.png) over
+// a problem file named like an output. The commands of the finding's README, on a Siconos file
+// copied under those names (readers choose the format by content): each refused, exit 2, naming
+// the input and the output, and every input intact.
+TEST_CASE("fc bench refuses an --out prefix whose files are its problem files", "[cli][fc]") {
+  const fs::path dir = scratch_dir() / "guard_fc_bench";
+  fs::create_directories(dir);
+  const fs::path problem = fs::path(CPKIT_TEST_DATA_DIR) / "fclib/local/FC3D_Example1.dat";
+  const auto copy = [&](const std::string& name) {
+    fs::copy_file(problem, dir / name, fs::copy_options::overwrite_existing);
+    return dir / name;
+  };
+  const auto refused = [&](const fs::path& input, const std::string& out, const std::string& args,
+                           const std::string& output) {
+    require_refused("fc bench '" + input.string() + "' --out '" + out + "' --solvers nsgs" + args,
+                    input, "is the input file '" + input.string() + "'");
+    const CliRun r = run_cpkit("fc bench '" + input.string() + "' --out '" + out +
+                               "' --solvers nsgs" + args);
+    CHECK(r.err.find("the output '" + output + "'") != std::string::npos);  // both named
+    CHECK_FALSE(fs::exists(out + ".lock"));  // nothing written
+  };
+  // PREFIX.csv is the input.
+  const fs::path in = copy("in.csv");
+  refused(in, (dir / "in").string(), " --no-plot", (dir / "in").string() + ".csv");
+  // PREFIX.csv is a symbolic link to the input.
+  const fs::path a = copy("a.dat");
+  fs::create_symlink(a, dir / "link.csv");
+  refused(a, (dir / "link").string(), " --no-plot", (dir / "link").string() + ".csv");
+  // PREFIX.png is the input (with the plot).
+  const fs::path b = copy("b.png");
+  refused(b, (dir / "b").string(), "", (dir / "b").string() + ".png");
+  // The table's temporary name too.
+  const fs::path t = copy("t.csv.partial");
+  refused(t, (dir / "t").string(), " --no-plot", (dir / "t").string() + ".csv.partial");
+  // A different prefix beside them is fine (the check is not over-broad).
+  const CliRun ok = run_cpkit("fc bench '" + in.string() + "' '" + a.string() + "' --out '" +
+                              (dir / "bench").string() + "' --solvers nsgs --no-plot");
+  INFO(ok.err);
+  CHECK(ok.code == 0);
+  CHECK(fs::exists(dir / "bench.csv"));
+}

@@ -6,9 +6,11 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/lcp/friction/fc_bench.hpp"
 #include "cpkit/lcp/friction/fc_request.hpp"
 
 using namespace cpkit;
@@ -76,8 +78,74 @@ TEST_CASE("fc request: refusals name the option", "[fc][request]") {
   CHECK(refusal(r) == "unknown friction solver 'simplex' (valid: " + fc_solver_list() + ")");
   r.solver = "auto";
   r.starts = 0;
-  CHECK(refusal(r, true) == "--starts must be at least 1, got 0");
+  CHECK(refusal(r, true) == "--starts must be in [1, 10000], got 0");
+  r.starts = 10001;  // the documented bound (FrictionSolutionsOptions::kMaxStarts)
+  CHECK(refusal(r, true) == "--starts must be in [1, 10000], got 10001");
+  r.starts = 20;
   std::filesystem::remove(r.file);
   r.file = "/nonexistent/problem.dat";
   CHECK(refusal(r).find("/nonexistent/problem.dat") != std::string::npos);
+}
+
+// Issue 34, F4-12: a global problem whose M is diag(1, ..., 1, -1) (indefinite: no LDL^T of a
+// positive definite matrix, and not singular, so no proximal route) is not run; its JSON says
+// so (it threw "W is 0 x 0"), with null errors, and the exit code is the text output's, 5.
+TEST_CASE("fc request: a global M that cannot be condensed is not_run in the JSON too",
+          "[fc][request][global]") {
+  FcRequest r;
+  r.file = std::string(CPKIT_TEST_DATA_DIR) + "/fclib/hostile/F4-12_M_indefinite.dat";
+  const FcSolveOutcome out = run_fc_solve_request(r);
+  REQUIRE(out.is_global);
+  CHECK(out.exit_code == kExitInconclusive);
+  CHECK(out.result.status == Status::kNotRun);
+  const auto j = fc_solve_json(out);
+  CHECK(j["status"] == "not_run");
+  CHECK(j["global"]["errors"]["balance"].is_null());
+  CHECK(j["global"]["errors"]["local"].is_null());
+  CHECK(j["per_contact"].empty());
+  CHECK(fc_solve_text(out).find("status:     not_run\n") != std::string::npos);
+}
+
+// `cpkit fc bench`'s table (fc_bench.hpp) on the hand-solved stick contact above: the header, a
+// row per solver with the hand answer's state solved; refusals before any solve; a stream that
+// fails stops the table at once (issue 34, F4-09).
+TEST_CASE("fc bench table: rows, refusals, and a failing stream", "[fc][request][bench]") {
+  FcBenchRequest r;
+  r.files = {one_contact("cpkit_test_fc_bench_stick.dat", "-1\n0.2\n0")};
+  r.solvers = {"nsgs", "prox"};
+  const FcBench bench = prepare_fc_bench(r);
+  std::ostringstream csv, progress;
+  write_fc_bench_table(bench, csv, "t.csv", &progress);
+  std::istringstream lines(csv.str());
+  std::string line;
+  REQUIRE(std::getline(lines, line));
+  CHECK(line == "file,problem,contacts,solver,status,iterations,seconds,unit_free,relative_q,"
+                "relative_max");
+  int rows = 0;
+  for (const char* solver : {"nsgs", "prox"}) {
+    REQUIRE(std::getline(lines, line));
+    ++rows;
+    CHECK(line.rfind("\"" + r.files[0] + "\",", 0) == 0);
+    CHECK(line.find(std::string(",1,") + solver + ",solved,") != std::string::npos);
+  }
+  CHECK_FALSE(std::getline(lines, line));
+  CHECK(rows == 2);
+  // A stream that cannot be written: InputError naming the table, before the first solve.
+  std::ostream broken(nullptr);
+  std::ostringstream none;
+  try {
+    write_fc_bench_table(bench, broken, "t.csv", &none);
+    FAIL("accepted a stream that cannot be written");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "error writing 't.csv' (disk full or not writable?)");
+  }
+  CHECK(none.str().empty());
+  // Refusals in the user's words.
+  FcBenchRequest bad = r;
+  bad.solvers = {"simplex"};
+  CHECK_THROWS_WITH(prepare_fc_bench(bad), "unknown friction solver 'simplex' in --solvers");
+  bad = r;
+  bad.tol = 0.5;
+  CHECK_THROWS_WITH(prepare_fc_bench(bad), "--tol must be in (0, 1e-3], got 0.5");
+  std::filesystem::remove(r.files[0]);
 }

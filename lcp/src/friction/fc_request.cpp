@@ -38,6 +38,12 @@ CommonOptions common_options(const FcRequest& a) {
 /// or a sliding velocity smaller than the accuracy of the answer is not told from zero).
 double state_bound(const FrictionErrors& e) { return std::isfinite(e.unit_free) ? e.unit_free : 0.0; }
 
+/// True when r is an answer to judge against p: sized as p's r, and p not empty (a global
+/// problem whose M could not be condensed leaves both empty: nothing to judge, not "0 x 0").
+bool has_answer(const SolveResult& r, const FrictionContactProblem& p) {
+  return r.z.size() > 0 && r.z.size() == p.W.rows();
+}
+
 /// One result as the fc commands print it: r and u flat (contact by contact, normal first),
 /// the three errors of friction_verdict.hpp recomputed from the data, and the solver's counts.
 nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem& p) {
@@ -47,7 +53,7 @@ nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem
   j["solver"] = r.solver;
   j["r"] = full["z"];
   j["u"] = full["w"];
-  const bool sized = r.z.size() == p.W.rows();
+  const bool sized = has_answer(r, p);
   const FrictionErrors e = sized ? friction_errors(p, r.z)
                                  : FrictionErrors{std::numeric_limits<double>::infinity(),
                                                   std::numeric_limits<double>::quiet_NaN(),
@@ -73,7 +79,7 @@ nlohmann::json problem_json(const std::string& file, const FrictionContactProble
 std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
   std::ostringstream s;
   s << "status:     " << to_string(r.status) << "\nsolver:     " << r.solver;
-  if (r.z.size() == p.W.rows()) {
+  if (has_answer(r, p)) {
     const FrictionErrors e = friction_errors(p, r.z);
     s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
       << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
@@ -159,11 +165,14 @@ nlohmann::json fc_solve_json(const FcSolveOutcome& out) {
   }
   const GlobalFrictionContactProblem& g = out.global_problem;
   const GlobalSolveResult& s = out.global;
-  const nlohmann::json global = {{"dofs", g.dofs()},
-                                 {"condensed", s.condensed.ok && !out.proximal},  // M itself
-                                 {"route", out.proximal ? "proximal" : "condensed"},
-                                 {"errors", {{"balance", s.errors.balance},
-                                             {"local", s.errors.local}}}};
+  // The global errors exist only where v was computed; otherwise null (0 would read as perfect).
+  const bool judged = s.v.size() == g.dofs();
+  const nlohmann::json global = {
+      {"dofs", g.dofs()},
+      {"condensed", s.condensed.ok && !out.proximal},  // M itself
+      {"route", out.proximal ? "proximal" : "condensed"},
+      {"errors", judged ? nlohmann::json{{"balance", s.errors.balance}, {"local", s.errors.local}}
+                        : nlohmann::json{{"balance", nullptr}, {"local", nullptr}}}};
   nlohmann::json j = {{"file", out.file}, {"problem", g.name}, {"contacts", g.contacts()},
                       {"global", global}};
   j.update(fc_result_json(out.result, out.problem));
@@ -185,9 +194,11 @@ std::string fc_solve_text(const FcSolveOutcome& out) {
   if (out.proximal)
     o << "route:      proximal point in v (M is singular: no condensation), " << r.iterations
       << " outer iterations\n";
-  if (out.global.condensed.ok)
+  if (out.global.condensed.ok && out.global.v.size() == g.dofs())
     o << "global:     balance " << out.global.errors.balance << ", local "
       << out.global.errors.local << " (unit-free)\n" << result_line(r, out.problem);
+  else if (out.global.condensed.ok)  // the local solver returned no r: nothing judged
+    o << result_line(r, out.problem);
   else
     o << "status:     " << to_string(r.status) << "\nmessage:    " << r.message << '\n';
   return o.str();
@@ -199,10 +210,11 @@ FcSolutionsOutcome run_fc_solutions_request(const FcRequest& a) {
   out.problem = read_friction_problem(a.file);
   FrictionSolutionsOptions o;
   o.common = common_options(a);
-  if (a.starts < 1) throw InputError("--starts must be at least 1, got " + std::to_string(a.starts));
   o.starts = a.starts;
   o.seed = a.seed;
-  throw_if_invalid(o.validate(), "fc solutions");
+  throw_if_invalid_option(o.validate(), {{"starts", "--starts"},
+                                         {"tol", "--tol"},
+                                         {"time_limit_s", "--time-limit"}});
   out.set = friction_solutions(out.problem, o);
   out.exit_code = out.set.solutions.empty() ? kExitInconclusive : kExitOk;
   return out;

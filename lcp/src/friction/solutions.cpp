@@ -103,7 +103,8 @@ std::vector<SolutionFamily> families_of(const std::vector<SolveResult>& list, do
 
 std::string FrictionSolutionsOptions::validate() const {
   if (const std::string e = common.validate(); !e.empty()) return e;
-  if (starts < 1) return "starts must be >= 1, got " + std::to_string(starts);
+  if (starts < 1 || starts > kMaxStarts)
+    return "starts must be in [1, " + std::to_string(kMaxStarts) + "], got " + std::to_string(starts);
   if (max_enumeration_contacts < 0) return "max_enumeration_contacts must be >= 0";
   return {};
 }

@@ -60,7 +60,10 @@ struct FrictionSolutionSet {
 
 struct FrictionSolutionsOptions {
   CommonOptions common;  ///< tol for the verdict; time_limit_s for the whole search
-  int starts = 20;       ///< seeded starts of the multistart route
+  int starts = 20;       ///< seeded starts of the multistart route, 1..kMaxStarts
+  /// Each start runs three solvers: 10,000 starts is hours on a large problem, and more finds
+  /// nothing a seed change would not (a bound, so a typo such as 2e9 is refused, not run).
+  static constexpr int kMaxStarts = 10000;
   unsigned seed = 1;
   int max_enumeration_contacts = 5;  ///< enumeration of the faceted problem up to this n_c
   /// Empty when usable; otherwise names the bad field.
