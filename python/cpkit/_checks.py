@@ -79,7 +79,7 @@ def load_2d(dF):
 
 
 def integer(x, name: str, low=None, high: int = INT_MAX) -> int:
-    """An integer option in [low, high] (high: by default the largest C++ int). TypeError for
+    """An integer option in [low, high] (by default the range of a C++ int). TypeError for
     what is not a number (a string included), ValueError naming the option and its range for a
     fraction or a value outside it."""
     if isinstance(x, bool) or not _is_real_scalar(x):
@@ -89,9 +89,9 @@ def integer(x, name: str, low=None, high: int = INT_MAX) -> int:
     if not (isinstance(x, _numbers.Integral) or float(x).is_integer()):
         raise ValueError(f"{name} must be an integer, got {x!r}")
     v = int(x)
-    if (low is not None and v < low) or v > high:
-        lo = "..." if low is None else str(low)
-        raise ValueError(f"{name} must be an integer in [{lo}, {high}], got {v}")
+    low = -INT_MAX - 1 if low is None else low
+    if not low <= v <= high:
+        raise ValueError(f"{name} must be an integer in [{low}, {high}], got {v}")
     return v
 
 
