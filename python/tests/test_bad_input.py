@@ -28,8 +28,13 @@ from conftest import DATA_DIR
 
 CHILD = textwrap.dedent("""\
     import json, numpy as np, scipy.sparse as sp, cpkit
-    def bad(last, indptr=(0, 1, 2, 3), fmt=sp.csc_matrix):
-        return fmt((np.array([2., 1, 1]), np.array([0, 1, last]), np.array(indptr)), shape=(3, 3))
+    def bad(last, fmt=sp.csc_matrix):
+        return fmt((np.array([2., 1, 1]), np.array([0, 1, last]), np.array([0, 1, 2, 3])),
+                   shape=(3, 3))
+    def bad_indptr(indptr):  # scipy's constructor checks indptr: replaced after construction
+        W = sp.csc_matrix(np.diag([2., 1, 1]))
+        W.indptr = np.array(indptr, dtype=np.int32)
+        return W
     try:
         r = {call}
         print(json.dumps({{"returned": str(getattr(r, "status", r))}}))
@@ -74,14 +79,14 @@ CASES = {
     "COO row index 7": (f"(lambda W: (setattr(W, 'row', np.array([0, 1, 7], dtype=np.int32)), "
                         f"cpkit.solve_friction(W, {Q}, {MU}))[1])(sp.coo_matrix(np.eye(3)))",
                         "W: entry (7, 2) outside its 3 x 3 size"),
-    "indptr decreasing": (f"cpkit.solve_friction(bad(2, indptr=(0, 2, 1, 3)), {Q}, {MU})",
+    "indptr decreasing": (f"cpkit.solve_friction(bad_indptr((0, 2, 1, 3)), {Q}, {MU})",
                           "W: indptr decreases: indptr[2] = 1 < indptr[1] = 2"),
-    "indptr not starting at 0": (f"cpkit.solve_friction(bad(2, indptr=(1, 1, 2, 3)), {Q}, {MU})",
+    "indptr not starting at 0": (f"cpkit.solve_friction(bad_indptr((1, 1, 2, 3)), {Q}, {MU})",
                                  "W: indptr[0] = 1, must be 0"),
-    "indptr past the entries": (f"cpkit.solve_friction(bad(2, indptr=(0, 1, 2, 90000000)), {Q}, "
+    "indptr past the entries": (f"cpkit.solve_friction(bad_indptr((0, 1, 2, 90000000)), {Q}, "
                                 f"{MU})",
                                 "W: indptr ends at 90000000 but 3 entries are stored"),
-    "indptr of the wrong size": (f"cpkit.solve_friction(bad(2, indptr=(0, 1, 3)), {Q}, {MU})",
+    "indptr of the wrong size": (f"cpkit.solve_friction(bad_indptr((0, 1, 3)), {Q}, {MU})",
                                  "W: indptr has 3 entries; a 3 x 3 CSC matrix needs 4"),
 }
 
