@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "convert.hpp"
 #include "cpkit/core/errors.hpp"
 
 namespace cpkit::py {
@@ -58,7 +57,8 @@ struct Shape {
 Shape shape_of(const pyb::handle& m, const std::string& name) {
   if (!pyb::hasattr(m, "shape")) throw pyb::type_error(name + " must be a scipy.sparse matrix");
   const pyb::tuple s = pyb::tuple(m.attr("shape"));
-  if (s.size() != 2) throw InputError(name + " must be 2-D, got " + std::to_string(s.size()) + " dimensions");
+  if (s.size() != 2)
+    throw InputError(name + " must be 2-D, got " + std::to_string(s.size()) + " dimensions");
   const Shape out{s[0].cast<long long>(), s[1].cast<long long>()};
   for (const long long n : {out.rows, out.cols})
     if (n < 0 || n > INT_MAX)
@@ -131,7 +131,8 @@ std::vector<Triplet> coordinate_entries(const pyb::handle& m, const Shape& s,
   t.reserve(static_cast<std::size_t>(row.size()));
   for (pyb::ssize_t k = 0; k < row.size(); ++k) {
     check_entry(row.data()[k], col.data()[k], s, name);
-    t.emplace_back(static_cast<int>(row.data()[k]), static_cast<int>(col.data()[k]), val.data()[k]);
+    t.emplace_back(static_cast<int>(row.data()[k]), static_cast<int>(col.data()[k]),
+                   val.data()[k]);
   }
   return t;
 }
@@ -145,10 +146,15 @@ SparseMat sparse_from(const pybind11::handle& m, const std::string& name) {
     throw pyb::type_error(name + " must be a scipy.sparse matrix in CSC, CSR or COO format" +
                           (format.empty() ? std::string() : ", got '" + format + "'"));
   const Shape s = shape_of(m, name);
-  // Eigen's column starts are allocated from the declared size, before any entry is read.
-  check_memory(4.0 * (static_cast<double>(s.cols) + 1), name + " (" + size_text(s) + ")");
+  // Eigen allocates one column start per declared column, whatever the entries: a huge declared
+  // size with no entries must not become a huge allocation.
+  constexpr long long kMaxColumns = (1LL << 30) / 4;  // 1 GiB of column starts, the module's bound
+  if (s.cols > kMaxColumns)
+    throw InputError(name + ": " + size_text(s) + " declares more than " +
+                     std::to_string(kMaxColumns) + " columns (1 GiB of column starts)");
   const std::vector<Triplet> t =
-      format == "coo" ? coordinate_entries(m, s, name) : compressed_entries(m, s, format == "csc", name);
+      format == "coo" ? coordinate_entries(m, s, name)
+                      : compressed_entries(m, s, format == "csc", name);
   SparseMat out(static_cast<Eigen::Index>(s.rows), static_cast<Eigen::Index>(s.cols));
   out.setFromTriplets(t.begin(), t.end());  // duplicates summed
   return out;

@@ -14,10 +14,12 @@ namespace cpkit::py {
 
 /// The scipy.sparse matrix (or array) `m`, in format "csc", "csr" or "coo", as a column-major
 /// Eigen matrix, read from its own arrays after checking every size and index:
-/// - shape: two sizes in [0, 2^31 - 1] (the memory Eigen needs for them within the module's bound);
+/// - shape: two sizes in [0, 2^31 - 1], at most 2^28 columns (Eigen's column starts within the
+///   module's 1 GiB bound);
 /// - data: bool, integer or float entries; complex or anything else raises TypeError;
 /// - csc/csr: indptr has (columns or rows) + 1 integers, starts at 0, never decreases and ends at
-///   the number of stored entries (len(indices) == len(data)); coo: row, col and data of one length;
+///   the number of stored entries (len(indices) == len(data)); coo: row, col and data of one
+///   length;
 /// - every row index in [0, rows) and column index in [0, cols).
 /// A bad size or index raises ValueError (InputError) naming it, as the FCLIB reader does:
 /// "W: entry (7, 2) outside its 3 x 3 size" (row, column, counted from 0). Duplicate entries
