@@ -66,8 +66,8 @@ def test_dat_files_read_as_siconos_reads_them(name):
 # ---- reading: HDF5 through libfclib called here with ctypes ----------------------------------
 # Siconos 4.4 as packaged cannot read HDF5 ("fclib interface is not active") and h5py is not a
 # dependency (scripts/setup-deps.sh): the second route is libfclib's fclib_read_local called from
-# ctypes, with the
-# matrix decoded here (compressed rows, columns or triplets), not by cpkit's C++ conversion.
+# ctypes, with the matrix decoded here (compressed rows, columns or triplets), not by cpkit's C++
+# conversion.
 
 class _FclibMatrix(ctypes.Structure):
     _fields_ = [("nzmax", ctypes.c_int), ("m", ctypes.c_int), ("n", ctypes.c_int),
