@@ -2,9 +2,10 @@
 u = W r + q, r_i in K_{mu_i}, u_hat_i = u_i + (mu_i |u_T,i|, 0, 0) in K*_{mu_i}, r_i . u_hat_i = 0,
 contact i owning rows 3i..3i+2, normal first (FCLIB's and Siconos' convention).
 
-W is a scipy.sparse matrix (any format; converted once to CSC, whose index and value arrays the
-extension reads directly) or a dense array. Bad input raises ValueError (TypeError for things
-that are not numbers), with the C++ validator's or reader's message."""
+W is a scipy.sparse matrix (CSC, CSR and COO read as they are, every index checked by the
+extension before use; other formats converted to COO) or a dense array. Bad input raises
+ValueError (TypeError for things that are not real numbers, FileNotFoundError for a missing
+file), with the C++ validator's or reader's message."""
 from __future__ import annotations
 
 import math
@@ -14,7 +15,8 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from . import _cpkit
-from ._checks import vector
+from ._checks import (existing_path, integer, is_sparse, number, numbers, real, sparse_matrix,
+                      vector)
 from .results import Attempt, Residuals, _short
 
 __all__ = ["FrictionProblem", "FrictionErrors", "FrictionResult", "FrictionSolutionSet",
@@ -160,87 +162,86 @@ class FrictionSolutionSet:
                 f"complete={self.complete})")
 
 
-def _vector(v, name: str) -> np.ndarray:
-    return np.ascontiguousarray(vector(v, name))  # mapped by the compiled part without a copy
-
-
-def _data(W, q, mu):
-    """(W as float64 CSC with sorted, summed indices, q, mu); sizes and values are checked by
-    the C++ validator (FrictionContactProblem::validate), which names what is wrong."""
+def _matrix(A, name: str):
+    """A as a scipy.sparse matrix whose index arrays the compiled part checks (sparse_from.hpp),
+    or, when dense, a float64 CSC matrix built by scipy from its numbers."""
     import scipy.sparse
-    q = _vector(q, "q")
-    mu = _vector(mu, "mu")
-    if scipy.sparse.issparse(W):
-        W = scipy.sparse.csc_matrix(W, dtype=float)  # may share the caller's arrays
-    else:
-        try:
-            a = np.asarray(W, dtype=float)
-        except (TypeError, ValueError) as e:
-            raise TypeError(f"W must be a matrix of numbers (numpy array or scipy.sparse) "
-                            f"({e})") from None
-        if a.ndim != 2:
-            raise ValueError(f"W must be a 2-D array, got shape {a.shape}")
-        W = scipy.sparse.csc_matrix(a)
+    if is_sparse(A):
+        if A.ndim != 2:
+            raise ValueError(f"{name} must be 2-D, got shape {A.shape}")
+        return sparse_matrix(A)
+    return scipy.sparse.csc_matrix(numbers(A, name, 2, "be a matrix of numbers (numpy array or "
+                                                       "scipy.sparse)"))
+
+
+def _unpack(W, q, mu, call: str):
+    """(W, q, mu) from a problem object (anything with W, q, mu: FrictionProblem) given alone,
+    or as given. TypeError for a problem given with q or mu, or a global problem."""
+    if isinstance(W, GlobalFrictionProblem):
+        raise TypeError(f"{call} takes a local problem: use solve_friction_global for a "
+                        f"GlobalFrictionProblem")
+    if all(hasattr(W, a) for a in ("W", "q", "mu")):
+        if q is not None or mu is not None:
+            raise TypeError(f"{call}: give a problem alone or W, q, mu (the other arguments "
+                            f"by keyword: {call}(problem, solver=..., ...))")
+        return W.W, W.q, W.mu
+    if q is None or mu is None:
+        raise TypeError(f"{call} needs a problem (FrictionProblem) or W, q and mu")
+    return W, q, mu
+
+
+def _data(W, q, mu, call: str):
+    """(W, q, mu) ready for the compiled part: shapes checked here, every index of W by
+    sparse_from (C++), sizes and values by the C++ validator (FrictionContactProblem::validate),
+    each naming what is wrong."""
+    W, q, mu = _unpack(W, q, mu, call)
+    q = vector(q, "q")
+    mu = vector(mu, "mu")
+    W = _matrix(W, "W")
     if W.shape[0] != W.shape[1]:
         raise ValueError(f"W must be square (3 n_c x 3 n_c), got shape {W.shape}")
     if W.shape[0] != q.size or q.size != 3 * mu.size:
         raise ValueError(f"sizes disagree: W is {W.shape[0]} x {W.shape[1]}, q has {q.size} "
                          f"entries, mu has {mu.size} (need 3 n_c, 3 n_c, n_c)")
-    if not W.has_canonical_format:  # Eigen's CSC map needs sorted row indices, no duplicates
-        W = W.copy()  # the caller's matrix is left as it was
-        W.sum_duplicates()
     return W, q, mu
 
 
 def read_fclib(path) -> FrictionProblem:
     """A local problem from an FCLIB HDF5 file (/fclib_local) or a Siconos FrictionContact .dat
-    file (chosen by content). An unreadable or malformed file raises ValueError naming it."""
-    d = _cpkit.read_fclib(str(path))
+    file (chosen by content); path: str, bytes or os.PathLike. A missing file raises
+    FileNotFoundError, an unreadable or malformed one ValueError naming it."""
+    d = _cpkit.read_fclib(existing_path(path))
     return FrictionProblem(W=d["W"], q=d["q"], mu=d["mu"], name=d["name"], note=d["note"])
 
 
 def read_fclib_global(path) -> GlobalFrictionProblem:
     """A global problem from an FCLIB HDF5 file (/fclib_global) or a Siconos
-    GlobalFrictionContact .dat file. An unreadable or malformed file raises ValueError."""
-    d = _cpkit.read_fclib_global(str(path))
+    GlobalFrictionContact .dat file; path as read_fclib's. A missing file raises
+    FileNotFoundError, an unreadable or malformed one ValueError."""
+    d = _cpkit.read_fclib_global(existing_path(path))
     return GlobalFrictionProblem(M=d["M"], H=d["H"], f=d["f"], w=d["w"], mu=d["mu"],
                                  name=d["name"], note=d["note"])
 
 
-def _csc(A, name: str):
-    """A as float64 CSC in canonical format (sorted, summed indices), a copy when it must change."""
-    import scipy.sparse
-    if not scipy.sparse.issparse(A):
-        try:
-            a = np.asarray(A, dtype=float)
-        except (TypeError, ValueError) as e:
-            raise TypeError(f"{name} must be a matrix of numbers ({e})") from None
-        if a.ndim != 2:
-            raise ValueError(f"{name} must be a 2-D array, got shape {a.shape}")
-        A = a
-    A = scipy.sparse.csc_matrix(A, dtype=float)
-    if not A.has_canonical_format:
-        A = A.copy()
-        A.sum_duplicates()
-    return A
+def _options(tol, tol_acceptable, max_iterations, time_limit):
+    """The common options checked: (tol, tol_acceptable, max_iterations, time_limit)."""
+    return (1e-10 if tol is None else real(tol, "tol"), real(tol_acceptable, "tol_acceptable"),
+            integer(max_iterations, "max_iterations", 0),
+            number(time_limit, "time_limit"))
 
 
-def _tol(tol) -> float:
-    return 1e-10 if tol is None else float(tol)
-
-
-def solve_friction(W, q, mu, solver: str = "auto", tol: Optional[float] = None, *,
+def solve_friction(W, q=None, mu=None, solver: str = "auto", tol: Optional[float] = None, *,
                    tol_acceptable: float = 1e-6, max_iterations: int = 0,
                    time_limit: float = _INF) -> FrictionResult:
-    """One solution of the local problem (W, q, mu), judged from the data.
+    """One solution of the local problem, judged from the data: solve_friction(problem, ...)
+    with a FrictionProblem (as read_fclib returns), or solve_friction(W, q, mu, ...).
 
     solver: "auto" or one of friction_solvers() (nsgs, fb-soc, prox, lemke on the faceted cone,
     ipopt). tol (default 1e-10, at most 1e-3) bounds the unit-free error for "solved";
     tol_acceptable for "solved_inaccurate". The GIL is released during the solve."""
-    W, q, mu = _data(W, q, mu)
+    W, q, mu = _data(W, q, mu, "solve_friction")
     return FrictionResult._from(_cpkit.solve_friction(
-        W, q, mu, str(solver), _tol(tol), float(tol_acceptable), int(max_iterations),
-        float(time_limit)))
+        W, q, mu, str(solver), *_options(tol, tol_acceptable, max_iterations, time_limit)))
 
 
 def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
@@ -257,29 +258,38 @@ def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
     Sizes and values are checked by the C++ validator (ValueError naming what is wrong)."""
     p = problem
     d = _cpkit.solve_friction_global(
-        _csc(p.M, "M"), _csc(p.H, "H"), _vector(p.f, "f"), _vector(p.w, "w"),
-        _vector(p.mu, "mu"), str(solver), _tol(tol), float(tol_acceptable),
-        int(max_iterations), float(time_limit), bool(proximal))
+        _matrix(p.M, "M"), _matrix(p.H, "H"), vector(p.f, "f"), vector(p.w, "w"),
+        vector(p.mu, "mu"), str(solver), *_options(tol, tol_acceptable, max_iterations,
+                                                   time_limit), bool(proximal))
     return GlobalFrictionResult._from(d)
 
 
-def friction_solutions(W, q, mu, starts: int = 20, seed: int = 1, *, tol: Optional[float] = None,
+def friction_solutions(W, q=None, mu=None, starts: int = 20, seed: int = 1, *,
+                       tol: Optional[float] = None,
                        time_limit: float = _INF) -> FrictionSolutionSet:
-    """Distinct verified solutions: every solution of the faceted problem checked on the true
-    cone (up to 5 contacts), then a seeded multistart of `starts` points (deterministic for a
-    seed). complete is False unless proved (lcp/friction/solutions.hpp)."""
-    W, q, mu = _data(W, q, mu)
-    if int(seed) < 0 or int(seed) > 2**32 - 1:
-        raise ValueError(f"seed must be in [0, 2^32 - 1], got {seed}")
-    d = _cpkit.friction_solutions(W, q, mu, int(starts), int(seed), _tol(tol), float(time_limit))
+    """Distinct verified solutions of a problem (friction_solutions(problem, starts=...)) or
+    of (W, q, mu): every solution of the faceted problem checked on the true cone (up to 5
+    contacts), then a seeded multistart of `starts` points (deterministic for a seed).
+    complete is False unless proved (lcp/friction/solutions.hpp)."""
+    W, q, mu = _data(W, q, mu, "friction_solutions")
+    d = _cpkit.friction_solutions(W, q, mu, integer(starts, "starts", 1),
+                                  integer(seed, "seed", 0, 2**32 - 1),
+                                  1e-10 if tol is None else real(tol, "tol"),
+                                  number(time_limit, "time_limit"))
     return FrictionSolutionSet([FrictionResult._from(s) for s in d["solutions"]], d["complete"],
                                d["message"])
 
 
-def friction_errors(W, q, mu, r) -> FrictionErrors:
-    """The verdict's errors of a candidate r (3 n_c), whatever produced it."""
-    W, q, mu = _data(W, q, mu)
-    return FrictionErrors(**_cpkit.friction_errors(W, q, mu, _vector(r, "r")))
+def friction_errors(W, q=None, mu=None, r=None) -> FrictionErrors:
+    """The verdict's errors of a candidate r (3 n_c), whatever produced it:
+    friction_errors(problem, r) or friction_errors(W, q, mu, r)."""
+    if r is None and mu is None and all(hasattr(W, a) for a in ("W", "q", "mu")):
+        q, r = None, q  # friction_errors(problem, r)
+    if r is None:
+        raise TypeError("friction_errors needs r: friction_errors(problem, r) or "
+                        "friction_errors(W, q, mu, r)")
+    W, q, mu = _data(W, q, mu, "friction_errors")
+    return FrictionErrors(**_cpkit.friction_errors(W, q, mu, vector(r, "r")))
 
 
 def friction_solvers() -> List[str]:

@@ -7,7 +7,8 @@ from typing import Callable, Iterable, Optional
 import numpy as np
 
 from . import _cpkit
-from ._checks import numbers, vector as _vector
+from ._checks import integer, is_sparse as _is_sparse, number, numbers, real, sparse_matrix
+from ._checks import vector as _vector
 from .results import (Attempt, BatchResult, Certificate, CrossVerifyReport, Residuals,
                       SolutionSet, SolveResult)
 
@@ -19,24 +20,24 @@ _cpkit._set_result_classes(SolveResult, Residuals, Attempt, Certificate)
 _quick_solve = _cpkit.solve_dense_fast
 
 
-def _is_sparse(M) -> bool:
-    try:
-        import scipy.sparse
-    except ImportError:  # without scipy nothing can be a scipy matrix
-        return False
-    return scipy.sparse.issparse(M)
-
-
 def _lcp_data(M, q):
-    """(is_sparse, M, q) with M as float64 (CSC when sparse) and q 1-D; shapes checked here,
-    values (NaN/Inf, size agreement) by the C++ validator."""
+    """(is_sparse, M, q) with M as a float64 array or a scipy.sparse matrix whose indices the
+    compiled part checks (sparse_from.hpp), and q 1-D; shapes checked here, values (NaN/Inf,
+    size agreement) by the C++ validator."""
     q = _vector(q, "q")
     if _is_sparse(M):
-        M = M.tocsc().astype(float)
-        if M.shape[0] != M.shape[1]:
+        M = sparse_matrix(M)
+        if M.ndim != 2 or M.shape[0] != M.shape[1]:
             raise ValueError(f"M must be square, got shape {M.shape}")
         return True, M, q
     return False, numbers(M, "M", 2, "be a matrix of numbers (numpy array or scipy.sparse)"), q
+
+
+def _options(tol, tol_acceptable, max_iterations, time_limit):
+    """The common options checked: (tol, tol_acceptable, max_iterations, time_limit)."""
+    return (real(tol, "tol"), real(tol_acceptable, "tol_acceptable"),
+            integer(max_iterations, "max_iterations", 0),
+            number(time_limit, "time_limit"))
 
 
 def solvers(kind: str = "lcp"):
@@ -62,8 +63,8 @@ def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: flo
         return r
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.solve_sparse if sparse else _cpkit.solve_dense
-    return SolveResult._from(fn(M, q, solver, float(tol), float(tol_acceptable),
-                                int(max_iterations), float(time_limit)))
+    return SolveResult._from(fn(M, q, str(solver), *_options(tol, tol_acceptable, max_iterations,
+                                                             time_limit)))
 
 
 def solve_batch(Ms, qs, solver: str = "lemke", *, tol: float = 1e-10,
@@ -78,13 +79,10 @@ def solve_batch(Ms, qs, solver: str = "lemke", *, tol: float = 1e-10,
     is_solution (k,) booleans. A bad shape or a non-finite entry raises ValueError naming the
     first bad problem, before any problem is solved.
     """
-    try:
-        Ms = np.ascontiguousarray(Ms, dtype=float)
-        qs = np.ascontiguousarray(qs, dtype=float)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"Ms and qs must be arrays of numbers ({e})") from None
-    d = _cpkit.solve_batch(Ms, qs, str(solver), float(tol), float(tol_acceptable),
-                           int(max_iterations), float(time_limit))
+    Ms = np.ascontiguousarray(numbers(Ms, "Ms", what="be an array of numbers"))
+    qs = np.ascontiguousarray(numbers(qs, "qs", what="be an array of numbers"))
+    d = _cpkit.solve_batch(Ms, qs, str(solver), *_options(tol, tol_acceptable, max_iterations,
+                                                          time_limit))
     return BatchResult._from(d)
 
 
@@ -93,7 +91,8 @@ def enumerate(M, q, *, max_size: int = 64, time_limit: float = 60.0) -> Solution
     positive dimension with their rays, and whether the enumeration is `complete`."""
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.enumerate_sparse if sparse else _cpkit.enumerate_dense
-    return SolutionSet._from(fn(M, q, int(max_size), float(time_limit)))
+    return SolutionSet._from(fn(M, q, integer(max_size, "max_size", 1),
+                                number(time_limit, "time_limit")))
 
 
 def cross_verify(M, q, *, skip: Iterable[str] = (), max_size: int = 64,
@@ -102,7 +101,8 @@ def cross_verify(M, q, *, skip: Iterable[str] = (), max_size: int = 64,
     `consistent` is False when some solver's claim contradicts it (`disagreements`)."""
     sparse, M, q = _lcp_data(M, q)
     fn = _cpkit.cross_verify_sparse if sparse else _cpkit.cross_verify_dense
-    return CrossVerifyReport._from(fn(M, q, list(skip), int(max_size), float(time_limit)))
+    return CrossVerifyReport._from(fn(M, q, list(skip), integer(max_size, "max_size", 1),
+                                      number(time_limit, "time_limit")))
 
 
 def solve_mcp(F: Callable, J: Optional[Callable], x0, lower=None, upper=None,
@@ -129,9 +129,9 @@ def solve_mcp(F: Callable, J: Optional[Callable], x0, lower=None, upper=None,
     if J is not None and _is_sparse(J(x0.copy())):
         sparse_jac = True
 
-        def jac(x):  # CSC with float64 entries, the layout the C++ side reads
+        def jac(x):  # its indices are checked by the compiled part (sparse_from.hpp)
             m = J(x)
-            return None if m is None else m.tocsc().astype(float)
-    return SolveResult._from(_cpkit.solve_mcp(F, jac, sparse_jac, x0, lower, upper, solver,
-                                              float(tol), float(tol_acceptable),
-                                              int(max_iterations), float(time_limit)))
+            return sparse_matrix(m) if _is_sparse(m) else m  # None: outside the domain
+    return SolveResult._from(_cpkit.solve_mcp(F, jac, sparse_jac, x0, lower, upper, str(solver),
+                                              *_options(tol, tol_acceptable, max_iterations,
+                                                        time_limit)))

@@ -10,7 +10,7 @@ from typing import Dict, Optional, Sequence
 import numpy as np
 
 from . import _cpkit
-from ._checks import facet_count, integer, real, vec
+from ._checks import facet_count, integer, number, real, vec
 from .model import ContactParameters
 from .results import DirectionMap, ParamDirectionMap, ParamParamMap
 from .system import system_3d
@@ -30,8 +30,8 @@ def param_direction_map(params: ContactParameters, state, param: str = "mu", sta
     """Grid of solution counts/types over `param` in [start, stop] (n values) x theta_n load
     directions. param: mu, a11, a12, a22, a12/a11, C_T, k_a, P_s, P_N, kappa."""
     return ParamDirectionMap(**_cpkit.param_direction_map(
-        params, state, param, float(start), float(stop), int(n), int(theta_n), method,
-        int(threads)))
+        params, state, param, number(start, "start"), number(stop, "stop"), integer(n, "n", 1),
+        integer(theta_n, "theta_n", 1), method, integer(threads, "threads", 0)))
 
 
 def param_param_map(params: ContactParameters, state, param1: str, start1: float, stop1: float,
@@ -39,8 +39,9 @@ def param_param_map(params: ContactParameters, state, param1: str, start1: float
                     method: str = "enumerate", threads: int = 0) -> ParamParamMap:
     """Every (param1, param2) cell classified from its exact direction map."""
     return ParamParamMap(**_cpkit.param_param_map(
-        params, state, param1, float(start1), float(stop1), int(n1), param2, float(start2),
-        float(stop2), int(n2), method, int(threads)))
+        params, state, param1, number(start1, "start1"), number(stop1, "stop1"), integer(n1, "n1", 1),
+        param2, number(start2, "start2"), number(stop2, "stop2"), integer(n2, "n2", 1), method,
+        integer(threads, "threads", 0)))
 
 
 #: Bits of a cell's type mask (sphere_map_3d.hpp type_bit).

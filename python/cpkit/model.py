@@ -7,6 +7,8 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from ._checks import numbers
+
 __all__ = ["ContactParameters", "ContactState", "Point3d"]
 
 
@@ -50,5 +52,5 @@ class Point3d:
     alpha: Sequence[float] = (1.0, 1.0)
 
     def __post_init__(self):
-        self.A = np.asarray(self.A, dtype=float).tolist()
-        self.alpha = [float(a) for a in self.alpha]
+        self.A = numbers(self.A, "A", 2).tolist()
+        self.alpha = numbers(self.alpha, "alpha", 1).tolist()

@@ -8,7 +8,7 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from . import _cpkit
-from ._checks import facet_count, load_2d, vec
+from ._checks import facet_count, integer, load_2d, number, numbers, vec
 from .model import ContactParameters, Point3d
 from .results import RateSolutionSet
 from .system import ContactSystem, solve_system_rate, system_3d
@@ -72,7 +72,7 @@ def solve_rate_3d(point: Point3d, state: str, dF, P_T=(0.0, 0.0), P_N: float = 0
     the cone. Exact (slip directions of state b from a quartic with a completeness
     certificate), or with facets=k (state b only) the faceted LCP."""
     k = facet_count(facets)
-    d = _cpkit.solve_rate_3d(point, str(state), vec(P_T, 2, "P_T"), float(P_N),
+    d = _cpkit.solve_rate_3d(point, str(state), vec(P_T, 2, "P_T"), number(P_N, "P_N"),
                              vec(dF, 3, "dF"), k)
     return Rate3dSolutionSet(**d)
 
@@ -81,5 +81,5 @@ def solve_system_rate_3d(system, facets: int, dF=None) -> Rate3dSolutionSet:
     """Every solution of the faceted rate problem of N coupled 3-D points. system: a path to a
     "dim": 3 system file, its JSON text, a dict of it (docs/file_formats.md) or a ContactSystem3d."""
     data = system_3d(system)
-    load = None if dF is None else np.asarray(dF, dtype=float).ravel().tolist()
-    return Rate3dSolutionSet(**_cpkit.solve_system_rate_3d(data, load, int(facets)))
+    load = None if dF is None else numbers(dF, "dF").ravel().tolist()
+    return Rate3dSolutionSet(**_cpkit.solve_system_rate_3d(data, load, integer(facets, "facets")))

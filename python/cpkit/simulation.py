@@ -8,7 +8,7 @@ from typing import Any, Dict, Optional, Sequence
 import numpy as np
 
 from . import _cpkit
-from ._checks import integer, real, vec
+from ._checks import integer, number, numbers, real, vec
 from .model import ContactParameters, Point3d
 from .results import SimulationResult
 
@@ -20,14 +20,17 @@ def fretting_history(F_N=1.0, amplitude=0.1, period=1.0, cycles=10, steps_per_cy
                      ramp_steps=10) -> dict:
     """A fretting load history: ramp to F_N, then F_T = amplitude sin(2 pi t / period).
     Returns {"t", "F_T", "F_N", "period", "cycle_start"} (arrays and numbers)."""
-    return dict(_cpkit.fretting_history(float(F_N), float(amplitude), float(period), int(cycles),
-                                        int(steps_per_cycle), int(ramp_steps)))
+    return dict(_cpkit.fretting_history(
+        number(F_N, "F_N"), number(amplitude, "amplitude"), number(period, "period"),
+        integer(cycles, "cycles"), integer(steps_per_cycle, "steps_per_cycle"),
+        integer(ramp_steps, "ramp_steps")))
 
 
 def ramp_history(F_T0=0.0, F_N0=0.0, F_T1=0.0, F_N1=1.0, duration=1.0, steps=100) -> dict:
     """A linear ramp of the load, as fretting_history()."""
-    return dict(_cpkit.ramp_history(float(F_T0), float(F_N0), float(F_T1), float(F_N1),
-                                    float(duration), int(steps)))
+    return dict(_cpkit.ramp_history(number(F_T0, "F_T0"), number(F_N0, "F_N0"), number(F_T1, "F_T1"),
+                                    number(F_N1, "F_N1"), number(duration, "duration"),
+                                    integer(steps, "steps")))
 
 
 def simulate(params: ContactParameters, history: dict, wear_law: str = "archard",
@@ -39,13 +42,12 @@ def simulate(params: ContactParameters, history: dict, wear_law: str = "archard"
     def arr(key):
         if key not in history:
             raise ValueError(f"history needs the key {key!r} (t, F_T, F_N)")
-        a = np.asarray(history[key], dtype=float)
-        if a.ndim != 1:
-            raise ValueError(f"history[{key!r}] must be 1-D, got shape {a.shape}")
-        return a
+        return numbers(history[key], f"history[{key!r}]", 1)
     d = _cpkit.simulate(params, arr("t"), arr("F_T"), arr("F_N"),
-                        float(history.get("period", 0.0)), float(history.get("cycle_start", 0.0)),
-                        wear_law, float(k_M), heat, branch_rule, float(tol), int(record_every))
+                        number(history.get("period", 0.0), "history['period']"),
+                        number(history.get("cycle_start", 0.0), "history['cycle_start']"),
+                        wear_law, number(k_M, "k_M"), heat, branch_rule, number(tol, "tol"),
+                        integer(record_every, "record_every"))
     return SimulationResult(**d)
 
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Sequence
 
 from . import _cpkit
-from ._checks import integer, load_2d, real, vec
+from ._checks import integer, load_2d, number, real, vec
 from .model import ContactParameters, Point3d
 from .results import SolveResult, StepSolutionSet
 
@@ -23,7 +23,8 @@ def enumerate_step(params: ContactParameters, P_T0: float, P_N0: float, g0: floa
     DF = (DF_T, DF_N) (docs/simulation.md)."""
     dFT, dFN = load_2d(DF)
     return StepSolutionSet._from(_cpkit.enumerate_step(
-        params, float(P_T0), float(P_N0), float(g0), dFT, dFN, wear_law, float(k_M),
+        params, number(P_T0, "P_T0"), number(P_N0, "P_N0"), number(g0, "g0"), dFT, dFN, wear_law,
+        number(k_M, "k_M"),
         bool(detect_jumps)))
 
 
@@ -33,8 +34,8 @@ def solve_step(params: ContactParameters, P_T0: float, P_N0: float, g0: float, D
     """One solution of a step by the solver chain (default active-set, lemke, fb-newton,
     ipopt): {"result": SolveResult (z = (P_N1, l+, l-)), "values": {...}, "type": name}."""
     dFT, dFN = load_2d(DF)
-    d = _cpkit.solve_step(params, float(P_T0), float(P_N0), float(g0), dFT, dFN, wear_law,
-                          float(k_M), list(chain))
+    d = _cpkit.solve_step(params, number(P_T0, "P_T0"), number(P_N0, "P_N0"), number(g0, "g0"),
+                          dFT, dFN, wear_law, number(k_M, "k_M"), list(chain))
     d["result"] = SolveResult._from(d["result"])
     return d
 
@@ -85,8 +86,9 @@ def enumerate_step_3d(point: Point3d, DF, P_T0=(0.0, 0.0), P_N0: float = 0.0, g0
                       wear_law: str = "archard", k_M: float = 0.0) -> Step3dSolutionSet:
     """Every solution of one implicit step of a 3-D point from the state (P_T0, P_N0, g0) under
     the load increment DF (3 numbers); wear_law "archard" (40) or "mroz" (41) with k_M."""
-    d = _cpkit.enumerate_step_3d(point, vec(P_T0, 2, "P_T0"), float(P_N0), float(g0),
-                                 vec(DF, 3, "DF"), str(wear_law), float(k_M))
+    d = _cpkit.enumerate_step_3d(point, vec(P_T0, 2, "P_T0"), number(P_N0, "P_N0"),
+                                 number(g0, "g0"), vec(DF, 3, "DF"), str(wear_law),
+                                 number(k_M, "k_M"))
     return Step3dSolutionSet(**d)
 
 

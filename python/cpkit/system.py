@@ -12,7 +12,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _cpkit
-from ._checks import numbers, system_text
+from ._checks import existing_path, numbers, system_text
 from .model import ContactParameters
 from .results import SystemRateSolutionSet
 
@@ -138,7 +138,7 @@ class ContactSystem:
     @classmethod
     def from_file(cls, path: str) -> "ContactSystem":
         """Reads a system file (JSON)."""
-        data = _cpkit.ContactSystemData.from_file(str(path))
+        data = _cpkit.ContactSystemData.from_file(existing_path(path))
         s = cls.__new__(cls)
         object.__setattr__(s, "name", data.to_dict()["name"])
         return s._adopt(data)
@@ -166,7 +166,7 @@ def solve_system_rate(system: ContactSystem, dF, method: str = "enumerate"):
     solver ("lemke", "fb-newton", "ipopt": one solution, complete=False)."""
     if not isinstance(system, ContactSystem):
         raise TypeError("system must be a cpkit.ContactSystem")
-    dF = np.asarray(dF, dtype=float)
+    dF = numbers(dF, "dF")
     if dF.ndim != 1:
         raise ValueError(f"dF must be a 1-D array of 2N = {2 * system.n_points} entries, got shape {dF.shape}")
     return SystemRateSolutionSet._from(_cpkit.solve_system_rate(system._system(), dF, method))
@@ -182,11 +182,11 @@ def system_direction_counts(system: ContactSystem, theta, e1=None, e2=None) -> D
         if system.patterns is None:
             raise ValueError("give the load patterns e1, e2 (the system has no patterns)")
         e1, e2 = system.patterns
-    theta = np.atleast_1d(np.asarray(theta, dtype=float))
+    theta = np.atleast_1d(numbers(theta, "theta"))
     if theta.ndim != 1:
         raise ValueError(f"theta must be 1-D, got shape {theta.shape}")
-    d = _cpkit.system_direction_counts(system._system(), np.asarray(e1, float),
-                                       np.asarray(e2, float), theta)
+    d = _cpkit.system_direction_counts(system._system(), numbers(e1, "e1"), numbers(e2, "e2"),
+                                       theta)
     return dict(d)
 
 
@@ -204,8 +204,9 @@ class ContactSystem3d:
     @classmethod
     def from_file(cls, path) -> "ContactSystem3d":
         s = cls.__new__(cls)
-        s._data = _cpkit.ContactSystem3dData.from_file(os.fspath(path))  # its messages first
-        with open(os.fspath(path), encoding="utf-8") as f:
+        path = existing_path(path)
+        s._data = _cpkit.ContactSystem3dData.from_file(path)  # its messages first
+        with open(path, encoding="utf-8") as f:
             s._text = f.read()
         return s
 

@@ -1,7 +1,7 @@
 // 3-D frictional contact bindings (issue 26): read_fclib, solve_friction, friction_solutions,
-// friction_errors, and the global problem's read_fclib_global, solve_friction_global. W arrives
-// as an Eigen sparse matrix: pybind11's caster maps the CSC arrays
-// (data, indices, indptr) of the scipy matrix the Python layer prepared, with no Python loop.
+// friction_errors, and the global problem's read_fclib_global, solve_friction_global. W (and the
+// global M, H) arrive as scipy.sparse matrices, read by sparse_from, which checks every index
+// before Eigen sees it (sparse_from.hpp).
 // Invalid problems, unknown solvers and unreadable files raise ValueError (InputError) with the
 // C++ message; every solve runs without the GIL.
 #include <limits>
@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "sparse_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
 #include "cpkit/core/friction_problem.hpp"
@@ -21,11 +22,9 @@
 namespace cpkit::py {
 namespace {
 
-using SparseMat = Eigen::SparseMatrix<double>;
-
-FrictionContactProblem make_problem(const SparseMat& W, const Vec& q, const Vec& mu) {
+FrictionContactProblem make_problem(const pyb::handle& W, const Vec& q, const Vec& mu) {
   FrictionContactProblem p;
-  p.W = W;
+  p.W = sparse_from(W, "W");
   p.q = q;
   p.mu = mu;
   throw_if_invalid(p.validate(), "friction problem");
@@ -112,11 +111,12 @@ const SolverEntry& friction_entry(const std::string& solver) {
 
 /// The condensation route of `cpkit fc solve` on a global file (lcp/friction/global.hpp): the
 /// local result's fields (of the condensed problem) plus v, dofs, condensed and global_errors.
-pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Vec& f,
+pyb::dict solve_friction_global(const pyb::handle& M, const pyb::handle& H, const Vec& f,
                                 const Vec& w, const Vec& mu, const std::string& solver,
                                 double tol, double tol_acceptable, int max_iterations,
                                 double time_limit, bool proximal) {
-  const GlobalFrictionContactProblem g{M, H, f, w, mu, /*name=*/"", /*note=*/""};
+  const GlobalFrictionContactProblem g{sparse_from(M, "M"), sparse_from(H, "H"), f, w, mu,
+                                       /*name=*/"", /*note=*/""};
   throw_if_invalid(g.validate(), "global friction problem");
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
   const SolverEntry& e = friction_entry(solver);
@@ -136,7 +136,7 @@ pyb::dict solve_friction_global(const SparseMat& M, const SparseMat& H, const Ve
   return d;
 }
 
-pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
+pyb::dict solve_friction(const pyb::handle& W, const Vec& q, const Vec& mu,
                          const std::string& solver, double tol, double tol_acceptable,
                          int max_iterations, double time_limit) {
   const FrictionContactProblem p = make_problem(W, q, mu);
@@ -147,7 +147,7 @@ pyb::dict solve_friction(const SparseMat& W, const Vec& q, const Vec& mu,
   return fc_result_dict(r, p);
 }
 
-pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, int starts,
+pyb::dict friction_solutions(const pyb::handle& W, const Vec& q, const Vec& mu, int starts,
                              unsigned seed, double tol, double time_limit) {
   const FrictionContactProblem p = make_problem(W, q, mu);
   lcp::friction::FrictionSolutionsOptions o;
@@ -165,7 +165,7 @@ pyb::dict friction_solutions(const SparseMat& W, const Vec& q, const Vec& mu, in
   return d;
 }
 
-pyb::dict errors_of(const SparseMat& W, const Vec& q, const Vec& mu, const Vec& r) {
+pyb::dict errors_of(const pyb::handle& W, const Vec& q, const Vec& mu, const Vec& r) {
   const FrictionContactProblem p = make_problem(W, q, mu);
   if (r.size() != p.W.rows())
     throw InputError("r must have 3 n_c = " + std::to_string(p.W.rows()) + " entries, got " +

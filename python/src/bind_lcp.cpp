@@ -1,6 +1,6 @@
 // LCP bindings: solve (any registered solver, "auto" included), enumerate, cross_verify.
-// Dense M arrives as an Eigen matrix, sparse M (scipy.sparse, converted to CSC by the Python
-// layer) as an Eigen sparse matrix; the C++ validators name every bad input (ValueError).
+// Dense M arrives as an Eigen matrix, sparse M as a scipy.sparse matrix read by sparse_from
+// (every index checked first); the C++ validators name every bad input (ValueError).
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "result_objects.hpp"
+#include "sparse_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
@@ -104,9 +105,9 @@ PyMethodDef kFastMethods[] = {
     {nullptr, nullptr, 0, nullptr}};
 
 LcpProblem dense_problem(const Mat& M, const Vec& q) { return LcpProblem(M, q); }
-LcpProblem sparse_problem(const SparseMat& M, const Vec& q) {
+LcpProblem sparse_problem(const pyb::handle& M, const Vec& q) {
   LcpProblem p;
-  p.M_sparse = M;
+  p.M_sparse = sparse_from(M, "M");
   p.q = q;
   return p;
 }
@@ -202,7 +203,7 @@ void bind_lcp(pyb::module_& m) {
   if (PyModule_AddFunctions(m.ptr(), kFastMethods) != 0) throw pyb::error_already_set();
   m.def("_set_result_classes", &set_result_classes);
   m.def("solve_sparse",
-        [](const SparseMat& M, const Vec& q, const std::string& solver, double tol,
+        [](const pyb::handle& M, const Vec& q, const std::string& solver, double tol,
            double tol_acceptable, int max_iterations, double time_limit) {
           return solve_problem(sparse_problem(M, q), solver,
                                common_options(tol, tol_acceptable, max_iterations, time_limit));
@@ -210,14 +211,14 @@ void bind_lcp(pyb::module_& m) {
   m.def("enumerate_dense", [](const Mat& M, const Vec& q, int max_size, double time_limit) {
     return enumerate_problem(dense_problem(M, q), max_size, time_limit);
   });
-  m.def("enumerate_sparse", [](const SparseMat& M, const Vec& q, int max_size, double time_limit) {
+  m.def("enumerate_sparse", [](const pyb::handle& M, const Vec& q, int max_size, double time_limit) {
     return enumerate_problem(sparse_problem(M, q), max_size, time_limit);
   });
   m.def("cross_verify_dense", [](const Mat& M, const Vec& q, const std::vector<std::string>& skip,
                                  int max_size, double time_limit) {
     return cross_verify_problem(dense_problem(M, q), skip, max_size, time_limit);
   });
-  m.def("cross_verify_sparse", [](const SparseMat& M, const Vec& q,
+  m.def("cross_verify_sparse", [](const pyb::handle& M, const Vec& q,
                                   const std::vector<std::string>& skip, int max_size,
                                   double time_limit) {
     return cross_verify_problem(sparse_problem(M, q), skip, max_size, time_limit);

@@ -13,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "sparse_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -85,7 +86,7 @@ JacobianCallback dense_jacobian_adapter(std::shared_ptr<CallbackState> st) {
 SparseJacobianCallback sparse_jacobian_adapter(std::shared_ptr<CallbackState> st) {
   return [st](const Vec& x, SparseMat& out) -> bool {
     return invoke(*st, st->J, x, [&](const pyb::object& r) {
-      SparseMat m = r.cast<SparseMat>();  // the Python layer hands CSC matrices
+      SparseMat m = sparse_from(r, "J(x)");  // every index checked
       if (m.rows() != st->n || m.cols() != st->n)
         throw pyb::value_error("J(x) must return an n x n matrix, n = " + std::to_string(st->n));
       out = std::move(m);

@@ -1,5 +1,8 @@
-"""Every ```python snippet of docs/python.md and README.md runs as shown, and each `print(...)  # text` line
-prints what its comment says (the part before "...", ": explanation" or " (explanation)")."""
+"""Every ```python snippet of docs/python.md, README.md, docs/friction_contact.md and
+docs/file_formats.md runs as shown, and each `print(...)  # text` line prints what its comment
+says (the part before "...", ": explanation" or " (explanation)"). The snippets run in a scratch
+directory that sees the repository's tests/ (their data paths are written from the repository's
+root). docs/maps.md's snippets read the output of `cpkit map` runs and are not run here."""
 import contextlib
 import io
 import os
@@ -9,7 +12,9 @@ import pytest
 
 from conftest import SOURCE_DIR
 
-DOCS = [os.path.join(SOURCE_DIR, "docs", "python.md"), os.path.join(SOURCE_DIR, "README.md")]
+DOCS = [os.path.join(SOURCE_DIR, *rel.split("/"))
+        for rel in ("docs/python.md", "README.md", "docs/friction_contact.md",
+                    "docs/file_formats.md")]
 
 
 def snippets():
@@ -18,6 +23,12 @@ def snippets():
         with open(doc) as f:
             found += re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
     return found
+
+
+def test_every_listed_doc_has_python_snippets():
+    for doc in DOCS:  # none silently dropped (a renamed fence would run nothing)
+        with open(doc) as f:
+            assert re.search(r"```python\n", f.read()), doc
 
 
 def expected_outputs(code):
@@ -39,6 +50,7 @@ def expected_outputs(code):
 def test_snippet_runs_and_prints_what_it_says(k, tmp_path, monkeypatch):
     code = snippets()[k]
     monkeypatch.chdir(tmp_path)  # figures land in a scratch directory
+    os.symlink(os.path.join(SOURCE_DIR, "tests"), tmp_path / "tests")
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
         exec(compile(code, f"python snippet {k + 1}", "exec"), {})

@@ -64,9 +64,10 @@ def test_dat_files_read_as_siconos_reads_them(name):
 
 
 # ---- reading: HDF5 through libfclib called here with ctypes ----------------------------------
-# Siconos 4.4 as packaged cannot read HDF5 ("fclib interface is not active") and h5py is not
-# installed: the second route is libfclib's fclib_read_local called from ctypes, with the
-# matrix decoded here (compressed rows, columns or triplets), not by cpkit's C++ conversion.
+# Siconos 4.4 as packaged cannot read HDF5 ("fclib interface is not active") and h5py is not a
+# dependency (scripts/setup-deps.sh): the second route is libfclib's fclib_read_local called from
+# ctypes, with the matrix decoded here (compressed rows, columns or triplets), not by cpkit's C++
+# conversion.
 
 class _FclibMatrix(ctypes.Structure):
     _fields_ = [("nzmax", ctypes.c_int), ("m", ctypes.c_int), ("n", ctypes.c_int),
@@ -373,7 +374,7 @@ def test_bad_options_raise_value_error():
 
 def test_bad_files_raise_value_error_naming_the_file(tmp_path):
     missing = tmp_path / "missing.dat"
-    with pytest.raises(ValueError, match="missing.dat"):
+    with pytest.raises(FileNotFoundError, match="missing.dat"):  # as open() says it
         cpkit.read_fclib(missing)
     junk = tmp_path / "junk.hdf5"
     junk.write_text("3\n1\nnot a number\n")
@@ -467,7 +468,7 @@ def test_global_bad_input_raises_value_error(tmp_path):
         cpkit.solve_friction_global(g)
     with pytest.raises(ValueError, match="local"):  # a local file is not a global one
         cpkit.read_fclib_global(os.path.join(LOCAL, "Capsules-i125-1213.hdf5"))
-    with pytest.raises(ValueError, match="missing.dat"):
+    with pytest.raises(FileNotFoundError, match="missing.dat"):
         cpkit.read_fclib_global(tmp_path / "missing.dat")
 
 
