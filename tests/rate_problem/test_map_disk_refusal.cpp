@@ -66,7 +66,9 @@ TEST_CASE("a 100000 x 1000000 map (2e11 bytes) is refused with 1.5e11 bytes free
   } catch (const cpkit::InputError& e) {
     const std::string m = e.what();
     CHECK_THAT(m, Contains("100000 x 1000000 cells (--n x --theta-n)"));
-    CHECK_THAT(m, Contains("is free in '" + dir.string() + "'"));
+    // 2 bytes per cell: 2e11 B = 186 GiB; 1.5e11 B = 139.7 GiB free.
+    CHECK_THAT(m, Contains("would take about 186 GiB but only 140 GiB is free in '" +
+                           dir.string() + "'"));
     CHECK_THAT(m, Contains("use a smaller --n or --theta-n"));
   }
   REQUIRE(asked.size() == 1);
@@ -78,13 +80,13 @@ TEST_CASE("a small map: refused when its bytes exceed 95 % of the free disk, wri
           "[rate][maps][request][disk]") {
   // 7 x 24 = 168 cells: at least 2 bytes per cell as .npy (count and types), more than 95 % of
   // 100 bytes; nothing close to 95 % of 1e12.
-  for (const double free : {100.0, 1e12, -1.0}) {
-    CAPTURE(free);
+  for (const double free_bytes : {100.0, 1e12, -1.0}) {
+    CAPTURE(free_bytes);
     const fs::path dir = scratch("small");
     MapEnvironment env;
-    env.free_disk = [free](const std::string&) { return free; };
+    env.free_disk = [free_bytes](const std::string&) { return free_bytes; };
     const MapRequest a = grid_request(7, 24, (dir / "m").string());
-    if (free == 100.0) {
+    if (free_bytes == 100.0) {
       CHECK_THROWS_WITH(run_map_request(a, env), Contains("but only 100 B is free in '"));
       CHECK(fs::is_empty(dir));
     } else {  // fits, or the free space unknown (-1): the map is computed and written
