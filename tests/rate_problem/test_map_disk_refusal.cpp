@@ -2,7 +2,8 @@
 // naming the options that make it fit; the free disk is injected (MapEnvironment::free_disk), so
 // the check runs the same on every machine (the program asks statvfs; test_cli_map.cpp runs the
 // program's own refusals that do not depend on the machine). Independent source: the output's
-// size by hand, 2 bytes per cell (.npy count + types), against 95 % of the injected free bytes.
+// size by hand, 4 bytes per cell (the .npy arrays class, min_count, max_count and types, one byte
+// each), against 95 % of the injected free bytes.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -49,7 +50,7 @@ fs::path scratch(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("a 100000 x 1000000 map (2e11 bytes) is refused with 1.5e11 bytes free",
+TEST_CASE("a 100000 x 1000000 map (4e11 bytes) is refused with 1.5e11 bytes free",
           "[rate][maps][request][disk]") {
   const fs::path dir = scratch("huge");
   const std::string prefix = (dir / "huge").string();
@@ -66,8 +67,9 @@ TEST_CASE("a 100000 x 1000000 map (2e11 bytes) is refused with 1.5e11 bytes free
   } catch (const cpkit::InputError& e) {
     const std::string m = e.what();
     CHECK_THAT(m, Contains("100000 x 1000000 cells (--n x --theta-n)"));
-    // 2 bytes per cell: 2e11 B = 186 GiB; 1.5e11 B = 139.7 GiB free.
-    CHECK_THAT(m, Contains("would take about 186 GiB but only 140 GiB is free in '" +
+    // 4 bytes per cell: 4e11 B = 372.5 GiB (the .npy headers add bytes, not GiB); 1.5e11 B =
+    // 139.7 GiB free.
+    CHECK_THAT(m, Contains("would take about 373 GiB but only 140 GiB is free in '" +
                            dir.string() + "'"));
     CHECK_THAT(m, Contains("use a smaller --n or --theta-n"));
   }
@@ -78,8 +80,8 @@ TEST_CASE("a 100000 x 1000000 map (2e11 bytes) is refused with 1.5e11 bytes free
 
 TEST_CASE("a small map: refused when its bytes exceed 95 % of the free disk, written otherwise",
           "[rate][maps][request][disk]") {
-  // 7 x 24 = 168 cells: at least 2 bytes per cell as .npy (count and types), more than 95 % of
-  // 100 bytes; nothing close to 95 % of 1e12.
+  // 7 x 24 = 168 cells: 4 bytes per cell as .npy, more than 95 % of 100 bytes; nothing close
+  // to 95 % of 1e12.
   for (const double free_bytes : {100.0, 1e12, -1.0}) {
     CAPTURE(free_bytes);
     const fs::path dir = scratch("small");
