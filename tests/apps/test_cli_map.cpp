@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "cli_runner.hpp"
+#include "peer_skip.hpp"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,7 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/statvfs.h>
 
 namespace fs = std::filesystem;
 
@@ -142,7 +142,7 @@ TEST_CASE("CliMapRejectsBadInputWithExitCode2", "[cli][map]") {
 
 TEST_CASE("CliPlotWritesPngAndSvg", "[cli][map][plot]") {
   if (std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") != 0) {
-    WARN("skipped: /usr/bin/python3 has no matplotlib (Debian: apt-get install python3-matplotlib)");
+    CPKIT_SKIP_CHECK("/usr/bin/python3 has no matplotlib (Debian: apt-get install python3-matplotlib)");
     return;
   }
   for (const char* kind : {"direction", "param-direction", "param-param"}) {
@@ -242,7 +242,7 @@ TEST_CASE("CliMapJsonReportsUnreliableCells", "[cli][map]") {
 // the CSV of the same map, cell by cell.
 TEST_CASE("CliGridMapNpyEqualsCsvReadByNumpy", "[cli][map][npy]") {
   if (std::system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") != 0) {
-    WARN("skipped: /usr/bin/python3 has no numpy (Debian: apt-get install python3-numpy)");
+    CPKIT_SKIP_CHECK("/usr/bin/python3 has no numpy (Debian: apt-get install python3-numpy)");
     return;
   }
   for (const std::string kind : {"param-direction", "param-param"}) {
@@ -298,33 +298,20 @@ assert len(rows) == s["cells"]
   }
 }
 
-// A grid whose output cannot fit the disk is refused before any cell is computed, naming the
-// options that make it fit (--time-limit and --max-output raised: their checks would refuse it
-// first). Without
-// --time-limit, the same map is refused by its time estimate.
-TEST_CASE("CliGridMapTooBigForTheDiskIsRefused", "[cli][map]") {
+// A grid that cannot be computed in --time-limit is refused before any cell is computed: 1e11
+// cells cannot be done in 60 s at any speed the estimate could measure (that would be 1.7e9
+// cells/s), a refusal that does not depend on how loaded the machine is. (A grid whose output
+// would not fit the free disk: rate_problem.test_map_disk_refusal, with the free disk injected.)
+TEST_CASE("CliGridMapOverTheTimeLimitIsRefused", "[cli][map]") {
   const fs::path prefix = scratch_dir() / "huge";
-  struct statvfs st {};
-  REQUIRE(statvfs(scratch_dir().c_str(), &st) == 0);
-  const double free = static_cast<double>(st.f_bavail) * st.f_frsize;
-  // 100000 x 1000000 cells take 2e11 bytes as .npy (count + types).
-  if (free > 1.5e11) {
-    WARN("skipped: " << free << " bytes free, the 2e11-byte map would fit");
-    return;
-  }
-  const Run r = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
-                    "--n 100000 --theta-n 1000000 --time-limit 1e9 --max-output 1T --out " +
-                    prefix.string());
-  CHECK(r.code == 2);
-  CHECK(r.err.find("--theta-n") != std::string::npos);
-  CHECK(r.err.find("free") != std::string::npos);
-  CHECK_FALSE(fs::exists(prefix.string() + "_count.npy"));
-  // 1e11 cells cannot be done in 60 s at any speed the estimate could measure (that would be
-  // 1.7e9 cells/s): a refusal that does not depend on how loaded the machine is.
   const Run t = run("map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 "
-                    "--n 100000 --theta-n 1000000 --time-limit 60");
+                    "--n 100000 --theta-n 1000000 --time-limit 60 --out " + prefix.string());
   CHECK(t.code == 2);
   CHECK(t.err.find("--time-limit") != std::string::npos);
+  CHECK(t.err.find("100000 x 1000000 cells") != std::string::npos);
+  CHECK(t.out.empty());
+  CHECK_FALSE(fs::exists(prefix.string() + "_count.npy"));
+  CHECK_FALSE(fs::exists(prefix.string() + ".json"));
 }
 
 // A grid with an invalid row (A not positive definite from a12 = 1.0102 on) is refused, the

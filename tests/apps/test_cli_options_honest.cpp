@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "peer_skip.hpp"
 
 namespace {
 
@@ -188,7 +189,7 @@ TEST_CASE("simulate creates the --plot folder, names what it wrote, a failed plo
       CHECK(r.err.find("cpkit simulate: wrote " + prefix + f) != std::string::npos);
     }
   } else {
-    WARN("skipped the figures: /usr/bin/python3 has no matplotlib");
+    CPKIT_SKIP_CHECK("the figures: /usr/bin/python3 has no matplotlib");
   }
   // A plotting program that fails: exit 4 and a message, the data still written and named.
   const fs::path dir2 = scratch_dir() / "failing";

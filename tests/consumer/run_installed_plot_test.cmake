@@ -23,13 +23,20 @@ if(NOT used STREQUAL expected)
   message(FATAL_ERROR "the installed cpkit ran the plotting scripts\n${used}\ninstead of\n${expected}")
 endif()
 # The real thing, from the installed scripts (needs python3-matplotlib, a set-up dependency;
-# without it the test is reported as skipped, saying why).
+# without it the test is reported as skipped, saying why, or fails where peers are required).
 unset(ENV{CPKIT_PYTHON})
 execute_process(COMMAND /usr/bin/python3 -c "import matplotlib" RESULT_VARIABLE no_mpl
                 OUTPUT_QUIET ERROR_QUIET)
 if(no_mpl)
-  message("skipped: /usr/bin/python3 has no matplotlib (Debian: python3-matplotlib); the "
-          "installed scripts were found, the pictures not drawn")
+  set(why "/usr/bin/python3 has no matplotlib (Debian: python3-matplotlib); the installed "
+          "scripts were found, the pictures not drawn")
+  # Where every peer is installed (CI), a missing one is a failure (tests/peer_skip.hpp).
+  if("$ENV{CPKIT_REQUIRE_PEERS}" STREQUAL "1" OR
+     ("$ENV{CPKIT_REQUIRE_PEERS}" STREQUAL "" AND ("$ENV{CI}" STREQUAL "true" OR "$ENV{CI}" STREQUAL "1")))
+    message(FATAL_ERROR "${why} (a missing peer fails where peers are required: CI=true or "
+                        "CPKIT_REQUIRE_PEERS=1)")
+  endif()
+  message("skipped: ${why}")
   return()
 endif()
 execute_process(COMMAND ${cpkit} map --preset fig5b --out ${WORK_DIR}/real/fig5b --plot

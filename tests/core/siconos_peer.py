@@ -25,7 +25,7 @@ try:
     import scipy.sparse as sp
     import siconos.numerics as sn
 except ImportError as e:  # pragma: no cover - depends on the machine
-    print(f"SKIPPED: python3-siconos is not importable ({e}); "
+    print(f"python3-siconos is not importable ({e}); "
           "install it with scripts/setup-deps.sh --tests")
     sys.exit(77)
 

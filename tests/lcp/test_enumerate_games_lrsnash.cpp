@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cpkit/lcp/enumerate.hpp"
+#include "peer_skip.hpp"
 #include "scratch_files.hpp"
 
 namespace {
@@ -110,10 +111,8 @@ bool close(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace
 
 TEST_CASE("bimatrix games beyond n = 24: every equilibrium of lrsnash, no other", "[games]") {
-  if (std::system("command -v lrsnash >/dev/null 2>&1") != 0) {
-    std::cout << "skipped: lrsnash (Debian package lrslib) is not installed\n";
-    std::exit(77);  // ctest SKIP_RETURN_CODE (tests/CMakeLists.txt)
-  }
+  if (std::system("command -v lrsnash >/dev/null 2>&1") != 0)
+    cpkit::test::skip_program("lrsnash (Debian package lrslib) is not installed");
   const int shapes[][3] = {{13, 13, 1}, {14, 14, 2}, {12, 15, 3}};
   for (const auto& sh : shapes) {
     const int m = sh[0], k = sh[1];
