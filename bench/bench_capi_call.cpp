@@ -78,7 +78,9 @@ int main(int argc, char** argv) {
   double sic_lcp = NAN, sic_fc = NAN;
 #ifdef CPKIT_HAVE_SICONOS
   {
-    SiconosLcp sl(Eigen::Map<const Eigen::Matrix2d>(M), Eigen::Map<const Eigen::Vector2d>(q));
+    const Eigen::MatrixXd Md = Eigen::Map<const Eigen::Matrix2d>(M);
+    const Eigen::VectorXd qd = Eigen::Map<const Eigen::Vector2d>(q);
+    SiconosLcp sl(Md, qd);
     SolverOptions* opts = solver_options_create(SICONOS_LCP_LEMKE);
     int status = -1;
     lcp_lexicolemke(&sl.lcp, z, w, &status, opts);

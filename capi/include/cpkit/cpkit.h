@@ -14,7 +14,7 @@
  *    cpkit_system_rate / cpkit_system_step also return 3 (the routes disagree).
  *  - info may be NULL (not wanted); options may be NULL (defaults: cpkit_default_options).
  *  - Nothing is printed, nothing exits, no C++ exception crosses this interface (every failure,
- *    out of memory included, is status 2 or 4 with a message). Every function may be called from
+ *    out of memory included, is status 2 with a message). Every function may be called from
  *    many threads at once on different data.
  *  - Structs are plain data; their layout is part of the ABI and does not change within a
  *    major version. Sizes are int; arrays are the caller's unless a function says it allocates
@@ -22,6 +22,13 @@
  */
 #ifndef CPKIT_CPKIT_H
 #define CPKIT_CPKIT_H
+
+/* The exported functions (the library is built with hidden visibility otherwise). */
+#if defined(__GNUC__) && !defined(CPKIT_API)
+#define CPKIT_API __attribute__((visibility("default")))
+#elif !defined(CPKIT_API)
+#define CPKIT_API
+#endif
 
 #ifdef __cplusplus
 extern "C" {
@@ -44,38 +51,41 @@ typedef struct {
 } cpkit_info;
 
 /* tol = 1e-10, max_iter = 0, time_limit = 0. */
-void cpkit_default_options(cpkit_options* options);
+CPKIT_API void cpkit_default_options(cpkit_options* options);
 
 /* One LCP of size n >= 1. M: n x n column-major; q, z, w: n. solver: a registered name ("auto",
  * "lemke", "fb-newton", "ipopt", "nlopt-mpcc", ...; NULL: "auto"). z and w receive the answer
  * (also the last iterate when status != 0); w = M z + q recomputed from the data. */
-int cpkit_lcp_solve(int n, const double* M, const double* q, const char* solver,
-                    const cpkit_options* options, double* z, double* w, cpkit_info* info);
+CPKIT_API int cpkit_lcp_solve(int n, const double* M, const double* q, const char* solver,
+                              const cpkit_options* options, double* z, double* w,
+                              cpkit_info* info);
 
 /* `count` LCPs of the same size n in one call (count >= 0): problem k is M + k n n, q + k n, its
  * answer z + k n, w + k n. Every problem is checked before any is solved (a bad one: status 2,
  * nothing solved, the message names problem k). status (count entries, may be NULL) receives each
  * problem's code. Returns 0 when every problem is solved, else the code of the first that is not
  * (info->message names it). */
-int cpkit_lcp_solve_batch(int count, int n, const double* M, const double* q, const char* solver,
-                          const cpkit_options* options, double* z, double* w, int* status,
-                          cpkit_info* info);
+CPKIT_API int cpkit_lcp_solve_batch(int count, int n, const double* M, const double* q,
+                                    const char* solver, const cpkit_options* options, double* z,
+                                    double* w, int* status, cpkit_info* info);
 
 /* One friction problem with `contacts` >= 1 contacts: W (3 contacts x 3 contacts) in compressed
  * sparse columns (col_ptr: 3 contacts + 1 entries starting at 0, row_index and values: nnz
  * entries, row indices 0-based), q: 3 contacts, mu: contacts (each >= 0). solver: "auto"
  * (NULL), "nsgs", "fb-soc", "prox", "lemke" (faceted), "ipopt". r and u (3 contacts) receive the
  * answer, u = W r + q recomputed. */
-int cpkit_fc3d_solve(int contacts, int nnz, const int* col_ptr, const int* row_index,
-                     const double* values, const double* q, const double* mu, const char* solver,
-                     const cpkit_options* options, double* r, double* u, cpkit_info* info);
+CPKIT_API int cpkit_fc3d_solve(int contacts, int nnz, const int* col_ptr, const int* row_index,
+                               const double* values, const double* q, const double* mu,
+                               const char* solver, const cpkit_options* options, double* r,
+                               double* u, cpkit_info* info);
 
 /* `count` friction problems of `contacts` contacts each, with DENSE W (3 contacts square,
  * column-major): problem k is W + k m m, q + k m, mu + k contacts (m = 3 contacts); its answer
  * r + k m, u + k m. Checks, status and return value as cpkit_lcp_solve_batch. */
-int cpkit_fc3d_solve_batch(int count, int contacts, const double* W, const double* q,
-                           const double* mu, const char* solver, const cpkit_options* options,
-                           double* r, double* u, int* status, cpkit_info* info);
+CPKIT_API int cpkit_fc3d_solve_batch(int count, int contacts, const double* W, const double* q,
+                                     const double* mu, const char* solver,
+                                     const cpkit_options* options, double* r, double* u,
+                                     int* status, cpkit_info* info);
 
 /* The friction verdict on a candidate r (3 contacts) of the problem (W in CSC as above):
  * u = W r + q recomputed, the errors of core/friction_verdict.hpp. */
@@ -87,10 +97,10 @@ typedef struct {
 /* Returns 0 when r is accepted (unit_free <= options->tol), 5 when not, 2 on bad input.
  * errors and states may be NULL; states (contacts entries) receive 0 separated, 1 stick,
  * 2 slip. info->residual = unit_free. */
-int cpkit_fc3d_errors(int contacts, int nnz, const int* col_ptr, const int* row_index,
-                      const double* values, const double* q, const double* mu, const double* r,
-                      const cpkit_options* options, cpkit_fc3d_error_values* errors, int* states,
-                      cpkit_info* info);
+CPKIT_API int cpkit_fc3d_errors(int contacts, int nnz, const int* col_ptr, const int* row_index,
+                                const double* values, const double* q, const double* mu,
+                                const double* r, const cpkit_options* options,
+                                cpkit_fc3d_error_values* errors, int* states, cpkit_info* info);
 
 /* A local friction problem read from a file: FCLIB (HDF5, .hdf5/.h5) or a Siconos
  * FrictionContact .dat file, chosen by content. W in CSC as above (0-based). */
@@ -105,13 +115,15 @@ typedef struct {
 } cpkit_fc3d_problem;
 /* Library-allocated: fills *problem (its arrays allocated by cpkit); release them with
  * cpkit_fc3d_problem_free. On failure (2) the struct is zeroed and nothing is allocated. */
-int cpkit_fc3d_read(const char* path, cpkit_fc3d_problem* problem, cpkit_info* info);
-void cpkit_fc3d_problem_free(cpkit_fc3d_problem* problem);
+CPKIT_API int cpkit_fc3d_read(const char* path, cpkit_fc3d_problem* problem, cpkit_info* info);
+CPKIT_API void cpkit_fc3d_problem_free(cpkit_fc3d_problem* problem);
 /* Caller-owned: cpkit_fc3d_read_sizes gives contacts and nnz; cpkit_fc3d_read_into fills arrays
  * of those sizes (status 2 when the sizes given differ from the file's). */
-int cpkit_fc3d_read_sizes(const char* path, int* contacts, int* nnz, cpkit_info* info);
-int cpkit_fc3d_read_into(const char* path, int contacts, int nnz, int* col_ptr, int* row_index,
-                         double* values, double* q, double* mu, cpkit_info* info);
+CPKIT_API int cpkit_fc3d_read_sizes(const char* path, int* contacts, int* nnz,
+                                    cpkit_info* info);
+CPKIT_API int cpkit_fc3d_read_into(const char* path, int contacts, int nnz, int* col_ptr,
+                                   int* row_index, double* values, double* q, double* mu,
+                                   cpkit_info* info);
 
 /* The rate problem and the incremental step of a contact system. system_json: the text of a
  * system file (docs/file_formats.md: 2-D N-point or "dim": 3). dF: the load rate / increment,
@@ -121,16 +133,16 @@ int cpkit_fc3d_read_into(const char* path, int contacts, int nnz, int* col_ptr, 
  * print (every solution; N coupled 3-D points: the step's fb-soc chain), allocated by cpkit:
  * release it with cpkit_free (NULL on status 2). Returns the command line's exit code
  * (0 a solution, 1 none, 2 bad input, 3 the routes disagree, 5 not proved complete). */
-int cpkit_system_rate(const char* system_json, int n_dF, const double* dF, const char* method,
-                      char** solution_json, cpkit_info* info);
-int cpkit_system_step(const char* system_json, int n_dF, const double* dF, char** solution_json,
-                      cpkit_info* info);
+CPKIT_API int cpkit_system_rate(const char* system_json, int n_dF, const double* dF,
+                                const char* method, char** solution_json, cpkit_info* info);
+CPKIT_API int cpkit_system_step(const char* system_json, int n_dF, const double* dF,
+                                char** solution_json, cpkit_info* info);
 
 /* Releases memory allocated by cpkit (JSON text); NULL is allowed. */
-void cpkit_free(void* p);
+CPKIT_API void cpkit_free(void* p);
 
 /* "0.1.0": the library's version (static storage). */
-const char* cpkit_version(void);
+CPKIT_API const char* cpkit_version(void);
 
 #ifdef __cplusplus
 }
