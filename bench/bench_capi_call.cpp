@@ -56,9 +56,9 @@ bool near(const double* x, const double* y, int n) {
 
 void row(const char* what, double us, double peer) {
   if (std::isfinite(peer))
-    std::printf("| %-44s | %9.4f | %6.2fx |\n", what, us, us / peer);
+    std::printf("| %-50s | %9.4f | %6.2fx |\n", what, us, us / peer);
   else
-    std::printf("| %-44s | %9.4f | %7s |\n", what, us, "-");
+    std::printf("| %-50s | %9.4f | %7s |\n", what, us, "-");
 }
 
 }  // namespace

@@ -101,10 +101,12 @@ TEST_CASE("C API: the tiny LCP by hand, every route", "[capi]") {
     REQUIRE(cpkit_lcp_solve(2, M, q, solver, nullptr, z, w, &info) == 0);
     CHECK(info.status == 0);
     CHECK(message(info).empty());
-    CHECK(z[0] == Approx(4.0 / 3).epsilon(1e-14));
-    CHECK(z[1] == Approx(7.0 / 3).epsilon(1e-14));
-    CHECK(std::abs(w[0]) < 1e-14);
-    CHECK(std::abs(w[1]) < 1e-14);
+    // Lemke and the enumeration solve M z = -q directly; fb-newton iterates to tol = 1e-10.
+    const double err = std::strcmp(solver, "fb-newton") == 0 ? 1e-9 : 1e-14;
+    CHECK(z[0] == Approx(4.0 / 3).epsilon(err));
+    CHECK(z[1] == Approx(7.0 / 3).epsilon(err));
+    CHECK(std::abs(w[0]) < err);
+    CHECK(std::abs(w[1]) < err);
     CHECK(info.residual <= 1e-10);
     CHECK(info.seconds >= 0);
   }

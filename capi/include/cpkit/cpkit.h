@@ -54,8 +54,11 @@ typedef struct {
 CPKIT_API void cpkit_default_options(cpkit_options* options);
 
 /* One LCP of size n >= 1. M: n x n column-major; q, z, w: n. solver: a registered name ("auto",
- * "lemke", "fb-newton", "ipopt", "nlopt-mpcc", ...; NULL: "auto"). z and w receive the answer
- * (also the last iterate when status != 0); w = M z + q recomputed from the data. */
+ * "lemke", "fb-newton", "ipopt", "nlopt", ...; NULL: "auto"). z and w receive the answer
+ * (also the last iterate when status != 0); w = M z + q recomputed from the data.
+ * n <= 4 with "auto" or "lemke": the solutions are first enumerated in closed form; when there
+ * is exactly one, it is the answer (any solver that returns one returns it), verified as every
+ * answer is, with iterations = 0; otherwise the named solver runs. */
 CPKIT_API int cpkit_lcp_solve(int n, const double* M, const double* q, const char* solver,
                               const cpkit_options* options, double* z, double* w,
                               cpkit_info* info);
@@ -73,7 +76,9 @@ CPKIT_API int cpkit_lcp_solve_batch(int count, int n, const double* M, const dou
  * sparse columns (col_ptr: 3 contacts + 1 entries starting at 0, row_index and values: nnz
  * entries, row indices 0-based), q: 3 contacts, mu: contacts (each >= 0). solver: "auto"
  * (NULL), "nsgs", "fb-soc", "prox", "lemke" (faceted), "ipopt". r and u (3 contacts) receive the
- * answer, u = W r + q recomputed. */
+ * answer, u = W r + q recomputed. One contact with "auto" or "nsgs": every solution is first
+ * found in closed form; when there is exactly one, it is the answer (verified, iterations = 0);
+ * otherwise the named solver runs. */
 CPKIT_API int cpkit_fc3d_solve(int contacts, int nnz, const int* col_ptr, const int* row_index,
                                const double* values, const double* q, const double* mu,
                                const char* solver, const cpkit_options* options, double* r,
