@@ -5,6 +5,7 @@
 #  - compiles the installed Fortran module, builds docs/examples/capi_example.f90 and the issue's
 #    program with gfortran and runs them (hand answer; status 2 for n = -1 and NaN in q);
 #  - checks that the C and Fortran blocks of docs/library.md are these example files, verbatim;
+#  - builds the same C file in a C-only CMake project (find_package(cpkit), cpkit::capi);
 #  - checks that libcpkit.so exports the C API's symbols only.
 # Skipped (exit message "skipped: ...") only where gfortran is missing, for the Fortran part.
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -90,6 +91,23 @@ if(rc OR NOT out MATCHES "lcp: status 0, z = \\(1\\.3333333333333[0-9]*, 2\\.333
   message(FATAL_ERROR "the C example failed (exit ${rc}) or printed something else")
 endif()
 
+# C with CMake: find_package(cpkit) in a C-only project, target cpkit::capi.
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${CMAKE_CURRENT_LIST_DIR}/capi -B ${WORK_DIR}/cmake_c
+                        -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
+                        -DEXAMPLE_SOURCE=${DOCS_DIR}/examples/capi_example.c
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc)
+  execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/cmake_c
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+endif()
+if(rc)
+  message(FATAL_ERROR "a C project with find_package(cpkit) and cpkit::capi failed:\n${out}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/cmake_c/capi_example RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "the C example built with CMake (cpkit::capi) failed (exit ${rc})")
+endif()
+
 # Fortran: the installed module compiled by the caller's compiler.
 find_program(gfortran gfortran)
 if(NOT gfortran)
@@ -111,7 +129,7 @@ foreach(program ${DOCS_DIR}/examples/capi_example.f90 ${CMAKE_CURRENT_LIST_DIR}/
   execute_process(COMMAND ${WORK_DIR}/${stem}_f RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   message("${stem}:\n${out}")
   # gfortran's list-directed output: "0" then z, at least 14 correct digits each.
-  if(rc OR NOT out MATCHES "^ +0\n +1\\.33333333333333[0-9]* +2\\.33333333333333[0-9]*\n")
+  if(rc OR NOT out MATCHES "^ +0 *\n +1\\.33333333333333[0-9]* +2\\.33333333333333[0-9]* *\n")
     message(FATAL_ERROR "${stem} (Fortran) did not print 0 and z = (4/3, 7/3) (exit ${rc})")
   endif()
   if(stem STREQUAL "capi_example" AND
