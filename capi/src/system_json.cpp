@@ -55,7 +55,8 @@ using namespace cpkit;
 using namespace cpkit::capi;
 
 extern "C" int cpkit_system_rate(const char* system_json, int n_dF, const double* dF,
-                                 const char* method, char** solution_json, cpkit_info* info) {
+                                 const char* method, int facets, char** solution_json,
+                                 cpkit_info* info) {
   if (solution_json != nullptr) *solution_json = nullptr;
   return guarded(info, [&](cpkit_info& out) {
     require(solution_json, "solution_json");
@@ -68,6 +69,10 @@ extern "C" int cpkit_system_rate(const char* system_json, int n_dF, const double
     if (method != nullptr) {
       request.method = method;
       request.options_given.push_back("--method");
+    }
+    if (facets != 0) {
+      request.facets = facets;
+      request.options_given.push_back("--facets");
     }
     const rate::RateOutcome outcome = rate::run_rate_request(request);
     notes_message(out, outcome.notes);

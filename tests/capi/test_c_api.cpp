@@ -291,7 +291,7 @@ TEST_CASE("C API: bad input is 2 with a message naming it, for every entry point
   CHECK(cpkit_fc3d_read(nullptr, &p, &info) == 2);
   CHECK(message(info) == "cpkit: bad input: path is NULL");
   char* json = reinterpret_cast<char*>(1);
-  CHECK(cpkit_system_rate("{", 0, nullptr, nullptr, &json, &info) == 2);
+  CHECK(cpkit_system_rate("{", 0, nullptr, nullptr, 0, &json, &info) == 2);
   CHECK(json == nullptr);
   CHECK(message(info).find("system_json") != std::string::npos);
   CHECK(cpkit_system_step(nullptr, 0, nullptr, &json, &info) == 2);
@@ -474,7 +474,7 @@ TEST_CASE("C API: a system's rate problem and step as JSON", "[capi]") {
   cpkit_info info;
   // The rate problem with the file's dF: the C API carries the library's request unchanged, so
   // its answer is what run_rate_request gives for the file itself (`cpkit rate --system FILE`).
-  const int code = cpkit_system_rate(text.c_str(), 0, nullptr, nullptr, &json, &info);
+  const int code = cpkit_system_rate(text.c_str(), 0, nullptr, nullptr, 0, &json, &info);
   cpkit::rate::RateRequest request;
   request.system = path;
   request.options_given = {"--system"};
@@ -502,4 +502,15 @@ TEST_CASE("C API: a system's rate problem and step as JSON", "[capi]") {
   cpkit_free(json);
   CHECK(cpkit_system_step(text.c_str(), 3, dF, &json, &info) == 2);
   CHECK(message(info).find("--dF") != std::string::npos);
+  // Coupled 3-D points: the rate problem needs the faceted route (facets = K), as on the
+  // command line; without it, bad input saying so.
+  const std::string text_3d =
+      read_text(std::string(CPKIT_SOURCE_DIR) + "/docs/examples/two_point_system_3d.json");
+  CHECK(cpkit_system_rate(text_3d.c_str(), 0, nullptr, nullptr, 0, &json, &info) == 2);
+  CHECK(message(info).find("--facets K") != std::string::npos);
+  const int code_3d = cpkit_system_rate(text_3d.c_str(), 0, nullptr, nullptr, 16, &json, &info);
+  CHECK(code_3d != 2);
+  REQUIRE(json != nullptr);
+  CHECK(nlohmann::json::parse(json)["input"]["facets"] == 16);
+  cpkit_free(json);
 }

@@ -140,13 +140,14 @@ module cpkit
 
     ! method: "enumerate"//c_null_char, ... or c_null_ptr; solution_json receives a C string
     ! (release it with cpkit_free).
-    integer(c_int) function cpkit_system_rate(system_json, n_dF, dF, method, solution_json, &
-        info) bind(C, name="cpkit_system_rate")
+    integer(c_int) function cpkit_system_rate(system_json, n_dF, dF, method, facets, &
+        solution_json, info) bind(C, name="cpkit_system_rate")
       import :: c_int, c_double, c_char, c_ptr
       character(kind=c_char), intent(in) :: system_json(*)
       integer(c_int), value :: n_dF
       real(c_double), intent(in) :: dF(*)
       type(c_ptr), value :: method
+      integer(c_int), value :: facets
       type(c_ptr), intent(out) :: solution_json
       type(c_ptr), value :: info
     end function

@@ -133,13 +133,16 @@ CPKIT_API int cpkit_fc3d_read_into(const char* path, int contacts, int nnz, int*
 /* The rate problem and the incremental step of a contact system. system_json: the text of a
  * system file (docs/file_formats.md: 2-D N-point or "dim": 3). dF: the load rate / increment,
  * n_dF numbers (2 or 3 per point; NULL with n_dF = 0: the file's "dF", rate problem only).
- * method (rate only): "enumerate" (NULL), "lemke", "fb-newton", "ipopt". *solution_json receives
+ * method (rate only): "enumerate" (NULL), "lemke", "fb-newton", "ipopt"; facets (rate only): 0,
+ * or K (3..64) for the faceted route of 3-D systems (`--facets K`; N coupled 3-D points need it,
+ * docs/contact_3d.md). *solution_json receives
  * the JSON text `cpkit rate --system FILE --json` / `cpkit step --system FILE --all --json`
  * print (every solution; N coupled 3-D points: the step's fb-soc chain), allocated by cpkit:
  * release it with cpkit_free (NULL on status 2). Returns the command line's exit code
  * (0 a solution, 1 none, 2 bad input, 3 the routes disagree, 5 not proved complete). */
 CPKIT_API int cpkit_system_rate(const char* system_json, int n_dF, const double* dF,
-                                const char* method, char** solution_json, cpkit_info* info);
+                                const char* method, int facets, char** solution_json,
+                                cpkit_info* info);
 CPKIT_API int cpkit_system_step(const char* system_json, int n_dF, const double* dF,
                                 char** solution_json, cpkit_info* info);
 
