@@ -10,7 +10,6 @@
 #include "finite_check.hpp"
 #include "small_lcp.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/core/finalize.hpp"
 
 namespace cpkit::capi {
 namespace {
