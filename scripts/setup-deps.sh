@@ -5,7 +5,8 @@
 #   --tests  also the peers the test suite compares against: Siconos' own .dat reader and writer
 #            (python3-siconos, with python3-scipy for its sparse matrices), pytest for the
 #            Python module's tests, GetFEM for its example (docs/examples/getfem_punch.py) and
-#            lrslib (lrsnash: the peer of the bimatrix-game enumeration test), and Open MPI
+#            lrslib (lrsnash: the peer of the bimatrix-game enumeration test), gfortran (the
+#            Fortran example of the C API, docs/library.md), and Open MPI
 #            (libopenmpi-dev, openmpi-bin) for the distributed maps (docs/cluster.md).
 #            Without them those tests are skipped, saying why.
 # The base set includes pybind11-dev and python3-dev: the Python module `cpkit` (python/), and
@@ -19,7 +20,7 @@ packages=(g++ cmake make pkg-config libeigen3-dev coinor-libipopt-dev libnlopt-c
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(libsiconos-numerics-dev lrslib) ;;
-    --tests) packages+=(python3-siconos python3-scipy python3-pytest python3-getfem lrslib
+    --tests) packages+=(python3-siconos python3-scipy python3-pytest python3-getfem lrslib gfortran
                         libopenmpi-dev openmpi-bin) ;;
     *) echo "cpkit setup: unknown option $arg (valid: --bench, --tests)" >&2; exit 2 ;;
   esac

@@ -107,8 +107,8 @@ void run_system_3d(const RateRequest& a, const SystemFile& file, RateOutcome& ou
 void run_system(const RateRequest& a, RateOutcome& out) {
   const std::string& path = a.system;
   out.path = path;
-  // read once (a pipe can be read only once), then by its dimension
-  const SystemFile file = read_system_file(path);
+  // read once (a pipe can be read only once), then by its dimension; or given already read
+  const SystemFile file = a.file ? *a.file : read_system_file(path);
   if (file.dim == 3) return run_system_3d(a, file, out);
   if (a.time_limit)
     throw InputError("--time-limit applies to the faceted 3-D rate problems (\"dim\": 3 and "

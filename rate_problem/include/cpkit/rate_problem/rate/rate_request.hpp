@@ -16,6 +16,7 @@
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
+#include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {
 
@@ -29,6 +30,9 @@ struct RateRequest {
   std::vector<double> dF;        ///< --dF: DFT DFN (one point), 2N or 3N numbers (--system)
   std::string method = "enumerate";
   std::string system;                ///< --system FILE: an N-point or 3-D system (empty: one point)
+  /// The --system file already read (the C API's JSON text); absent: read from `system`, which
+  /// then only names it in messages.
+  std::optional<SystemFile> file;
   int facets = 0;                    ///< --facets K: a 3-D system's faceted route (0: exact)
   std::optional<double> time_limit;  ///< --time-limit S: the faceted 3-D solves' budget
   std::vector<std::string> options_given;  ///< the options given, as "--dF"

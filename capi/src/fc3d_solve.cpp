@@ -1,0 +1,122 @@
+// cpkit_fc3d_solve and cpkit_fc3d_solve_batch: the problem mapped into the library's
+// FrictionContactProblem, solved by the registered friction solver (or, for one contact, by the
+// closed form when the contact has exactly one solution), every answer decided by the friction
+// verdict (finalize, core/friction_verdict.hpp).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "c_boundary.hpp"
+#include "finite_check.hpp"
+#include "friction_input.hpp"
+#include "small_contact.hpp"
+#include "cpkit/core/errors.hpp"
+
+namespace cpkit::capi {
+namespace {
+
+/// A thread's problem and result, reused from call to call; larger problems are not kept.
+constexpr int kKeptContacts = 16;
+struct FrictionWorkspace {
+  FrictionContactProblem problem;
+  SolveResult result;
+};
+
+FrictionWorkspace& workspace(int contacts, std::optional<FrictionWorkspace>& large) {
+  thread_local FrictionWorkspace kept;
+  return contacts <= kKeptContacts ? kept : large.emplace();
+}
+
+/// Solves ws.problem into r, u (3 contacts each); returns the code, ws.result the decision.
+int solve_one(const SolverEntry& entry, const CommonOptions& o, double* r, double* u,
+              FrictionWorkspace& ws) {
+  const FrictionContactProblem& p = ws.problem;
+  SolveResult& res = ws.result;
+  if (!solve_one_contact_unique(p, entry, o, res)) res = entry.solve_fc(p, o);
+  const Eigen::Index m = p.q.size();
+  const bool full = res.z.size() == m && res.w.size() == m;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    r[i] = full ? res.z[i] : NAN;
+    u[i] = full ? res.w[i] : NAN;
+  }
+  return fc_code(res.status);
+}
+
+std::string outcome_message(const SolveResult& r) {
+  return "cpkit: " + std::string(to_string(r.status)) + (r.message.empty() ? "" : ": " + r.message);
+}
+
+}  // namespace
+}  // namespace cpkit::capi
+
+using namespace cpkit;
+using namespace cpkit::capi;
+
+extern "C" int cpkit_fc3d_solve(int contacts, int nnz, const int* col_ptr, const int* row_index,
+                                const double* values, const double* q, const double* mu,
+                                const char* solver, const cpkit_options* options, double* r,
+                                double* u, cpkit_info* info) {
+  return guarded(info, [&](cpkit_info& out) {
+    require(r, "r");
+    require(u, "u");
+    const CommonOptions o = common_options(options);
+    const SolverEntry& entry = solver_entry(solver, ProblemKind::kFrictionContact);
+    std::optional<FrictionWorkspace> large;
+    FrictionWorkspace& ws = workspace(contacts, large);
+    map_friction_problem(contacts, nnz, col_ptr, row_index, values, q, mu, ws.problem);
+    const int code = solve_one(entry, o, r, u, ws);
+    out.iterations = ws.result.iterations;
+    out.residual = ws.result.residuals.natural;
+    if (code != 0) set_message(out, outcome_message(ws.result));
+    return code;
+  });
+}
+
+extern "C" int cpkit_fc3d_solve_batch(int count, int contacts, const double* W, const double* q,
+                                      const double* mu, const char* solver,
+                                      const cpkit_options* options, double* r, double* u,
+                                      int* status, cpkit_info* info) {
+  return guarded(info, [&](cpkit_info& out) {
+    if (count < 0) throw InputError("count must be >= 0, got " + std::to_string(count));
+    check_positive(contacts, "contacts");
+    if (contacts > 1024)
+      throw InputError("contacts must be at most 1024 for the batched call (dense W), got " +
+                       std::to_string(contacts));
+    if (count == 0) return 0;
+    require(W, "W");
+    require(q, "q");
+    require(mu, "mu");
+    require(r, "r");
+    require(u, "u");
+    const CommonOptions o = common_options(options);
+    const SolverEntry& entry = solver_entry(solver, ProblemKind::kFrictionContact);
+    const long long m = 3LL * contacts, mm = m * m;
+    // Every problem checked first: a NaN in problem 900 must not leave 899 answers written.
+    for (int k = 0; k < count; ++k) {
+      const double* mu_k = mu + static_cast<long long>(k) * contacts;
+      if (all_finite(W + k * mm, mm) && all_finite(q + k * m, m) && valid_mu(mu_k, contacts))
+        continue;
+      const std::string which = " of problem " + std::to_string(k);
+      check_finite(W + k * mm, mm, "W" + which);
+      check_finite(q + k * m, m, "q" + which);
+      check_mu(mu_k, contacts, "mu" + which);
+    }
+    std::optional<FrictionWorkspace> large;
+    FrictionWorkspace& ws = workspace(contacts, large);
+    int first = 0;
+    for (int k = 0; k < count; ++k) {
+      map_dense_friction_problem(contacts, W + k * mm, q + k * m,
+                                 mu + static_cast<long long>(k) * contacts, ws.problem);
+      const int code = solve_one(entry, o, r + k * m, u + k * m, ws);
+      if (status != nullptr) status[k] = code;
+      out.iterations += ws.result.iterations;
+      out.residual = std::max(out.residual, ws.result.residuals.natural);
+      if (code != 0 && first == 0) {
+        first = code;
+        set_message(out, "problem " + std::to_string(k) + ": " + outcome_message(ws.result));
+      }
+    }
+    return first;
+  });
+}
