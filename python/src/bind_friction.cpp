@@ -129,9 +129,12 @@ pyb::dict solve_friction_global(const pyb::handle& M, const pyb::handle& H, cons
   d["v"] = to_numpy(out.v);
   d["dofs"] = g.dofs();
   d["condensed"] = out.condensed.ok;
+  // No v computed (M not condensed, no r): nothing was judged; None, never 0 (which reads as
+  // perfect), as `cpkit fc solve --json` writes null.
+  const bool judged = out.v.size() == g.dofs() && out.result.z.size() == g.H.cols();
   pyb::dict ge;
-  ge["balance"] = out.errors.balance;
-  ge["local"] = out.errors.local;
+  ge["balance"] = judged ? pyb::object(pyb::float_(out.errors.balance)) : pyb::none();
+  ge["local"] = judged ? pyb::object(pyb::float_(out.errors.local)) : pyb::none();
   d["global_errors"] = ge;
   return d;
 }

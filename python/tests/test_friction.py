@@ -459,6 +459,8 @@ def test_global_singular_m_is_not_run_with_the_reason():
     assert res.status == "not_run" and not res.condensed, res
     assert not res.is_solution and res.per_contact == []
     assert res.message
+    # Nothing was judged: the global numbers are None, never 0 (which would read as perfect).
+    assert res.global_errors == {"balance": None, "local": None}, res.global_errors
 
 
 def test_global_bad_input_raises_value_error(tmp_path):
