@@ -86,7 +86,7 @@ FrictionProblemFile read_friction_problem_file(const std::string& path) {
   } catch (const InputError& local_error) {
     try {
       out.global = friction_dat::parse_global(input.text, path, global_reached);
-    } catch (const InputError& global_error) {
+    } catch (const InputError&) {
       if (global_reached > local_reached) throw;
       throw local_error;
     }

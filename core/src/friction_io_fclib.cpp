@@ -193,6 +193,7 @@ class Reader {
 
   /// The number of entries of a scalar or one-dimensional dataspace.
   std::uint64_t entries(const std::string& path, hid_t space) const {
+    if (space >= 0 && H5Sget_simple_extent_type(space) == H5S_NULL) return 0;  // no data at all
     const int rank = space >= 0 ? H5Sget_simple_extent_ndims(space) : -1;
     if (rank != 0 && rank != 1) fail(path + " is not a vector (rank " + std::to_string(rank) + ")");
     hsize_t dims[1] = {1};
@@ -238,8 +239,9 @@ class Reader {
     if (layout == H5D_CHUNKED) {
       hsize_t chunk[1] = {0};
       hsize_t written = 0;
-      if (H5Pget_chunk(dcpl.get(), 1, chunk) != 1 || chunk[0] == 0 ||
-          H5Dget_num_chunks(d, H5S_ALL, &written) < 0)
+      const Id space(H5Dget_space(d), H5Sclose);
+      if (H5Pget_chunk(dcpl.get(), 1, chunk) != 1 || chunk[0] == 0 || !space.ok() ||
+          H5Dget_num_chunks(d, space.get(), &written) < 0)
         fail("cannot read the chunks of " + path + " (" + hdf5_reason() + ")");
       const std::uint64_t needed = (count + chunk[0] - 1) / chunk[0];
       if (written < needed)
@@ -261,9 +263,10 @@ class Reader {
   void charge(const std::string& what, std::uint64_t bytes) {
     decoded_ += bytes;
     if (decoded_ > kDecodedAllowance + kDecodedRatio * file_bytes_)
-      fail(what + " makes " + std::to_string(decoded_) + " bytes with the data before it, more "
-           "than a file of " + std::to_string(file_bytes_) + " bytes can plausibly hold (at most " +
-           std::to_string(kDecodedRatio) + " times its size + 16 MiB)");
+      fail(what + " brings the memory the file asks for to " + std::to_string(decoded_) +
+           " bytes, more than a file of " + std::to_string(file_bytes_) +
+           " bytes can plausibly hold (at most " + std::to_string(kDecodedRatio) +
+           " times its size + 16 MiB): sizes the file does not hold");
   }
 
  private:

@@ -497,7 +497,7 @@ TEST_CASE("fc: a friction file given as a pipe or a FIFO is read once (issue 34:
           "[cli][fc][hostile]") {
   const std::string fclib = std::string(CPKIT_TEST_DATA_DIR) + "/fclib/";
   // The README's answer: solved as the regular file is ("empty file", exit 2, before).
-  for (const std::string f : {fclib + "local/FC3D_Example1.dat", fclib + "global/GFC3D_Example1.dat"}) {
+  for (const std::string& f : {fclib + "local/FC3D_Example1.dat", fclib + "global/GFC3D_Example1.dat"}) {
     CAPTURE(f);
     const Run file = run_cpkit("fc solve '" + f + "' --json");
     const Run pipe = run_bash("fc solve <(cat '" + f + "') --json");
