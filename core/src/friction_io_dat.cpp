@@ -17,6 +17,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
+#include "friction_io_dat.hpp"
 #include "io_dat_matrix.hpp"
 #include "io_text.hpp"
 
@@ -125,48 +126,82 @@ struct DatFile {
   const std::int64_t n;   // 3 nc
 };
 
+/// Runs `body` on `f`; when it fails, `reached` is how many tokens were read (the kind of a
+/// file that neither reader reads is told by the reading that got further).
+template <class Body>
+auto reading(DatFile& f, std::size_t& reached, Body body) {
+  try {
+    return body();
+  } catch (const InputError&) {
+    reached = f.r.position();
+    throw;
+  }
+}
+
 }  // namespace
 
-FrictionContactProblem parse_friction_dat(const std::string& text, const std::string& origin_in) {
+namespace friction_dat {
+
+FrictionContactProblem parse_local(const std::string& text, const std::string& origin_in,
+                                   std::size_t& reached) {
+  reached = 0;
   DatFile f(text, origin_in, "d, nc, W, q, mu");
-  DatReader& r = f.r;
-  const std::int64_t n = f.n;
-  // Whatever W's storage, the file must still hold its type, sizes, q and mu.
-  r.need(3 + static_cast<std::uint64_t>(n + f.nc), "the storage type and sizes of W, q and mu");
-  const std::string why = " (3 nc = " + std::to_string(n) + ")";
-  FrictionContactProblem p;
-  p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + f.nc), "W", "q and mu", why);
-  p.q = read_vector(r, n, "q");
-  p.W.makeCompressed();
-  return f.finish(std::move(p), "FrictionContact (local problem)");
+  return reading(f, reached, [&] {
+    DatReader& r = f.r;
+    const std::int64_t n = f.n;
+    // Whatever W's storage, the file must still hold its type, sizes, q and mu.
+    r.need(3 + static_cast<std::uint64_t>(n + f.nc), "the storage type and sizes of W, q and mu");
+    const std::string why = " (3 nc = " + std::to_string(n) + ")";
+    FrictionContactProblem p;
+    p.W = read_matrix(r, n, n, static_cast<std::uint64_t>(n + f.nc), "W", "q and mu", why);
+    p.q = read_vector(r, n, "q");
+    p.W.makeCompressed();
+    return f.finish(std::move(p), "FrictionContact (local problem)");
+  });
+}
+
+GlobalFrictionContactProblem parse_global(const std::string& text, const std::string& origin_in,
+                                          std::size_t& reached) {
+  reached = 0;
+  DatFile f(text, origin_in, "d, nc, M, H, q, b, mu");
+  return reading(f, reached, [&] {
+    DatReader& r = f.r;
+    const std::int64_t n = f.n;
+    const std::int64_t nc = f.nc;
+    r.need(6 + static_cast<std::uint64_t>(n + nc), "the storage types and sizes of M and H, b and mu");
+    // M's size is the number of degrees of freedom m; it is read before M's storage is known.
+    const std::int64_t storage = read_storage(r, "M");
+    const std::int64_t m = r.integer(
+        "the number of rows of M (the degrees of freedom)", 1,
+        std::min<std::int64_t>(io_dat::kMaxIndex, static_cast<std::int64_t>(r.remaining())));
+    const std::string why = " (M is m x m, m = " + std::to_string(m) + ")";
+    r.integer("the number of columns of M" + why, m, m);
+    GlobalFrictionContactProblem p;
+    const auto after_M = static_cast<std::uint64_t>(3 + m + n + nc);  // H's header, q, b, mu
+    p.M = storage == 0 ? Eigen::SparseMatrix<double>(
+                             io_dat::read_dense(r, m, m, after_M, "M", "H, q, b and mu").sparseView(0.0, 0.0))
+                       : io_dat::read_sparse_block(r, m, m, "M");
+    p.H = read_matrix(r, m, n, static_cast<std::uint64_t>(m + n + nc), "H", "q, b and mu",
+                      " (H is m x 3 nc = " + std::to_string(m) + " x " + std::to_string(n) + ")");
+    p.f = read_vector(r, m, "q (cpkit's f)");
+    p.w = read_vector(r, n, "b (cpkit's w)");
+    p.M.makeCompressed();
+    p.H.makeCompressed();
+    return f.finish(std::move(p), "GlobalFrictionContact");
+  });
+}
+
+}  // namespace friction_dat
+
+FrictionContactProblem parse_friction_dat(const std::string& text, const std::string& origin) {
+  std::size_t reached = 0;
+  return friction_dat::parse_local(text, origin, reached);
 }
 
 GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
-                                                       const std::string& origin_in) {
-  DatFile f(text, origin_in, "d, nc, M, H, q, b, mu");
-  DatReader& r = f.r;
-  const std::int64_t n = f.n;
-  const std::int64_t nc = f.nc;
-  r.need(6 + static_cast<std::uint64_t>(n + nc), "the storage types and sizes of M and H, b and mu");
-  // M's size is the number of degrees of freedom m; it is read before M's storage is known.
-  const std::int64_t storage = read_storage(r, "M");
-  const std::int64_t m = r.integer(
-      "the number of rows of M (the degrees of freedom)", 1,
-      std::min<std::int64_t>(io_dat::kMaxIndex, static_cast<std::int64_t>(r.remaining())));
-  const std::string why = " (M is m x m, m = " + std::to_string(m) + ")";
-  r.integer("the number of columns of M" + why, m, m);
-  GlobalFrictionContactProblem p;
-  const auto after_M = static_cast<std::uint64_t>(3 + m + n + nc);  // H's header, q, b, mu
-  p.M = storage == 0 ? Eigen::SparseMatrix<double>(
-                           io_dat::read_dense(r, m, m, after_M, "M", "H, q, b and mu").sparseView(0.0, 0.0))
-                     : io_dat::read_sparse_block(r, m, m, "M");
-  p.H = read_matrix(r, m, n, static_cast<std::uint64_t>(m + n + nc), "H", "q, b and mu",
-                    " (H is m x 3 nc = " + std::to_string(m) + " x " + std::to_string(n) + ")");
-  p.f = read_vector(r, m, "q (cpkit's f)");
-  p.w = read_vector(r, n, "b (cpkit's w)");
-  p.M.makeCompressed();
-  p.H.makeCompressed();
-  return f.finish(std::move(p), "GlobalFrictionContact");
+                                                       const std::string& origin) {
+  std::size_t reached = 0;
+  return friction_dat::parse_global(text, origin, reached);
 }
 
 }  // namespace cpkit

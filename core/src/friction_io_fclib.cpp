@@ -1,9 +1,12 @@
-// FCLIB files (HDF5) through Debian's libfclib 3.1.0. libfclib trusts its input: read_matrix
-// mallocs from the declared sizes, reads whole datasets into those buffers and exits the process
-// on any HDF5 error (its IO/ASSERT macros). So every dataset libfclib will touch is checked here
-// first with HDF5's own API (exists, class, one dimension, extent equal to what libfclib will
-// allocate, a plausible size for the file's length); only then is fclib_read_local/global called.
-// fclib_read_solution is never called (it aborts on files without /solution).
+// FCLIB files (HDF5). Reading is done here with HDF5's C API, not with libfclib's
+// fclib_read_local/global: libfclib trusts its input (it mallocs from declared sizes, reads a
+// string dataset of any shape into a buffer sized for one string, and calls exit(1) on any HDF5
+// error: a filter HDF5 lacks, a damaged chunk, a missing external file). Here every dataset is
+// checked before anything is allocated for it (exists, class, one dimension, the extent the
+// header declares, its bytes really in the file: no external storage, no unwritten chunks, a
+// filter HDF5 can decode, a plausible total for the file's length), then read into cpkit's own
+// buffers; an HDF5 read error is an InputError naming the dataset. libfclib writes the files
+// (write_local_with_solution): what it writes is what this reader reads.
 extern "C" {  // fclib.h has no C++ guards
 #include <fclib.h>
 }
@@ -12,8 +15,9 @@ extern "C" {  // fclib.h has no C++ guards
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
-#include <memory>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,16 +46,56 @@ class QuietHdf5 {
   void* data_ = nullptr;
 };
 
-/// Checks an open file's datasets before libfclib reads them.
-class Checker {
+/// An HDF5 identifier closed by its own close function when the object goes.
+class Id {
  public:
-  Checker(hid_t file, std::string origin, std::uintmax_t file_bytes)
+  Id(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Id() {
+    if (id_ >= 0) close_(id_);
+  }
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+/// The innermost description on HDF5's error stack (e.g. "inflate() failed"), for messages.
+std::string hdf5_reason() {
+  std::string reason;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_DOWNWARD,
+      [](unsigned, const H5E_error2_t* e, void* out) -> herr_t {
+        if (e->desc && *e->desc) *static_cast<std::string*>(out) = e->desc;
+        return 0;
+      },
+      &reason);
+  return reason.empty() ? "HDF5 reports an error" : io_text::valid_utf8(reason);
+}
+
+// What a file of `file_bytes` can plausibly decode to: its own size 64 times over (compressed
+// numbers rarely shrink 10 times; deflate's limit, reached only by runs of zeros, is ~1000)
+// plus 16 MiB. Bounds the memory a small file can make the reader take.
+constexpr std::uint64_t kDecodedRatio = 64;
+constexpr std::uint64_t kDecodedAllowance = std::uint64_t{16} << 20;
+// Largest index or size read: Eigen's sparse matrices index with int.
+constexpr std::int64_t kMaxSize = std::numeric_limits<int>::max() - 1;
+
+/// An open FCLIB file, read dataset by dataset. Every failure is an InputError naming the file
+/// and the dataset.
+class Reader {
+ public:
+  Reader(hid_t file, std::string origin, std::uint64_t file_bytes)
       : file_(file), origin_(std::move(origin)), file_bytes_(file_bytes) {}
 
   [[noreturn]] void fail(const std::string& message) const {
     throw InputError(origin_ + ": " + message);
   }
 
+  /// True when every link of `path` exists; an external link (into another file) is refused.
   bool exists(const std::string& path) const {
     // H5Lexists on "/a/b" needs "/a" to exist: check each prefix.
     std::size_t pos = 1;
@@ -59,269 +103,354 @@ class Checker {
       const std::size_t next = path.find('/', pos);
       const std::string prefix = path.substr(0, next);
       if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+      H5L_info_t link{};
+      if (H5Lget_info(file_, prefix.c_str(), &link, H5P_DEFAULT) >= 0 &&
+          link.type == H5L_TYPE_EXTERNAL)
+        fail(prefix + " is an external link into another file, which cpkit does not follow");
       if (next == std::string::npos) return true;
       pos = next + 1;
     }
   }
 
-  /// The dataset's number of elements; fails unless it exists, has class `cls`, rank <= 1 and
-  /// (when expected >= 0) exactly `expected` elements (at most, when `at_most`: libfclib reads a
-  /// whole dataset into a buffer of the declared size), stored in a plausible number of bytes.
-  std::uint64_t dataset(const std::string& path, H5T_class_t cls, std::int64_t expected,
-                        bool at_most = false) const {
+  /// Integers of a dataset of `expected` entries (at most that many when `at_most`, any number
+  /// when expected < 0).
+  std::vector<std::int64_t> integers(const std::string& path, std::int64_t expected,
+                                     bool at_most = false) {
+    std::vector<std::int64_t> v;
+    read(path, H5T_INTEGER, expected, at_most, H5T_NATIVE_INT64, v);
+    return v;
+  }
+  std::vector<double> reals(const std::string& path, std::int64_t expected, bool at_most = false) {
+    std::vector<double> v;
+    read(path, H5T_FLOAT, expected, at_most, H5T_NATIVE_DOUBLE, v);
+    return v;
+  }
+  /// A one-entry integer dataset (libfclib writes sizes as datasets of shape (1,)), in
+  /// [lo, hi].
+  std::int64_t integer(const std::string& path, std::int64_t lo = -kMaxSize,
+                       std::int64_t hi = kMaxSize) {
+    const std::int64_t v = integers(path, 1)[0];
+    if (v < lo || v > hi)
+      fail(path + " is " + std::to_string(v) + ", outside [" + std::to_string(lo) + ", " +
+           std::to_string(hi) + "]");
+    return v;
+  }
+
+  /// A string dataset holding one string, fixed-length (any padding, NUL or not) or
+  /// variable-length (h5py's default for a Python str); empty when the dataset is absent.
+  std::string text(const std::string& path) {
+    if (!exists(path)) return {};
+    const Id d(open(path, H5T_STRING), H5Dclose);
+    const Id type(H5Dget_type(d.get()), H5Tclose);
+    const Id space(H5Dget_space(d.get()), H5Sclose);
+    const std::uint64_t count = entries(path, space.get());
+    if (count != 1)
+      fail(path + " holds " + std::to_string(count) +
+           " strings; FCLIB stores one string there");
+    const htri_t variable = H5Tis_variable_str(type.get());
+    if (variable < 0) fail("cannot read the string type of " + path + " (" + hdf5_reason() + ")");
+    if (variable > 0) {
+      check_storage(d.get(), path, 0, 0);
+      const Id mem(H5Tcopy(H5T_C_S1), H5Tclose);
+      H5Tset_size(mem.get(), H5T_VARIABLE);
+      H5Tset_cset(mem.get(), H5Tget_cset(type.get()));
+      char* s = nullptr;
+      if (H5Dread(d.get(), mem.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &s) < 0)
+        fail("cannot read " + path + " (" + hdf5_reason() + ")");
+      std::string out = s ? std::string(s) : std::string();
+      H5Dvlen_reclaim(mem.get(), space.get(), H5P_DEFAULT, &s);
+      return io_text::valid_utf8(out);
+    }
+    // Fixed length: exactly `size` bytes, NUL-terminated, NUL-padded (h5py's np.bytes_: no
+    // NUL at all when the text fills the size) or space-padded. Read into a buffer of that size
+    // and cut at the first NUL: never past the buffer.
+    const std::size_t size = H5Tget_size(type.get());
+    check_storage(d.get(), path, 1, size);
+    std::string buffer(size, '\0');
+    if (size > 0 && H5Dread(d.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0)
+      fail("cannot read " + path + " (" + hdf5_reason() + ")");
+    buffer.resize(std::min(buffer.size(), buffer.find('\0')));
+    if (H5Tget_strpad(type.get()) == H5T_STR_SPACEPAD)
+      buffer.erase(buffer.find_last_not_of(' ') + 1);
+    return io_text::valid_utf8(buffer);
+  }
+
+ private:
+  /// Opens the dataset at `path`; fails unless it exists and has class `cls`.
+  hid_t open(const std::string& path, H5T_class_t cls) const {
     if (!exists(path)) fail("the FCLIB dataset " + path + " is missing");
     const hid_t d = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
     if (d < 0) fail(path + " is not a dataset");
-    const hid_t t = H5Dget_type(d);
-    const hid_t s = H5Dget_space(d);
-    const H5T_class_t c = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
-    const int rank = s >= 0 ? H5Sget_simple_extent_ndims(s) : -1;
-    hsize_t dims[1] = {0};
-    if (rank == 1) H5Sget_simple_extent_dims(s, dims, nullptr);
-    const std::uint64_t count = rank == 0 ? 1 : rank == 1 ? dims[0] : 0;
-    const hsize_t stored = H5Dget_storage_size(d);
-    if (s >= 0) H5Sclose(s);
-    if (t >= 0) H5Tclose(t);
-    H5Dclose(d);
-    if (c != cls)
+    const Id type(H5Dget_type(d), H5Tclose);
+    if (!type.ok() || H5Tget_class(type.get()) != cls) {
+      H5Dclose(d);
       fail(path + " has the wrong type (expected " +
-           (cls == H5T_INTEGER ? "integers" : cls == H5T_FLOAT ? "floating-point numbers" : "a string") + ")");
+           (cls == H5T_INTEGER ? "integers" : cls == H5T_FLOAT ? "floating-point numbers" : "a string") +
+           ")");
+    }
+    return d;
+  }
+
+  /// The number of entries of a scalar or one-dimensional dataspace.
+  std::uint64_t entries(const std::string& path, hid_t space) const {
+    if (space >= 0 && H5Sget_simple_extent_type(space) == H5S_NULL) return 0;  // no data at all
+    const int rank = space >= 0 ? H5Sget_simple_extent_ndims(space) : -1;
     if (rank != 0 && rank != 1) fail(path + " is not a vector (rank " + std::to_string(rank) + ")");
+    hsize_t dims[1] = {1};
+    if (rank == 1) H5Sget_simple_extent_dims(space, dims, nullptr);
+    return dims[0];
+  }
+
+  /// Refuses data that is not in this file or that HDF5 cannot decode, before anything is
+  /// allocated for `count` entries of `bytes_each` bytes in memory: external storage (a raw
+  /// file named in the dataset, read whatever it holds), virtual datasets, filters this HDF5
+  /// lacks (h5py's LZF), chunks never written (HDF5 would return the fill value), contiguous
+  /// data shorter than its extent, and a total larger than the file can plausibly decode to.
+  void check_storage(hid_t d, const std::string& path, std::uint64_t count,
+                     std::uint64_t bytes_each) {
+    const Id dcpl(H5Dget_create_plist(d), H5Pclose);
+    if (!dcpl.ok()) fail("cannot read the storage of " + path + " (" + hdf5_reason() + ")");
+    if (H5Pget_external_count(dcpl.get()) != 0)
+      fail(path + " keeps its data in external files (HDF5 external storage), which cpkit "
+                  "does not read: store it in the FCLIB file");
+    const H5D_layout_t layout = H5Pget_layout(dcpl.get());
+    if (layout == H5D_VIRTUAL || layout < 0)
+      fail(path + " is a virtual dataset (its data is in other files), which cpkit does not read");
+    const int filters = H5Pget_nfilters(dcpl.get());
+    for (int k = 0; k < filters; ++k) {
+      unsigned flags = 0, config = 0;
+      std::size_t values = 0;
+      char name[64] = {};
+      const H5Z_filter_t id = H5Pget_filter2(dcpl.get(), static_cast<unsigned>(k), &flags,
+                                             &values, nullptr, sizeof name, name, &config);
+      if (id < 0 || H5Zfilter_avail(id) <= 0)
+        fail(path + " is stored with the HDF5 filter " + std::to_string(id) + " ('" +
+             io_text::valid_utf8(std::string(name, strnlen(name, sizeof name))) +
+             "'), which this HDF5 library cannot decode (h5py's lzf is one): write it "
+             "uncompressed or with gzip");
+    }
+    if (count == 0) return;
+    const Id type(H5Dget_type(d), H5Tclose);
+    const std::uint64_t stored = H5Dget_storage_size(d);
+    const std::uint64_t file_size_each = type.ok() ? H5Tget_size(type.get()) : 0;
+    if (layout == H5D_CONTIGUOUS && stored < count * file_size_each)
+      fail(path + " declares " + std::to_string(count) + " entries but the file stores " +
+           std::to_string(stored) + " bytes for it");
+    if (layout == H5D_CHUNKED) {
+      hsize_t chunk[1] = {0};
+      hsize_t written = 0;
+      const Id space(H5Dget_space(d), H5Sclose);
+      if (H5Pget_chunk(dcpl.get(), 1, chunk) != 1 || chunk[0] == 0 || !space.ok() ||
+          H5Dget_num_chunks(d, space.get(), &written) < 0)
+        fail("cannot read the chunks of " + path + " (" + hdf5_reason() + ")");
+      const std::uint64_t needed = (count + chunk[0] - 1) / chunk[0];
+      if (written < needed)
+        fail(path + " declares " + std::to_string(count) + " entries but only " +
+             std::to_string(written) + " of its " + std::to_string(needed) +
+             " chunks are in the file (the others were never written)");
+    }
+    if (stored > file_bytes_)
+      fail(path + " claims " + std::to_string(stored) + " stored bytes, more than the file's " +
+           std::to_string(file_bytes_));
+    if (count > static_cast<std::uint64_t>(kMaxSize))
+      fail(path + " declares " + std::to_string(count) + " entries, more than cpkit indexes");
+    charge(path + " (" + std::to_string(count) + " entries)", count * bytes_each);
+  }
+
+ public:
+  /// Counts `bytes` of memory about to be taken for `what` against what the file can
+  /// plausibly decode to; fails beyond it.
+  void charge(const std::string& what, std::uint64_t bytes) {
+    decoded_ += bytes;
+    if (decoded_ > kDecodedAllowance + kDecodedRatio * file_bytes_)
+      fail(what + " brings the memory the file asks for to " + std::to_string(decoded_) +
+           " bytes, more than a file of " + std::to_string(file_bytes_) +
+           " bytes can plausibly hold (at most " + std::to_string(kDecodedRatio) +
+           " times its size + 16 MiB): sizes the file does not hold");
+  }
+
+ private:
+
+  template <class T>
+  void read(const std::string& path, H5T_class_t cls, std::int64_t expected, bool at_most,
+            hid_t memory_type, std::vector<T>& out) {
+    const Id d(open(path, cls), H5Dclose);
+    const Id space(H5Dget_space(d.get()), H5Sclose);
+    const std::uint64_t count = entries(path, space.get());
     if (expected >= 0 && (at_most ? count > static_cast<std::uint64_t>(expected)
                                   : count != static_cast<std::uint64_t>(expected)))
       fail(path + " holds " + std::to_string(count) + " entries, the header declares " +
            (at_most ? "at most " : "") + std::to_string(expected));
-    // A declared extent whose data is not in the file (unallocated or absurdly compressed)
-    // would make libfclib allocate gigabytes for a small file: 8 bytes per entry, at most
-    // 1000 entries per stored byte (deflate's limit is ~1032).
-    if (cls != H5T_STRING && count > 0 &&
-        (stored == 0 || count > 1000 * static_cast<std::uint64_t>(stored) ||
-         count > (std::uint64_t{1} << 31) || stored > file_bytes_))
-      fail(path + " declares " + std::to_string(count) + " entries but the file stores " +
-           std::to_string(stored) + " bytes for it");
-    return count;
+    check_storage(d.get(), path, count, sizeof(T));
+    out.resize(static_cast<std::size_t>(count));
+    if (count > 0 && H5Dread(d.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+      fail("cannot read " + path + " (" + hdf5_reason() +
+           "): a damaged file, or data HDF5 cannot decode");
   }
 
-  int scalar_int(const std::string& path) const {
-    dataset(path, H5T_INTEGER, 1);
-    int v = 0;
-    const hid_t d = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
-    const herr_t status = d < 0 ? -1 : H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &v);
-    if (d >= 0) H5Dclose(d);
-    if (status < 0) fail("cannot read " + path);
-    return v;
-  }
-
-  /// A matrix group as libfclib's read_matrix will read it: its sizes, and how many entries of
-  /// i and x the file really holds (libfclib leaves the rest of its nzmax buffers unset).
-  struct Shape {
-    int m = 0, n = 0;
-    std::uint64_t stored = 0;
-  };
-  Shape matrix(const std::string& g) const {
-    const int nzmax = scalar_int(g + "/nzmax");
-    const int m = scalar_int(g + "/m");
-    const int n = scalar_int(g + "/n");
-    const int nz = scalar_int(g + "/nz");
-    if (m < 0 || n < 0 || nzmax < 0)
-      fail(g + " declares negative sizes (m " + std::to_string(m) + ", n " + std::to_string(n) +
-           ", nzmax " + std::to_string(nzmax) + ")");
-    std::uint64_t stored = 0;
-    if (nz >= 0) {
-      if (nz > nzmax) fail(g + ": nz " + std::to_string(nz) + " exceeds nzmax " + std::to_string(nzmax));
-      dataset(g + "/p", H5T_INTEGER, nz);
-      stored = dataset(g + "/i", H5T_INTEGER, nz);
-    } else if (nz == -1 || nz == -2) {
-      dataset(g + "/p", H5T_INTEGER, static_cast<std::int64_t>(nz == -1 ? n : m) + 1);
-      stored = dataset(g + "/i", H5T_INTEGER, nzmax, true);
-    } else {
-      fail(g + ": nz = " + std::to_string(nz) +
-           " is no FCLIB storage (>= 0 triplet, -1 compressed columns, -2 compressed rows)");
-    }
-    stored = std::min(stored, dataset(g + "/x", H5T_FLOAT, nzmax, true));
-    if (nz >= 0 && stored < static_cast<std::uint64_t>(nz))
-      fail(g + "/x holds " + std::to_string(stored) + " entries, nz declares " + std::to_string(nz));
-    // libfclib allocates nzmax entries: a declared nzmax far beyond the stored entries would
-    // allocate memory the file does not justify.
-    if (static_cast<std::uint64_t>(nzmax) > 4 * stored + 1024)
-      fail(g + ": nzmax " + std::to_string(nzmax) + " is far larger than the " +
-           std::to_string(stored) + " entries stored");
-    if (exists(g + "/conditioning")) {
-      if (exists(g + "/comment")) dataset(g + "/comment", H5T_STRING, -1);
-      dataset(g + "/conditioning", H5T_FLOAT, 1);
-      dataset(g + "/determinant", H5T_FLOAT, 1);
-      dataset(g + "/rank", H5T_INTEGER, 1);
-    }
-    return {m, n, stored};
-  }
-
-  void info(const std::string& g) const {
-    for (const char* k : {"/title", "/description", "/math_info"})
-      if (exists(g + k)) dataset(g + k, H5T_STRING, -1);
-  }
-
- private:
   hid_t file_;
   std::string origin_;
-  std::uintmax_t file_bytes_;
+  std::uint64_t file_bytes_;
+  std::uint64_t decoded_ = 0;  // bytes of the datasets read so far, as held in memory
 };
 
-/// An fclib_matrix (triplet, CSC or CSR; CSparse's layout: in triplet form i holds rows and p
-/// columns) as an Eigen matrix, every index checked.
-Eigen::SparseMatrix<double> to_eigen(const fclib_matrix& a, std::uint64_t stored,
-                                     const std::string& name, const std::string& origin) {
-  auto fail = [&](const std::string& what) { throw InputError(origin + ": " + name + ": " + what); };
+/// An FCLIB matrix group (CSparse's layout: nz >= 0 triplets, i rows and p columns; nz = -1
+/// compressed columns, -2 compressed rows) as an Eigen matrix, every size and index checked.
+Eigen::SparseMatrix<double> matrix(Reader& f, const std::string& g) {
+  const std::int64_t nzmax = f.integer(g + "/nzmax", 0);
+  const std::int64_t m = f.integer(g + "/m", 0);
+  const std::int64_t n = f.integer(g + "/n", 0);
+  const std::int64_t nz = f.integer(g + "/nz");
+  std::vector<std::int64_t> p, i;
+  if (nz >= 0) {
+    if (nz > nzmax) f.fail(g + ": nz " + std::to_string(nz) + " exceeds nzmax " + std::to_string(nzmax));
+    p = f.integers(g + "/p", nz);
+    i = f.integers(g + "/i", nz);
+  } else if (nz == -1 || nz == -2) {
+    p = f.integers(g + "/p", (nz == -1 ? n : m) + 1);
+    i = f.integers(g + "/i", nzmax, true);
+  } else {
+    f.fail(g + ": nz = " + std::to_string(nz) +
+           " is no FCLIB storage (>= 0 triplet, -1 compressed columns, -2 compressed rows)");
+  }
+  const std::vector<double> x = f.reals(g + "/x", nzmax, true);
+  const std::uint64_t stored = std::min(i.size(), x.size());
+  if (nz >= 0 && stored < static_cast<std::uint64_t>(nz))
+    f.fail(g + "/x holds " + std::to_string(x.size()) + " entries, nz declares " + std::to_string(nz));
+  // libfclib, which wrote the file, allocates nzmax entries: far more than stored is no file it
+  // wrote.
+  if (static_cast<std::uint64_t>(nzmax) > 4 * stored + 1024)
+    f.fail(g + ": nzmax " + std::to_string(nzmax) + " is far larger than the " +
+           std::to_string(stored) + " entries stored");
+  auto fail = [&](const std::string& what) { f.fail(g + ": " + what); };
   std::vector<Eigen::Triplet<double>> t;
-  auto add = [&](long long row, long long col, double v) {
-    if (row < 0 || row >= a.m || col < 0 || col >= a.n)
+  auto add = [&](std::int64_t row, std::int64_t col, double v) {
+    if (row < 0 || row >= m || col < 0 || col >= n)
       fail("entry (" + std::to_string(row) + ", " + std::to_string(col) + ") outside its " +
-           std::to_string(a.m) + " x " + std::to_string(a.n) + " size");
+           std::to_string(m) + " x " + std::to_string(n) + " size");
     if (!std::isfinite(v))
       fail("entry (" + std::to_string(row) + ", " + std::to_string(col) + ") is not finite");
     t.emplace_back(static_cast<int>(row), static_cast<int>(col), v);
   };
-  if (a.nz >= 0) {
-    t.reserve(static_cast<std::size_t>(a.nz));
-    for (int k = 0; k < a.nz; ++k) add(a.i[k], a.p[k], a.x[k]);
+  if (nz >= 0) {
+    t.reserve(static_cast<std::size_t>(nz));
+    for (std::int64_t k = 0; k < nz; ++k) add(i[k], p[k], x[k]);
   } else {
-    const int outer = a.nz == -1 ? a.n : a.m;  // -1: compressed columns, -2: compressed rows
-    if (a.p[0] != 0) fail("the first pointer is " + std::to_string(a.p[0]) + ", not 0");
-    for (int k = 0; k < outer; ++k)
-      if (a.p[k + 1] < a.p[k] || static_cast<std::uint64_t>(a.p[k + 1]) > stored)
-        fail("pointer " + std::to_string(k + 1) + " = " + std::to_string(a.p[k + 1]) +
+    const std::int64_t outer = nz == -1 ? n : m;
+    if (p[0] != 0) fail("the first pointer is " + std::to_string(p[0]) + ", not 0");
+    for (std::int64_t k = 0; k < outer; ++k)
+      if (p[k + 1] < p[k] || static_cast<std::uint64_t>(p[k + 1]) > stored)
+        fail("pointer " + std::to_string(k + 1) + " = " + std::to_string(p[k + 1]) +
              " decreases or exceeds the " + std::to_string(stored) + " entries stored");
-    t.reserve(static_cast<std::size_t>(a.p[outer]));
-    for (int k = 0; k < outer; ++k)
-      for (int e = a.p[k]; e < a.p[k + 1]; ++e)
-        if (a.nz == -1)
-          add(a.i[e], k, a.x[e]);
+    t.reserve(static_cast<std::size_t>(p[outer]));
+    for (std::int64_t k = 0; k < outer; ++k)
+      for (std::int64_t e = p[k]; e < p[k + 1]; ++e)
+        if (nz == -1)
+          add(i[e], k, x[e]);
         else
-          add(k, a.i[e], a.x[e]);
+          add(k, i[e], x[e]);
   }
-  Eigen::SparseMatrix<double> out(a.m, a.n);
+  // The compressed matrix holds n + 1 column pointers whatever the entries: a declared size
+  // costs memory too.
+  f.charge(g + " (" + std::to_string(m) + " x " + std::to_string(n) + ")",
+           4 * (static_cast<std::uint64_t>(n) + 1));
+  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(n));
   out.setFromTriplets(t.begin(), t.end());  // duplicates are summed, as CSparse does
   out.makeCompressed();
   return out;
 }
 
-Eigen::VectorXd to_vector(const double* v, Eigen::Index n) {
-  return Eigen::Map<const Eigen::VectorXd>(v, n);
+Eigen::VectorXd vector(Reader& f, const std::string& path, Eigen::Index n) {
+  const std::vector<double> v = f.reals(path, n);
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), n);
 }
 
-std::string title_of(const fclib_info* info) {
-  return info && info->title ? io_text::valid_utf8(info->title) : std::string{};
-}
-std::string description_of(const fclib_info* info) {
-  return info && info->description ? io_text::valid_utf8(info->description) : std::string{};
-}
-
-struct File {
-  hid_t id = -1;
-  ~File() {
-    if (id >= 0) H5Fclose(id);
-  }
-};
-
-/// Opens and runs `check`; InputError when the file is no readable HDF5 file.
-template <class Check>
-void precheck(const std::string& path, const std::string& origin, Check check) {
+/// Opens `path` and runs `read` on it; InputError when it is no readable HDF5 file.
+template <class Read>
+auto with_file(const std::string& path, const std::string& origin, Read read) {
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(path, ec);
   if (ec) throw InputError(origin + ": cannot read the file (" + ec.message() + ")");
-  File f;
-  f.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f.id < 0) throw InputError(origin + ": not a readable HDF5 file (truncated or corrupted?)");
-  check(Checker(f.id, origin, bytes));
+  QuietHdf5 quiet;
+  const Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.ok()) throw InputError(origin + ": not a readable HDF5 file (truncated or corrupted?)");
+  Reader f(file.get(), origin, bytes);
+  return read(f);
+}
+
+std::string name_of(Reader& f, const std::string& info, const std::string& path) {
+  const std::string title = f.text(info + "/title");
+  return title.empty() ? io_text::valid_utf8(std::filesystem::path(path).stem().string()) : title;
 }
 
 }  // namespace
 
 FrictionContactProblem read_local(const std::string& path) {
   const std::string origin = io_text::valid_utf8(path);
-  QuietHdf5 quiet;
-  int rows = 0;
-  std::uint64_t w_stored = 0;
-  precheck(path, origin, [&](const Checker& c) {
-    if (!c.exists("/fclib_local")) {
-      if (c.exists("/fclib_global"))
-        c.fail("holds an FCLIB global problem (/fclib_global), not a local one: read it with "
+  return with_file(path, origin, [&](Reader& f) {
+    if (!f.exists("/fclib_local")) {
+      if (f.exists("/fclib_global"))
+        f.fail("holds an FCLIB global problem (/fclib_global), not a local one: read it with "
                "read_global_friction_problem");
-      c.fail("is an HDF5 file without an FCLIB problem (/fclib_local)");
+      f.fail("is an HDF5 file without an FCLIB problem (/fclib_local)");
     }
-    const int dim = c.scalar_int("/fclib_local/spacedim");
-    if (dim != 3) c.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
-    const auto [m, n, stored] = c.matrix("/fclib_local/W");
-    w_stored = stored;
-    if (m != n || m % 3 != 0 || m == 0)
-      c.fail("W is " + std::to_string(m) + " x " + std::to_string(n) +
+    const std::int64_t dim = f.integer("/fclib_local/spacedim");
+    if (dim != 3) f.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
+    if (f.exists("/fclib_local/V") || f.exists("/fclib_local/R"))
+      f.fail("has the optional V, R, s constraints of FCLIB's mixed problem, which cpkit does not read");
+    FrictionContactProblem p;
+    p.W = matrix(f, "/fclib_local/W");
+    const Eigen::Index m = p.W.rows();
+    if (m != p.W.cols() || m % 3 != 0 || m == 0)
+      f.fail("W is " + std::to_string(m) + " x " + std::to_string(p.W.cols()) +
              ", expected square with 3 rows per contact");
-    if (c.exists("/fclib_local/V") || c.exists("/fclib_local/R"))
-      c.fail("has the optional V, R, s constraints of FCLIB's mixed problem, which cpkit does not read");
-    c.dataset("/fclib_local/vectors/q", H5T_FLOAT, m);
-    c.dataset("/fclib_local/vectors/mu", H5T_FLOAT, m / 3);
-    c.info("/fclib_local/info");
-    rows = m;
+    p.q = vector(f, "/fclib_local/vectors/q", m);
+    p.mu = vector(f, "/fclib_local/vectors/mu", m / 3);
+    p.name = name_of(f, "/fclib_local/info", path);
+    p.note = f.text("/fclib_local/info/description");
+    throw_if_invalid(p.validate(), origin);
+    return p;
   });
-  std::unique_ptr<fclib_local, void (*)(fclib_local*)> raw(fclib_read_local(path.c_str()),
-                                                           fclib_delete_local);
-  if (!raw) throw InputError(origin + ": libfclib could not read the local problem");
-  FrictionContactProblem p;
-  p.W = to_eigen(*raw->W, w_stored, "W", origin);
-  p.q = to_vector(raw->q, rows);
-  p.mu = to_vector(raw->mu, rows / 3);
-  p.name = title_of(raw->info);
-  if (p.name.empty()) p.name = io_text::valid_utf8(std::filesystem::path(path).stem().string());
-  p.note = description_of(raw->info);
-  throw_if_invalid(p.validate(), origin);
-  return p;
+}
+
+bool holds_global(const std::string& path) {
+  return with_file(path, io_text::valid_utf8(path), [](Reader& f) {
+    return f.exists("/fclib_global") && !f.exists("/fclib_local");
+  });
 }
 
 GlobalFrictionContactProblem read_global(const std::string& path) {
   const std::string origin = io_text::valid_utf8(path);
-  QuietHdf5 quiet;
-  int dofs = 0, cols = 0;
-  std::uint64_t m_stored = 0, h_stored = 0;
-  precheck(path, origin, [&](const Checker& c) {
-    if (!c.exists("/fclib_global")) {
-      if (c.exists("/fclib_local"))
-        c.fail("holds an FCLIB local problem (/fclib_local), not a global one: read it with "
+  return with_file(path, origin, [&](Reader& f) {
+    if (!f.exists("/fclib_global")) {
+      if (f.exists("/fclib_local"))
+        f.fail("holds an FCLIB local problem (/fclib_local), not a global one: read it with "
                "read_friction_problem");
-      c.fail("is an HDF5 file without an FCLIB problem (/fclib_global)");
+      f.fail("is an HDF5 file without an FCLIB problem (/fclib_global)");
     }
-    const int dim = c.scalar_int("/fclib_global/spacedim");
-    if (dim != 3) c.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
-    const auto [mm, mn, ms] = c.matrix("/fclib_global/M");
-    m_stored = ms;
-    if (mm != mn || mm == 0)
-      c.fail("M is " + std::to_string(mm) + " x " + std::to_string(mn) + ", expected square");
-    const auto [hm, hn, hs] = c.matrix("/fclib_global/H");
-    h_stored = hs;
-    if (hm != mm || hn % 3 != 0 || hn == 0)
-      c.fail("H is " + std::to_string(hm) + " x " + std::to_string(hn) + ", expected " +
-             std::to_string(mm) + " x 3 n_c");
-    if (c.exists("/fclib_global/G"))
-      c.fail("has FCLIB's optional equality constraints G, b, which cpkit does not read");
-    c.dataset("/fclib_global/vectors/f", H5T_FLOAT, mm);
-    c.dataset("/fclib_global/vectors/w", H5T_FLOAT, hn);
-    c.dataset("/fclib_global/vectors/mu", H5T_FLOAT, hn / 3);
-    c.info("/fclib_global/info");
-    dofs = mm;
-    cols = hn;
+    const std::int64_t dim = f.integer("/fclib_global/spacedim");
+    if (dim != 3) f.fail("spacedim is " + std::to_string(dim) + "; cpkit reads 3-D problems");
+    if (f.exists("/fclib_global/G"))
+      f.fail("has FCLIB's optional equality constraints G, b, which cpkit does not read");
+    GlobalFrictionContactProblem p;
+    p.M = matrix(f, "/fclib_global/M");
+    const Eigen::Index dofs = p.M.rows();
+    if (dofs != p.M.cols() || dofs == 0)
+      f.fail("M is " + std::to_string(dofs) + " x " + std::to_string(p.M.cols()) +
+             ", expected square");
+    p.H = matrix(f, "/fclib_global/H");
+    const Eigen::Index cols = p.H.cols();
+    if (p.H.rows() != dofs || cols % 3 != 0 || cols == 0)
+      f.fail("H is " + std::to_string(p.H.rows()) + " x " + std::to_string(cols) + ", expected " +
+             std::to_string(dofs) + " x 3 n_c");
+    p.f = vector(f, "/fclib_global/vectors/f", dofs);
+    p.w = vector(f, "/fclib_global/vectors/w", cols);
+    p.mu = vector(f, "/fclib_global/vectors/mu", cols / 3);
+    p.name = name_of(f, "/fclib_global/info", path);
+    p.note = f.text("/fclib_global/info/description");
+    throw_if_invalid(p.validate(), origin);
+    return p;
   });
-  std::unique_ptr<fclib_global, void (*)(fclib_global*)> raw(fclib_read_global(path.c_str()),
-                                                             fclib_delete_global);
-  if (!raw) throw InputError(origin + ": libfclib could not read the global problem");
-  GlobalFrictionContactProblem p;
-  p.M = to_eigen(*raw->M, m_stored, "M", origin);
-  p.H = to_eigen(*raw->H, h_stored, "H", origin);
-  p.f = to_vector(raw->f, dofs);
-  p.w = to_vector(raw->w, cols);
-  p.mu = to_vector(raw->mu, cols / 3);
-  p.name = title_of(raw->info);
-  if (p.name.empty()) p.name = io_text::valid_utf8(std::filesystem::path(path).stem().string());
-  p.note = description_of(raw->info);
-  throw_if_invalid(p.validate(), origin);
-  return p;
 }
 
 namespace {

@@ -1,12 +1,16 @@
 // Hostile and extreme command-line input (issue 11, sec. 5): no input may run code, crash the
 // program (exit 4 = internal error) or be silently converted. Every case expects exit 2 with a
 // message naming the problem and nothing on stdout, unless stated otherwise. Runs the binary.
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
 #include "cli_runner.hpp"
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -395,4 +399,135 @@ TEST_CASE("multistart and simulation lengths have documented caps (item 16)", "[
   expect_bad_input("simulate --system '" + kExamples + "two_point_system.json' --cycles 1e4 "
                    "--steps-per-cycle 1000",
                    "the cap is 1000000 steps (kMaxSystemSimulationSteps");
+}
+
+namespace {
+
+/// Runs `cpkit ARGS...` without a shell and measures it: exit code (-1: a signal), peak
+/// resident memory (kB, wait4's rusage of that one process) and wall seconds.
+struct Measured {
+  int code = -1;
+  long peak_kb = 0;
+  double seconds = 0;
+  std::string err;
+};
+Measured run_measured(const std::vector<std::string>& args) {
+  const fs::path err = scratch_dir() / "measured_err.txt";
+  std::vector<std::string> argv = {std::string(CPKIT_BINARY_DIR) + "/apps/cpkit"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> c;
+  for (auto& a : argv) c.push_back(a.data());
+  c.push_back(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen(err.c_str(), "w", stderr);
+    execv(c[0], c.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  Measured m;
+  if (pid > 0 && wait4(pid, &status, 0, &usage) == pid) {
+    m.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    m.peak_kb = usage.ru_maxrss;
+  }
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.err = cpkit::test::slurp(err);
+  return m;
+}
+
+std::string hostile_fclib(const std::string& name) {
+  return std::string(CPKIT_TEST_DATA_DIR) + "/fclib/hostile/" + name;
+}
+
+}  // namespace
+
+TEST_CASE("fc: hostile FCLIB files are bad input naming the dataset, never a signal or exit 1 "
+          "(issue 34: F4-05, F4-07)", "[cli][fc][hostile]") {
+  // The READMEs' answers: exit 2 with the dataset named (exit 134/139 before: heap overflow in
+  // libfclib; exit 1, "proved to have no solution", from libfclib's exit(1)).
+  const std::pair<const char*, const char*> refused[] = {
+      {"title_array.hdf5", "/fclib_local/info/title"},
+      {"description_vlen_array.hdf5", "/fclib_local/info/description"},
+      {"q_lzf.hdf5", "/fclib_local/vectors/q"},
+      {"q_gzip_corrupt.hdf5", "/fclib_local/vectors/q"}};
+  for (const auto& [file, dataset] : refused) {
+    for (const char* command : {"fc solve", "fc solutions"}) {
+      CAPTURE(file, command);
+      const Run r = run_cpkit(std::string(command) + " '" + hostile_fclib(file) + "' --json");
+      CAPTURE(r.err);
+      CHECK(r.code == 2);
+      CHECK(r.out.empty());
+      CHECK(r.err.find(std::string("bad input: ") + hostile_fclib(file)) != std::string::npos);
+      CHECK(r.err.find(dataset) != std::string::npos);
+    }
+  }
+  // title_vlen.hdf5: the title read as the README says, "a vlen title" (a heap pointer's bytes
+  // before); its valid 2-contact problem is solved or honestly not (0 or 5), never refused.
+  const Run vlen = run_cpkit("fc solve '" + hostile_fclib("title_vlen.hdf5") + "' --json");
+  INFO(vlen.err);
+  CHECK((vlen.code == 0 || vlen.code == 5));
+  CHECK(nlohmann::json::parse(vlen.out)["problem"] == "a vlen title");
+  // The undamaged gzip file: 100 contacts, W = I, q = (-1, 0, 0): r = (1, 0, 0) per contact,
+  // u = 0 (all in contact, stick), by hand.
+  const Run ok = run_cpkit("fc solve '" + hostile_fclib("q_gzip_ok.hdf5") + "' --json");
+  INFO(ok.err);
+  REQUIRE(ok.code == 0);
+  const auto j = nlohmann::json::parse(ok.out);
+  REQUIRE(j["r"].size() == 300);
+  for (int k = 0; k < 300; ++k) CHECK(j["r"][k].get<double>() == Approx(k % 3 == 0 ? 1 : 0).margin(1e-6));
+}
+
+TEST_CASE("fc: a file declaring more than it holds is refused at once, in little memory "
+          "(issue 34: F4-11)", "[cli][fc][hostile]") {
+  // amp.hdf5 (64 KB, 9e6 rows declared, 1 chunk in 8 written): 1.6 GB and 9.9 s before. The
+  // README's bound: <= 10 s and <= 256 MB.
+  const Measured m = run_measured({"fc", "solve", hostile_fclib("amp.hdf5"), "--time-limit", "2"});
+  CAPTURE(m.err, m.seconds, m.peak_kb);
+  CHECK(m.code == 2);
+  CHECK(m.err.find("amp.hdf5") != std::string::npos);
+  CHECK(m.seconds <= 10);
+  CHECK(m.peak_kb > 0);
+  CHECK(m.peak_kb <= 256 * 1024);
+}
+
+TEST_CASE("fc: a friction file given as a pipe or a FIFO is read once (issue 34: F4-10)",
+          "[cli][fc][hostile]") {
+  const std::string fclib = std::string(CPKIT_TEST_DATA_DIR) + "/fclib/";
+  // The README's answer: solved as the regular file is ("empty file", exit 2, before).
+  for (const std::string& f : {fclib + "local/FC3D_Example1.dat", fclib + "global/GFC3D_Example1.dat"}) {
+    CAPTURE(f);
+    const Run file = run_cpkit("fc solve '" + f + "' --json");
+    const Run pipe = run_bash("fc solve <(cat '" + f + "') --json");
+    CAPTURE(file.err, pipe.err);
+    REQUIRE((file.code == 0 || file.code == 5));
+    CHECK(pipe.code == file.code);
+    auto jf = nlohmann::json::parse(file.out), jp = nlohmann::json::parse(pipe.out);
+    for (auto* j : {&jf, &jp}) {
+      j->erase("file");
+      j->erase("problem");   // named after the file
+      j->erase("run");       // echoes the file name
+      j->erase("seconds");
+      j->erase("attempts");  // each with its seconds
+    }
+    CHECK(jf.dump() == jp.dump());
+  }
+  // A named FIFO whose writer goes away after writing: read, not blocked forever (timeout's
+  // exit 124 before).
+  const fs::path dir = scratch_dir() / "fifo";
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "p.dat";
+  const fs::path script = dir / "fifo.sh";
+  write(script, "mkfifo '" + fifo.string() + "' && (cat '" + fclib + "local/FC3D_Example1.dat' > '" +
+                    fifo.string() + "' &) && exec timeout 20 '" + CPKIT_BINARY_DIR +
+                    "/apps/cpkit' fc solve '" + fifo.string() + "' > /dev/null 2>&1\n");
+  const int status = std::system(("bash '" + script.string() + "'").c_str());
+  REQUIRE(WIFEXITED(status));
+  CHECK((WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 5));
+  // HDF5 needs to seek: an FCLIB file through a pipe is refused with a true message.
+  const Run h5 = run_bash("fc solve <(cat '" + fclib + "local/Capsules-i125-1213.hdf5')");
+  CHECK(h5.code == 2);
+  CHECK(h5.err.find("pipe or FIFO") != std::string::npos);
 }

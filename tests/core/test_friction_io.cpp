@@ -1,8 +1,8 @@
 // The friction problem readers (core/friction_io.hpp) on the real files of tests/data/fclib and
 // on broken copies of them. Independent sources: the smallest .dat file's numbers stated by hand
-// from its text; FCLIB files read a second way, straight from their HDF5 datasets with HDF5's C
-// API (not through libfclib, which cpkit uses); solutions written by cpkit read back by libfclib's
-// fclib_read_solution. Siconos' reader on every .dat file: test_friction_io_siconos_peer.cpp.
+// from its text; FCLIB files read a second way, dataset by dataset with HDF5's C API and the
+// matrices decoded by hand here; solutions written by cpkit (through libfclib) read back by
+// libfclib's fclib_read_solution. Hostile files: test_friction_io_hostile.cpp. Siconos' reader on every .dat file: test_friction_io_siconos_peer.cpp.
 #include <catch2/catch.hpp>
 extern "C" {  // fclib.h has no C++ guards
 #include <fclib.h>

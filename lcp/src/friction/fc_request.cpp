@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
@@ -134,21 +135,17 @@ std::string fc_solver_list() {
 FcSolveOutcome run_fc_solve_request(const FcRequest& a) {
   FcSolveOutcome out;
   out.file = a.file;
-  try {
-    out.problem = read_friction_problem(a.file);  // validates; names the file
-  } catch (const InputError& local_error) {
-    // Not a local problem: a global one is solved; anything else reports the local reader's
-    // message (the file is most likely a damaged local problem).
-    try {
-      out.global_problem = read_global_friction_problem(a.file);
-    } catch (const InputError&) {
-      throw local_error;
-    }
+  // Read once (a pipe holds either kind); validates; names the file; a damaged file is
+  // reported as the kind it most likely is.
+  FrictionProblemFile file = read_friction_problem_file(a.file);
+  if (file.is_global) {
+    out.global_problem = std::move(file.global);
     out.is_global = true;
     solve_global_request(a, out);
     out.exit_code = exit_code(out.result.status);
     return out;
   }
+  out.problem = std::move(file.local);
   const CommonOptions options = common_options(a);
   const SolverEntry& entry = fc_solver(a.solver);
   out.result = entry.solve_fc(out.problem, options);

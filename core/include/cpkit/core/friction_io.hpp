@@ -19,7 +19,15 @@ namespace cpkit {
 /// FrictionContact .dat file (dimension 3). Throws InputError naming the file and what is wrong
 /// (unreadable, neither format, truncated, inconsistent or huge sizes, non-finite numbers,
 /// negative mu, 2-D problems, FCLIB's optional V/R constraints); never allocates from a declared
-/// size before checking it against what the file holds.
+/// size before checking it against what the file holds, never ends the process.
+/// The file is read once: a .dat file may come through a pipe or FIFO (`<(cat F.dat)`); an HDF5
+/// file must be a regular file (HDF5 seeks); HDF5 after a user block is found (at 512, 1024, ...
+/// bytes, as HDF5 looks for it). FCLIB datasets are refused (InputError naming the dataset)
+/// when their data is not in the file or cannot be decoded: external storage or links, virtual
+/// datasets, chunks never written, a filter this HDF5 lacks (h5py's LZF), a damaged chunk, or
+/// more data than the file's size can plausibly hold (64 times it + 16 MiB). The title and
+/// description are one string each (fixed-length with any padding, or variable-length as h5py
+/// writes a str); an array of strings there is refused.
 FrictionContactProblem read_friction_problem(const std::string& path);
 
 /// The Siconos FrictionContact .dat reader on text already in memory; `origin` names it in
@@ -32,6 +40,19 @@ GlobalFrictionContactProblem parse_global_friction_dat(const std::string& text,
 /// A global problem (M, H, f, w, mu) from an FCLIB global file (/fclib_global, without the
 /// optional G) or a Siconos GlobalFrictionContact .dat file. Errors as read_friction_problem.
 GlobalFrictionContactProblem read_global_friction_problem(const std::string& path);
+
+/// What a friction problem file holds: a local problem, or a global one (is_global).
+struct FrictionProblemFile {
+  bool is_global = false;
+  FrictionContactProblem local;         ///< when !is_global
+  GlobalFrictionContactProblem global;  ///< when is_global
+};
+
+/// A local or a global problem, whichever the file holds, read once (so a pipe holding either
+/// kind reads). FCLIB: the /fclib_global group makes it global. A .dat file is read as a local
+/// problem, else as a global one; when neither reads, the InputError is that of the reading
+/// that got further into the file (a damaged global file is reported as a global one).
+FrictionProblemFile read_friction_problem_file(const std::string& path);
 
 /// Writes `problem` and a solution (r, u = W r + q, each 3 n_c) as an FCLIB local file that
 /// libfclib (fclib_read_local, fclib_read_solution) reads back. W is stored compressed by
