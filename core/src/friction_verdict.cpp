@@ -222,7 +222,13 @@ std::vector<ContactReport> friction_contacts(const FrictionContactProblem& p,
                                              const Eigen::VectorXd& r, double tol) {
   check_sizes(p, r);
   std::vector<ContactReport> out;
-  friction_residuals(p, friction_units(p), r, p.W * r + p.q, nullptr, &out, tol);
+  const FrictionUnits units = friction_units(p);
+  const Eigen::VectorXd u = p.W * r + p.q;
+  if (tol < 0) {  // the answer's own unit-free error (header comment)
+    const double own = friction_residuals(p, units, r, u).natural;
+    tol = std::isfinite(own) ? own : 0.0;
+  }
+  friction_residuals(p, units, r, u, nullptr, &out, tol);
   return out;
 }
 

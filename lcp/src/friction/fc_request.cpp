@@ -2,7 +2,6 @@
 // (field names and text are what users script against, kept character for character).
 #include "cpkit/lcp/friction/fc_request.hpp"
 
-#include <cmath>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -35,10 +34,6 @@ CommonOptions common_options(const FcRequest& a) {
   return o;
 }
 
-/// The bound a contact's state is decided against: the answer's own unit-free error (a force
-/// or a sliding velocity smaller than the accuracy of the answer is not told from zero).
-double state_bound(const FrictionErrors& e) { return std::isfinite(e.unit_free) ? e.unit_free : 0.0; }
-
 /// True when r is an answer to judge against p: sized as p's r, and p not empty (a global
 /// problem whose M could not be condensed leaves both empty: nothing to judge, not "0 x 0").
 bool has_answer(const SolveResult& r, const FrictionContactProblem& p) {
@@ -63,7 +58,7 @@ nlohmann::json fc_result_json(const SolveResult& r, const FrictionContactProblem
                  {"relative_max", e.relative_max}};
   auto& per = j["per_contact"] = nlohmann::json::array();
   if (sized)
-    for (const auto& c : friction_contacts(p, r.z, state_bound(e)))
+    for (const auto& c : friction_contacts(p, r.z))
       per.push_back({{"state", to_string(c.state)}, {"error", c.error}});
   j["iterations"] = r.iterations;
   j["seconds"] = r.seconds;
@@ -85,7 +80,7 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
     s << "\nerrors:     unit-free " << e.unit_free << ", relative to |q| " << e.relative_q
       << ", relative to max(|q|, |r|, |u|) " << e.relative_max;
     int count[3] = {0, 0, 0};
-    for (const auto& c : friction_contacts(p, r.z, state_bound(e)))
+    for (const auto& c : friction_contacts(p, r.z))
       ++count[static_cast<int>(c.state)];
     s << "\ncontacts:   " << count[1] << " stick, " << count[2] << " slip, " << count[0]
       << " separated";

@@ -128,10 +128,12 @@ Residuals friction_residuals(const FrictionContactProblem& problem, const Fricti
                              std::vector<ContactReport>* contacts = nullptr,
                              double state_tol = 0);
 
-/// Per-contact report of r (u = W r + q recomputed), states decided against `tol` (0: only
-/// the rounding allowance counts as zero); sizes checked as friction_errors().
+/// Per-contact report of r (u = W r + q recomputed), states decided against `tol`; the default
+/// (tol < 0) is the answer's own unit_free: a force or a sliding velocity smaller than the
+/// accuracy of the answer is not told from zero (0: only the rounding allowance counts as zero).
+/// Sizes checked as friction_errors().
 std::vector<ContactReport> friction_contacts(const FrictionContactProblem& problem,
-                                             const Eigen::VectorXd& r, double tol = 0);
+                                             const Eigen::VectorXd& r, double tol = -1);
 
 /// The decision, as the LCP finalize() (finalize.hpp): claim.z holds r (3 n_c); w receives
 /// u = W r + q recomputed; residuals as friction_residuals(); kSolved when unit_free <= tol,
