@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
+#include "exact_signs.hpp"
 #include "rate_detail.hpp"
 #include "rounded.hpp"
 
@@ -105,7 +106,11 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
   const Rounded FT = exact(f.dF_T), FN = exact(f.dF_N);
   const Rounded c1 = exact(1.0) + a11 * CT;
   const Rounded N = a11 * FN - a12 * FT;
-  const int sN = sign3(N);
+  // a sign within its rounding bound (data ON a critical load) is evaluated exactly
+  // (exact_signs.hpp); kUndecided remains only outside the exact range
+  const int sN = sign3(N) != kUndecided ? sign3(N) : detail::exact_sign_N(p, f);
+  ContactState grazing;
+  grazing.label = StateLabel::kB;
   Rounded L[2], D[2];
   int sL[2], sD[2];
   for (int k = 0; k < 2; ++k) {
@@ -114,6 +119,8 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
     D[k] = a11 - exact(s) * mu * a12;
     sL[k] = sign3(L[k]);
     sD[k] = sign3(D[k]);
+    if (sL[k] == kUndecided) sL[k] = detail::exact_sign_L(p, grazing, f, k == 0 ? 1 : -1);
+    if (sD[k] == kUndecided) sD[k] = detail::exact_sign_D(p, k == 0 ? 1 : -1);
   }
   const auto add = [&](int a, int b, auto pred, const RateSolution& piece) {
     if (decide(a, b, 0, pred) == kUndecided) out.undecided = true;
@@ -186,7 +193,9 @@ void state_d(const ContactParameters& p, const ContactState& st, const LoadRate&
                     mr * (exact(1.0) + exact(p.a11) * exact(p.C_T)) * exact(f.dF_N);
   const Rounded Lam = lambda_51(p, s, mr, kr);
   const double Lambda = Lam.v;
-  const int sL = sign3(L), sLam = sign3(Lam);
+  // a sign within its rounding bound (data ON a critical load) is evaluated exactly
+  const int sL = sign3(L) != kUndecided ? sign3(L) : detail::exact_sign_L(p, st, f, s);
+  const int sLam = sign3(Lam) != kUndecided ? sign3(Lam) : detail::exact_sign_Lambda(p, st);
   // d.i stick: L_s <= 0.
   const auto stick_pred = [](int l, int, int) { return l <= 0; };
   const auto slip_pred = [](int lam, int l, int) { return lam != 0 && l == lam; };

@@ -10,6 +10,7 @@
 #include "cpkit/rate_problem/rate/analytic.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
 #include "certified_b.hpp"
+#include "exact_signs.hpp"
 #include "piece_geometry.hpp"
 #include "rate_detail.hpp"
 
@@ -212,18 +213,50 @@ bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
   return false;
 }
 
-/// Whether the typed plane pieces are the certified points: same count, same types.
-bool same_set(const PlaneResult& res, const detail::CertifiedB& c) noexcept {
-  if (res.infinite || res.bad || res.n != c.n) return false;
+/// Whether the typed plane pieces are the n certified points of the given types.
+bool same_set(const PlaneResult& res, const SolutionType* types, int n) noexcept {
+  if (res.infinite || res.bad || res.n != n) return false;
   int count[8] = {};
   for (int i = 0; i < res.n; ++i) {
     if (res.pieces[i].kind != RateSolution::Kind::kPoint) return false;
     ++count[static_cast<unsigned>(res.pieces[i].type)];
   }
-  for (int k = 0; k < c.n; ++k) --count[static_cast<unsigned>(c.type[k])];
+  for (int k = 0; k < n; ++k) --count[static_cast<unsigned>(types[k])];
   for (const int x : count)
     if (x != 0) return false;
   return true;
+}
+
+/// State d's solution points decided by the exact signs of L_s and Lambda (exact_signs.hpp;
+/// the 1x1 LCP has q = -L_s and M of the sign of Lambda, docs/model.md): stick iff L_s <= 0,
+/// slip iff Lambda != 0 and lambda = L_s / Lambda > 0. `decided` is false when a sign is out
+/// of the exact range or Lambda = L_s = 0 (the ray: the general engine's geometry).
+struct CertifiedD {
+  bool decided = false;
+  int n = 0;
+  SolutionType type[2] = {};
+  double lambda[2] = {};
+};
+
+CertifiedD certified_d(const ContactParameters& p, const ContactState& st,
+                       const LoadRate& f) noexcept {
+  CertifiedD c;
+  const int sL = detail::exact_sign_L(p, st, f, st.sgn_PT);
+  const int sLam = detail::exact_sign_Lambda(p, st);
+  if (sL == detail::kUndecided || sLam == detail::kUndecided || (sL == 0 && sLam == 0)) return c;
+  c.decided = true;
+  if (sL <= 0) c.type[c.n++] = SolutionType::kStick;
+  if (sLam != 0 && sL == sLam) {
+    // lambda = -q / M of the unsnapped LCP (state_d_lcp's q and M before its band)
+    const double c1 = 1.0 + p.a11 * p.C_T;
+    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * p.kappa(st.P_N) : p.mu;
+    const Rates r0 = state_d_rates(p, st, f, 0.0), r1 = state_d_rates(p, st, LoadRate{}, 1.0);
+    const double q = c1 * (m * r0.dP_N - st.sgn_PT * r0.dP_T);
+    const double M = c1 * (m * r1.dP_N - st.sgn_PT * r1.dP_T);
+    c.lambda[c.n] = M != 0 && -q / M > 0 ? -q / M : 0.0;
+    c.type[c.n++] = st.sgn_PT > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
+  }
+  return c;
 }
 
 /// State d's 1x1 LCP enumerated inline for the summary: support {} (lambda = 0, stick) is a
@@ -257,9 +290,23 @@ RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcep
   return sum;
 }
 
+/// A state-d summary the snapping band could not make reliable, decided by the exact signs
+/// when they decide (certified_d); otherwise `sum` as it was.
+RateSummary summarize_d_exact(const ContactParameters& p, const ContactState& st,
+                              const LoadRate& f, RateSummary sum) noexcept {
+  if (sum.reliable) return sum;
+  const CertifiedD c = certified_d(p, st, f);
+  if (!c.decided) return sum;
+  RateSummary exact;
+  exact.count = c.n;
+  for (int k = 0; k < c.n; ++k) exact.types |= 1u << static_cast<unsigned>(c.type[k]);
+  exact.reliable = true;
+  return exact;
+}
+
 RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
                              const LoadRate& f) noexcept {
-  return summarize_d_core(st, state_d_lcp(p, st, f));
+  return summarize_d_exact(p, st, f, summarize_d_core(st, state_d_lcp(p, st, f)));
 }
 
 }  // namespace
@@ -273,7 +320,9 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     s.type = st.label == StateLabel::kA ? SolutionType::kOpen : SolutionType::kStick;
     s.start = detail::linear_state_rates(p, st, f);
     list.push(s);
-    return detail::make_solution_set(p, st, f, list, true);
+    RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
+    out.certified = true;  // a linear system: no sign decides it
+    return out;
   }
   PlaneResult res;
   if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);
@@ -295,6 +344,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     list.push(s);
   }
   list.infinite = res.infinite;
+  bool certified = false;
   if (st.label == StateLabel::kB) {
     // the tolerance-based set is checked against the certified support enumeration: a sign
     // the data do not decide -> not complete; a different set -> the certified one (issue 24)
@@ -304,7 +354,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
       out.message = "enumeration: a sign within the rounding error of the data";
       return out;
     }
-    if (c.applies && !same_set(res, c)) {
+    if (c.applies && !same_set(res, c.type, c.n)) {
       detail::PieceList cl;
       for (int k = 0; k < c.n; ++k) {
         RateSolution s;
@@ -312,11 +362,36 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
         s.start = typed_rates(p, st, f, detail::P2{c.u[k], c.xi[k]}, c.type[k]);
         cl.push(s);
       }
-      return detail::make_solution_set(p, st, f, cl, true);
+      RateSolutionSet out = detail::make_solution_set(p, st, f, cl, true);
+      out.certified = true;
+      return out;
     }
-    if (c.applies) res.ambiguous = 0;  // the same set, every sign of it decided
+    certified = c.applies;  // the same set, every sign of it decided
   }
+  if (st.label == StateLabel::kD) {
+    // the tolerance-based set (q snapped within 1e-10 of its terms) is checked against the
+    // exact signs: a load ON a critical direction is decided, a different set -> the exact one
+    const CertifiedD c = certified_d(p, st, f);
+    if (c.decided && !same_set(res, c.type, c.n)) {
+      const double u0 = state_d_rates(p, st, f, 0.0).dP_N;
+      const double u1 = state_d_rates(p, st, LoadRate{}, 1.0).dP_N;
+      detail::PieceList cl;
+      for (int k = 0; k < c.n; ++k) {
+        RateSolution s;
+        s.type = c.type[k];
+        s.start = typed_rates(p, st, f, detail::P2{u0 + u1 * c.lambda[k], st.sgn_PT * c.lambda[k]},
+                              c.type[k]);
+        cl.push(s);
+      }
+      RateSolutionSet out = detail::make_solution_set(p, st, f, cl, true);
+      out.certified = true;
+      return out;
+    }
+    certified = c.decided;  // the same set, every sign of it decided
+  }
+  if (certified) res.ambiguous = 0;
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
+  out.certified = certified && !(res.dropped > 0 || res.bad || list.overflow);
   if (res.ambiguous > 0 || res.dropped > 0 || res.bad || list.overflow) {
     out.complete = false;
     out.message = "enumeration: " + std::to_string(res.ambiguous) +
@@ -412,7 +487,7 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& l
       l.q = 0;
     }
     l.snapped = l.snapped || pre.d_snapped;
-    return summarize_d_core(st, l);
+    return summarize_d_exact(pn, st, f, summarize_d_core(st, l));
   }
   return summarize_rate_problem(pre.params, st, load, method);
 }

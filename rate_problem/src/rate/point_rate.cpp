@@ -324,6 +324,10 @@ CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
     if (!s.complete) {
       out.problem = "the enumeration is not conclusive: " + s.message;
       out.inconclusive = true;
+    } else if (!analytic.complete && s.certified) {
+      // a cross-check that cannot decide does not undo a certified answer (issue 34)
+      out.note = "the analytic cross-check cannot decide a sign (" + analytic.message +
+                 "); the enumeration's set is certified";
     } else if (!analytic.complete) {
       out.problem = "the analytic route cannot decide a sign: " + analytic.message;
       out.inconclusive = true;
