@@ -320,9 +320,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     s.type = st.label == StateLabel::kA ? SolutionType::kOpen : SolutionType::kStick;
     s.start = detail::linear_state_rates(p, st, f);
     list.push(s);
-    RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
-    out.certified = true;  // a linear system: no sign decides it
-    return out;
+    return detail::make_solution_set(p, st, f, list, true);
   }
   PlaneResult res;
   if (st.label == StateLabel::kB) plane_b(p, f, res); else plane_d(p, st, f, res);
@@ -362,9 +360,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
         s.start = typed_rates(p, st, f, detail::P2{c.u[k], c.xi[k]}, c.type[k]);
         cl.push(s);
       }
-      RateSolutionSet out = detail::make_solution_set(p, st, f, cl, true);
-      out.certified = true;
-      return out;
+      return detail::make_solution_set(p, st, f, cl, true);
     }
     certified = c.applies;  // the same set, every sign of it decided
   }
@@ -383,15 +379,12 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
                               c.type[k]);
         cl.push(s);
       }
-      RateSolutionSet out = detail::make_solution_set(p, st, f, cl, true);
-      out.certified = true;
-      return out;
+      return detail::make_solution_set(p, st, f, cl, true);
     }
     certified = c.decided;  // the same set, every sign of it decided
   }
   if (certified) res.ambiguous = 0;
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
-  out.certified = certified && !(res.dropped > 0 || res.bad || list.overflow);
   if (res.ambiguous > 0 || res.dropped > 0 || res.bad || list.overflow) {
     out.complete = false;
     out.message = "enumeration: " + std::to_string(res.ambiguous) +
@@ -401,6 +394,18 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
   }
   return out;
 }
+
+namespace detail {
+
+bool enumeration_certified(const ContactParameters& p, const ContactState& st,
+                           const LoadRate& f) noexcept {
+  if (st.label == StateLabel::kA || st.label == StateLabel::kC) return true;
+  if (st.label == StateLabel::kD) return certified_d(p, st, f).decided;
+  const CertifiedB c = certified_b(p, f);
+  return c.applies && !c.undecided;
+}
+
+}  // namespace detail
 
 RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactState& st,
                                      const LoadRate& f) noexcept {

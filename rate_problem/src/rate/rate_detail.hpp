@@ -69,6 +69,13 @@ Rates linear_state_rates(const ContactParameters& p, const ContactState& st,
 /// displacement rates that force times (C_T + 1/a11 + 1/a22).
 Rates rate_scale(const ContactParameters& p, const LoadRate& f) noexcept;
 
+/// Whether solve_rate_enumerate's set of (p, st, f) (normalised units) rests on certified signs
+/// only: states a and c (no sign), b through its support enumeration (certified_b.hpp), d through
+/// the exact signs of L_s and Lambda (exact_signs.hpp). A cross-check that cannot decide a sign
+/// does not undo such a set (issue 34).
+bool enumeration_certified(const ContactParameters& p, const ContactState& st,
+                           const LoadRate& f) noexcept;
+
 /// Puts the solutions in canonical order: by type, kind, then start.dP_N; segments oriented so
 /// that |dw_T^i| does not decrease from start to end.
 void canonicalize(std::vector<RateSolution>& solutions);

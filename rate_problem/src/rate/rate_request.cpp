@@ -184,7 +184,6 @@ void run_one_point(const RateRequest& a, RateOutcome& out, const Note& note) {
          (checked.reference->count() < 0 ? std::string("infinitely many")
                                          : std::to_string(checked.reference->count())) +
          " solution(s)");
-  if (!checked.note.empty()) out.notes.push_back("note: " + checked.note);
   if (!checked.problem.empty()) {
     out.notes.push_back(checked.problem);
     out.exit_code = checked.inconclusive ? kExitInconclusive : kExitDisagreement;

@@ -30,10 +30,6 @@ struct RateSolutionSet {
   std::vector<RateSolution> solutions;  ///< points, segments, rays; types partition the set
   bool infinite = false;                ///< some piece is a segment or a ray
   bool complete = true;                 ///< false for single-solution methods (lemke, ...)
-  /// The enumeration's set with every sign that decides it certified (exactly, or beyond its
-  /// own rounding bound: states a and c, b through its support enumeration, d through the
-  /// exact signs of L_s and Lambda), not through a tolerance band.
-  bool certified = false;
   double Lambda = 0;                    ///< eqn (51) for state d with s = sgn P_T (else 0)
   double D_plus = 0, D_minus = 0;       ///< D_s = a11 - s mu a12 (state b)
   bool unique_for_all_directions = false;  ///< b: a11 > mu|a12|; c: true; d: Lambda > 0; a: true
@@ -75,9 +71,6 @@ struct CheckedRateSolution {
   RateSolutionSet set;                       ///< the method's answer
   std::optional<RateSolutionSet> reference;  ///< single solvers: the complete enumeration
   std::string problem;        ///< empty when the check passed; else why not (one line)
-  /// A remark that does not change the verdict: the analytic cross-check could not decide a
-  /// sign where the enumeration's answer is certified (issue 34). Empty otherwise.
-  std::string note;
   bool inconclusive = false;  ///< a route could not decide a sign: proves nothing, no disagreement
 };
 CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
