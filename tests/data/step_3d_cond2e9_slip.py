@@ -7,7 +7,8 @@ sin phi), x = P_N1, l = lambda, x u(t) + l v(t) + x l m = r with u = (mu D t, 1)
 0), v = A (D^-1 t, 0), m = c_w A e_N (c_w = k_a / (3 P_s)), r = DF (grazing start). Cramer's rule
 on the 3 x 3 system for (x, l, y = x l) gives x, l and the condition y = x l, i.e. (3D.26); its
 zeros are bracketed on a 2880-point scan and refined by mpmath.findroot. A slip needs x > 0 and
-l > 0. Run: /usr/bin/python3 tests/data/step_3d_cond2e9_slip.py (needs mpmath).
+l > 0. Separation (Dw_N of A^-1 DF <= 0) and stick ((I + A S) DP = DF in the cone) are
+checked too: the one solution is the slip. Run: /usr/bin/python3 tests/data/step_3d_cond2e9_slip.py (needs mpmath).
 """
 import mpmath as mp
 mp.mp.dps = 50
@@ -45,3 +46,14 @@ for i in range(n+1):
     prev=(phi,hv)
 ev = mp.eigsy(A)[0]
 print("cond", max(ev)/min(ev))
+# separation: P1 = 0, Dw = A^-1 r, admissible when Dw_N <= 0; stick: (I + A S) DP = r, P_N1 >= 0,
+# |D^-1 P_T1| <= mu P_N1
+Dw = mp.lu_solve(A, r)
+print("separation Dw_N =", mp.nstr(Dw[2], 10), "(admissible)" if Dw[2] <= 0 else "(not admissible)")
+K = mp.eye(3)
+for i in range(3):
+    for j in range(2): K[i, j] += CT * A[i, j]
+DP = mp.lu_solve(K, r)
+cone = mp.sqrt((DP[0]/al[0])**2 + (DP[1]/al[1])**2) - mu*DP[2]
+print("stick P_N1 =", mp.nstr(DP[2], 10), "cone excess =", mp.nstr(cone, 10),
+      "(admissible)" if DP[2] >= 0 and cone <= 0 else "(not admissible)")

@@ -164,8 +164,9 @@ TEST_CASE("3-D step at cond(A) = 2e9: the single slip far from any critical load
   // independently in mpmath at 50 digits (tests/data/step_3d_cond2e9_slip.py: the zeros of the
   // slip condition (3D.26) on a 2880-point scan, refined by findroot, (x, l) by Cramer's rule
   // on (3D.24)): phi = 1.9544674125177029, P_N1 = 1.6925053403377771, lambda =
-  // 76431468.281631617, P_T1 = mu P_N1 D t = (-0.03663346571, 0.1137940511). (The other zeros
-  // of (3D.26) have x < 0 or lambda < 0: no other slip.)
+  // 76431468.281631617, P_T1 = mu P_N1 D t = (-0.03663346571, 0.1137940511). The other zeros
+  // of (3D.26) have x < 0 or lambda < 0, the separation has Dw_N = 1.03e8 > 0 and the stick
+  // leaves the cone: this slip is the one solution.
   Step3dProblem p;
   p.params.A << 0.9575676186378252, 0.4094928783254124, 0.4317205031739679,  //
       0.4094928783254124, 0.22438485805954217, -0.09819590130683155,        //
@@ -185,6 +186,8 @@ TEST_CASE("3-D step at cond(A) = 2e9: the single slip far from any critical load
     if (sol.type == SolutionType::kSlip) slip = &sol;
   }
   REQUIRE(slip != nullptr);
+  CHECK(s.count() == 1);
+  WARN("complete: " << s.complete);
   const Step3dValues& v = slip->values;
   CHECK(v.P_N1 == Approx(1.6925053403377771).epsilon(1e-7));
   CHECK(v.P_T1(0) == Approx(-0.03663346571).epsilon(1e-7));

@@ -427,15 +427,16 @@ bool trig_roots_proved(const TrigPoly& h, double noise, std::vector<double>& roo
 }
 
 /// Refines (x, l, phi) of a slip candidate by Newton's method on the three equations
-/// x u(t) + l v(t) + x l m - r = 0; `sigma` is the smallest singular value of the Jacobian's
-/// (x, l) columns at the end, `error` the resulting error bound of x and l. The direction is the root's (phi
-/// moves by rounding only); x and l may move more (from a candidate computed from two rows only).
-/// False when Newton does not converge there (the start is then kept).
-/// The iteration runs in long double on the scaled unknowns (x / |x|, l / |l|, phi) (issue 34):
-/// at cond(A) >= 1e8 a slip can have lambda ~ 1e8 with P_N1 ~ 1, its equations' terms cancel
-/// by that factor, and a double Newton with unscaled columns stalled above the residual test.
-bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double& sigma,
-                 double& error) {
+/// x u(t) + l v(t) + x l m - r = 0; `error_x` and `error_l` bound the errors of x and l at the
+/// end: the rounding of F (and what is left of it) through the rows of the inverse Jacobian.
+/// The direction is the root's (phi moves by rounding only); x and l may move more (from a
+/// candidate computed from two rows only). False when Newton does not converge there.
+/// Issue 34: the iteration runs in long double on the scaled unknowns (x / |x|, l / |l|, phi),
+/// and each unknown has its own bound. At cond(A) >= 1e8 a slip can have lambda ~ 1e8 with
+/// P_N1 ~ 1: one bound for both (rounding / the smallest singular value of the (x, l) columns,
+/// mostly along l) was larger than P_N1, and the slip was dropped as "P_N1 at the rounding level".
+bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double& error_x,
+                 double& error_l) {
   using LD = long double;
   using V2 = Eigen::Matrix<LD, 2, 1>;
   using V3 = Eigen::Matrix<LD, 3, 1>;
@@ -472,14 +473,13 @@ bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double&
     P -= d(2);
     if (std::abs(d(0)) + std::abs(d(1)) + std::abs(d(2)) <= 1e-18L) break;
   }
-  // The sensitivity of (x, l) at the polished direction: the columns of x and l (unscaled).
-  Eigen::Matrix<double, 3, 2> Jxl;
-  Jxl.col(0) = (J.col(0) / xs).cast<double>();
-  Jxl.col(1) = (J.col(1) / ls).cast<double>();
-  sigma = Jxl.jacobiSvd().singularValues()(1);
-  // The rounding of F (in double, where the values are used) and what is left of it, through
-  // the (x, l) columns: the error of x, l.
-  error = static_cast<double>((kRound * size + res) / std::max<LD>(sigma, 1e-300));
+  // The rounding of F (in double, where the values are used) and what is left of it, each
+  // component up to `delta`, moves x and l by at most |row of J^-1| delta (scaled back).
+  const LD delta = kRound * size + res;
+  const Eigen::Matrix<LD, 3, 3> Jinv = J.fullPivLu().inverse();
+  error_x = static_cast<double>(xs * Jinv.row(0).cwiseAbs().sum() * delta);
+  error_l = static_cast<double>(ls * Jinv.row(1).cwiseAbs().sum() * delta);
+  if (!std::isfinite(error_x) || !std::isfinite(error_l)) return false;
   x = static_cast<double>(X);
   l = static_cast<double>(L);
   phi = static_cast<double>(P);
@@ -768,26 +768,28 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
     for (const Eigen::Vector2d& xl : amounts) {
       double x = xl(0), l = xl(1), phi = root;
       // Newton on the three equations polishes (x, l, phi) to a backward error at the rounding
-      // level (the root of h is only as good as h's rounding); it also gives the rounding band
-      // of x and l (through the smallest singular value of its Jacobian). Two solutions sharing
+      // level (the root of h is only as good as h's rounding); it also gives the rounding bands
+      // of x and l (through the rows of its inverse Jacobian, one band each). Two solutions sharing
       // a direction (a double root) are taken as slip_amounts gives them.
-      double band = 1e-8 * (1 + std::abs(x) + std::abs(l));
+      double band_x = 1e-8 * (1 + std::abs(x) + std::abs(l)), band_l = band_x;
       bool resolved = true;  // (x, l) known well enough to read their signs
       if (amounts.size() == 1) {
-        double x1 = x, l1 = l, phi1 = phi, sigma = 0, error = 0;
-        resolved = refine_slip(s, x1, l1, phi1, sigma, error);
+        double x1 = x, l1 = l, phi1 = phi, error_x = 0, error_l = 0;
+        resolved = refine_slip(s, x1, l1, phi1, error_x, error_l);
         if (resolved) {
           x = x1, l = l1, phi = phi1;
-          band = std::max(1e-12 * (1 + std::abs(x) + std::abs(l)), error);
+          const double floor = 1e-12 * (1 + std::abs(x) + std::abs(l));
+          band_x = std::max(floor, error_x);
+          band_l = std::max(floor, error_l);
         }
       }
-      if (x < -band || l < -band) {  // not a slip (x, l must be positive)
+      if (x < -band_x || l < -band_l) {  // not a slip (x, l must be positive)
         if (!resolved)
           not_proved("the slip at phi = " + num(phi) + " could not be polished by Newton's "
                      "method (an ill-conditioned slip system): its sign is not decided");
         continue;
       }
-      if (x <= band) {
+      if (x <= band_x) {
         // P1 = 0 within rounding: the separation (P1 = 0, g1 = 0) listed above, or undecided.
         const bool listed = std::any_of(found.begin(), found.end(), [](const Step3dValues& f) {
           return f.P_N1 == 0 && f.P_T1.cwiseAbs().maxCoeff() == 0;
