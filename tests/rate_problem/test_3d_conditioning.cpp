@@ -254,6 +254,8 @@ TEST_CASE("3-D step and rate: cond(A) from 1e2 to 1e12, the constructed solution
   std::string levels;
   for (int e = 2; e <= 12; ++e) levels += " 1e" + std::to_string(e) + ":" + std::to_string(per_level[e]);
   WARN("step sets incomplete by cond(A) (of 120):" << levels);
-  // Not a trivial pass: well-conditioned problems are decided.
+  // Not a trivial pass: well-conditioned problems are decided, and the constructed solution
+  // is listed in nearly every case, decided or not (1311 of 1320 today).
   CHECK(complete_well >= total_well * 9 / 10);
+  CHECK(listed >= 1290);
 }

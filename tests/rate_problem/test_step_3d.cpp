@@ -303,9 +303,9 @@ TEST_CASE("3-D step: rotating the tangential plane of an isotropic problem", "[s
     }
     ++compared;
   }
-  // not vacuous: only near-critical steps are undecided (COMPARED_STEP of 600 today)
+  // not vacuous: only near-critical steps may be undecided (all 600 are compared today)
   INFO(compared << " of 600 compared");
-  CHECK(compared >= 0); WARN("STEP " << compared);
+  CHECK(compared >= 570);
 }
 
 TEST_CASE("3-D step: a brute-force scan of slip directions finds the same slips", "[step3d]") {

@@ -65,10 +65,10 @@ TEST_CASE("N-point rate problem at critical directions +- ulps: the exact set or
     ++complete;
     knife += r.must_complete ? 0 : 1;
   }
-  // not vacuous: the rows 1e-6 rad away are all decided, and so are most of the ulp-perturbed
-  // loads (KNIFE_NOW of the KNIFE_ROWS today); "complete: false" for every one would pass the loop
+  // not vacuous: the 16 rows 1e-6 rad away are all decided. Of the 56 ulp-perturbed loads the
+  // N-point route decides 1 today (it has no exact evaluation of its signs, issue 34): at least
+  // that one must stay decided, so that "complete: false" for every row cannot pass the loop.
   CHECK(complete >= 16);
   INFO(knife << " of the ulp-perturbed loads were decided (the others say complete: false)");
-  CHECK(knife >= 0);
-  WARN("KNIFE " << knife << " of " << (sizeof(kRows) / sizeof(kRows[0])));
+  CHECK(knife >= 1);
 }
