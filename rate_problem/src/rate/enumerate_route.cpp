@@ -290,11 +290,12 @@ RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcep
   return sum;
 }
 
-/// A state-d summary the snapping band could not make reliable, decided by the exact signs
+/// A state-d summary whose q or M is 0 after the snapping band (snapped, or 0.0 by cancellation
+/// in double, which is not an exact zero of the data: issue 34), decided by the exact signs
 /// when they decide (certified_d); otherwise `sum` as it was.
 RateSummary summarize_d_exact(const ContactParameters& p, const ContactState& st,
-                              const LoadRate& f, RateSummary sum) noexcept {
-  if (sum.reliable) return sum;
+                              const LoadRate& f, const StateDLcp& l, RateSummary sum) noexcept {
+  if (l.q != 0 && l.M != 0 && !l.snapped) return sum;
   const CertifiedD c = certified_d(p, st, f);
   if (!c.decided) return sum;
   RateSummary exact;
@@ -306,7 +307,8 @@ RateSummary summarize_d_exact(const ContactParameters& p, const ContactState& st
 
 RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
                              const LoadRate& f) noexcept {
-  return summarize_d_exact(p, st, f, summarize_d_core(st, state_d_lcp(p, st, f)));
+  const StateDLcp l = state_d_lcp(p, st, f);
+  return summarize_d_exact(p, st, f, l, summarize_d_core(st, l));
 }
 
 }  // namespace
@@ -492,7 +494,7 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& l
       l.q = 0;
     }
     l.snapped = l.snapped || pre.d_snapped;
-    return summarize_d_exact(pn, st, f, summarize_d_core(st, l));
+    return summarize_d_exact(pn, st, f, l, summarize_d_core(st, l));
   }
   return summarize_rate_problem(pre.params, st, load, method);
 }
