@@ -104,17 +104,8 @@ TEST_CASE("rate problem at exact critical loads of binary data: decided exactly 
     CHECK(a.complete);
     CHECK(a.count() == r.count);
     CHECK(type_names(a) == r.types);
-    // the map's summary (count and types, allocation-free) decides it too
-    const RateSummary sum = summarize_rate_problem(p, st, f, RateMethod::kEnumerate);
-    CHECK(sum.reliable);
-    CHECK(sum.count == r.count);
-    CHECK(sum.types == s.type_mask());
-    // and so does the maps' precomputed summary (the load-independent terms formed once)
-    const RateSummary pre = summarize_rate_problem(precompute_rate_problem(p, st), f,
-                                                   RateMethod::kEnumerate);
-    CHECK(pre.reliable);
-    CHECK(pre.count == r.count);
-    CHECK(pre.types == s.type_mask());
+    // (the maps' summaries are not asked: at a computed critical direction, a rounded point of
+    // the line, they want the set on the line and flag it unreliable; test_map_direction)
     ++rows;
     multiple += r.count > 1 ? 1 : 0;
     none += r.count == 0 ? 1 : 0;

@@ -190,15 +190,17 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
   return certified_b_with<T, kValues>(b_terms<T>(p), p, f);
 }
 
-/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide, and the
-/// exact expansion (exact_expansion.hpp) when the rounding bound cannot: a load ON a critical
-/// direction of binary data (N = 0 or L_s = 0 exactly) is decided exactly (issue 34).
-template <bool kValues = true>
+/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide, and (kExact)
+/// the exact expansion (exact_expansion.hpp) when the rounding bound cannot: a load ON a
+/// critical direction of binary data (N = 0 or L_s = 0 exactly) is decided exactly (issue 34).
+/// The maps' summaries ask without the exact pass: at a computed (rounded) critical direction
+/// they want the set on the line, from the signs left undecided.
+template <bool kValues = true, bool kExact = true>
 CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
   const CertifiedB fast = certified_b_in<Mag, kValues>(p, f);
   if (fast.applies && !fast.undecided) return fast;
   const CertifiedB bounded = certified_b_in<Rounded, kValues>(p, f);
-  if (bounded.applies && !bounded.undecided) return bounded;
+  if (!kExact || (bounded.applies && !bounded.undecided)) return bounded;
   const CertifiedB exact_signs = certified_b_in<Expansion, kValues>(p, f);
   return exact_signs.applies && !exact_signs.undecided ? exact_signs : bounded;
 }

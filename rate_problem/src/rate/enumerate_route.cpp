@@ -199,7 +199,7 @@ RateSummary summary_of(const detail::CertifiedB& c) noexcept {
 /// then runs the general engine).
 bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
                            RateSummary& sum) noexcept {
-  const detail::CertifiedB c = detail::certified_b<false>(p, f);  // types only
+  const detail::CertifiedB c = detail::certified_b<false, false>(p, f);  // types only
   if (!c.applies) return false;
   if (!c.undecided) {
     sum = summary_of(c);
@@ -290,25 +290,10 @@ RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcep
   return sum;
 }
 
-/// A state-d summary whose q or M is 0 after the snapping band (snapped, or 0.0 by cancellation
-/// in double, which is not an exact zero of the data: issue 34), decided by the exact signs
-/// when they decide (certified_d); otherwise `sum` as it was.
-RateSummary summarize_d_exact(const ContactParameters& p, const ContactState& st,
-                              const LoadRate& f, const StateDLcp& l, RateSummary sum) noexcept {
-  if (l.q != 0 && l.M != 0 && !l.snapped) return sum;
-  const CertifiedD c = certified_d(p, st, f);
-  if (!c.decided) return sum;
-  RateSummary exact;
-  exact.count = c.n;
-  for (int k = 0; k < c.n; ++k) exact.types |= 1u << static_cast<unsigned>(c.type[k]);
-  exact.reliable = true;
-  return exact;
-}
-
 RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
                              const LoadRate& f) noexcept {
   const StateDLcp l = state_d_lcp(p, st, f);
-  return summarize_d_exact(p, st, f, l, summarize_d_core(st, l));
+  return summarize_d_core(st, l);
 }
 
 }  // namespace
@@ -494,7 +479,7 @@ RateSummary summarize_rate_problem(const RatePrecomputed& pre, const LoadRate& l
       l.q = 0;
     }
     l.snapped = l.snapped || pre.d_snapped;
-    return summarize_d_exact(pn, st, f, l, summarize_d_core(st, l));
+    return summarize_d_core(st, l);
   }
   return summarize_rate_problem(pre.params, st, load, method);
 }

@@ -47,7 +47,8 @@ void normalise_load(const LoadRate& load, LoadRate& fn, int& eF) noexcept;
 
 /// Route 1 into a PieceList (analytic.cpp).
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-                     SmallPieceList& out) noexcept;
+                     SmallPieceList& out,
+                     bool exact = true) noexcept;
 
 /// Sorted (type, kind, dP_N) RateSolutionSet with the indicators of (params, state).
 RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
