@@ -200,15 +200,83 @@ TEST_CASE("cpkit rate: an inconclusive enumeration exits 5, never 3 (issue 24 it
     CHECK(j["solutions"][0]["rates"]["dw_T"].get<double>() == Approx(1.0000000000027707).epsilon(1e-12));
     CHECK(j["solutions"][0]["rates"]["dw_N"].get<double>() < 0);
   }
-  // dF = (a11, a12): N = 0 exactly in the data, but a11 dF_N and a12 dF_T are rounded products,
-  // so their difference is within its rounding: the separation / slip+ boundary is not decided
-  // by the computed signs, which is inconclusive (5), not a disagreement between routes (3)
+  // dF = (a11, a12): N = 0 exactly in the data. a11 dF_N and a12 dF_T are rounded products, so
+  // their difference is within its rounding bound; until issue 34 that made the answer "not
+  // conclusive" (exit 5). The signs are now decided exactly (exact_expansion.hpp). By hand
+  // (C_T = 0): N = 0, so no separation (it needs N < 0) and dP_N = N / D_s = 0 for a slip;
+  // L_+ = dF_T - mu dF_N = a11 - mu a12 = D_+ = 0.137 > 0, so slip+ with lambda = L_+ / D_+ = 1
+  // exactly; L_- = -a11 - mu a12 < 0 and D_- > 0: no slip-; stick needs L_+ <= 0: none.
+  // One solution: slip+ with dP = 0, dw_T = dw_T^i = 1, dw_N = 0 (Python fractions agree).
   const Run r = run_rate(A + "--dF 1.0142831963176735 0.8450714454408795 --json");
-  CHECK(r.code == 5);
-  CHECK(r.err.find("not conclusive") != std::string::npos);
+  CAPTURE(r.err);
+  REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j["complete"] == false);
-  CHECK_FALSE(j.contains("count"));
+  CHECK(j["complete"] == true);
+  CHECK(j["count"] == 1);
+  CHECK(j["types"] == nlohmann::json({"slip+"}));
+  CHECK(j["solutions"][0]["rates"]["dP_N"].get<double>() == Approx(0).margin(1e-12));
+  CHECK(j["solutions"][0]["rates"]["dP_T"].get<double>() == Approx(0).margin(1e-12));
+  CHECK(j["solutions"][0]["rates"]["dw_Ti"].get<double>() == Approx(1).epsilon(1e-12));
+  // What stays inconclusive: a 2x2 block within the general engine's near-singular band
+  // (D_+ = a11 - mu a12 = -1e-7 of its terms, where the certified route defers to it: a
+  // continuum is possible there) and a load 1 ulp off N = 0: one sign test too close to call
+  // -> exit 5 with complete: false, never 3.
+  const Run u = run_rate("--state b --a11 1 --a12 1 --a22 2 --mu 1.0000001 "
+                         "--dF 1 1.0000000000000002 --json");
+  CHECK(u.code == 5);
+  CHECK(u.err.find("not conclusive") != std::string::npos);
+  const auto k = nlohmann::json::parse(u.out);
+  CHECK(k["complete"] == false);
+  CHECK_FALSE(k.contains("count"));
+}
+
+TEST_CASE("cpkit rate: the paper's exact critical loads of issue 34 are decided exactly",
+          "[cli][rate]") {
+  // Binary data (multiples of 2^-10), the load exactly on a critical direction; the answers are
+  // from the model's rate equations solved in exact rationals (tests/data/
+  // rate_boundary_family.py's oracle on these numbers): each case exited 5 before.
+  {  // L_- = 0 exactly: one solution, stick, dP = (dF_T, S) / (1 + a11 C_T)
+    const Run r = run_rate("--state b --a11 0.6044921875 --a12 0.5537109375 --a22 1.2255859375 "
+                           "--mu 0.5205078125 --C_T 0.6181640625 --dF "
+                           "-0.715008749626576900482177734375 0.821838398464024066925048828125 "
+                           "--json");
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["complete"] == true);
+    CHECK(j["types"] == nlohmann::json({"stick"}));
+  }
+  {  // L_- = 0 exactly: two solutions, separation and stick (dP = (-1167/1024, 1))
+    const Run r = run_rate("--state b --a11 0.6767578125 --a12 -0.693359375 --a22 2.9052734375 "
+                           "--mu 1.1396484375 --C_T 0.2275390625 --dF "
+                           "-1.315141576342284679412841796875 1.17979816533625125885009765625 "
+                           "--json");
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["complete"] == true);
+    CHECK(j["types"] == nlohmann::json({"separation", "stick"}));
+    for (const auto& s : j["solutions"])
+      if (s["type"] == "stick") {
+        CHECK(s["rates"]["dP_T"].get<double>() == Approx(-1167.0 / 1024).epsilon(1e-14));
+        CHECK(s["rates"]["dP_N"].get<double>() == Approx(1).epsilon(1e-14));
+      }
+  }
+  {  // state d, L_s = 0 exactly (s = -1): stick only (the slip's lambda = L_s / Lambda = 0 is
+     // the stick point), dP = (-97/1024, 1); the analytic cross-check agrees: no note, exit 0
+    const Run r = run_rate("--state d --a11 4.4921875 --a12 -3.1337890625 --a22 4.6513671875 "
+                           "--mu 0.0947265625 --C_T 0.1708984375 --k_a 0 --P_s 0.2978515625 "
+                           "--P_N 0.6083984375 --sgnPT -1 --dF -0.167448885738849639892578125 "
+                           "1.050731725059449672698974609375 --json");
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    CHECK(r.err.find("cannot decide") == std::string::npos);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["complete"] == true);
+    CHECK(j["types"] == nlohmann::json({"stick"}));
+    CHECK(j["solutions"][0]["rates"]["dP_T"].get<double>() == Approx(-97.0 / 1024).epsilon(1e-14));
+    CHECK(j["solutions"][0]["rates"]["dP_N"].get<double>() == Approx(1).epsilon(1e-14));
+  }
 }
 
 TEST_CASE("cpkit rate: near a critical load at cond 1e12, exact or inconclusive (issue 24)",

@@ -262,6 +262,7 @@ TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates it
           "[rate3d]") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
+  int compared = 0;
   for (int c = 0; c < 600; ++c) {
     ContactParameters3d p;
     p.A = random_spd(rng);
@@ -292,14 +293,18 @@ TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates it
     REQUIRE(a.complete == b.complete);
     if (!a.complete) continue;
     CHECK(same_sets(transform(a, R, R), b, 1 + dF.norm(), 1 + dF.norm() * (1 + p.C_T)));
+    ++compared;
   }
+  // not vacuous: only near-critical loads may be undecided (all 600 are compared today)
+  INFO(compared << " of 600 compared");
+  CHECK(compared >= 570);
 }
 
 TEST_CASE("3-D: the elliptic law equals the isotropic one after p_T -> D^-1 p_T, w_T -> D w_T "
           "(C_T = 0)", "[rate3d]") {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> u(-1, 1), pos(0.05, 1);
-  int with_slip = 0;
+  int with_slip = 0, compared = 0;
   for (int c = 0; c < 600; ++c) {
     ContactParameters3d p;
     p.A = random_spd(rng);
@@ -329,7 +334,10 @@ TEST_CASE("3-D: the elliptic law equals the isotropic one after p_T -> D^-1 p_T,
     if (!a.complete) continue;
     CHECK(same_sets(transform(a, Dinv, D), b, 1 + dF.norm(), 10 * (1 + dF.norm())));
     for (const auto& s : a.solutions) with_slip += s.type == SolutionType::kSlip;
+    ++compared;
   }
+  INFO(compared << " of 600 compared");
+  CHECK(compared >= 570);  // all 600 are compared today
   CHECK(with_slip > 100);
 }
 

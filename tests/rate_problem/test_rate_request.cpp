@@ -127,9 +127,13 @@ TEST_CASE("rate request: no solution exits 1 (state d, Lambda < 0, L_+ > 0)", "[
   CHECK(notes[0].find("; the enumeration has 0 solution(s)") != std::string::npos);
 }
 
-TEST_CASE("rate request: a boundary the signs cannot decide exits 5, never 3", "[rate][request]") {
-  // dF = (a11, a12): N = a11 dF_N - a12 dF_T is 0 in exact arithmetic (issue 24 item 17: the
-  // separation / slip+ boundary, inconclusive rather than a disagreement between routes).
+TEST_CASE("rate request: a load exactly on a critical direction is decided exactly (issue 34)",
+          "[rate][request]") {
+  // dF = (a11, a12): N = a11 dF_N - a12 dF_T is 0 exactly (the separation / slip+ boundary of
+  // issue 24 item 17), but formed from rounded products: until issue 34 the answer was "not
+  // conclusive" (exit 5). By hand (C_T = 0): N = 0, so no separation (N < 0 needed) and
+  // dP_N = N / D_s = 0; L_+ = a11 - mu a12 = D_+ > 0: slip+ with lambda = L_+ / D_+ = 1;
+  // L_- < 0 < D_-: no slip-; L_+ > 0: no stick. One slip+ with dP = 0, dw_T^i = 1.
   RateRequest r = fig5b();
   r.params.a11 = 1.0142831963176735;
   r.params.a12 = 0.8450714454408795;
@@ -137,10 +141,14 @@ TEST_CASE("rate request: a boundary the signs cannot decide exits 5, never 3", "
   r.params.mu = 1.038170126179592;
   r.dF = {1.0142831963176735, 0.8450714454408795};
   const RateOutcome out = run_rate_request(r);
-  CHECK(out.exit_code == cpkit::kExitInconclusive);
-  REQUIRE(out.notes.size() == 1);
-  CHECK(out.notes[0].find("not conclusive") != std::string::npos);
-  CHECK_FALSE(out.one_point->set.complete);
+  CHECK(out.exit_code == cpkit::kExitOk);
+  CHECK(out.notes.empty());
+  const RateSolutionSet& s = out.one_point->set;
+  CHECK(s.complete);
+  REQUIRE(s.count() == 1);
+  CHECK(s.solutions[0].type == SolutionType::kSlipPlus);
+  CHECK(s.solutions[0].start.dP_N == Approx(0).margin(1e-12));
+  CHECK(s.solutions[0].start.dw_Ti == Approx(1).epsilon(1e-12));
 }
 
 TEST_CASE("rate request: refusals name the option", "[rate][request]") {

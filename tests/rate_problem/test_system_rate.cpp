@@ -363,21 +363,28 @@ TEST_CASE("continua of a degenerate point coupled to nothing: segments and rays 
     S.A = Eigen::MatrixXd::Zero(4, 4);
     S.A.block(0, 0, 2, 2) = random_spd(rng, 2);
     S.A.block(2, 2, 2, 2) = random_spd(rng, 2);
-    const double a11 = S.A(0, 0), a12 = S.A(0, 1), a22 = S.A(1, 1), det = a11 * a22 - a12 * a12;
+    const double a11 = S.A(0, 0), a12 = S.A(0, 1);
     Vec dF(4);
     dF << 0, 0.2 + U(rng), U(rng) - 0.5, U(rng);
     if (!use_d) {
       p1.mu = a11 / std::abs(a12);
       dF(0) = a11 * dF(1) / a12;  // N = a11 dF_N - a12 dF_T = 0, dF_N > 0
     } else {
+      // Lambda = 0 and L_s = 0 EXACTLY in binary (the one-point route decides the signs of
+      // the data exactly, issue 34: a rounded degenerate point is an isolated one or none):
+      // kappa = 0, a12 = s/2, a11 and C_T multiples of 2^-10, mu = a11 / (s a12) = 2 a11, and
+      // dF = t (mu (1 + a11 C_T), s + mu a12 C_T) with t a multiple of 2^-10 (all exact).
       const int s = p1.state.sgn_PT;
-      const double kappa = p1.k_a / (3 * p1.P_s) * p1.state.P_N;
-      const double denom = s * a12 + kappa * a22 + kappa * p1.C_T * det;
-      const double mu = (a11 + kappa * s * a12) / denom;  // Lambda = 0, eqn (51)
-      if (!(mu > 0.05 && mu < 50)) continue;
-      p1.mu = mu;
-      p1.P_T = s * mu * p1.P_N;
-      dF(0) = mu * (1 + a11 * p1.C_T) * dF(1) / (s + mu * a12 * p1.C_T);  // L_s = 0
+      const double b11 = std::ldexp(std::floor(std::ldexp(0.3 + U(rng), 10)), -10);
+      const double b12 = 0.5 * s, b22 = 1.25 + std::ldexp(std::floor(std::ldexp(U(rng), 10)), -10);
+      S.A(0, 0) = b11, S.A(0, 1) = S.A(1, 0) = b12, S.A(1, 1) = b22;
+      p1.k_a = 0;
+      p1.C_T = std::ldexp(std::floor(std::ldexp(p1.C_T, 10)), -10);
+      p1.mu = 2 * b11;
+      p1.P_T = s * p1.mu * p1.P_N;
+      const double t = std::ldexp(std::floor(std::ldexp(0.5 + U(rng), 10)), -10);
+      dF(0) = t * p1.mu * (1 + b11 * p1.C_T);
+      dF(1) = t * (s + p1.mu * b12 * p1.C_T);
     }
     S.points = {p1, p2};
     if (!S.validate().empty()) continue;

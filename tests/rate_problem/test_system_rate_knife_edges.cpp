@@ -65,7 +65,10 @@ TEST_CASE("N-point rate problem at critical directions +- ulps: the exact set or
     ++complete;
     knife += r.must_complete ? 0 : 1;
   }
-  // not vacuous: the rows 1e-6 rad away are all decided
+  // not vacuous: the 16 rows 1e-6 rad away are all decided. Of the 56 ulp-perturbed loads the
+  // N-point route decides 1 today (it has no exact evaluation of its signs, issue 34): at least
+  // that one must stay decided, so that "complete: false" for every row cannot pass the loop.
   CHECK(complete >= 16);
-  WARN(knife << " of the ulp-perturbed loads were decided (the others say complete: false)");
+  INFO(knife << " of the ulp-perturbed loads were decided (the others say complete: false)");
+  CHECK(knife >= 1);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
+#include "exact_signs.hpp"
 #include "rate_detail.hpp"
 #include "rounded.hpp"
 
@@ -100,12 +101,17 @@ Rates slip_rates(const ContactParameters& p, int s, double m, double kappa, doub
 /// The state-b solutions (b.i-b.iii), including the degenerate line a11 = mu|a12|. Every sign
 /// is three-valued (rounded.hpp): a piece whose existence the computed signs do not decide
 /// marks the list undecided instead of being guessed.
-void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceList& out) noexcept {
+void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceList& out,
+             bool exact_signs) noexcept {
   const Rounded a11 = exact(p.a11), a12 = exact(p.a12), mu = exact(p.mu), CT = exact(p.C_T);
   const Rounded FT = exact(f.dF_T), FN = exact(f.dF_N);
   const Rounded c1 = exact(1.0) + a11 * CT;
   const Rounded N = a11 * FN - a12 * FT;
-  const int sN = sign3(N);
+  // a sign within its rounding bound (data ON a critical load) is evaluated exactly
+  // (exact_signs.hpp); kUndecided remains only outside the exact range
+  const int sN = sign3(N) != kUndecided || !exact_signs ? sign3(N) : detail::exact_sign_N(p, f);
+  ContactState grazing;
+  grazing.label = StateLabel::kB;
   Rounded L[2], D[2];
   int sL[2], sD[2];
   for (int k = 0; k < 2; ++k) {
@@ -114,6 +120,9 @@ void state_b(const ContactParameters& p, const LoadRate& f, detail::SmallPieceLi
     D[k] = a11 - exact(s) * mu * a12;
     sL[k] = sign3(L[k]);
     sD[k] = sign3(D[k]);
+    if (!exact_signs) continue;
+    if (sL[k] == kUndecided) sL[k] = detail::exact_sign_L(p, grazing, f, k == 0 ? 1 : -1);
+    if (sD[k] == kUndecided) sD[k] = detail::exact_sign_D(p, k == 0 ? 1 : -1);
   }
   const auto add = [&](int a, int b, auto pred, const RateSolution& piece) {
     if (decide(a, b, 0, pred) == kUndecided) out.undecided = true;
@@ -175,7 +184,7 @@ void kappa_and_m(const ContactParameters& p, const ContactState& st, Rounded& ka
 
 /// The state-d solutions (d.i-d.ii) with Lambda of eqn (51) (mu -> mu_eff for (35)).
 void state_d(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-             detail::SmallPieceList& out) noexcept {
+             detail::SmallPieceList& out, bool exact_signs) noexcept {
   const int s = st.sgn_PT;
   const double kappa = p.kappa(st.P_N);
   const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * kappa : p.mu;
@@ -186,7 +195,11 @@ void state_d(const ContactParameters& p, const ContactState& st, const LoadRate&
                     mr * (exact(1.0) + exact(p.a11) * exact(p.C_T)) * exact(f.dF_N);
   const Rounded Lam = lambda_51(p, s, mr, kr);
   const double Lambda = Lam.v;
-  const int sL = sign3(L), sLam = sign3(Lam);
+  // a sign within its rounding bound (data ON a critical load) is evaluated exactly
+  const int sL =
+      sign3(L) != kUndecided || !exact_signs ? sign3(L) : detail::exact_sign_L(p, st, f, s);
+  const int sLam =
+      sign3(Lam) != kUndecided || !exact_signs ? sign3(Lam) : detail::exact_sign_Lambda(p, st);
   // d.i stick: L_s <= 0.
   const auto stick_pred = [](int l, int, int) { return l <= 0; };
   const auto slip_pred = [](int lam, int l, int) { return lam != 0 && l == lam; };
@@ -269,7 +282,7 @@ RateIndicators rate_indicators(const ContactParameters& p, const ContactState& s
 namespace detail {
 
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-                     SmallPieceList& out) noexcept {
+                     SmallPieceList& out, bool exact) noexcept {
   out.n = 0;
   out.infinite = false;
   out.undecided = false;
@@ -281,13 +294,13 @@ void analytic_pieces(const ContactParameters& p, const ContactState& st, const L
       break;
     }
     case StateLabel::kB:
-      state_b(p, f, out);
+      state_b(p, f, out, exact);
       break;
     case StateLabel::kC:
       out.push(point(SolutionType::kStick, stick_rates(p, f)));
       break;
     case StateLabel::kD:
-      state_d(p, st, f, out);
+      state_d(p, st, f, out, exact);
       break;
   }
 }
@@ -308,8 +321,10 @@ RateSolutionSet solve_rate_analytic(const ContactParameters& params, const Conta
 
 RateSummary summarize_rate_analytic(const ContactParameters& params, const ContactState& state,
                                     const LoadRate& load) noexcept {
+  // no exact pass: a map's computed critical direction is a rounded point of the line, whose
+  // summary the maps want "on the line" (undecided signs taken as 0, flagged unreliable)
   detail::SmallPieceList list;
-  detail::analytic_pieces(params, state, load, list);
+  detail::analytic_pieces(params, state, load, list, false);
   return detail::summarize(list);
 }
 

@@ -25,6 +25,7 @@
 #include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/rate/detail/state_b_terms.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
+#include "exact_expansion.hpp"
 #include "rounded.hpp"
 
 namespace cpkit::rate::detail {
@@ -59,6 +60,7 @@ inline Mag abs_of(Mag x) noexcept { return {std::abs(x.v), x.m}; }
 inline Rounded abs_of(Rounded x) noexcept { return {std::abs(x.v), x.e}; }
 inline Rounded make(double x, const Rounded*) noexcept { return exact(x); }
 inline Mag make(double x, const Mag*) noexcept { return exact_mag(x); }
+inline Expansion make(double x, const Expansion*) noexcept { return Expansion(x); }
 
 /// Three-valued verdict of "x > 0" (strict) and "x >= 0": 1 true, 0 false, kUndecided.
 template <class T>
@@ -188,12 +190,19 @@ CertifiedB certified_b_in(const ContactParameters& p, const LoadRate& f) noexcep
   return certified_b_with<T, kValues>(b_terms<T>(p), p, f);
 }
 
-/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide.
-template <bool kValues = true>
+/// certified_b_in with the fast magnitude pass first, Rounded when it cannot decide, and (kExact)
+/// the exact expansion (exact_expansion.hpp) when the rounding bound cannot: a load ON a
+/// critical direction of binary data (N = 0 or L_s = 0 exactly) is decided exactly (issue 34).
+/// The maps' summaries ask without the exact pass: at a computed (rounded) critical direction
+/// they want the set on the line, from the signs left undecided.
+template <bool kValues = true, bool kExact = true>
 CertifiedB certified_b(const ContactParameters& p, const LoadRate& f) noexcept {
   const CertifiedB fast = certified_b_in<Mag, kValues>(p, f);
   if (fast.applies && !fast.undecided) return fast;
-  return certified_b_in<Rounded, kValues>(p, f);
+  const CertifiedB bounded = certified_b_in<Rounded, kValues>(p, f);
+  if (!kExact || (bounded.applies && !bounded.undecided)) return bounded;
+  const CertifiedB exact_signs = certified_b_in<Expansion, kValues>(p, f);
+  return exact_signs.applies && !exact_signs.undecided ? exact_signs : bounded;
 }
 
 }  // namespace cpkit::rate::detail

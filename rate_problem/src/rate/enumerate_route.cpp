@@ -10,6 +10,7 @@
 #include "cpkit/rate_problem/rate/analytic.hpp"
 #include "cpkit/rate_problem/rate/rate_lcp.hpp"
 #include "certified_b.hpp"
+#include "exact_signs.hpp"
 #include "piece_geometry.hpp"
 #include "rate_detail.hpp"
 
@@ -198,7 +199,7 @@ RateSummary summary_of(const detail::CertifiedB& c) noexcept {
 /// then runs the general engine).
 bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
                            RateSummary& sum) noexcept {
-  const detail::CertifiedB c = detail::certified_b<false>(p, f);  // types only
+  const detail::CertifiedB c = detail::certified_b<false, false>(p, f);  // types only
   if (!c.applies) return false;
   if (!c.undecided) {
     sum = summary_of(c);
@@ -212,18 +213,50 @@ bool summarize_b_certified(const ContactParameters& p, const LoadRate& f,
   return false;
 }
 
-/// Whether the typed plane pieces are the certified points: same count, same types.
-bool same_set(const PlaneResult& res, const detail::CertifiedB& c) noexcept {
-  if (res.infinite || res.bad || res.n != c.n) return false;
+/// Whether the typed plane pieces are the n certified points of the given types.
+bool same_set(const PlaneResult& res, const SolutionType* types, int n) noexcept {
+  if (res.infinite || res.bad || res.n != n) return false;
   int count[8] = {};
   for (int i = 0; i < res.n; ++i) {
     if (res.pieces[i].kind != RateSolution::Kind::kPoint) return false;
     ++count[static_cast<unsigned>(res.pieces[i].type)];
   }
-  for (int k = 0; k < c.n; ++k) --count[static_cast<unsigned>(c.type[k])];
+  for (int k = 0; k < n; ++k) --count[static_cast<unsigned>(types[k])];
   for (const int x : count)
     if (x != 0) return false;
   return true;
+}
+
+/// State d's solution points decided by the exact signs of L_s and Lambda (exact_signs.hpp;
+/// the 1x1 LCP has q = -L_s and M of the sign of Lambda, docs/model.md): stick iff L_s <= 0,
+/// slip iff Lambda != 0 and lambda = L_s / Lambda > 0. `decided` is false when a sign is out
+/// of the exact range or Lambda = L_s = 0 (the ray: the general engine's geometry).
+struct CertifiedD {
+  bool decided = false;
+  int n = 0;
+  SolutionType type[2] = {};
+  double lambda[2] = {};
+};
+
+CertifiedD certified_d(const ContactParameters& p, const ContactState& st,
+                       const LoadRate& f) noexcept {
+  CertifiedD c;
+  const int sL = detail::exact_sign_L(p, st, f, st.sgn_PT);
+  const int sLam = detail::exact_sign_Lambda(p, st);
+  if (sL == detail::kUndecided || sLam == detail::kUndecided || (sL == 0 && sLam == 0)) return c;
+  c.decided = true;
+  if (sL <= 0) c.type[c.n++] = SolutionType::kStick;
+  if (sLam != 0 && sL == sLam) {
+    // lambda = -q / M of the unsnapped LCP (state_d_lcp's q and M before its band)
+    const double c1 = 1.0 + p.a11 * p.C_T;
+    const double m = p.criterion == Criterion::kSoftening ? p.mu - 2.0 * p.kappa(st.P_N) : p.mu;
+    const Rates r0 = state_d_rates(p, st, f, 0.0), r1 = state_d_rates(p, st, LoadRate{}, 1.0);
+    const double q = c1 * (m * r0.dP_N - st.sgn_PT * r0.dP_T);
+    const double M = c1 * (m * r1.dP_N - st.sgn_PT * r1.dP_T);
+    c.lambda[c.n] = M != 0 && -q / M > 0 ? -q / M : 0.0;
+    c.type[c.n++] = st.sgn_PT > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
+  }
+  return c;
 }
 
 /// State d's 1x1 LCP enumerated inline for the summary: support {} (lambda = 0, stick) is a
@@ -259,7 +292,8 @@ RateSummary summarize_d_core(const ContactState& st, const StateDLcp& l) noexcep
 
 RateSummary summarize_d_fast(const ContactParameters& p, const ContactState& st,
                              const LoadRate& f) noexcept {
-  return summarize_d_core(st, state_d_lcp(p, st, f));
+  const StateDLcp l = state_d_lcp(p, st, f);
+  return summarize_d_core(st, l);
 }
 
 }  // namespace
@@ -295,6 +329,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
     list.push(s);
   }
   list.infinite = res.infinite;
+  bool certified = false;
   if (st.label == StateLabel::kB) {
     // the tolerance-based set is checked against the certified support enumeration: a sign
     // the data do not decide -> not complete; a different set -> the certified one (issue 24)
@@ -304,7 +339,7 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
       out.message = "enumeration: a sign within the rounding error of the data";
       return out;
     }
-    if (c.applies && !same_set(res, c)) {
+    if (c.applies && !same_set(res, c.type, c.n)) {
       detail::PieceList cl;
       for (int k = 0; k < c.n; ++k) {
         RateSolution s;
@@ -314,8 +349,28 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
       }
       return detail::make_solution_set(p, st, f, cl, true);
     }
-    if (c.applies) res.ambiguous = 0;  // the same set, every sign of it decided
+    certified = c.applies;  // the same set, every sign of it decided
   }
+  if (st.label == StateLabel::kD) {
+    // the tolerance-based set (q snapped within 1e-10 of its terms) is checked against the
+    // exact signs: a load ON a critical direction is decided, a different set -> the exact one
+    const CertifiedD c = certified_d(p, st, f);
+    if (c.decided && !same_set(res, c.type, c.n)) {
+      const double u0 = state_d_rates(p, st, f, 0.0).dP_N;
+      const double u1 = state_d_rates(p, st, LoadRate{}, 1.0).dP_N;
+      detail::PieceList cl;
+      for (int k = 0; k < c.n; ++k) {
+        RateSolution s;
+        s.type = c.type[k];
+        s.start = typed_rates(p, st, f, detail::P2{u0 + u1 * c.lambda[k], st.sgn_PT * c.lambda[k]},
+                              c.type[k]);
+        cl.push(s);
+      }
+      return detail::make_solution_set(p, st, f, cl, true);
+    }
+    certified = c.decided;  // the same set, every sign of it decided
+  }
+  if (certified) res.ambiguous = 0;
   RateSolutionSet out = detail::make_solution_set(p, st, f, list, true);
   if (res.ambiguous > 0 || res.dropped > 0 || res.bad || list.overflow) {
     out.complete = false;
@@ -326,6 +381,18 @@ RateSolutionSet solve_rate_enumerate(const ContactParameters& p, const ContactSt
   }
   return out;
 }
+
+namespace detail {
+
+bool enumeration_certified(const ContactParameters& p, const ContactState& st,
+                           const LoadRate& f) noexcept {
+  if (st.label == StateLabel::kA || st.label == StateLabel::kC) return true;
+  if (st.label == StateLabel::kD) return certified_d(p, st, f).decided;
+  const CertifiedB c = certified_b(p, f);
+  return c.applies && !c.undecided;
+}
+
+}  // namespace detail
 
 RateSummary summarize_rate_enumerate(const ContactParameters& p, const ContactState& st,
                                      const LoadRate& f) noexcept {

@@ -312,6 +312,21 @@ bool same_solution_sets(const RateSolutionSet& a, const RateSolutionSet& b, doub
   return true;
 }
 
+namespace {
+
+/// Whether the enumeration's set of (params, state, load) rests on certified signs only
+/// (detail::enumeration_certified, in the normalised units the routes use).
+bool enumeration_certified(const ContactParameters& params, const ContactState& state,
+                           const LoadRate& load) noexcept {
+  int eA = 0, eF = 0;
+  ContactParameters pn;
+  LoadRate fn;
+  detail::normalise(params, load, pn, fn, eA, eF);
+  return detail::enumeration_certified(pn, state, fn);
+}
+
+}  // namespace
+
 CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
                                                const ContactState& state, const LoadRate& load,
                                                RateMethod method) {
@@ -324,6 +339,9 @@ CheckedRateSolution solve_rate_problem_checked(const ContactParameters& params,
     if (!s.complete) {
       out.problem = "the enumeration is not conclusive: " + s.message;
       out.inconclusive = true;
+    } else if (!analytic.complete && enumeration_certified(params, state, load)) {
+      // a cross-check that cannot decide does not undo a certified answer (issue 34): every
+      // sign of the enumeration's set was decided exactly or beyond its rounding bound
     } else if (!analytic.complete) {
       out.problem = "the analytic route cannot decide a sign: " + analytic.message;
       out.inconclusive = true;

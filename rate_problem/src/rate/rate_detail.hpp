@@ -47,7 +47,8 @@ void normalise_load(const LoadRate& load, LoadRate& fn, int& eF) noexcept;
 
 /// Route 1 into a PieceList (analytic.cpp).
 void analytic_pieces(const ContactParameters& p, const ContactState& st, const LoadRate& f,
-                     SmallPieceList& out) noexcept;
+                     SmallPieceList& out,
+                     bool exact = true) noexcept;
 
 /// Sorted (type, kind, dP_N) RateSolutionSet with the indicators of (params, state).
 RateSolutionSet make_solution_set(const ContactParameters& params, const ContactState& state,
@@ -68,6 +69,13 @@ Rates linear_state_rates(const ContactParameters& p, const ContactState& st,
 /// Componentwise magnitudes for tolerance comparisons: forces |dF_T| + |dF_N| (1 when zero),
 /// displacement rates that force times (C_T + 1/a11 + 1/a22).
 Rates rate_scale(const ContactParameters& p, const LoadRate& f) noexcept;
+
+/// Whether solve_rate_enumerate's set of (p, st, f) (normalised units) rests on certified signs
+/// only: states a and c (no sign), b through its support enumeration (certified_b.hpp), d through
+/// the exact signs of L_s and Lambda (exact_signs.hpp). A cross-check that cannot decide a sign
+/// does not undo such a set (issue 34).
+bool enumeration_certified(const ContactParameters& p, const ContactState& st,
+                           const LoadRate& f) noexcept;
 
 /// Puts the solutions in canonical order: by type, kind, then start.dP_N; segments oriented so
 /// that |dw_T^i| does not decrease from start to end.

@@ -214,13 +214,51 @@ TrigPoly fourier(F&& h, int max_degree) {
   return p;
 }
 
+/// The sign changes of h on a dense scan (1440 samples), each bisected to a double's
+/// resolution: the candidates of slip directions when the root list is not proved complete.
+std::vector<double> sign_changes(const TrigPoly& h) {
+  constexpr int kScan = 1440;
+  std::vector<double> out;
+  const double step = 2 * kPi / kScan;
+  for (int j = 0; j < kScan; ++j) {
+    double a = step * j, b = step * (j + 1);
+    double ha = h(a);
+    if ((ha > 0) == (h(b) > 0)) continue;
+    for (int it = 0; it < 60 && b - a > 1e-15; ++it) {
+      const double c = (a + b) / 2, hc = h(c);
+      if ((hc > 0) == (ha > 0)) a = c, ha = hc; else b = c;
+    }
+    out.push_back(std::remainder((a + b) / 2, 2 * kPi));
+  }
+  return out;
+}
+
 /// Every real zero of h on the circle: the unit-circle roots of z^n h (a polynomial of degree
 /// 2n in z = e^{i phi}) by the eigenvalues of its companion matrix, refined by Newton's method
 /// on h, with a certificate (docs/contact_3d.md, "Every solution of a step"). A root is simple
 /// (|h'| clearly nonzero) or exactly double (h' = 0 there too, refined by Newton on h', with
 /// |h''| clearly nonzero): symmetric problems have double roots where two solutions share a
-/// slip direction. Returns false with `why` when the list is not proved complete.
+/// slip direction. Returns false with `why` when the list is not proved complete; `roots` then
+/// holds the unproved candidates (the roots found and the sign changes of h, issue 34: at
+/// cond(A) >= 1e8 a slip far from any critical load was not even tried).
+bool trig_roots_proved(const TrigPoly& h, double noise, std::vector<double>& roots,
+                       std::string& why, std::vector<double>& candidates);
+
 bool trig_roots(const TrigPoly& h, double noise, std::vector<double>& roots, std::string& why) {
+  std::vector<double> candidates;
+  if (trig_roots_proved(h, noise, roots, why, candidates)) return true;
+  roots = sign_changes(h);
+  roots.insert(roots.end(), candidates.begin(), candidates.end());
+  std::sort(roots.begin(), roots.end());
+  std::vector<double> u;  // one start per direction
+  for (double r : roots)
+    if (u.empty() || std::abs(r - u.back()) > 1e-9) u.push_back(r);
+  roots = u;
+  return false;
+}
+
+bool trig_roots_proved(const TrigPoly& h, double noise, std::vector<double>& roots,
+                       std::string& why, std::vector<double>& candidates) {
   roots.clear();
   const int n = h.degree;
   const double sc = h.scale();
@@ -316,6 +354,9 @@ bool trig_roots(const TrigPoly& h, double noise, std::vector<double>& roots, std
   };
   unique(simple);
   unique(twice);
+  candidates = simple;
+  candidates.insert(candidates.end(), twice.begin(), twice.end());
+  candidates.insert(candidates.end(), near.begin(), near.end());
   for (double r : twice)
     for (double q : simple)
       if (std::abs(std::remainder(r - q, 2 * kPi)) <= 1e-7) {
@@ -386,36 +427,63 @@ bool trig_roots(const TrigPoly& h, double noise, std::vector<double>& roots, std
 }
 
 /// Refines (x, l, phi) of a slip candidate by Newton's method on the three equations
-/// x u(t) + l v(t) + x l m - r = 0; `sigma` is the smallest singular value of the Jacobian's
-/// (x, l) columns at the end, `error` the resulting error bound of x and l. The direction is the root's (phi
-/// moves by rounding only); x and l may move more (from a candidate computed from two rows only).
-/// False when Newton does not converge there (the start is then kept).
-bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double& sigma,
-                 double& error) {
+/// x u(t) + l v(t) + x l m - r = 0; `error_x` and `error_l` bound the errors of x and l at the
+/// end: the rounding of F (and what is left of it) through the rows of the inverse Jacobian.
+/// The direction is the root's (phi moves by rounding only); x and l may move more (from a
+/// candidate computed from two rows only). False when Newton does not converge there.
+/// Issue 34: the iteration runs in long double on the scaled unknowns (x / |x|, l / |l|, phi),
+/// and each unknown has its own bound. At cond(A) >= 1e8 a slip can have lambda ~ 1e8 with
+/// P_N1 ~ 1: one bound for both (rounding / the smallest singular value of the (x, l) columns,
+/// mostly along l) was larger than P_N1, and the slip was dropped as "P_N1 at the rounding level".
+bool refine_slip(const SlipSystem& s, double& x, double& l, double& phi, double& error_x,
+                 double& error_l) {
+  using LD = long double;
+  using V2 = Eigen::Matrix<LD, 2, 1>;
+  using V3 = Eigen::Matrix<LD, 3, 1>;
+  const Eigen::Matrix<LD, 3, 3> A = s.A.cast<LD>();
+  const V3 m = s.m.cast<LD>(), r = s.r.cast<LD>();
+  const V2 alpha = s.alpha.cast<LD>();
+  const LD mu = s.mu, C_T = s.C_T;
+  auto u = [&](const V2& t) -> V3 {  // SlipSystem::u, affine; du without its constant 1
+    const V2 Dt = alpha.cwiseProduct(t);
+    return V3(mu * Dt(0), mu * Dt(1), 1) + A.leftCols<2>() * (C_T * mu * Dt);
+  };
+  auto du = [&](const V2& dt) -> V3 {
+    const V2 Dt = alpha.cwiseProduct(dt);
+    return V3(mu * Dt(0), mu * Dt(1), 0) + A.leftCols<2>() * (C_T * mu * Dt);
+  };
+  auto v = [&](const V2& t) -> V3 { return A.leftCols<2>() * t.cwiseQuotient(alpha); };
   const double phi0 = phi;
-  Eigen::Matrix3d J;
-  double res = INFINITY, size = 0;
-  for (int it = 0; it < 30; ++it) {
-    const Eigen::Vector2d t(std::cos(phi), std::sin(phi)), dt(-std::sin(phi), std::cos(phi));
-    const Eigen::Vector3d U = s.u(t), V = s.v(t);
-    const Eigen::Vector3d F = x * U + l * V + x * l * s.m - s.r;
+  const LD xs = std::max(1.0, std::abs(x)), ls = std::max(1.0, std::abs(l));
+  LD X = x, L = l, P = phi, res = INFINITY, size = 0;
+  Eigen::Matrix<LD, 3, 3> J;
+  for (int it = 0; it < 40; ++it) {
+    const V2 t(std::cos(P), std::sin(P)), dt(-std::sin(P), std::cos(P));
+    const V3 U = u(t), V = v(t);
+    const V3 F = X * U + L * V + X * L * m - r;
     res = F.cwiseAbs().maxCoeff();
-    size = std::abs(x) * U.norm() + std::abs(l) * V.norm() + std::abs(x * l) * s.m.norm() + s.r.norm();
-    J.col(0) = U + l * s.m;
-    J.col(1) = V + x * s.m;
-    J.col(2) = x * s.du(dt) + l * s.v(dt);
-    const Eigen::Vector3d d = J.fullPivLu().solve(F);
+    size = std::abs(X) * U.norm() + std::abs(L) * V.norm() + std::abs(X * L) * m.norm() + r.norm();
+    J.col(0) = (U + L * m) * xs;
+    J.col(1) = (V + X * m) * ls;
+    J.col(2) = X * du(dt) + L * v(dt);
+    const V3 d = J.fullPivLu().solve(F);
     if (!d.allFinite()) return false;
-    x -= d(0);
-    l -= d(1);
-    phi -= d(2);
-    if (d.cwiseAbs().maxCoeff() <= 1e-15 * (1 + std::abs(x) + std::abs(l))) break;
+    X -= d(0) * xs;
+    L -= d(1) * ls;
+    P -= d(2);
+    if (std::abs(d(0)) + std::abs(d(1)) + std::abs(d(2)) <= 1e-18L) break;
   }
-  // The sensitivity of (x, l) at the polished direction: the columns of x and l.
-  sigma = J.leftCols<2>().jacobiSvd().singularValues()(1);
-  // The rounding of F and what is left of it, through the (x, l) columns: the error of x, l.
-  error = (kRound * size + res) / std::max(sigma, 1e-300);
-  return std::isfinite(x) && std::isfinite(l) && std::isfinite(phi) && res <= 1e-9 * size &&
+  // The rounding of F (in double, where the values are used) and what is left of it, each
+  // component up to `delta`, moves x and l by at most |row of J^-1| delta (scaled back).
+  const LD delta = kRound * size + res;
+  const Eigen::Matrix<LD, 3, 3> Jinv = J.fullPivLu().inverse();
+  error_x = static_cast<double>(xs * Jinv.row(0).cwiseAbs().sum() * delta);
+  error_l = static_cast<double>(ls * Jinv.row(1).cwiseAbs().sum() * delta);
+  if (!std::isfinite(error_x) || !std::isfinite(error_l)) return false;
+  x = static_cast<double>(X);
+  l = static_cast<double>(L);
+  phi = static_cast<double>(P);
+  return std::isfinite(x) && std::isfinite(l) && std::isfinite(phi) && res <= 1e-9L * size &&
          std::abs(phi - phi0) <= 1e-4;
 }
 
@@ -700,26 +768,28 @@ Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
     for (const Eigen::Vector2d& xl : amounts) {
       double x = xl(0), l = xl(1), phi = root;
       // Newton on the three equations polishes (x, l, phi) to a backward error at the rounding
-      // level (the root of h is only as good as h's rounding); it also gives the rounding band
-      // of x and l (through the smallest singular value of its Jacobian). Two solutions sharing
+      // level (the root of h is only as good as h's rounding); it also gives the rounding bands
+      // of x and l (through the rows of its inverse Jacobian, one band each). Two solutions sharing
       // a direction (a double root) are taken as slip_amounts gives them.
-      double band = 1e-8 * (1 + std::abs(x) + std::abs(l));
+      double band_x = 1e-8 * (1 + std::abs(x) + std::abs(l)), band_l = band_x;
       bool resolved = true;  // (x, l) known well enough to read their signs
       if (amounts.size() == 1) {
-        double x1 = x, l1 = l, phi1 = phi, sigma = 0, error = 0;
-        resolved = refine_slip(s, x1, l1, phi1, sigma, error);
+        double x1 = x, l1 = l, phi1 = phi, error_x = 0, error_l = 0;
+        resolved = refine_slip(s, x1, l1, phi1, error_x, error_l);
         if (resolved) {
           x = x1, l = l1, phi = phi1;
-          band = std::max(1e-12 * (1 + std::abs(x) + std::abs(l)), error);
+          const double floor = 1e-12 * (1 + std::abs(x) + std::abs(l));
+          band_x = std::max(floor, error_x);
+          band_l = std::max(floor, error_l);
         }
       }
-      if (x < -band || l < -band) {  // not a slip (x, l must be positive)
+      if (x < -band_x || l < -band_l) {  // not a slip (x, l must be positive)
         if (!resolved)
           not_proved("the slip at phi = " + num(phi) + " could not be polished by Newton's "
                      "method (an ill-conditioned slip system): its sign is not decided");
         continue;
       }
-      if (x <= band) {
+      if (x <= band_x) {
         // P1 = 0 within rounding: the separation (P1 = 0, g1 = 0) listed above, or undecided.
         const bool listed = std::any_of(found.begin(), found.end(), [](const Step3dValues& f) {
           return f.P_N1 == 0 && f.P_T1.cwiseAbs().maxCoeff() == 0;
