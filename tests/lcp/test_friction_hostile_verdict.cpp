@@ -62,8 +62,8 @@ TEST_CASE("F4-01: a rank-1 contact without solution is never solved", "[friction
       CHECK_FALSE(accepted(s));
     }
     cpkit::lcp::friction::FrictionSolutionsOptions o;
-    o.common.time_limit_s = 10;
-    o.starts = 5;
+    o.common.time_limit_s = 4;
+    o.starts = 2;
     const auto set = cpkit::lcp::friction::friction_solutions(p, o);
     INFO(set.message);
     CHECK(set.solutions.empty());

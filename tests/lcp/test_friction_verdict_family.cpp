@@ -44,7 +44,7 @@ FrictionContactProblem make(const MatrixXd& W, const VectorXd& q, const VectorXd
 // Every registered friction solver on every `slow_every`-th problem; on the others the fast ones
 // (auto and ipopt spend about a second on a problem without solution, the rest milliseconds:
 // the suite's time budget).
-std::vector<std::string> friction_solvers(int problem, int slow_every = 6) {
+std::vector<std::string> friction_solvers(int problem, int slow_every = 12) {
   std::vector<std::string> out;
   for (const std::string& name : cpkit::lcp::solvers().names(cpkit::ProblemKind::kFrictionContact))
     if (problem % slow_every == 0 || (name != "auto" && name != "ipopt")) out.push_back(name);
@@ -128,7 +128,7 @@ TEST_CASE("verdict family: rank-1 contacts without a solution are never solved",
   // required below with a 1 % margin (so rounding cannot decide it).
   std::mt19937 rng(2026);
   int problems = 0, runs = 0;
-  for (int trial = 0; problems < 60 && trial < 20000; ++trial) {
+  for (int trial = 0; problems < 24 && trial < 20000; ++trial) {
     const Eigen::Vector3d h(std::ldexp(1.0, std::uniform_int_distribution<int>(-2, 1)(rng)),
                             dyadic(rng, -16, 16, 3), dyadic(rng, -16, 16, 3));
     const Eigen::Vector3d q(-dyadic(rng, 1, 32, 3), dyadic(rng, -32, 32, 3), dyadic(rng, -32, 32, 3));
@@ -147,8 +147,8 @@ TEST_CASE("verdict family: rank-1 contacts without a solution are never solved",
       ++runs;
     }
   }
-  CHECK(problems == 60);
-  CHECK(runs >= 60 * 4);
+  CHECK(problems == 24);
+  CHECK(runs >= 24 * 4);
 }
 
 TEST_CASE("verdict family: a small body beside a large one is judged in its own units",
@@ -206,7 +206,7 @@ TEST_CASE("verdict family: huge friction coefficients, one contact", "[friction]
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> U(0, 1);
   int problems = 0, accepted_runs = 0, compared = 0;
-  for (int trial = 0; trial < 50; ++trial) {
+  for (int trial = 0; trial < 30; ++trial) {
     Eigen::Matrix3d J;
     for (int i = 0; i < 9; ++i) J(i / 3, i % 3) = g(rng);
     const Eigen::Matrix3d W = J * J.transpose() + 0.1 * Eigen::Matrix3d::Identity();
@@ -232,9 +232,9 @@ TEST_CASE("verdict family: huge friction coefficients, one contact", "[friction]
       }
     }
   }
-  CHECK(problems == 50);
-  CHECK(accepted_runs >= 50);
-  CHECK(compared >= 25);
+  CHECK(problems == 30);
+  CHECK(accepted_runs >= 30);
+  CHECK(compared >= 15);
 }
 
 TEST_CASE("verdict family: random rank-deficient W, the law re-checked in quadruple precision",
@@ -243,7 +243,7 @@ TEST_CASE("verdict family: random rank-deficient W, the law re-checked in quadru
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> U(0.1, 1.0);
   int accepted_runs = 0;
-  for (int trial = 0; trial < 150; ++trial) {
+  for (int trial = 0; trial < 90; ++trial) {
     const int nc = 1 + trial % 3, m = 1 + trial % (3 * nc - 1);  // rank m < 3 nc
     MatrixXd J(3 * nc, m);
     for (int i = 0; i < J.size(); ++i) J(i % J.rows(), i / J.rows()) = g(rng);
@@ -259,7 +259,7 @@ TEST_CASE("verdict family: random rank-deficient W, the law re-checked in quadru
       CHECK(law_violation(p, res.z, quad_velocity(p, res.z)) <= 1e-6);
     }
   }
-  CHECK(accepted_runs >= 150);
+  CHECK(accepted_runs >= 90);
 }
 
 TEST_CASE("verdict family: global problems with a rigid mode never solved with penetration",
