@@ -156,9 +156,10 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
         " unknowns): " + std::to_string(fs.extreme) + " extreme LCP solutions, " +
         std::to_string(fs.r.size()) + " distinct r, enumeration " +
         (fs.complete ? "complete for the faceted problem" : "NOT complete (" + fs.message + ")") +
-        (fs.infinite ? ", with continua in the LCP's facet multipliers (listed by their "
-                       "vertices; " + std::to_string(fs.r.size()) + " distinct r)"
-                     : "") +
+        (!fs.infinite       ? ""
+         : fs.r.size() > 1 ? ", with continua (listed by their vertices)"
+                           : ", infinitely many LCP solutions (in the facet multipliers) giving "
+                             "the same r") +
         "; " +
         std::to_string(col.verified) +
         " of them verified on the true cone (exact or polished); "
