@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it after
-# scripts/run-tests.sh). Any sanitizer report fails the run: UBSan does not recover, ASan aborts.
+# scripts/run-tests.sh), and the Python module's hostile-input tests against the module built so.
+# Any sanitizer report fails the run: UBSan does not recover, ASan aborts.
 # LeakSanitizer is off: Ipopt and MUMPS keep static allocations alive until exit.
 # Build dir: ${CPKIT_SANITIZER_BUILD_DIR:-build-sanitize}.
 set -euo pipefail
@@ -14,12 +15,23 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 # A = A + A.transpose(), sizes, indices) run here, where the release build compiles them out.
 # -O1 -g1 compiles in half the time of RelWithDebInfo's -O2 -g (measured on system_step.cpp:
 # 56 s against 113 s, objects of 19 MB against 73 MB) and keeps file:line in every report.
-# The Python module is not built here: an ASan-instrumented extension cannot be loaded into
-# the uninstrumented /usr/bin/python3 (the ASan runtime must come first).
+# The Python module is built instrumented too, and its hostile-input tests run here (the FCLIB
+# reader and the sparse-matrix conversions under Python: python/CMakeLists.txt). The uninstrumented
+# /usr/bin/python3 loads it only with the sanitizer runtimes preloaded (they must come first);
+# the tests' child interpreters inherit LD_PRELOAD and ASAN_OPTIONS, so a report there kills the
+# child and fails its test. The module is linked with the runtimes too, so that loading it
+# without them fails with ASan's own message rather than an undefined symbol.
+preload=""
+for lib in libasan.so libubsan.so; do
+  path=$("${CXX:-c++}" -print-file-name="$lib")
+  [[ -f "$path" ]] || { echo "run-sanitizers.sh: ${CXX:-c++} does not find $lib (install libasan/libubsan)" >&2; exit 1; }
+  preload+="${preload:+ }$path"
+done
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCPKIT_BUILD_BENCH=OFF \
-  -DCPKIT_BUILD_PYTHON=OFF \
+  -DCPKIT_BUILD_PYTHON=ON "-DCPKIT_PYTHON_PRELOAD=$preload" \
   "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
   "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" \
+  "-DCMAKE_MODULE_LINKER_FLAGS=-fsanitize=address,undefined" \
   "${launcher[@]}" "$@" >/dev/null
 cmake --build "$build" -j "$(nproc)"
 cd "$build"
