@@ -33,7 +33,9 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCPKIT_BUILD_BEN
   "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined" \
   "-DCMAKE_MODULE_LINKER_FLAGS=-fsanitize=address,undefined" \
   "${launcher[@]}" "$@" >/dev/null
+t0=$SECONDS
 cmake --build "$build" -j "$(nproc)"
+echo "run-sanitizers.sh: the instrumented build took $((SECONDS - t0)) s"
 cd "$build"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -42,4 +44,6 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # rate_problem.test_system_simulation, and the Release suite runs the example itself.
 export CPKIT_DOCS_CHECK_SKIP="flat_punch_fretting.json"
 # The consumer test installs and rebuilds the package without sanitizers: run in the main suite.
+t0=$SECONDS
 ctest --output-on-failure -j "$(nproc)" --timeout 1200 -E '^install\.'
+echo "run-sanitizers.sh: the instrumented suite took $((SECONDS - t0)) s"
