@@ -85,6 +85,8 @@ GUIDE = "#dddddd"          # zero lines, guide rings
 FAINT = "#f2f2f2"          # empty rings of the direction map
 AXIS = "#888888"           # the load axes of the direction map
 NO_SLIP = "#bbbbbb"        # a slip path segment without slip
+# Time and its order (steps, cycles): this colour map, in every picture.
+TIME_CMAP = "viridis"
 # Curves of one picture told apart by colour (solvers of a profile, cycles of a wear profile):
 # Okabe-Ito's order; past its length the colours repeat with another line style.
 SERIES = ["#0072b2", "#e69f00", "#009e73", "#cc79a7", "#56b4e9", "#d55e00", "#f0e442",
