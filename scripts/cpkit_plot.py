@@ -248,7 +248,7 @@ def zoom_narrow_sector(fig, ax, summary, present, r_out):
                 continue
             for t in s["types"]:
                 ins.broken_barh([(b0, b1 - b0)], (rows[t] + 0.1, 0.8),
-                                facecolors=pc.TYPE_COLOURS[t], edgecolor="white", linewidth=0.5)
+                                facecolors=pc.TYPE_COLOURS[t], edgecolor=pc.PAPER, linewidth=0.5)
     for c in summary["critical"]:
         th = math.degrees(c["theta"] % full)
         for v in (th - 360.0, th, th + 360.0):
@@ -293,7 +293,7 @@ def plot_direction(summary, base, plt):
         a0, a1 = math.degrees(s["theta_from"]), math.degrees(s["theta_to"])
         for t in s["types"]:
             ax.add_patch(Wedge((0, 0), ring[t] + width, a0, a1, width=width,
-                               facecolor=pc.TYPE_COLOURS[t], edgecolor="white", linewidth=0.5))
+                               facecolor=pc.TYPE_COLOURS[t], edgecolor=pc.PAPER, linewidth=0.5))
         mid = 0.5 * (s["theta_from"] + s["theta_to"])
         n = s["count"]
         # The circle is filled with the count's colour (as in the count maps), its text in
@@ -303,7 +303,7 @@ def plot_direction(summary, base, plt):
         label = "inf" if n == "inf" else str(n)
         ax.text((r_out + 0.12) * math.cos(mid), (r_out + 0.12) * math.sin(mid), label,
                 ha="center", va="center", fontsize=13, fontweight="bold",
-                color="white" if dark else pc.INK,
+                color=pc.PAPER if dark else pc.INK,
                 bbox=dict(boxstyle="circle,pad=0.25", facecolor=face, edgecolor=pc.INK,
                           linewidth=0.8))
     for c in summary["critical"]:

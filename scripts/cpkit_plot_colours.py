@@ -17,13 +17,13 @@ import zlib
 NO_SOLUTION = "#d62728"  # a cell or point with no solution: count 0 and type "no solution"
 
 # Solution counts per cell ("inf": a continuum of solutions).
-COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#dcdcdc", "2": "#c6b5dd", "3": "#7b4fa6",
-                 "4": "#3f1d6b", "inf": "#000000"}
+COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#dcdcdc", "2": "#ffccff", "3": "#4433aa",
+                 "4": "#772277", "inf": "#000000"}
 COUNT_OTHER = "#808080"  # 5 solutions or more (never seen in a map so far)
 
 # Param-param maps: each cell classified over all load directions.
 CLASS_ORDER = ["unique", "non-unique", "no-solution", "none-and-several"]
-CLASS_COLOURS = {"unique": "#f6f3df", "non-unique": "#9986c9", "no-solution": "#f4a582",
+CLASS_COLOURS = {"unique": "#f6f3df", "non-unique": "#8877ff", "no-solution": "#f4a582",
                  "none-and-several": "#a6216f"}
 CLASS_LABELS = {"unique": "unique for every direction",
                 "non-unique": "several solutions for some directions",
@@ -47,39 +47,40 @@ STATE_COLOURS = {"a": TYPE_COLOURS["open"], "b": GRAZING, "c": TYPE_COLOURS["sti
 # solutions): the subsets of the 2-D types {separation, stick, slip+, slip-} and of the 3-D
 # types {open, separation, stick, slip} (separation + stick is common to both).
 COMBO_COLOURS = {
-    ("separation", "stick", "slip+"): "#55ff99",
-    ("stick", "slip+"): "#99bb77",
-    ("separation", "stick", "slip"): "#006655",
-    ("separation", "slip"): "#0099aa",
-    ("stick", "slip"): "#aaaa11",
-    ("separation", "stick"): "#77ccaa",
-    ("stick", "slip-"): "#ee88ff",
-    ("separation", "stick", "slip-"): "#227722",
-    ("separation", "stick", "slip+", "slip-"): "#995555",
-    ("open", "separation", "stick", "slip"): "#ff4477",
-    ("separation", "slip+", "slip-"): "#2277ee",
-    ("stick", "slip+", "slip-"): "#dd7733",
-    ("open", "separation", "stick"): "#eecc99",
-    ("open", "separation", "slip"): "#667744",
-    ("open", "stick", "slip"): "#44cc66",
-    ("separation", "slip+"): "#88eeff",
-    ("separation", "slip-"): "#aadd55",
-    ("slip+", "slip-"): "#cc7777",
-    ("open", "separation"): "#4499ee",
-    ("open", "stick"): "#ffccff",
-    ("open", "slip"): "#666600",
+    ("separation", "stick", "slip+"): "#664444",
+    ("stick", "slip+"): "#88ffaa",
+    ("separation", "stick", "slip"): "#aabb99",
+    ("separation", "slip"): "#336666",
+    ("stick", "slip"): "#667744",
+    ("separation", "stick"): "#776688",
+    ("stick", "slip-"): "#55cccc",
+    ("separation", "stick", "slip-"): "#882200",
+    ("separation", "stick", "slip+", "slip-"): "#bbaaaa",
+    ("open", "separation", "stick", "slip"): "#6699ff",
+    ("separation", "slip+", "slip-"): "#ff6677",
+    ("stick", "slip+", "slip-"): "#dd6611",
+    ("open", "separation", "stick"): "#aa55dd",
+    ("open", "separation", "slip"): "#ffddcc",
+    ("open", "stick", "slip"): "#77cc55",
+    ("separation", "slip+"): "#aa0044",
+    ("separation", "slip-"): "#776611",
+    ("slip+", "slip-"): "#ddbb88",
+    ("open", "separation"): "#3355aa",
+    ("open", "stick"): "#999944",
+    ("open", "slip"): "#aa99bb",
 }
 
 # N-point patterns (the type tuples present in a cell, "stick/slip+"): a pattern of one tuple
 # whose points all have one type ("stick/stick": every point sticks) has that type's colour;
 # any other pattern a colour of this palette chosen by a checksum of its canonical name, fixed
 # for that pattern in every picture.
-PATTERN_PALETTE = ["#ffaabb", "#885500", "#669900", "#bbeebb", "#cc55cc", "#00eedd", "#cc0055",
-                   "#3355aa", "#99bbff", "#cccc88", "#bb9955", "#996699", "#ffcc55", "#55bbcc",
-                   "#bb5577", "#669966"]
+PATTERN_PALETTE = ["#555544", "#007711", "#ccee99", "#00ddaa", "#445566", "#99bbbb", "#669955",
+                   "#cc8888", "#664400", "#229999", "#886666", "#aabbdd", "#aa8800", "#557788",
+                   "#bb33aa", "#ffbbbb"]
 
 # Lines and marks that are not classes (axes, guides, cell edges in legends, curves).
 INK = "#000000"            # critical directions and values, the friction limit, data curves
+PAPER = "#ffffff"          # gaps between rings, text on dark fills
 EDGE = "#999999"           # legend patch edges
 GUIDE = "#dddddd"          # zero lines, guide rings
 FAINT = "#f2f2f2"          # empty rings of the direction map
