@@ -17,13 +17,13 @@ import zlib
 NO_SOLUTION = "#d62728"  # a cell or point with no solution: count 0 and type "no solution"
 
 # Solution counts per cell ("inf": a continuum of solutions).
-COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#dcdcdc", "2": "#ffccff", "3": "#4433aa",
-                 "4": "#772277", "inf": "#000000"}
+COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#dcdcdc", "2": "#ffbbff", "3": "#663399",
+                 "4": "#3f007d", "inf": "#000000"}
 COUNT_OTHER = "#808080"  # 5 solutions or more (never seen in a map so far)
 
 # Param-param maps: each cell classified over all load directions.
 CLASS_ORDER = ["unique", "non-unique", "no-solution", "none-and-several"]
-CLASS_COLOURS = {"unique": "#f6f3df", "non-unique": "#8877ff", "no-solution": "#f4a582",
+CLASS_COLOURS = {"unique": "#f6f3df", "non-unique": "#bb66dd", "no-solution": "#f4a582",
                  "none-and-several": "#a6216f"}
 CLASS_LABELS = {"unique": "unique for every direction",
                 "non-unique": "several solutions for some directions",
@@ -52,22 +52,22 @@ COMBO_COLOURS = {
     ("separation", "stick", "slip"): "#aabb99",
     ("separation", "slip"): "#336666",
     ("stick", "slip"): "#667744",
-    ("separation", "stick"): "#776688",
-    ("stick", "slip-"): "#55cccc",
-    ("separation", "stick", "slip-"): "#882200",
-    ("separation", "stick", "slip+", "slip-"): "#bbaaaa",
-    ("open", "separation", "stick", "slip"): "#6699ff",
+    ("separation", "stick"): "#6677ff",
+    ("stick", "slip-"): "#776688",
+    ("separation", "stick", "slip-"): "#55cccc",
+    ("separation", "stick", "slip+", "slip-"): "#882200",
+    ("open", "separation", "stick", "slip"): "#bbaaaa",
     ("separation", "slip+", "slip-"): "#ff6677",
     ("stick", "slip+", "slip-"): "#dd6611",
-    ("open", "separation", "stick"): "#aa55dd",
-    ("open", "separation", "slip"): "#ffddcc",
-    ("open", "stick", "slip"): "#77cc55",
+    ("open", "separation", "stick"): "#ffddcc",
+    ("open", "separation", "slip"): "#77cc55",
+    ("open", "stick", "slip"): "#880077",
     ("separation", "slip+"): "#aa0044",
     ("separation", "slip-"): "#776611",
-    ("slip+", "slip-"): "#ddbb88",
-    ("open", "separation"): "#3355aa",
+    ("slip+", "slip-"): "#0055bb",
+    ("open", "separation"): "#ddbb88",
     ("open", "stick"): "#999944",
-    ("open", "slip"): "#aa99bb",
+    ("open", "slip"): "#6699ee",
 }
 
 # N-point patterns (the type tuples present in a cell, "stick/slip+"): a pattern of one tuple
@@ -75,8 +75,8 @@ COMBO_COLOURS = {
 # any other pattern a colour of this palette chosen by a checksum of its canonical name, fixed
 # for that pattern in every picture.
 PATTERN_PALETTE = ["#555544", "#007711", "#ccee99", "#00ddaa", "#445566", "#99bbbb", "#669955",
-                   "#cc8888", "#664400", "#229999", "#886666", "#aabbdd", "#aa8800", "#557788",
-                   "#bb33aa", "#ffbbbb"]
+                   "#cc8888", "#664400", "#bbaacc", "#229999", "#886666", "#994499", "#aa8800",
+                   "#557788", "#ffbbbb"]
 
 # Lines and marks that are not classes (axes, guides, cell edges in legends, curves).
 INK = "#000000"            # critical directions and values, the friction limit, data curves
