@@ -408,7 +408,8 @@ def plot_param_param(summary, base, plt):
     cls = cls.T
     edges = cell_edges
     fig, ax = plt.subplots(figsize=(7.5, 6))
-    ax.pcolormesh(edges(xs), edges(ys), cls, cmap=ListedColormap([pc.CLASS_COLOURS[c] for c in classes]),
+    ax.pcolormesh(edges(xs), edges(ys), cls,
+                  cmap=ListedColormap([pc.CLASS_COLOURS[c] for c in classes]),
                   norm=BoundaryNorm([k - 0.5 for k in range(len(classes) + 1)], len(classes)), shading="flat", rasterized=True)
     handles = [Patch(facecolor=pc.CLASS_COLOURS[c], edgecolor=pc.EDGE, label=pc.CLASS_LABELS[c])
                for c in classes if (cls == classes.index(c)).any()]

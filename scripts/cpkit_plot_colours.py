@@ -1,14 +1,20 @@
 """The one palette of every cpkit picture (scripts/cpkit_plot*.py, scripts/plot_profiles.py):
 one fixed colour and one label per class -- solution count, class over all directions, solution
 type, combination of types, contact state, N-point pattern -- whatever picture it appears in.
-No other script defines a colour (tests/scripts/test_plot_colours.py checks it).
+No other script defines a colour (tests/scripts/test_plot_colours.py checks it, and measures
+the distances below).
 
 How the colours were chosen (issue 37): the single types are the Okabe-Ito colour-blind-safe
 palette; counts and the classes over all directions are greys, purples and reds ("how many":
 grey one, purples several, red none); every combination of types and every N-point pattern
 colour was picked greedily to be as far as possible, in the DIN99o colour space and under
 simulated deuteranopia and protanopia (Machado 2009), from every colour before it. No colour
-means two things: the test measures every pair.
+means two things: any two classes are at least 11 DIN99o units apart, any two colours of the
+type panels (2-D and 3-D) at least 16, any two that one picture can show together at least 13
+(7 under deuteranopia or protanopia); the old clashes were 7.4 (the blues of "3 solutions" and
+separation, 1.5 under deuteranopia) and 14.6 (the two yellows). An N-point pattern's colour
+is fixed for that pattern, but patterns are unbounded: two patterns in two pictures may share
+one of the 16 palette colours (never two in one picture); read them by their legend.
 
 Pure Python (no matplotlib), so it can be tested alone. Installed next to the scripts
 (share/cpkit)."""

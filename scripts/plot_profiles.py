@@ -82,7 +82,8 @@ def main() -> int:
         title += "\n" + cpu
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)  # off the curves
+    # Outside the axes, so that it never covers a curve.
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     fig.tight_layout()
     out = os.path.join(directory, "profile.png")
     fig.savefig(out, dpi=110, bbox_inches="tight")

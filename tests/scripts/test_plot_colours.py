@@ -113,7 +113,8 @@ check(pc.combination_label("none") == pc.count_label(0) == "no solution",
 check(pc.count_colour(-1) == pc.count_colour("inf") and pc.count_label(-1) == pc.count_label("inf"),
       "a continuum: one colour and label for -1 and 'inf'")
 # Fixed: a combination's colour does not depend on which other combinations a map holds.
-check(pc.combination_colour("stick|separation|slip+") == pc.combination_colour("separation|slip+|stick"),
+check(pc.combination_colour("stick|separation|slip+") ==
+      pc.combination_colour("separation|slip+|stick"),
       "separation+stick+slip+ the same in two maps")
 
 # --- 3. no colour means two things ----------------------------------------------------------
@@ -154,15 +155,16 @@ check(pc.STATE_COLOURS["a"] == pc.TYPE_COLOURS["open"] and
 # (1.5 under deuteranopia).
 ALL_PICTURES, TYPE_PANELS, ONE_PICTURE, CVD = 11.0, 16.0, 13.0, 7.0
 everything = sorted(classes)
-worst = min((distance(a, b), classes[a], classes[b]) for a, b in itertools.combinations(everything, 2))
+worst = min((distance(a, b), classes[a], classes[b])
+            for a, b in itertools.combinations(everything, 2))
 check(worst[0] >= ALL_PICTURES, "any two classes at least %g apart (closest %.1f: %s / %s)" %
       (ALL_PICTURES, worst[0], sorted(worst[1]), sorted(worst[2])))
 # The type panels of all maps (2-D and 3-D, singles and combinations): further apart still, so
 # that a colour seen in one type panel is never taken for another class in another.
 type_panels = sorted({pc.combination_colour(c) for c in subsets(T2) + subsets(T3)})
 d, a, b = min((distance(a, b), a, b) for a, b in itertools.combinations(type_panels, 2))
-check(d >= TYPE_PANELS, "%d type-panel colours of all maps at least %g apart (closest %.1f: %s / %s)"
-      % (len(type_panels), TYPE_PANELS, d, a, b))
+check(d >= TYPE_PANELS, "%d type-panel colours of all maps at least %g apart "
+      "(closest %.1f: %s / %s)" % (len(type_panels), TYPE_PANELS, d, a, b))
 counts = [pc.count_colour(k) for k in ["0", "1", "2", "3", "4", "inf"]]
 pictures = {
     "2-D count and type panels": counts + [pc.combination_colour(c) for c in subsets(T2)],
@@ -181,7 +183,8 @@ for name, colours in pictures.items():
         check(d >= least, "%s, %s: any two at least %g apart (closest %.1f: %s / %s)" %
               (name, vision or "normal vision", least, d, a, b))
 # The measure is a real one: the old clashes of issue 37 fail it.
-check(distance("#ffd92f", "#e6ab02") < TYPE_PANELS and distance("#1f77b4", "#4c72b0") < ONE_PICTURE and
+check(distance("#ffd92f", "#e6ab02") < TYPE_PANELS and
+      distance("#1f77b4", "#4c72b0") < ONE_PICTURE and
       distance("#1f77b4", "#4c72b0", "deuteranopia") < CVD,
       "the distance check would have caught the old yellow/yellow and blue/blue clashes")
 
