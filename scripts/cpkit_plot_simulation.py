@@ -37,6 +37,21 @@ def main(argv):
     out = args["out"]
     title = "cpkit simulate (%s, %s wear)" % (summary.get("criterion", "?"),
                                                summary.get("wear_law", "?"))
+    # The parameters and the load the run was computed at (the summary's "settings").
+    settings = summary.get("settings", {})
+    par = settings.get("parameters", {})
+    if par:
+        title += "\n" + ", ".join("%s = %g" % (k, par[k])
+                                  for k in ("a11", "a12", "a22", "mu", "C_T", "k_a", "P_s")
+                                  if k in par)
+    load = settings.get("load", {})
+    if load.get("type") == "fretting":
+        title += "\nfretting load: F_N = %g, F_T amplitude %g, period %g, %g cycles" % (
+            load.get("F_N"), load.get("amplitude"), load.get("period"), load.get("cycles"))
+    elif load.get("type") == "ramp":
+        title += "\nramp load: F from (%g, %g) to (%g, %g) in %g steps" % (
+            load.get("F_T0"), load.get("F_N0"), load.get("F_T1"), load.get("F_N1"),
+            load.get("steps"))
     outcome = summary.get("outcome")
     if outcome and outcome != "completed":
         title += " (stopped: %s)" % outcome
@@ -53,11 +68,11 @@ def main(argv):
     ax.axhline(0, color=pc.GUIDE, lw=0.6)
     ax.set_xlabel("tangential displacement $w_T$")
     ax.set_ylabel("tangential contact force $P_T$")
-    ax.set_title("fretting loop (colour: time)\n" + title)
+    ax.set_title("fretting loop (colour: time)\n" + title, fontsize=9)
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
     fig.colorbar(sm, ax=ax, label="t")
     fig.tight_layout()
-    series.save(plt, fig, out + "_loop", args["formats"], 110)
+    series.save(plt, fig, out + "_loop", args["formats"], 110, bbox_inches="tight")
 
     # 2. Wear depth against cycles (or time when the run has no period).
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -72,9 +87,9 @@ def main(argv):
         ax.plot(t, s["w_w"], color=pc.series_colour(0), label="wear depth $w^w$")
         ax.set_xlabel("t")
     ax.set_ylabel("wear depth $w^w$")
-    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title))
+    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title), fontsize=9)
     fig.tight_layout()
-    series.save(plt, fig, out + "_wear", args["formats"], 110)
+    series.save(plt, fig, out + "_wear", args["formats"], 110, bbox_inches="tight")
 
     # 3. Contact state and solution type over time.
     heat = "temperature" in summary
@@ -86,7 +101,7 @@ def main(argv):
         ax.scatter(xs, [k] * len(xs), s=4, color=pc.STATE_COLOURS[lab])
     ax.set_yticks(range(4))
     ax.set_yticklabels([pc.STATE_LABELS[k] for k in pc.STATE_ORDER])
-    ax.set_title("contact state and step solutions over time\n" + title)
+    ax.set_title("contact state and step solutions over time\n" + title, fontsize=9)
     ax = axes[1]
     for k, typ in enumerate(TYPE_ORDER):
         xs = [t[i] for i in range(n) if s["type"][i] == typ]
@@ -103,7 +118,7 @@ def main(argv):
         axes[2].set_ylabel("interface T")
     axes[-1].set_xlabel("t")
     fig.tight_layout()
-    series.save(plt, fig, out + "_state", args["formats"], 110)
+    series.save(plt, fig, out + "_state", args["formats"], 110, bbox_inches="tight")
     return 0
 
 
