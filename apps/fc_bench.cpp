@@ -5,6 +5,7 @@
 
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/maps/map_files.hpp"
 #include "data_files.hpp"
 #include "output_guard.hpp"
@@ -39,8 +40,10 @@ int run_fc_bench(const FcBenchArgs& a) {
   if (a.no_plot) return kExitOk;
   std::string searched;
   const std::string script = find_data_file("cpkit_plot_fc_profile.py", &searched);
-  const std::vector<std::string> argv = {plot_python(), script, "--csv", csv, "--out",
-                                         a.out + ".png"};
+  // The picture says the tolerance and time limit the table was computed with.
+  const std::vector<std::string> argv = {
+      plot_python(), script, "--csv", csv, "--out", a.out + ".png",
+      "--tol", num_text(bench.options.tol), "--time-limit", num_text(bench.options.time_limit_s)};
   if (script.empty()) {
     std::cerr << "cpkit fc bench: cpkit_plot_fc_profile.py not found (looked in " << searched
               << "); the CSV is written, no profile\n";

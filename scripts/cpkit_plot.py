@@ -33,18 +33,9 @@ EXIT_NO_MATPLOTLIB = 5
 
 # The script's own folder (share/cpkit when installed); sys.argv[0] when run without __file__.
 sys.path.insert(0, os.path.dirname(os.path.abspath(globals().get("__file__") or sys.argv[0])))
-from cpkit_plot_colours import (NO_SOLUTION, TYPE_COLOURS, combination_colour,  # noqa: E402
-                                pattern_colours, pattern_key)
+import cpkit_plot_colours as pc  # noqa: E402  (the one palette of every picture)
 
 TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]  # rings of the direction map
-COUNT_COLOURS = {"0": NO_SOLUTION, "1": "#e8e8e8", "2": "#f2b134", "3": "#1f77b4",
-                 "4": "#9467bd", "inf": "#000000"}
-CLASS_COLOURS = {"unique": "#cfe8cf", "non-unique": "#f2b134", "no-solution": NO_SOLUTION,
-                 "none-and-several": "#8c2d8c"}
-CLASS_LABELS = {"unique": "unique for every direction",
-                "non-unique": "several solutions for some directions",
-                "no-solution": "no solution for some directions, one for the others",
-                "none-and-several": "no solution for some directions, several for others"}
 
 
 def fail(msg, code=EXIT_BAD_INPUT):
@@ -160,8 +151,16 @@ def cell_edges(v, lo=None, hi=None):
     return e
 
 
-def count_key(c):
-    return "inf" if c == "inf" or c == -1 else str(c)
+count_key = pc.count_key
+
+
+def theta_window(lo, hi):
+    """'' for the full circle, else ' in [lo, hi] rad (a to b degrees)', written after
+    "theta": a zoomed map says which directions it shows."""
+    if lo == 0 and abs(hi - 2 * math.pi) < 1e-12:
+        return ""
+    return " in [%.4g, %.4g] rad (%.4g to %.4g degrees)" % (lo, hi, math.degrees(lo),
+                                                            math.degrees(hi))
 
 
 def legend_below(ax, handles, ncol=1, title=None, fontsize=8):
@@ -237,7 +236,7 @@ def zoom_narrow_sector(fig, ax, summary, present, r_out):
     pad = 0.6 * (d1 - d0)
     lo, hi = d0 - pad, d1 + pad
     ax.add_patch(Wedge((0, 0), r_out + 0.02, lo, hi, width=r_out - 0.3, facecolor="none",
-                       edgecolor="black", linestyle="--", linewidth=0.8))
+                       edgecolor=pc.INK, linestyle="--", linewidth=0.8))
     ins = fig.add_axes([0.07, 0.70, 0.34, 0.15])
     rows = {t: k for k, t in enumerate(reversed(present))}
     full = 2 * math.pi
@@ -249,12 +248,12 @@ def zoom_narrow_sector(fig, ax, summary, present, r_out):
                 continue
             for t in s["types"]:
                 ins.broken_barh([(b0, b1 - b0)], (rows[t] + 0.1, 0.8),
-                                facecolors=TYPE_COLOURS[t], edgecolor="white", linewidth=0.5)
+                                facecolors=pc.TYPE_COLOURS[t], edgecolor=pc.PAPER, linewidth=0.5)
     for c in summary["critical"]:
         th = math.degrees(c["theta"] % full)
         for v in (th - 360.0, th, th + 360.0):
             if lo <= v <= hi:
-                ins.axvline(v, color="black", lw=0.8)
+                ins.axvline(v, color=pc.INK, lw=0.8)
     ins.set_xlim(lo, hi)
     ins.set_ylim(0, len(present))
     ins.set_yticks([rows[t] + 0.5 for t in present])
@@ -282,47 +281,52 @@ def plot_direction(summary, base, plt):
     r_out = r0 + len(present) * (width + 0.02)
     # Faint guide circles and the load axes.
     for t in present:
-        ax.add_patch(Wedge((0, 0), ring[t] + width, 0, 360, width=width, facecolor="#f2f2f2",
+        ax.add_patch(Wedge((0, 0), ring[t] + width, 0, 360, width=width, facecolor=pc.FAINT,
                            edgecolor="none"))
     ax.annotate("", xy=(1.45, 0), xytext=(-1.45, 0),
-                arrowprops=dict(arrowstyle="->", color="#888888", lw=0.8))
+                arrowprops=dict(arrowstyle="->", color=pc.AXIS, lw=0.8))
     ax.annotate("", xy=(0, 1.45), xytext=(0, -1.45),
-                arrowprops=dict(arrowstyle="->", color="#888888", lw=0.8))
+                arrowprops=dict(arrowstyle="->", color=pc.AXIS, lw=0.8))
     ax.text(1.47, -0.08, r"$\dot F_T$", fontsize=12, ha="left")
     ax.text(0.04, 1.47, r"$\dot F_N$", fontsize=12, va="bottom")
     for s in summary["sectors"]:
         a0, a1 = math.degrees(s["theta_from"]), math.degrees(s["theta_to"])
         for t in s["types"]:
             ax.add_patch(Wedge((0, 0), ring[t] + width, a0, a1, width=width,
-                               facecolor=TYPE_COLOURS[t], edgecolor="white", linewidth=0.5))
+                               facecolor=pc.TYPE_COLOURS[t], edgecolor=pc.PAPER, linewidth=0.5))
         mid = 0.5 * (s["theta_from"] + s["theta_to"])
         n = s["count"]
-        colour = "#d62728" if n == 0 else ("black" if n in (1,) else "#1f4e9c")
+        # The circle is filled with the count's colour (as in the count maps), its text in
+        # white where that colour is dark.
+        face = pc.count_colour(n)
+        dark = pc.count_key(n) in ("0", "3", "4", "inf")
         label = "inf" if n == "inf" else str(n)
         ax.text((r_out + 0.12) * math.cos(mid), (r_out + 0.12) * math.sin(mid), label,
-                ha="center", va="center", fontsize=13, fontweight="bold", color=colour,
-                bbox=dict(boxstyle="circle,pad=0.25", facecolor="white", edgecolor=colour,
+                ha="center", va="center", fontsize=13, fontweight="bold",
+                color=pc.PAPER if dark else pc.INK,
+                bbox=dict(boxstyle="circle,pad=0.25", facecolor=face, edgecolor=pc.INK,
                           linewidth=0.8))
     for c in summary["critical"]:
         th = c["theta"]
-        ax.plot([0, 1.35 * math.cos(th)], [0, 1.35 * math.sin(th)], color="black", lw=1.0)
+        ax.plot([0, 1.35 * math.cos(th)], [0, 1.35 * math.sin(th)], color=pc.INK, lw=1.0)
         # Types present on the critical direction itself: dots on the rings.
         for t in c["types"]:
             rr = ring[t] + 0.5 * width
             ax.plot([rr * math.cos(th)], [rr * math.sin(th)], "o", ms=5,
-                    markerfacecolor=TYPE_COLOURS[t], markeredgecolor="black", markeredgewidth=0.6)
+                    markerfacecolor=pc.TYPE_COLOURS[t], markeredgecolor=pc.INK, markeredgewidth=0.6)
         lab = "%s\n%.4f (%s)" % (", ".join(c["conditions"]), th, count_key(c["count"]))
         ha = "left" if math.cos(th) >= 0 else "right"
         ax.text(1.37 * math.cos(th), 1.37 * math.sin(th), lab, fontsize=7.5, ha=ha,
                 va="center")
     zoom_narrow_sector(fig, ax, summary, present, r_out)
-    handles = [Patch(facecolor=TYPE_COLOURS[t], label=t) for t in present]
+    handles = [Patch(facecolor=pc.TYPE_COLOURS[t], label=t) for t in present]
     fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.045), fontsize=9,
                title="solution types (one ring each, inner to outer)", title_fontsize=9,
                frameon=False, ncol=len(handles))
     fig.suptitle("Rate problem: solutions per load direction\n" + model_title(summary),
                  fontsize=10.5)
-    fig.text(0.5, 0.015, "circled numbers: solutions per sector; rays: critical directions "
+    fig.text(0.5, 0.015, "circled numbers: solutions per sector (filled in the count colours); "
+             "rays: critical directions "
              "(theta in rad, count on the ray in brackets)", ha="center", fontsize=8)
     return fig
 
@@ -346,10 +350,10 @@ def plot_param_direction(summary, base, plt):
     t_lo, t_hi = summary.get("theta_from", 0.0), summary.get("theta_to", 2 * math.pi)
     xe, te = edges(xs), edges(th, t_lo, t_hi)
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.6), sharey=True)
-    cmap = ListedColormap([COUNT_COLOURS.get(k, "#777777") for k in keys])
+    cmap = ListedColormap([pc.count_colour(k) for k in keys])
     norm = BoundaryNorm(np.arange(len(keys) + 1) - 0.5, len(keys))
     axes[0].pcolormesh(xe, te, cnt, cmap=cmap, norm=norm, shading="flat", rasterized=True)
-    tcols = [combination_colour(c) for c in combos]  # fixed per combination (all pictures)
+    tcols = [pc.combination_colour(c) for c in combos]  # fixed per combination (all pictures)
     axes[1].pcolormesh(xe, te, typ, cmap=ListedColormap(tcols),
                        norm=BoundaryNorm(np.arange(len(combos) + 1) - 0.5, len(combos)),
                        shading="flat", rasterized=True)
@@ -364,9 +368,9 @@ def plot_param_direction(summary, base, plt):
     for a in axes:
         if crit_pts:
             a.plot([p[0] for p in crit_pts], [p[1] for p in crit_pts], ".", ms=1.2,
-                   color="black", label="critical directions (exact)")
+                   color=pc.INK, label="critical directions (exact)")
         for k, cv in enumerate(crit_vals):
-            a.axvline(cv["x"], color="#7a0177", lw=1.6, ls="--",
+            a.axvline(cv["x"], color=pc.INK, lw=1.4, ls="--",
                       label=names.get(cv["name"], cv["name"]) + " at %s = %.6g" %
                       (ax_info["param"], cv["x"]) if k < 4 else None)
         a.set_xlabel(ax_info["param"])
@@ -378,19 +382,17 @@ def plot_param_direction(summary, base, plt):
     axes[0].set_ylabel(r"load direction $\theta$ ($\dot F_T=\cos\theta$, $\dot F_N=\sin\theta$)")
     axes[0].set_title("number of solutions")
     axes[1].set_title("solution types")
-    h0 = [Patch(facecolor=COUNT_COLOURS.get(k, "#777777"), edgecolor="#999999",
-                label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
-                else "continuum") for k in keys]
+    h0 = [Patch(facecolor=pc.count_colour(k), edgecolor=pc.EDGE, label=pc.count_label(k))
+          for k in keys]
     l0, lab0 = axes[0].get_legend_handles_labels()
     legend_below(axes[0], h0 + l0, ncol=2)
-    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999",
-                label=c.replace("|", " + ") if c != "none" else "no solution")
+    h1 = [Patch(facecolor=tcols[i], edgecolor=pc.EDGE, label=pc.combination_label(c))
           for i, c in enumerate(combos)]
     legend_below(axes[1], h1, ncol=2)
     fig.suptitle("Rate problem: %s x load direction (%d x %d cells, %s route), each cell at "
-                 "one load direction theta\n%s" %
+                 "one load direction theta%s\n%s" %
                  (ax_info["param"], n, tn, summary.get("method", "enumerate"),
-                  model_title(summary)), fontsize=10.5)
+                  theta_window(t_lo, t_hi), model_title(summary)), fontsize=10.5)
     fig.tight_layout(rect=(0, 0, 1, 0.93))
     return fig
 
@@ -400,15 +402,16 @@ def plot_param_param(summary, base, plt):
     from matplotlib.colors import ListedColormap, BoundaryNorm
     from matplotlib.patches import Patch
     a1, a2 = summary["axis"], summary["axis2"]
-    classes = ["unique", "non-unique", "no-solution", "none-and-several"]
+    classes = pc.CLASS_ORDER
     xs, ys, cls = load_param_param(summary, base, a1["n"], a2["n"], classes)
     n1, n2 = len(xs), len(ys)
     cls = cls.T
     edges = cell_edges
     fig, ax = plt.subplots(figsize=(7.5, 6))
-    ax.pcolormesh(edges(xs), edges(ys), cls, cmap=ListedColormap([CLASS_COLOURS[c] for c in classes]),
+    ax.pcolormesh(edges(xs), edges(ys), cls,
+                  cmap=ListedColormap([pc.CLASS_COLOURS[c] for c in classes]),
                   norm=BoundaryNorm([k - 0.5 for k in range(len(classes) + 1)], len(classes)), shading="flat", rasterized=True)
-    handles = [Patch(facecolor=CLASS_COLOURS[c], edgecolor="#999999", label=CLASS_LABELS[c])
+    handles = [Patch(facecolor=pc.CLASS_COLOURS[c], edgecolor=pc.EDGE, label=pc.CLASS_LABELS[c])
                for c in classes if (cls == classes.index(c)).any()]
     if "critical_csv" in summary.get("files", {}):
         pts = [r for r in read_csv(os.path.join(base, summary["files"]["critical_csv"]))[1:]]
@@ -416,8 +419,8 @@ def plot_param_param(summary, base, plt):
             q = [(float(p[1]), float(p[2])) for p in pts if p[0] == name]
             lab = {"Lambda=0": lambda_label(summary), "D+=0": r"$a_{11} = \mu a_{12}$",
                    "D-=0": r"$a_{11} = -\mu a_{12}$"}.get(name, name)
-            ax.plot([p[0] for p in q], [p[1] for p in q], ".", ms=1.5, color="black")
-            handles.append(plt.Line2D([], [], color="black", marker=".", ls="", label=lab))
+            ax.plot([p[0] for p in q], [p[1] for p in q], ".", ms=1.5, color=pc.INK)
+            handles.append(plt.Line2D([], [], color=pc.INK, marker=".", ls="", label=lab))
     ax.set_xlim(edges(xs)[0], edges(xs)[-1])
     ax.set_ylim(edges(ys)[0], edges(ys)[-1])
     ax.set_xlabel(a1["param"])
@@ -448,7 +451,7 @@ def load_system_grid(summary, base):
     rows = read_csv(os.path.join(base, files["csv"]))[1:]
     if len(rows) != n * m:
         fail("CSV has %d cells, the summary says %d" % (len(rows), n * m))
-    classes = ["unique", "non-unique", "no-solution", "none-and-several"]
+    classes = pc.CLASS_ORDER
     xs = np.array([float(rows[i * m][0]) for i in range(n)])
     ys = np.array([float(rows[j][1]) for j in range(m)])
     if pd:
@@ -480,18 +483,17 @@ def plot_system_grid(summary, base, plt):
                       key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
         kidx = {k: i for i, k in enumerate(keys)}
         left = np.vectorize(lambda c: kidx[count_key(int(c))])(a).T
-        cols = [COUNT_COLOURS.get(k, "#777777") for k in keys]
-        h0 = [Patch(facecolor=cols[i], edgecolor="#999999",
-                    label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
-                    else "continuum") for i, k in enumerate(keys)]
+        cols = [pc.count_colour(k) for k in keys]
+        h0 = [Patch(facecolor=cols[i], edgecolor=pc.EDGE, label=pc.count_label(k))
+              for i, k in enumerate(keys)]
         axes[0].set_title("number of solutions")
     else:
-        classes = ["unique", "non-unique", "no-solution", "none-and-several"]
+        classes = pc.CLASS_ORDER
         present = sorted({int(c) for c in np.unique(a)})
         kidx = {c: i for i, c in enumerate(present)}
         left = np.vectorize(lambda c: kidx[int(c)])(a).T
-        cols = [CLASS_COLOURS[classes[c]] for c in present]
-        h0 = [Patch(facecolor=cols[i], edgecolor="#999999", label=CLASS_LABELS[classes[c]])
+        cols = [pc.CLASS_COLOURS[classes[c]] for c in present]
+        h0 = [Patch(facecolor=cols[i], edgecolor=pc.EDGE, label=pc.CLASS_LABELS[classes[c]])
               for i, c in enumerate(present)]
         axes[0].set_title("over all load directions")
     axes[0].pcolormesh(xe, ye, left, cmap=ListedColormap(cols),
@@ -502,13 +504,13 @@ def plot_system_grid(summary, base, plt):
     # same pattern has the same colour in every picture; every label in full.
     table = {p["id"]: p for p in summary["patterns"]}
     shown_ids = sorted({int(p) for p in np.unique(pat)},
-                       key=lambda i: pattern_key(table[i]["types"] if i in table else []))
-    by_key = pattern_colours([table[i]["types"] if i in table else [] for i in shown_ids])
+                       key=lambda i: pc.pattern_key(table[i]["types"] if i in table else []))
+    by_key = pc.pattern_colours([table[i]["types"] if i in table else [] for i in shown_ids])
     colour, labels = {}, {}
     for i in shown_ids:
         types = table[i]["types"] if i in table else []
-        colour[i] = by_key[pattern_key(types)]
-        labels[i] = "no solution" if not types else wrap(", ".join(pattern_key(types)), 75)
+        colour[i] = by_key[pc.pattern_key(types)]
+        labels[i] = "no solution" if not types else wrap(", ".join(pc.pattern_key(types)), 75)
     order = {i: n for n, i in enumerate(shown_ids)}
     right = np.vectorize(lambda p: order[int(p)])(pat).T
     axes[1].pcolormesh(xe, ye, right, cmap=ListedColormap([colour[i] for i in shown_ids]),
@@ -519,7 +521,7 @@ def plot_system_grid(summary, base, plt):
         if labels[i] in seen:
             continue
         seen.add(labels[i])
-        h1.append(Patch(facecolor=colour[i], edgecolor="#999999", label=labels[i]))
+        h1.append(Patch(facecolor=colour[i], edgecolor=pc.EDGE, label=labels[i]))
     legend_below(axes[1], h1, ncol=1, fontsize=7,
                  title="type tuples present in a cell (point 1/point 2/...)")
     axes[1].set_title("point-type pattern" + ("" if pd else " (union over directions)"))
@@ -538,7 +540,7 @@ def plot_system_grid(summary, base, plt):
     load = (r"load $\dot F = \cos\theta\, e_1 + \sin\theta\, e_2$" +
             (", e1 = (%s), e2 = (%s)" % tuple(", ".join("%g" % v for v in ei) for ei in e[:2])
              if len(e) >= 2 else ""))
-    load += (": each cell at one direction theta" if pd else
+    load += (": each cell at one direction theta" + theta_window(y_lo, y_hi) if pd else
              ": each cell classified over ALL directions theta in [0, 2pi)")
     fixed = system_parameters(inp, (inp.get("param"), inp.get("param2")))
     fig.suptitle("%s: %d points, %s (%d x %d cells%s)\n%s%s" %
@@ -586,29 +588,28 @@ def plot_map_3d(summary, base, plt):
     keys = sorted({count_key(int(c)) for c in np.unique(cnt)},
                   key=lambda k: (k == "inf", int(k) if k != "inf" else 0))
     kidx = {k: i for i, k in enumerate(keys)}
-    cols = [COUNT_COLOURS.get(k, "#777777") for k in keys]
+    cols = [pc.count_colour(k) for k in keys]
     mesh(axes[0], np.vectorize(lambda c: kidx[count_key(int(c))])(cnt), cols)
-    h0 = [Patch(facecolor=cols[i], edgecolor="#999999",
-                label=("%s solution%s" % (k, "" if k == "1" else "s")) if k != "inf"
-                else "infinitely many") for i, k in enumerate(keys)]
+    h0 = [Patch(facecolor=cols[i], edgecolor=pc.EDGE, label=pc.count_label(k))
+          for i, k in enumerate(keys)]
     names = ["open", "separation", "stick", "slip"]
     masks = sorted(int(m) for m in np.unique(typ))
-    label = lambda m: ", ".join(n for b, n in enumerate(names) if m & (1 << b)) or "no solution"
-    # fixed per combination, the same colours as the 2-D maps' (cpkit_plot_colours.py)
-    tcols = [combination_colour([n for b, n in enumerate(names) if m & (1 << b)]) for m in masks]
+    members = lambda m: [n for b, n in enumerate(names) if m & (1 << b)]
+    # fixed per combination, the same colours and labels as the 2-D maps' (cpkit_plot_colours.py)
+    tcols = [pc.combination_colour(members(m)) for m in masks]
     midx = {m: i for i, m in enumerate(masks)}
     mesh(axes[1], np.vectorize(lambda m: midx[int(m)])(typ), tcols)
-    h1 = [Patch(facecolor=tcols[i], edgecolor="#999999", label=label(m))
+    h1 = [Patch(facecolor=tcols[i], edgecolor=pc.EDGE, label=pc.combination_label(members(m)))
           for i, m in enumerate(masks)]
     bad = np.argwhere(comp == 0)
     if len(bad):
         for ax in axes:
             if kind == "sphere":
-                ax.plot(ys[bad[:, 1]], xs[bad[:, 0]], "k.", ms=3)
+                ax.plot(ys[bad[:, 1]], xs[bad[:, 0]], ".", color=pc.INK, ms=3)
             else:
-                ax.plot(xs[bad[:, 0]], ys[bad[:, 1]], "k.", ms=3)
+                ax.plot(xs[bad[:, 0]], ys[bad[:, 1]], ".", color=pc.INK, ms=3)
         for h in (h0, h1):
-            h.append(Line2D([], [], color="k", marker=".", ls="",
+            h.append(Line2D([], [], color=pc.INK, marker=".", ls="",
                             label="not proved complete (%d cells)" % len(bad)))
     legend_below(axes[0], h0, ncol=2)
     legend_below(axes[1], h1, ncol=2, title="types at point %d" % inp.get("point", 1))
@@ -639,8 +640,9 @@ def plot_map_3d(summary, base, plt):
         load = ("each cell at ONE load direction dF = (%s) (not over all directions)" %
                 ", ".join("%g" % v for v in inp.get("dF", [])))
     elif kind == "param-direction":
-        load = "each cell at one load direction theta, in the plane of azimuth G = %.4g" % \
-            inp.get("gamma", 0.0)
+        load = "each cell at one load direction theta, in the plane of azimuth G = %.4g%s" % (
+            inp.get("gamma", 0.0), theta_window(inp.get("theta_from", 0.0),
+                                                inp.get("theta_to", 2 * math.pi)))
     else:
         load = "each cell at one load direction (b, g)"
     fixed = system_parameters(inp, (inp.get("param"), inp.get("param2")))

@@ -6,6 +6,8 @@ import csv
 import json
 import sys
 
+import cpkit_plot_colours as pc
+
 EXIT_BAD_INPUT = 2
 EXIT_NO_MATPLOTLIB = 5
 
@@ -85,8 +87,13 @@ def plot_wear_over_cycles(ax, wear_per_cycle, label):
     cum = [0.0]
     for w in wear_per_cycle:
         cum.append(cum[-1] + w)
-    ax.plot(range(len(cum)), cum, "o-", color="#4c72b0", ms=3, label=label)
+    ax.plot(range(len(cum)), cum, "o-", color=pc.series_colour(0), ms=3, label=label)
     ax.set_xlabel("cycles")
+
+
+def matrix_text(rows):
+    """A small matrix on one line: [[2, 0.2], [0.2, 1.5]]."""
+    return "[" + ", ".join("[" + ", ".join("%g" % v for v in r) + "]" for r in rows) + "]"
 
 
 def save(plt, fig, prefix, formats, dpi, **kw):

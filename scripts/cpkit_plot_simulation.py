@@ -16,13 +16,10 @@ Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
 import sys
 
+import cpkit_plot_colours as pc
 import cpkit_plot_series as series
 
-TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]
-TYPE_COLOURS = {"separation": "#4c72b0", "stick": "#55a868", "slip+": "#dd8452",
-                "slip-": "#c44e52", "open": "#8172b3"}
-STATE_ORDER = ["a", "b", "c", "d"]
-STATE_LABELS = {"a": "a open", "b": "b grazing", "c": "c stick", "d": "d sliding"}
+TYPE_ORDER = ["separation", "stick", "slip+", "slip-", "open"]  # the rows of the type panel
 NUMERIC = ["step", "t", "F_T", "F_N", "P_T", "P_N", "w_T", "w_N", "w_w", "w_Ti", "g", "count",
            "dissipation", "dissipation_total", "work_total", "stored", "temperature"]
 
@@ -40,6 +37,21 @@ def main(argv):
     out = args["out"]
     title = "cpkit simulate (%s, %s wear)" % (summary.get("criterion", "?"),
                                                summary.get("wear_law", "?"))
+    # The parameters and the load the run was computed at (the summary's "settings").
+    settings = summary.get("settings", {})
+    par = settings.get("parameters", {})
+    if par:
+        title += "\n" + ", ".join("%s = %g" % (k, par[k])
+                                  for k in ("a11", "a12", "a22", "mu", "C_T", "k_a", "P_s")
+                                  if k in par)
+    load = settings.get("load", {})
+    if load.get("type") == "fretting":
+        title += "\nfretting load: F_N = %g, F_T amplitude %g, period %g, %g cycles" % (
+            load.get("F_N"), load.get("amplitude"), load.get("period"), load.get("cycles"))
+    elif load.get("type") == "ramp":
+        title += "\nramp load: F from (%g, %g) to (%g, %g) in %g steps" % (
+            load.get("F_T0"), load.get("F_N0"), load.get("F_T1"), load.get("F_N1"),
+            load.get("steps"))
     outcome = summary.get("outcome")
     if outcome and outcome != "completed":
         title += " (stopped: %s)" % outcome
@@ -48,19 +60,19 @@ def main(argv):
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     t = s["t"]
     n = len(t)
-    cmap = plt.get_cmap("viridis")
+    cmap = plt.get_cmap(pc.TIME_CMAP)
     seg = max(1, n // 400)
     for i in range(0, n - 1, seg):
         j = min(n - 1, i + seg)
         ax.plot(s["w_T"][i:j + 1], s["P_T"][i:j + 1], color=cmap(i / max(1, n - 1)), lw=1.0)
-    ax.axhline(0, color="#bbbbbb", lw=0.6)
+    ax.axhline(0, color=pc.GUIDE, lw=0.6)
     ax.set_xlabel("tangential displacement $w_T$")
     ax.set_ylabel("tangential contact force $P_T$")
-    ax.set_title("fretting loop (colour: time)\n" + title)
+    ax.set_title("fretting loop (colour: time)\n" + title, fontsize=9)
     sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(t[0], t[-1]))
     fig.colorbar(sm, ax=ax, label="t")
     fig.tight_layout()
-    series.save(plt, fig, out + "_loop", args["formats"], 110)
+    series.save(plt, fig, out + "_loop", args["formats"], 110, bbox_inches="tight")
 
     # 2. Wear depth against cycles (or time when the run has no period).
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -68,45 +80,45 @@ def main(argv):
     if wpc:
         series.plot_wear_over_cycles(ax, wpc, "wear depth $w^w$")
         ax2 = ax.twinx()
-        ax2.bar([i + 0.5 for i in range(len(wpc))], wpc, width=0.8, color="#dd8452", alpha=0.35,
-                label="wear per cycle")
-        ax2.set_ylabel("wear per cycle", color="#dd8452")
+        ax2.bar([i + 0.5 for i in range(len(wpc))], wpc, width=0.8, color=pc.series_colour(1),
+                alpha=0.35, label="wear per cycle")
+        ax2.set_ylabel("wear per cycle", color=pc.series_colour(1))
     else:
-        ax.plot(t, s["w_w"], color="#4c72b0", label="wear depth $w^w$")
+        ax.plot(t, s["w_w"], color=pc.series_colour(0), label="wear depth $w^w$")
         ax.set_xlabel("t")
     ax.set_ylabel("wear depth $w^w$")
-    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title))
+    ax.set_title("wear (final %.6g)\n%s" % (s["w_w"][-1], title), fontsize=9)
     fig.tight_layout()
-    series.save(plt, fig, out + "_wear", args["formats"], 110)
+    series.save(plt, fig, out + "_wear", args["formats"], 110, bbox_inches="tight")
 
     # 3. Contact state and solution type over time.
     heat = "temperature" in summary
     rows = 3 if heat else 2
     fig, axes = plt.subplots(rows, 1, figsize=(7.5, 2.2 * rows + 1), sharex=True)
     ax = axes[0]
-    for k, lab in enumerate(STATE_ORDER):
+    for k, lab in enumerate(pc.STATE_ORDER):
         xs = [t[i] for i in range(n) if s["state"][i] == lab]
-        ax.scatter(xs, [k] * len(xs), s=4, color=["#8172b3", "#4c72b0", "#55a868", "#dd8452"][k])
+        ax.scatter(xs, [k] * len(xs), s=4, color=pc.STATE_COLOURS[lab])
     ax.set_yticks(range(4))
-    ax.set_yticklabels([STATE_LABELS[k] for k in STATE_ORDER])
-    ax.set_title("contact state and step solutions over time\n" + title)
+    ax.set_yticklabels([pc.STATE_LABELS[k] for k in pc.STATE_ORDER])
+    ax.set_title("contact state and step solutions over time\n" + title, fontsize=9)
     ax = axes[1]
     for k, typ in enumerate(TYPE_ORDER):
         xs = [t[i] for i in range(n) if s["type"][i] == typ]
-        ax.scatter(xs, [k] * len(xs), s=4, color=TYPE_COLOURS[typ])
+        ax.scatter(xs, [k] * len(xs), s=4, color=pc.TYPE_COLOURS[typ])
     ax.set_yticks(range(len(TYPE_ORDER)))
     ax.set_yticklabels(TYPE_ORDER)
     branch = [t[i] for i in range(n) if s["count"][i] > 1]
     if branch:
         ax.scatter(branch, [len(TYPE_ORDER) - 0.5] * len(branch), marker="v", s=10,
-                   color="#d62728", label="branch point (several solutions)")
+                   color=pc.count_colour(3), label="branch point (several solutions)")
         ax.legend(loc="upper right", fontsize=7)
     if heat:
-        axes[2].plot(t, s["temperature"], color="#c44e52")
+        axes[2].plot(t, s["temperature"], color=pc.INK)
         axes[2].set_ylabel("interface T")
     axes[-1].set_xlabel("t")
     fig.tight_layout()
-    series.save(plt, fig, out + "_state", args["formats"], 110)
+    series.save(plt, fig, out + "_state", args["formats"], 110, bbox_inches="tight")
     return 0
 
 

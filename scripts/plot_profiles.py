@@ -15,6 +15,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+# The script's own folder: the one palette of every picture.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cpkit_plot_colours as pc  # noqa: E402
+
 
 def profile(directory):
     """The profile from results.csv (tau up to the largest finite ratio), else profile.csv."""
@@ -65,7 +69,7 @@ def main() -> int:
         style = "-" if not name.startswith("siconos") else "--"
         width = 2.5 if name == "auto" else 1.5
         ax.step(tau, [r[c] for r in data], where="post", linestyle=style, linewidth=width,
-                label=name)
+                label=name, color=pc.series_colour(c - 1))
     ax.set_xscale("log")
     ax.set_ylim(0, 1.02)
     ax.set_xlabel("tau (time relative to the fastest solver on each problem)")
@@ -78,10 +82,11 @@ def main() -> int:
         title += "\n" + cpu
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(loc="lower right", fontsize=8)
+    # Outside the axes, so that it never covers a curve.
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     fig.tight_layout()
     out = os.path.join(directory, "profile.png")
-    fig.savefig(out, dpi=110)
+    fig.savefig(out, dpi=110, bbox_inches="tight")
     print(out)
     return 0
 

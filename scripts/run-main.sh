@@ -15,6 +15,11 @@ echo "== Fig. 5(b): solutions per load direction, state b, mu = 3 > a11/a12 = 2"
 echo "== mu x load direction, state b (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25)"
 "$build/apps/cpkit" map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 \
   --n 400 --theta-n 720 --out "$out/mu_direction" --plot
+# The three-solution wedge is about 3 % of the full circle above: the same map over its
+# directions (theta from 0.25 to 0.5 rad: the L+=0 curve up to the N=0 direction 0.4636).
+echo "== the same, zoomed on the three-solution wedge (mu 1.5 to 4, theta 0.25 to 0.5 rad)"
+"$build/apps/cpkit" map --preset fig5b --kind param-direction --param mu --from 1.5 --to 4 \
+  --n 250 --theta-n 250 --theta-from 0.25 --theta-to 0.5 --out "$out/mu_direction_zoom" --plot
 echo "== done: pictures and data in $out"
 echo "the cpkit program: $build/apps/cpkit"
 echo "  run it from anywhere: export PATH=\"$build/apps:\$PATH\""

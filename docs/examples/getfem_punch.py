@@ -273,11 +273,14 @@ def plot(path, args, one_node, whole):
              label=f"contact nodes, whole bottom (N = {nx + 1})")
     ax0.plot([0], [0], "s", color="tab:red", ms=12, mfc="none", mew=2.5, zorder=6,
              label="one contact node (corner)")
-    t = math.radians(60)
+    drawn = 60  # the arrow shows one direction; the maps sample every theta
+    t = math.radians(drawn)
     ax0.add_patch(FancyArrowPatch((0.5 * W, 1.3 * H), (0.5 * W + 0.35 * math.cos(t),
                                                        1.3 * H - 0.35 * math.sin(t)),
                                   arrowstyle="-|>", mutation_scale=18, color="tab:green",
-                                  lw=2, label="punch motion (cos theta, -sin theta)"))
+                                  lw=2, label=f"punch motion (cos theta, -sin theta), drawn at "
+                                              f"theta = {drawn} deg;\nthe maps: {args.theta_n} "
+                                              f"directions theta in [0, 360) deg"))
     ax0.set_xlim(-0.15 * W, 1.15 * W)
     ax0.set_ylim(-0.2 * H, 1.55 * H)
     ax0.set_aspect("equal")
