@@ -15,8 +15,10 @@
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 
 #include "system_test_util.hpp"
+#include "test_budget.hpp"
 
 using namespace cpkit::rate;
+using cpkit::test::family_size;
 
 namespace {
 
@@ -81,8 +83,9 @@ TEST_CASE("system direction map: N = 1 equals the one-point direction map", "[ra
 TEST_CASE("system direction map: dense sampling agrees with the sectors", "[rate][maps][system]") {
   std::mt19937 rng(21);
   std::normal_distribution<double> G(0, 1);
+  const int n = family_size(60, 16);
   int maps = 0, counts_seen_nonunique = 0;
-  for (int trial = 0; trial < 60; ++trial) {
+  for (int trial = 0; trial < n; ++trial) {
     const int N = 2 + trial % 2;
     ContactSystem S;
     for (int i = 0; i < N; ++i) S.points.push_back(random_point(rng, random_label(rng)));
@@ -139,7 +142,7 @@ TEST_CASE("system direction map: dense sampling agrees with the sectors", "[rate
     }
     ++maps;
   }
-  CHECK(maps > 40);
+  CHECK(maps > 2 * n / 3);
   CHECK(counts_seen_nonunique > 0);
 }
 
