@@ -1,6 +1,8 @@
-// cpkit_lcp_solve and cpkit_lcp_solve_batch: the problem mapped into the library's LcpProblem,
-// solved by the registered solver (or, for n <= 4, by the closed enumeration when that proves a
-// unique solution), every answer decided by finalize().
+// cpkit_lcp_solve and cpkit_lcp_solve_batch: for n <= 4 ("auto", "lemke") the closed enumeration
+// on the stack when it proves a unique solution that the verdict accepts (small_lcp.hpp);
+// otherwise the problem mapped into the library's LcpProblem and solved by the registered
+// solver. Every answer is decided by finalize()'s verdict (the fast path computes the same
+// number and accepts only what finalize() would call solved).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -22,9 +24,22 @@ struct LcpWorkspace {
   SolveResult result;
 };
 
-/// Solves problem (M, q) of size n into z, w; returns the code. `ws.result` holds the decision.
-int solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
-              const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
+/// What a caller of solve_one reports: the code, and for cpkit_info the iterations and the
+/// unit-free residual.
+struct Outcome {
+  int code = 0;
+  int iterations = 0;
+  double residual = 0;
+};
+
+/// Solves problem (M, q) of size n into z, w. A tiny problem with one solution takes the
+/// allocation-free path (solve_small_fast); every other one the library's types, with
+/// `ws.result` holding the decision (its message explains a code != 0).
+Outcome solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
+                  const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
+  Outcome out;
+  if (small_lcp_route(n, entry) && solve_small_fast(n, M, q, o.tol, z, w, out.residual))
+    return out;
   LcpProblem& p = ws.problem;
   p.M = Eigen::Map<const Mat>(M, n, n);
   p.q = Eigen::Map<const Vec>(q, n);
@@ -39,7 +54,10 @@ int solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
     z[i] = full ? r.z[i] : NAN;
     w[i] = full ? r.w[i] : NAN;
   }
-  return lcp_code(r.status);
+  out.code = lcp_code(r.status);
+  out.iterations = r.iterations;
+  out.residual = r.residuals.natural;
+  return out;
 }
 
 std::string outcome_message(const SolveResult& r) {
@@ -72,11 +90,11 @@ extern "C" int cpkit_lcp_solve(int n, const double* M, const double* q, const ch
     check_finite(q, n, "q");
     std::optional<LcpWorkspace> large;
     LcpWorkspace& ws = workspace(n, large);
-    const int code = solve_one(n, M, q, entry, o, z, w, ws);
-    out.iterations = ws.result.iterations;
-    out.residual = ws.result.residuals.natural;
-    if (code != 0) set_message(out, outcome_message(ws.result));
-    return code;
+    const Outcome one = solve_one(n, M, q, entry, o, z, w, ws);
+    out.iterations = one.iterations;
+    out.residual = one.residual;
+    if (one.code != 0) set_message(out, outcome_message(ws.result));
+    return one.code;
   });
 }
 
@@ -106,12 +124,12 @@ extern "C" int cpkit_lcp_solve_batch(int count, int n, const double* M, const do
     int first = 0;
     for (int k = 0; k < count; ++k) {
       const long long at = static_cast<long long>(k) * n;
-      const int code = solve_one(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
-      if (status != nullptr) status[k] = code;
-      out.iterations += ws.result.iterations;
-      out.residual = std::max(out.residual, ws.result.residuals.natural);
-      if (code != 0 && first == 0) {
-        first = code;
+      const Outcome one = solve_one(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
+      if (status != nullptr) status[k] = one.code;
+      out.iterations += one.iterations;
+      out.residual = std::max(out.residual, one.residual);
+      if (one.code != 0 && first == 0) {
+        first = one.code;
         set_message(out, "problem " + std::to_string(k) + ": " + outcome_message(ws.result));
       }
     }
