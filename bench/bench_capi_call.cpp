@@ -6,14 +6,15 @@
 //   q = (-1, 1, 0) (r = (1, -0.5, 0)), and a coupled contact (W = [[2, .5, .3], [.5, 1.5, .2],
 //   [.3, .2, 1]], q = (-1, .4, -.3), mu = 0.3: cpkit's answer checked against Siconos'), by
 //   Siconos' fc3d_driver (NSGS) and by cpkit_fc3d_solve ("auto") and cpkit_fc3d_solve_batch.
-// Every answer is checked first (hand answers, or Siconos'). Times: rounds of back-to-back calls
+// Every answer is checked first (hand answers, or Siconos'). Times: the CPU time of the thread
+// (robust to the machine's load, as bench_python_siconos.py) over rounds of back-to-back calls
 // (about 0.05 s each), the MEDIAN over the rounds in microseconds per call (the minimum in
-// brackets); the two libraries alternate round by round, so that the machine's load hits both
-// alike. Siconos' NSGS starts from r = 0 at every call (as cpkit does). cpkit's calls pass a
-// cpkit_info (so they read the clock twice for info.seconds) and verify every answer.
+// brackets); the two libraries alternate round by round, so that what load remains (caches,
+// frequency) hits both alike. Siconos' NSGS starts from r = 0 at every call (as cpkit does). cpkit's calls pass a
+// cpkit_info (so they read the wall clock twice for info.seconds) and verify every answer.
 //   bench_capi_call [rounds]     (default 15; Siconos numerics: scripts/setup-deps.sh --bench)
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,7 +38,13 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+/// The CPU time of this thread in seconds: what a call costs, without the time the machine's
+/// load (other processes on the same cores) takes away from it.
+double cpu_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 /// A timed call and its calls per round (calibrated to about 0.05 s).
 struct Timed {
@@ -51,17 +58,17 @@ struct Timed {
 
 void calibrate(Timed& t) {
   for (;;) {
-    const auto t0 = Clock::now();
+    const double t0 = cpu_seconds();
     for (long i = 0; i < t.calls; ++i) t.f();
-    if (std::chrono::duration<double>(Clock::now() - t0).count() > 0.05) return;
+    if (cpu_seconds() - t0 > 0.05) return;
     t.calls *= 2;
   }
 }
 
 void round_of(Timed& t) {
-  const auto t0 = Clock::now();
+  const double t0 = cpu_seconds();
   for (long i = 0; i < t.calls; ++i) t.f();
-  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double s = cpu_seconds() - t0;
   t.us.push_back(1e6 * s / static_cast<double>(t.calls) / t.per_call_problems);
 }
 
@@ -222,6 +229,7 @@ int main(int argc, char** argv) {
 
   Timed lcp_lemke{[&] { cpkit_lcp_solve(2, M, q, "lemke", nullptr, z, w, &info); }};
   Timed lcp_auto{[&] { cpkit_lcp_solve(2, M, q, "auto", nullptr, z, w, &info); }};
+  Timed lcp_null{[&] { cpkit_lcp_solve(2, M, q, "auto", nullptr, z, w, nullptr); }};
   Timed lcp_batch{[&] {
                     cpkit_lcp_solve_batch(batch, 2, Ms.data(), qs.data(), "lemke", nullptr,
                                           zs.data(), ws.data(), st.data(), &info);
@@ -234,6 +242,9 @@ int main(int argc, char** argv) {
     };
   };
   Timed cp_stick{fc_call(col_I, row_I, 3, W_I_values, q_stick, mu)};
+  Timed cp_null{[&] {
+    cpkit_fc3d_solve(1, 3, col_I, row_I, W_I_values, q_stick, mu, "auto", nullptr, r, u, nullptr);
+  }};
   Timed cp_slip{fc_call(col_I, row_I, 3, W_I_values, q_slip, mu)};
   Timed cp_c{fc_call(col_full, row_full, 9, W_c, q_c, mu_c)};
   Timed fc_batch{[&] {
@@ -241,8 +252,8 @@ int main(int argc, char** argv) {
                                           nullptr, rb.data(), ub.data(), st.data(), &info);
                  },
                  batch};
-  for (Timed* t : std::initializer_list<Timed*>{&lcp_lemke, &lcp_auto, &lcp_batch, &cp_stick,
-                                                 &cp_slip, &cp_c, &fc_batch})
+  for (Timed* t : std::initializer_list<Timed*>{&lcp_lemke, &lcp_auto, &lcp_null, &lcp_batch,
+                                                 &cp_stick, &cp_null, &cp_slip, &cp_c, &fc_batch})
     all.push_back(t);
   for (Timed* t : all) calibrate(*t);
   for (int k = 0; k < rounds; ++k)
@@ -255,9 +266,11 @@ int main(int argc, char** argv) {
   if (peer_lcp) row("siconos lcp_lexicolemke", *peer_lcp, peer_lcp);
   row("cpkit_lcp_solve(\"lemke\")", lcp_lemke, peer_lcp);
   row("cpkit_lcp_solve(\"auto\")", lcp_auto, peer_lcp);
+  row("cpkit_lcp_solve(\"auto\"), info NULL (no clock read)", lcp_null, peer_lcp);
   row("cpkit_lcp_solve_batch(1000, \"lemke\") per problem", lcp_batch, peer_lcp);
   if (peer_stick) row("siconos fc3d_driver (NSGS), W = I, stick", *peer_stick, peer_stick);
   row("cpkit_fc3d_solve(\"auto\"), W = I, stick", cp_stick, peer_stick);
+  row("cpkit_fc3d_solve(\"auto\"), W = I, stick, info NULL", cp_null, peer_stick);
   row("cpkit_fc3d_solve_batch(1000, \"auto\") per problem", fc_batch, peer_stick);
   if (peer_slip) row("siconos fc3d_driver (NSGS), W = I, slip", *peer_slip, peer_slip);
   row("cpkit_fc3d_solve(\"auto\"), W = I, slip", cp_slip, peer_slip);

@@ -32,14 +32,11 @@ struct Outcome {
   double residual = 0;
 };
 
-/// Solves problem (M, q) of size n into z, w. A tiny problem with one solution takes the
-/// allocation-free path (solve_small_fast); every other one the library's types, with
-/// `ws.result` holding the decision (its message explains a code != 0).
-Outcome solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
-                  const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
+/// Solves problem (M, q) of size n into z, w through the library's types, with `ws.result`
+/// holding the decision (its message explains a code != 0).
+Outcome solve_general(int n, const double* M, const double* q, const SolverEntry& entry,
+                      const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
   Outcome out;
-  if (small_lcp_route(n, entry) && solve_small_fast(n, M, q, o.tol, z, w, out.residual))
-    return out;
   LcpProblem& p = ws.problem;
   p.M = Eigen::Map<const Mat>(M, n, n);
   p.q = Eigen::Map<const Vec>(q, n);
@@ -88,9 +85,12 @@ extern "C" int cpkit_lcp_solve(int n, const double* M, const double* q, const ch
     const SolverEntry& entry = solver_entry(solver, ProblemKind::kLcp);
     check_finite(M, static_cast<long long>(n) * n, "M");
     check_finite(q, n, "q");
+    // A tiny problem with one solution: the allocation-free path (solve_small_fast).
+    if (small_lcp_route(n, entry) && solve_small_fast(n, M, q, o.tol, z, w, out.residual))
+      return 0;
     std::optional<LcpWorkspace> large;
     LcpWorkspace& ws = workspace(n, large);
-    const Outcome one = solve_one(n, M, q, entry, o, z, w, ws);
+    const Outcome one = solve_general(n, M, q, entry, o, z, w, ws);
     out.iterations = one.iterations;
     out.residual = one.residual;
     if (one.code != 0) set_message(out, outcome_message(ws.result));
@@ -122,9 +122,12 @@ extern "C" int cpkit_lcp_solve_batch(int count, int n, const double* M, const do
     std::optional<LcpWorkspace> large;
     LcpWorkspace& ws = workspace(n, large);
     int first = 0;
+    const bool small = small_lcp_route(n, entry);
     for (int k = 0; k < count; ++k) {
       const long long at = static_cast<long long>(k) * n;
-      const Outcome one = solve_one(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
+      Outcome one;
+      if (!small || !solve_small_fast(n, M + k * nn, q + at, o.tol, z + at, w + at, one.residual))
+        one = solve_general(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
       if (status != nullptr) status[k] = one.code;
       out.iterations += one.iterations;
       out.residual = std::max(out.residual, one.residual);
