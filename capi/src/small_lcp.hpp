@@ -11,9 +11,11 @@ namespace cpkit::capi {
 /// ("auto" and "lemke"), so that the closed enumeration may answer for them.
 bool small_lcp_route(int n, const SolverEntry& entry);
 
-/// The per-call path (no allocation, nothing built): for small_lcp_route(n, entry), enumerates
-/// every solution of (M column-major n x n, q) in closed form (lcp::enumerate_small). When there
-/// is exactly one and its unit-free residual (small_lcp_natural: the number finalize() decides
+/// The per-call path (no allocation, nothing built): for small_lcp_route(n, entry), the one
+/// solution of (M column-major n x n, q) when it is provably unique: for n <= 3 and M provably
+/// a P-matrix (every principal minor positive beyond rounding), the complementary basic solution
+/// whose signs hold; otherwise every solution enumerated in closed form (lcp::enumerate_small),
+/// when there is exactly one. When its unit-free residual (small_lcp_natural: the number finalize() decides
 /// by) is at most tol, writes z, w = M z + q and that residual, and returns true: the verdict
 /// finalize() gives is kSolved. Otherwise returns false with nothing decided, and the caller
 /// takes solve_small_unique() / the registered solver, which decide as always.
