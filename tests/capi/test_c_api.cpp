@@ -703,3 +703,36 @@ TEST_CASE("C API: one contact on the per-call path equals the registered NSGS an
   CHECK(by_hand == 200);
   CHECK(by_nsgs >= 120);
 }
+
+TEST_CASE("C API: tiny LCPs by hand through the P-matrix route and past it", "[capi]") {
+  double z[2], w[2];
+  cpkit_info info;
+  // M = [[1, -3], [0, 1]]: principal minors 1, 1 and 1 (a P-matrix, though not positive
+  // definite: its symmetric part has eigenvalues 1 +- 1.5). q = (-1, -1): w = 0 gives z_1 = 1,
+  // z_0 = 1 + 3 z_1 = 4, the only solution.
+  const double M[4] = {1, 0, -3, 1}, q[2] = {-1, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 4.0);
+  CHECK(z[1] == 1.0);
+  CHECK(w[0] == 0.0);
+  CHECK(w[1] == 0.0);
+  // q = (5, -1): the guess basis {1} gives z = (0, 1), w_0 = 5 - 3 = 2 >= 0: z = (0, 1).
+  const double q2[2] = {5, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q2, "lemke", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 0.0);
+  CHECK(z[1] == 1.0);
+  CHECK(w[0] == 2.0);
+  // q = (2, -1): the guess {1} gives w_0 = 2 - 3 = -1 < 0; the basis {0, 1}: z_1 = 1,
+  // z_0 = -2 + 3 = 1.
+  const double q3[2] = {2, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q3, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 1.0);
+  CHECK(z[1] == 1.0);
+  // M = [[1, 1], [1, 1]] (singular: not a P-matrix), q = (-1, -1): every z >= 0 with
+  // z_0 + z_1 = 1 solves it; the enumeration finds a continuum and the general route answers.
+  const double S[4] = {1, 1, 1, 1};
+  REQUIRE(cpkit_lcp_solve(2, S, q, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] + z[1] == Approx(1.0).epsilon(1e-12));
+  CHECK(std::min(z[0], z[1]) >= 0.0);
+  CHECK(std::abs(w[0]) <= 1e-12);
+}
