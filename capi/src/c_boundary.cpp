@@ -56,13 +56,35 @@ struct CachedEntry {
 
 }  // namespace
 
+/// The registry's entry `name` when it accepts `kind`, else nullptr.
+const SolverEntry* find_entry(const char* name, ProblemKind kind) {
+  const SolverEntry* e = lcp::solvers().find(name);
+  return e != nullptr && e->accepts(kind) ? e : nullptr;
+}
+
+/// The entries of the per-call paths ("auto" and "lemke" for LCPs, "auto" and "nsgs" for
+/// friction), looked up once per process: the registry's entries never move, and a function's
+/// static costs no thread-local access (a shared library's thread_local does).
+const SolverEntry* usual_entry(const char* name, ProblemKind kind) {
+  static const SolverEntry* const lcp_auto = find_entry("auto", ProblemKind::kLcp);
+  static const SolverEntry* const lcp_lemke = find_entry("lemke", ProblemKind::kLcp);
+  static const SolverEntry* const fc_auto = find_entry("auto", ProblemKind::kFrictionContact);
+  static const SolverEntry* const fc_nsgs = find_entry("nsgs", ProblemKind::kFrictionContact);
+  const bool lcp = kind == ProblemKind::kLcp;
+  if (std::strcmp(name, "auto") == 0) return lcp ? lcp_auto : fc_auto;
+  if (lcp && std::strcmp(name, "lemke") == 0) return lcp_lemke;
+  if (kind == ProblemKind::kFrictionContact && std::strcmp(name, "nsgs") == 0) return fc_nsgs;
+  return nullptr;
+}
+
 const SolverEntry& solver_entry(const char* name, ProblemKind kind) {
   if (name == nullptr) name = "auto";
+  if (const SolverEntry* usual = usual_entry(name, kind)) return *usual;
   thread_local CachedEntry cache[2];  // one per kind asked here (LCP, friction)
   CachedEntry& c = cache[kind == ProblemKind::kLcp ? 0 : 1];
   if (c.entry != nullptr && c.kind == kind && std::strcmp(c.name, name) == 0) return *c.entry;
-  const SolverEntry* e = lcp::solvers().find(name);
-  if (e == nullptr || !e->accepts(kind)) {
+  const SolverEntry* e = find_entry(name, kind);
+  if (e == nullptr) {
     const bool lcp = kind == ProblemKind::kLcp;
     throw InputError(std::string("unknown ") + (lcp ? "LCP" : "friction") + " solver '" + name +
                      "' (valid: " +

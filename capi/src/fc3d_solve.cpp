@@ -1,7 +1,10 @@
-// cpkit_fc3d_solve and cpkit_fc3d_solve_batch: the problem mapped into the library's
-// FrictionContactProblem, solved by the registered friction solver (or, for one contact, by the
-// closed form when the contact has exactly one solution), every answer decided by the friction
-// verdict (finalize, core/friction_verdict.hpp).
+// cpkit_fc3d_solve and cpkit_fc3d_solve_batch: one contact ("auto", "nsgs") first on the
+// allocation-free path (small_contact.hpp) when its solution is provably unique and the verdict
+// accepts it; otherwise the problem mapped into the library's FrictionContactProblem and solved
+// by the registered friction solver (or, for one contact, by the closed form when the contact
+// has exactly one solution). Every answer is decided by the friction verdict (finalize,
+// core/friction_verdict.hpp; the fast path computes the same number and accepts only what
+// finalize() would call solved).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -28,9 +31,32 @@ FrictionWorkspace& workspace(int contacts, std::optional<FrictionWorkspace>& lar
   return contacts <= kKeptContacts ? kept : large.emplace();
 }
 
-/// Solves ws.problem into r, u (3 contacts each); returns the code, ws.result the decision.
-int solve_one(const SolverEntry& entry, const CommonOptions& o, double* r, double* u,
-              FrictionWorkspace& ws) {
+/// What a caller of a solve reports: the code, and for cpkit_info the iterations and the
+/// unit-free verdict.
+struct Outcome {
+  int code = 0;
+  int iterations = 0;
+  double residual = 0;
+};
+
+/// The allocation-free path of one contact (small_contact.hpp) into r, u; false when the
+/// general route must decide.
+bool solve_fast(const OneContact& c, const double* q, double mu, const CommonOptions& o,
+                double* r, double* u, Outcome& out) {
+  Vec3 rc, uc;
+  if (!solve_one_contact_fast(c, Eigen::Map<const Vec3>(q), mu, o.tol, rc, uc, out.residual))
+    return false;
+  for (int i = 0; i < 3; ++i) {
+    r[i] = rc[i];
+    u[i] = uc[i];
+  }
+  return true;
+}
+
+/// Solves ws.problem into r, u (3 contacts each); ws.result holds the decision (its message
+/// explains a code != 0).
+Outcome solve_one(const SolverEntry& entry, const CommonOptions& o, double* r, double* u,
+                  FrictionWorkspace& ws) {
   const FrictionContactProblem& p = ws.problem;
   SolveResult& res = ws.result;
   if (!solve_one_contact_unique(p, entry, o, res)) res = entry.solve_fc(p, o);
@@ -40,7 +66,11 @@ int solve_one(const SolverEntry& entry, const CommonOptions& o, double* r, doubl
     r[i] = full ? res.z[i] : NAN;
     u[i] = full ? res.w[i] : NAN;
   }
-  return fc_code(res.status);
+  Outcome out;
+  out.code = fc_code(res.status);
+  out.iterations = res.iterations;
+  out.residual = res.residuals.natural;
+  return out;
 }
 
 std::string outcome_message(const SolveResult& r) {
@@ -62,14 +92,24 @@ extern "C" int cpkit_fc3d_solve(int contacts, int nnz, const int* col_ptr, const
     require(u, "u");
     const CommonOptions o = common_options(options);
     const SolverEntry& entry = solver_entry(solver, ProblemKind::kFrictionContact);
+    if (one_contact_route(contacts, entry)) {
+      check_friction_input(contacts, nnz, col_ptr, row_index, values, q, mu);
+      OneContact c;
+      read_one_contact(col_ptr, row_index, values, c);
+      Outcome fast;
+      if (solve_fast(c, q, mu[0], o, r, u, fast)) {
+        out.residual = fast.residual;
+        return 0;
+      }
+    }
     std::optional<FrictionWorkspace> large;
     FrictionWorkspace& ws = workspace(contacts, large);
     map_friction_problem(contacts, nnz, col_ptr, row_index, values, q, mu, ws.problem);
-    const int code = solve_one(entry, o, r, u, ws);
-    out.iterations = ws.result.iterations;
-    out.residual = ws.result.residuals.natural;
-    if (code != 0) set_message(out, outcome_message(ws.result));
-    return code;
+    const Outcome one = solve_one(entry, o, r, u, ws);
+    out.iterations = one.iterations;
+    out.residual = one.residual;
+    if (one.code != 0) set_message(out, outcome_message(ws.result));
+    return one.code;
   });
 }
 
@@ -105,15 +145,21 @@ extern "C" int cpkit_fc3d_solve_batch(int count, int contacts, const double* W, 
     std::optional<FrictionWorkspace> large;
     FrictionWorkspace& ws = workspace(contacts, large);
     int first = 0;
+    const bool one_contact = one_contact_route(contacts, entry);
     for (int k = 0; k < count; ++k) {
-      map_dense_friction_problem(contacts, W + k * mm, q + k * m,
-                                 mu + static_cast<long long>(k) * contacts, ws.problem);
-      const int code = solve_one(entry, o, r + k * m, u + k * m, ws);
-      if (status != nullptr) status[k] = code;
-      out.iterations += ws.result.iterations;
-      out.residual = std::max(out.residual, ws.result.residuals.natural);
-      if (code != 0 && first == 0) {
-        first = code;
+      const double* mu_k = mu + static_cast<long long>(k) * contacts;
+      Outcome one;
+      OneContact c;
+      if (one_contact) read_one_contact_dense(W + k * mm, c);
+      if (!one_contact || !solve_fast(c, q + k * m, mu_k[0], o, r + k * m, u + k * m, one)) {
+        map_dense_friction_problem(contacts, W + k * mm, q + k * m, mu_k, ws.problem);
+        one = solve_one(entry, o, r + k * m, u + k * m, ws);
+      }
+      if (status != nullptr) status[k] = one.code;
+      out.iterations += one.iterations;
+      out.residual = std::max(out.residual, one.residual);
+      if (one.code != 0 && first == 0) {
+        first = one.code;
         set_message(out, "problem " + std::to_string(k) + ": " + outcome_message(ws.result));
       }
     }

@@ -23,9 +23,8 @@ void check_mu(const double* mu, int contacts, const std::string& what) {
                        num_text(mu[i]));
 }
 
-void map_friction_problem(int contacts, int nnz, const int* col_ptr, const int* row_index,
-                          const double* values, const double* q, const double* mu,
-                          FrictionContactProblem& p) {
+void check_friction_input(int contacts, int nnz, const int* col_ptr, const int* row_index,
+                          const double* values, const double* q, const double* mu) {
   check_positive(contacts, "contacts");
   if (contacts > (1 << 28)) throw InputError("contacts is too large: " + std::to_string(contacts));
   const int m = 3 * contacts;
@@ -62,10 +61,34 @@ void map_friction_problem(int contacts, int nnz, const int* col_ptr, const int* 
   if (nnz > 0) check_finite(values, nnz, "values");
   check_finite(q, m, "q");
   check_mu(mu, contacts, "mu");
+}
+
+void map_friction_problem(int contacts, int nnz, const int* col_ptr, const int* row_index,
+                          const double* values, const double* q, const double* mu,
+                          FrictionContactProblem& p) {
+  check_friction_input(contacts, nnz, col_ptr, row_index, values, q, mu);
+  const int m = 3 * contacts;
   p.W = Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(m, m, nnz, col_ptr,
                                                                            row_index, values);
   p.q = Eigen::Map<const Eigen::VectorXd>(q, m);
   p.mu = Eigen::Map<const Eigen::VectorXd>(mu, contacts);
+}
+
+void read_one_contact(const int* col_ptr, const int* row_index, const double* values,
+                      OneContact& c) {
+  c.W.setZero();
+  c.stored[0] = c.stored[1] = c.stored[2] = 0;
+  for (int j = 0; j < 3; ++j)
+    for (int k = col_ptr[j]; k < col_ptr[j + 1]; ++k) {
+      c.W(row_index[k], j) = values[k];
+      ++c.stored[row_index[k]];
+    }
+}
+
+void read_one_contact_dense(const double* W, OneContact& c) {
+  c.W = Eigen::Map<const Mat3>(W);
+  for (int i = 0; i < 3; ++i)  // map_dense_friction_problem() stores the nonzeros only
+    c.stored[i] = (W[i] != 0) + (W[i + 3] != 0) + (W[i + 6] != 0);
 }
 
 void map_dense_friction_problem(int contacts, const double* W, const double* q, const double* mu,

@@ -1,6 +1,8 @@
-// cpkit_lcp_solve and cpkit_lcp_solve_batch: the problem mapped into the library's LcpProblem,
-// solved by the registered solver (or, for n <= 4, by the closed enumeration when that proves a
-// unique solution), every answer decided by finalize().
+// cpkit_lcp_solve and cpkit_lcp_solve_batch: for n <= 4 ("auto", "lemke") the closed enumeration
+// on the stack when it proves a unique solution that the verdict accepts (small_lcp.hpp);
+// otherwise the problem mapped into the library's LcpProblem and solved by the registered
+// solver. Every answer is decided by finalize()'s verdict (the fast path computes the same
+// number and accepts only what finalize() would call solved).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -22,9 +24,19 @@ struct LcpWorkspace {
   SolveResult result;
 };
 
-/// Solves problem (M, q) of size n into z, w; returns the code. `ws.result` holds the decision.
-int solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
-              const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
+/// What a caller of solve_one reports: the code, and for cpkit_info the iterations and the
+/// unit-free residual.
+struct Outcome {
+  int code = 0;
+  int iterations = 0;
+  double residual = 0;
+};
+
+/// Solves problem (M, q) of size n into z, w through the library's types, with `ws.result`
+/// holding the decision (its message explains a code != 0).
+Outcome solve_general(int n, const double* M, const double* q, const SolverEntry& entry,
+                      const CommonOptions& o, double* z, double* w, LcpWorkspace& ws) {
+  Outcome out;
   LcpProblem& p = ws.problem;
   p.M = Eigen::Map<const Mat>(M, n, n);
   p.q = Eigen::Map<const Vec>(q, n);
@@ -39,7 +51,10 @@ int solve_one(int n, const double* M, const double* q, const SolverEntry& entry,
     z[i] = full ? r.z[i] : NAN;
     w[i] = full ? r.w[i] : NAN;
   }
-  return lcp_code(r.status);
+  out.code = lcp_code(r.status);
+  out.iterations = r.iterations;
+  out.residual = r.residuals.natural;
+  return out;
 }
 
 std::string outcome_message(const SolveResult& r) {
@@ -70,13 +85,16 @@ extern "C" int cpkit_lcp_solve(int n, const double* M, const double* q, const ch
     const SolverEntry& entry = solver_entry(solver, ProblemKind::kLcp);
     check_finite(M, static_cast<long long>(n) * n, "M");
     check_finite(q, n, "q");
+    // A tiny problem with one solution: the allocation-free path (solve_small_fast).
+    if (small_lcp_route(n, entry) && solve_small_fast(n, M, q, o.tol, z, w, out.residual))
+      return 0;
     std::optional<LcpWorkspace> large;
     LcpWorkspace& ws = workspace(n, large);
-    const int code = solve_one(n, M, q, entry, o, z, w, ws);
-    out.iterations = ws.result.iterations;
-    out.residual = ws.result.residuals.natural;
-    if (code != 0) set_message(out, outcome_message(ws.result));
-    return code;
+    const Outcome one = solve_general(n, M, q, entry, o, z, w, ws);
+    out.iterations = one.iterations;
+    out.residual = one.residual;
+    if (one.code != 0) set_message(out, outcome_message(ws.result));
+    return one.code;
   });
 }
 
@@ -104,14 +122,17 @@ extern "C" int cpkit_lcp_solve_batch(int count, int n, const double* M, const do
     std::optional<LcpWorkspace> large;
     LcpWorkspace& ws = workspace(n, large);
     int first = 0;
+    const bool small = small_lcp_route(n, entry);
     for (int k = 0; k < count; ++k) {
       const long long at = static_cast<long long>(k) * n;
-      const int code = solve_one(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
-      if (status != nullptr) status[k] = code;
-      out.iterations += ws.result.iterations;
-      out.residual = std::max(out.residual, ws.result.residuals.natural);
-      if (code != 0 && first == 0) {
-        first = code;
+      Outcome one;
+      if (!small || !solve_small_fast(n, M + k * nn, q + at, o.tol, z + at, w + at, one.residual))
+        one = solve_general(n, M + k * nn, q + at, entry, o, z + at, w + at, ws);
+      if (status != nullptr) status[k] = one.code;
+      out.iterations += one.iterations;
+      out.residual = std::max(out.residual, one.residual);
+      if (one.code != 0 && first == 0) {
+        first = one.code;
         set_message(out, "problem " + std::to_string(k) + ": " + outcome_message(ws.result));
       }
     }

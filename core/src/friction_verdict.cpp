@@ -78,17 +78,34 @@ namespace {
 // u_k = (W r)_k + q_k in twice the working precision (Dot2, Ogita, Rump & Oishi, SIAM J. Sci.
 // Comput. 26(6), 2005, Alg. 5.3): error-free products (fma) and sums, so that its error is
 // at most u |u_k| + gamma_{m+1}^2 ((|W||r|)_k + |q_k|) (their Prop. 5.5), not gamma (|W||r|)_k.
-double accurate_row(const FrictionUnits& d, Eigen::Index k, const Eigen::VectorXd& r, double q) {
+template <class Rows>
+double accurate_row(const Rows& rows, Eigen::Index k, const double* r, double q) {
   double s = q, c = 0;
-  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
-    const double x = it.value() * r[it.col()];
-    const double e = std::fma(it.value(), r[it.col()], -x);
+  rows.visit(k, [&](Eigen::Index col, double value) {
+    const double x = value * r[col];
+    const double e = std::fma(value, r[col], -x);
     const double t = s + x, z = t - s;
     c += ((s - (t - z)) + (x - z)) + e;
     s = t;
-  }
+  });
   return s + c;
 }
+
+// W's rows as the verdict reads them: visit(k, f) calls f(col, value) for the stored entries of
+// row k, columns ascending; gamma(k) is that row's rounding factor gamma_{m_k+1}; cap(col) the
+// cap of the contact that owns column col. Two readers: the general problem (FrictionUnits) and
+// one contact's dense 3 x 3 block (one_contact_residuals), so that both give the same numbers.
+struct SparseRows {
+  const FrictionUnits& d;
+  template <class F>
+  void visit(Eigen::Index k, F&& f) const {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it)
+      f(it.col(), it.value());
+  }
+  double gamma(Eigen::Index k) const { return d.row_gamma[k]; }
+  double cap(Eigen::Index col) const { return d.r_cap[col / 3]; }
+  double block_max(Eigen::Index i) const { return d.block_max[i]; }
+};
 
 // What the verdict reads of one contact: its units, its velocity after the rounding allowance,
 // and whether the allowance stayed within the data's size.
@@ -99,23 +116,25 @@ struct ContactReading {
   bool verifiable = true;  // false when u cannot be formed within the data's allowance
 };
 
-ContactReading read_contact(const FrictionContactProblem& p, const FrictionUnits& d,
-                            Eigen::Index i, const Eigen::VectorXd& r, const Eigen::VectorXd& u) {
+// Contact i of r (3 n_c entries), u = W r + q; q: the problem's q (3 n_c entries).
+template <class Rows>
+ContactReading read_contact(const Rows& rows, const double* q, Eigen::Index i, const double* r,
+                            const double* u) {
   ContactReading cu;
   double c_max = 0;
   for (int j = 0; j < 3; ++j) {
     const Eigen::Index k = 3 * i + j;
     double c = 0, full = 0;  // (|W| rc)_k and (|W| |r|)_k
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
-      const double a = std::abs(it.value()), ar = std::abs(r[it.col()]);
-      c += a * std::min(ar, d.r_cap[it.col() / 3]);
+    rows.visit(k, [&](Eigen::Index col, double value) {
+      const double a = std::abs(value), ar = std::abs(r[col]);
+      c += a * std::min(ar, rows.cap(col));
       full += a * ar;
-    }
-    const double qk = std::abs(p.q[k]);
-    double a = d.row_gamma[k] * (c + qk), uk = u[k];
+    });
+    const double qk = std::abs(q[k]);
+    double a = rows.gamma(k) * (c + qk), uk = u[k];
     if (full > c) {  // some |r_j| beyond the data's size: form u_k accurately (header comment)
-      uk = accurate_row(d, k, r, p.q[k]);
-      const double g = d.row_gamma[k];
+      uk = accurate_row(rows, k, r, q[k]);
+      const double g = rows.gamma(k);
       const double own = 2 * kEps * std::abs(uk) + g * g * (full + qk);
       if (g * g * (full + qk) > a) cu.verifiable = false;
       a += own;
@@ -126,10 +145,11 @@ ContactReading read_contact(const FrictionContactProblem& p, const FrictionUnits
     cu.u_reduced[j] = std::copysign(std::max(0.0, std::abs(uk) - a), uk);
     cu.rounding = std::max(cu.rounding, ratio(a, s));
   }
-  cu.units.S = p.q.segment<3>(3 * i).norm() + c_max;
+  cu.units.S = Eigen::Map<const Vec3>(q + 3 * i).norm() + c_max;
   // W = 0 (no d_i): r does not move u, and r_i is judged in its own size alone.
-  const double r_own = r.segment<3>(3 * i).lpNorm<Eigen::Infinity>();
-  cu.units.R = d.block_max[i] > 0 ? std::max(r_own, cu.units.S / d.block_max[i]) : r_own;
+  const double r_own = Eigen::Map<const Vec3>(r + 3 * i).lpNorm<Eigen::Infinity>();
+  const double d_i = rows.block_max(i);
+  cu.units.R = d_i > 0 ? std::max(r_own, cu.units.S / d_i) : r_own;
   return cu;
 }
 
@@ -179,7 +199,7 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
   for (Eigen::Index i = 0; i < nc; ++i) {
     const double mu = p.mu[i];
     const Vec3 ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
-    const ContactReading cu = read_contact(p, d, i, r, u);
+    const ContactReading cu = read_contact(SparseRows{d}, p.q.data(), i, r.data(), u.data());
     res.scale = std::max(res.scale, cu.units.S);
     res.z_scale = std::max(res.z_scale, cu.units.R);
     const ContactReport c = judge_contact(ri, cu.u_reduced, cu.units, mu, state_tol);
@@ -207,6 +227,49 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
     errors->relative_max = siconos_relative(E, std::max({p.q.norm(), r.norm(), u.norm()}));
   }
   return res;
+}
+
+namespace {
+
+// One contact's dense 3 x 3 W as the verdict reads it (SparseRows' twin): every column is
+// visited, the entries not stored being exact zeros, which change no sum when r is finite.
+struct DenseRows {
+  const Mat3& W;
+  double row_gamma[3];
+  double r_cap, d;
+  template <class F>
+  void visit(Eigen::Index k, F&& f) const {
+    for (Eigen::Index j = 0; j < 3; ++j) f(j, W(k, j));
+  }
+  double gamma(Eigen::Index k) const { return row_gamma[k]; }
+  double cap(Eigen::Index) const { return r_cap; }
+  double block_max(Eigen::Index) const { return d; }
+};
+
+}  // namespace
+
+double one_contact_unit_free(const Mat3& W, const int stored[3], const Vec3& q, double mu,
+                             const Vec3& r, Vec3& u) {
+  // u as finalize() forms W r + q: the row's products summed in column order, then q.
+  for (int k = 0; k < 3; ++k) {
+    double s = 0;
+    for (int j = 0; j < 3; ++j) s += W(k, j) * r[j];
+    u[k] = s + q[k];
+  }
+  if (!r.allFinite() || !u.allFinite()) return kInf;
+  // The units of friction_units() for one contact (its block is all of W).
+  DenseRows rows{W, {}, kInf, 0};
+  double w_max = 0;
+  for (int k = 0; k < 3; ++k) {
+    for (int j = 0; j < 3; ++j) w_max = std::max(w_max, std::abs(W(k, j)));
+    rows.row_gamma[k] = gamma_bound(static_cast<double>(stored[k]) + 1);
+  }
+  const double q_inf = q.lpNorm<Eigen::Infinity>();
+  rows.d = w_max;
+  if (q_inf > 0 && w_max > 0) rows.r_cap = q_inf / w_max;  // cap_0 = max(r_ref, q_inf / d) = r_ref
+  const ContactReading cu = read_contact(rows, q.data(), 0, r.data(), u.data());
+  const double v = cu.verifiable ? judge_contact(r, cu.u_reduced, cu.units, mu).error : kInf;
+  return std::max(0.0, v);
 }
 
 const char* to_string(ContactState s) noexcept {

@@ -247,6 +247,60 @@ double row_violation(double wn, double dlo, double dhi) noexcept {
   return std::max(feas, std::min({at_lower, at_upper, inside}));
 }
 
+double small_lcp_natural(int n, const double* M, const double* q, const double* z, double* w) {
+  if (n < 1 || n > kSmallLcpMax) return kInf;
+  // Every step as lcp_residuals() takes it for a dense problem (the sums in column order, as
+  // Eigen's products and row sums of these sizes add them), on the stack.
+  auto m = [&](int i, int j) { return M[i + n * j]; };
+  double zp[kSmallLcpMax], wp[kSmallLcpMax], R[kSmallLcpMax], s[kSmallLcpMax];
+  bool moved = false;
+  double q_norm = 0, m_max = 0, z_norm = 0;
+  for (int i = 0; i < n; ++i) {
+    zp[i] = std::min(std::max(z[i], 0.0), kInf);
+    moved = moved || !(zp[i] == z[i]);
+    q_norm = std::max(q_norm, std::abs(q[i]));
+    z_norm = std::max(z_norm, std::abs(zp[i]));
+    for (int j = 0; j < n; ++j) m_max = std::max(m_max, std::abs(m(i, j)));
+  }
+  for (int i = 0; i < n; ++i) {
+    double mz = 0, mzp = 0, abs_mz = 0, row_sum = 0;
+    for (int j = 0; j < n; ++j) {
+      mz += m(i, j) * z[j];
+      mzp += m(i, j) * zp[j];
+      abs_mz += std::abs(m(i, j)) * std::abs(zp[j]);
+      row_sum += std::abs(m(i, j));
+    }
+    w[i] = mz + q[i];
+    wp[i] = moved ? mzp + q[i] : w[i];
+    R[i] = abs_mz + std::abs(q[i]);
+    double row = row_sum * z_norm;  // w_units()
+    if (m_max > 0 && q_norm > 0) row = std::min(row, (row_sum / m_max) * q_norm);
+    s[i] = std::abs(q[i]) + row;
+  }
+  DataSizes d;
+  d.q_norm = q_norm;
+  d.m_max = m_max;
+  const double Z = z_unit(d, z_norm);
+  const double g = gamma_bound(n);
+  bool finite = true;
+  double natural = 0, bound = 0;
+  for (int i = 0; i < n; ++i) {  // unit_free_residual() and bound_violation() of fill_common()
+    finite = finite && std::isfinite(z[i]) && std::isfinite(wp[i]) && std::isfinite(R[i]) &&
+             std::isfinite(s[i]);
+    const RowValues v = row_values(zp[i], wp[i], R[i], s[i], 0.0, kInf, Z, g);
+    double r = row_violation(v.wn, v.to_lower, v.to_upper);
+    if (!std::isfinite(zp[i]) || !std::isfinite(wp[i]) || !std::isfinite(R[i]) ||
+        !std::isfinite(s[i]) || std::isnan(r))
+      r = kInf;
+    natural = std::max(natural, r);
+    double b = std::max(0.0, ratio(-z[i], Z));  // z_i below its bound 0
+    if (std::isnan(b)) b = kInf;
+    bound = std::max(bound, b);
+  }
+  natural = std::max(natural, bound);
+  return finite ? natural : kInf;
+}
+
 UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w) {
   w = p.w(z);
   const Vec zp = projected(z, nullptr, nullptr);

@@ -18,7 +18,15 @@
 #include <thread>
 #include <vector>
 
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include "cpkit/core/finalize.hpp"
+#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/residuals.hpp"
 #include "cpkit/cpkit.h"
+#include "cpkit/lcp/friction/one_contact.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "cpkit/rate_problem/rate/rate_request.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 
@@ -513,4 +521,218 @@ TEST_CASE("C API: a system's rate problem and step as JSON", "[capi]") {
   REQUIRE(json != nullptr);
   CHECK(nlohmann::json::parse(json)["input"]["facets"] == 16);
   cpkit_free(json);
+}
+
+namespace {
+
+/// Every solution of a small LCP by brute force over the 2^n complementary bases
+/// (z_S = -M_SS^{-1} q_S, z = 0 off S, checked z >= 0 and w >= 0 within 1e-9 of the data's
+/// size); `unique` is false when two bases give different points or a basis is singular.
+struct BruteForce {
+  int count = 0;
+  bool singular = false;
+  Eigen::VectorXd z;
+};
+BruteForce brute_force(const Eigen::MatrixXd& M, const Eigen::VectorXd& q) {
+  const int n = static_cast<int>(q.size());
+  BruteForce b;
+  const double scale = q.lpNorm<Eigen::Infinity>() + M.lpNorm<Eigen::Infinity>();
+  for (unsigned S = 0; S < (1u << n); ++S) {
+    std::vector<int> idx;
+    for (int i = 0; i < n; ++i)
+      if (S >> i & 1u) idx.push_back(i);
+    const int k = static_cast<int>(idx.size());
+    Eigen::MatrixXd A(k, k);
+    Eigen::VectorXd rhs(k);
+    for (int a = 0; a < k; ++a) {
+      rhs[a] = -q[idx[a]];
+      for (int c = 0; c < k; ++c) A(a, c) = M(idx[a], idx[c]);
+    }
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    if (k > 0) {
+      const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+      if (!lu.isInvertible() || std::abs(lu.determinant()) < 1e-10 * std::pow(scale, k)) {
+        b.singular = true;
+        continue;
+      }
+      const Eigen::VectorXd x = lu.solve(rhs);
+      for (int a = 0; a < k; ++a) z[idx[a]] = x[a];
+    }
+    const Eigen::VectorXd w = M * z + q;
+    const double size = 1e-9 * (1 + scale * (1 + z.lpNorm<Eigen::Infinity>()));
+    if (z.minCoeff() < -size || w.minCoeff() < -size) continue;
+    if (b.count > 0 && (z - b.z).lpNorm<Eigen::Infinity>() <= size) continue;  // the same point
+    ++b.count;
+    b.z = z;
+  }
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("C API: tiny LCPs on the per-call path equal the registered solver and brute force",
+          "[capi]") {
+  // n = 1..4 with "lemke" and "auto" take the allocation-free path when the enumeration proves
+  // one solution. Problems: positive definite M (one solution) and general M with q made from a
+  // chosen complementary pair (z*, w*) (a solution exists; there may be several), at mixed
+  // scales. Oracles: the brute force above (the answer, when it finds exactly one point and no
+  // singular basis) and the registered "auto" chain through finalize() (the general route: its
+  // status, and its point where the solution is unique); the reported residual and w are
+  // finalize()'s numbers on the returned z.
+  std::mt19937 g(4837);
+  std::normal_distribution<double> gauss;
+  std::uniform_int_distribution<int> scale(-8, 8);
+  const cpkit::SolverEntry& automatic = *cpkit::lcp::solvers().find("auto");
+  int unique = 0, compared = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = 1 + trial % 4;
+    Eigen::MatrixXd M(n, n);
+    Eigen::VectorXd q(n), zs = Eigen::VectorXd::Zero(n), ws = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < n; ++i) {
+      (g() % 2 ? zs[i] : ws[i]) = std::abs(gauss(g));
+      for (int j = 0; j < n; ++j) M(i, j) = gauss(g);
+    }
+    if (trial % 3 != 0) M = M * M.transpose() + 0.1 * Eigen::MatrixXd::Identity(n, n);  // PD
+    q = ws - M * zs;
+    const double s = std::ldexp(1.0, scale(g));  // units: (M, q) -> s (M, q) changes nothing
+    M *= s;
+    q *= s * std::ldexp(1.0, scale(g));
+    CAPTURE(trial, n);
+    const cpkit::LcpProblem p(M, q);
+    const cpkit::SolveResult general = automatic.solve_lcp(p, cpkit::CommonOptions{});
+    REQUIRE(cpkit::is_solution(general.status));  // a solution exists by construction
+    const BruteForce b = brute_force(M, q);
+    for (const char* solver : {"lemke", "auto"}) {
+      CAPTURE(solver);
+      std::vector<double> z(n), w(n);
+      cpkit_info info;
+      const int code = cpkit_lcp_solve(n, M.data(), q.data(), solver, nullptr, z.data(), w.data(),
+                                       &info);
+      if (b.count == 1 && !b.singular) {  // the unique solution: every route must find it
+        REQUIRE(code == 0);
+        for (int i = 0; i < n; ++i) {
+          const double tol = 1e-8 * b.z.lpNorm<Eigen::Infinity>();
+          REQUIRE(std::abs(z[i] - b.z[i]) <= tol);
+          REQUIRE(std::abs(general.z[i] - b.z[i]) <= tol);
+        }
+        ++unique;
+      }
+      if (code == 0) {  // the verdict on the returned point is finalize()'s, number included
+        const Eigen::VectorXd zv = Eigen::Map<Eigen::VectorXd>(z.data(), n);
+        Eigen::VectorXd wv;
+        const cpkit::Residuals res = cpkit::lcp_residuals(p, zv, wv);
+        REQUIRE(res.natural <= cpkit::CommonOptions{}.tol_acceptable);
+        REQUIRE(info.residual == res.natural);
+        for (int i = 0; i < n; ++i) REQUIRE(w[i] == wv[i]);
+      } else {
+        REQUIRE(std::strcmp(solver, "lemke") == 0);  // Lemke may miss a non-monotone problem
+      }
+      ++compared;
+    }
+  }
+  CHECK(compared == 800);
+  CHECK(unique >= 500);
+}
+
+TEST_CASE("C API: one contact on the per-call path equals the registered NSGS and the closed form",
+          "[capi]") {
+  // Decoupled isotropic contacts W = diag(a, c, c) (the projection by hand: r_N =
+  // max(0, -q_N / a), r_T = -q_T / c projected onto |r_T| <= mu r_N) and coupled ones
+  // (W = J J^T, the solution checked against the registered NSGS where both are unique by the
+  // closed form of lcp::friction::one_contact_solutions). The reported residual is the
+  // friction verdict's number on the returned r.
+  std::mt19937 g(2037);
+  std::normal_distribution<double> gauss;
+  std::uniform_real_distribution<double> pos(0.2, 3);
+  std::uniform_int_distribution<int> scale(-6, 6);
+  const double mus[] = {0.0, 0.1, 0.5, 2.0};
+  const cpkit::SolverEntry& nsgs = *cpkit::lcp::solvers().find("nsgs");
+  int by_hand = 0, by_nsgs = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const bool decoupled = trial % 2 == 0;
+    cpkit::Mat3 W;
+    if (decoupled) {
+      W = cpkit::Vec3(pos(g), 0, 0).asDiagonal();
+      W(1, 1) = W(2, 2) = pos(g);
+    } else {
+      cpkit::Mat3 J;
+      for (int i = 0; i < 9; ++i) J.data()[i] = gauss(g);
+      W = J * J.transpose() + 0.05 * cpkit::Mat3::Identity();
+    }
+    const double s = std::ldexp(1.0, scale(g));
+    W *= s;
+    const cpkit::Vec3 q = s * std::ldexp(1.0, scale(g)) * cpkit::Vec3(gauss(g), gauss(g), gauss(g));
+    const double mu = mus[trial % 4];
+    const int col[4] = {0, 3, 6, 9}, row[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+    double r[3], u[3];
+    cpkit_info info;
+    CAPTURE(trial, decoupled, mu);
+    const int code =
+        cpkit_fc3d_solve(1, 9, col, row, W.data(), q.data(), &mu, "auto", nullptr, r, u, &info);
+    cpkit::FrictionContactProblem p;
+    Eigen::MatrixXd Wd = W;
+    p.W = Wd.sparseView(1.0, -1.0);  // all 9 entries stored, as given to the C API
+    p.q = q;
+    p.mu = Eigen::VectorXd::Constant(1, mu);
+    const Eigen::Map<const cpkit::Vec3> rv(r);
+    if (code == 0) {
+      const cpkit::FrictionErrors e = cpkit::friction_errors(p, rv);
+      REQUIRE(e.unit_free <= cpkit::CommonOptions{}.tol_acceptable);
+      REQUIRE(info.residual == e.unit_free);
+    }
+    const double size = 1e-9 * std::max(rv.norm(), q.norm() / W.cwiseAbs().maxCoeff());
+    if (decoupled) {  // unique: the projection by hand
+      REQUIRE(code == 0);
+      cpkit::Vec3 hand(q[0] < 0 ? -q[0] / W(0, 0) : 0, -q[1] / W(1, 1), -q[2] / W(1, 1));
+      if (hand[0] == 0) hand.setZero();
+      const double t = hand.tail<2>().norm();
+      if (t > mu * hand[0]) hand.tail<2>() *= mu * hand[0] / t;
+      REQUIRE((rv - hand).norm() <= size);
+      ++by_hand;
+      continue;
+    }
+    const auto all = cpkit::lcp::friction::one_contact_solutions(W, q, mu);
+    if (all.count != 1) continue;
+    const cpkit::SolveResult general = nsgs.solve_fc(p, cpkit::CommonOptions{});
+    if (!cpkit::is_solution(general.status)) continue;
+    REQUIRE(code == 0);
+    REQUIRE((rv - all.r[0]).norm() <= size);
+    REQUIRE((general.z - rv).norm() <= 1e-6 * std::max(rv.norm(), size));
+    ++by_nsgs;
+  }
+  CHECK(by_hand == 200);
+  CHECK(by_nsgs >= 120);
+}
+
+TEST_CASE("C API: tiny LCPs by hand through the P-matrix route and past it", "[capi]") {
+  double z[2], w[2];
+  cpkit_info info;
+  // M = [[1, -3], [0, 1]]: principal minors 1, 1 and 1 (a P-matrix, though not positive
+  // definite: its symmetric part has eigenvalues 1 +- 1.5). q = (-1, -1): w = 0 gives z_1 = 1,
+  // z_0 = 1 + 3 z_1 = 4, the only solution.
+  const double M[4] = {1, 0, -3, 1}, q[2] = {-1, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 4.0);
+  CHECK(z[1] == 1.0);
+  CHECK(w[0] == 0.0);
+  CHECK(w[1] == 0.0);
+  // q = (5, -1): the guess basis {1} gives z = (0, 1), w_0 = 5 - 3 = 2 >= 0: z = (0, 1).
+  const double q2[2] = {5, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q2, "lemke", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 0.0);
+  CHECK(z[1] == 1.0);
+  CHECK(w[0] == 2.0);
+  // q = (2, -1): the guess {1} gives w_0 = 2 - 3 = -1 < 0; the basis {0, 1}: z_1 = 1,
+  // z_0 = -2 + 3 = 1.
+  const double q3[2] = {2, -1};
+  REQUIRE(cpkit_lcp_solve(2, M, q3, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] == 1.0);
+  CHECK(z[1] == 1.0);
+  // M = [[1, 1], [1, 1]] (singular: not a P-matrix), q = (-1, -1): every z >= 0 with
+  // z_0 + z_1 = 1 solves it; the enumeration finds a continuum and the general route answers.
+  const double S[4] = {1, 1, 1, 1};
+  REQUIRE(cpkit_lcp_solve(2, S, q, "auto", nullptr, z, w, &info) == 0);
+  CHECK(z[0] + z[1] == Approx(1.0).epsilon(1e-12));
+  CHECK(std::min(z[0], z[1]) >= 0.0);
+  CHECK(std::abs(w[0]) <= 1e-12);
 }

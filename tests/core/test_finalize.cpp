@@ -3,6 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <Eigen/LU>
 
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/residuals.hpp"
@@ -356,4 +361,55 @@ TEST_CASE("A huge row excuses nothing in a small one; nothing non-finite is solv
     CHECK(cpkit::finalize(t, claim(Status::kSolved, Vec{{0}}), {}).status ==
           Status::kNumericalFailure);
   }
+}
+
+TEST_CASE("small_lcp_natural is lcp_residuals' number, bit for bit, n = 1..4", "[residuals]") {
+  // The C API's allocation-free verdict must decide as finalize() does: the same unit-free
+  // residual from the same data, on a seeded family of mixed-scale problems and candidates
+  // (exact solutions of a basis, random points with negative entries, zeros, huge and tiny z).
+  std::mt19937 rng(20261129);
+  std::normal_distribution<double> g;
+  std::uniform_int_distribution<int> e(-6, 6), pick(0, 4);
+  int compared = 0, solved = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int n = 1 + trial % cpkit::kSmallLcpMax;
+    Mat M(n, n);
+    Vec q(n), z(n);
+    for (int i = 0; i < n; ++i) {
+      q[i] = g(rng) * std::ldexp(1.0, e(rng));
+      for (int j = 0; j < n; ++j) M(i, j) = pick(rng) == 0 ? 0.0 : g(rng) * std::ldexp(1.0, e(rng));
+    }
+    switch (trial % 5) {
+      case 0: z = Vec::Zero(n); break;
+      case 1: z = Vec::NullaryExpr(n, [&] { return g(rng); }); break;       // some z_i < 0
+      case 2: z = Vec::NullaryExpr(n, [&] { return 1e200 * std::abs(g(rng)); }); break;
+      default: {  // the basic solution of a random basis, z_S = -M_SS^{-1} q_S, others 0
+        z = Vec::Zero(n);
+        std::vector<int> S;
+        for (int i = 0; i < n; ++i)
+          if (pick(rng) < 3) S.push_back(i);
+        Mat A(S.size(), S.size());
+        Vec b(S.size());
+        for (std::size_t a = 0; a < S.size(); ++a) {
+          b[a] = -q[S[a]];
+          for (std::size_t c = 0; c < S.size(); ++c) A(a, c) = M(S[a], S[c]);
+        }
+        const Vec x = A.fullPivLu().solve(b);
+        for (std::size_t a = 0; a < S.size(); ++a) z[S[a]] = x[a];
+      }
+    }
+    Vec w_general;
+    const double general = cpkit::lcp_residuals(LcpProblem(M, q), z, w_general).natural;
+    double w_small[cpkit::kSmallLcpMax];
+    const double small = cpkit::small_lcp_natural(n, M.data(), q.data(), z.data(), w_small);
+    INFO("trial " << trial << " n " << n);
+    REQUIRE(std::memcmp(&small, &general, sizeof small) == 0);  // bit for bit (+inf included)
+    for (int i = 0; i < n; ++i) REQUIRE(w_small[i] == w_general[i]);
+    ++compared;
+    if (general <= CommonOptions{}.tol) ++solved;
+  }
+  CHECK(compared == 4000);
+  CHECK(solved >= 200);  // the family exercises the accepted side of the verdict too
+  double w[1];
+  CHECK(std::isinf(cpkit::small_lcp_natural(5, nullptr, nullptr, nullptr, w)));  // n > 4: no number
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -13,6 +14,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <Eigen/LU>
+#include <Eigen/SparseCore>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_cone.hpp"
@@ -284,4 +288,73 @@ TEST_CASE("unit invariance: same verdict under q -> a q and (W, q) -> b (W, q)",
       }
     }
   }
+}
+
+TEST_CASE("one_contact_unit_free is the verdict's number, bit for bit", "[friction][verdict]") {
+  // The C API's allocation-free verdict of one contact must decide as finalize() does: the same
+  // unit_free and u from the same data, on a seeded family: W = J J^T, non-symmetric, diagonal,
+  // with entries not stored and exact zeros stored; mixed scales; candidates 0, random, the
+  // stick force, the closed-form solution of a diagonal W, and a diverging r (which the verdict
+  // forms in twice the working precision).
+  std::mt19937 rng(37);
+  std::normal_distribution<double> g;
+  std::uniform_int_distribution<int> e(-5, 5), coin(0, 3);
+  const double mus[] = {0.0, 0.3, 1.0, 40.0};
+  int compared = 0, solved = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    cpkit::Mat3 W;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) W(i, j) = g(rng);
+    if (trial % 3 == 0) W = W * W.transpose();
+    if (trial % 3 == 1) W = W.diagonal().cwiseAbs().asDiagonal();
+    W *= std::ldexp(1.0, e(rng));
+    const cpkit::Vec3 q(g(rng) * std::ldexp(1.0, e(rng)), g(rng), g(rng) * std::ldexp(1.0, e(rng)));
+    const double mu = mus[trial % 4];
+    // Stored entries: the nonzeros, some zeros stored explicitly, some zeros made by hand.
+    std::vector<Eigen::Triplet<double>> t;
+    int stored[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        if (W(i, j) != 0 && coin(rng) == 0 && i != j) W(i, j) = 0;  // a zero, maybe stored
+        if (W(i, j) != 0 || coin(rng) == 0) {
+          t.emplace_back(i, j, W(i, j));
+          ++stored[i];
+        }
+      }
+    FrictionContactProblem p;
+    p.W.resize(3, 3);
+    p.W.setFromTriplets(t.begin(), t.end());
+    p.q = q;
+    p.mu = v1(mu);
+    cpkit::Vec3 r;
+    switch (trial % 5) {
+      case 0: r.setZero(); break;
+      case 1: r = cpkit::Vec3(g(rng), g(rng), g(rng)); break;
+      case 2: r = 1e13 * cpkit::Vec3(1, g(rng), g(rng)); break;
+      case 3: r = W.fullPivLu().solve(-q); break;  // stick force (in the cone or not)
+      default: {  // W diagonal: r_N = max(0, -q_N / W_NN), r_T the projected stick force
+        const double rn = q[0] < 0 && W(0, 0) > 0 ? -q[0] / W(0, 0) : 0;
+        cpkit::Vec3 s(rn, -q[1] / W(1, 1), -q[2] / W(2, 2));
+        const double nt = s.tail<2>().norm();
+        if (nt > mu * rn) s.tail<2>() *= mu * rn / nt;
+        r = s.allFinite() ? s : cpkit::Vec3::Zero();
+      }
+    }
+    SolveResult s = claim(r);
+    s = cpkit::finalize(p, s, CommonOptions{});
+    cpkit::Vec3 u;
+    const double fast = cpkit::one_contact_unit_free(W, stored, q, mu, r, u);
+    INFO("trial " << trial);
+    REQUIRE(std::memcmp(&fast, &s.residuals.natural, sizeof fast) == 0);
+    for (int i = 0; i < 3; ++i) REQUIRE(u[i] == s.w[i]);
+    ++compared;
+    if (s.status == Status::kSolved) ++solved;
+  }
+  CHECK(compared == 3000);
+  CHECK(solved >= 300);  // the accepted side of the verdict is exercised too
+  cpkit::Vec3 u;
+  const int stored[3] = {1, 1, 1};
+  CHECK(std::isinf(cpkit::one_contact_unit_free(cpkit::Mat3::Identity(), stored,
+                                                cpkit::Vec3(-1, 0, 0), 0.5,
+                                                cpkit::Vec3(NAN, 0, 0), u)));
 }

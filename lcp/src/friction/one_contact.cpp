@@ -73,15 +73,16 @@ int poly_roots(const Cplx* c, int N, Cplx* z) {
   return N;
 }
 
-// f(phi) = a0 + a1 cos + b1 sin + a2 cos 2phi + b2 sin 2phi and f'(phi).
+// f(phi) = a0 + a1 cos + b1 sin + a2 cos 2phi + b2 sin 2phi and f'(phi), from one sine and
+// cosine (the double angles by their identities: Newton's step below calls this up to 8 times
+// per root, and the trigonometric calls were most of a one-contact solve).
 struct Trig2 {
   double a0, a1, b1, a2, b2;
-  double f(double p) const {
-    return a0 + a1 * std::cos(p) + b1 * std::sin(p) + a2 * std::cos(2 * p) + b2 * std::sin(2 * p);
-  }
-  double df(double p) const {
-    return -a1 * std::sin(p) + b1 * std::cos(p) - 2 * a2 * std::sin(2 * p) +
-           2 * b2 * std::cos(2 * p);
+  void eval(double p, double& f, double& df) const {
+    const double c = std::cos(p), s = std::sin(p);
+    const double c2 = c * c - s * s, s2 = 2 * s * c;
+    f = a0 + a1 * c + b1 * s + a2 * c2 + b2 * s2;
+    df = -a1 * s + b1 * c - 2 * a2 * s2 + 2 * b2 * c2;
   }
 };
 
@@ -109,9 +110,10 @@ int trig_roots(const Trig2& t, double* phi) {
     if (!(std::abs(mod - 1) < 1e-3)) continue;
     double p = std::arg(roots[i]);
     for (int it = 0; it < 8; ++it) {  // Newton in phi (the root is real)
-      const double d = t.df(p);
+      double f, d;
+      t.eval(p, f, d);
       if (d == 0) break;
-      const double step = t.f(p) / d;
+      const double step = f / d;
       if (!std::isfinite(step) || std::abs(step) > 0.1) break;
       p -= step;
       if (std::abs(step) < 1e-16) break;

@@ -128,6 +128,15 @@ Residuals friction_residuals(const FrictionContactProblem& problem, const Fricti
                              std::vector<ContactReport>* contacts = nullptr,
                              double state_tol = 0);
 
+/// The unit_free number of ONE contact (n_c = 1) from its dense 3 x 3 W, without building a
+/// problem or allocating (the C API's per-call path): u receives W r + q, formed as finalize()
+/// forms it, and the value returned is friction_residuals(...).natural of the problem whose W
+/// stores stored[k] entries in row k (the entries not stored are exact zeros; stored ones may be
+/// zeros too: the rounding allowance counts them). The same number bit for bit
+/// (tests/core/test_friction_verdict.cpp); +inf for a non-finite r or u.
+double one_contact_unit_free(const Mat3& W, const int stored[3], const Vec3& q, double mu,
+                             const Vec3& r, Vec3& u);
+
 /// Per-contact report of r (u = W r + q recomputed), states decided against `tol`; the default
 /// (tol < 0) is the answer's own unit_free: a force or a sliding velocity smaller than the
 /// accuracy of the answer is not told from zero (0: only the rounding allowance counts as zero).

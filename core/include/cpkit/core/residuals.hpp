@@ -88,6 +88,12 @@ UnitFreePoint unit_free_point(const BoxLcpProblem& p, const Vec& z, Vec& w);
 
 /// LCP residuals of z; also returns w = M z + q computed from the data.
 Residuals lcp_residuals(const LcpProblem& p, const Vec& z, Vec& w);
+/// The largest n small_lcp_natural() takes.
+constexpr int kSmallLcpMax = 4;
+/// lcp_residuals(p, z, w).natural for a dense problem of size 1 <= n <= kSmallLcpMax given as
+/// raw arrays (M column-major n x n, q, z; w receives M z + q), without allocating: the C API's
+/// per-call path. The same number bit for bit (tests/core/test_residuals.cpp); +inf for another n.
+double small_lcp_natural(int n, const double* M, const double* q, const double* z, double* w);
 /// Box-LCP residuals (box rule per row).
 Residuals box_lcp_residuals(const BoxLcpProblem& p, const Vec& z, Vec& w);
 /// MCP residuals with F evaluated at x (F given). The units come from the linearisation
