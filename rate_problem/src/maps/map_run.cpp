@@ -91,6 +91,7 @@ void run_local(const ChunkRun& run, ChunkRunStats& stats) {
   }
   stats.complete = col.all_consumed();
   stats.rows_done = col.rows_consumed();
+  if (stats.stopped && run.progress) run.progress("chunks", -1);
   if (!stats.complete && run.chunk_limit < 0 && !stats.stopped)
     throw std::logic_error("map chunks left unconsumed");
 }
@@ -195,6 +196,7 @@ void run_rank0(const ChunkRun& run, MapTransport& t, const std::vector<char>& ha
   }
   stats.rows_done = col.rows_consumed();
   stats.stopped = stopped;
+  if (stopped && run.progress) run.progress("chunks", -1);
   stats.complete = col.all_consumed();
   if (!stats.complete && !stopped) throw std::logic_error("map chunks left unconsumed");
 }

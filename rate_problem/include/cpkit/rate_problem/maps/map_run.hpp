@@ -76,7 +76,8 @@ struct ChunkRun {
   int chunk_limit = -1;
   /// Asked (on rank 0) before each chunk is begun or handed out: true stops the run there (the
   /// time limit of `cpkit map`). The chunks already running are finished and kept; the run
-  /// returns complete = false and stopped = true, to be resumed. Empty: never.
+  /// returns complete = false and stopped = true, to be resumed; `progress` then gets the
+  /// fraction -1 (the phase ended early). Empty: never.
   std::function<bool()> stop;
 };
 
