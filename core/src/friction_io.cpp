@@ -34,7 +34,8 @@ struct Input {
 void refuse_json(const std::string& text, const std::string& path) {
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos || (text[first] != '{' && text[first] != '[')) return;
-  const bool lcp = text.find("\"M\"") != std::string::npos && text.find("\"q\"") != std::string::npos;
+  const bool lcp =
+      text.find("\"M\"") != std::string::npos && text.find("\"q\"") != std::string::npos;
   throw InputError(io_text::valid_utf8(path) + ": " +
                    (lcp ? "an LCP file (JSON with M and q)" : "a JSON file") +
                    ", not a frictional contact problem (FCLIB HDF5 or Siconos FrictionContact / "

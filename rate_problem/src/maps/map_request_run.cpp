@@ -121,6 +121,25 @@ void report_disagreements(std::ostream& err, int64_t n, const std::string& what)
                "CSV / 'enumerate' in the JSON)\n");
 }
 
+/// A grid map stopped by --time-limit after `done` of its `rows` rows: flagged in its JSON
+/// (complete, time_limit_reached, rows_done), said on stderr; returns the head line of its text.
+std::string report_time_limit(nlohmann::json& j, double limit, int done, int rows,
+                              const std::string& prefix, const MapEnvironment& env) {
+  j["complete"] = false;
+  j["time_limit_reached"] = true;
+  j["rows_done"] = done;
+  const std::string what = "time limit reached (--time-limit " + map_number_text(limit) +
+                           " s) after " + std::to_string(done) + " of " + std::to_string(rows) +
+                           " rows";
+  err_of(env) << "cpkit map: " << what << ": the map is incomplete ('complete': false)"
+              << (prefix.empty() ? std::string(". Use a smaller --n")
+                                 : "; no map file was written, the finished rows are kept in " +
+                                       prefix + ".parts: run the same command with --resume to "
+                                       "continue")
+              << " (or raise --time-limit)\n";
+  return "INCOMPLETE: " + what + "; the summary below covers those rows only\n";
+}
+
 // ---- one point -------------------------------------------------------------------------------
 
 /// What the parts of a one-point map run share.
@@ -216,24 +235,6 @@ bool run_param_param_grid(OnePointRun& p, GridFiles& out, const GridRunOptions& 
   return true;
 }
 
-/// A grid map stopped by --time-limit: flagged in the JSON and the text, said on stderr.
-void report_time_limit(OnePointRun& p) {
-  const int rows = p.s.axis.n, done = p.stats.rows_done;
-  const std::string limit = map_number_text(p.a.time_limit);
-  p.j["complete"] = false;
-  p.j["time_limit_reached"] = true;
-  p.j["rows_done"] = done;
-  const std::string what = "time limit reached (--time-limit " + limit + " s) after " +
-                           std::to_string(done) + " of " + std::to_string(rows) + " rows";
-  p.text = "INCOMPLETE: " + what + "; the summary below covers those rows only\n" + p.text;
-  err_of(p.env) << "cpkit map: " << what << ": the map is incomplete ('complete': false)"
-                << (p.prefix.empty()
-                        ? std::string(". Use a smaller --n")
-                        : std::string("; no map file was written, the finished rows are kept in ") +
-                              p.prefix + ".parts: run the same command with --resume to continue")
-                << " (or raise --time-limit)\n";
-}
-
 /// Grid maps: estimate, refuse what cannot fit, then stream the cells to the files; false on
 /// ranks other than 0.
 bool run_grid_map(OnePointRun& p) {
@@ -285,7 +286,9 @@ bool run_grid_map(OnePointRun& p) {
   run.stop = [&clock, limit] { return clock.seconds() >= limit; };
   const bool ok = s.kind == MapKind::kParamDirection ? run_param_direction_grid(p, out, run)
                                                      : run_param_param_grid(p, out, run);
-  if (ok && !p.stats.complete) report_time_limit(p);
+  if (ok && !p.stats.complete)
+    p.text = report_time_limit(p.j, a.time_limit, p.stats.rows_done, s.axis.n, p.prefix, p.env) +
+             p.text;
   return ok;
 }
 
@@ -410,22 +413,10 @@ MapOutcome finish_system_grid(const SystemMapRequest& r, nlohmann::json j, nlohm
   j["estimate"] = estimate;
   add_run_figures(j, stats);
   if (!r.out.empty()) j["format"] = r.format;
-  std::string head;
-  if (!stats.complete) {  // stopped by --time-limit: no map file, the chunks kept for --resume
-    const std::string what = "time limit reached (--time-limit " + map_number_text(r.time_limit) +
-                             " s) after " + std::to_string(stats.rows_done) + " of " +
-                             std::to_string(rows) + " rows";
-    j["complete"] = false;
-    j["time_limit_reached"] = true;
-    j["rows_done"] = stats.rows_done;
-    head = "INCOMPLETE: " + what + "; the summary below covers those rows only\n";
-    err_of(env) << "cpkit map: " << what << ": the map is incomplete ('complete': false)"
-                << (r.out.empty() ? std::string(". Use a smaller --n")
-                                  : "; no map file was written, the finished rows are kept in " +
-                                        r.out + ".parts: run the same command with --resume to "
-                                        "continue")
-                << " (or raise --time-limit)\n";
-  }
+  // Stopped by --time-limit: no map file, the chunks kept for --resume.
+  const std::string head =
+      stats.complete ? std::string()
+                     : report_time_limit(j, r.time_limit, stats.rows_done, rows, r.out, env);
   const bool complete = j["complete"].get<bool>();
   if (!complete && stats.complete) err_of(env) << incomplete;
   j["seconds"] = clock.seconds();
@@ -470,7 +461,8 @@ MapOutcome run_system_grid(const SystemMapRequest& r, const MapEnvironment& env)
                               res.stats, estimate, clock,
                               "cpkit map: " + std::to_string(res.map.unreliable) +
                                   " cells too close to call: the map is not proved complete\n",
-                              system_param_direction_map_text(res.map, N, r, p.axis), env, p.axis.n);
+                              system_param_direction_map_text(res.map, N, r, p.axis), env,
+                              p.axis.n);
   }
   SystemParamParamRun res;
   if (!run_to_files(out, res, env, [&] {

@@ -11,7 +11,8 @@ namespace cpkit::rate {
 
 struct GridEstimate {
   double cells = 0;
-  double seconds = 0;  ///< wall time on `threads` workers of one process; -1: a sampled row is invalid
+  double seconds = 0;  ///< wall time on `threads` workers of one process; -1: a sampled row is
+                       ///< invalid
   double memory = 0;   ///< bytes
   double output = 0;   ///< bytes written (0 without writing)
   int threads = 1;
