@@ -54,7 +54,7 @@ TEST_CASE("map: the issue's 10^10-cell map is refused up front with its estimate
 TEST_CASE("map: a grid map stops at --time-limit, flagged incomplete, and resumes",
           "[cli][map][time]") {
   const int theta_n = 20000;
-  const double limit = 1.5;
+  const double limit = 1.0;
   const fs::path dir = cpkit::test::scratch_dir() / "time_limit";
   fs::create_directories(dir);
   // The estimate is a wall-clock sample of this machine as loaded now, within a factor 2; a map
@@ -72,7 +72,7 @@ TEST_CASE("map: a grid map stops at --time-limit, flagged incomplete, and resume
     const int n = static_cast<int>(std::min(1e5, std::ceil(1.4 * limit / per_row)));
     const std::string prefix = (dir / ("m" + std::to_string(attempt))).string();
     const std::string args = kMap + "--n " + std::to_string(n) + " --theta-n " +
-                             std::to_string(theta_n) + " --time-limit 1.5 --json --out '" +
+                             std::to_string(theta_n) + " --time-limit 1 --json --out '" +
                              prefix + "'";
     CliRun r;
     const double wall = seconds_of([&] { return run_cpkit(args); }, r);
@@ -90,7 +90,7 @@ TEST_CASE("map: a grid map stops at --time-limit, flagged incomplete, and resume
     CHECK(cells == static_cast<int64_t>(done) * theta_n);
     // Stopped at the limit: no chunk begun after it (a chunk is 1/64 of the rows, ~0.03 s).
     CHECK(wall < limit + 1.5);
-    CHECK(r.err.find("time limit reached (--time-limit 1.5 s) after " + std::to_string(done) +
+    CHECK(r.err.find("time limit reached (--time-limit 1 s) after " + std::to_string(done) +
                      " of " + std::to_string(n) + " rows") != std::string::npos);
     // No map file from a part of the map; the finished chunks are kept for --resume.
     CHECK_FALSE(fs::exists(prefix + ".json"));
