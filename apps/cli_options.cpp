@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "nearest_name.hpp"
 
 namespace cpkit::cli {
 namespace {
@@ -100,6 +101,26 @@ std::string subcommand_names(const CLI::App& app) {
   return out;
 }
 
+/// " (did you mean --theta-n?)" for a mistyped long option: the nearest long option of `app`
+/// and of the commands above it (their options are accepted there too); empty when none is near.
+std::string option_suggestion(const CLI::App* app, const std::string& typed) {
+  std::vector<std::string> names;
+  for (const CLI::App* a = app; a != nullptr; a = a->get_parent())
+    for (const CLI::Option* o : a->get_options())
+      for (const std::string& l : o->get_lnames()) names.push_back(l);
+  names.push_back("help");
+  const std::string near = nearest_name(typed.substr(2), names);
+  return near.empty() ? std::string() : " (did you mean --" + near + "?)";
+}
+
+/// " (did you mean map?)" for a mistyped subcommand of `app`; empty when none is near.
+std::string subcommand_suggestion(const CLI::App& app, const std::string& typed) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  const std::string near = nearest_name(typed, names);
+  return near.empty() ? std::string() : " (did you mean " + near + "?)";
+}
+
 std::string command_path(const CLI::App* app) {
   std::string path;
   for (; app->get_parent() != nullptr; app = app->get_parent()) path = " " + app->get_name() + path;
@@ -123,8 +144,8 @@ std::string check_command_words(const CLI::App& app, const std::vector<std::stri
       for (const CLI::App* a = cur; a != nullptr && !known; a = a->get_parent())
         known = a->get_option_no_throw(lookup) != nullptr || (a == cur && name == "--help");
       if (!known)
-        return "unknown option " + name + " for '" + command_path(cur) + "' (see '" +
-               command_path(cur) + " --help')";
+        return "unknown option " + name + " for '" + command_path(cur) + "'" +
+               option_suggestion(cur, name) + " (see '" + command_path(cur) + " --help')";
       continue;
     }
     if (t.empty() || t[0] == '-') continue;  // a short option or a negative number
@@ -137,8 +158,8 @@ std::string check_command_words(const CLI::App& app, const std::vector<std::stri
       // A value of the previous option (cpkit --version takes none; subcommand-level options
       // come after the subcommand), so a bare word here is a subcommand name.
       if (k > 0 && is_long_option(args[k - 1])) continue;
-      return "unknown subcommand '" + t + "' for '" + command_path(cur) + "' (valid: " +
-             subcommand_names(*cur) + ")";
+      return "unknown subcommand '" + t + "' for '" + command_path(cur) + "'" +
+             subcommand_suggestion(*cur, t) + " (valid: " + subcommand_names(*cur) + ")";
     }
     cur = sub;
   }

@@ -24,8 +24,9 @@ struct FcArgs : lcp::friction::FcRequest {
 };
 
 void add_common(CLI::App* cmd, FcArgs& a) {
-  cmd->add_option("FILE", a.file, "problem file: FCLIB local problem (HDF5) or Siconos "
-                                  "FrictionContact .dat (chosen by content)")
+  cmd->add_option("FILE", a.file, "problem file: FCLIB local or global problem (HDF5) or Siconos "
+                                  "FrictionContact / GlobalFrictionContact .dat (chosen by "
+                                  "content)")
       ->required();
   cmd->add_flag("--json", a.json, "print one JSON object on stdout");
   cmd->add_option("--tol", a.tol, "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");
@@ -38,8 +39,9 @@ void add_fc_command(CLI::App& app, Context& ctx) {
   auto* fc = app.add_subcommand("fc", "3-D frictional contact problems (FCLIB, Siconos .dat)");
   fc->require_subcommand(1);
   auto solve = std::make_shared<FcArgs>();
-  auto* s = fc->add_subcommand("solve", "Solve a frictional contact problem u = W r + q, "
-                                        "r in K_mu, u_hat in K*_mu, r . u_hat = 0");
+  auto* s = fc->add_subcommand("solve", "Solve a frictional contact problem: local u = W r + q, "
+                                        "r in K_mu, u_hat in K*_mu, r . u_hat = 0, or global "
+                                        "M v = H r + f, u = H^T v + w (condensed to local)");
   add_common(s, *solve);
   s->add_option("--solver", solve->solver,
                 "solver name from the registry (default auto; valid: " + lcp::friction::fc_solver_list() + ")");

@@ -3,8 +3,9 @@
 //
 // solve FILE [--q QFILE] [--solver NAME | --all-solvers] [--json] [--tol T] [--max-iter K]
 //   [--time-limit S] [--trace]: an LCP (.json, Siconos .dat, Matrix Market or .npy M with its
-//   q) by one registered solver, or every one side by side. Exit 0 solved (solved or
-//   solved_inaccurate; --all-solvers: by any), 1 the solve ran but found no solution.
+//   q) by one registered solver (default auto), or every one side by side. Exit 0 solved
+//   (solved or solved_inaccurate; --all-solvers: by any), 1 the solve ran but found no solution
+//   (a proof that none exists only when the status is infeasible).
 // verify FILE [--json] [--skip NAME ...] [--time-limit S]: every solver against the enumerated
 //   solution set (cross_verify). Exit 0 complete and consistent, 3 a disagreement, 5
 //   inconclusive (the enumeration is incomplete and nothing disagreed: nothing verified).
@@ -32,8 +33,9 @@ void add_lcp_solve(CLI::App& lcp, Context& ctx) {
   cmd->add_option("--q", args->q_file,
                   "file holding q, for a Matrix Market (.mtx) or numpy (.npy) M");
   CLI::Option* solver_opt = cmd->add_option("--solver", args->solver,
-                  "solver name from the registry (default lemke; valid: " + lcp::lcp_solver_list() +
-                      ")");
+                  "solver name from the registry (default " + std::string(lcp::kDefaultSolver) +
+                      ": Lemke, then the other solvers when Lemke finds nothing; valid: " +
+                      lcp::lcp_solver_list() + ")");
   cmd->add_flag("--json", args->json, "print one JSON object on stdout");
   cmd->add_option("--tol", args->tol,
                   "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");

@@ -59,7 +59,14 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "cpkit: " << e.what() << "\n(run 'cpkit --help' for usage)\n";
+    // The help of the subcommand that was being parsed (`cpkit fc bench FILE` without --out:
+    // that of `cpkit fc bench`, which names --out), not the top-level one.
+    std::string path = "cpkit";
+    for (const CLI::App* cur = &app; !cur->get_subcommands().empty();) {
+      cur = cur->get_subcommands().front();
+      path += " " + cur->get_name();
+    }
+    std::cerr << "cpkit: " << e.what() << "\n(run '" << path << " --help' for usage)\n";
     return kExitBadInput;
   } catch (const cpkit::InputError& e) {
     std::cerr << "cpkit: bad input: " << e.what() << '\n';

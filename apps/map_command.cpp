@@ -172,8 +172,9 @@ void add_map_command(CLI::App& app, Context& ctx) {
                                "direction maps PREFIX.csv");
   o["--time-limit"] = cmd->add_option(
       "--time-limit", args->time_limit,
-      "grid maps: refuse up front when the estimated time of the cells exceeds this many "
-      "seconds");
+      "seconds the map may take (default 600): refused up front when its estimated time "
+      "exceeds this (one-point grid maps: twice this); a map that reaches it stops there, "
+      "flagged incomplete (exit 5; with --out, --resume continues)");
   o["--max-output"] = cmd->add_option(
       "--max-output", args->max_output,
       "grid maps written with --out: refuse up front when the estimated output exceeds SIZE "

@@ -6,7 +6,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 # Only the `cpkit` program (target cpkit_cli): the main job runs nothing else, and --plot needs
 # only the Python scripts in scripts/. The tests and benchmarks are scripts/run-tests.sh's job.
-CPKIT_TARGETS=cpkit_cli "$root/scripts/build.sh"
+# The C library (cpkit_c, libcpkit.so) too: `cmake --install` (printed below) installs it with
+# its pkg-config and CMake files, and failed without it (issue 37).
+CPKIT_TARGETS="cpkit_cli cpkit_c" "$root/scripts/build.sh"
 build="${CPKIT_BUILD_DIR:-$root/build}"
 out="${CPKIT_OUT_DIR:-$root/out}"
 mkdir -p "$out"

@@ -29,6 +29,21 @@ struct Input {
   std::string text;
 };
 
+/// A JSON text is named as such (most likely the LCP file of `cpkit lcp solve`), not read as
+/// .dat numbers, where its '{' would meet "expected the contact dimension d".
+void refuse_json(const std::string& text, const std::string& path) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || (text[first] != '{' && text[first] != '[')) return;
+  const bool lcp =
+      text.find("\"M\"") != std::string::npos && text.find("\"q\"") != std::string::npos;
+  throw InputError(io_text::valid_utf8(path) + ": " +
+                   (lcp ? "an LCP file (JSON with M and q)" : "a JSON file") +
+                   ", not a frictional contact problem (FCLIB HDF5 or Siconos FrictionContact / "
+                   "GlobalFrictionContact .dat)" +
+                   (lcp ? ": solve it with `cpkit lcp solve`"
+                        : std::string()));
+}
+
 Input read_input(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -49,6 +64,7 @@ Input read_input(const std::string& path) {
                        "in the file): give it as a regular file");
     return {true, {}};  // after a user block of `offset` bytes: HDF5 finds it there too
   }
+  refuse_json(input.text, path);
   return input;
 }
 

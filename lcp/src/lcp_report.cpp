@@ -201,7 +201,11 @@ std::string set_text(const SolutionSet& s, const LcpProblem& p) {
 
 nlohmann::json lcp_solve_json(const LcpSolveOutcome& out) {
   const LcpProblem& problem = out.problem;
-  if (!out.all_solvers) return result_json(out.results.front(), problem);
+  if (!out.all_solvers) {
+    nlohmann::json j = result_json(out.results.front(), problem);
+    if (!out.hint.empty()) j["hint"] = out.hint;
+    return j;
+  }
   // One object, like every --json output: the problem, then one result per solver.
   nlohmann::json arr = nlohmann::json::array();
   for (std::size_t k = 0; k < out.results.size(); ++k) {
@@ -214,12 +218,14 @@ nlohmann::json lcp_solve_json(const LcpSolveOutcome& out) {
   j["n"] = problem.size();
   j["solved_by_any"] = out.exit_code == kExitOk;
   j["results"] = arr;
+  if (!out.hint.empty()) j["hint"] = out.hint;
   return j;
 }
 
 std::string lcp_solve_text(const LcpSolveOutcome& out) {
   const LcpProblem& problem = out.problem;
-  if (!out.all_solvers) return result_text(out.results.front(), problem);
+  const std::string hint = out.hint.empty() ? std::string() : "hint:       " + out.hint + "\n";
+  if (!out.all_solvers) return result_text(out.results.front(), problem) + hint;
   std::ostringstream s;
   if (!problem.name.empty()) s << "problem: " << problem.name << " (n = " << problem.size() << ")\n";
   char line[160];
@@ -233,7 +239,7 @@ std::string lcp_solve_text(const LcpSolveOutcome& out) {
                   r.residuals.natural, r.iterations, r.seconds, r.solver.c_str());
     s << line;
   }
-  return s.str();
+  return s.str() + hint;
 }
 
 nlohmann::json lcp_verify_json(const LcpVerifyOutcome& out) {

@@ -52,6 +52,27 @@ SolveResult run_one_solver(const SolverEntry& entry, const LcpProblem& problem,
   return r;
 }
 
+/// The hint of LcpSolveOutcome: empty when some result is a solution or a proof (infeasible).
+std::string next_step_hint(const LcpSolveRequest& a, const std::vector<SolveResult>& results) {
+  for (const auto& r : results)
+    if (is_solution(r.status) || r.status == Status::kInfeasible) return {};
+  const Status s = results.front().status;
+  std::string h;
+  if (!a.all_solvers && s == Status::kRayTermination)
+    h = "Lemke's secondary ray proves nothing here (M is not known copositive-plus): the "
+        "problem may have solutions. ";
+  else
+    h = "no solution was found and none was proved impossible. ";
+  h += "Try ";
+  if (!a.all_solvers && a.solver != kDefaultSolver)
+    h += "--solver " + std::string(kDefaultSolver) + " (Lemke, FB Newton, the enumeration, "
+         "Ipopt, NLopt), or ";
+  if (!a.all_solvers && (s == Status::kIterationLimit || s == Status::kTimeLimit))
+    h += "a larger --max-iter / --time-limit, or ";
+  return h + "`cpkit lcp enumerate " + a.file + "` (every solution, or a proof that there is "
+         "none; n <= 64 and bimatrix games)";
+}
+
 }  // namespace
 
 std::string lcp_solver_list() {
@@ -83,6 +104,7 @@ LcpSolveOutcome run_lcp_solve_request(const LcpSolveRequest& a) {
   bool any = false;
   for (const auto& r : out.results) any |= is_solution(r.status);
   out.exit_code = any ? kExitOk : kExitNoSolution;
+  out.hint = next_step_hint(a, out.results);
   return out;
 }
 

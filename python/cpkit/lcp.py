@@ -45,13 +45,15 @@ def solvers(kind: str = "lcp"):
     return _cpkit.solvers(kind)
 
 
-def solve(M, q, solver: str = "auto", *, tol: float = 1e-10, tol_acceptable: float = 1e-6,
-          max_iterations: int = 0, time_limit: float = _INF) -> SolveResult:
+def solve(M, q, solver: str = _cpkit.DEFAULT_SOLVER, *, tol: float = 1e-10,
+          tol_acceptable: float = 1e-6, max_iterations: int = 0,
+          time_limit: float = _INF) -> SolveResult:
     """One solution of LCP(M, q), verified from the data: z >= 0, w = M z + q >= 0, z.w = 0.
 
     M: square numpy array (or anything np.asarray accepts) or scipy.sparse matrix; q: 1-D.
-    solver: "auto" (Lemke, FB Newton, enumeration, Farkas search, Ipopt, NLopt, every attempt
-    in `attempts`) or one of solvers("lcp"). tol / tol_acceptable bound the unit-free residual
+    solver: "auto", the default of Python and the command line alike (Lemke, FB Newton,
+    enumeration, Farkas search, Ipopt, NLopt, every attempt in `attempts`) or one of
+    solvers("lcp"). tol / tol_acceptable bound the unit-free residual
     for "solved" / "solved_inaccurate" (docs/conventions.md); max_iterations 0 is the solver's
     default; time_limit in seconds. Outcomes are statuses; bad input raises ValueError/TypeError.
     """

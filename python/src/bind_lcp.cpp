@@ -13,6 +13,7 @@
 #include "cpkit/core/registry.hpp"
 #include "cpkit/lcp/cross_verify.hpp"
 #include "cpkit/lcp/enumerate.hpp"
+#include "cpkit/lcp/lcp_request.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::py {
@@ -189,6 +190,8 @@ pyb::dict cross_verify_problem(const LcpProblem& p, const std::vector<std::strin
 }  // namespace
 
 void bind_lcp(pyb::module_& m) {
+  // The one default of `cpkit lcp solve` and cpkit.solve (cpkit/lcp/lcp_request.hpp).
+  m.attr("DEFAULT_SOLVER") = lcp::kDefaultSolver;
   m.def("solvers", [](const std::string& kind) {
         if (kind == "lcp") return lcp::solvers().names(ProblemKind::kLcp);
         if (kind == "mcp") return lcp::solvers().names(ProblemKind::kMcp);

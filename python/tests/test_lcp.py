@@ -24,6 +24,24 @@ def test_every_solver_matches_the_closed_form(solver):
     assert r.residuals.natural <= 1e-10
 
 
+def test_one_default_solver_for_python_and_the_command_line():
+    # Issue 37: the command line defaulted to Lemke (ray_termination, exit 1, on a game with three
+    # equilibria), Python to auto. One default, defined once in the library.
+    import inspect
+    assert inspect.signature(cpkit.solve).parameters["solver"].default == "auto"
+    path = os.path.join(DATA_DIR, "lcp", "battle_of_the_sexes.json")
+    with open(path) as f:
+        doc = json.load(f)
+    M, q = np.array(doc["M"], float), np.array(doc["q"], float)
+    r = cpkit.solve(M, q)
+    assert r.is_solution
+    _, out = run_cli("lcp", "solve", path, "--json")
+    assert out["run"]["options"]["solver"] == "auto"
+    # Both answers are among the three equilibria the file lists (bimatrix_examples, by hand).
+    for z in (r.z, np.array(out["z"])):
+        assert min(np.abs(z - np.array(s)).max() for s in doc["expected"]["solutions"]) < 1e-9
+
+
 def test_result_fields_repr_and_pickle():
     r = cpkit.solve(M2, q2)  # auto: every attempt reported
     assert r.status == "solved" and r.attempts and r.attempts[-1].status == "solved"

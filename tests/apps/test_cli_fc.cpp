@@ -350,7 +350,7 @@ int complete_rows(const std::string& csv) {
   return lines - 1;
 }
 
-/// The progress lines a bench prints on stderr, one per finished solve ("NAME SOLVER: ...").
+/// The progress lines a bench prints on stderr, one per finished solve ("FILE SOLVER: ...").
 int progress_lines(const std::string& err, const std::string& problem) {
   std::istringstream in(err);
   int n = 0;
@@ -408,7 +408,7 @@ TEST_CASE("fc bench: a write error is exit 2 and the previous table is kept", "[
   const int finished = complete_rows(cpkit::test::slurp(prefix + ".csv.partial"));
   CHECK(finished >= 1);
   CHECK(finished < 18);
-  CHECK(progress_lines(run.err, "FrictionContact3D_1c") == finished);
+  CHECK(progress_lines(run.err, path("local/FrictionContact3D_1c.dat")) == finished);
   CHECK_FALSE(std::filesystem::exists(prefix + ".lock"));
   // A table that would land on a device (F4-09's PREFIX.csv -> /dev/full) is refused up front.
   for (const std::string& name : {prefix + "_dev.csv", prefix + "_dev.csv.partial"}) {
@@ -442,7 +442,7 @@ TEST_CASE("fc bench: a run killed part-way keeps the previous table and its fini
   const int finished = complete_rows(partial);
   CHECK(finished >= 1);
   CHECK(finished < 18);
-  CHECK(progress_lines(killed.err, "FrictionContact3D_1c") == finished);
+  CHECK(progress_lines(killed.err, path("local/FrictionContact3D_1c.dat")) == finished);
   // The next run is not blocked by the lock file the killed run left: the whole table.
   const auto full = run_cpkit(bench_18_rows(prefix));
   INFO(full.err);

@@ -96,19 +96,66 @@ TEST_CASE("cli: infeasible problem exits 1 with a certificate", "[cli]") {
   CHECK(j["certificate"]["q_dot_y"].get<double>() < 0);
 }
 
-TEST_CASE("cli: ray termination and pivot limit exit 1", "[cli]") {
-  auto r = run_cli("lcp solve " + data("battle_of_the_sexes.json") + " --json");
+TEST_CASE("cli: ray termination and pivot limit exit 1, with what to try", "[cli]") {
+  auto r = run_cli("lcp solve " + data("battle_of_the_sexes.json") + " --solver lemke --json");
   CHECK(r.code == 1);
-  CHECK(nlohmann::json::parse(r.out).at("status") == "ray_termination");
-  r = run_cli("lcp solve " + data("murty_exp_6.json") + " --json --max-iter 10");
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("status") == "ray_termination");
+  // A ray without a certificate proves nothing (the file has 3 solutions): the hint says so
+  // and names the ways on, never "infeasible".
+  const std::string hint = j.at("hint").get<std::string>();
+  CHECK(hint.find("proves nothing") != std::string::npos);
+  CHECK(hint.find("--solver auto") != std::string::npos);
+  CHECK(hint.find("cpkit lcp enumerate") != std::string::npos);
+  CHECK_FALSE(j.contains("certificate"));
+  r = run_cli("lcp solve " + data("battle_of_the_sexes.json") + " --solver lemke");
   CHECK(r.code == 1);
-  const auto j = nlohmann::json::parse(r.out);
+  CHECK(r.out.find("hint:       Lemke's secondary ray proves nothing") != std::string::npos);
+  r = run_cli("lcp solve " + data("murty_exp_6.json") + " --solver lemke --json --max-iter 10");
+  CHECK(r.code == 1);
+  j = nlohmann::json::parse(r.out);
   CHECK(j.at("status") == "iteration_limit");
   CHECK(j.at("iterations") == 10);
+  CHECK(j.at("hint").get<std::string>().find("--max-iter") != std::string::npos);
+  // A proof (a certificate) needs no hint.
+  r = run_cli("lcp solve " + data("infeasible_copositive_plus.json") + " --json");
+  CHECK(r.code == 1);
+  CHECK_FALSE(nlohmann::json::parse(r.out).contains("hint"));
+}
+
+TEST_CASE("cli: the default solver is auto, as Python's cpkit.solve (issue 37)", "[cli]") {
+  // The README's example: Lemke alone ends on a secondary ray; the default solves it. The
+  // answer must be one of the three equilibria the file lists (bimatrix_examples, by hand:
+  // two pure, one mixed), each checked here against z >= 0, w = Mz + q >= 0, z.w = 0 too.
+  const auto r = run_cli("lcp solve " + data("battle_of_the_sexes.json") + " --json");
+  CAPTURE(r.err);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("status") == "solved");
+  CHECK_FALSE(j.contains("hint"));
+  CHECK(j.at("run").at("options").at("solver") == "auto");
+  const double M[4][4] = {{0, 0, 1, 3}, {0, 0, 4, 2}, {2, 4, 0, 0}, {3, 1, 0, 0}};
+  const double sols[3][4] = {{0.5, 0, 1, 0}, {0, 1, 0, 0.5}, {0.3, 0.1, 0.1, 0.3}};
+  int matches = 0;
+  for (const auto& s : sols) {
+    bool same = true;
+    for (int i = 0; i < 4; ++i) same &= std::abs(j["z"][i].get<double>() - s[i]) < 1e-9;
+    matches += same;
+  }
+  CHECK(matches == 1);
+  for (int i = 0; i < 4; ++i) {
+    double w = -1;
+    for (int k = 0; k < 4; ++k) w += M[i][k] * j["z"][k].get<double>();
+    CHECK(w >= -1e-9);
+    CHECK(std::min(w, j["z"][i].get<double>()) <= 1e-9);
+  }
+  // --help states the default.
+  const auto h = run_cli("lcp solve --help");
+  CHECK(h.out.find("default auto") != std::string::npos);
 }
 
 TEST_CASE("cli: text report, trace, .dat input", "[cli]") {
-  auto r = run_cli("lcp solve " + data("murty_exp_6.json"));
+  auto r = run_cli("lcp solve " + data("murty_exp_6.json") + " --solver lemke");
   REQUIRE(r.code == 0);
   CHECK(r.out.find("status:     solved") != std::string::npos);
   CHECK(r.out.find("iterations: 64") != std::string::npos);

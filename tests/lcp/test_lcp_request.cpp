@@ -52,7 +52,9 @@ TEST_CASE("lcp request: a 2x2 LCP solved by hand, by solve, enumerate and verify
   const LcpSolveOutcome solved = run_lcp_solve_request(s);
   CHECK(solved.exit_code == kExitOk);
   REQUIRE(solved.results.size() == 1);
-  CHECK(solved.entries[0] == "lemke");
+  CHECK(solved.entries[0] == "auto");  // the default (issue 37), whose first solver answers
+  CHECK(solved.results[0].solver == "lemke");
+  CHECK(solved.hint.empty());
   CHECK(solved.results[0].z(0) == Approx(4.0 / 3));
   CHECK(solved.results[0].z(1) == Approx(7.0 / 3));
   CHECK(lcp_solve_json(solved)["problem"] == "pd2");
@@ -85,7 +87,10 @@ TEST_CASE("lcp request: no solution exits 1 (solve, every solver, a complete enu
           "[lcp][request]") {
   LcpSolveRequest s;
   s.file = infeasible_file();
-  CHECK(run_lcp_solve_request(s).exit_code == kExitNoSolution);
+  const LcpSolveOutcome proved = run_lcp_solve_request(s);
+  CHECK(proved.exit_code == kExitNoSolution);
+  CHECK(proved.results.at(0).status == cpkit::Status::kInfeasible);
+  CHECK(proved.hint.empty());  // a proof needs no "what to try"
   s.all_solvers = true;
   const LcpSolveOutcome every = run_lcp_solve_request(s);
   CHECK(every.exit_code == kExitNoSolution);

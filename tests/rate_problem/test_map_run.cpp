@@ -6,6 +6,7 @@
 // (rank 0 hands chunks out) over an injected in-process transport equals the one-pass map.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <condition_variable>
 #include <deque>
@@ -323,4 +324,79 @@ TEST_CASE("MapRunOverAnInjectedTransportEqualsTheOnePassMap", "[map][run][transp
   CHECK(full.map.type_cells == one.type_cells);
   CHECK(full.map.critical_directions.size() == one.critical_directions.size());
   fs::remove_all(dir.parent_path());
+}
+
+TEST_CASE("MapRunStoppedByItsStopQuestionKeepsTheRowsDoneAndResumes", "[map][run][time]") {
+  // GridRunOptions::stop is `cpkit map`'s time limit (issue 37): asked before every chunk, it
+  // ends the run where it says so (here: after 4 chunks, deterministically, where the program
+  // asks the clock). The rows done are the one-pass map's first rows; the rest resumes.
+  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 13};  // 13 chunks of one row
+  const int tn = 48;
+  MapOptions options;
+  options.threads = 1;
+  const fs::path dir = scratch("stop");
+  GridRunOptions run;
+  run.checkpoint_prefix = (dir / "map").string();
+  int asked = 0;
+  run.stop = [&asked] { return ++asked > 4; };
+  const ParamDirectionRun cut = run_param_direction_map(fig5(), state_b(), axis, tn, options, run);
+  CHECK_FALSE(cut.stats.complete);
+  CHECK(cut.stats.stopped);
+  CHECK(asked == 5);  // asked once more, and stopped there
+  CHECK(cut.stats.rows_done == 4);
+  CHECK(chunk_files(dir / "map.parts") == 4);
+  const ParamDirectionMap one = compute_param_direction_map(fig5(), state_b(), axis, tn, options);
+  REQUIRE(cut.map.count.size() == 4u * tn);
+  CHECK(std::equal(cut.map.count.begin(), cut.map.count.end(), one.count.begin()));
+  int64_t cells = 0;
+  for (const int64_t c : cut.map.type_cells) cells += c;
+  CHECK(cells == 4 * tn);  // the summary counts the rows done only
+  run.stop = {};
+  run.resume = true;
+  const ParamDirectionRun full = run_param_direction_map(fig5(), state_b(), axis, tn, options, run);
+  REQUIRE(full.stats.complete);
+  CHECK_FALSE(full.stats.stopped);
+  CHECK(full.stats.rows_done == 13);
+  CHECK(full.stats.resumed_chunks == 4);
+  CHECK(full.map.count == one.count);
+  fs::remove_all(dir.parent_path());
+}
+
+TEST_CASE("MapRunOverATransportStopsHandingOutChunksWhenAskedTo", "[map][run][transport][time]") {
+  // The distributed path: rank 0 hands out no chunk once stop() says so; the workers are told
+  // to stop, the chunks consumed in order are the one-pass map's first rows.
+  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 17};
+  const int tn = 40;
+  MapOptions options;
+  options.threads = 1;
+  const int ranks = 3;
+  Mailboxes boxes(ranks);
+  std::vector<ThreadTransport> t;
+  for (int r = 0; r < ranks; ++r) t.emplace_back(r, ranks, boxes);
+  std::vector<std::thread> others;
+  for (int r = 1; r < ranks; ++r)
+    others.emplace_back([&, r] {
+      GridRunOptions mine;
+      mine.transport = &t[static_cast<std::size_t>(r)];
+      (void)run_param_direction_map(fig5(), state_b(), axis, tn, options, mine);
+    });
+  GridRunOptions rank0;
+  rank0.transport = &t[0];
+  std::mutex m;
+  int asked = 0;
+  rank0.stop = [&] {
+    std::lock_guard<std::mutex> lock(m);
+    return ++asked > 6;
+  };
+  const ParamDirectionRun cut = run_param_direction_map(fig5(), state_b(), axis, tn, options, rank0);
+  for (auto& th : others) th.join();
+  CHECK(cut.stats.stopped);
+  CHECK_FALSE(cut.stats.complete);
+  int64_t computed = 0;
+  for (const int64_t c : cut.stats.rank_cells) computed += c;
+  CHECK(computed == 6 * tn);  // six chunks were handed out, none after
+  CHECK(cut.stats.rows_done == 6);  // chunks 0..5, each finished and consumed
+  const ParamDirectionMap one = compute_param_direction_map(fig5(), state_b(), axis, tn, options);
+  REQUIRE(cut.map.count.size() == static_cast<std::size_t>(cut.stats.rows_done) * tn);
+  CHECK(std::equal(cut.map.count.begin(), cut.map.count.end(), one.count.begin()));
 }

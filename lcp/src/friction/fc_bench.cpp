@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 
 #include "cpkit/core/errors.hpp"
@@ -12,6 +13,7 @@
 #include "cpkit/core/option_words.hpp"
 #include "cpkit/core/result.hpp"
 #include "cpkit/core/status.hpp"
+#include "cpkit/lcp/friction/fc_request.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -30,6 +32,13 @@ void flush_or_throw(std::ostream& csv, const std::string& table_name) {
   if (!csv) throw InputError("error writing '" + table_name + "' (disk full or not writable?)");
 }
 
+/// " (TITLE)" after a file name in the progress log: an FCLIB file's title, when it says more
+/// than the file's own name (a .dat problem is named after its file).
+std::string title_beside(const std::string& title, const std::string& file) {
+  if (title.empty() || title == std::filesystem::path(file).stem().string()) return {};
+  return " (" + title + ")";
+}
+
 }  // namespace
 
 FcBench prepare_fc_bench(const FcBenchRequest& a) {
@@ -45,7 +54,8 @@ FcBench prepare_fc_bench(const FcBenchRequest& a) {
   for (const auto& n : b.names) {
     const SolverEntry* e = solvers().find(n);
     if (e == nullptr || !e->accepts(ProblemKind::kFrictionContact))
-      throw InputError("unknown friction solver '" + n + "' in --solvers");
+      throw InputError("unknown friction solver '" + n + "' in --solvers (valid: " +
+                       fc_solver_list() + ")");
     b.entries.push_back(e);
   }
   b.options.tol = a.tol;
@@ -74,9 +84,9 @@ void write_fc_bench_table(const FcBench& b, std::ostream& csv, const std::string
           << b.names[k] << ',' << to_string(r.status) << ',' << r.iterations << ',' << s << ','
           << e.unit_free << ',' << e.relative_q << ',' << e.relative_max << '\n';
       flush_or_throw(csv, table_name);
-      if (progress)
-        *progress << p.name << " " << b.names[k] << ": " << to_string(r.status) << " in " << s
-                  << " s\n";
+      if (progress)  // by file, as the user named it (FCLIB titles repeat across files)
+        *progress << b.files[i] << title_beside(p.name, b.files[i]) << " " << b.names[k] << ": "
+                  << to_string(r.status) << " in " << s << " s\n";
     }
   }
 }

@@ -98,6 +98,11 @@ const SolverEntry& fc_solver(const std::string& name) {
   return *entry;
 }
 
+/// "1 contact", "2 contacts" (the problem lines of the text output).
+std::string count_text(Eigen::Index n, const char* noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 ExitCode exit_code(Status s) {
   if (is_solution(s)) return kExitOk;
   return s == Status::kInfeasible ? kExitNoSolution : kExitInconclusive;
@@ -176,13 +181,13 @@ std::string fc_solve_text(const FcSolveOutcome& out) {
   std::ostringstream o;
   const SolveResult& r = out.result;
   if (!out.is_global) {
-    o << "problem:    " << out.problem.name << " (" << out.problem.contacts() << " contacts)\n"
-      << result_line(r, out.problem);
+    o << "problem:    " << out.problem.name << " (" << count_text(out.problem.contacts(), "contact")
+      << ")\n" << result_line(r, out.problem);
     return o.str();
   }
   const GlobalFrictionContactProblem& g = out.global_problem;
-  o << "problem:    " << g.name << " (global: " << g.contacts() << " contacts, " << g.dofs()
-    << " dofs)\n";
+  o << "problem:    " << g.name << " (global: " << count_text(g.contacts(), "contact") << ", "
+    << count_text(g.dofs(), "dof") << ")\n";
   if (out.proximal)
     o << "route:      proximal point in v (M is singular: no condensation), " << r.iterations
       << " outer iterations\n";
@@ -232,8 +237,8 @@ nlohmann::json fc_solutions_json(const FcSolutionsOutcome& out) {
 
 std::string fc_solutions_text(const FcSolutionsOutcome& out) {
   std::ostringstream o;
-  o << "problem:    " << out.problem.name << " (" << out.problem.contacts() << " contacts)\n"
-    << out.set.solutions.size() << " distinct verified solution(s), complete: "
+  o << "problem:    " << out.problem.name << " (" << count_text(out.problem.contacts(), "contact")
+    << ")\n" << out.set.solutions.size() << " distinct verified solution(s), complete: "
     << (out.set.complete ? "yes" : "no") << "\n" << out.set.message << '\n';
   for (std::size_t k = 0; k < out.set.solutions.size(); ++k)
     o << "-- solution " << k + 1 << '\n' << result_line(out.set.solutions[k], out.problem);

@@ -1,8 +1,9 @@
-// Up-front cost of a one-point grid map (grid_estimate.hpp): a small timed sample of the same
-// map on one thread, extrapolated.
+// Up-front cost of a one-point grid map (grid_estimate.hpp): a timed sub-grid of the same map
+// on its threads, in wall clock, extrapolated.
 #include "cpkit/rate_problem/maps/grid_estimate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -15,46 +16,78 @@ namespace cpkit::rate {
 
 namespace {
 
+/// Wall time a sample takes before it is trusted: long enough that a loaded machine shows in it
+/// (a burst of a few milliseconds runs at full speed on a busy machine, the map would not).
+constexpr double kSampleSeconds = 0.15;
+
+/// The growth of a sample that took `t` seconds towards kSampleSeconds: 2 to 16 times.
+int growth(double t) {
+  const double f = t > 0 ? 1.5 * kSampleSeconds / t : 16;
+  return static_cast<int>(std::min(16.0, std::max(2.0, f)));
+}
+
+/// Wall seconds of `run` (a sample of the map, on the map's threads).
+template <class Run>
+double wall_seconds(Run&& run) {
+  const Stopwatch c;
+  run();
+  return c.seconds();
+}
+
 GridEstimate sample_param_direction(const ContactParameters& params, const ContactState& state,
                                     const MapAxis& axis, int theta_n, const MapOptions& options,
                                     bool csv, bool writing) {
   GridEstimate e;
-  MapOptions one = options;
-  one.threads = 1;
   const double cross_bytes = options.method != RateMethod::kEnumerate ? 1 : 0;
   const double n = axis.n, tn = theta_n;
   e.cells = n * tn;
   e.threads = map_worker_threads(options.threads, axis.n);
+  // A sub-grid of the same map (rows spread over the whole axis, directions over the circle),
+  // on the map's threads and timed in wall clock: what the map will take on this machine as
+  // loaded now. Grown (rows first: their cost varies along the axis) until it takes
+  // kSampleSeconds or is the whole map.
   MapAxis sa = axis;
-  sa.n = std::min(axis.n, 8);
-  const int ts = std::min(theta_n, 1024);
-  const std::vector<double> theta = map_theta_values(ts);
-  std::ostringstream text;
-  // Each sample is timed twice and the faster run kept (a busy machine inflates one run).
-  double t1 = 1e300, t0 = 1e300;
-  for (int rep = 0; rep < 2; ++rep) {
-    const Stopwatch c1;
-    compute_param_direction_map(params, state, sa, ts, one, {},
-                                [&](const ParamDirectionRows& r) {
-                                  if (csv && rep == 0) write_csv_rows(sa, theta, r, text);
-                                });
-    t1 = std::min(t1, c1.seconds());
-    // The per-row part (critical directions, set-up): one direction per row.
-    const Stopwatch c0;
-    compute_param_direction_map(params, state, sa, 1, one, {}, [](const ParamDirectionRows&) {});
-    t0 = std::min(t0, c0.seconds());
+  sa.n = std::min(axis.n, std::max(8, 4 * e.threads));
+  int ts = std::min(theta_n, 1024);
+  auto time_of = [&](int directions) {
+    return wall_seconds([&] {
+      compute_param_direction_map(params, state, sa, directions, options, {},
+                                  [](const ParamDirectionRows&) {});
+    });
+  };
+  double t1 = time_of(ts);
+  while (t1 < kSampleSeconds && (sa.n < axis.n || ts < theta_n)) {
+    const int g = growth(t1);
+    if (sa.n < axis.n)
+      sa.n = static_cast<int>(std::min<int64_t>(axis.n, int64_t{sa.n} * g));
+    else
+      ts = static_cast<int>(std::min<int64_t>(theta_n, int64_t{ts} * g));
+    t1 = time_of(ts);
   }
-  const double per_row = t0 / sa.n;
-  const double per_cell = std::max(0.0, t1 - t0) / (sa.n * std::max(1, ts - 1));
-  e.seconds = (n * per_row + e.cells * per_cell) / e.threads;
+  // The per-row part (critical directions, set-up): one direction per row.
+  const double t0 = ts > 1 ? std::min(t1, time_of(1)) : t1;
+  const double per_cell = ts > 1 ? std::max(0.0, t1 - t0) / (ts - 1) : 0;  // for sa.n rows
+  e.seconds = n / sa.n * (t0 + (tn - 1) * per_cell);
   const double block =
       std::min(n, std::max<double>(grid_block_rows(theta_n), 4 * e.threads)) * tn;
   e.memory = block * (3 + (csv ? 60 : 0)) + tn * (8 + 16 + (csv ? 40 : 0)) +
              n * (sizeof(ContactParameters) + sizeof(ContactState) + 100 +
                   8 * (sizeof(CriticalDirectionPoint) + 16));
-  if (writing)
-    e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (sa.n * ts)
-                   : e.cells * (2 + cross_bytes) + 8 * (n + tn) + 5 * 128;
+  if (writing && csv) {
+    // The bytes of a CSV line, from a few rows written out (not timed).
+    MapAxis ca = axis;
+    ca.n = std::min(axis.n, 8);
+    const int cs = std::min(theta_n, 1024);
+    const std::vector<double> theta = map_theta_values(cs);
+    std::ostringstream text;
+    compute_param_direction_map(params, state, ca, cs, options, {},
+                                [&](const ParamDirectionRows& r) {
+                                  write_csv_rows(ca, theta, r, text);
+                                });
+    e.output = e.cells * static_cast<double>(text.str().size()) / (ca.n * cs);
+  } else if (writing) {
+    e.output = e.cells * (2 + cross_bytes) + 8 * (n + tn) + 5 * 128;
+  }
   // The finished chunks stay in PREFIX.parts until the outputs are complete (maps/map_run.hpp).
   if (writing) e.output += e.cells * (2 + cross_bytes);
   return e;
@@ -64,31 +97,50 @@ GridEstimate sample_param_param(const ContactParameters& params, const ContactSt
                                 const MapAxis& axis1, const MapAxis& axis2,
                                 const MapOptions& options, bool csv, bool writing) {
   GridEstimate e;
-  MapOptions one = options;
-  one.threads = 1;
   const double cross_bytes = options.method != RateMethod::kEnumerate ? 1 : 0;
   const double n1 = axis1.n, n2 = axis2.n;
   e.cells = n1 * n2;
   e.threads = map_worker_threads(options.threads, axis1.n);
+  // As for param-direction: a sub-grid on the map's threads, in wall clock, grown until it
+  // takes kSampleSeconds or is the whole map; both axes alike (the axis sampled more thinly
+  // grows), since the cost of a cell varies along both (a 6-column sample of a 300 x 300 map,
+  // both ends of the axis among them, put it at 3x its time).
   MapAxis a1 = axis1, a2 = axis2;
-  a1.n = std::min(axis1.n, 3);
+  a1.n = std::min(axis1.n, std::max(3, 2 * e.threads));
   a2.n = std::min(axis2.n, 6);
-  std::ostringstream text;
-  double t = 1e300;
-  for (int rep = 0; rep < 2; ++rep) {
-    const Stopwatch c1;
-    compute_param_param_map(params, state, a1, a2, one, {}, [&](const ParamParamRows& r) {
-      if (csv && rep == 0) write_csv_rows(a1, a2, r, text);
+  auto time_of = [&] {
+    return wall_seconds([&] {
+      compute_param_param_map(params, state, a1, a2, options, {}, [](const ParamParamRows&) {});
     });
-    t = std::min(t, c1.seconds());
+  };
+  double t = time_of();
+  while (t < kSampleSeconds && (a1.n < axis1.n || a2.n < axis2.n)) {
+    // sqrt of the growth on each axis that can grow, or all of it on the only one that can.
+    const int g = growth(t), h = std::max(2, static_cast<int>(std::sqrt(double(g)) + 0.5));
+    const bool both = a1.n < axis1.n && a2.n < axis2.n;
+    if (a1.n < axis1.n)
+      a1.n = static_cast<int>(std::min<int64_t>(axis1.n, int64_t{a1.n} * (both ? h : g)));
+    if (a2.n < axis2.n)
+      a2.n = static_cast<int>(std::min<int64_t>(axis2.n, int64_t{a2.n} * (both ? h : g)));
+    t = time_of();
   }
-  e.seconds = t / (a1.n * a2.n) * e.cells / e.threads;
+  e.seconds = t / (static_cast<double>(a1.n) * a2.n) * e.cells;
   const double block =
       std::min(n1, std::max<double>(grid_block_rows(axis2.n), 4 * e.threads)) * n2;
   e.memory = block * (5 + (csv ? 80 : 0)) + (n1 + n2) * (100 + 4 * sizeof(CriticalValue));
-  if (writing)
-    e.output = csv ? e.cells * static_cast<double>(text.str().size()) / (a1.n * a2.n)
-                   : e.cells * (4 + cross_bytes) + 8 * (n1 + n2) + 7 * 128;
+  if (writing && csv) {
+    // The bytes of a CSV line, from a few cells written out (not timed).
+    MapAxis c1 = axis1, c2 = axis2;
+    c1.n = std::min(axis1.n, 3);
+    c2.n = std::min(axis2.n, 6);
+    std::ostringstream text;
+    compute_param_param_map(params, state, c1, c2, options, {}, [&](const ParamParamRows& r) {
+      write_csv_rows(c1, c2, r, text);
+    });
+    e.output = e.cells * static_cast<double>(text.str().size()) / (c1.n * c2.n);
+  } else if (writing) {
+    e.output = e.cells * (4 + cross_bytes) + 8 * (n1 + n2) + 7 * 128;
+  }
   if (writing) e.output += e.cells * (4 + cross_bytes);  // and the checkpoint's chunks
   return e;
 }

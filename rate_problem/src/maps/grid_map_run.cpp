@@ -48,7 +48,7 @@ ChunkRunStats run_grid_chunks(const GridRunOptions& run, nlohmann::json manifest
   if (!run.describe_grid) manifest = nlohmann::json::object();
   for (const auto& [k, v] : run.manifest.items()) manifest[k] = v;
   return run_map_chunks(run.checkpoint_prefix, run.resume, manifest, plan, compute, consume,
-                        run.progress, run.transport, run.chunk_limit);
+                        run.progress, run.transport, run.chunk_limit, run.stop);
 }
 
 int map_worker_threads(int requested, int rows) {

@@ -86,7 +86,12 @@ bool run_to_files(GridFiles& out, Result& res, const MapEnvironment& env, Call&&
   try {
     res = call();
     if (env.rank() != 0) return false;
-    out.finish();
+    // A run stopped by the time limit has part of the rows: no map file (their finished
+    // chunks stay in PREFIX.parts for --resume).
+    if (res.stats.complete)
+      out.finish();
+    else
+      out.discard();
   } catch (...) {
     out.discard();
     throw;
@@ -116,6 +121,25 @@ void report_disagreements(std::ostream& err, int64_t n, const std::string& what)
                "CSV / 'enumerate' in the JSON)\n");
 }
 
+/// A grid map stopped by --time-limit after `done` of its `rows` rows: flagged in its JSON
+/// (complete, time_limit_reached, rows_done), said on stderr; returns the head line of its text.
+std::string report_time_limit(nlohmann::json& j, double limit, int done, int rows,
+                              const std::string& prefix, const MapEnvironment& env) {
+  j["complete"] = false;
+  j["time_limit_reached"] = true;
+  j["rows_done"] = done;
+  const std::string what = "time limit reached (--time-limit " + map_number_text(limit) +
+                           " s) after " + std::to_string(done) + " of " + std::to_string(rows) +
+                           " rows";
+  err_of(env) << "cpkit map: " << what << ": the map is incomplete ('complete': false)"
+              << (prefix.empty() ? std::string(". Use a smaller --n")
+                                 : "; no map file was written, the finished rows are kept in " +
+                                       prefix + ".parts: run the same command with --resume to "
+                                       "continue")
+              << " (or raise --time-limit)\n";
+  return "INCOMPLETE: " + what + "; the summary below covers those rows only\n";
+}
+
 // ---- one point -------------------------------------------------------------------------------
 
 /// What the parts of a one-point map run share.
@@ -133,6 +157,7 @@ struct OnePointRun {
   int64_t disagreements = 0;
   Stopwatch clock;
   std::string text;
+  ChunkRunStats stats;  ///< of a grid map's run (stopped by the time limit: complete = false)
 };
 
 /// A grid map's summary into the run's JSON, its disagreements and unreliable cells on stderr.
@@ -142,6 +167,7 @@ void record_grid_result(OnePointRun& p, Map& m, const ChunkRunStats& stats,
   m.seconds = p.clock.seconds();
   p.j.update(to_json(m));
   add_run_figures(p.j, stats);
+  p.stats = stats;
   p.disagreements = m.disagreements;
   report_disagreements(err_of(p.env), m.disagreements, "cells");
   report_unreliable(err_of(p.env), m.unreliable, unreliable_what);
@@ -149,7 +175,7 @@ void record_grid_result(OnePointRun& p, Map& m, const ChunkRunStats& stats,
 
 template <class Map>
 void write_critical(OnePointRun& p, const Map& m) {
-  if (p.prefix.empty()) return;
+  if (p.prefix.empty() || !p.stats.complete) return;
   write_text_file(p.prefix + "_critical.csv", [&](std::ostream& o) { write_critical_csv(m, o); });
   p.files["critical_csv"] = p.name + "_critical.csv";
 }
@@ -252,8 +278,18 @@ bool run_grid_map(OnePointRun& p) {
                   {"method", a.method}, {"format", a.format}};
   run.transport = p.env.transport;
   run.progress = progress_of(p.env);
-  return s.kind == MapKind::kParamDirection ? run_param_direction_grid(p, out, run)
-                                            : run_param_param_grid(p, out, run);
+  // One deadline for the whole command (the sample of the estimate included): no chunk is
+  // begun after it; the chunks running then are finished (a chunk is at most 1/64 of the map's
+  // rows, or 2^20 cells).
+  const Stopwatch& clock = p.clock;
+  const double limit = a.time_limit;
+  run.stop = [&clock, limit] { return clock.seconds() >= limit; };
+  const bool ok = s.kind == MapKind::kParamDirection ? run_param_direction_grid(p, out, run)
+                                                     : run_param_param_grid(p, out, run);
+  if (ok && !p.stats.complete)
+    p.text = report_time_limit(p.j, a.time_limit, p.stats.rows_done, s.axis.n, p.prefix, p.env) +
+             p.text;
+  return ok;
 }
 
 /// The options of a one-point map beyond its model and axes (the program's order of checks).
@@ -351,7 +387,7 @@ nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest
 /// How an N-point grid map runs: checkpointed under PREFIX.parts when writing; the manifest
 /// names the version, kind, input echo (axes included) and the system's data.
 GridRunOptions grid_run_options(const SystemMapRequest& r, const SystemGridPlan& p,
-                                const MapEnvironment& env) {
+                                const MapEnvironment& env, const Stopwatch& clock) {
   GridRunOptions o;
   o.checkpoint_prefix = r.out;
   o.resume = r.resume;
@@ -360,6 +396,9 @@ GridRunOptions grid_run_options(const SystemMapRequest& r, const SystemGridPlan&
   o.describe_grid = false;  // "input" holds the axes
   o.transport = env.transport;
   o.progress = progress_of(env);
+  // One deadline for the whole command: no chunk is begun after it.
+  const double limit = r.time_limit;
+  o.stop = [&clock, limit] { return clock.seconds() >= limit; };
   return o;
 }
 
@@ -368,25 +407,30 @@ GridRunOptions grid_run_options(const SystemMapRequest& r, const SystemGridPlan&
 MapOutcome finish_system_grid(const SystemMapRequest& r, nlohmann::json j, nlohmann::json& files,
                               const ChunkRunStats& stats, const nlohmann::json& estimate,
                               const Stopwatch& clock, const std::string& incomplete,
-                              const std::string& text, const MapEnvironment& env) {
+                              const std::string& text, const MapEnvironment& env, int rows) {
   j["cpkit_version"] = env.version;
   j["threads"] = map_worker_threads(r.threads, std::numeric_limits<int>::max());
   j["estimate"] = estimate;
   add_run_figures(j, stats);
   if (!r.out.empty()) j["format"] = r.format;
+  // Stopped by --time-limit: no map file, the chunks kept for --resume.
+  const std::string head =
+      stats.complete ? std::string()
+                     : report_time_limit(j, r.time_limit, stats.rows_done, rows, r.out, env);
   const bool complete = j["complete"].get<bool>();
-  if (!complete) err_of(env) << incomplete;
+  if (!complete && stats.complete) err_of(env) << incomplete;
   j["seconds"] = clock.seconds();
   bool plot_failed = false;
-  if (!r.out.empty()) {
+  const bool write = !r.out.empty() && stats.complete;
+  if (write) {
     j["run"] = env.run_echo;
     plot_failed = !write_map_json(r.out, r.plot, j, files, env);
   }
   MapOutcome o;
-  o.text = text + (r.out.empty() ? "" : map_files_text(r.out, files));
+  o.text = head + text + (write ? map_files_text(r.out, files) : "");
   o.json = std::move(j);
   o.exit_code = !complete ? kExitInconclusive : plot_failed ? kExitInternal : kExitOk;
-  if (!r.out.empty()) remove_checkpoint(r.out + ".parts");
+  if (write) remove_checkpoint(r.out + ".parts");
   return o;
 }
 
@@ -409,7 +453,7 @@ MapOutcome run_system_grid(const SystemMapRequest& r, const MapEnvironment& env)
     SystemParamDirectionRun res;
     if (!run_to_files(out, res, env, [&] {
           return run_system_param_direction_map(
-              p.sys, p.axis, r.theta_n, p.options, grid_run_options(r, p, env),
+              p.sys, p.axis, r.theta_n, p.options, grid_run_options(r, p, env, clock),
               system_param_direction_files(out, p.axis, theta, npy, csv));
         }))
       return other_rank();
@@ -417,12 +461,13 @@ MapOutcome run_system_grid(const SystemMapRequest& r, const MapEnvironment& env)
                               res.stats, estimate, clock,
                               "cpkit map: " + std::to_string(res.map.unreliable) +
                                   " cells too close to call: the map is not proved complete\n",
-                              system_param_direction_map_text(res.map, N, r, p.axis), env);
+                              system_param_direction_map_text(res.map, N, r, p.axis), env,
+                              p.axis.n);
   }
   SystemParamParamRun res;
   if (!run_to_files(out, res, env, [&] {
         return run_system_param_param_map(p.sys, p.axis, p.axis2, p.options,
-                                          grid_run_options(r, p, env),
+                                          grid_run_options(r, p, env, clock),
                                           system_param_param_files(out, p.axis, p.axis2, npy, csv));
       }))
     return other_rank();
@@ -431,7 +476,7 @@ MapOutcome run_system_grid(const SystemMapRequest& r, const MapEnvironment& env)
       "cpkit map: " + std::to_string(res.map.unreliable) + " evaluations too close to call and " +
           std::to_string(res.map.inconsistent_sectors) +
           " sectors not uniform: the map is not proved complete\n",
-      system_param_param_map_text(res.map, N, r, p.axis, p.axis2), env);
+      system_param_param_map_text(res.map, N, r, p.axis, p.axis2), env, p.axis.n);
 }
 
 /// The exact direction map of N points (sectors and critical directions), its CSV.
@@ -525,6 +570,10 @@ void check_output_fits(const std::string& cells, const std::string& fewer, doubl
                    " is free in '" + (dir.empty() ? "." : dir) + "': " + fewer + disk_hint);
 }
 
+/// A one-point grid map is refused up front when its estimate exceeds the time limit by more
+/// than this factor (the estimate's accuracy); below it, the limit stops it part-way.
+constexpr double kTimeLimitFactor = 2;
+
 void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string& out_dir,
                      bool csv, double time_limit, double max_output, const MapEnvironment& env) {
   // Rank 0 decides for the job (an estimate differs between ranks); if it refuses, mpirun
@@ -535,12 +584,19 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
       std::to_string(s.axis.n) + " x " + std::to_string(pd ? s.theta_n : s.axis2.n) +
       (pd ? " cells (--n x --theta-n)" : " cells (--n x --n2)");
   const std::string fewer = pd ? "use a smaller --n or --theta-n" : "use a smaller --n or --n2";
-  if (e.seconds > time_limit)
+  // The estimate is within a factor 2 of the run (a wall-clock sample on the map's threads):
+  // beyond twice the limit the map cannot finish; up to it, it runs and stops at the limit
+  // with the rows done, flagged incomplete (and resumable with --out).
+  if (e.seconds > kTimeLimitFactor * time_limit)
     throw InputError("the map has " + cells + " and would need about " +
                      map_number_text(e.seconds, 3) + " s of computing on " +
                      std::to_string(e.threads) +
-                     " threads (estimated from a timed sample), more than --time-limit " +
+                     " threads (estimated from a timed sample), far more than --time-limit " +
                      map_number_text(time_limit) + ": " + fewer + ", or raise --time-limit");
+  if (e.seconds > time_limit)
+    err_of(env) << "cpkit map: the map would need about " << map_number_text(e.seconds, 3)
+                << " s (estimate), more than --time-limit " << map_number_text(time_limit)
+                << ": it stops at the limit with the rows done so far, flagged incomplete\n";
   double limit = static_cast<double>(kMemoryLimitBytes);
   const double avail = env.available_memory ? env.available_memory() : -1;
   if (avail > 0) limit = std::min(limit, 0.8 * avail);
@@ -576,16 +632,21 @@ MapOutcome run_one_point_map(const MapRequest& a, const MapEnvironment& env) {
   else if (!run_grid_map(r))
     return other_rank();  // rank 0 writes and prints
   bool plot_failed = false;
-  if (!r.prefix.empty()) {
+  // A grid map stopped by the time limit writes no map file (its chunks stay for --resume).
+  const bool complete = s.kind == MapKind::kDirection || r.stats.complete;
+  if (!r.prefix.empty() && complete) {
     plot_failed = !write_map_json(r.prefix, a.plot, j, r.files, env);
     // The outputs are complete: the finished chunks kept for --resume are no longer needed.
     if (s.kind != MapKind::kDirection) remove_checkpoint(r.prefix + ".parts");
   }
   MapOutcome o;
-  o.text = r.text + (r.prefix.empty() ? "" : map_files_text(r.prefix, r.files));
+  o.text = r.text + (r.prefix.empty() || !complete ? "" : map_files_text(r.prefix, r.files));
   o.json = std::move(j);
-  // The picture was asked for and is missing: exit 4.
-  o.exit_code = r.disagreements > 0 ? kExitDisagreement : plot_failed ? kExitInternal : kExitOk;
+  // The picture was asked for and is missing: exit 4. Stopped by the time limit: 5.
+  o.exit_code = r.disagreements > 0 ? kExitDisagreement
+                : !complete         ? kExitInconclusive
+                : plot_failed       ? kExitInternal
+                                    : kExitOk;
   return o;
 }
 

@@ -49,6 +49,8 @@ class Collector {
     }
   }
   bool all_consumed() const { return next_ == run_.plan.chunks; }
+  /// The rows consumed so far (the first ones, in order).
+  int rows_consumed() const { return next_ == 0 ? 0 : run_.plan.end(next_ - 1); }
 
  private:
   const ChunkRun& run_;
@@ -78,13 +80,20 @@ void run_local(const ChunkRun& run, ChunkRunStats& stats) {
   for (int k = 0; k < run.plan.chunks; ++k) {
     if (have[static_cast<std::size_t>(k)]) continue;
     if (run.chunk_limit >= 0 && computed >= run.chunk_limit) break;
+    if (run.stop && run.stop()) {
+      stats.stopped = true;
+      break;
+    }
     MapChunk c = run.compute(k);
     ++computed;
     stats.rank_cells[0] += cells_of(run.plan, k);
     col.finished(std::move(c));
   }
   stats.complete = col.all_consumed();
-  if (!stats.complete && run.chunk_limit < 0) throw std::logic_error("map chunks left unconsumed");
+  stats.rows_done = col.rows_consumed();
+  if (stats.stopped && run.progress) run.progress("chunks", -1);
+  if (!stats.complete && run.chunk_limit < 0 && !stats.stopped)
+    throw std::logic_error("map chunks left unconsumed");
 }
 
 /// A rank other than 0: computes the chunks rank 0 assigns until told to stop.
@@ -120,8 +129,13 @@ void run_rank0(const ChunkRun& run, MapTransport& t, const std::vector<char>& ha
   std::vector<MapChunk> local_done;
   std::exception_ptr local_error;
   bool local_running = true;
+  bool stopped = false;  // run.stop said so: no chunk is begun or handed out any more
   auto take = [&](int& k) {
     std::lock_guard<std::mutex> lock(mutex);
+    if (!todo.empty() && !stopped && run.stop && run.stop()) {
+      stopped = true;
+      todo.clear();
+    }
     if (todo.empty()) return false;
     k = todo.back();
     todo.pop_back();
@@ -180,8 +194,11 @@ void run_rank0(const ChunkRun& run, MapTransport& t, const std::vector<char>& ha
     if (workers == 0 && !running) break;
     if (idle) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
-  if (!col.all_consumed()) throw std::logic_error("map chunks left unconsumed");
-  stats.complete = true;
+  stats.rows_done = col.rows_consumed();
+  stats.stopped = stopped;
+  if (stopped && run.progress) run.progress("chunks", -1);
+  stats.complete = col.all_consumed();
+  if (!stats.complete && !stopped) throw std::logic_error("map chunks left unconsumed");
 }
 
 }  // namespace
@@ -240,7 +257,7 @@ ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
                              const std::function<MapChunk(int)>& compute,
                              const std::function<void(const MapChunk&)>& consume,
                              const MapProgress& progress, MapTransport* transport,
-                             int chunk_limit) {
+                             int chunk_limit, const std::function<bool()>& stop) {
   ChunkRun run;
   run.plan = plan;
   run.compute = compute;
@@ -255,6 +272,7 @@ ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
   }
   run.transport = transport;
   run.chunk_limit = chunk_limit;
+  run.stop = stop;
   if (!transport || transport->rank() == 0) run.progress = progress;
   return run_chunks(run);
 }

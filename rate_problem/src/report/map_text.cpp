@@ -281,6 +281,11 @@ MapProgress map_progress_printer(std::ostream& err) {
     }
     const double t = st->clock.seconds();
     const int percent = static_cast<int>(100 * f);
+    if (f < 0) {  // the phase stopped before its end (the time limit): end the line
+      if (st->printed) err << " stopped\n";
+      st->printed = false;
+      return;
+    }
     // A new line only when the percentage changed (or every 5 s): short logs when redirected.
     if (f < 1.0 && t > 1.0 && (percent != st->percent || t > st->last + 5.0)) {
       st->percent = percent;

@@ -18,6 +18,12 @@
 
 namespace cpkit::lcp {
 
+/// The solver used when none is named: `cpkit lcp solve` and Python's `cpkit.solve` (one
+/// default for both). "auto" is the chain (auto_chain.hpp): Lemke first, then FB Newton, the
+/// enumeration and the MPCC solvers when Lemke finds no solution (e.g. a secondary ray that
+/// proves nothing).
+inline constexpr char kDefaultSolver[] = "auto";
+
 /// "a, b, c": the registered LCP solver names (messages and --help).
 std::string lcp_solver_list();
 
@@ -35,7 +41,7 @@ struct LcpOutcome {
 struct LcpSolveRequest {
   std::string file;
   std::string q_file;  ///< --q: the q of a Matrix Market or .npy M (default FILE.q.mtx/.q.npy)
-  std::string solver = "lemke";
+  std::string solver = kDefaultSolver;  ///< --solver (default auto)
   bool json = false;  ///< --json (--trace with --all-solvers needs it)
   double tol = CommonOptions{}.tol;  ///< on the unit-free residual; at most 1e-3
   int max_iter = 0;                  ///< 0: the solver's default
@@ -50,6 +56,9 @@ struct LcpSolveOutcome {
   std::vector<SolveResult> results;  ///< one; --all-solvers: one per registry entry run
   std::vector<std::string> entries;  ///< the registry entries run ("solver" is who produced z)
   ExitCode exit_code = kExitOk;      ///< 0 some result is a verified solution, else 1
+  /// What to try next when no solution was found and none was proved impossible (no result
+  /// `infeasible`): exit 1 is then no proof. Empty otherwise. Text "hint:", JSON "hint".
+  std::string hint;
 };
 
 /// Reads the file, checks the options, runs the solver (or every solver): every result has been

@@ -24,6 +24,9 @@ struct GridRunOptions {
   MapTransport* transport = nullptr;  ///< null: one process
   MapProgress progress;               ///< rank 0; phase "chunks"
   int chunk_limit = -1;  ///< one process: stop after this many new chunks (complete = false)
+  /// Asked before each chunk (ChunkRun::stop): true ends the run there (complete = false,
+  /// stopped = true; the finished chunks stay in the checkpoint). `cpkit map`'s time limit.
+  std::function<bool()> stop;
 };
 
 struct ParamDirectionRun {

@@ -74,6 +74,11 @@ struct ChunkRun {
   /// At most this many chunks computed in this run (one process; -1: all). A run stopped by it
   /// returns complete = false with the finished chunks in the checkpoint, to be resumed.
   int chunk_limit = -1;
+  /// Asked (on rank 0) before each chunk is begun or handed out: true stops the run there (the
+  /// time limit of `cpkit map`). The chunks already running are finished and kept; the run
+  /// returns complete = false and stopped = true, to be resumed; `progress` then gets the
+  /// fraction -1 (the phase ended early). Empty: never.
+  std::function<bool()> stop;
 };
 
 struct ChunkRunStats {
@@ -82,6 +87,8 @@ struct ChunkRunStats {
   int64_t resumed_cells = 0;        ///< cells taken from the checkpoint
   int resumed_chunks = 0;
   bool complete = false;  ///< every chunk consumed (rank 0; other ranks: their part done)
+  bool stopped = false;   ///< ChunkRun::stop ended the run (rank 0)
+  int rows_done = 0;      ///< rows consumed, from the first on (rank 0): all of them when complete
 };
 
 /// Runs the map's chunks (every rank calls it). Errors during the distributed phase end the
@@ -99,7 +106,7 @@ ChunkRunStats run_map_chunks(const std::string& out_prefix, bool resume,
                              const std::function<MapChunk(int)>& compute,
                              const std::function<void(const MapChunk&)>& consume,
                              const MapProgress& progress, MapTransport* transport = nullptr,
-                             int chunk_limit = -1);
+                             int chunk_limit = -1, const std::function<bool()>& stop = {});
 
 /// The run figures of a map's JSON: "ranks", "rank_cells", and "resumed_cells" after a resume.
 void add_run_figures(nlohmann::json& j, const ChunkRunStats& st);

@@ -59,7 +59,8 @@ std::string map_3d_text(const Map3dRequest& r, const Map3dPlan& p, const Map3d& 
 std::string map_files_text(const std::string& prefix, const nlohmann::json& files);
 
 /// A progress printer on `err`: "\rcpkit map: cells 40% (1.2 s)" for every phase once the run
-/// has lasted more than a second (the clock starts now), the phase's final line at 100 %.
+/// has lasted more than a second (the clock starts now), the phase's final line at 100 % (at a
+/// negative fraction, a phase stopped early: " stopped" ends the line).
 MapProgress map_progress_printer(std::ostream& err);
 
 }  // namespace cpkit::rate

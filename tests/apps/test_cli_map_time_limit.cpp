@@ -1,0 +1,110 @@
+// `cpkit map --time-limit` for the one-point grid maps (issue 37): the issue's map (fig5b, mu x
+// direction, 10^10 cells) ran past its 600 s limit with an estimate 7x too low. Now: a map the
+// estimate puts beyond twice the limit is refused up front (exit 2, the estimate and the options
+// that help); any other map stops at the limit with the rows done, flagged incomplete (exit 5),
+// and --out keeps its finished chunks for --resume. Times are seconds, never minutes: the size of
+// the stopped map is chosen from this machine's own speed (a first, small map's estimate).
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+
+#include "cli_runner.hpp"
+
+namespace {
+
+using cpkit::test::CliRun;
+using cpkit::test::run_cpkit;
+namespace fs = std::filesystem;
+
+const std::string kMap = "map --preset fig5b --kind param-direction --param mu --from 0.1 --to 4 ";
+
+double seconds_of(const std::function<CliRun()>& run, CliRun& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  out = run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+TEST_CASE("map: the issue's 10^10-cell map is refused up front with its estimate",
+          "[cli][map][time]") {
+  CliRun r;
+  const double wall = seconds_of(
+      [] { return run_cpkit(kMap + "--n 100000 --theta-n 100000 --time-limit 60"); }, r);
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("100000 x 100000 cells (--n x --theta-n)") != std::string::npos);
+  CHECK(r.err.find("far more than --time-limit 60") != std::string::npos);
+  CHECK(r.err.find("use a smaller --n or --theta-n, or raise --time-limit") != std::string::npos);
+  // The estimate it states is beyond twice the limit (the refusal's rule), and it came quickly.
+  std::smatch m;
+  const std::regex about("would need about ([0-9.e+]+) s");
+  REQUIRE(std::regex_search(r.err, m, about));
+  CHECK(std::stod(m[1]) > 120);
+  CHECK(wall < 30);
+}
+
+TEST_CASE("map: a grid map stops at --time-limit, flagged incomplete, and resumes",
+          "[cli][map][time]") {
+  const int theta_n = 20000;
+  const double limit = 1.0;
+  const fs::path dir = cpkit::test::scratch_dir() / "time_limit";
+  fs::create_directories(dir);
+  // The estimate is a wall-clock sample of this machine as loaded now, within a factor 2; a map
+  // estimated at 1.4 x the limit runs (not refused: below 2x) and cannot finish in time. Up to
+  // three attempts, in case the load changes between the sizing map and the run.
+  int stopped = 0;
+  for (int attempt = 0; attempt < 3 && stopped == 0; ++attempt) {
+    const CliRun sizing = run_cpkit(kMap + "--n 64 --theta-n " + std::to_string(theta_n) +
+                                    " --json");
+    INFO(sizing.err);
+    REQUIRE(sizing.code == 0);
+    const double per_row =
+        nlohmann::json::parse(sizing.out).at("estimate").at("seconds").get<double>() / 64;
+    REQUIRE(per_row > 0);
+    const int n = static_cast<int>(std::min(1e5, std::ceil(1.4 * limit / per_row)));
+    const std::string prefix = (dir / ("m" + std::to_string(attempt))).string();
+    const std::string args = kMap + "--n " + std::to_string(n) + " --theta-n " +
+                             std::to_string(theta_n) + " --time-limit 1 --json --out '" +
+                             prefix + "'";
+    CliRun r;
+    const double wall = seconds_of([&] { return run_cpkit(args); }, r);
+    INFO(args << "\n" << r.err);
+    if (r.code != 5) continue;  // refused (2) or finished (0): the load changed; size again
+    ++stopped;
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("complete") == false);
+    CHECK(j.at("time_limit_reached") == true);
+    const int done = j.at("rows_done").get<int>();
+    CHECK(done < n);
+    // The summary counts the rows done, every one of their cells once.
+    int64_t cells = 0;
+    for (const auto& [count, c] : j.at("counts").items()) cells += c.get<int64_t>();
+    CHECK(cells == static_cast<int64_t>(done) * theta_n);
+    // Stopped at the limit: no chunk begun after it (a chunk is 1/64 of the rows, ~0.03 s).
+    CHECK(wall < limit + 1.5);
+    CHECK(r.err.find("time limit reached (--time-limit 1 s) after " + std::to_string(done) +
+                     " of " + std::to_string(n) + " rows") != std::string::npos);
+    // No map file from a part of the map; the finished chunks are kept for --resume.
+    CHECK_FALSE(fs::exists(prefix + ".json"));
+    CHECK_FALSE(fs::exists(prefix + "_count.npy"));
+    REQUIRE(fs::is_directory(prefix + ".parts"));
+    // The same command with --resume and room to finish: the whole map.
+    const CliRun rest = run_cpkit(args.substr(0, args.find(" --time-limit")) + " --time-limit 60 "
+                                  "--json --resume --out '" + prefix + "'");
+    INFO(rest.err);
+    CHECK(rest.code == 0);
+    const auto k = nlohmann::json::parse(rest.out);
+    CHECK_FALSE(k.contains("time_limit_reached"));
+    CHECK(k.at("resumed_cells").get<int64_t>() >= static_cast<int64_t>(done) * theta_n);
+    CHECK(fs::exists(prefix + "_count.npy"));
+  }
+  REQUIRE(stopped == 1);
+}
