@@ -158,8 +158,10 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
   // An answer accepted only just (above tol / 10): a few Gauss-Seidel sweeps from it, kept when
   // they do better. FrictionContact3D_RR_1c at tol 1e-8: fb-soc stops at 3.8e-9 (1.1e-7 by
   // Siconos' |q| measure); nsgs from there reaches rounding.
-  if (have && best.status == Status::kSolved && best.residuals.natural > 0.1 * o.tol &&
-      left() > 0) {
+  // (Not after nsgs itself: the polish would only continue its sweeps, doubling the time of a
+  // small problem.)
+  if (have && best.status == Status::kSolved && best.solver != "nsgs" &&
+      best.residuals.natural > 0.1 * o.tol && left() > 0) {
     NsgsOptions no;
     no.common = common();
     no.common.max_iterations = kPolishSweeps;

@@ -15,7 +15,8 @@
 /// took 2.75 s more, and nsgs, last, solved it in 0.07 s.
 /// Every attempt is recorded in SolveResult::attempts (solver, status, unit-free
 /// residual, seconds, message). A kSolvedInaccurate answer is kept while later solvers try for
-/// kSolved. An answer accepted with a unit-free residual above tol / 10 is polished by up to
+/// kSolved. An answer of another solver than nsgs accepted with a unit-free residual above
+/// tol / 10 is polished by up to
 /// 20 nsgs sweeps from it, kept only when they verify with a smaller residual (recorded as an
 /// nsgs attempt "polish from ..."): FrictionContact3D_RR_1c at tol 1e-8 went from 3.8e-9 to
 /// rounding (1.1e-7 to 5e-15 by Siconos' |q| measure). time_limit_s is shared by the whole chain. The final answer goes through finalize()
