@@ -41,14 +41,14 @@ TEST_CASE("auto: the first solver that verifies ends the chain; attempts recorde
   p.mu = VectorXd::Constant(1, 0.5);
   const auto r = cpkit::lcp::solvers().find("auto")->solve_fc(p, {});
   REQUIRE(r.status == Status::kSolved);
-  CHECK(r.solver == "fb-soc");
+  CHECK(r.solver == "nsgs");  // one sweep is exact for one contact
   REQUIRE(r.attempts.size() == 1);
-  CHECK(r.attempts[0].solver == "fb-soc");
+  CHECK(r.attempts[0].solver == "nsgs");
   CHECK(r.attempts[0].status == Status::kSolved);
   CHECK((r.z - (VectorXd(3) << 2, -0.6, -0.8).finished()).norm() < 1e-9);
 }
 
-TEST_CASE("auto: when fb-soc is stopped short, nsgs continues from its best iterate",
+TEST_CASE("auto: when nsgs is stopped short, prox and fb-soc follow",
           "[friction][auto]") {
   std::mt19937 rng(23);
   std::normal_distribution<double> g;
@@ -66,13 +66,13 @@ TEST_CASE("auto: when fb-soc is stopped short, nsgs continues from its best iter
   cpkit::CommonOptions o;
   o.max_iterations = 1;  // every solver gets one iteration / sweep: the chain must go on
   const auto r = cpkit::lcp::friction::solve_auto(p, o);
-  // fb-soc (non-monotone), fb-soc (monotone, from r = 0), nsgs from the best r, fb-soc polishing.
+  // nsgs (one sweep), prox, fb-soc (non-monotone, from the best r), fb-soc (monotone, r = 0).
   REQUIRE(r.attempts.size() >= 4);
-  CHECK(r.attempts[0].solver == "fb-soc");
-  CHECK(r.attempts[1].solver == "fb-soc");
-  CHECK(r.attempts[1].message.find("monotone line search") == 0);
-  CHECK(r.attempts[2].solver == "nsgs");
+  CHECK(r.attempts[0].solver == "nsgs");
+  CHECK(r.attempts[1].solver == "prox");
+  CHECK(r.attempts[2].solver == "fb-soc");
   CHECK(r.attempts[3].solver == "fb-soc");
+  CHECK(r.attempts[3].message.find("monotone line search") == 0);
   for (const auto& a : r.attempts) CHECK(!a.solver.empty());
   if (cpkit::is_solution(r.status))
     CHECK(cpkit::test::friction_violation(p.W, p.q, p.mu, r.z) < 1e-6);

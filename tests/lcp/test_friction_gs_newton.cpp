@@ -12,6 +12,7 @@
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/nsgs.hpp"
+#include "cpkit/lcp/friction/one_contact.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_check.hpp"
 
@@ -131,4 +132,58 @@ TEST_CASE("nsgs and fb-soc: bad input throws a named error", "[friction][nsgs][f
     CAPTURE(c.name);
     CHECK_THROWS_WITH(solve(c.name, p), Catch::Contains("q has 4 entries"));
   }
+}
+
+TEST_CASE("nsgs: a contact that keeps its state takes the closed forms' closest solution",
+          "[friction][nsgs]") {
+  // nsgs answers a contact that stays separated, sticking (3x3 inverse) or slipping (Newton on
+  // the slip direction) without the closed forms of every solution (nsgs.cpp). Reference: the
+  // closed forms themselves (one_contact_nearest). One contact, so one sweep is one local step
+  // with b = q, started next to each solution s of a random problem: r0 = 0 at a separation,
+  // s moved inside the cone at a stick, s moved along the cone's boundary at a slip.
+  std::mt19937 rng(35);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> uni(0.1, 1.0);
+  int stick = 0, slip = 0, separation = 0;
+  for (int k = 0; k < 500; ++k) {
+    Eigen::Matrix3d L;
+    for (int i = 0; i < 9; ++i) L(i / 3, i % 3) = g(rng);
+    const Eigen::Matrix3d W = L * L.transpose() + 0.3 * Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d q(g(rng), g(rng), g(rng));
+    const double mu = uni(rng);
+    FrictionContactProblem p;
+    p.W = MatrixXd(W).sparseView();
+    p.q = q;
+    p.mu = VectorXd::Constant(1, mu);
+    const auto all = cpkit::lcp::friction::one_contact_solutions(W, q, mu);
+    for (int j = 0; j < all.count; ++j) {
+      const Eigen::Vector3d s = all.r[j];
+      Eigen::Vector3d r0 = s;
+      const double rt = s.tail<2>().norm();
+      if (s.isZero(0)) {
+        ++separation;
+      } else if (rt < 0.99 * mu * s[0]) {
+        r0 = s * (1 + 1e-6);  // inside the cone still
+        ++stick;
+      } else if (rt > 0 && std::abs(rt - mu * s[0]) <= 1e-9 * s[0]) {
+        const double phi = std::atan2(-s[2], -s[1]) + 1e-4;  // on the boundary, turned
+        r0 = s[0] * (1 + 1e-5) * Eigen::Vector3d(1, -mu * std::cos(phi), -mu * std::sin(phi));
+        ++slip;
+      } else {
+        continue;  // a stick at the cone's edge: either branch may be the closer
+      }
+      cpkit::lcp::friction::NsgsOptions o;
+      o.r0 = r0;
+      o.common.max_iterations = 1;
+      o.common.tol = 1e-15;
+      const auto r = cpkit::lcp::friction::solve_nsgs(p, o);
+      const Eigen::Vector3d ref = cpkit::lcp::friction::one_contact_nearest(W, q, mu, r0);
+      CAPTURE(k, j, s.transpose(), r.z.transpose(), ref.transpose());
+      CHECK((r.z - ref).norm() <= 1e-9 * std::max(1.0, ref.norm()));
+    }
+  }
+  // Every branch of the local step was exercised.
+  CHECK(stick >= 30);
+  CHECK(slip >= 30);
+  CHECK(separation >= 30);
 }

@@ -2,6 +2,7 @@
 #include "cpkit/lcp/friction/auto.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "cpkit/core/friction_verdict.hpp"
@@ -15,12 +16,64 @@
 namespace cpkit::lcp::friction {
 
 std::vector<std::string> auto_chain_names() {
-  return {"fb-soc", "nsgs", "prox", "lemke-faceted", "lemke", "ipopt-fc", "ipopt"};
+  return {"nsgs", "prox", "fb-soc", "lemke-faceted", "lemke", "ipopt-fc", "ipopt"};
 }
 
 namespace {
 
 constexpr int kPolishSweeps = 20;
+constexpr int kFirstSweeps = 50;
+
+// nsgs in runs of 50, 50, 100, 200, ... sweeps, each from the last one's answer, for as long as
+// the rate of the last run (its residual decrease per sweep) predicts tol within nsgs' sweep
+// budget (options.max_iterations, else nsgs' 2000). A stalling nsgs is so stopped after a few
+// hundred sweeps, however long it would run (Capsules-i100-889: it stalls near 1e-4 after ~200
+// sweeps), while one that converges slowly but steadily goes on (KaplasTower: 1,100 sweeps).
+SolveResult nsgs_stage(const FrictionContactProblem& p, const CommonOptions& o,
+                       const Stopwatch& clock) {
+  const int budget = o.max_iterations > 0 ? o.max_iterations : 2000;
+  const double start = clock.seconds();
+  SolveResult out;
+  Eigen::VectorXd r0;
+  int done = 0, runs = 0, chunk = std::min(kFirstSweeps, budget);
+  double e_last = 0;
+  int s_last = 0;
+  std::string why;
+  for (;;) {
+    NsgsOptions no;
+    no.common = o;
+    no.common.max_iterations = chunk;
+    no.common.time_limit_s = o.time_limit_s - clock.seconds();
+    no.r0 = r0;
+    out = solve_nsgs(p, no);  // its z is never worse than its start r0
+    done += out.iterations;
+    ++runs;
+    if (out.z.size() == p.q.size()) r0 = out.z;
+    const double e = out.residuals.natural;
+    if (out.status == Status::kSolved || out.status == Status::kTimeLimit || done >= budget ||
+        !(o.time_limit_s - clock.seconds() > 0))
+      break;
+    if (runs >= 2) {
+      const double rate = e < e_last ? std::log(e_last / e) / (done - s_last) : 0;
+      const double predicted = rate > 0 ? done + std::log(e / o.tol) / rate : HUGE_VAL;
+      if (!(predicted <= budget)) {
+        why = "; stopped: its rate predicts tol after " +
+              (std::isfinite(predicted) ? std::to_string(static_cast<long>(predicted)) : "no") +
+              " sweeps (budget " + std::to_string(budget) + ")";
+        break;
+      }
+    }
+    e_last = e;
+    s_last = done;
+    chunk = std::min(runs >= 2 ? 2 * chunk : chunk, budget - done);
+  }
+  out.iterations = done;
+  out.seconds = clock.seconds() - start;
+  if (out.status != Status::kSolved)
+    out.message = "nsgs: " + std::to_string(done) + " sweeps in " + std::to_string(runs) +
+                  " runs" + why;
+  return out;
+}
 
 // Ranks answers: kSolved, then kSolvedInaccurate, then the smallest finite residual.
 bool better(const SolveResult& a, const SolveResult& b) {
@@ -51,7 +104,6 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
       have = true;
     }
   };
-  bool prox_ran = false;
   auto warm = [&]() { return have && best.z.size() == p.q.size() ? best.z : Eigen::VectorXd(); };
   auto common = [&]() {
     CommonOptions c = o;
@@ -74,41 +126,28 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
       continue;
     }
     if (name == "nsgs") {
-      NsgsOptions no;
-      no.common = common();
-      no.r0 = warm();
-      record(name, solve_nsgs(p, no));
-      if (best.status != Status::kSolved && best.solver == "nsgs" && left() > 0) {
-        FbSocOptions fo;  // Newton from the Gauss-Seidel iterate
-        fo.common = common();
-        fo.r0 = warm();
-        record("fb-soc", solve_fb_soc(p, fo));
-      }
+      record(name, nsgs_stage(p, o, clock));
       continue;
     }
-    if (name == "prox" && prox_ran) continue;
+    if (name == "prox") {
+      // W + alpha I: what a rank-deficient W, where nsgs stalls, needs. From r = 0, not from
+      // nsgs' iterate: its alpha rule then starts large (Capsules-i125-1213: 5 outer
+      // iterations from 0, 10 from nsgs' iterate; Capsules-i101-404: 8 and 15).
+      ProxOptions po;
+      po.common = common();
+      record(name, solve_prox(p, po));
+      continue;
+    }
     if (name == "fb-soc") {
-      SolveResult first = e->solve_fc(p, common());
-      // Stopped by itself (stagnation; kSolvedInaccurate when the stalled iterate passed only
-      // tol_acceptable), not by an iteration or time limit.
-      const bool stalled =
-          first.status == Status::kStalled || first.status == Status::kSolvedInaccurate;
-      record(name, std::move(first));
-      // Newton stalls at the non-isolated solutions of a rank-deficient W; the proximal term
-      // (W + alpha I) removes exactly that, so prox goes next, from fb-soc's best iterate
-      // (Capsules-i125-1213: solved in 5 outer iterations; nsgs had not after 2000 sweeps).
-      if (stalled && best.status != Status::kSolved && left() > 0) {
-        ProxOptions po;
-        po.common = common();
-        po.r0 = warm();
-        record("prox", solve_prox(p, po));
-        prox_ran = true;
-      }
+      FbSocOptions fo;  // Newton from the best iterate so far
+      fo.common = common();
+      fo.r0 = warm();
+      record(name, solve_fb_soc(p, fo));
       if (best.status != Status::kSolved && left() > 0) {
-        FbSocOptions fo;  // the other line search (fb_soc.hpp), from r = 0 again
-        fo.common = common();
-        fo.nonmonotone_memory = 1;
-        SolveResult r = solve_fb_soc(p, fo);
+        FbSocOptions mo;  // the other line search (fb_soc.hpp), from r = 0
+        mo.common = common();
+        mo.nonmonotone_memory = 1;
+        SolveResult r = solve_fb_soc(p, mo);
         r.message = "monotone line search" + (r.message.empty() ? "" : "; " + r.message);
         record(name, std::move(r));
       }
@@ -119,8 +158,10 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
   // An answer accepted only just (above tol / 10): a few Gauss-Seidel sweeps from it, kept when
   // they do better. FrictionContact3D_RR_1c at tol 1e-8: fb-soc stops at 3.8e-9 (1.1e-7 by
   // Siconos' |q| measure); nsgs from there reaches rounding.
-  if (have && best.status == Status::kSolved && best.residuals.natural > 0.1 * o.tol &&
-      left() > 0) {
+  // (Not after nsgs itself: the polish would only continue its sweeps, doubling the time of a
+  // small problem.)
+  if (have && best.status == Status::kSolved && best.solver != "nsgs" &&
+      best.residuals.natural > 0.1 * o.tol && left() > 0) {
     NsgsOptions no;
     no.common = common();
     no.common.max_iterations = kPolishSweeps;

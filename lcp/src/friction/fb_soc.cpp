@@ -120,6 +120,8 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   SpMat analysed_pattern;
   bool analysed = false;
   Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  SpMat ldlt_pattern;
+  bool ldlt_analysed = false;
   SpMat I(n, n);
   I.setIdentity();
   // Non-monotone Armijo reference for Newton steps: the largest Psi of the last `memory`
@@ -186,7 +188,15 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
       kind = "lm";
       const double lambda = std::max(phi.norm(), 1e-14);
       SpMat N = SpMat(J.transpose() * J) + lambda * I;
-      ldlt.compute(N);
+      N.makeCompressed();
+      // AMD ordering once per pattern of J^T J + lambda I (J's pattern is fixed): only the
+      // numbers are factorised again.
+      if (!ldlt_analysed || !same_pattern(N, ldlt_pattern)) {
+        ldlt.analyzePattern(N);
+        ldlt_pattern = N;
+        ldlt_analysed = true;
+      }
+      ldlt.factorize(N);
       if (ldlt.info() == Eigen::Success) {
         d = ldlt.solve(-grad);
         if (d.allFinite() && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi);
