@@ -2,6 +2,7 @@
 // (field names and text are what users script against, kept character for character).
 #include "cpkit/lcp/friction/fc_request.hpp"
 
+#include <chrono>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -128,6 +129,7 @@ void solve_global_once(const FcRequest& a, const CommonOptions& options, FcSolve
 /// unit-free tolerance while above tol in it (measure_solve.hpp; the best answer is kept).
 void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
   const CommonOptions options = common_options(a);
+  const auto start = std::chrono::steady_clock::now();
   solve_global_once(a, options, out);
   double t = options.tol;
   for (int k = 0; k < kMaxTightenings && out.measure != FrictionMeasure::kUnitFree; ++k) {
@@ -136,13 +138,23 @@ void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
     const auto next = next_unit_free_tol(t, measured(e, out.measure), options.tol);
     if (!is_solution(out.result.status) || !(e.unit_free <= options.tol_acceptable) || !next)
       break;
+    const double left = options.time_limit_s -
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!(left > 0)) break;
     t = *next;
     CommonOptions tighter = options;
     tighter.tol = t;
+    tighter.time_limit_s = left;
     FcSolveOutcome again = out;
     solve_global_once(a, tighter, again);
-    if (!better_in_measure(out.problem, again.result, out.result, options, out.measure)) break;
-    out = std::move(again);
+    const int iterations = out.result.iterations + again.result.iterations;  // all the solves'
+    const double seconds = out.result.seconds + again.result.seconds;
+    const bool better =
+        better_in_measure(out.problem, again.result, out.result, options, out.measure);
+    if (better) out = std::move(again);
+    out.result.iterations = iterations;
+    out.result.seconds = seconds;
+    if (!better) break;
   }
   if (has_answer(out.result, out.problem))
     decide_in_measure(out.problem, out.result, options, out.measure);

@@ -28,13 +28,13 @@ bool trusted(const SolveResult& r, const std::optional<FrictionErrors>& e, const
   return is_solution(r.status) && e && e->unit_free <= o.tol_acceptable;
 }
 
-/// The tightening loop of the header comment: `first` is the answer at the caller's tolerance;
-/// resolve(options, best) gives the next answer at options.tol (unit-free).
+/// The tightening loop of the header comment: `first` is the answer at the caller's tolerance,
+/// whose solve began at `start` (the time limit counts from there); resolve(options, best)
+/// gives the next answer at options.tol (unit-free).
 template <class Resolve>
 SolveResult tighten(const FrictionContactProblem& p, SolveResult first, const CommonOptions& o,
-                    FrictionMeasure m, Resolve resolve) {
+                    FrictionMeasure m, Clock::time_point start, Resolve resolve) {
   if (m == FrictionMeasure::kUnitFree) return first;
-  const auto start = Clock::now();
   SolveResult best = std::move(first);
   int iterations = best.iterations;
   double seconds = best.seconds;
@@ -97,15 +97,16 @@ SolveResult solve_in_measure(const FrictionContactProblem& p, const SolverEntry&
     if (r.solver.empty()) r.solver = entry.info.name;
     return r;
   };
-  return tighten(p, solve(o), o, m, [&](const CommonOptions& oo, const SolveResult&) {
-    return solve(oo);
-  });
+  const auto start = Clock::now();
+  SolveResult first = solve(o);
+  return tighten(p, std::move(first), o, m, start,
+                 [&](const CommonOptions& oo, const SolveResult&) { return solve(oo); });
 }
 
 SolveResult refine_in_measure(const FrictionContactProblem& p, SolveResult answer,
                               const CommonOptions& o, FrictionMeasure m) {
   const std::string solver = answer.solver;
-  SolveResult out = tighten(p, std::move(answer), o, m,
+  SolveResult out = tighten(p, std::move(answer), o, m, Clock::now(),
                             [&](const CommonOptions& oo, const SolveResult& best) {
                               return polish_on_true_cone(p, best.z, oo);
                             });
