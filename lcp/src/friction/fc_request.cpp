@@ -130,8 +130,10 @@ void solve_global_once(const FcRequest& a, const CommonOptions& options, FcSolve
 void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
   const CommonOptions options = common_options(a);
   const auto start = std::chrono::steady_clock::now();
-  solve_global_once(a, options, out);
-  double t = options.tol;
+  double t = first_unit_free_tol(options, out.measure);
+  CommonOptions first = options;
+  first.tol = t;
+  solve_global_once(a, first, out);
   for (int k = 0; k < kMaxTightenings && out.measure != FrictionMeasure::kUnitFree; ++k) {
     if (!has_answer(out.result, out.problem)) break;
     const FrictionErrors e = friction_errors(out.problem, out.result.z);

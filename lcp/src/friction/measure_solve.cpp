@@ -32,13 +32,14 @@ bool trusted(const SolveResult& r, const std::optional<FrictionErrors>& e, const
 /// whose solve began at `start` (the time limit counts from there); resolve(options, best)
 /// gives the next answer at options.tol (unit-free).
 template <class Resolve>
-SolveResult tighten(const FrictionContactProblem& p, SolveResult first, const CommonOptions& o,
-                    FrictionMeasure m, Clock::time_point start, Resolve resolve) {
+SolveResult tighten(const FrictionContactProblem& p, SolveResult first, double first_tol,
+                    const CommonOptions& o, FrictionMeasure m, Clock::time_point start,
+                    Resolve resolve) {
   if (m == FrictionMeasure::kUnitFree) return first;
   SolveResult best = std::move(first);
   int iterations = best.iterations;
   double seconds = best.seconds;
-  double t = o.tol;
+  double t = first_tol;
   int solves = 1;
   for (int k = 0; k < kMaxTightenings; ++k) {
     const auto e = errors_of(p, best);
@@ -74,6 +75,11 @@ SolveResult tighten(const FrictionContactProblem& p, SolveResult first, const Co
 
 }  // namespace
 
+double first_unit_free_tol(const CommonOptions& o, FrictionMeasure m) {
+  if (m == FrictionMeasure::kUnitFree) return o.tol;
+  return std::max(o.tol, std::min(o.tol_acceptable, kFirstTolFactor * o.tol));
+}
+
 std::optional<double> next_unit_free_tol(double t, double measured_value, double tol) {
   if (!(measured_value > tol) || !(t > kMinUnitFreeTol)) return std::nullopt;
   const double factor = std::min(0.1, 0.5 * tol / measured_value);
@@ -98,15 +104,17 @@ SolveResult solve_in_measure(const FrictionContactProblem& p, const SolverEntry&
     return r;
   };
   const auto start = Clock::now();
-  SolveResult first = solve(o);
-  return tighten(p, std::move(first), o, m, start,
+  CommonOptions first_options = o;
+  first_options.tol = first_unit_free_tol(o, m);
+  SolveResult first = solve(first_options);
+  return tighten(p, std::move(first), first_options.tol, o, m, start,
                  [&](const CommonOptions& oo, const SolveResult&) { return solve(oo); });
 }
 
 SolveResult refine_in_measure(const FrictionContactProblem& p, SolveResult answer,
                               const CommonOptions& o, FrictionMeasure m) {
   const std::string solver = answer.solver;
-  SolveResult out = tighten(p, std::move(answer), o, m, Clock::now(),
+  SolveResult out = tighten(p, std::move(answer), o.tol, o, m, Clock::now(),
                             [&](const CommonOptions& oo, const SolveResult& best) {
                               return polish_on_true_cone(p, best.z, oo);
                             });
