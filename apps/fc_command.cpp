@@ -1,6 +1,6 @@
-// `cpkit fc solve FILE [--solver S] [--tol T] [--max-iter K] [--time-limit S] [--json]`
-// `cpkit fc solutions FILE [--starts K] [--seed N] [--tol T] [--time-limit S] [--json]`
-// `cpkit fc bench FILE... [--solvers a,b] --out PREFIX` (fc_bench.hpp)
+// `cpkit fc solve FILE [--solver S] [--tol T] [--measure M] [--max-iter K] [--time-limit S] [--json]`
+// `cpkit fc solutions FILE [--starts K] [--seed N] [--tol T] [--measure M] [--time-limit S] [--json]`
+// `cpkit fc bench FILE... [--solvers a,b] [--measure M] --out PREFIX` (fc_bench.hpp)
 // 3-D frictional contact problems from FCLIB (HDF5) or Siconos FrictionContact .dat files
 // (cpkit/core/friction_io.hpp). `solve` runs one solver of cpkit::lcp::solvers() that accepts
 // friction problems; `solutions` lists distinct verified solutions (lcp/friction/solutions.hpp).
@@ -29,8 +29,23 @@ void add_common(CLI::App* cmd, FcArgs& a) {
                                   "content)")
       ->required();
   cmd->add_flag("--json", a.json, "print one JSON object on stdout");
-  cmd->add_option("--tol", a.tol, "tolerance on the unit-free residual (default 1e-10, at most 1e-3)");
+  cmd->add_option("--tol", a.tol, "tolerance in the measure (default 1e-10, at most 1e-3)");
+  cmd->add_option("--measure", a.measure,
+                  "the error that decides solved: unit_free (default), relative_q "
+                  "(|F_nat|/|q|, FCLIB) or relative_max (Siconos); the unit-free verdict must "
+                  "still accept the answer");
   cmd->add_option("--time-limit", a.time_limit_s, "wall-clock limit in seconds");
+}
+
+/// The JSON of an outcome with run.measure: the measure that decided "solved".
+template <class Outcome, class Json>
+auto with_measure(Json to_json) {
+  return [to_json](const Outcome& out) {
+    nlohmann::json j = to_json(out);
+    j["run"] = run_echo();
+    j["run"]["measure"] = to_string(out.measure);
+    return j;
+  };
 }
 
 }  // namespace
@@ -48,7 +63,8 @@ void add_fc_command(CLI::App& app, Context& ctx) {
   s->add_option("--max-iter", solve->max_iter, "iteration limit (0: the solver's default)");
   s->callback([solve, &ctx]() {
     ctx.exit_code = print_outcome(lcp::friction::run_fc_solve_request(*solve), solve->json,
-                                  lcp::friction::fc_solve_json, lcp::friction::fc_solve_text);
+                                  with_measure<lcp::friction::FcSolveOutcome>(lcp::friction::fc_solve_json),
+                                  lcp::friction::fc_solve_text);
   });
 
   auto sols = std::make_shared<FcArgs>();
@@ -61,7 +77,9 @@ void add_fc_command(CLI::App& app, Context& ctx) {
   l->add_option("--seed", sols->seed, "seed of the starts (default 1)");
   l->callback([sols, &ctx]() {
     ctx.exit_code = print_outcome(lcp::friction::run_fc_solutions_request(*sols), sols->json,
-                                  lcp::friction::fc_solutions_json, lcp::friction::fc_solutions_text);
+                                  with_measure<lcp::friction::FcSolutionsOutcome>(
+                                      lcp::friction::fc_solutions_json),
+                                  lcp::friction::fc_solutions_text);
   });
 
   auto bench = std::make_shared<FcBenchArgs>();
@@ -77,7 +95,10 @@ void add_fc_command(CLI::App& app, Context& ctx) {
   b->add_option("--out", bench->out, "prefix of PREFIX.csv and PREFIX.png (refused when one is "
                                      "a FILE; PREFIX.lock is held while the bench runs)")
       ->required();
-  b->add_option("--tol", bench->tol, "tolerance on the unit-free residual (default 1e-10)");
+  b->add_option("--tol", bench->tol, "tolerance in the measure (default 1e-10)");
+  b->add_option("--measure", bench->measure,
+                "the error that decides solved: relative_q (default: |F_nat|/|q|, as FCLIB's "
+                "published profiles), relative_max or unit_free");
   b->add_option("--time-limit", bench->time_limit_s, "seconds per solve (default 60)");
   b->add_flag("--no-plot", bench->no_plot, "write the CSV only");
   b->callback([bench, &ctx]() { ctx.exit_code = run_fc_bench(*bench); });

@@ -1,6 +1,7 @@
 // Siconos FrictionContact / GlobalFrictionContact .dat files, read as Siconos numerics 4.4 reads
 // them (frictionContact_newFromFile, globalFrictionContact_newFromFile):
-//   local:  d, nc, W (NM_new_from_file: storage, size0, size1, then dense or sparse block), then
+//   local:  d, nc, W (NM_new_from_file: storage, size0, size1, then dense, sparse block or
+//           sparse: io_dat_csparse.cpp), then
 //           q (size1 numbers), then mu (nc numbers);
 //   global: d, nc, M, H (each NM_new_from_file), then q (M's size1), b (H's size1), mu (nc).
 // Siconos' q and b are cpkit's f and w (M v = H r + q, u = H^T v + b). Siconos ignores whatever
@@ -26,28 +27,37 @@ namespace {
 
 using io_dat::DatReader;
 
-/// The storage type of a NumericsMatrix: 0 (dense) or 1 (sparse block), the ones cpkit reads.
+/// The storage type of a NumericsMatrix: 0 dense, 1 sparse block, 2 sparse (CSparse).
 std::int64_t read_storage(DatReader& r, const std::string& name) {
   const int storage_line = r.line();
   const std::int64_t storage = r.integer("the storage type of " + name,
                                          std::numeric_limits<std::int64_t>::min(),
                                          std::numeric_limits<std::int64_t>::max());
-  if (storage != 0 && storage != 1)
+  if (storage < 0 || storage > 2)
     r.fail(storage_line, "storage type " + std::to_string(storage) + " of " + name +
-                             " is not read (Siconos: 0 dense, 1 sparse block, 2 sparse; cpkit "
-                             "reads 0 and 1)");
+                             " is not read (Siconos: 0 dense, 1 sparse block, 2 sparse)");
   return storage;
 }
 
-/// One NumericsMatrix (storage 0 or 1) of the given size; `after` numbers must follow it.
+/// The body of a NumericsMatrix of the given storage and size, after its type and sizes;
+/// `after` numbers must follow it.
+Eigen::SparseMatrix<double> read_body(DatReader& r, std::int64_t storage, std::int64_t rows,
+                                      std::int64_t cols, std::uint64_t after,
+                                      const std::string& name, const std::string& after_what) {
+  if (storage == 0)
+    return io_dat::read_dense(r, rows, cols, after, name, after_what).sparseView(0.0, 0.0);
+  if (storage == 1) return io_dat::read_sparse_block(r, rows, cols, name);
+  return io_dat::read_csparse(r, rows, cols, after, name, after_what);
+}
+
+/// One NumericsMatrix of the given size; `after` numbers must follow it.
 Eigen::SparseMatrix<double> read_matrix(DatReader& r, std::int64_t rows, std::int64_t cols,
                                         std::uint64_t after, const std::string& name,
                                         const std::string& after_what, const std::string& why) {
   const std::int64_t storage = read_storage(r, name);
   r.integer("the number of rows of " + name + why, rows, rows);
   r.integer("the number of columns of " + name + why, cols, cols);
-  if (storage == 0) return io_dat::read_dense(r, rows, cols, after, name, after_what).sparseView(0.0, 0.0);
-  return io_dat::read_sparse_block(r, rows, cols, name);
+  return read_body(r, storage, rows, cols, after, name, after_what);
 }
 
 Eigen::VectorXd read_vector(DatReader& r, std::int64_t n, const std::string& name) {
@@ -178,9 +188,7 @@ GlobalFrictionContactProblem parse_global(const std::string& text, const std::st
     r.integer("the number of columns of M" + why, m, m);
     GlobalFrictionContactProblem p;
     const auto after_M = static_cast<std::uint64_t>(3 + m + n + nc);  // H's header, q, b, mu
-    p.M = storage == 0 ? Eigen::SparseMatrix<double>(
-                             io_dat::read_dense(r, m, m, after_M, "M", "H, q, b and mu").sparseView(0.0, 0.0))
-                       : io_dat::read_sparse_block(r, m, m, "M");
+    p.M = read_body(r, storage, m, m, after_M, "M", "H, q, b and mu");
     p.H = read_matrix(r, m, n, static_cast<std::uint64_t>(m + n + nc), "H", "q, b and mu",
                       " (H is m x 3 nc = " + std::to_string(m) + " x " + std::to_string(n) + ")");
     p.f = read_vector(r, m, "q (cpkit's f)");

@@ -1,6 +1,6 @@
 #pragma once
-// The token reader of Siconos .dat files and the two NumericsMatrix storages Siconos 4.4 writes
-// (NM_new_from_file: 0 dense, 1 sparse block), shared by the LCP reader (io_dat.cpp) and the
+// The token reader of Siconos .dat files and the NumericsMatrix storages Siconos 4.4 writes
+// (NM_new_from_file: 0 dense, 1 sparse block, 2 sparse), shared by the LCP reader (io_dat.cpp) and the
 // friction problem readers (friction_io_dat.cpp). Internal to cpkit_core.
 #include <algorithm>
 #include <cstdint>
@@ -63,6 +63,23 @@ class DatReader {
     return v;
   }
 
+  /// The next token as text, which must be `expected`; `what` names where it stands.
+  template <class What>
+  void literal(std::string_view expected, const What& what) {
+    const Token& t = take(what);
+    if (t.text != expected)
+      fail(t.line, "expected '" + std::string(expected) + "' (" + name(what) + "), got '" +
+                       io_text::quoted(t.text) + "'");
+  }
+
+  /// The next token as text (a word of a header line); `what` names it.
+  const Token& word(const std::string& what) { return take(what); }
+
+  /// Skips the tokens on `line` (the rest of a free-text line).
+  void skip_line(int line) {
+    while (!done() && tokens_[next_].line == line) ++next_;
+  }
+
   /// InputError unless `count` more tokens are in the file; checked before allocating for them.
   void need(std::uint64_t count, const std::string& what) const {
     if (count > remaining())
@@ -102,5 +119,14 @@ Eigen::MatrixXd read_dense(DatReader& r, std::int64_t rows, std::int64_t cols, s
 /// Storage 1 after its type and sizes: a SparseBlockStructuredMatrix (SBM_new_from_file).
 Eigen::SparseMatrix<double> read_sparse_block(DatReader& r, std::int64_t rows, std::int64_t cols,
                                               const std::string& name = "M");
+
+/// Storage 2 after its type and sizes: a NumericsSparseMatrix as NSM_write_in_file writes it,
+/// its origin (1 triplet, 2 compressed columns), the CSparse banner line, the header line
+/// ("[triplet: ]R-by-C, nzmax: Z nnz: N[, 1-norm: X]"), then the entries ("i j : x" per
+/// triplet; "col j : locations a to b" then "i : x" per entry in a column).
+/// io_dat_csparse.cpp. `after` numbers must follow.
+Eigen::SparseMatrix<double> read_csparse(DatReader& r, std::int64_t rows, std::int64_t cols,
+                                         std::uint64_t after, const std::string& name,
+                                         const std::string& after_what);
 
 }  // namespace cpkit::io_dat

@@ -230,18 +230,31 @@ def _options(tol, tol_acceptable, max_iterations, time_limit):
             number(time_limit, "time_limit"))
 
 
+def _measure(measure) -> str:
+    """The measure's name (the C++ side checks the word: ValueError listing the valid ones)."""
+    if not isinstance(measure, str):
+        raise TypeError(f"measure must be a str (unit_free, relative_q, relative_max), "
+                        f"got {type(measure).__name__}")
+    return measure
+
+
 def solve_friction(W, q=None, mu=None, solver: str = "auto", tol: Optional[float] = None, *,
                    tol_acceptable: float = 1e-6, max_iterations: int = 0,
-                   time_limit: float = _INF) -> FrictionResult:
+                   time_limit: float = _INF, measure: str = "unit_free") -> FrictionResult:
     """One solution of the local problem, judged from the data: solve_friction(problem, ...)
     with a FrictionProblem (as read_fclib returns), or solve_friction(W, q, mu, ...).
 
     solver: "auto" or one of friction_solvers() (nsgs, fb-soc, prox, lemke on the faceted cone,
     ipopt). tol (default 1e-10, at most 1e-3) bounds the unit-free error for "solved";
-    tol_acceptable for "solved_inaccurate". The GIL is released during the solve."""
+    tol_acceptable for "solved_inaccurate". measure decides "solved": "unit_free" (default),
+    "relative_q" (|F_nat|/|q|, FCLIB's) or "relative_max" (Siconos'); in a relative measure the
+    problem is solved again at lower unit-free tolerances until within tol, and the unit-free
+    verdict must still accept the answer (docs/friction_contact.md, "The field's measure").
+    An unknown measure raises ValueError. The GIL is released during the solve."""
     W, q, mu = _data(W, q, mu, "solve_friction")
     return FrictionResult._from(_cpkit.solve_friction(
-        W, q, mu, str(solver), *_options(tol, tol_acceptable, max_iterations, time_limit)))
+        W, q, mu, str(solver), *_options(tol, tol_acceptable, max_iterations, time_limit),
+        _measure(measure)))
 
 
 def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
@@ -266,16 +279,18 @@ def solve_friction_global(problem: GlobalFrictionProblem, solver: str = "auto",
 
 def friction_solutions(W, q=None, mu=None, starts: int = 20, seed: int = 1, *,
                        tol: Optional[float] = None,
-                       time_limit: float = _INF) -> FrictionSolutionSet:
+                       time_limit: float = _INF,
+                       measure: str = "unit_free") -> FrictionSolutionSet:
     """Distinct verified solutions of a problem (friction_solutions(problem, starts=...)) or
     of (W, q, mu): every solution of the faceted problem checked on the true cone (up to 5
     contacts), then a seeded multistart of `starts` points (deterministic for a seed).
-    complete is False unless proved (lcp/friction/solutions.hpp)."""
+    complete is False unless proved (lcp/friction/solutions.hpp). measure as solve_friction's:
+    each solution is polished within tol in it where it can be, and its status decided in it."""
     W, q, mu = _data(W, q, mu, "friction_solutions")
     d = _cpkit.friction_solutions(W, q, mu, integer(starts, "starts", 1),
                                   integer(seed, "seed", 0, 2**32 - 1),
                                   1e-10 if tol is None else real(tol, "tol"),
-                                  number(time_limit, "time_limit"))
+                                  number(time_limit, "time_limit"), _measure(measure))
     return FrictionSolutionSet([FrictionResult._from(s) for s in d["solutions"]], d["complete"],
                                d["message"])
 

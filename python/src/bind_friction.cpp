@@ -12,10 +12,12 @@
 #include "sparse_from.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_measure.hpp"
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/lcp/friction/global.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/friction/solutions.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
@@ -141,18 +143,20 @@ pyb::dict solve_friction_global(const pyb::handle& M, const pyb::handle& H, cons
 
 pyb::dict solve_friction(const pyb::handle& W, const Vec& q, const Vec& mu,
                          const std::string& solver, double tol, double tol_acceptable,
-                         int max_iterations, double time_limit) {
+                         int max_iterations, double time_limit, const std::string& measure) {
   const FrictionContactProblem p = make_problem(W, q, mu);
   const CommonOptions o = fc_options(tol, tol_acceptable, max_iterations, time_limit);
+  const FrictionMeasure m = parse_friction_measure(measure, "measure");
   const SolverEntry* e = &friction_entry(solver);
-  SolveResult r = without_gil([&] { return e->solve_fc(p, o); });
-  if (r.solver.empty()) r.solver = e->info.name;
+  SolveResult r = without_gil([&] { return lcp::friction::solve_in_measure(p, *e, o, m); });
   return fc_result_dict(r, p);
 }
 
 pyb::dict friction_solutions(const pyb::handle& W, const Vec& q, const Vec& mu, int starts,
-                             unsigned seed, double tol, double time_limit) {
+                             unsigned seed, double tol, double time_limit,
+                             const std::string& measure) {
   const FrictionContactProblem p = make_problem(W, q, mu);
+  const FrictionMeasure m = parse_friction_measure(measure, "measure");
   lcp::friction::FrictionSolutionsOptions o;
   o.common = fc_options(tol, CommonOptions{}.tol_acceptable, 0, time_limit);
   if (starts < 1) throw InputError("starts must be at least 1, got " + std::to_string(starts));
@@ -160,7 +164,12 @@ pyb::dict friction_solutions(const pyb::handle& W, const Vec& q, const Vec& mu, 
   o.seed = seed;
   throw_if_invalid(o.validate(), "friction_solutions options");
   lcp::friction::FrictionSolutionSet s =
-      without_gil([&] { return lcp::friction::friction_solutions(p, o); });
+      without_gil([&] {
+        lcp::friction::FrictionSolutionSet set = lcp::friction::friction_solutions(p, o);
+        for (auto& r : set.solutions)
+          r = lcp::friction::refine_in_measure(p, std::move(r), o.common, m);
+        return set;
+      });
   pyb::dict d;
   d["solutions"] = list_of(s.solutions, [&](const SolveResult& r) { return fc_result_dict(r, p); });
   d["complete"] = s.complete;

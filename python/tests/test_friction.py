@@ -493,3 +493,36 @@ def test_global_proximal_solves_a_massless_degree_of_freedom_as_by_hand():
     uhat = u + np.array([0.5 * np.linalg.norm(u[1:]), 0.0, 0.0])
     assert abs(res.r @ uhat) <= 1e-8 and np.linalg.norm(res.r[1:]) <= 0.5 * res.r[0] + 1e-9
     assert [c.state for c in res.per_contact] == ["slip"]
+
+
+# ---- the field's measure (issue 35) -----------------------------------------------------------
+# W = I, q = (-1, 0.3, 0.4), mu = 0.5 sticks at the cone's edge: r = -q = (1, -0.3, -0.4).
+
+@pytest.mark.parametrize("measure", ["unit_free", "relative_q", "relative_max"])
+def test_measure_decides_solved_and_the_hand_answer_is_reached(measure):
+    W, q, mu = np.eye(3), np.array([-1.0, 0.3, 0.4]), np.array([0.5])
+    res = cpkit.solve_friction(W, q, mu, tol=1e-10, measure=measure)
+    assert res.status == "solved", res.message
+    assert np.allclose(res.r, [1.0, -0.3, -0.4], atol=1e-9)
+    # relative_q recomputed here: |F_nat| / |q|
+    assert np.linalg.norm(natural_map(W, q, mu, res.r)) / np.linalg.norm(q) <= 1e-9
+    s = cpkit.friction_solutions(W, q, mu, starts=2, tol=1e-10, measure=measure)
+    assert any(x.status == "solved" for x in s.solutions)
+
+
+def test_an_unknown_measure_is_a_value_error_naming_the_three():
+    with pytest.raises(ValueError, match=r"unknown measure 'relative'.*unit_free, relative_q, relative_max"):
+        cpkit.solve_friction(np.eye(3), [-1.0, 0.0, 0.0], [0.5], measure="relative")
+    with pytest.raises(ValueError, match="unknown measure"):
+        cpkit.friction_solutions(np.eye(3), [-1.0, 0.0, 0.0], [0.5], measure="")
+    with pytest.raises(TypeError, match="measure must be a str"):
+        cpkit.solve_friction(np.eye(3), [-1.0, 0.0, 0.0], [0.5], measure=1)
+
+
+def test_a_sparse_dat_file_reads_as_its_dense_original_printed_with_g():
+    # tests/data/fclib/sparse: Siconos' own writer, entries printed with %g (6 digits)
+    sparse = cpkit.read_fclib(os.path.join(DATA_DIR, "fclib", "sparse", "FC3D_Example1_csc.dat"))
+    dense = cpkit.read_fclib(os.path.join(LOCAL, "FC3D_Example1.dat"))
+    rounded = np.vectorize(lambda x: float("%g" % x))(dense.W.toarray())
+    assert np.array_equal(sparse.W.toarray(), rounded)
+    assert np.array_equal(sparse.q, dense.q) and np.array_equal(sparse.mu, dense.mu)

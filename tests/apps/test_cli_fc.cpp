@@ -474,3 +474,30 @@ TEST_CASE("fc bench: a second run on the same --out prefix is refused", "[cli][f
   CHECK(cpkit::test::slurp(prefix + ".csv") == "old table\n");
   CHECK_FALSE(std::filesystem::exists(prefix + ".csv.partial"));
 }
+
+// Issue 35: --measure names the error that decides "solved"; run.measure says which did; an
+// unknown word is exit 2 naming the three (the measures themselves: lcp/test_friction_measure.cpp).
+TEST_CASE("fc --measure: run.measure in the JSON, an unknown measure is exit 2", "[cli][fc][measure]") {
+  const std::string file = data("local/FrictionContact3D_1c.dat");
+  const auto run = run_cpkit("fc solve " + file + " --measure relative_max --json");
+  INFO(run.err);
+  REQUIRE(run.code == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  CHECK(j["run"]["measure"] == "relative_max");
+  CHECK(j["status"] == "solved");
+  CHECK(j["errors"]["relative_max"].get<double>() <= 1e-10);
+  const auto plain = run_cpkit("fc solve " + file + " --json");
+  CHECK(nlohmann::json::parse(plain.out)["run"]["measure"] == "unit_free");
+  const std::string names = "(valid: unit_free, relative_q, relative_max)";
+  const std::string out = (cpkit::test::scratch_dir() / "m").string();
+  for (const std::string& cmd :
+       {"fc solve " + file + " --measure relative", "fc solutions " + file + " --measure max",
+        "fc bench " + file + " --measure unitfree --no-plot --out '" + out + "'"}) {
+    INFO(cmd);
+    const auto bad = run_cpkit(cmd);
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find("unknown measure") != std::string::npos);
+    CHECK(bad.err.find(names) != std::string::npos);
+  }
+  CHECK(!std::filesystem::exists(out + ".csv"));
+}

@@ -11,6 +11,7 @@ import sys
 
 try:
     import numpy as np
+    import scipy.sparse  # noqa: F401 -- Siconos hands sparse (storage 2) matrices over as scipy's
     import siconos.numerics as sn
 except Exception as e:  # noqa: BLE001 -- any import failure means: no peer here
     print("python3-siconos (siconos.numerics) not importable:", e)
@@ -20,6 +21,8 @@ except Exception as e:  # noqa: BLE001 -- any import failure means: no peer here
 def dense(M):
     if isinstance(M, np.ndarray):
         return np.asarray(M, dtype=float)
+    if hasattr(M, "toarray"):  # a scipy.sparse matrix (storage 2)
+        return np.asarray(M.toarray(), dtype=float)
     if isinstance(M, sn.NumericsMatrix):
         D = np.zeros((M.size0, M.size1))
         for i in range(M.size0):

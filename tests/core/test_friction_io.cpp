@@ -239,7 +239,9 @@ TEST_CASE("truncated .dat files are input errors at every cut", "[friction][io][
   // that keeps every token up to mu is a complete file, every shorter one an input error.
   const std::pair<const char*, int> files[] = {{"local/FrictionContact3D_1c.dat", 0},
                                                {"local/Rover4396.dat", 1},
-                                               {"global/GFC3D_Example1.dat", 1}};
+                                               {"global/GFC3D_Example1.dat", 1},
+                                               {"sparse/empty_column_csc.dat", 0},
+                                               {"sparse/Rover4396_coo.dat", 0}};
   for (const auto& [name, trailing] : files) {
     const std::string text = slurp(data(name));
     const bool global = std::string(name).rfind("global", 0) == 0;
@@ -284,7 +286,8 @@ TEST_CASE("corrupted .dat files name what is wrong", "[friction][io][bad]") {
   bad("3 2" + W + "-1 2 3 0.1", "rows of W");                     // W is 3 x 3, not 6 x 6
   bad("3 999999999" + W + "-1 2 3 0.1", "contacts");              // huge nc: refused, not allocated
   bad("3 1 0 3 3 3 3 15", "ends too early");
-  bad("3 1 2 3 3 3 3 15 1 2 3 4 5 6 7 8 9 10", "storage type 2");
+  bad("3 1 2 3 3 3 3 15 1 2 3 4 5 6 7 8 9 10", "sparse origin 3 of W is not read");
+  bad("3 1 7 3 3 3 3 15 1 2 3 4 5 6 7 8 9 10", "storage type 7");
   bad("3 1 1 3 3 2147483647 1 1 3 3 2 1 0 1 0 0 1 2 3 4 5 6 7 8 9 -1 2 3 0.1", "blocks");
   bad("3 1" + W + "-1 2 3 0.1 7 8", "more numbers follow mu");
   // A global file is not a local one (its M would pass for W): refused, not misread.
@@ -366,4 +369,89 @@ TEST_CASE("files in neither format, and broken FCLIB files, are input errors", "
                         set_int(f, "/fclib_local/W/i", 0);  // row indices: first one ok, still valid
                         set_int(f, "/fclib_local/spacedim", 2);
                       })); }, "index.hdf5", "spacedim");
+}
+
+namespace {
+
+// One contact, W = [[2, 0, 0.5], [0, 1.25, 0], [0.5, 0, 3]], q = (-1, 0.25, 0.125), mu = 0.3,
+// with W in storage 2 as Siconos 4.4's writer prints it (a csc, then a triplet; the line
+// breaks matter: the banner and the header are lines).
+const char* const kCsc =
+    "3\n1\n2\n3\n3\n2\n"
+    "CSparse Version 3.2.0, Sept 12, 2017.  Copyright (c) Timothy A. Davis, 2006-2016\n"
+    "3-by-3, nzmax: 5 nnz: 5, 1-norm: 3.5\n"
+    "    col 0 : locations 0 to 1\n      0 : 2\n      2 : 0.5\n"
+    "    col 1 : locations 2 to 2\n      1 : 1.25\n"
+    "    col 2 : locations 3 to 4\n      0 : 0.5\n      2 : 3\n"
+    " -1 0.25 0.125\n 0.3\n";
+const char* const kTriplet =
+    "3\n1\n2\n3\n3\n1\n"
+    "CSparse Version 3.2.0, Sept 12, 2017.  Copyright (c) Timothy A. Davis, 2006-2016\n"
+    "triplet: 3-by-3, nzmax: 5 nnz: 5\n"
+    "    0 0 : 2\n    2 0 : 0.5\n    1 1 : 1.25\n    0 2 : 0.5\n    2 2 : 3\n"
+    " -1 0.25 0.125\n 0.3\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("storage 2 (sparse W) holds the numbers its text shows", "[friction][io][sparse]") {
+  MatrixXd W(3, 3);
+  W << 2, 0, 0.5, 0, 1.25, 0, 0.5, 0, 3;
+  for (const char* text : {kCsc, kTriplet}) {
+    const auto p = cpkit::parse_friction_dat(text, "sparse.dat");
+    CHECK(MatrixXd(p.W) == W);
+    CHECK(p.W.nonZeros() == 5);
+    CHECK(p.q == Eigen::Vector3d(-1, 0.25, 0.125));
+    CHECK(p.mu[0] == 0.3);
+  }
+  // The empty column (generate.py's matrix): "col 2 : locations 5 to 4" holds nothing.
+  const auto e = cpkit::read_friction_problem(data("sparse/empty_column_csc.dat").string());
+  MatrixXd E(6, 6);
+  E << 2, 0.25, 0, 0.5, 0, 0, 0.25, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0.5, 0, 0, 3, 0.125, 0,
+      0, 0, 0, 0.125, 1, 0, 0, 0, 0, 0, 0, 1;
+  CHECK(MatrixXd(e.W) == E);
+  // A triplet and a csc of the same problem (Siconos' writer) read the same.
+  CHECK(MatrixXd(cpkit::read_friction_problem(data("sparse/FC3D_Example1_coo.dat").string()).W) ==
+        MatrixXd(cpkit::read_friction_problem(data("sparse/FC3D_Example1_csc.dat").string()).W));
+}
+
+TEST_CASE("malformed storage 2 files name what is wrong", "[friction][io][sparse][bad]") {
+  const std::string f = "bad.dat";
+  auto bad = [&](const std::string& text, const std::string& what) {
+    INFO(text);
+    require_input_error([&] { cpkit::parse_friction_dat(text, f); }, f, what);
+  };
+  const std::string csc = kCsc, triplet = kTriplet;
+  // Counts inconsistent with the entries.
+  bad(replaced(csc, "nzmax: 5 nnz: 5,", "nzmax: 6 nnz: 6,"), "ends too early");
+  bad(replaced(csc, "nnz: 5,", "nnz: 4,"), "the last location of W's col 2 is 4");
+  bad(replaced(csc, "locations 2 to 2", "locations 3 to 3"), "the first location of W's col 1");
+  bad(replaced(csc, "col 1 :", "col 2 :"), "the index of W's col 1");
+  bad(replaced(csc, "nzmax: 5", "nzmax: 4"), "exceeds its nzmax");
+  bad(replaced(triplet, "nzmax: 5 nnz: 5", "nzmax: 6 nnz: 6"), "ends too early");
+  // Out-of-range indices.
+  bad(replaced(csc, "      2 : 3", "      3 : 3"), "the row of entry 4 of W is 3");
+  bad(replaced(triplet, "    0 2 : 0.5", "    0 -1 : 0.5"), "the column of entry 3 of W");
+  bad(replaced(triplet, "    2 2 : 3", "    2 3 : 3"), "the column of entry 4 of W is 3");
+  // Huge sizes: refused before anything is allocated for them.
+  bad(replaced(csc, "nzmax: 5 nnz: 5,", "nzmax: 999999999999999 nnz: 999999999999999,"),
+      "more entries than the file holds");
+  bad(replaced(triplet, "nzmax: 5 nnz: 5", "nzmax: 99999999999 nnz: 99999999999"),
+      "more entries than the file holds");
+  // A header that does not describe this matrix or this storage.
+  bad(replaced(csc, "3-by-3,", "4-by-3,"), "the sparse W is 4-by-3");
+  bad(replaced(csc, "3-by-3,", "3x3,"), "expected the size 'R-by-C,'");
+  bad(replaced(csc, "CSparse Version", "Sparse Version"), "expected 'CSparse'");
+  bad(replaced(triplet, "triplet: ", ""), "announces a 'triplet:' header");
+  bad(replaced(csc, "\n2\nCSparse", "\n1\nCSparse"), "announces a 'triplet:' header");
+  bad(replaced(csc, "\n2\nCSparse", "\n4\nCSparse"), "sparse origin 4 of W is not read");
+  bad(replaced(csc, "\n2\nCSparse", "\n0\nCSparse"), "sparse origin 0");
+  bad(replaced(csc, "      1 : 1.25", "      1 : nan"), "entry 2 of W");
+  bad(replaced(csc, "locations 0 to 1", "locations 0 - 1"), "expected 'to'");
+  bad(replaced(triplet, "    1 1 : 1.25", "    1 1 = 1.25"), "expected ':'");
 }

@@ -120,13 +120,14 @@ TEST_CASE("fc bench table: rows, refusals, and a failing stream", "[fc][request]
   std::string line;
   REQUIRE(std::getline(lines, line));
   CHECK(line == "file,problem,contacts,solver,status,iterations,seconds,unit_free,relative_q,"
-                "relative_max");
+                "relative_max,measure");
   int rows = 0;
   for (const char* solver : {"nsgs", "prox"}) {
     REQUIRE(std::getline(lines, line));
     ++rows;
     CHECK(line.rfind("\"" + r.files[0] + "\",", 0) == 0);
     CHECK(line.find(std::string(",1,") + solver + ",solved,") != std::string::npos);
+    CHECK(line.substr(line.size() - 11) == ",relative_q");  // the default: the published measure
   }
   CHECK_FALSE(std::getline(lines, line));
   CHECK(rows == 2);

@@ -14,6 +14,7 @@
 #include "cpkit/core/result.hpp"
 #include "cpkit/core/status.hpp"
 #include "cpkit/lcp/friction/fc_request.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -44,6 +45,7 @@ std::string title_beside(const std::string& title, const std::string& file) {
 FcBench prepare_fc_bench(const FcBenchRequest& a) {
   if (!(a.tol > 0 && a.tol <= 1e-3))
     throw InputError("--tol must be in (0, 1e-3], got " + num_text(a.tol));
+  const FrictionMeasure measure = parse_friction_measure(a.measure, "--measure");
   if (!(a.time_limit_s > 0))
     throw InputError("--time-limit must be > 0, got " + num_text(a.time_limit_s));
   FcBench b;
@@ -58,6 +60,7 @@ FcBench prepare_fc_bench(const FcBenchRequest& a) {
                        fc_solver_list() + ")");
     b.entries.push_back(e);
   }
+  b.measure = measure;
   b.options.tol = a.tol;
   if (b.options.tol_acceptable < b.options.tol) b.options.tol_acceptable = b.options.tol;
   b.options.time_limit_s = a.time_limit_s;
@@ -67,7 +70,7 @@ FcBench prepare_fc_bench(const FcBenchRequest& a) {
 
 void write_fc_bench_table(const FcBench& b, std::ostream& csv, const std::string& table_name,
                           std::ostream* progress) {
-  csv << "file,problem,contacts,solver,status,iterations,seconds,unit_free,relative_q,relative_max\n"
+  csv << "file,problem,contacts,solver,status,iterations,seconds,unit_free,relative_q,relative_max,measure\n"
       << std::setprecision(6);
   flush_or_throw(csv, table_name);
   for (std::size_t i = 0; i < b.problems.size(); ++i) {
@@ -75,14 +78,15 @@ void write_fc_bench_table(const FcBench& b, std::ostream& csv, const std::string
     for (std::size_t k = 0; k < b.entries.size(); ++k) {
       // Wall clock around the one call: what a user waits for (setup and factorisations included).
       const auto t0 = std::chrono::steady_clock::now();
-      const SolveResult r = b.entries[k]->solve_fc(p, b.options);
+      const SolveResult r = solve_in_measure(p, *b.entries[k], b.options, b.measure);
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double nan = std::nan("");
       const FrictionErrors e = r.z.size() == p.W.rows() ? friction_errors(p, r.z)
                                                         : FrictionErrors{nan, nan, nan};
       csv << quoted(b.files[i]) << ',' << quoted(p.name) << ',' << p.contacts() << ','
           << b.names[k] << ',' << to_string(r.status) << ',' << r.iterations << ',' << s << ','
-          << e.unit_free << ',' << e.relative_q << ',' << e.relative_max << '\n';
+          << e.unit_free << ',' << e.relative_q << ',' << e.relative_max << ','
+          << to_string(b.measure) << '\n';
       flush_or_throw(csv, table_name);
       if (progress)  // by file, as the user named it (FCLIB titles repeat across files)
         *progress << b.files[i] << title_beside(p.name, b.files[i]) << " " << b.names[k] << ": "

@@ -2,6 +2,7 @@
 // (field names and text are what users script against, kept character for character).
 #include "cpkit/lcp/friction/fc_request.hpp"
 
+#include <chrono>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "cpkit/core/registry.hpp"
 #include "cpkit/core/report.hpp"
 #include "cpkit/core/status.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::lcp::friction {
@@ -91,6 +93,12 @@ std::string result_line(const SolveResult& r, const FrictionContactProblem& p) {
   return s.str();
 }
 
+/// The measure that decided "solved", when it is not the default unit-free number.
+std::string measure_line(FrictionMeasure m) {
+  if (m == FrictionMeasure::kUnitFree) return {};
+  return std::string("measure:    ") + to_string(m) + " (decides solved; unit-free must accept)\n";
+}
+
 const SolverEntry& fc_solver(const std::string& name) {
   const SolverEntry* entry = solvers().find(name);
   if (entry == nullptr || !entry->accepts(ProblemKind::kFrictionContact))
@@ -111,8 +119,7 @@ ExitCode exit_code(Status s) {
 /// A global problem (M v = H r + f, u = H^T v + w): condensed, solved locally, judged in the
 /// global variables (global.hpp); where M is singular (degrees of freedom without mass) it is
 /// solved in its own variables by the proximal point in v (solve_global_proximal).
-void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
-  const CommonOptions options = common_options(a);
+void solve_global_once(const FcRequest& a, const CommonOptions& options, FcSolveOutcome& out) {
   const SolverEntry& entry = fc_solver(a.solver);
   const GlobalFrictionContactProblem& g = out.global_problem;
   out.global = solve_global(g, entry.info.name, options);
@@ -121,6 +128,43 @@ void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
   if (out.proximal) out.global = solve_global_proximal(g, entry.info.name, options);
   out.problem = out.global.condensed.local;
   out.result = out.global.result;
+}
+
+/// solve_global_once, judged in out.measure on the condensed problem: solved again at a lower
+/// unit-free tolerance while above tol in it (measure_solve.hpp; the best answer is kept).
+void solve_global_request(const FcRequest& a, FcSolveOutcome& out) {
+  const CommonOptions options = common_options(a);
+  const auto start = std::chrono::steady_clock::now();
+  double t = first_unit_free_tol(options, out.measure);
+  CommonOptions first = options;
+  first.tol = t;
+  solve_global_once(a, first, out);
+  for (int k = 0; k < kMaxTightenings && out.measure != FrictionMeasure::kUnitFree; ++k) {
+    if (!has_answer(out.result, out.problem)) break;
+    const FrictionErrors e = friction_errors(out.problem, out.result.z);
+    const auto next = next_unit_free_tol(t, measured(e, out.measure), options.tol);
+    if (!is_solution(out.result.status) || !(e.unit_free <= options.tol_acceptable) || !next)
+      break;
+    const double left = options.time_limit_s -
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!(left > 0)) break;
+    t = *next;
+    CommonOptions tighter = options;
+    tighter.tol = t;
+    tighter.time_limit_s = left;
+    FcSolveOutcome again = out;
+    solve_global_once(a, tighter, again);
+    const int iterations = out.result.iterations + again.result.iterations;  // all the solves'
+    const double seconds = out.result.seconds + again.result.seconds;
+    const bool better =
+        better_in_measure(out.problem, again.result, out.result, options, out.measure);
+    if (better) out = std::move(again);
+    out.result.iterations = iterations;
+    out.result.seconds = seconds;
+    if (!better) break;
+  }
+  if (has_answer(out.result, out.problem))
+    decide_in_measure(out.problem, out.result, options, out.measure);
 }
 
 }  // namespace
@@ -137,6 +181,7 @@ FcSolveOutcome run_fc_solve_request(const FcRequest& a) {
   out.file = a.file;
   // Read once (a pipe holds either kind); validates; names the file; a damaged file is
   // reported as the kind it most likely is.
+  out.measure = parse_friction_measure(a.measure, "--measure");
   FrictionProblemFile file = read_friction_problem_file(a.file);
   if (file.is_global) {
     out.global_problem = std::move(file.global);
@@ -148,8 +193,7 @@ FcSolveOutcome run_fc_solve_request(const FcRequest& a) {
   out.problem = std::move(file.local);
   const CommonOptions options = common_options(a);
   const SolverEntry& entry = fc_solver(a.solver);
-  out.result = entry.solve_fc(out.problem, options);
-  if (out.result.solver.empty()) out.result.solver = entry.info.name;
+  out.result = solve_in_measure(out.problem, entry, options, out.measure);
   out.exit_code = exit_code(out.result.status);
   return out;
 }
@@ -182,12 +226,12 @@ std::string fc_solve_text(const FcSolveOutcome& out) {
   const SolveResult& r = out.result;
   if (!out.is_global) {
     o << "problem:    " << out.problem.name << " (" << count_text(out.problem.contacts(), "contact")
-      << ")\n" << result_line(r, out.problem);
+      << ")\n" << measure_line(out.measure) << result_line(r, out.problem);
     return o.str();
   }
   const GlobalFrictionContactProblem& g = out.global_problem;
   o << "problem:    " << g.name << " (global: " << count_text(g.contacts(), "contact") << ", "
-    << count_text(g.dofs(), "dof") << ")\n";
+    << count_text(g.dofs(), "dof") << ")\n" << measure_line(out.measure);
   if (out.proximal)
     o << "route:      proximal point in v (M is singular: no condensation), " << r.iterations
       << " outer iterations\n";
@@ -204,6 +248,7 @@ std::string fc_solve_text(const FcSolveOutcome& out) {
 FcSolutionsOutcome run_fc_solutions_request(const FcRequest& a) {
   FcSolutionsOutcome out;
   out.file = a.file;
+  out.measure = parse_friction_measure(a.measure, "--measure");
   out.problem = read_friction_problem(a.file);
   FrictionSolutionsOptions o;
   o.common = common_options(a);
@@ -213,7 +258,12 @@ FcSolutionsOutcome run_fc_solutions_request(const FcRequest& a) {
                                          {"tol", "--tol"},
                                          {"time_limit_s", "--time-limit"}});
   out.set = friction_solutions(out.problem, o);
-  out.exit_code = out.set.solutions.empty() ? kExitInconclusive : kExitOk;
+  bool any = false;
+  for (auto& s : out.set.solutions) {
+    s = refine_in_measure(out.problem, std::move(s), o.common, out.measure);
+    any = any || is_solution(s.status);
+  }
+  out.exit_code = any ? kExitOk : kExitInconclusive;
   return out;
 }
 
@@ -238,7 +288,8 @@ nlohmann::json fc_solutions_json(const FcSolutionsOutcome& out) {
 std::string fc_solutions_text(const FcSolutionsOutcome& out) {
   std::ostringstream o;
   o << "problem:    " << out.problem.name << " (" << count_text(out.problem.contacts(), "contact")
-    << ")\n" << out.set.solutions.size() << " distinct verified solution(s), complete: "
+    << ")\n" << measure_line(out.measure) << out.set.solutions.size()
+    << " distinct verified solution(s), complete: "
     << (out.set.complete ? "yes" : "no") << "\n" << out.set.message << '\n';
   for (std::size_t k = 0; k < out.set.solutions.size(); ++k)
     o << "-- solution " << k + 1 << '\n' << result_line(out.set.solutions[k], out.problem);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/friction_measure.hpp"
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/registry.hpp"
@@ -20,7 +21,11 @@ namespace cpkit::lcp::friction {
 struct FcBenchRequest {
   std::vector<std::string> files;
   std::vector<std::string> solvers;  ///< empty: every registered friction solver
-  double tol = 1e-10;                ///< on the unit-free residual, in (0, 1e-3]
+  double tol = 1e-10;                ///< in the measure below, in (0, 1e-3]
+  /// The measure that decides "solved" (core/friction_measure.hpp): relative_q by default, so
+  /// that the profile compares with published ones (FCLIB: Acary, Bremond, Huber, INRIA
+  /// RR-9118); unit_free or relative_max on request.
+  std::string measure = "relative_q";
   double time_limit_s = 60;          ///< per solve, seconds
 };
 
@@ -31,6 +36,7 @@ struct FcBench {
   std::vector<std::string> names;                ///< the solvers, in the order run
   std::vector<const SolverEntry*> entries;       ///< entries[k] runs names[k]
   CommonOptions options;
+  FrictionMeasure measure = FrictionMeasure::kRelativeQ;
 };
 
 /// Reads every file and checks every option and solver name: InputError (exit 2) in the user's
@@ -38,8 +44,9 @@ struct FcBench {
 FcBench prepare_fc_bench(const FcBenchRequest& request);
 
 /// The CSV header and one row per file and solver (file, problem, contacts, solver, status,
-/// iterations, seconds of wall clock, and the three errors of friction_verdict.hpp; NaN where a
-/// solver returned no r), each row flushed when written. `progress`, if given, gets one line per
+/// iterations, seconds of wall clock, the three errors of friction_verdict.hpp, NaN where a
+/// solver returned no r, and the measure that decided the status: measure_solve.hpp, whose
+/// re-solves at lower unit-free tolerances are in the row's seconds and iterations), each row flushed when written. `progress`, if given, gets one line per
 /// solve. Throws InputError "error writing 'TABLE_NAME' (disk full or not writable?)" as soon as
 /// `csv` fails, not after the remaining solves.
 void write_fc_bench_table(const FcBench& bench, std::ostream& csv, const std::string& table_name,

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cpkit/core/exit_code.hpp"
+#include "cpkit/core/friction_measure.hpp"
 #include "cpkit/core/friction_problem.hpp"
 #include "cpkit/core/options.hpp"
 #include "cpkit/lcp/friction/global.hpp"
@@ -24,11 +25,14 @@ std::string fc_solver_list();
 struct FcRequest {
   std::string file;
   std::string solver = "auto";       ///< solve: a registered friction solver
-  double tol = CommonOptions{}.tol;  ///< on the unit-free residual, in (0, 1e-3]
+  double tol = CommonOptions{}.tol;  ///< in the measure below, in (0, 1e-3]
   int max_iter = 0;                  ///< solve: 0 is the solver's default
   double time_limit_s = std::numeric_limits<double>::infinity();
   int starts = FrictionSolutionsOptions{}.starts;  ///< solutions: seeded multistart starts
   unsigned seed = FrictionSolutionsOptions{}.seed;
+  /// The measure that decides "solved" (core/friction_measure.hpp): unit_free, relative_q or
+  /// relative_max; any other word is an InputError listing them.
+  std::string measure = "unit_free";
 };
 
 /// `cpkit fc solve`: a local problem, or a global one (M v = H r + f) solved through its
@@ -41,6 +45,7 @@ struct FcSolveOutcome {
   GlobalSolveResult global;        ///< is_global: v, the global errors, the condensation
   bool proximal = false;           ///< is_global and M singular: the proximal route
   SolveResult result;
+  FrictionMeasure measure = FrictionMeasure::kUnitFree;  ///< what decided result.status
   ExitCode exit_code = kExitOk;
 };
 
@@ -48,11 +53,13 @@ FcSolveOutcome run_fc_solve_request(const FcRequest& request);
 nlohmann::json fc_solve_json(const FcSolveOutcome& outcome);
 std::string fc_solve_text(const FcSolveOutcome& outcome);
 
-/// `cpkit fc solutions`: exit 0 some verified solution, 5 none (nothing proved).
+/// `cpkit fc solutions`: exit 0 some verified solution (a solution in the measure), 5 none
+/// (nothing proved).
 struct FcSolutionsOutcome {
   std::string file;
   FrictionContactProblem problem;
-  FrictionSolutionSet set;
+  FrictionSolutionSet set;  ///< each solution refined and judged in `measure`
+  FrictionMeasure measure = FrictionMeasure::kUnitFree;
   ExitCode exit_code = kExitOk;
 };
 
