@@ -3,8 +3,9 @@
 
 Usage: /usr/bin/python3 cpkit_plot_fc_profile.py --csv PREFIX.csv --out PREFIX.png
                                                  [--tol T] [--time-limit S]
-A (file, solver) counts as solved only when its status is `solved`: cpkit's unit-free verdict
-within the bench's --tol. `solved_inaccurate` (within the looser acceptable tolerance only) is
+A (file, solver) counts as solved only when its status is `solved`: within the bench's --tol in
+the measure named by the CSV's `measure` column (`relative_q`, |F_nat|/|q|, by default; the
+unit-free verdict must accept the answer in every measure). `solved_inaccurate` (within the looser acceptable tolerance only) is
 not counted, as every other status; the title says how many such rows there were. Its time is
 `seconds` (floored at 1e-7 s). For each file the ratio is the solver's time over the fastest
 solver's; files no solver solved are left out (and counted in the title). --tol and
@@ -87,7 +88,14 @@ def main() -> int:
     setting = ", ".join(x for x in (f"tol {a.tol}" if a.tol else "",
                                     f"time limit {a.time_limit} s per solve"
                                     if a.time_limit else "") if x)
-    solved_means = ("solved = status 'solved' (unit-free verdict <= tol)"
+    try:
+        with open(a.csv, newline="") as f:
+            measures = sorted({row.get("measure") or "" for row in csv.DictReader(f)} - {""})
+    except OSError:
+        measures = []
+    decided_by = (f"{' / '.join(measures)} <= tol, accepted by the unit-free verdict" if measures
+                  else "unit-free verdict <= tol")
+    solved_means = (f"solved = status 'solved' ({decided_by})"
                     + (f"; not counted: {', '.join(f'{n} {s}' for s, n in sorted(other.items()))}"
                        if other else ""))
     ax.set_title(f"Dolan-More performance profile, {counted} problems"
