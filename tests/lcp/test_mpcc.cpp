@@ -8,8 +8,10 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/mpcc.hpp"
+#include "test_budget.hpp"
 
 using cpkit::Mat;
+using cpkit::test::family_size;
 using cpkit::Vec;
 using namespace cpkit::lcp;
 
@@ -301,7 +303,7 @@ void check_case(const Case& c, const MpccResult& r) {
 
 TEST_CASE("MacMPEC problems reach the known minimum with Ipopt", "[mpcc][ipopt]") {
   const auto reform = GENERATE(MpccReformulation::kScholtes, MpccReformulation::kPenalty);
-  const auto idx = GENERATE(range(0, 10));
+  const auto idx = GENERATE(range(0, family_size(10, 4)));
   const Case c = all_cases()[static_cast<std::size_t>(idx)];
   CAPTURE(c.problem.name, to_string(reform));
   MpccOptions o;
@@ -310,7 +312,7 @@ TEST_CASE("MacMPEC problems reach the known minimum with Ipopt", "[mpcc][ipopt]"
 }
 
 TEST_CASE("MacMPEC problems with Ipopt's limited-memory Hessian", "[mpcc][ipopt]") {
-  const auto idx = GENERATE(range(0, 10));
+  const auto idx = GENERATE(range(0, family_size(10, 4)));
   const Case c = all_cases()[static_cast<std::size_t>(idx)];
   CAPTURE(c.problem.name);
   MpccOptions o;
@@ -320,7 +322,7 @@ TEST_CASE("MacMPEC problems with Ipopt's limited-memory Hessian", "[mpcc][ipopt]
 
 TEST_CASE("MacMPEC problems with NLopt SLSQP", "[mpcc][nlopt]") {
   const auto reform = GENERATE(MpccReformulation::kScholtes, MpccReformulation::kPenalty);
-  const auto idx = GENERATE(range(0, 10));
+  const auto idx = GENERATE(range(0, family_size(10, 4)));
   const Case c = all_cases()[static_cast<std::size_t>(idx)];
   CAPTURE(c.problem.name, to_string(reform));
   MpccOptions o;

@@ -258,7 +258,7 @@ TEST_CASE("3-D state b: the slip directions equal a brute-force scan of the rate
   CHECK(counts[1] > n / 3);
   INFO("counts 0..5+: " << counts[0] << " " << counts[1] << " " << counts[2] << " " << counts[3]
                          << " " << counts[4] << " " << counts[5]);
-  CHECK(counts[2] + counts[3] + counts[4] > 20);  // non-uniqueness occurs in the family
+  CHECK(counts[2] + counts[3] + counts[4] > n / 75);  // non-uniqueness occurs in the family
 }
 
 TEST_CASE("3-D: rotating the tangential plane of an isotropic problem rotates its solutions",

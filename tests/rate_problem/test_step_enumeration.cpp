@@ -342,7 +342,7 @@ TEST_CASE("WearStepSolutionsAgreeWithADenseScanOfTheReducedEquations", "[step]")
   std::mt19937 gen(5);
   std::uniform_real_distribution<double> u(-1, 1);
   int with3 = 0;
-  for (int it = 0; it < family_size(150, 40); ++it) {
+  for (int it = 0; it < family_size(150, 80); ++it) {
     StepProblem p = base(1.2 + u(gen), 0.0, 1.2 + u(gen), 1.5 + u(gen),
                          it % 2 ? 0.0 : 0.5 + 0.4 * u(gen));
     p.params.a12 = 0.9 * u(gen) * std::sqrt(p.params.a11 * p.params.a22);

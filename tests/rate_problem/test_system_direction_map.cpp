@@ -83,7 +83,7 @@ TEST_CASE("system direction map: N = 1 equals the one-point direction map", "[ra
 TEST_CASE("system direction map: dense sampling agrees with the sectors", "[rate][maps][system]") {
   std::mt19937 rng(21);
   std::normal_distribution<double> G(0, 1);
-  const int n = family_size(60, 16);
+  const int n = family_size(60, 32);
   int maps = 0, counts_seen_nonunique = 0;
   for (int trial = 0; trial < n; ++trial) {
     const int N = 2 + trial % 2;
