@@ -3,7 +3,8 @@
 // spheres in a box and brick-bond walls of boxes (packing.hpp), the same problem for both.
 //
 // Every solve runs in a child process of its own (fork), so that its peak memory is its own:
-// the child resets the peak (clear_refs), solves, and reports VmHWM - VmRSS at its start. Then
+// the child returns free heap pages (malloc_trim), resets the peak (clear_refs), solves, and
+// reports VmHWM - VmRSS at its start: the memory the solve added to the problem's. Then
 // the child re-judges the answer twice, independently of the solver that found it:
 //   |F|/|q| cpkit    cpkit's verdict library (friction_errors' relative_q, u = W r + q recomputed)
 //   |F|/|q| siconos  Siconos' fc3d_compute_error over its own copy of the problem, / ||q||_2
@@ -14,13 +15,19 @@
 // Printed per size and solver: contacts, W's nonzeros, status, sweeps (iterations for auto),
 // total seconds, ms per sweep, ns per sweep and contact, peak memory, both residuals; then per
 // solver the exponent p of time per sweep ~ contacts^p (least squares over the sizes run).
+// --solvers verdict times one check of r = 0 by cpkit's verdict (friction_errors) instead.
+// --sweeps N times exactly N sweeps of nsgs and NSGS instead (tolerance 1e-30: the cost of a
+// sweep as each solver runs it, its convergence tests included, whatever the convergence).
 // Usage: bench_fc_packings [--kind spheres|boxes|all] [--sizes 1000,3000,...] [--tol 1e-8]
 //          [--time-limit 300] [--max-sweeps 20000] [--seed 2026] [--solvers nsgs,auto,NSGS]
+//          [--sweeps N]
+#include <malloc.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -81,6 +88,10 @@ Outcome in_child(const std::function<Answer()>& solve,
   if (pid < 0) return out;
   if (pid == 0) {
     close(fd[0]);
+    // Free heap pages the parent kept go back to the system, so that the solve's allocations
+    // count in VmHWM even where malloc reuses them (without it, a solve reusing the generator's
+    // freed memory measured 1.4 MB at every size).
+    malloc_trim(0);
     cpkit::bench::reset_peak_memory();
     const long base = cpkit::bench::resident_kb();
     const Answer a = solve();
@@ -165,7 +176,7 @@ double exponent(const std::vector<std::pair<double, double>>& xy) {
 
 int main(int argc, char** argv) {
   double tol = 1e-8, time_limit = 300;
-  int max_sweeps = 20000;
+  int max_sweeps = 20000, fixed_sweeps = 0;
   unsigned seed = 2026;
   std::vector<std::string> kinds = {"spheres", "boxes"};
   std::vector<std::string> sizes = {"1000", "3000", "10000", "30000", "100000"};
@@ -176,6 +187,7 @@ int main(int argc, char** argv) {
     if (a == "--tol" && has) tol = std::atof(argv[++i]);
     else if (a == "--time-limit" && has) time_limit = std::atof(argv[++i]);
     else if (a == "--max-sweeps" && has) max_sweeps = std::atoi(argv[++i]);
+    else if (a == "--sweeps" && has) fixed_sweeps = std::atoi(argv[++i]);
     else if (a == "--seed" && has) seed = static_cast<unsigned>(std::atol(argv[++i]));
     else if (a == "--kind" && has) {
       const std::string k = argv[++i];
@@ -195,8 +207,15 @@ int main(int argc, char** argv) {
 #ifndef CPKIT_HAVE_SICONOS
   std::printf("# Siconos numerics not found at build time: its NSGS is not run\n");
 #endif
-  std::printf("# tol %g in |F_nat|/|q|, time limit %g s a solve, at most %d sweeps, seed %u\n", tol,
-              time_limit, max_sweeps, seed);
+  if (fixed_sweeps > 0) {
+    std::printf("# %d sweeps of each solver (tolerance 1e-30), seed %u\n", fixed_sweeps, seed);
+    tol = 1e-30;
+    max_sweeps = fixed_sweeps;
+    solvers.erase(std::remove(solvers.begin(), solvers.end(), "auto"), solvers.end());
+  } else {
+    std::printf("# tol %g in |F_nat|/|q|, time limit %g s a solve, at most %d sweeps, seed %u\n",
+                tol, time_limit, max_sweeps, seed);
+  }
   std::printf("%-8s %7s %9s %7s | %-5s %-6s %6s %9s %9s %9s %8s | %9s %9s\n", "kind", "nc",
               "nnz(W)", "W MB", "solver", "status", "sweeps", "total s", "ms/sweep", "ns/sw/nc",
               "peak MB", "|F|/|q|c", "|F|/|q|s");
@@ -247,6 +266,18 @@ int main(int argc, char** argv) {
 #else
           continue;
 #endif
+        } else if (solver == "verdict") {
+          // Not a solver: one full check of r = 0 by cpkit's verdict (friction_errors), the
+          // cost nsgs pays at each convergence test and in finalize().
+          solve = [&]() {
+            Answer a;
+            const double t = now();
+            const cpkit::FrictionErrors e = cpkit::friction_errors(p, Eigen::VectorXd::Zero(p.q.size()));
+            a.seconds = now() - t;
+            a.sweeps = 1;
+            a.message = "unit-free " + std::to_string(e.unit_free);
+            return a;
+          };
         } else {
           const cpkit::SolverEntry* e = cpkit::lcp::solvers().find(solver);
           if (!e || !e->solve_fc) {
@@ -259,8 +290,10 @@ int main(int argc, char** argv) {
             o.time_limit_s = time_limit;
             o.max_iterations = max_sweeps;
             const double t = now();
-            const cpkit::SolveResult r = cpkit::lcp::friction::solve_in_measure(
-                p, *e, o, cpkit::FrictionMeasure::kRelativeQ);
+            const cpkit::SolveResult r =
+                fixed_sweeps > 0 ? e->solve_fc(p, o)
+                                 : cpkit::lcp::friction::solve_in_measure(
+                                       p, *e, o, cpkit::FrictionMeasure::kRelativeQ);
             Answer a;
             a.seconds = now() - t;
             a.sweeps = r.iterations;
@@ -275,7 +308,7 @@ int main(int argc, char** argv) {
         const double ms_sweep = o.sweeps > 0 ? 1e3 * o.seconds / o.sweeps : NAN;
         std::printf("%-8s %7ld %9ld %7.1f | %-5s %-6s %6d %9.3f %9.3f %9.1f %8.1f | %9.1e %9.1e  %s\n",
                     kind.c_str(), nc, static_cast<long>(p.W.nonZeros()), w_mb, solver.c_str(),
-                    !o.finished ? "killed" : ok ? "ok" : "FAIL", o.sweeps, o.seconds, ms_sweep,
+                    !o.finished ? "killed" : fixed_sweeps > 0 ? "fixed" : ok ? "ok" : "FAIL", o.sweeps, o.seconds, ms_sweep,
                     1e6 * ms_sweep / static_cast<double>(nc), o.peak_kb / 1024.0, o.rel_q_cpkit,
                     o.rel_q_siconos, o.message);
         std::fflush(stdout);

@@ -14,8 +14,11 @@
 ///   i.e. u = J v with J of 3 rows per contact and 6 columns per body (contact_jacobian);
 /// - the impulse r_c (frame components, N s) acts +r on B and -r on A, so u = W r + q with
 ///     W = J M^-1 J^T (sparse: contact c couples only with the contacts sharing a body with it),
-///     q = J v_free + (g_c / h, 0, 0),  v_free = v + h M^-1 f_gravity,
-///   g_c the gap at the start of the step (m; < 0 is an overlap) and h the step (s).
+///     q = J v_free + (max(g_c, 0) / h, 0, 0),  v_free = v + h M^-1 f_gravity,
+///   g_c the gap at the start of the step (m; < 0 is an overlap) and h the step (s). An open
+///   contact may close within the step; an overlap is not pushed apart (g_c < 0 counts as 0):
+///   pushing overlaps apart at -g_c / h can ask a row of spheres between two fixed walls to grow,
+///   a problem with no solution.
 /// The packing's W is symmetric positive semidefinite by construction (W = G G^T, G = J M^-1/2)
 /// and generally singular (more contact rows than body velocities), as real packings are.
 #include <Eigen/Core>

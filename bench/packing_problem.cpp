@@ -1,4 +1,5 @@
 // The local frictional contact problem of a packing's time step (packing.hpp).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -81,7 +82,7 @@ FrictionContactProblem packing_problem(const Packing& p) {
   out.mu.resize(nc);
   for (Eigen::Index c = 0; c < nc; ++c) {
     const Contact& k = p.contacts[static_cast<size_t>(c)];
-    out.q[3 * c] += k.gap / p.step;
+    out.q[3 * c] += std::max(k.gap, 0.0) / p.step;  // overlaps: 0 (packing.hpp)
     out.mu[c] = k.mu;
   }
   out.name = p.name;

@@ -17,6 +17,7 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <cfloat>
 #include <cstdlib>
 #include <vector>
 
@@ -96,15 +97,19 @@ class SiconosFriction {
            (q_.size() / 3 + 1) * sizeof(size_t);
   }
 
-  /// Siconos' own residual of (r, u = W r + q): its fc3d_compute_error with norm ||q||_2, the
-  /// natural map over the cones divided by ||q||_2 (|F_nat| / |q|).
+  /// |F_nat| / |q| of r by Siconos' own code: fc3d_compute_error forms u = W r + q and the
+  /// natural map's norm E over the cones, and returns E / max(||q||, ||r||, ||u||) (Siconos'
+  /// relative measure, cpkit's relative_max); that scale is undone here, giving E / ||q||.
   double error(Eigen::VectorXd r) {
-    Eigen::VectorXd u(r.size());
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(r.size());
     SolverOptions* so = solver_options_create(SICONOS_FRICTION_3D_NSGS);
     double e = 0;
-    fc3d_compute_error(problem_, r.data(), u.data(), 0.0, so, q_.norm(), &e);
+    const double nq = q_.norm();
+    fc3d_compute_error(problem_, r.data(), u.data(), 0.0, so, nq, &e);
     solver_options_delete(so);
-    return e;
+    const double scale = std::max({nq, r.norm(), u.norm()});
+    if (scale > DBL_EPSILON) e *= scale;
+    return nq > DBL_EPSILON ? e / nq : e;
   }
 
  private:
