@@ -9,7 +9,7 @@
 //   |F|/|q| cpkit    cpkit's verdict library (friction_errors' relative_q, u = W r + q recomputed)
 //   |F|/|q| siconos  Siconos' fc3d_compute_error over its own copy of the problem, / ||q||_2
 // cpkit solves in the field's measure (solve_in_measure, relative_q, as `fc solve --measure
-// relative_q`); Siconos' NSGS with dparam[TOL] = --tol (its defaults otherwise; it stops on its
+// relative_q`; --measure chooses another); Siconos' NSGS with dparam[TOL] = --tol (its defaults otherwise; it stops on its
 // own error, relative to ||q||). A run is ok when it says solved and both re-judged numbers are
 // <= --tol. A child that passes --time-limit is killed (Siconos' NSGS has no time limit).
 // Printed per size and solver: contacts, W's nonzeros, status, sweeps (iterations for auto),
@@ -20,7 +20,7 @@
 // sweep as each solver runs it, its convergence tests included, whatever the convergence).
 // Usage: bench_fc_packings [--kind spheres|boxes|all] [--sizes 1000,3000,...] [--tol 1e-8]
 //          [--time-limit 300] [--max-sweeps 20000] [--seed 2026] [--solvers nsgs,auto,NSGS]
-//          [--sweeps N]
+//          [--sweeps N] [--measure relative_q|unit_free|relative_max]
 #include <malloc.h>
 #include <poll.h>
 #include <signal.h>
@@ -177,6 +177,7 @@ double exponent(const std::vector<std::pair<double, double>>& xy) {
 int main(int argc, char** argv) {
   double tol = 1e-8, time_limit = 300;
   int max_sweeps = 20000, fixed_sweeps = 0;
+  cpkit::FrictionMeasure measure = cpkit::FrictionMeasure::kRelativeQ;
   unsigned seed = 2026;
   std::vector<std::string> kinds = {"spheres", "boxes"};
   std::vector<std::string> sizes = {"1000", "3000", "10000", "30000", "100000"};
@@ -187,7 +188,15 @@ int main(int argc, char** argv) {
     if (a == "--tol" && has) tol = std::atof(argv[++i]);
     else if (a == "--time-limit" && has) time_limit = std::atof(argv[++i]);
     else if (a == "--max-sweeps" && has) max_sweeps = std::atoi(argv[++i]);
-    else if (a == "--sweeps" && has) fixed_sweeps = std::atoi(argv[++i]);
+    else if (a == "--measure" && has) {
+      const auto m = cpkit::friction_measure_from_string(argv[++i]);
+      if (!m) {
+        std::fprintf(stderr, "cpkit: bad input: --measure must be one of %s\n",
+                     cpkit::friction_measure_names().c_str());
+        return 2;
+      }
+      measure = *m;
+    } else if (a == "--sweeps" && has) fixed_sweeps = std::atoi(argv[++i]);
     else if (a == "--seed" && has) seed = static_cast<unsigned>(std::atol(argv[++i]));
     else if (a == "--kind" && has) {
       const std::string k = argv[++i];
@@ -292,8 +301,7 @@ int main(int argc, char** argv) {
             const double t = now();
             const cpkit::SolveResult r =
                 fixed_sweeps > 0 ? e->solve_fc(p, o)
-                                 : cpkit::lcp::friction::solve_in_measure(
-                                       p, *e, o, cpkit::FrictionMeasure::kRelativeQ);
+                                 : cpkit::lcp::friction::solve_in_measure(p, *e, o, measure);
             Answer a;
             a.seconds = now() - t;
             a.sweeps = r.iterations;
