@@ -8,7 +8,10 @@
 //   dw = I^-1 (arm x P)) and rigid-body kinematics, without J; q likewise from v_free and
 //   max(gap, 0) / h;
 // - W symmetric and positive semidefinite: eigenvalues of the dense W (Eigen's self-adjoint
-//   solver) >= -1e-12 lambda_max; frames orthonormal and right-handed.
+//   solver) >= -1e-12 lambda_max; frames orthonormal and right-handed;
+// - real problems: cpkit's nsgs (in relative_q) and, when built with it, Siconos' NSGS solve each
+//   small packing to |F_nat|/|q| <= 1e-8 as cpkit's verdict and Siconos' fc3d_compute_error
+//   both judge it.
 // Usage: bench_packing_check
 #include <Eigen/Dense>
 #include <algorithm>
@@ -18,7 +21,11 @@
 #include <set>
 #include <tuple>
 
+#include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
+#include "cpkit/lcp/solvers.hpp"
 #include "packing.hpp"
+#include "siconos_friction.hpp"
 
 namespace {
 
@@ -100,6 +107,35 @@ void check_against_impulses(const Packing& p, const cpkit::FrictionContactProble
               worst / scale, q_err);
 }
 
+// Both solvers solve the packing's problem to 1e-8 in |F_nat|/|q|, by both checks.
+void check_solvable(const cpkit::FrictionContactProblem& fc) {
+  constexpr double tol = 1e-8;
+  cpkit::CommonOptions o;
+  o.tol = tol;
+  o.max_iterations = 100000;
+  const cpkit::SolveResult r = cpkit::lcp::friction::solve_in_measure(
+      fc, *cpkit::lcp::solvers().find("nsgs"), o, cpkit::FrictionMeasure::kRelativeQ);
+  const double ours = cpkit::friction_errors(fc, r.z).relative_q;
+  expect(r.status == cpkit::Status::kSolved && ours <= tol, "cpkit nsgs solves it", ours);
+  std::printf("  cpkit nsgs: %d sweeps, |F|/|q| %.1e (cpkit's check)", r.iterations, ours);
+#ifdef CPKIT_HAVE_SICONOS
+  cpkit::bench::SiconosFriction sp(fc);
+  expect(sp.error(r.z) <= tol, "Siconos' check accepts cpkit's answer", sp.error(r.z));
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(fc.q.size()), u = z;
+  SolverOptions* so = solver_options_create(SICONOS_FRICTION_3D_NSGS);
+  so->dparam[SICONOS_DPARAM_TOL] = tol / 10;  // its own stop is relative to max(|q|, |r|, |u|)
+  so->iparam[SICONOS_IPARAM_MAX_ITER] = 100000;
+  const int info = fc3d_driver(sp.get(), z.data(), u.data(), so);
+  const int sweeps = so->iparam[SICONOS_IPARAM_ITER_DONE];
+  solver_options_delete(so);
+  const double theirs = sp.error(z), theirs_by_cpkit = cpkit::friction_errors(fc, z).relative_q;
+  expect(info == 0 && theirs <= tol && theirs_by_cpkit <= tol, "Siconos NSGS solves it", theirs);
+  std::printf("; Siconos NSGS: %d sweeps, |F|/|q| %.1e (Siconos' check), %.1e (cpkit's)", sweeps,
+              theirs, theirs_by_cpkit);
+#endif
+  std::printf("\n");
+}
+
 // The sphere packing's contacts against a brute-force search over all pairs and walls.
 void check_sphere_contacts(const cpkit::bench::SpherePackingOptions& o, const Packing& p) {
   // Radii from the masses (m = density 4/3 pi r^3).
@@ -148,6 +184,7 @@ int main() {
     const Packing p = cpkit::bench::sphere_packing(o);
     check_sphere_contacts(o, p);
     check_against_impulses(p, cpkit::bench::packing_problem(p));
+    check_solvable(cpkit::bench::packing_problem(p));
   }
   cpkit::bench::BoxStackOptions o;
   o.rows = 2, o.columns = 3, o.layers = 3;
@@ -156,6 +193,7 @@ int main() {
   expect(boxes.contacts.size() == hand, "brick wall: 4 c + (L - 1) 8 (c - 1) contacts a row",
          static_cast<double>(boxes.contacts.size()));
   check_against_impulses(boxes, cpkit::bench::packing_problem(boxes));
+  check_solvable(cpkit::bench::packing_problem(boxes));
   std::printf(failures ? "%d check(s) FAILED\n" : "all checks passed\n", failures);
   return failures ? 1 : 0;
 }
