@@ -25,6 +25,13 @@ std::optional<FrictionErrors> errors_of(const FrictionContactProblem& p, const S
   return friction_errors(p, r.z);
 }
 
+/// The same with the problem's units computed once by the caller.
+std::optional<FrictionErrors> errors_of(const FrictionContactProblem& p,
+                                        const FrictionUnits& units, const SolveResult& r) {
+  if (r.z.size() == 0 || r.z.size() != p.q.size() || !r.z.allFinite()) return std::nullopt;
+  return friction_errors(p, units, r.z);
+}
+
 /// Accepted by the verdict: a solution (finalize(), or a global problem's verdict) whose
 /// unit-free number is within tol_acceptable.
 bool trusted(const SolveResult& r, const std::optional<FrictionErrors>& e, const CommonOptions& o) {
@@ -51,7 +58,8 @@ SolveResult tighten(const FrictionContactProblem& p, SolveResult first, double f
                     Resolve resolve) {
   if (m == FrictionMeasure::kUnitFree) return first;
   SolveResult best = std::move(first);
-  std::optional<FrictionErrors> best_e = errors_of(p, best);  // one verdict per answer
+  const FrictionUnits units = friction_units(p);                     // once per problem
+  std::optional<FrictionErrors> best_e = errors_of(p, units, best);  // one verdict per answer
   int iterations = best.iterations;
   double seconds = best.seconds;
   double t = first_tol;
@@ -73,7 +81,7 @@ SolveResult tighten(const FrictionContactProblem& p, SolveResult first, double f
     ++solves;
     iterations += r.iterations;
     seconds += r.seconds;
-    std::optional<FrictionErrors> r_e = errors_of(p, r);
+    std::optional<FrictionErrors> r_e = errors_of(p, units, r);
     if (better_in_measure(r, r_e, best, best_e, o, m)) {
       best = std::move(r);
       best_e = r_e;
