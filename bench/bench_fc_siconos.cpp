@@ -5,7 +5,8 @@
 // Siconos reads it with its own reader (frictionContact_new_from_filename: .dat files keep the
 // storage Siconos wrote, sparse blocks; FCLIB .hdf5 when Siconos was built with fclib). Then, each
 // the best of --repeat runs (inner time only: the solve, not the reading):
-//   cpkit  nsgs, prox, fb-soc, auto   (solve through the registry at --tol, unit-free measure)
+//   cpkit  nsgs, prox, fb-soc, auto   (solve through the registry at --tol, judged in --measure:
+//                                      solve_in_measure, as `cpkit fc solve --measure`)
 //   Siconos NSGS, PROX, NSN_AC         (fc3d_driver with dparam[TOL] = --tol)
 // Every answer of both is re-judged the same way, from the data as cpkit read it:
 // |F_nat|/|q| = || r - P_K(r - u_hat) ||_2 / ||q||_2 with u = W r + q recomputed (friction_errors'
@@ -13,7 +14,8 @@
 // is <= --tol (and, for cpkit, also reports the unit-free number).
 // Printed per file: contacts, best cpkit solver and time, best Siconos solver and time, their
 // ratio, iterations and |F_nat|/|q| of both; then the median ratio.
-// Usage: bench_fc_siconos [--tol 1e-8] [--repeat 3] [--time-limit 30] [FILE...]
+// Usage: bench_fc_siconos [--tol 1e-8] [--measure relative_q] [--repeat 3] [--time-limit 30]
+//                         [FILE...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,7 +27,9 @@
 #include <vector>
 
 #include "cpkit/core/friction_io.hpp"
+#include "cpkit/core/friction_measure.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 #ifdef CPKIT_HAVE_SICONOS
@@ -54,7 +58,7 @@ double now() {
 }
 
 Run run_cpkit(const cpkit::FrictionContactProblem& p, const std::string& name, double tol,
-              double time_limit, int repeat) {
+              cpkit::FrictionMeasure measure, double time_limit, int repeat) {
   Run best;
   best.solver = name;
   const cpkit::SolverEntry* e = cpkit::lcp::solvers().find(name);
@@ -64,7 +68,7 @@ Run run_cpkit(const cpkit::FrictionContactProblem& p, const std::string& name, d
     o.tol = tol;
     o.time_limit_s = time_limit;
     const double t0 = now();
-    const cpkit::SolveResult r = e->solve_fc(p, o);
+    const cpkit::SolveResult r = cpkit::lcp::friction::solve_in_measure(p, *e, o, measure);
     const double t = now() - t0;
     const double rq = r.z.size() ? cpkit::friction_errors(p, r.z).relative_q : INFINITY;
     if (t < best.seconds) {
@@ -120,10 +124,13 @@ const Run* fastest(const std::vector<Run>& runs) {
 int main(int argc, char** argv) {
   double tol = 1e-8, time_limit = 30;
   int repeat = 3;
+  cpkit::FrictionMeasure measure = cpkit::FrictionMeasure::kRelativeQ;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tol" && i + 1 < argc) tol = std::atof(argv[++i]);
+    else if (a == "--measure" && i + 1 < argc)
+      measure = cpkit::parse_friction_measure(argv[++i], "--measure");
     else if (a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
     else if (a == "--time-limit" && i + 1 < argc) time_limit = std::atof(argv[++i]);
     else files.push_back(a);
@@ -133,7 +140,8 @@ int main(int argc, char** argv) {
       files.push_back(f.path().string());
     std::sort(files.begin(), files.end());
   }
-  std::printf("# tol %g, best of %d, inner times in ms; ok = |F_nat|/|q| <= tol\n", tol, repeat);
+  std::printf("# tol %g, cpkit measure %s, best of %d, inner times in ms; ok = |F_nat|/|q| <= tol\n",
+              tol, cpkit::to_string(measure), repeat);
   std::printf("%-36s %5s | %-7s %9s %6s %8s | %-7s %9s %6s %8s | %6s | %9s %9s %9s\n", "file", "nc",
               "cpkit", "ms", "iter", "|F|/|q|", "siconos", "ms", "iter", "|F|/|q|", "ratio",
               "nsgs ms", "auto ms", "NSGS ms");
@@ -148,8 +156,8 @@ int main(int argc, char** argv) {
     }
     std::vector<Run> ours;
     for (const char* s : {"nsgs", "prox", "fb-soc"})
-      ours.push_back(run_cpkit(p, s, tol, time_limit, repeat));
-    const Run autorun = run_cpkit(p, "auto", tol, time_limit, repeat);
+      ours.push_back(run_cpkit(p, s, tol, measure, time_limit, repeat));
+    const Run autorun = run_cpkit(p, "auto", tol, measure, time_limit, repeat);
     std::vector<Run> theirs;
 #ifdef CPKIT_HAVE_SICONOS
     // Siconos' reader for its .dat files (its sparse-block storage); the FCLIB .hdf5 files (which

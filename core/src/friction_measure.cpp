@@ -51,7 +51,14 @@ void decide_in_measure(const FrictionContactProblem& p, SolveResult& r, const Co
   // The trust check: what the verdict refutes or cannot verify is never a solution (finalize()
   // called it no solution; for a global problem the global verdict did).
   if (!is_solution(r.status)) return;
-  const FrictionErrors e = friction_errors(p, r.z);
+  decide_in_measure(p, r, o, m, friction_errors(p, r.z));
+}
+
+void decide_in_measure(const FrictionContactProblem& p, SolveResult& r, const CommonOptions& o,
+                       FrictionMeasure m, const FrictionErrors& e) {
+  if (m == FrictionMeasure::kUnitFree || r.z.size() == 0 || r.z.size() != p.q.size() ||
+      !r.z.allFinite() || !is_solution(r.status))
+    return;
   if (!(e.unit_free <= o.tol_acceptable)) return;
   const double v = measured(e, m);
   const std::string name = to_string(m);

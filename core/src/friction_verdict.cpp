@@ -5,6 +5,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_cone.hpp"
@@ -295,25 +296,58 @@ std::vector<ContactReport> friction_contacts(const FrictionContactProblem& p,
   return out;
 }
 
-FrictionErrors friction_errors(const FrictionContactProblem& p, const Eigen::VectorXd& r) {
-  check_sizes(p, r);
+namespace {
+
+FrictionErrors errors_checked(const FrictionContactProblem& p, const FrictionUnits& units,
+                              const Eigen::VectorXd& r) {
   const Eigen::VectorXd u = p.W * r + p.q;
   FrictionErrors e;
-  friction_residuals(p, friction_units(p), r, u, &e);
+  friction_residuals(p, units, r, u, &e);
   return e;
 }
 
-SolveResult finalize(const FrictionContactProblem& p, SolveResult claim,
-                     const CommonOptions& options) {
-  throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
+}  // namespace
+
+FrictionErrors friction_errors(const FrictionContactProblem& p, const Eigen::VectorXd& r) {
+  check_sizes(p, r);
+  return errors_checked(p, friction_units(p), r);
+}
+
+FrictionErrors friction_errors(const FrictionContactProblem& p, const FrictionUnits& units,
+                               const Eigen::VectorXd& r) {
+  check_sizes(p, r);
+  return errors_checked(p, units, r);
+}
+
+namespace {
+
+// finalize() once the problem is valid; units computed only when a point is judged.
+template <class Units>
+SolveResult finalize_valid(const FrictionContactProblem& p, Units units, SolveResult claim,
+                           const CommonOptions& options) {
   const bool claimed_solution = is_solution(claim.status);
   if (detail::refuse_infeasibility(claim, "a friction problem") ||
       !detail::usable_point(claim, p.q.size(), claimed_solution))
     return claim;
   claim.w = p.W * claim.z + p.q;
-  claim.residuals = friction_residuals(p, friction_units(p), claim.z, claim.w);
+  claim.residuals = friction_residuals(p, units(), claim.z, claim.w);
   detail::decide(claim, claimed_solution, options);
   return claim;
+}
+
+}  // namespace
+
+SolveResult finalize(const FrictionContactProblem& p, SolveResult claim,
+                     const CommonOptions& options) {
+  throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
+  return finalize_valid(p, [&] { return friction_units(p); }, std::move(claim), options);
+}
+
+SolveResult finalize(const FrictionContactProblem& p, const FrictionUnits& units,
+                     SolveResult claim, const CommonOptions& options) {
+  throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
+  return finalize_valid(p, [&]() -> const FrictionUnits& { return units; }, std::move(claim),
+                        options);
 }
 
 }  // namespace cpkit

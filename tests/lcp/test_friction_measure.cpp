@@ -89,6 +89,19 @@ TEST_CASE("relative_q and relative_max of a one-contact r are the hand values", 
   const FrictionErrors n = friction_errors(normal, Eigen::Vector3d(2, 0, 0));
   CHECK(n.relative_q == 1.0);
   CHECK(n.relative_max == 0.5);
+  // The same hand values with the units computed once by the caller (the solvers' path), and
+  // finalize() with them calls (2, 0, 0) what it is: not a solution.
+  const FrictionUnits units = friction_units(normal);
+  const FrictionErrors nu = friction_errors(normal, units, Eigen::Vector3d(2, 0, 0));
+  CHECK(nu.relative_q == 1.0);
+  CHECK(nu.relative_max == 0.5);
+  SolveResult claim;
+  claim.z = Eigen::Vector3d(2, 0, 0);
+  claim.status = Status::kSolved;
+  const SolveResult judged = finalize(normal, units, claim, CommonOptions{});
+  CHECK(judged.status == Status::kNumericalFailure);
+  CHECK(judged.w.isApprox(Eigen::Vector3d(1, 0, 0)));
+  CHECK_THROWS_AS(friction_errors(normal, units, Eigen::VectorXd::Zero(6)), InputError);
 }
 
 TEST_CASE("q = 0 divides by nothing: relative_q is the absolute |F_nat|", "[friction][measure]") {

@@ -178,7 +178,7 @@ SolveResult solve_nsgs(const FrictionContactProblem& p, const NsgsOptions& o) {
   if (stop != Status::kSolved)
     res.message = "nsgs: " + std::string(stop == Status::kTimeLimit ? "time limit" : "sweep limit") +
                   " reached after " + std::to_string(sweep) + " sweeps";
-  res = finalize(p, std::move(res), o.common);
+  res = finalize(p, units, std::move(res), o.common);
   res.seconds = clock.seconds();
   return res;
 }

@@ -164,7 +164,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
                 std::to_string(inner_failures) + " inner solves not converged, last alpha " +
                 helpers::short_number(alpha / w_scale) + " w_scale";
   out.seconds = clock.seconds();
-  SolveResult res = finalize(p, std::move(out), o.common);
+  SolveResult res = finalize(p, units, std::move(out), o.common);
   res.seconds = clock.seconds();
   return res;
 }

@@ -52,5 +52,10 @@ double measured(const FrictionErrors& errors, FrictionMeasure m) noexcept;
 /// size: result is unchanged.
 void decide_in_measure(const FrictionContactProblem& problem, SolveResult& result,
                        const CommonOptions& options, FrictionMeasure m);
+/// The same with `errors` = friction_errors(problem, result.z) already computed by the caller
+/// (one verdict instead of two on the hot path of a small solve).
+void decide_in_measure(const FrictionContactProblem& problem, SolveResult& result,
+                       const CommonOptions& options, FrictionMeasure m,
+                       const FrictionErrors& errors);
 
 }  // namespace cpkit

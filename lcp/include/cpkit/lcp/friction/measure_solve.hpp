@@ -48,8 +48,10 @@ bool better_in_measure(const FrictionContactProblem& problem, const SolveResult&
                        const SolveResult& a, const CommonOptions& options, FrictionMeasure m);
 
 /// `entry.solve_fc` judged in measure m (header comment). m = kUnitFree: one solve, as
-/// entry.solve_fc(problem, options). iterations and seconds add up over the solves; the message
-/// says how far the unit-free tolerance was lowered.
+/// entry.solve_fc(problem, options). Each re-solve starts from the best answer so far when the
+/// solver that found it takes a warm start (nsgs, prox, fb-soc; for auto, the one in its chain
+/// that found it), else from the start. iterations and seconds add up over the solves; the
+/// message says how far the unit-free tolerance was lowered.
 SolveResult solve_in_measure(const FrictionContactProblem& problem, const SolverEntry& entry,
                              const CommonOptions& options, FrictionMeasure m);
 
