@@ -29,23 +29,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 using Vec = Eigen::VectorXd;
 using Mat = Eigen::MatrixXd;
 
-/// The system's scales: forces F0, stiffness K0, lengths L0 = F0 / K0.
-struct Scales {
-  double F0 = 1, K0 = 1;
-  double L0() const noexcept { return F0 / K0; }
-};
-
-Scales scales_of(const SystemStep3dProblem& p) noexcept {
-  Scales s;
-  s.K0 = p.system.A.size() > 0 ? p.system.A.cwiseAbs().maxCoeff() : 1.0;
-  if (!(s.K0 > 0) || !std::isfinite(s.K0)) s.K0 = 1;
-  double f = p.DF.size() > 0 ? p.DF.cwiseAbs().maxCoeff() : 0.0;
-  for (const Step3dState& st : p.states) {
-    const double g = std::abs(st.g0) * s.K0;
-    f = std::max({f, st.P_T0.cwiseAbs().maxCoeff(), std::abs(st.P_N0), std::isfinite(g) ? g : 0.0});
-  }
-  s.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
-  return s;
+/// The system's units (step_3d_units): forces F0, stiffness K0, lengths L0 = F0 / K0.
+detail::Units scales_of(const SystemStep3dProblem& p) noexcept {
+  return detail::step_3d_units(p.system.A, p.DF, p.states.data(), p.states.size());
 }
 
 bool sizes_ok(const SystemStep3dProblem& p) noexcept {
@@ -54,24 +40,9 @@ bool sizes_ok(const SystemStep3dProblem& p) noexcept {
          static_cast<int>(p.states.size()) == N && p.DF.size() == 3 * N;
 }
 
-/// Point i alone in normalized units (no A: the local terms do not use it).
-Step3dProblem normalized_point(const SystemStep3dProblem& p, int i, const Scales& s) {
-  Step3dProblem q = p.point_problem(i);
-  q.params.A /= s.K0;
-  q.params.C_T *= s.K0;
-  q.params.k_a *= s.F0;
-  q.wear.k_M *= s.F0;
-  detail::normalize_ellipse(q.params);  // lambda / ellipse_unit (normalized_values)
-  q.state.P_T0 /= s.F0;
-  q.state.P_N0 /= s.F0;
-  q.state.g0 /= s.L0();
-  q.DF /= s.F0;
-  return q;
-}
-
 /// `ellipse`: detail::ellipse_unit of the point's alpha (the multiplier's unit).
-Step3dValues normalized_values(Step3dValues v, const Scales& s, double ellipse) noexcept {
-  const double f = 1 / s.F0, d = 1 / s.L0();
+Step3dValues normalized_values(Step3dValues v, const detail::Units& s, double ellipse) noexcept {
+  const double f = 1 / s.force, d = 1 / s.length;
   v.DP_T *= f;
   v.P_T1 *= f;
   v.DP_N *= f;
@@ -104,10 +75,10 @@ Normalized normalize(const SystemStep3dProblem& pr) {
   Normalized n;
   const int N = pr.n_points();
   n.N = N;
-  const Scales s = scales_of(pr);
-  n.K0 = s.K0;
-  n.F0 = s.F0;
-  n.L0 = s.L0();
+  const detail::Units s = scales_of(pr);
+  n.K0 = s.stiffness;
+  n.F0 = s.force;
+  n.L0 = s.length;
   detail::require_representable(n.F0, n.L0, "step");
   if (!std::isfinite(n.L0) || n.L0 == 0)
     throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
@@ -338,18 +309,19 @@ bool residual_terms(const SystemStep3dProblem& p, const std::vector<Step3dValues
                     std::vector<double>& local, double& equilibrium) {
   const int N = p.n_points();
   if (!sizes_ok(p) || static_cast<int>(values.size()) != N) return false;
-  const Scales s = scales_of(p);
+  const detail::Units s = scales_of(p);
   Vec DP(3 * N), Dw(3 * N);
   local.assign(static_cast<std::size_t>(N), 0.0);
   for (int i = 0; i < N; ++i) {
     const Step3dValues v = normalized_values(values[static_cast<std::size_t>(i)], s,
                                              detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
-    local[static_cast<std::size_t>(i)] = detail::local_step_3d_residual(normalized_point(p, i, s), v);
+    local[static_cast<std::size_t>(i)] =
+        detail::local_step_3d_residual(detail::normalized_step_3d(p.point_problem(i), s), v);
     DP.segment<3>(3 * i) << v.DP_T, v.DP_N;
     Dw.segment<3>(3 * i) << v.Dw_T, v.Dw_N;
   }
-  const Mat A = p.system.A / s.K0;
-  const Vec eq = p.DF / s.F0 - DP - A * Dw;
+  const Mat A = p.system.A / s.stiffness;
+  const Vec eq = p.DF / s.force - DP - A * Dw;
   equilibrium = eq.cwiseAbs().maxCoeff() /
                 (1 + DP.cwiseAbs().maxCoeff() + (A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff());
   if (!std::isfinite(equilibrium)) equilibrium = kInf;
@@ -378,7 +350,7 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
   double eq = kInf;
   if (!residual_terms(p, values, local, eq))
     throw InputError("step: make_system_step_3d_solution: sizes do not match the system");
-  const Scales s = scales_of(p);
+  const detail::Units s = scales_of(p);
   out.residual = eq;
   for (int i = 0; i < p.n_points(); ++i) {
     const Step3dValues& uv = values[static_cast<std::size_t>(i)];
