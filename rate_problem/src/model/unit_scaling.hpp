@@ -1,16 +1,31 @@
 #pragma once
-// Internal: the 3-D rate problems are solved in normalized units (|dF|_max = 1, |A|_max = 1) so
-// that no intermediate overflows or underflows near the ends of double's range and the verdict
-// cannot depend on the user's units; the solutions are scaled back (forces by |dF|, displacement
-// rates by |dF| / |A|).
+// Internal: the units a problem is solved in. Every route (rate, step; one point and N points;
+// 2-D and 3-D) divides the user's data by its own units so that no intermediate overflows or
+// underflows near the ends of double's range and no verdict depends on the user's units; the
+// solutions are scaled back. Each route chooses its units (its own function, next to it); the
+// type is this one.
+#include <Eigen/Core>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/model/parameters_3d.hpp"
 
 namespace cpkit::rate::detail {
+
+/// A problem's units: a normalized force is force / `force`, a stiffness / `stiffness`, a length
+/// (displacement) / `length` (usually force / stiffness; a route may keep it apart), a 3-D
+/// point's plastic multiplier / (`length` x `ellipse`). Routes that scale by exact powers of two
+/// (the one-point 2-D step enumeration) keep the exponents instead: force 2^force_exp, stiffness
+/// 2^stiffness_exp, length 2^length_exp() (2^exp itself may lie outside double's range).
+struct Units {
+  double force = 1, stiffness = 1, length = 1;
+  double ellipse = 1;  ///< 3-D, one point: ellipse_unit(alpha)
+  int force_exp = 0, stiffness_exp = 0;
+  int length_exp() const noexcept { return force_exp - stiffness_exp; }
+};
 
 /// The unit of the friction ellipse: its larger half-axis. Multiplying alpha by c and dividing
 /// mu by c leaves the friction set ||D^-1 P_T|| <= mu P_N and the flow direction D^-2 P_T
@@ -35,10 +50,6 @@ double normalize_ellipse(Point& p) noexcept {
   return c;
 }
 
-struct UnitScaling {
-  double force = 1, disp = 1;  ///< multiply normalized forces / displacement rates by these
-};
-
 /// Refuses a problem whose own force scale or length scale (force / stiffness) is subnormal:
 /// its solution would have to be written with a few significant bits, so that no residual in
 /// the user's units could verify it (every 3-D step route calls this, so they agree).
@@ -54,8 +65,9 @@ inline void require_representable(double force, double length, const char* what)
   }
 }
 
-/// The normalized problem: A / |A|, C_T |A| (the same compliance), dF / |dF| (dF = 0 stays 0).
-inline UnitScaling normalize(ContactParameters3d& p, Eigen::Vector3d& dF) {
+/// The normalized 3-D rate problem: A / |A|, C_T |A| (the same compliance), dF / |dF| (dF = 0
+/// stays 0); units force |dF|, stiffness |A|, length |dF| / |A|.
+inline Units normalize(ContactParameters3d& p, Eigen::Vector3d& dF) {
   const double a = p.A.cwiseAbs().maxCoeff();
   double f = dF.cwiseAbs().maxCoeff();
   if (f == 0) f = 1;
@@ -65,29 +77,11 @@ inline UnitScaling normalize(ContactParameters3d& p, Eigen::Vector3d& dF) {
   if (!std::isfinite(p.C_T))
     throw InputError("C_T x |A| overflows double: give the stiffness and the compliance in "
                      "units of moderate size");
-  return {f, f / a};
-}
-
-inline void rescale(Rates3d& r, const UnitScaling& s) {
-  r.dP_T *= s.force;
-  r.dP_N *= s.force;
-  r.dw_T *= s.disp;
-  r.dw_N *= s.disp;
-  r.dw_Ti *= s.disp;
-  r.dw_w *= s.disp;
-}
-
-/// Scales the solutions back; throws InputError when a rate does not fit a double.
-inline void rescale(RateSolutionSet3d& set, const UnitScaling& s) {
-  for (auto& x : set.solutions) {
-    rescale(x.at, s);
-    rescale(x.direction, s);
-    for (const Rates3d* r : {&x.at, &x.direction})
-      if (!r->dP_T.allFinite() || !std::isfinite(r->dP_N) || !r->dw_T.allFinite() ||
-          !std::isfinite(r->dw_N) || !r->dw_Ti.allFinite() || !std::isfinite(r->dw_w))
-        throw InputError("the rates overflow double (|dF| / |A| is too large): give the load "
-                         "rate and the stiffness in units of moderate size");
-  }
+  Units u;
+  u.force = f;
+  u.stiffness = a;
+  u.length = f / a;
+  return u;
 }
 
 }  // namespace cpkit::rate::detail

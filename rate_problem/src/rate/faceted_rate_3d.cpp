@@ -9,7 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
-#include "../model/unit_scaling.hpp"
+#include "rate_3d_units.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -55,7 +55,7 @@ FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
   ContactParameters3d p = user_params;
   Eigen::Vector3d dF = user_dF;
   detail::normalize_ellipse(p);  // the rates hold no multiplier: nothing to scale back
-  const detail::UnitScaling scaling = detail::normalize(p, dF);
+  const detail::Units scaling = detail::normalize(p, dF);
   // The polygon: vertices v_i = D (cos theta_i, sin theta_i) (counter-clockwise), facet j from
   // v_j to v_j+1 with outward unit normal n_j and support h_j = n_j . v_j > 0; friction set
   // n_j . dP_T <= mu h_j dP_N, flow dw_T^i = sum lambda_j n_j.

@@ -13,7 +13,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/spd.hpp"
-#include "../model/unit_scaling.hpp"
+#include "rate_3d_units.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -571,7 +571,7 @@ RateSolutionSet3d solve_rate_3d(const ContactParameters3d& user_params, const Co
   ContactParameters3d params = user_params;
   Eigen::Vector3d dF = user_dF;
   detail::normalize_ellipse(params);  // the rates hold no multiplier: nothing to scale back
-  const detail::UnitScaling scaling = detail::normalize(params, dF);
+  const detail::Units scaling = detail::normalize(params, dF);
   const Blocks b = blocks(params);
   RateSolutionSet3d set;
   switch (state.state) {

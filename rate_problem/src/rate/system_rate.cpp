@@ -13,6 +13,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "physical_pieces.hpp"
+#include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -261,39 +262,40 @@ Eigen::VectorXd system_q(const SystemRatePrecomputed& pre, const Eigen::VectorXd
 
 namespace {
 
-/// The rate problem in its own units: force unit f = max |dF_i|, length unit f / max |A_ij|.
-/// It is invariant under a change of units (dF / f, A / max|A_ij|, C_T max|A_ij|; kappa and the
+/// The rate problem is solved in its own units (detail::Units): force unit f = max |dF_i|,
+/// stiffness unit max |A_ij| (the length unit f / max |A_ij| is applied by disp_back). It is
+/// invariant under a change of units (dF / f, A / max|A_ij|, C_T max|A_ij|; kappa and the
 /// states are dimensionless or only their signs matter), so every tolerance is unit-free and
 /// loads near the ends of double's range stay representable (issue 24, item 5).
-struct RateUnits {
-  double f = 1, amax = 1;
-  /// A force rate of the scaled problem in the caller's units.
-  double force(double x) const { return x * f; }
-  /// A displacement rate of the scaled problem in the caller's units: x f / amax without an
-  /// intermediate overflow or underflow.
-  double disp(double x) const {
-    const double a = (x * f) / amax;
-    if (std::isfinite(a) && (a == 0 || std::abs(a) >= std::numeric_limits<double>::min()))
-      return x == 0 || a != 0 ? a : (x / amax) * f;
-    return (x / amax) * f;
-  }
-};
+using detail::Units;
+
+/// A force rate of the scaled problem in the caller's units.
+double force_back(const Units& u, double x) { return x * u.force; }
+
+/// A displacement rate of the scaled problem in the caller's units: x f / amax without an
+/// intermediate overflow or underflow.
+double disp_back(const Units& u, double x) {
+  const double a = (x * u.force) / u.stiffness;
+  if (std::isfinite(a) && (a == 0 || std::abs(a) >= std::numeric_limits<double>::min()))
+    return x == 0 || a != 0 ? a : (x / u.stiffness) * u.force;
+  return (x / u.stiffness) * u.force;
+}
 
 [[noreturn]] void not_representable(const std::string& what) {
   throw InputError("the rate problem's solution is not representable in double precision: " +
                    what + " (rates beyond about 1e308 in the units of the data; rescale dF)");
 }
 
-void rates_from_units(SystemRates& r, const RateUnits& u) {
+void rates_from_units(SystemRates& r, const Units& u) {
   for (Eigen::VectorXd* v : {&r.dP_T, &r.dP_N})
-    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = u.force((*v)(k));
+    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = force_back(u, (*v)(k));
   for (Eigen::VectorXd* v : {&r.dw_T, &r.dw_N, &r.dw_Ti, &r.dw_w})
-    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = u.disp((*v)(k));
+    for (Eigen::Index k = 0; k < v->size(); ++k) (*v)(k) = disp_back(u, (*v)(k));
   for (const Eigen::VectorXd* v : {&r.dP_T, &r.dP_N, &r.dw_T, &r.dw_N, &r.dw_Ti, &r.dw_w})
     if (!v->allFinite()) not_representable("a force or displacement rate overflows");
 }
 
-void set_from_units(SystemRateSolutionSet& s, const RateUnits& u) {
+void set_from_units(SystemRateSolutionSet& s, const Units& u) {
   for (auto& p : s.solutions) {
     rates_from_units(p.start, u);
     if (p.kind == RateSolution::Kind::kSegment) rates_from_units(p.end, u);
@@ -302,15 +304,15 @@ void set_from_units(SystemRateSolutionSet& s, const RateUnits& u) {
       SystemRates& d = p.direction;
       const double fmax = std::max(d.dP_T.lpNorm<Eigen::Infinity>(), d.dP_N.lpNorm<Eigen::Infinity>());
       if (fmax > 0) {  // else a unit max-norm displacement direction: unchanged
-        RateUnits dir = u;
-        dir.f = 1;  // forces keep their unit max-norm; displacements get the length unit 1 / amax
+        Units dir = u;
+        dir.force = 1;  // forces keep their unit max-norm; displacements get the length unit 1 / amax
         rates_from_units(d, dir);
       }
     }
   }
   // the scales are sums of sizes: capped at the largest double when only they overflow
-  s.force_scale = std::min(u.force(s.force_scale), std::numeric_limits<double>::max());
-  s.disp_scale = std::min(u.disp(s.disp_scale), std::numeric_limits<double>::max());
+  s.force_scale = std::min(force_back(u, s.force_scale), std::numeric_limits<double>::max());
+  s.disp_scale = std::min(disp_back(u, s.disp_scale), std::numeric_limits<double>::max());
 }
 
 }  // namespace
@@ -322,17 +324,17 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
                      "fb-newton or ipopt)");
   throw_if_invalid(system_in.validate(), "contact system");
   check_load(system_in, dF_in);
-  RateUnits units;
-  units.amax = system_in.A.cwiseAbs().maxCoeff();
+  Units units;
+  units.stiffness = system_in.A.cwiseAbs().maxCoeff();
   const double fmax = dF_in.lpNorm<Eigen::Infinity>();
-  units.f = fmax > 0 ? fmax : 1.0;
+  units.force = fmax > 0 ? fmax : 1.0;
   ContactSystem system = system_in;
-  system.A /= units.amax;
-  for (auto& q : system.points) q.C_T *= units.amax;
+  system.A /= units.stiffness;
+  for (auto& q : system.points) q.C_T *= units.stiffness;
   for (const auto& q : system.points)
     if (!std::isfinite(q.C_T))
       not_representable("C_T times the stiffness overflows");
-  const Eigen::VectorXd dF = dF_in / units.f;
+  const Eigen::VectorXd dF = dF_in / units.force;
   const SystemRatePrecomputed pre = precompute_system_rate(system);
   SystemRateSolutionSet all = detail::enumerate_system(pre, dF);
   if (method == RateMethod::kEnumerate) {

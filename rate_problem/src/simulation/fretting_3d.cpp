@@ -16,17 +16,6 @@
 
 namespace cpkit::rate {
 
-std::string_view to_string(Fretting3dResult::Outcome o) noexcept {
-  switch (o) {
-    case Fretting3dResult::Outcome::kCompleted: return "completed";
-    case Fretting3dResult::Outcome::kNoSolution: return "no_solution";
-    case Fretting3dResult::Outcome::kAmbiguous: return "ambiguous";
-    case Fretting3dResult::Outcome::kBranchStop: return "branch_stop";
-    case Fretting3dResult::Outcome::kNumericalFailure: return "numerical_failure";
-  }
-  return "?";
-}
-
 std::string EllipticOrbit::validate() const {
   std::ostringstream m;
   if (!std::isfinite(F_N) || !std::isfinite(a_X) || !std::isfinite(a_Y) ||

@@ -6,21 +6,18 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "step_march.hpp"
 
 namespace cpkit::rate {
 
-std::string_view to_string(SimulationResult::Outcome o) noexcept {
+std::string_view to_string(SimulationOutcome o) noexcept {
   switch (o) {
-    case SimulationResult::Outcome::kCompleted:
-      return "completed";
-    case SimulationResult::Outcome::kNoSolution:
-      return "no_solution";
-    case SimulationResult::Outcome::kContinuum:
-      return "continuum";
-    case SimulationResult::Outcome::kBranchStop:
-      return "branch_stop";
-    case SimulationResult::Outcome::kNumericalFailure:
-      return "numerical_failure";
+    case SimulationOutcome::kCompleted: return "completed";
+    case SimulationOutcome::kNoSolution: return "no_solution";
+    case SimulationOutcome::kContinuum: return "continuum";
+    case SimulationOutcome::kAmbiguous: return "ambiguous";
+    case SimulationOutcome::kBranchStop: return "branch_stop";
+    case SimulationOutcome::kNumericalFailure: return "numerical_failure";
   }
   return "unknown";
 }
@@ -164,26 +161,15 @@ SimulationSample advance(const SimulationSample& cur, const LoadPoint& lp, const
   nx.w_N = cur.w_N + v.Dw_N;
   nx.w_w = cur.w_w + v.Dw_w;
   nx.w_Ti = cur.w_Ti + v.Dw_Ti;
-  nx.P_N = v.P_N1;
-  nx.P_T = v.P_T1;
-  nx.g = v.g1;
-  if (nx.P_N <= 0 || chosen.type == SolutionType::kSeparation ||
-      chosen.type == SolutionType::kOpen) {
-    nx.P_N = 0;
-    nx.P_T = 0;
-    nx.g = std::min(v.g1, 0.0);
-  } else {
-    nx.g = 0;
-    const double Y = a.mu * nx.P_N - kc * nx.P_N * nx.P_N;
-    if (chosen.type == SolutionType::kSlipPlus) nx.P_T = Y;
-    if (chosen.type == SolutionType::kSlipMinus) nx.P_T = -Y;
-    nx.P_T = std::clamp(nx.P_T, -Y, Y);
-  }
+  const detail::PlacedPoint placed = detail::place_on_constraints(v, chosen.type, a.mu, kc);
+  nx.P_N = placed.P_N;
+  nx.P_T = placed.P_T;
+  nx.g = placed.g;
   nx.state = step_state_label(a, nx.P_T, nx.P_N, nx.g);
   // Thermodynamics.
-  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
+  const double D = detail::step_dissipation(v);
   nx.dissipation = D;
-  dW = 0.5 * (cur.F_T + lp.F_T) * v.Dw_T + 0.5 * (cur.F_N + lp.F_N) * v.Dw_N;
+  dW = detail::step_work(cur.F_T, cur.F_N, lp.F_T, lp.F_N, v);
   nx.work_total = cur.work_total + dW;
   nx.dissipation_total = cur.dissipation_total + D;
   nx.stored = 0.5 * (a.a11 * nx.w_T * nx.w_T + 2 * a.a12 * nx.w_T * nx.w_N +
@@ -192,22 +178,11 @@ SimulationSample advance(const SimulationSample& cur, const LoadPoint& lp, const
   return nx;
 }
 
-/// The step's dissipation relative to its own scale (negative only through rounding or a
-/// non-dissipative law; the run reports the most negative).
-double relative_dissipation(const StepValues& v, double mu) {
-  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
-  const double D_scale =
-      (std::abs(v.P_T1) + mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
-  return D / std::max(D_scale, 1e-300);
-}
-
 /// Slip and wear of a step of a cyclic history, added to the cycle its midpoint falls in.
 void add_to_cycle(SimulationResult& res, const LoadSource& history, double t_prev, double t,
                   const StepValues& v) {
-  if (!(history.period > 0) || !(t > history.cycle_start)) return;
-  const double tc = 0.5 * (t_prev + t) - history.cycle_start;
-  if (tc < 0) return;
-  const std::size_t c = static_cast<std::size_t>(std::floor(tc / history.period));
+  std::size_t c = 0;
+  if (!detail::step_cycle(history.period, history.cycle_start, t_prev, t, c)) return;
   if (c >= res.slip_per_cycle.size()) {
     res.slip_per_cycle.resize(c + 1, 0.0);
     res.wear_per_cycle.resize(c + 1, 0.0);
@@ -333,7 +308,7 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
     double dW = 0;
     SimulationSample nx = advance(cur, lp, chosen, pts.n, a, kc, dW);
     nx.step = res.steps + 1;
-    if (nx.dissipation < 0) min_D = std::min(min_D, relative_dissipation(v, a.mu));
+    if (nx.dissipation < 0) min_D = std::min(min_D, detail::relative_dissipation(v, a.mu));
     // The running sums after this step (committed below once everything is finite).
     Sums next = sums;
     next.work_abs += std::abs(dW);

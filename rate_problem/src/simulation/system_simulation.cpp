@@ -7,6 +7,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
+#include "step_march.hpp"
 
 namespace cpkit::rate {
 
@@ -170,27 +171,18 @@ double advance_point(int i, const SystemStepSolution& sol, const SystemStepProbl
   nx.w[2 * i + 1] += v.Dw_N;
   nx.w_w[i] += v.Dw_w;
   nx.w_Ti[i] += v.Dw_Ti;
-  const double dW = 0.5 * (cur.F[2 * i] + lp.F[2 * i]) * v.Dw_T +
-                    0.5 * (cur.F[2 * i + 1] + lp.F[2 * i + 1]) * v.Dw_N;
-  if (v.P_N1 <= 0 || ty == SolutionType::kSeparation || ty == SolutionType::kOpen) {
-    nx.P_N[i] = 0;
-    nx.P_T[i] = 0;
-    nx.g[i] = std::min(v.g1, 0.0);
-  } else {
-    nx.P_N[i] = v.P_N1;
-    nx.g[i] = 0;
-    const double Y = a.mu * v.P_N1;
-    nx.P_T[i] = ty == SolutionType::kSlipPlus    ? Y
-                : ty == SolutionType::kSlipMinus ? -Y
-                                                 : std::clamp(v.P_T1, -Y, Y);
-  }
+  const double dW =
+      detail::step_work(cur.F[2 * i], cur.F[2 * i + 1], lp.F[2 * i], lp.F[2 * i + 1], v);
+  // The Coulomb criterion (38) only (a system refuses (35)): no softening.
+  const detail::PlacedPoint placed = detail::place_on_constraints(v, ty, a.mu, 0.0);
+  nx.P_N[i] = placed.P_N;
+  nx.P_T[i] = placed.P_T;
+  nx.g[i] = placed.g;
   nx.state[static_cast<std::size_t>(i)] = step_state_label(a, nx.P_T[i], nx.P_N[i], nx.g[i]);
-  const double D = v.P_T1 * v.Dw_Ti + v.P_N1 * v.Dw_w;
-  const double D_scale =
-      (std::abs(v.P_T1) + a.mu * std::abs(v.P_N1)) * std::abs(v.Dw_Ti) + std::abs(v.P_N1 * v.Dw_w);
+  const double D = detail::step_dissipation(v);
   if (D < 0)
     res.min_step_dissipation[i] =
-        std::min(res.min_step_dissipation[i], D / std::max(D_scale, 1e-300));
+        std::min(res.min_step_dissipation[i], detail::relative_dissipation(v, a.mu));
   res.dissipation[i] += D;
   nx.dissipation_total += D;
   res.wear_integral[i] += pc.k[i] * std::max(v.P_N1, 0.0) * std::abs(v.Dw_Ti);
@@ -204,10 +196,8 @@ double advance_point(int i, const SystemStepSolution& sol, const SystemStepProbl
 /// Wear of a step of a cyclic history, added per point to the cycle its midpoint falls in.
 void add_to_cycle(SystemSimulationResult& res, const SystemLoadSource& load, double t_prev,
                   double t, const SystemStepSolution& sol) {
-  if (!(load.period > 0) || !(t > load.cycle_start)) return;
-  const double tc = 0.5 * (t_prev + t) - load.cycle_start;
-  if (tc < 0) return;
-  const auto c = static_cast<std::size_t>(std::floor(tc / load.period));
+  std::size_t c = 0;
+  if (!detail::step_cycle(load.period, load.cycle_start, t_prev, t, c)) return;
   const auto N = static_cast<Eigen::Index>(sol.values.size());
   while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N));
   for (Eigen::Index i = 0; i < N; ++i)

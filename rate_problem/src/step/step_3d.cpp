@@ -31,59 +31,33 @@ std::string num(double x) {
   return s.str();
 }
 
-/// The problem's own scales: forces by `force`, displacements by force / stiffness.
-struct Scales {
-  double force = 1, stiffness = 1;
-  double ellipse = 1;  ///< detail::ellipse_unit(alpha): multipliers scale by it
-  double disp() const noexcept { return force / stiffness; }
-};
-
-Scales scales_of(const Step3dProblem& p) noexcept {
-  Scales s;
-  s.stiffness = p.params.A.cwiseAbs().maxCoeff();
-  if (!(s.stiffness > 0) || !std::isfinite(s.stiffness)) s.stiffness = 1;
-  const double g = std::abs(p.state.g0) * s.stiffness;
-  s.force = std::max({p.DF.cwiseAbs().maxCoeff(), p.state.P_T0.cwiseAbs().maxCoeff(),
-                      std::abs(p.state.P_N0), std::isfinite(g) ? g : 0.0});
-  if (!(s.force > 0) || !std::isfinite(s.force)) s.force = 1;
+/// The problem's own units (step_3d_units) and its friction ellipse's unit.
+detail::Units scales_of(const Step3dProblem& p) noexcept {
+  detail::Units s = detail::step_3d_units(p.params.A, p.DF, &p.state, 1);
   s.ellipse = detail::ellipse_unit(p.params.alpha);
   return s;
 }
 
-/// The same problem in the units of `s` (forces / force, stiffness / stiffness).
-Step3dProblem normalized(const Step3dProblem& p, const Scales& s) noexcept {
-  Step3dProblem n = p;
-  n.params.A /= s.stiffness;
-  n.params.C_T *= s.stiffness;
-  // c_w P_N lambda is a length: c_w scales as 1/force. Archard's k = k_a/(3 P_s) through k_a.
-  n.params.k_a *= s.force;
-  n.wear.k_M *= s.force;
-  // The ellipse in its own unit (alpha / c, mu c, k_a c; lambda / c); validate() has made sure
-  // that these fit a double.
-  detail::normalize_ellipse(n.params);
-  n.state.P_T0 /= s.force;
-  n.state.P_N0 /= s.force;
-  n.state.g0 /= s.disp();
-  n.DF /= s.force;
-  return n;
-}
-
-Step3dValues to_user_units(Step3dValues v, const Scales& s) noexcept {
+Step3dValues to_user_units(Step3dValues v, const detail::Units& s) noexcept {
   v.DP_T *= s.force;
   v.P_T1 *= s.force;
   v.DP_N *= s.force;
   v.P_N1 *= s.force;
-  v.Dw_T *= s.disp();
-  v.Dw_Ti *= s.disp();
-  v.Dw_N *= s.disp();
-  v.Dw_w *= s.disp();
-  v.g1 *= s.disp();
-  v.lambda *= s.disp() * s.ellipse;
+  v.Dw_T *= s.length;
+  v.Dw_Ti *= s.length;
+  v.Dw_N *= s.length;
+  v.Dw_w *= s.length;
+  v.g1 *= s.length;
+  v.lambda *= s.length * s.ellipse;
   return v;
 }
 
-Step3dValues to_normalized(Step3dValues v, const Scales& s) noexcept {
-  Scales inv{1 / s.force, 1 / s.stiffness, 1 / s.ellipse};
+Step3dValues to_normalized(Step3dValues v, const detail::Units& s) noexcept {
+  detail::Units inv;
+  inv.force = 1 / s.force;
+  inv.stiffness = 1 / s.stiffness;
+  inv.length = inv.force / inv.stiffness;
+  inv.ellipse = 1 / s.ellipse;
   return to_user_units(v, inv);
 }
 
@@ -643,8 +617,8 @@ Step3dValues step_3d_values(const Step3dProblem& p, const Eigen::Vector2d& P_T1,
 }
 
 double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexcept {
-  const Scales s = scales_of(user);
-  const Step3dProblem p = normalized(user, s);
+  const detail::Units s = scales_of(user);
+  const Step3dProblem p = detail::normalized_step_3d(user, s);
   const Step3dValues v = to_normalized(uv, s);
   const Eigen::Vector3d DP(v.DP_T(0), v.DP_T(1), v.DP_N);
   const Eigen::Vector3d Dw(v.Dw_T(0), v.Dw_T(1), v.Dw_N);
@@ -657,7 +631,7 @@ double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexc
 }
 
 SolutionType classify_step_3d(const Step3dProblem& user, const Step3dValues& uv) noexcept {
-  const Scales s = scales_of(user);
+  const detail::Units s = scales_of(user);
   const Step3dValues v = to_normalized(uv, s);
   if (v.P_N1 <= 1e-9) return user.state.g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
   if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff())) return SolutionType::kStick;
@@ -678,9 +652,9 @@ Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues&
 
 Step3dSolutionSet enumerate_step_3d(const Step3dProblem& user) {
   if (const std::string e = user.validate(); !e.empty()) throw InputError("step: " + e);
-  const Scales sc = scales_of(user);
-  detail::require_representable(sc.force, sc.disp(), "step");
-  const Step3dProblem p = normalized(user, sc);
+  const detail::Units sc = scales_of(user);
+  detail::require_representable(sc.force, sc.length, "step");
+  const Step3dProblem p = detail::normalized_step_3d(user, sc);
   if (!p.params.A.allFinite() || !std::isfinite(p.params.C_T) || !std::isfinite(p.wear_coefficient()))
     throw InputError("step: the stiffness, compliance or wear constant overflows double in the "
                      "problem's own units: give them in units of moderate size");

@@ -1,15 +1,55 @@
 #pragma once
-// Internal: the per-point terms of the step residual (step_3d_residual, docs/contact_3d.md
-// section 7), shared by the one-point step (step_3d.cpp) and the N-point step
-// (system_step_3d.cpp), which adds its own equilibrium over all points.
+// Internal: the units of a 3-D step and the per-point terms of the step residual
+// (step_3d_residual, docs/contact_3d.md section 7), shared by the one-point step (step_3d.cpp)
+// and the N-point step (system_step_3d.cpp), which adds its own equilibrium over all points.
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "cpkit/rate_problem/step/step_3d.hpp"
+#include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate::detail {
+
+/// The units of a 3-D step of n points (states[0..n)): stiffness max |A_ij|; force the largest
+/// of |DF|, |P_T0|, |P_N0| and |g0| max|A_ij| (a product beyond double's range left out);
+/// length force / stiffness; each 1 when it would be 0 or not finite.
+template <class MatrixA, class VectorDF>
+Units step_3d_units(const Eigen::MatrixBase<MatrixA>& A, const Eigen::MatrixBase<VectorDF>& DF,
+                    const Step3dState* states, std::size_t n) noexcept {
+  Units u;
+  u.stiffness = A.size() > 0 ? A.cwiseAbs().maxCoeff() : 1.0;
+  if (!(u.stiffness > 0) || !std::isfinite(u.stiffness)) u.stiffness = 1;
+  double f = DF.size() > 0 ? DF.cwiseAbs().maxCoeff() : 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double g = std::abs(states[i].g0) * u.stiffness;
+    f = std::max({f, states[i].P_T0.cwiseAbs().maxCoeff(), std::abs(states[i].P_N0),
+                  std::isfinite(g) ? g : 0.0});
+  }
+  u.force = (f > 0 && std::isfinite(f)) ? f : 1.0;
+  u.length = u.force / u.stiffness;
+  return u;
+}
+
+/// One point's step in the units `u` (stiffness / u.stiffness, forces / u.force, lengths /
+/// u.length) with its friction ellipse in its own unit (normalize_ellipse).
+inline Step3dProblem normalized_step_3d(Step3dProblem n, const Units& u) noexcept {
+  n.params.A /= u.stiffness;
+  n.params.C_T *= u.stiffness;
+  // c_w P_N lambda is a length: c_w scales as 1/force. Archard's k = k_a/(3 P_s) through k_a.
+  n.params.k_a *= u.force;
+  n.wear.k_M *= u.force;
+  // The ellipse in its own unit (alpha / c, mu c, k_a c; lambda / c); validate() has made sure
+  // that these fit a double.
+  normalize_ellipse(n.params);
+  n.state.P_T0 /= u.force;
+  n.state.P_N0 /= u.force;
+  n.state.g0 /= u.length;
+  n.DF /= u.force;
+  return n;
+}
 
 /// Projection onto the second-order cone {(x0, x1): x0 >= |x1|}.
 inline Eigen::Vector3d project_soc(const Eigen::Vector3d& v) noexcept {

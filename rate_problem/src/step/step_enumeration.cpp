@@ -9,6 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "polynomial_roots.hpp"
+#include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -49,12 +50,10 @@ struct Continuum {
   double b0, b1;      // xi(x) = s (b0 + b1 x) / detA
 };
 
-// ---- Units: exact power-of-two normalisation (forces 2^eF, stiffness 2^eA, lengths 2^eL) ----
+// ---- Units: exact power-of-two normalisation (forces 2^force_exp, stiffness 2^stiffness_exp,
+// lengths 2^length_exp(); detail::Units) ----
 
-struct Units {
-  int eF = 0, eA = 0;
-  int eL() const noexcept { return eF - eA; }
-};
+using detail::Units;
 
 int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
   int e = 0;
@@ -64,13 +63,13 @@ int exponent_of(double v) noexcept {  // 2^e <= v < 2^(e+1) for finite v > 0
 
 Units units_of(const StepProblem& p) noexcept {
   Units u;
-  u.eA = exponent_of(std::max(p.params.a11, p.params.a22));
+  u.stiffness_exp = exponent_of(std::max(p.params.a11, p.params.a22));
   const double f = std::max({std::abs(p.state.P_T0), std::abs(p.state.P_N0),
                              std::abs(p.load.dF_T), std::abs(p.load.dF_N)});
   if (f > 0) {
-    u.eF = exponent_of(f);
+    u.force_exp = exponent_of(f);
   } else if (p.state.g0 != 0) {
-    u.eF = u.eA + exponent_of(std::abs(p.state.g0));  // no force at all: lengths of order 1
+    u.force_exp = u.stiffness_exp + exponent_of(std::abs(p.state.g0));  // no force at all: lengths of order 1
   }
   return u;
 }
@@ -88,8 +87,9 @@ struct Pow2 {
 /// double's range; a wear coefficient that underflows there is 0 to working precision).
 StepProblem normalise(const StepProblem& p, const Units& u) noexcept {
   StepProblem n = p;
-  if (u.eF == 0 && u.eA == 0) return n;
-  const Pow2 dA(-u.eA), uA(u.eA), dF(-u.eF), uF(u.eF), dL(-u.eL());
+  if (u.force_exp == 0 && u.stiffness_exp == 0) return n;
+  const Pow2 dA(-u.stiffness_exp), uA(u.stiffness_exp), dF(-u.force_exp), uF(u.force_exp),
+      dL(-u.length_exp());
   n.params.a11 = dA(p.params.a11);
   n.params.a12 = dA(p.params.a12);
   n.params.a22 = dA(p.params.a22);
@@ -110,8 +110,8 @@ StepProblem normalise(const StepProblem& p, const Units& u) noexcept {
 
 /// Values of the normalised problem in the caller's units.
 StepValues to_user(const StepValues& v, const Units& u) noexcept {
-  if (u.eF == 0 && u.eA == 0) return v;
-  const Pow2 F(u.eF), L(u.eL());
+  if (u.force_exp == 0 && u.stiffness_exp == 0) return v;
+  const Pow2 F(u.force_exp), L(u.length_exp());
   StepValues w;
   w.DP_T = F(v.DP_T);
   w.DP_N = F(v.DP_N);

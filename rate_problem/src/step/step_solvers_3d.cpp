@@ -34,10 +34,6 @@ using Mat4 = Eigen::Matrix4d;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 /// The step in normalized units: forces / F0, A / K0, lengths / L0 = F0 / K0, and the affine
 /// maps of the unknowns P1 = (P_T1, P_N1):
 ///   Dw_T^i = ui0 + Ui P1,   g1 = gc + gN . P1 - cw P_N1 lambda.
@@ -158,42 +154,32 @@ Step3dValues physical(const Step3dProblem& pr, const Normalized& n, const Vec4& 
   return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * n.E * z(3));
 }
 
-/// Snaps a verified iterate to its canonical form when that stays verified: separation
-/// (x = 0: P1 = 0 and lambda = |D Dw_T^i|, the smallest admissible multiplier) and stick
-/// (y = 0: lambda = 0).
-Vec4 canonical(const Step3dProblem& pr, const Normalized& n, const Vec4& z, double tol) {
-  const Eigen::Vector3d P1 = z.head<3>();
-  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
-  const double xs = std::max(std::abs(n.mu * z(2)), (z.head<2>().array() / n.al.array()).abs().maxCoeff());
-  const double ys = std::max(std::abs(z(3)), (ui.array() * n.al.array()).abs().maxCoeff());
-  if (xs <= 1e-10 * std::max(1.0, ys)) {
-    Vec4 c(0, 0, 0, 0);
-    c(3) = (n.ui0.array() * n.al.array()).matrix().norm();
-    if (step_3d_residual(pr, physical(pr, n, c)) <= tol && fb_small(n, c)) return c;
+/// The one-point kernel of the shared Newton solve (step_3d_newton.hpp).
+struct PointKernel {
+  const Step3dProblem& pr;
+  const Normalized& n;
+  int points() const noexcept { return 1; }
+  double mu(int) const noexcept { return n.mu; }
+  Eigen::Vector2d alpha(int) const noexcept { return n.al; }
+  Eigen::Vector2d slip_rates(const Vec4& z) const noexcept {
+    const Eigen::Vector3d P1 = z.head<3>();
+    return n.ui0 + n.Ui * P1;
   }
-  if (std::abs(z(3)) <= 1e-10 * std::max(1.0, xs)) {
-    Vec4 c = z;
-    c(3) = 0;
-    if (step_3d_residual(pr, physical(pr, n, c)) <= tol && fb_small(n, c)) return c;
+  void residual_map(const Vec4& z, Vec4& Phi, Mat4& J) const noexcept {
+    rate::residual_map(n, z, Phi, J);
   }
-  return z;
-}
+  double residual(const Vec4& z) const noexcept { return step_3d_residual(pr, physical(pr, n, z)); }
+  bool fb_small(const Vec4& z) const noexcept { return rate::fb_small(n, z); }
+  void finalize(const Vec4& z, Step3dSolveResult& out, const CommonOptions& o) const {
+    out.solution.values = physical(pr, n, z);
+    finalize_step_3d(pr, out, o);
+  }
+};
 
-/// The semismooth Newton iteration from z (normalized), by the one damped Newton loop
-/// (lcp/damped_newton.hpp). Fills `out` through finalize_step_3d (not `seconds`).
-void newton(const Step3dProblem& pr, const Normalized& n, Vec4 z, const CommonOptions& o,
+/// The semismooth Newton iteration from z (normalized); fills `out` (not `seconds`).
+void newton(const Step3dProblem& pr, const Normalized& n, const Vec4& z, const CommonOptions& o,
             Step3dSolveResult& out) {
-  auto eval = [&n](const Vec4& x, Vec4& Phi, Mat4& J) { residual_map(n, x, Phi, J); };
-  auto done = [&](const Vec4& x, const Vec4& Phi) {
-    return Phi.cwiseAbs().maxCoeff() <= 1e-15 && step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
-  };
-  const Status unverified = detail::run_newton_3d<Vec4, Mat4>(z, eval, done, o, out);
-  const bool claim = step_3d_residual(pr, physical(pr, n, z)) <= o.tol && fb_small(n, z);
-  if (claim) z = canonical(pr, n, z, o.tol);
-  out.status = claim ? Status::kSolved : unverified;
-  out.solution.values = physical(pr, n, z);
-  finalize_step_3d(pr, out, o);
-  detail::explain_unverified(out);
+  detail::newton_3d<Vec4, Mat4>(PointKernel{pr, n}, z, o, out);
 }
 
 void check(const Step3dProblem& pr) {
@@ -206,22 +192,6 @@ Vec4 normalized_start(const Step3dProblem& pr, const Normalized& n, const Step3d
   if (!z.allFinite()) throw InputError("start point must be finite");
   (void)pr;
   return z;
-}
-
-/// Deterministic pseudo-random start i (normalized units).
-Vec4 random_start(const Normalized& n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> U(0, 1);
-  const double PN = U(rng) < 0.15 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
-  const double th = 2 * kPi * U(rng), r = U(rng) < 0.3 ? 1.0 : U(rng);
-  const double lam = U(rng) < 0.3 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
-  return Vec4(n.mu * PN * r * n.al(0) * std::cos(th), n.mu * PN * r * n.al(1) * std::sin(th), PN,
-              lam);
-}
-
-bool same_solution(const Step3dSolution& a, const Step3dSolution& b, double F0) {
-  const double d = std::max((a.values.P_T1 - b.values.P_T1).cwiseAbs().maxCoeff(),
-                            std::abs(a.values.P_N1 - b.values.P_N1));
-  return d <= 1e-7 * F0;
 }
 
 }  // namespace
@@ -247,7 +217,7 @@ void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolu
   for (const auto& s : sols) {
     bool dup = false;
     for (auto& o : out)
-      if (same_solution(o, s, F0)) {
+      if (detail::same_point_solution_3d(o.values, s.values, F0)) {
         dup = true;
         if (s.residual < o.residual) o = s;
       }
@@ -278,7 +248,7 @@ Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
   Step3dSolveResult out;
   out.solver = "fb-soc";
   newton(problem, n, normalized_start(problem, n, start), options, out);
-  out.seconds = seconds_since(t0);
+  out.seconds = detail::seconds_since(t0);
   return out;
 }
 
@@ -413,7 +383,7 @@ Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
       out.message = "ipopt: no verified solution (" + mr.message + ")";
   }
   out.iterations = mr.iterations + polish_iterations;
-  out.seconds = seconds_since(t0);
+  out.seconds = detail::seconds_since(t0);
   return out;
 }
 
@@ -635,7 +605,7 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
   }
   sort_and_dedup_step_3d(problem, sols);
   out.set.solutions = std::move(sols);
-  out.seconds = seconds_since(t0);
+  out.seconds = detail::seconds_since(t0);
   return out;
 }
 
@@ -695,7 +665,7 @@ Step3dChainResult solve_step_3d(const Step3dProblem& problem, const Step3dChainO
       a.message = r.message;
       sol = r.solution;
     }
-    a.seconds = seconds_since(t0);
+    a.seconds = detail::seconds_since(t0);
     out.attempts.push_back(a);
     out.status = a.status;
     out.solution = sol;
@@ -722,7 +692,8 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
   const CommonOptions o = step_3d_solver_options();
   int fb_ok = 0, ip_ok = 0, fb_runs = 0, ip_runs = 0;
   for (int i = 0; i <= n_starts; ++i) {
-    const Vec4 z = i == 0 ? Vec4(n.PT0(0), n.PT0(1), n.PN0, 0) : random_start(n, rng);
+    const Vec4 z = i == 0 ? Vec4(n.PT0(0), n.PT0(1), n.PN0, 0)
+                          : detail::random_start_3d<Vec4>(PointKernel{problem, n}, rng);
     Step3dStart s;
     s.P_T1 = n.F0 * z.head<2>();
     s.P_N1 = n.F0 * z(2);

@@ -25,32 +25,13 @@
 namespace cpkit::rate {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using Vec = Eigen::VectorXd;
 using Mat = Eigen::MatrixXd;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// The system's scales: forces F0, stiffness K0, lengths L0 = F0 / K0.
-struct Scales {
-  double F0 = 1, K0 = 1;
-  double L0() const noexcept { return F0 / K0; }
-};
-
-Scales scales_of(const SystemStep3dProblem& p) noexcept {
-  Scales s;
-  s.K0 = p.system.A.size() > 0 ? p.system.A.cwiseAbs().maxCoeff() : 1.0;
-  if (!(s.K0 > 0) || !std::isfinite(s.K0)) s.K0 = 1;
-  double f = p.DF.size() > 0 ? p.DF.cwiseAbs().maxCoeff() : 0.0;
-  for (const Step3dState& st : p.states) {
-    const double g = std::abs(st.g0) * s.K0;
-    f = std::max({f, st.P_T0.cwiseAbs().maxCoeff(), std::abs(st.P_N0), std::isfinite(g) ? g : 0.0});
-  }
-  s.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
-  return s;
+/// The system's units (step_3d_units): forces F0, stiffness K0, lengths L0 = F0 / K0.
+detail::Units scales_of(const SystemStep3dProblem& p) noexcept {
+  return detail::step_3d_units(p.system.A, p.DF, p.states.data(), p.states.size());
 }
 
 bool sizes_ok(const SystemStep3dProblem& p) noexcept {
@@ -59,24 +40,9 @@ bool sizes_ok(const SystemStep3dProblem& p) noexcept {
          static_cast<int>(p.states.size()) == N && p.DF.size() == 3 * N;
 }
 
-/// Point i alone in normalized units (no A: the local terms do not use it).
-Step3dProblem normalized_point(const SystemStep3dProblem& p, int i, const Scales& s) {
-  Step3dProblem q = p.point_problem(i);
-  q.params.A /= s.K0;
-  q.params.C_T *= s.K0;
-  q.params.k_a *= s.F0;
-  q.wear.k_M *= s.F0;
-  detail::normalize_ellipse(q.params);  // lambda / ellipse_unit (normalized_values)
-  q.state.P_T0 /= s.F0;
-  q.state.P_N0 /= s.F0;
-  q.state.g0 /= s.L0();
-  q.DF /= s.F0;
-  return q;
-}
-
 /// `ellipse`: detail::ellipse_unit of the point's alpha (the multiplier's unit).
-Step3dValues normalized_values(Step3dValues v, const Scales& s, double ellipse) noexcept {
-  const double f = 1 / s.F0, d = 1 / s.L0();
+Step3dValues normalized_values(Step3dValues v, const detail::Units& s, double ellipse) noexcept {
+  const double f = 1 / s.force, d = 1 / s.length;
   v.DP_T *= f;
   v.P_T1 *= f;
   v.DP_N *= f;
@@ -109,10 +75,10 @@ Normalized normalize(const SystemStep3dProblem& pr) {
   Normalized n;
   const int N = pr.n_points();
   n.N = N;
-  const Scales s = scales_of(pr);
-  n.K0 = s.K0;
-  n.F0 = s.F0;
-  n.L0 = s.L0();
+  const detail::Units s = scales_of(pr);
+  n.K0 = s.stiffness;
+  n.F0 = s.force;
+  n.L0 = s.length;
   detail::require_representable(n.F0, n.L0, "step");
   if (!std::isfinite(n.L0) || n.L0 == 0)
     throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
@@ -239,40 +205,6 @@ std::vector<Step3dValues> physical(const SystemStep3dProblem& pr, const Normaliz
   return system_step_3d_values(pr, P1, lam);
 }
 
-bool verified(const SystemStep3dProblem& pr, const Normalized& n, const Vec& z, double tol) {
-  return system_step_3d_residual(pr, physical(pr, n, z)) <= tol && fb_small(n, z);
-}
-
-/// Snaps each point of a verified iterate to its canonical form when the whole stays verified:
-/// separation (x_i = 0: P1_i = 0, lambda_i = |D Dw_T^i|) and stick (y_i = 0: lambda_i = 0).
-Vec canonical(const SystemStep3dProblem& pr, const Normalized& n, Vec z, double tol) {
-  for (int i = 0; i < n.N; ++i) {
-    const int r = 4 * i;
-    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
-    const Vec ui = n.ui0 + n.Ui * z;
-    const Eigen::Vector2d u = ui.segment<2>(2 * i);
-    const double xs = std::max(std::abs(n.mu[i] * z(r + 2)),
-                               (z.segment<2>(r).array() / al.array()).abs().maxCoeff());
-    const double ys = std::max(std::abs(z(r + 3)), (u.array() * al.array()).abs().maxCoeff());
-    if (xs <= 1e-10 * std::max(1.0, ys)) {
-      Vec c = z;
-      c.segment<3>(r).setZero();
-      const Vec uc = n.ui0 + n.Ui * c;
-      c(r + 3) = (uc.segment<2>(2 * i).array() * al.array()).matrix().norm();
-      if (verified(pr, n, c, tol)) {
-        z = c;
-        continue;
-      }
-    }
-    if (std::abs(z(r + 3)) <= 1e-10 * std::max(1.0, xs)) {
-      Vec c = z;
-      c(r + 3) = 0;
-      if (verified(pr, n, c, tol)) z = c;
-    }
-  }
-  return z;
-}
-
 /// The verdict, as finalize_step_3d (step_3d_verdict.hpp): the solution recomputed from the
 /// values and the data, judged by system_step_3d_residual.
 void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValues>& values,
@@ -281,45 +213,27 @@ void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValu
   detail::decide_step_3d(r, values.data(), values.size(), r.solution.residual, o);
 }
 
-/// The semismooth Newton iteration by the one damped Newton loop (lcp/damped_newton.hpp).
-void newton(const SystemStep3dProblem& pr, const Normalized& n, Vec z, const CommonOptions& o,
-            SystemStep3dSolveResult& out) {
-  auto eval = [&n](const Vec& x, Vec& Phi, Mat& J) { residual_map(n, x, Phi, J); };
-  auto done = [&](const Vec& x, const Vec& Phi) {
-    return Phi.cwiseAbs().maxCoeff() <= 1e-15 &&
-           system_step_3d_residual(pr, physical(pr, n, x)) <= o.tol;
-  };
-  const Status unverified = detail::run_newton_3d<Vec, Mat>(z, eval, done, o, out);
-  const bool claim = verified(pr, n, z, o.tol);
-  if (claim) z = canonical(pr, n, z, o.tol);
-  out.status = claim ? Status::kSolved : unverified;
-  finalize_system(pr, physical(pr, n, z), out, o);
-  detail::explain_unverified(out);
-}
+/// The N-point kernel of the shared Newton solve (step_3d_newton.hpp).
+struct SystemKernel {
+  const SystemStep3dProblem& pr;
+  const Normalized& n;
+  int points() const noexcept { return n.N; }
+  double mu(int i) const noexcept { return n.mu[static_cast<std::size_t>(i)]; }
+  Eigen::Vector2d alpha(int i) const noexcept { return n.al[static_cast<std::size_t>(i)]; }
+  Vec slip_rates(const Vec& z) const { return n.ui0 + n.Ui * z; }
+  void residual_map(const Vec& z, Vec& Phi, Mat& J) const { rate::residual_map(n, z, Phi, J); }
+  double residual(const Vec& z) const { return system_step_3d_residual(pr, physical(pr, n, z)); }
+  bool fb_small(const Vec& z) const { return rate::fb_small(n, z); }
+  void finalize(const Vec& z, SystemStep3dSolveResult& out, const CommonOptions& o) const {
+    finalize_system(pr, physical(pr, n, z), out, o);
+  }
+};
 
 void check(const SystemStep3dProblem& pr) { throw_if_invalid(pr.validate(), "step"); }
 
-/// Deterministic pseudo-random start (normalized), per point as the one-point multistart.
-Vec random_start(const Normalized& n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> U(0, 1);
-  Vec z(4 * n.N);
-  for (int i = 0; i < n.N; ++i) {
-    const double PN = U(rng) < 0.15 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
-    const double th = 2 * kPi * U(rng), r = U(rng) < 0.3 ? 1.0 : U(rng);
-    const double lam = U(rng) < 0.3 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
-    const Eigen::Vector2d al = n.al[static_cast<std::size_t>(i)];
-    z.segment<4>(4 * i) << n.mu[i] * PN * r * al(0) * std::cos(th),
-        n.mu[i] * PN * r * al(1) * std::sin(th), PN, lam;
-  }
-  return z;
-}
-
 bool same_solution(const SystemStep3dSolution& a, const SystemStep3dSolution& b, double F0) {
-  for (std::size_t i = 0; i < a.points.size(); ++i) {
-    const Step3dValues &u = a.points[i].values, &v = b.points[i].values;
-    if (std::max((u.P_T1 - v.P_T1).cwiseAbs().maxCoeff(), std::abs(u.P_N1 - v.P_N1)) > 1e-7 * F0)
-      return false;
-  }
+  for (std::size_t i = 0; i < a.points.size(); ++i)
+    if (!detail::same_point_solution_3d(a.points[i].values, b.points[i].values, F0)) return false;
   return true;
 }
 
@@ -395,18 +309,19 @@ bool residual_terms(const SystemStep3dProblem& p, const std::vector<Step3dValues
                     std::vector<double>& local, double& equilibrium) {
   const int N = p.n_points();
   if (!sizes_ok(p) || static_cast<int>(values.size()) != N) return false;
-  const Scales s = scales_of(p);
+  const detail::Units s = scales_of(p);
   Vec DP(3 * N), Dw(3 * N);
   local.assign(static_cast<std::size_t>(N), 0.0);
   for (int i = 0; i < N; ++i) {
     const Step3dValues v = normalized_values(values[static_cast<std::size_t>(i)], s,
                                              detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
-    local[static_cast<std::size_t>(i)] = detail::local_step_3d_residual(normalized_point(p, i, s), v);
+    local[static_cast<std::size_t>(i)] =
+        detail::local_step_3d_residual(detail::normalized_step_3d(p.point_problem(i), s), v);
     DP.segment<3>(3 * i) << v.DP_T, v.DP_N;
     Dw.segment<3>(3 * i) << v.Dw_T, v.Dw_N;
   }
-  const Mat A = p.system.A / s.K0;
-  const Vec eq = p.DF / s.F0 - DP - A * Dw;
+  const Mat A = p.system.A / s.stiffness;
+  const Vec eq = p.DF / s.force - DP - A * Dw;
   equilibrium = eq.cwiseAbs().maxCoeff() /
                 (1 + DP.cwiseAbs().maxCoeff() + (A.cwiseAbs() * Dw.cwiseAbs()).maxCoeff());
   if (!std::isfinite(equilibrium)) equilibrium = kInf;
@@ -435,7 +350,7 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
   double eq = kInf;
   if (!residual_terms(p, values, local, eq))
     throw InputError("step: make_system_step_3d_solution: sizes do not match the system");
-  const Scales s = scales_of(p);
+  const detail::Units s = scales_of(p);
   out.residual = eq;
   for (int i = 0; i < p.n_points(); ++i) {
     const Step3dValues& uv = values[static_cast<std::size_t>(i)];
@@ -481,8 +396,8 @@ SystemStep3dSolveResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& p
   }
   SystemStep3dSolveResult out;
   out.solver = "fb-soc";
-  newton(problem, n, z, options, out);
-  out.seconds = seconds_since(t0);
+  detail::newton_3d<Vec, Mat>(SystemKernel{problem, n}, z, options, out);
+  out.seconds = detail::seconds_since(t0);
   return out;
 }
 
@@ -496,9 +411,9 @@ SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& pro
   std::vector<SystemStep3dSolution> sols;
   int ok = 0;
   for (int i = 0; i <= n_starts; ++i) {
-    const Vec z = i == 0 ? n.z0 : random_start(n, rng);
+    const Vec z = i == 0 ? n.z0 : detail::random_start_3d<Vec>(SystemKernel{problem, n}, rng);
     SystemStep3dSolveResult r;
-    newton(problem, n, z, o, r);
+    detail::newton_3d<Vec, Mat>(SystemKernel{problem, n}, z, o, r);
     if (r.status != Status::kSolved) continue;
     ++ok;
     bool dup = false;

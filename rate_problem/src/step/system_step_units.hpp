@@ -7,6 +7,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
+#include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate::detail {
 
@@ -15,10 +16,6 @@ namespace cpkit::rate::detail {
 /// (forces / f, lengths / l, A l / f, C_T f / l, k_a f), so enumerating in these units makes
 /// every tolerance unit-free and keeps loads near the ends of double's range representable
 /// (issue 24, items 4 and 5).
-struct Units {
-  double f = 1, l = 1;
-};
-
 inline Units step_units(const SystemStepProblem& p) {
   const ContactSystem& s = p.system;
   const double amax = s.A.cwiseAbs().maxCoeff();
@@ -30,10 +27,11 @@ inline Units step_units(const SystemStepProblem& p) {
   if (!(f > 0)) f = amax * gmax;  // no force at all: the force that closes the largest gap
   if (!(f > 0) || !std::isfinite(f)) f = amax;  // nothing but A: every unknown is zero
   Units u;
-  u.f = f;
+  u.force = f;
+  u.stiffness = amax;
   // f / amax beyond double's range: the nearest representable length unit (the solution may
   // still fit; from_units says when it does not)
-  u.l = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
+  u.length = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
                  std::numeric_limits<double>::max());
   return u;
 }
@@ -46,14 +44,14 @@ inline Units step_units(const SystemStepProblem& p) {
 
 inline SystemStepProblem to_units(const SystemStepProblem& p, const Units& u) {
   SystemStepProblem q = p;
-  q.system.A = p.system.A * (u.l / u.f);
-  q.DF = p.DF / u.f;
+  q.system.A = p.system.A * (u.length / u.force);
+  q.DF = p.DF / u.force;
   for (auto& x : q.system.points) {
-    x.P_N /= u.f;
-    x.P_T /= u.f;
-    x.g /= u.l;
-    x.C_T *= u.f / u.l;
-    x.k_a *= u.f;
+    x.P_N /= u.force;
+    x.P_T /= u.force;
+    x.g /= u.length;
+    x.C_T *= u.force / u.length;
+    x.k_a *= u.force;
   }
   if (!q.system.A.allFinite() || !q.DF.allFinite()) not_representable("A or DF in units of the load");
   for (const auto& x : q.system.points)
@@ -64,8 +62,8 @@ inline SystemStepProblem to_units(const SystemStepProblem& p, const Units& u) {
 }
 
 inline void from_units(StepValues& v, const Units& u) {
-  for (double* x : {&v.DP_T, &v.DP_N, &v.P_T1, &v.P_N1}) *x *= u.f;
-  for (double* x : {&v.Dw_T, &v.Dw_N, &v.Dw_Ti, &v.Dw_w, &v.g1}) *x *= u.l;
+  for (double* x : {&v.DP_T, &v.DP_N, &v.P_T1, &v.P_N1}) *x *= u.force;
+  for (double* x : {&v.Dw_T, &v.Dw_N, &v.Dw_Ti, &v.Dw_w, &v.g1}) *x *= u.length;
   for (double x : {v.DP_T, v.DP_N, v.P_T1, v.P_N1, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.g1})
     if (!std::isfinite(x)) not_representable("a solution's forces or displacements overflow");
 }

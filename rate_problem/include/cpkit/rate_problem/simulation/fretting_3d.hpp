@@ -33,6 +33,7 @@
 #include "cpkit/rate_problem/model/branch_rule.hpp"
 #include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::rate {
 
@@ -122,7 +123,7 @@ struct Fretting3dOptions {
 };
 
 struct Fretting3dResult {
-  enum class Outcome { kCompleted, kNoSolution, kAmbiguous, kBranchStop, kNumericalFailure };
+  using Outcome = SimulationOutcome;  ///< never kContinuum
   Outcome outcome = Outcome::kCompleted;
   std::string message;  ///< for a stop: time, state and why
   long steps = 0;
@@ -148,7 +149,6 @@ struct Fretting3dResult {
   double min_step_dissipation = 0;   ///< most negative D / scale met (0: none negative)
   double max_residual = 0;           ///< largest step_3d_residual accepted
 };
-std::string_view to_string(Fretting3dResult::Outcome o) noexcept;
 
 /// Runs the march. Throws InputError for invalid options or load.
 Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& options);

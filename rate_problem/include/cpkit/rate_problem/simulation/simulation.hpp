@@ -69,10 +69,19 @@ struct BranchPoint {
   SolutionType chosen = SolutionType::kStick;
 };
 
+/// How a simulation ended (every march: one 2-D point, N points, the 3-D fretting).
+/// kContinuum: the step's solutions form a continuum (2-D, degenerate data); kAmbiguous: a
+/// step that is not proved complete and the rule could not choose (3-D); kNumericalFailure: a
+/// state or an energy left the range of double (data near 1e300): the run stops before that
+/// step, never "completed" with inf/NaN in its results.
+enum class SimulationOutcome {
+  kCompleted, kNoSolution, kContinuum, kAmbiguous, kBranchStop, kNumericalFailure
+};
+/// "completed", "no_solution", "continuum", "ambiguous", "branch_stop", "numerical_failure".
+std::string_view to_string(SimulationOutcome o) noexcept;
+
 struct SimulationResult {
-  /// kNumericalFailure: a state or an energy left the range of double (data near 1e300); the
-  /// run stops before that step, never "completed" with inf/NaN in its results.
-  enum class Outcome { kCompleted, kNoSolution, kContinuum, kBranchStop, kNumericalFailure };
+  using Outcome = SimulationOutcome;
   Outcome outcome = Outcome::kCompleted;
   std::string message;           ///< for a stop: time, state and why
   long steps = 0;                ///< steps completed
@@ -94,7 +103,6 @@ struct SimulationResult {
   double max_temperature = 0;
   double max_residual = 0;       ///< largest step NCP residual accepted
 };
-std::string_view to_string(SimulationResult::Outcome o) noexcept;
 
 /// Runs the simulation. Throws InputError for invalid options or history.
 SimulationResult simulate(const LoadHistory& history, const SimulationOptions& options);
