@@ -4,6 +4,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -42,6 +43,14 @@ nlohmann::json run_echo();
 inline void print_json(nlohmann::json j) {
   if (j.is_object() && !j.contains("run")) j["run"] = run_echo();
   std::cout << json_text(j) << std::endl;
+}
+
+/// `value` (the variable option `name` of `cmd` is bound to) when the user gave the option,
+/// else nothing: how a request's optional fields are filled, so that the library tells "not
+/// given" from a value without knowing the option's spelling.
+template <class T>
+std::optional<T> if_given(const CLI::App& cmd, const std::string& name, const T& value) {
+  return cmd.count(name) > 0 ? std::optional<T>(value) : std::nullopt;
 }
 
 /// Prints a library outcome (`to_json` of it with --json, else `to_text`) and returns its

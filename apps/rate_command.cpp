@@ -32,25 +32,19 @@ namespace cpkit::cli {
 namespace {
 
 struct RateArgs {
-  rate::RateRequest request;
-  ModelArgs model;  ///< the shared model option group, copied into the request
+  rate::RateRequest request;  ///< the options whose value says whether they were given
+  ModelArgs model;            ///< the shared model option group
+  std::string state;          ///< --state
+  int sgn_PT = 1;             ///< --sgnPT
   bool json = false;
 };
 
-/// The one library call: the request as given (which options were given included), then print.
+/// The one library call: the request as given (the options not given left empty), then print.
 int run_rate(RateArgs& a, const CLI::App& cmd) {
   rate::RateRequest& r = a.request;
-  const ModelArgs& m = a.model;
-  r.params.a11 = m.a11;
-  r.params.a12 = m.a12;
-  r.params.a22 = m.a22;
-  r.params.mu = m.mu;
-  r.params.C_T = m.C_T;
-  r.params.k_a = m.k_a;
-  r.params.P_s = m.P_s;
-  r.criterion = a.model.criterion;
-  for (const CLI::Option* o : cmd.get_options())
-    if (o->count() > 0) r.options_given.push_back(o->get_name());
+  r.model = given_model_options(cmd, a.model);
+  r.state = if_given(cmd, "--state", a.state);
+  r.sgn_PT = if_given(cmd, "--sgnPT", a.sgn_PT);
   const rate::RateOutcome out = rate::run_rate_request(
       r, [](const std::string& note) { std::cerr << "cpkit rate: " << note << '\n'; });
   if (a.json)
@@ -68,12 +62,12 @@ void add_rate_command(CLI::App& app, Context& ctx) {
   rate::RateRequest& r = args->request;
   auto* cmd = app.add_subcommand(
       "rate", "Rate problem of the one-point contact problem [Stromberg et al. 1996, Sec. 4.3]");
-  cmd->add_option("--state", r.state, "contact state: a (open), b (grazing), c (stick), d (sliding)");
+  cmd->add_option("--state", args->state, "contact state: a (open), b (grazing), c (stick), d (sliding)");
   add_model_options(*cmd, args->model);
   // required for one point only; checked by run_rate_request (with --system: from the file)
   for (const char* n : {"--a11", "--a12", "--a22", "--mu"}) cmd->get_option(n)->required(false);
   cmd->add_option("--P_N", r.P_N, "normal force in states c/d (> 0)")->default_str("");
-  cmd->add_option("--sgnPT", r.sgn_PT, "sign of P_T in state d (+1 or -1)");
+  cmd->add_option("--sgnPT", args->sgn_PT, "sign of P_T in state d (+1 or -1)");
   cmd->add_option("--dF", r.dF,
                   "load rate: DFT DFN (one point); 2N numbers T_1 N_1 T_2 N_2 ... "
                   "with --system (default: the file's dF); --DF is accepted too")

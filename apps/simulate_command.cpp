@@ -18,6 +18,7 @@
 // (N points, 3-D), 2 bad input (also an output file that cannot be written), 4 the figures
 // were asked for and are missing.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli_common.hpp"
@@ -65,26 +66,34 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--config", a->config, "JSON settings (docs/examples/fretting.json)");
   cmd->add_option("--system", a->system,
                   "N-point system file (docs/file_formats.md): simulate N points (docs/simulation.md)");
+  using N = rate::SimulateNumbers;
   struct NumOpt {
     const char* name;
     const char* help;
+    std::optional<double> N::*field;
   };
   static const NumOpt nums[] = {
-      {"a11", "stiffness A11"}, {"a12", "stiffness A12"}, {"a22", "stiffness A22"},
-      {"mu", "friction coefficient"}, {"C_T", "tangential compliance"},
-      {"k_a", "Archard wear coefficient"}, {"P_s", "hardness"},
-      {"k_M", "Mroz-Stupkiewicz wear constant"}, {"F_N", "fretting: normal load"},
-      {"amplitude", "fretting: tangential load amplitude"}, {"period", "fretting/csv: period"},
-      {"cycles", "fretting: number of cycles"}, {"steps-per-cycle", "fretting: steps per cycle"},
-      {"ramp-steps", "fretting: steps of the initial normal-load ramp"},
-      {"F_T0", "ramp: initial F_T"}, {"F_N0", "ramp: initial F_N"},
-      {"F_T1", "ramp: final F_T"}, {"F_N1", "ramp: final F_N"}, {"duration", "ramp: duration"},
-      {"steps", "ramp: steps"}, {"heat-capacity", "heat capacity per area C"},
-      {"T-ref", "reference temperature T0"}, {"T-initial", "initial interface temperature"}};
+      {"--a11", "stiffness A11", &N::a11}, {"--a12", "stiffness A12", &N::a12},
+      {"--a22", "stiffness A22", &N::a22}, {"--mu", "friction coefficient", &N::mu},
+      {"--C_T", "tangential compliance", &N::C_T},
+      {"--k_a", "Archard wear coefficient", &N::k_a}, {"--P_s", "hardness", &N::P_s},
+      {"--k_M", "Mroz-Stupkiewicz wear constant", &N::k_M},
+      {"--F_N", "fretting: normal load", &N::F_N},
+      {"--amplitude", "fretting: tangential load amplitude", &N::amplitude},
+      {"--period", "fretting/csv: period", &N::period},
+      {"--cycles", "fretting: number of cycles", &N::cycles},
+      {"--steps-per-cycle", "fretting: steps per cycle", &N::steps_per_cycle},
+      {"--ramp-steps", "fretting: steps of the initial normal-load ramp", &N::ramp_steps},
+      {"--F_T0", "ramp: initial F_T", &N::F_T0}, {"--F_N0", "ramp: initial F_N", &N::F_N0},
+      {"--F_T1", "ramp: final F_T", &N::F_T1}, {"--F_N1", "ramp: final F_N", &N::F_N1},
+      {"--duration", "ramp: duration", &N::duration}, {"--steps", "ramp: steps", &N::steps},
+      {"--heat-capacity", "heat capacity per area C", &N::heat_capacity},
+      {"--T-ref", "reference temperature T0", &N::T_ref},
+      {"--T-initial", "initial interface temperature", &N::T_initial}};
   for (const auto& n : nums) {
-    const std::string key = n.name;
-    cmd->add_option_function<double>("--" + key, [a, key](const double& v) { a->num[key] = v; },
-                                     n.help);
+    const auto field = n.field;
+    cmd->add_option_function<double>(
+        n.name, [a, field](const double& v) { a->numbers.*field = v; }, n.help);
   }
   cmd->add_option("--criterion", a->criterion, "38 (Coulomb, default) or 35 (softening)");
   cmd->add_option("--wear-law", a->wear_law, "archard (default) or mroz");

@@ -13,6 +13,8 @@
 // options, fills the request, makes the one call and prints.
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "model_options.hpp"
@@ -21,9 +23,42 @@
 #include "cpkit/rate_problem/step/step_request.hpp"
 
 namespace cpkit::cli {
+namespace {
+
+/// The values the options are bound to (defaults: those --help shows).
+struct StepArgs {
+  ModelArgs model;
+  std::string wear_law = "archard";
+  double k_M = 0, P_T0 = 0, P_N0 = 0, g0 = 0;
+  std::vector<double> DF;
+  bool all = false;
+  std::string chain = rate::kDefaultStepChain;
+  std::string system;
+  int facets = 0, multistart = 0;
+};
+
+/// The request: the options given, no other.
+rate::StepRequest step_request(const CLI::App& cmd, const StepArgs& a) {
+  rate::StepRequest r;
+  r.model = given_model_options(cmd, a.model);
+  r.wear_law = if_given(cmd, "--wear-law", a.wear_law);
+  r.k_M = if_given(cmd, "--k_M", a.k_M);
+  r.P_T0 = if_given(cmd, "--P_T0", a.P_T0);
+  r.P_N0 = if_given(cmd, "--P_N0", a.P_N0);
+  r.g0 = if_given(cmd, "--g0", a.g0);
+  r.DF = a.DF;
+  r.all = a.all;
+  r.chain = if_given(cmd, "--chain", a.chain);
+  r.system = a.system;
+  r.facets = if_given(cmd, "--facets", a.facets);
+  r.multistart = if_given(cmd, "--multistart", a.multistart);
+  return r;
+}
+
+}  // namespace
 
 void add_step_command(CLI::App& app, Context& ctx) {
-  auto args = std::make_shared<rate::StepRequest>();
+  auto args = std::make_shared<StepArgs>();
   auto json = std::make_shared<bool>(false);
   auto* cmd = app.add_subcommand(
       "step", "One implicit time step of the one-point contact problem with friction and wear "
@@ -57,11 +92,7 @@ void add_step_command(CLI::App& app, Context& ctx) {
                   "3-D file: distinct verified solutions from N + 1 starts (FB-SOC, Ipopt)")
       ->default_str("");
   cmd->callback([args, json, &ctx, cmd]() {
-    rate::StepRequest request = *args;
-    for (const CLI::Option* o : cmd->get_options())
-      if (o->count() > 0 && !o->get_lnames().empty())
-        request.options_given.push_back("--" + o->get_lnames().front());
-    const rate::StepOutcome out = rate::run_step_request(request);
+    const rate::StepOutcome out = rate::run_step_request(step_request(*cmd, *args));
     if (*json) print_json(rate::step_outcome_json(out, CPKIT_VERSION));
     else std::cout << rate::step_text(out);
     for (const auto& e : out.errors) std::cerr << "cpkit step: " << e << '\n';

@@ -64,16 +64,8 @@ extern "C" int cpkit_system_rate(const char* system_json, int n_dF, const double
     request.system = "system_json";
     request.file = system_file(system_json);
     request.dF = load(n_dF, dF);
-    request.options_given = {"--system"};
-    if (n_dF > 0) request.options_given.push_back("--dF");
-    if (method != nullptr) {
-      request.method = method;
-      request.options_given.push_back("--method");
-    }
-    if (facets != 0) {
-      request.facets = facets;
-      request.options_given.push_back("--facets");
-    }
+    if (method != nullptr) request.method = method;
+    request.facets = facets;
     const rate::RateOutcome outcome = rate::run_rate_request(request);
     notes_message(out, outcome.notes);
     *solution_json = c_text(rate::rate_outcome_json(outcome, CPKIT_VERSION));
@@ -90,12 +82,10 @@ extern "C" int cpkit_system_step(const char* system_json, int n_dF, const double
     request.system = "system_json";
     request.file = system_file(system_json);
     request.DF = load(n_dF, dF);
-    request.options_given = {"--system", "--dF"};
     // Every solution where a complete enumeration exists (2-D systems, one 3-D point); N coupled
     // 3-D points have none: their default chain (fb-soc) answers.
     const nlohmann::json& points = request.file->document.value("points", nlohmann::json());
     request.all = request.file->dim == 2 || (points.is_array() && points.size() == 1);
-    if (request.all) request.options_given.push_back("--all");
     const rate::StepOutcome outcome = rate::run_step_request(request);
     notes_message(out, outcome.errors);
     *solution_json = c_text(rate::step_outcome_json(outcome, CPKIT_VERSION));

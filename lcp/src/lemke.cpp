@@ -10,6 +10,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/log.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
 #include "lemke_run.hpp"
@@ -592,11 +593,6 @@ SolveResult LemkeRun::run() {
 std::string LemkeOptions::validate(Eigen::Index n) const {
   if (auto m = common.validate(); !m.empty()) return m;
   // Messages are built only on error (this runs on every solve).
-  auto num = [](double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  };
   if (covering.size() != 0) {
     if (covering.size() != n)
       return "covering vector has size " + std::to_string(covering.size()) + ", expected " +
@@ -604,7 +600,7 @@ std::string LemkeOptions::validate(Eigen::Index n) const {
     for (Eigen::Index i = 0; i < n; ++i)
       if (!(covering[i] > 0) || !std::isfinite(covering[i]))
         return "covering vector entry " + std::to_string(i) +
-               " must be positive and finite (got " + num(covering[i]) + ")";
+               " must be positive and finite (got " + num_text(covering[i]) + ")";
   }
   if (!warm_basis.empty()) {
     if (static_cast<Eigen::Index>(warm_basis.size()) != n)

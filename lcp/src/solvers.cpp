@@ -10,7 +10,7 @@
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
-#include "cpkit/lcp/soc_fb.hpp"
+#include "cpkit/lcp/cone_complementarity_fb.hpp"
 
 namespace cpkit::lcp {
 namespace {

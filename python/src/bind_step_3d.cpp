@@ -161,9 +161,7 @@ pyb::dict simulate_fretting_3d(const pyb::object& point, double F_N, double a_X,
   throw_if_invalid(orbit.validate(), "orbit");
   rate::Fretting3dOptions o;
   o.params = params_from(point);
-  const auto w = rate::wear_law_from_string(wear_law);
-  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
-  o.wear = rate::WearModel{*w, k_M};
+  o.wear = wear_from(wear_law, k_M);
   const auto br = rate::branch_rule_from_string(branch_rule);
   if (!br) throw InputError("branch_rule must be 'closest' or 'stop', got '" + branch_rule + "'");
   o.branch_rule = *br;

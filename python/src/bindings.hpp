@@ -9,6 +9,7 @@ void bind_mcp(pybind11::module_& m);
 void bind_rate(pybind11::module_& m);
 void bind_maps(pybind11::module_& m);
 void bind_step(pybind11::module_& m);
+void bind_simulation(pybind11::module_& m);  // simulate, load histories (bind_simulation.cpp)
 void bind_system(pybind11::module_& m);
 void bind_system_rate(pybind11::module_& m);
 void bind_rate_3d(pybind11::module_& m);   // the 3-D rate problem (bind_rate_3d.cpp)

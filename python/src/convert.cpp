@@ -126,6 +126,12 @@ double number_attr(const pyb::handle& o, const char* name) {
 }
 }  // namespace
 
+rate::WearModel wear_from(const std::string& law, double k_M) {
+  const auto w = rate::wear_law_from_string(law);
+  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + law + "'");
+  return rate::WearModel{*w, k_M};
+}
+
 rate::ContactParameters parameters_from(const pyb::handle& o) {
   rate::ContactParameters p;
   p.a11 = number_attr(o, "a11");

@@ -15,6 +15,7 @@
 #include "cpkit/rate_problem/model/contact_state.hpp"
 #include "cpkit/rate_problem/model/parameters.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
+#include "cpkit/rate_problem/model/wear.hpp"
 
 namespace cpkit::py {
 
@@ -76,6 +77,10 @@ rate::ContactParameters parameters_from(const pyb::handle& o);
 /// ContactState from an object with label ("a".."d"), P_N, sgn_PT (cpkit.ContactState), or a
 /// bare label string. Validated against `params`.
 rate::ContactState state_from(const pyb::handle& o, const rate::ContactParameters& params);
+
+/// The wear law by its Python name ("archard", "mroz-stupkiewicz") with the Mroz-Stupkiewicz
+/// constant k_M; InputError (ValueError) for another name.
+rate::WearModel wear_from(const std::string& law, double k_M);
 
 /// Rates as a dict {dP_T, dP_N, dw_T, dw_N, dw_Ti, dw_w} (the CLI's JSON names).
 pyb::dict to_dict(const rate::Rates& r);

@@ -15,6 +15,7 @@ PYBIND11_MODULE(_cpkit, m) {
   cpkit::py::bind_rate(m);
   cpkit::py::bind_maps(m);
   cpkit::py::bind_step(m);
+  cpkit::py::bind_simulation(m);
   cpkit::py::bind_system(m);
   cpkit::py::bind_system_rate(m);
   cpkit::py::bind_rate_3d(m);

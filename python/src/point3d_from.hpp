@@ -73,9 +73,7 @@ inline rate::Step3dProblem step_problem(const pyb::object& point, const pyb::obj
                                    const std::string& wear_law, double k_M) {
   rate::Step3dProblem p;
   p.params = params_from(point);
-  const auto w = rate::wear_law_from_string(wear_law);
-  if (!w) throw InputError("wear_law must be 'archard' or 'mroz-stupkiewicz', got '" + wear_law + "'");
-  p.wear = rate::WearModel{*w, k_M};
+  p.wear = wear_from(wear_law, k_M);
   p.state.P_T0 = vec2(P_T0, "P_T0");
   p.state.P_N0 = P_N0;
   p.state.g0 = g0;

@@ -485,7 +485,6 @@ TEST_CASE("C API: a system's rate problem and step as JSON", "[capi]") {
   const int code = cpkit_system_rate(text.c_str(), 0, nullptr, nullptr, 0, &json, &info);
   cpkit::rate::RateRequest request;
   request.system = path;
-  request.options_given = {"--system"};
   const cpkit::rate::RateOutcome direct = cpkit::rate::run_rate_request(request);
   REQUIRE(json != nullptr);
   CHECK(code == static_cast<int>(direct.exit_code));

@@ -123,11 +123,10 @@ TEST_CASE("cpkit rate's request at exact critical loads: exit 0 (1 with no solut
   for (const Row& r : kRows) {
     RateRequest q;
     q.state = std::string(1, r.state);
-    q.params = params_of(r);
+    q.model = {r.a11, r.a12, r.a22, r.mu, r.C_T, r.k_a, r.P_s, std::nullopt};
     q.P_N = r.P_N;
-    q.sgn_PT = r.sgn_PT;
+    if (r.state == 'd') q.sgn_PT = r.sgn_PT;  // --sgnPT applies to state d only
     q.dF = {r.dF_T, r.dF_N};
-    q.options_given = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF"};
     const RateOutcome out = run_rate_request(q);
     CAPTURE(r.state, r.a11, r.a12, r.a22, r.mu, r.C_T, r.dF_T, r.dF_N, r.line, r.types);
     CHECK(out.exit_code == (r.count == 0 ? cpkit::kExitNoSolution : cpkit::kExitOk));

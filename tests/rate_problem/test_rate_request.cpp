@@ -23,12 +23,11 @@ namespace {
 RateRequest fig5b() {
   RateRequest r;
   r.state = "b";
-  r.params.a11 = 1;
-  r.params.a12 = 2;
-  r.params.a22 = 5;
-  r.params.mu = 1;
+  r.model.a11 = 1;
+  r.model.a12 = 2;
+  r.model.a22 = 5;
+  r.model.mu = 1;
   r.dF = {1, 1.2};
-  r.options_given = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF"};
   return r;
 }
 
@@ -107,13 +106,12 @@ TEST_CASE("rate request: no solution exits 1 (state d, Lambda < 0, L_+ > 0)", "[
   // L_+ = dF_T - mu dF_N = 4 - 3 = 1 > 0: stick needs L_+ <= 0, slip needs L_+/Lambda > 0.
   RateRequest r;
   r.state = "d";
-  r.params.a11 = 1;
-  r.params.a12 = 0.5;
-  r.params.a22 = 1;
-  r.params.mu = 3;
+  r.model.a11 = 1;
+  r.model.a12 = 0.5;
+  r.model.a22 = 1;
+  r.model.mu = 3;
   r.P_N = 1;
   r.dF = {4, 1};
-  r.options_given = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF", "--P_N"};
   const RateOutcome out = run_rate_request(r);
   CHECK(out.exit_code == cpkit::kExitNoSolution);
   CHECK(out.one_point->set.count() == 0);
@@ -135,10 +133,10 @@ TEST_CASE("rate request: a load exactly on a critical direction is decided exact
   // dP_N = N / D_s = 0; L_+ = a11 - mu a12 = D_+ > 0: slip+ with lambda = L_+ / D_+ = 1;
   // L_- < 0 < D_-: no slip-; L_+ > 0: no stick. One slip+ with dP = 0, dw_T^i = 1.
   RateRequest r = fig5b();
-  r.params.a11 = 1.0142831963176735;
-  r.params.a12 = 0.8450714454408795;
-  r.params.a22 = 1.2075902949448927;
-  r.params.mu = 1.038170126179592;
+  r.model.a11 = 1.0142831963176735;
+  r.model.a12 = 0.8450714454408795;
+  r.model.a22 = 1.2075902949448927;
+  r.model.mu = 1.038170126179592;
   r.dF = {1.0142831963176735, 0.8450714454408795};
   const RateOutcome out = run_rate_request(r);
   CHECK(out.exit_code == cpkit::kExitOk);
@@ -153,11 +151,11 @@ TEST_CASE("rate request: a load exactly on a critical direction is decided exact
 
 TEST_CASE("rate request: refusals name the option", "[rate][request]") {
   RateRequest r = fig5b();
-  r.options_given.push_back("--sgnPT");
+  r.sgn_PT = 1;
   CHECK(refusal(r) ==
         "--sgnPT has no effect in state b: only state d (sliding) has a sign of P_T");
   r = fig5b();
-  r.options_given.pop_back();  // no --dF
+  r.dF.clear();  // no --dF
   CHECK(refusal(r) == "--dF is required (or give --system FILE)");
   r = fig5b();
   r.method = "simplex";
@@ -170,10 +168,10 @@ TEST_CASE("rate request: refusals name the option", "[rate][request]") {
   r.state = "e";
   CHECK(refusal(r) == "--state must be a, b, c or d, got 'e'");
   r = fig5b();
-  r.criterion = "36";
+  r.model.criterion = "36";
   CHECK(refusal(r) == "--criterion must be 38 or 35, got '36'");
   r = fig5b();
-  r.params.a22 = 1;  // det A = 1 - 4 < 0
+  r.model.a22 = 1;  // det A = 1 - 4 < 0
   CHECK(refusal(r).find("contact parameters") == 0);
   r = fig5b();
   r.facets = 8;
@@ -187,8 +185,7 @@ TEST_CASE("rate request: refusals name the option", "[rate][request]") {
 
 TEST_CASE("rate request: a material parameter that does not enter the state is noted", "[rate][request]") {
   RateRequest r = fig5b();
-  r.params.k_a = 0.1;
-  r.options_given.push_back("--k_a");
+  r.model.k_a = 0.1;
   std::vector<std::string> notes;
   const RateOutcome out = run_rate_request(r, [&](const std::string& n) { notes.push_back(n); });
   CHECK(out.exit_code == cpkit::kExitOk);
@@ -231,7 +228,6 @@ TEST_CASE("rate request: two decoupled points are the product of their one-point
                       "docs/contact_3d.md); " + path + " is a 2-D system");
   r.facets = 0;
   r.dF = {1, 2, 3};
-  r.options_given = {"--dF"};
   CHECK(refusal(r) == "--dF needs 2N = 4 numbers (T_1 N_1 T_2 N_2 ...) for the 2 points of " +
                           path + ", got 3");
   std::filesystem::remove(path);

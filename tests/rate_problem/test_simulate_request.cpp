@@ -61,7 +61,10 @@ std::string slurp(const std::string& path) {
 /// a11 = a22 = 1, a12 = 0, mu = 0.5: the model of the hand calculation.
 SimulateRequest one_point() {
   SimulateRequest r;
-  r.num = {{"a11", 1}, {"a12", 0}, {"a22", 1}, {"mu", 0.5}};
+  r.numbers.a11 = 1;
+  r.numbers.a12 = 0;
+  r.numbers.a22 = 1;
+  r.numbers.mu = 0.5;
   return r;
 }
 
@@ -82,7 +85,9 @@ const std::string kPoint3d = CPKIT_SOURCE_DIR "/docs/examples/fretting_point_3d.
 TEST_CASE("simulate request: one point, two slip steps as by hand", "[simulate_request]") {
   SimulateRequest r = one_point();
   r.load = "ramp";
-  r.num.insert({{"F_T1", 1}, {"F_N1", 1}, {"steps", 2}});
+  r.numbers.F_T1 = 1;
+  r.numbers.F_N1 = 1;
+  r.numbers.steps = 2;
   r.csv = (scratch() / "ramp.csv").string();
   r.run = {{"echo", "given"}};
   const SimulateOutcome o = run_simulate_request(r);
@@ -121,7 +126,8 @@ TEST_CASE("simulate request: a normal load alone sticks, nothing is written with
           "[simulate_request]") {
   SimulateRequest r = one_point();
   r.load = "ramp";
-  r.num.insert({{"F_N1", 1}, {"steps", 4}});
+  r.numbers.F_N1 = 1;
+  r.numbers.steps = 4;
   const SimulateOutcome o = run_simulate_request(r);
   CHECK(o.exit_code == cpkit::kExitOk);
   CHECK(o.summary["final"]["P_N"] == 1.0);  // DP = DF: Dw = 0 in stick with no wear
@@ -136,7 +142,9 @@ TEST_CASE("simulate request: criterion (35) stops at condition (46), exit 1",
   // docs/simulation.md: P_N <= 3 P_s mu / k_a = 3 * 1 * 0.5 / 0.3 = 5; the ramp's P_N = F_N
   // rises by 10 / 100 a step, so step 51 (P_N = 5.1) has no solution.
   SimulateRequest r = one_point();
-  r.num.insert({{"k_a", 0.3}, {"F_N1", 10}, {"steps", 100}});
+  r.numbers.k_a = 0.3;
+  r.numbers.F_N1 = 10;
+  r.numbers.steps = 100;
   r.criterion = "35";
   r.load = "ramp";
   const SimulateOutcome o = run_simulate_request(r);
@@ -175,7 +183,9 @@ TEST_CASE("simulate request: one 3-D point runs lead + ramp + cycles x steps ste
   r.system = kPoint3d;
   r.orbit = {1, 1};
   r.lead_steps = 2;
-  r.num = {{"cycles", 1}, {"steps-per-cycle", 8}, {"ramp-steps", 2}};
+  r.numbers.cycles = 1;
+  r.numbers.steps_per_cycle = 8;
+  r.numbers.ramp_steps = 2;
   const SimulateOutcome o = run_simulate_request(r);
   CHECK(o.exit_code == cpkit::kExitOk);
   CHECK(o.summary["dim"] == 3);
@@ -187,12 +197,12 @@ TEST_CASE("simulate request: one 3-D point runs lead + ramp + cycles x steps ste
 
 TEST_CASE("simulate request: refused requests name the option", "[simulate_request]") {
   SimulateRequest r = one_point();
-  r.num.erase("a11");
+  r.numbers.a11.reset();
   CHECK(refusal(r) == "a11 is required (--a11 or parameters.a11 in --config)");
 
   r = one_point();
   r.load = "ramp";
-  r.num["F_N"] = 1;
+  r.numbers.F_N = 1;
   CHECK(refusal(r) == "--F_N has no effect here: it needs --load fretting (the load is ramp)");
 
   r = one_point();
@@ -200,11 +210,11 @@ TEST_CASE("simulate request: refused requests name the option", "[simulate_reque
   CHECK(refusal(r) == "--criterion must be 38 or 35, got '36'");
 
   r = one_point();
-  r.num["cycles"] = 1.5;
+  r.numbers.cycles = 1.5;
   CHECK(refusal(r) == "--cycles must be an integer in [-2147483648, 2147483647], got 1.5");
 
   r = one_point();
-  r.num["k_M"] = 0.1;
+  r.numbers.k_M = 0.1;
   CHECK_THAT(refusal(r), Contains("is the Mroz-Stupkiewicz wear constant: it needs the wear law"));
 
   r = one_point();
@@ -222,7 +232,7 @@ TEST_CASE("simulate request: refused requests name the option", "[simulate_reque
 
   // The step cap of docs/simulation.md: 10^9 ramp steps > 10^8.
   r = one_point();
-  r.num["ramp-steps"] = 1e9;
+  r.numbers.ramp_steps = 1e9;
   CHECK_THAT(refusal(r), Contains("kMaxSimulationSteps"));
 }
 
@@ -233,22 +243,22 @@ TEST_CASE("simulate request: a 3-D point refuses the 2-D options and bad orbits"
   CHECK(refusal(r) == "a \"dim\": 3 simulation needs --orbit aX aY (the half-axes of the "
                       "tangential load orbit)");
   r.orbit = {1, 1};
-  r.num["a11"] = 1;
+  r.numbers.a11 = 1;
   CHECK_THAT(refusal(r), Contains("--a11 has no effect with a \"dim\": 3 system"));
-  r.num.clear();
+  r.numbers = {};
   r.heat = true;
   CHECK_THAT(refusal(r), Contains("--heat has no effect with a \"dim\": 3 system"));
   r.heat = false;
   r.lead_steps = -1;
   CHECK(refusal(r) == "--lead-steps must be >= 0, got -1");
   r.lead_steps.reset();
-  r.num["cycles"] = 0;
+  r.numbers.cycles = 0;
   CHECK(refusal(r) == "--cycles must be an integer in [1, 2147483647], got 0");
-  r.num.clear();
-  r.num["k_M"] = 0.1;
+  r.numbers = {};
+  r.numbers.k_M = 0.1;
   CHECK(refusal(r) == "--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
   // Two points: the 3-D simulation is for one.
-  r.num.clear();
+  r.numbers = {};
   r.system = write("two3d.json", R"({"dim": 3, "A": [[1,0,0,0,0,0],[0,1,0,0,0,0],[0,0,1,0,0,0],
       [0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1]],
       "points": [{"state": "b", "mu": 0.5}, {"state": "b", "mu": 0.5}]})");
@@ -259,7 +269,8 @@ TEST_CASE("simulate request: outputs are checked before anything is written",
           "[simulate_request]") {
   SimulateRequest r = one_point();
   r.load = "ramp";
-  r.num.insert({{"F_N1", 1}, {"steps", 2}});
+  r.numbers.F_N1 = 1;
+  r.numbers.steps = 2;
   r.plot = (scratch() / "guarded").string();
   std::string seen_csv, seen_summary;
   const auto refuse = [&](const SimulateSettings& s) {
@@ -272,7 +283,7 @@ TEST_CASE("simulate request: outputs are checked before anything is written",
   CHECK(seen_summary.empty());
   CHECK(!fs::exists(r.plot + ".csv"));  // nothing written
   // A refused request writes no file either (the check comes before the series is opened).
-  r.num["mu"] = -1;
+  r.numbers.mu = -1;
   CHECK_THAT(refusal(r), Contains("mu"));
   CHECK(!fs::exists(r.plot + ".csv"));
   CHECK(!fs::exists(r.plot + ".json"));

@@ -22,8 +22,8 @@ using namespace cpkit::rate;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
-/// One 2-D point: A = [[a11, a12], [a12, a22]], mu, start (P_T0, P_N0, g0), load (DFT, DFN),
-/// every required option marked given.
+/// One 2-D point: A = [[a11, a12], [a12, a22]], mu, start (P_T0, P_N0, g0), load (DFT, DFN):
+/// every required option given.
 StepRequest point(double a11, double a12, double a22, double mu, double P_T0, double P_N0,
                   double g0, double DFT, double DFN) {
   StepRequest r;
@@ -35,19 +35,15 @@ StepRequest point(double a11, double a12, double a22, double mu, double P_T0, do
   r.P_N0 = P_N0;
   r.g0 = g0;
   r.DF = {DFT, DFN};
-  r.options_given = {"--a11", "--a12", "--a22", "--mu", "--P_T0", "--P_N0", "--g0", "--dF"};
   return r;
 }
 
 /// A request on a system file given as text (read once, as the program does).
-StepRequest with_file(const std::string& text, std::vector<double> DF,
-                      std::initializer_list<const char*> given = {}) {
+StepRequest with_file(const std::string& text, std::vector<double> DF) {
   StepRequest r;
   r.system = "sys.json";
   r.file = parse_system_file(text, "sys.json");
   r.DF = std::move(DF);
-  r.options_given = {"--system", "--dF"};
-  for (const char* g : given) r.options_given.emplace_back(g);
   return r;
 }
 
@@ -144,7 +140,6 @@ TEST_CASE("step request, one 2-D point beyond condition (46): no solution, exit 
   StepRequest r = point(1, 0, 1, 1, 0, 0.5, 0, 0, 1);
   r.model.k_a = 3;
   r.model.criterion = "35";
-  r.options_given.insert(r.options_given.end(), {"--k_a", "--criterion"});
   r.all = true;
   const StepOutcome out = run_step_request(r);
   CHECK(out.exit_code == cpkit::kExitNoSolution);
@@ -153,7 +148,7 @@ TEST_CASE("step request, one 2-D point beyond condition (46): no solution, exit 
 }
 
 TEST_CASE("step request, 3-D open point: the step is the open solution", "[step][step3d]") {
-  StepRequest r = with_file(kOpen3d, {0.2, -0.4, 0.4}, {"--g0", "--all"});
+  StepRequest r = with_file(kOpen3d, {0.2, -0.4, 0.4});
   r.g0 = -1;
   r.all = true;
   const StepOutcome out = run_step_request(r);
@@ -174,7 +169,6 @@ TEST_CASE("step request, 3-D open point: the step is the open solution", "[step]
   // --multistart: local solvers never prove completeness, but the open solution is found.
   r.all = false;
   r.multistart = 3;
-  r.options_given = {"--system", "--dF", "--g0", "--multistart"};
   const StepOutcome ms = run_step_request(r);
   CHECK(ms.exit_code == cpkit::kExitOk);
   CHECK_FALSE(ms.step_3d.set.complete);
@@ -184,7 +178,7 @@ TEST_CASE("step request, 3-D open point: the step is the open solution", "[step]
 
 TEST_CASE("step request, two coupled open 3-D points: each point's open step", "[step][step3d]") {
   // Block-diagonal A: each point is the open point above.
-  StepRequest r = with_file(kTwoOpen3d, {0.2, -0.4, 0.4, 0.2, -0.4, 0.4}, {"--g0"});
+  StepRequest r = with_file(kTwoOpen3d, {0.2, -0.4, 0.4, 0.2, -0.4, 0.4});
   r.g0 = -1;
   const StepOutcome out = run_step_request(r);
   CHECK(out.route == StepRoute::kSystem3d);
@@ -210,7 +204,7 @@ TEST_CASE("step request, 3-D point with a continuum of solutions: not proved com
   // count can be complete; the stick point P1 = (0.5, 0, 0.5) is a solution (Dw = 0).
   StepRequest r = with_file(R"({"name": "seg", "dim": 3, "A": [[1, 0, 1], [0, 3, 0], [1, 0, 2]],
                                 "points": [{"mu": 1, "state": "b"}]})",
-                            {0.5, 0, 0.5}, {"--all"});
+                            {0.5, 0, 0.5});
   r.all = true;
   const StepOutcome out = run_step_request(r);
   CHECK(out.exit_code == cpkit::kExitInconclusive);
@@ -234,17 +228,17 @@ TEST_CASE("step request: refused requests name the problem", "[step]") {
                 [0, 0, 0, 2, 0, 0], [0, 0, 0, 0, 2, 0], [0, 0, 0, 0, 0, 4]],
           "points": [{"mu": 0.5, "state": "b"}, {"mu": 0.5, "state": "b"}]})";
   StepRequest r = point(1, 0, 1, 1, 0, 1, 0, 0.1, 0.1);
-  r.options_given.push_back("--k_M");
+  r.k_M = 0;
   CHECK_THROWS_WITH(run_step_request(r),
                     "--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
   r = point(1, 0, 1, 1, 0, 1, 0, 0.1, 0.1);
-  r.options_given.erase(r.options_given.begin() + 6);  // --g0
+  r.g0.reset();  // no --g0
   CHECK_THROWS_WITH(run_step_request(r), "--g0 is required (or --system FILE for N points)");
   r = point(1, 0, 1, 1, 0, 1, 0, 0.1, 0.1);
   r.DF.push_back(0);
   CHECK_THROWS_WITH(run_step_request(r), "--dF needs two values: DFT DFN");
   r = point(1, 0, 1, 1, 0, 1, 0, 0.1, 0.1);
-  r.options_given.push_back("--facets");
+  r.facets = 0;
   CHECK_THROWS_WITH(run_step_request(r),
                     "--facets applies to a \"dim\": 3 --system file (one 3-D point)");
   r = point(1, 0, 1, 1, 0, 1, 0, 0.1, 0.1);
@@ -253,37 +247,48 @@ TEST_CASE("step request: refused requests name the problem", "[step]") {
 
   CHECK_THROWS_WITH(run_step_request(with_file(two_d, {0, 1})),
                     "--system needs --all (the N-point step reports every solution)");
-  CHECK_THROWS_WITH(run_step_request(with_file(two_d, {0, 1}, {"--all", "--a11"})),
+  r = with_file(two_d, {0, 1});
+  r.model.a11 = 0;
+  CHECK_THROWS_WITH(run_step_request(r),
                     "--a11 cannot be combined with --system (the system file gives every "
                     "point's parameters and state)");
-  r = with_file(two_d, {0, 1, 2}, {"--all"});
+  r = with_file(two_d, {0, 1, 2});
   r.all = true;
   CHECK_THROWS_WITH(run_step_request(r),
                     "--dF needs 2 numbers (DF_T, DF_N per point, 1 points), got 3");
 
   CHECK_THROWS_WITH(run_step_request(with_file(kOpen3d, {0, 0, 1})),
                     "the point is in state a (open): give its gap with --g0 G, G < 0");
-  CHECK_THROWS_WITH(run_step_request(with_file(b3, {0, 0, 1}, {"--g0"})),
+  r = with_file(b3, {0, 0, 1});
+  r.g0 = 0;
+  CHECK_THROWS_WITH(run_step_request(r),
                     "--g0 applies to a state-a (open) point; the point is in state b (in "
                     "contact, g0 = 0)");
-  r = with_file(b3, {0, 0, 1}, {"--wear-law", "--k_M"});
+  r = with_file(b3, {0, 0, 1});
   r.wear_law = "mroz";
+  r.k_M = 0;
   CHECK_THROWS_WITH(run_step_request(r),
                     "sys.json: the point's k_a (Archard) has no effect with --wear-law mroz: "
                     "remove it from the file or use --wear-law archard");
-  CHECK_THROWS_WITH(run_step_request(with_file(kOpen3d, {0, 0}, {"--g0"})),
+  r = with_file(kOpen3d, {0, 0});
+  r.g0 = 0;
+  CHECK_THROWS_WITH(run_step_request(r),
                     "--dF needs 3 numbers for a 3-D point (DF_TX DF_TY DF_N), got 2");
-  CHECK_THROWS_WITH(run_step_request(with_file(kOpen3d, {0, 0, 1}, {"--a11"})),
+  r = with_file(kOpen3d, {0, 0, 1});
+  r.model.a11 = 0;
+  CHECK_THROWS_WITH(run_step_request(r),
                     "--a11 cannot be combined with a \"dim\": 3 --system file (the file gives "
                     "the point's parameters and state)");
 
-  r = with_file(two_b3, {0, 0, 1, 0, 0, 1}, {"--all"});
+  r = with_file(two_b3, {0, 0, 1, 0, 0, 1});
   r.all = true;
   CHECK_THROWS_WITH(run_step_request(r),
                     "--all is not available for 2 coupled 3-D points: there is no complete "
                     "enumeration of the coupled 3-D step (only one point, N = 1, is enumerated "
                     "exactly); use --chain fb-soc (default) or --multistart N");
-  CHECK_THROWS_WITH(run_step_request(with_file(two_b3, {0, 0, 1, 0, 0, 1}, {"--g0"})),
+  r = with_file(two_b3, {0, 0, 1, 0, 0, 1});
+  r.g0 = 0;
+  CHECK_THROWS_WITH(run_step_request(r),
                     "--g0 applies to state-a (open) points; no point of this file is in state a");
   CHECK_THROWS_WITH(run_step_request(with_file(kTwoOpen3d, {0, 0, 1, 0, 0, 1})),
                     "point 1 is in state a (open): give the gap of the open points with --g0 G, "
@@ -291,7 +296,7 @@ TEST_CASE("step request: refused requests name the problem", "[step]") {
   CHECK_THROWS_WITH(run_step_request(with_file(two_b3, {0, 0, 1})),
                     "--dF needs 3N = 6 numbers for 2 3-D points (DF_TX DF_TY DF_N per point), "
                     "got 3");
-  r = with_file(two_b3, {0, 0, 1, 0, 0, 1}, {"--chain"});
+  r = with_file(two_b3, {0, 0, 1, 0, 0, 1});
   r.chain = "exact";
   CHECK_THROWS_WITH(run_step_request(r),
                     "--chain 'exact': for 2 coupled 3-D points the only link is fb-soc (exact "

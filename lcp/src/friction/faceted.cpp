@@ -6,12 +6,12 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/short_number.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/lemke.hpp"
 #include "friction_common.hpp"
-#include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
 namespace {
@@ -21,7 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 FacetedLcp faceted_lcp(const FrictionContactProblem& p, int k) {
-  helpers::check_problem(p);
+  detail::check_problem(p);
   if (k < 3 || k > 64) throw InputError("facets must be in [3, 64], got " + std::to_string(k));
   const Eigen::Index nc = p.contacts(), m = k + 2, N = nc * m;
   FacetedLcp f;
@@ -68,7 +68,7 @@ std::string FacetedLemkeOptions::validate() const {
 
 SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLemkeOptions& o) {
   Stopwatch clock;
-  helpers::check_problem(p);
+  detail::check_problem(p);
   throw_if_invalid(o.validate(), "faceted Lemke options");
   const Eigen::Index nc = p.contacts();
   if (nc > kFacetedMaxContacts) {
@@ -94,7 +94,7 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
   const SolveResult lcp = solve_lemke(f.lcp, lo);
   const std::string facets = std::to_string(o.facets) + " facets, facet error 1 - cos(pi/" +
                              std::to_string(o.facets) +
-                             ") = " + helpers::short_number(100 * f.facet_error) + " %";
+                             ") = " + short_number(100 * f.facet_error) + " %";
   SolveResult claim;
   claim.solver = "lemke";
   claim.iterations = lcp.iterations;
@@ -125,8 +125,8 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
   const FrictionErrors fe = friction_errors(p, faceted.z);
   faceted.message = "the faceted answer (" + facets + ", " + std::to_string(lcp.iterations) +
                     " pivots) on the true cone: unit-free error " +
-                    helpers::short_number(fe.unit_free) + ", relative_q " +
-                    helpers::short_number(fe.relative_q);
+                    short_number(fe.unit_free) + ", relative_q " +
+                    short_number(fe.relative_q);
   if (faceted.status == Status::kSolved || !o.polish) {
     if (!is_solution(faceted.status))
       faceted.message += "; not a solution of the true problem (polish off)";
@@ -145,7 +145,7 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
   best.iterations = lcp.iterations + (&best == &polished ? polished.iterations : 0);
   best.message = head + "; polished on the true cone from it (polish_on_true_cone): " +
                  std::string(to_string(polished.status)) + ", unit-free error " +
-                 helpers::short_number(polished.residuals.natural) +
+                 short_number(polished.residuals.natural) +
                  (&best == &polished ? " (returned: the polished r)"
                                      : " (returned: the faceted r, the polish did no better)");
   best.seconds = clock.seconds();

@@ -6,13 +6,13 @@
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
-#include "friction_helpers.hpp"
+#include "friction_common.hpp"
 
 namespace cpkit::lcp::friction {
 
 FacetedSolutionList faceted_solutions(const FrictionContactProblem& p, int k, double regularisation,
                                       double time_limit_s) {
-  helpers::check_problem(p);
+  detail::check_problem(p);
   const Eigen::Index nc = p.contacts();
   if (nc * (k + 2) > kMaxEnumerationSize)
     throw InputError("faceted enumeration: n_c (k + 2) = " + std::to_string(nc * (k + 2)) +
@@ -22,7 +22,7 @@ FacetedSolutionList faceted_solutions(const FrictionContactProblem& p, int k, do
   FacetedSolutionList out;
   out.faceted = faceted_lcp(p, k);
   const FrictionUnits units = friction_units(p);
-  const double eps = regularisation * helpers::w_scale(p.W, units);
+  const double eps = regularisation * detail::w_scale(p.W, units);
   for (Eigen::Index i = 0; i < nc; ++i)
     for (int j = 0; j <= k; ++j) out.faceted.lcp.M(i * (k + 2) + j, i * (k + 2) + j) += eps;
   EnumerationOptions eo;

@@ -9,7 +9,7 @@
 
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/timer.hpp"
-#include "cpkit/lcp/detail/soc_fb.hpp"
+#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 #include "friction_common.hpp"
 
 namespace cpkit::lcp::friction {

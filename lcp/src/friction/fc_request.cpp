@@ -124,7 +124,7 @@ void solve_global_once(const FcRequest& a, const CommonOptions& options, FcSolve
   const GlobalFrictionContactProblem& g = out.global_problem;
   out.global = solve_global(g, entry.info.name, options);
   const CondensedProblem& c = out.global.condensed;
-  out.proximal = !c.ok && c.message.rfind("M is singular", 0) == 0;
+  out.proximal = !c.ok && c.mass == MassMatrix::kSingular;
   if (out.proximal) out.global = solve_global_proximal(g, entry.info.name, options);
   out.problem = out.global.condensed.local;
   out.result = out.global.result;

@@ -1,13 +1,17 @@
 #pragma once
-// Internal helpers shared by h13's friction solvers (nsgs.cpp, fb_soc.cpp, auto.cpp).
+// Internal helpers of the friction solvers (lcp/src/friction/*.cpp): input checks, W's blocks and
+// size, the registry adapter.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_problem.hpp"
+#include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/registry.hpp"
 
@@ -24,6 +28,11 @@ inline void check_input(const FrictionContactProblem& p, const CommonOptions& o,
                      " finite entries (3 per contact), got " + std::to_string(r0.size()));
 }
 
+/// Throws InputError for an invalid problem.
+inline void check_problem(const FrictionContactProblem& p) {
+  throw_if_invalid(p.validate(), "friction problem" + (p.name.empty() ? "" : " '" + p.name + "'"));
+}
+
 /// The 3x3 diagonal blocks W_ii.
 inline std::vector<Mat3> diagonal_blocks(const Eigen::SparseMatrix<double>& W) {
   std::vector<Mat3> b(static_cast<size_t>(W.rows() / 3), Mat3::Zero());
@@ -32,6 +41,26 @@ inline std::vector<Mat3> diagonal_blocks(const Eigen::SparseMatrix<double>& W) {
       if (it.row() / 3 == it.col() / 3)
         b[static_cast<size_t>(it.row() / 3)](it.row() % 3, it.col() % 3) = it.value();
   return b;
+}
+
+/// W's own size: largest |W_kk|, else ||W||_max, else 1 (W = 0).
+inline double w_scale(const Eigen::SparseMatrix<double>& W, const FrictionUnits& units) {
+  double s = 0;
+  for (Eigen::Index k = 0; k < W.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(W, k); it; ++it)
+      if (it.row() == it.col()) s = std::max(s, std::abs(it.value()));
+  if (!(s > 0)) s = units.w_max;
+  return s > 0 ? s : 1.0;
+}
+
+/// u += W(:, c0..c0+2) d, allocation-free.
+inline void add_columns(const Eigen::SparseMatrix<double>& W, Eigen::Index c0, const Vec3& d,
+                        Eigen::VectorXd& u) {
+  for (int j = 0; j < 3; ++j) {
+    if (d[j] == 0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(W, c0 + j); it; ++it)
+      u[it.row()] += it.value() * d[j];
+  }
 }
 
 /// The registry's solve_fc for a solver whose options are {common, ...}: the defaults with the

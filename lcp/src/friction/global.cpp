@@ -4,6 +4,8 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
@@ -28,25 +30,31 @@ double max_abs(const Sparse& A) {
   return m;
 }
 
-// Empty when M is symmetric positive definite to rounding: symmetric to 1e2 eps of ||M||_max,
-// every pivot of LDL^T positive and above m eps of the largest (a smaller one is rounding of a
-// zero: M singular, e.g. a free rigid body without mass on some degree of freedom).
-std::string factorize(const Sparse& M, Ldlt& ldlt) {
+// What M is, with the words of a refusal: positive definite (no words) when symmetric to 1e2 eps
+// of ||M||_max and every pivot of LDL^T is positive and above m eps of the largest (a smaller one
+// is rounding of a zero: M singular, e.g. a free rigid body without mass on some degree of
+// freedom).
+std::pair<MassMatrix, std::string> factorize(const Sparse& M, Ldlt& ldlt) {
   const double big = max_abs(M);
-  if (big == 0) return "M is zero";
+  if (big == 0) return {MassMatrix::kZero, "M is zero"};
   const Sparse asym = Sparse(M.transpose()) - M;
   if (max_abs(asym) > 1e2 * kEps * big)
-    return "M is not symmetric (max |M - M^T| = " + short_number(max_abs(asym)) + ")";
+    return {MassMatrix::kNotSymmetric,
+            "M is not symmetric (max |M - M^T| = " + short_number(max_abs(asym)) + ")"};
   ldlt.compute(M);
-  if (ldlt.info() != Eigen::Success) return "M is singular (its LDL^T factorization met a zero pivot)";
+  if (ldlt.info() != Eigen::Success)
+    return {MassMatrix::kSingular, "M is singular (its LDL^T factorization met a zero pivot)"};
   const Eigen::VectorXd d = ldlt.vectorD();
   const double dmax = d.cwiseAbs().maxCoeff();
   const double floor = static_cast<double>(M.rows()) * kEps * dmax;
   for (Eigen::Index i = 0; i < d.size(); ++i)
     if (!(d[i] > floor))
-      return d[i] < -floor ? "M is not positive semidefinite (an LDL^T pivot is negative)"
-                           : "M is singular (an LDL^T pivot is zero to rounding)";
-  return {};
+      return d[i] < -floor
+                 ? std::pair{MassMatrix::kIndefinite,
+                             std::string("M is not positive semidefinite (an LDL^T pivot is negative)")}
+                 : std::pair{MassMatrix::kSingular,
+                             std::string("M is singular (an LDL^T pivot is zero to rounding)")};
+  return {MassMatrix::kPositiveDefinite, {}};
 }
 
 // gamma_k = k u / (1 - k u), u = eps / 2 [Higham 2002, Lemma 3.1].
@@ -132,8 +140,8 @@ CondensedProblem condense(const GlobalFrictionContactProblem& g) {
   c.local.note = g.note;
   c.local.mu = g.mu;
   Ldlt ldlt;
-  c.message = factorize(g.M, ldlt);
-  if (!c.message.empty()) {
+  std::tie(c.mass, c.message) = factorize(g.M, ldlt);
+  if (c.mass != MassMatrix::kPositiveDefinite) {
     c.message += ": not condensed (no solver in the global variables yet)";
     return c;
   }

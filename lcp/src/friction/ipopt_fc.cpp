@@ -10,7 +10,6 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "friction_common.hpp"
-#include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
 
@@ -24,7 +23,7 @@ std::string IpoptFcOptions::validate(Eigen::Index n) const {
 
 SolveResult solve_ipopt_fc(const FrictionContactProblem& p, const IpoptFcOptions& o) {
   Stopwatch clock;
-  helpers::check_problem(p);
+  detail::check_problem(p);
   const Eigen::Index nc = p.contacts(), n3 = 3 * nc, n = 4 * nc;
   throw_if_invalid(o.validate(n3), "ipopt friction options");
   SolveResult out;

@@ -9,11 +9,11 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_cone.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/short_number.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/one_contact.hpp"
 #include "friction_common.hpp"
-#include "friction_helpers.hpp"
 
 namespace cpkit::lcp::friction {
 
@@ -32,12 +32,12 @@ std::string ProxOptions::validate(Eigen::Index n) const {
 
 SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   Stopwatch clock;
-  helpers::check_problem(p);
+  detail::check_problem(p);
   const Eigen::Index nc = p.contacts(), n = 3 * nc;
   throw_if_invalid(o.validate(n), "prox options");
   const FrictionUnits units = friction_units(p);
-  const std::vector<Mat3> D = helpers::diagonal_blocks(p.W);
-  const double w_scale = helpers::w_scale(p.W, units);
+  const std::vector<Mat3> D = detail::diagonal_blocks(p.W);
+  const double w_scale = detail::w_scale(p.W, units);
   const double r_ref = (units.q_inf > 0 && units.w_max > 0) ? units.q_inf / units.w_max : 0.0;
   const int max_outer = o.common.max_iterations > 0 ? o.common.max_iterations : 500;
   const int max_sweeps = o.max_sweeps > 0 ? o.max_sweeps : 200;
@@ -118,7 +118,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
         const Vec3 dr = x - ri;
         if (dr.cwiseAbs().maxCoeff() > 0) {
           r.segment<3>(3 * i) = x;
-          helpers::add_columns(p.W, 3 * i, dr, u);
+          detail::add_columns(p.W, 3 * i, dr, u);
           change = std::max(change, dr.lpNorm<Eigen::Infinity>());
         }
       }
@@ -162,7 +162,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
                 (o.inner == ProxInner::kFbSoc ? " inner Newton iterations (fb-soc), "
                                               : " Gauss-Seidel sweeps, ") +
                 std::to_string(inner_failures) + " inner solves not converged, last alpha " +
-                helpers::short_number(alpha / w_scale) + " w_scale";
+                short_number(alpha / w_scale) + " w_scale";
   out.seconds = clock.seconds();
   SolveResult res = finalize(p, units, std::move(out), o.common);
   res.seconds = clock.seconds();

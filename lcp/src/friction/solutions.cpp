@@ -10,6 +10,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_verdict.hpp"
+#include "cpkit/core/short_number.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
@@ -17,7 +18,7 @@
 #include "cpkit/lcp/friction/nsgs.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "friction_helpers.hpp"
+#include "friction_common.hpp"
 
 namespace cpkit::lcp::friction {
 namespace {
@@ -112,7 +113,7 @@ std::string FrictionSolutionsOptions::validate() const {
 FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
                                        const FrictionSolutionsOptions& o) {
   Stopwatch clock;
-  helpers::check_problem(p);
+  detail::check_problem(p);
   throw_if_invalid(o.validate(), "friction solutions options");
   const Eigen::Index nc = p.contacts(), n = 3 * nc;
   const FrictionUnits units = friction_units(p);
@@ -150,8 +151,8 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     }
     faceted_note =
         "faceted problem (" + std::to_string(k) + " facets, facet error " +
-        helpers::short_number(100 * fs.faceted.facet_error) + " %, regularised by " +
-        helpers::short_number(kEnumerationRegularisation) +
+        short_number(100 * fs.faceted.facet_error) + " %, regularised by " +
+        short_number(kEnumerationRegularisation) +
         " w_scale on the force diagonal; LCP of " + std::to_string(fs.faceted.lcp.size()) +
         " unknowns): " + std::to_string(fs.extreme) + " extreme LCP solutions, " +
         std::to_string(fs.r.size()) + " distinct r, enumeration " +

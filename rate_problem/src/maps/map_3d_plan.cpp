@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
-#include "cpkit/rate_problem/report/map_text.hpp"
 
 namespace cpkit::rate {
 
@@ -263,7 +263,7 @@ double estimate_map_3d_seconds(const Map3dPlan& p, int threads, int64_t& sampled
     if (!(one.time_limit_s > 0) || m.timed_out_cells > 0)
       throw InputError("the map has " + p.cells_text + "; a timed sample of " +
                        std::to_string(std::max<int64_t>(1, m.cells())) +
-                       " of them alone ran past --time-limit " + map_number_text(time_limit) +
+                       " of them alone ran past --time-limit " + num_text(time_limit, 4) +
                        " s (the time limit was reached): " + p.fewer +
                        (p.options.facets ? ", fewer --facets or fewer grazing points" : "") +
                        ", or raise --time-limit");

@@ -3,9 +3,10 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <string>
+
+#include "cpkit/core/number_text.hpp"
 
 namespace cpkit::rate {
 
@@ -15,17 +16,9 @@ constexpr SolutionType kTypes[] = {SolutionType::kOpen, SolutionType::kSeparatio
                                    SolutionType::kSlipMinus};
 
 /// Grid cells: 12 significant digits (the grid values themselves are not exact anyway).
-std::string num(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.12g", x);
-  return buf;
-}
+constexpr int kGridDigits = 12;
 /// Critical directions and values: round-trip precision.
-std::string num17(double x) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+constexpr int kRoundTripDigits = 17;
 
 nlohmann::json axis_json(const MapAxis& a) {
   return {{"param", std::string(to_string(a.param))}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
@@ -116,12 +109,14 @@ nlohmann::json to_json(const DirectionMap& map) {
 void write_csv(const DirectionMap& map, std::ostream& out) {
   out << "kind,theta_from,theta_to,count,types,conditions\n";
   for (const auto& s : map.sectors)
-    out << "sector," << num17(s.theta_from) << ',' << num17(s.theta_to) << ','
+    out << "sector," << num_text(s.theta_from, kRoundTripDigits) << ','
+        << num_text(s.theta_to, kRoundTripDigits) << ','
         << count_to_string(s.summary.count) << ',' << types_to_string(s.summary.types) << ",\n";
   for (const auto& c : map.critical) {
     std::string cond;
     for (const auto& x : c.conditions) cond += (cond.empty() ? "" : "|") + x;
-    out << "critical," << num17(c.theta) << ',' << num17(c.theta) << ','
+    out << "critical," << num_text(c.theta, kRoundTripDigits) << ','
+        << num_text(c.theta, kRoundTripDigits) << ','
         << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << ','
         << cond << '\n';
   }
@@ -166,10 +161,10 @@ void write_csv_rows(const MapAxis& axis, const std::vector<double>& theta_values
   const auto& ts = type_strings();
   const std::size_t theta_n = theta_values.size();
   std::vector<std::string> theta(theta_n);
-  for (std::size_t j = 0; j < theta_n; ++j) theta[j] = num(theta_values[j]);
+  for (std::size_t j = 0; j < theta_n; ++j) theta[j] = num_text(theta_values[j], kGridDigits);
   std::string text;
   for (int i = rows.row_begin; i < rows.row_end; ++i) {
-    const std::string x = num(axis.value(i));
+    const std::string x = num_text(axis.value(i), kGridDigits);
     text.clear();
     for (std::size_t j = 0; j < theta_n; ++j) {
       const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * theta_n + j;
@@ -200,9 +195,11 @@ void write_csv(const ParamDirectionMap& map, std::ostream& out) {
 
 void write_critical_csv(const ParamDirectionMap& map, std::ostream& out) {
   out << "curve,x,theta,conditions,count,types\n";
-  for (const auto& c : map.critical_values) out << c.name << ',' << num17(c.x) << ",,,,\n";
+  for (const auto& c : map.critical_values)
+    out << c.name << ',' << num_text(c.x, kRoundTripDigits) << ",,,,\n";
   for (const auto& c : map.critical_directions)
-    out << "direction," << num17(c.x) << ',' << num17(c.theta) << ',' << c.conditions << ','
+    out << "direction," << num_text(c.x, kRoundTripDigits) << ','
+        << num_text(c.theta, kRoundTripDigits) << ',' << c.conditions << ','
         << count_to_string(c.summary.count) << ',' << types_to_string(c.summary.types) << '\n';
 }
 
@@ -240,13 +237,13 @@ void write_csv_rows(const MapAxis& axis1, const MapAxis& axis2, const ParamParam
   const std::size_t n2 = static_cast<std::size_t>(axis2.n);
   std::string text;
   for (int i = rows.row_begin; i < rows.row_end; ++i) {
-    const std::string x = num(axis1.value(i));
+    const std::string x = num_text(axis1.value(i), kGridDigits);
     text.clear();
     for (std::size_t j = 0; j < n2; ++j) {
       const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * n2 + j;
       text += x;
       text += ',';
-      text += num(axis2.value(static_cast<int>(j)));
+      text += num_text(axis2.value(static_cast<int>(j)), kGridDigits);
       text += ',';
       text += to_string(static_cast<UniquenessClass>(rows.cls[k]));
       text += ',';
@@ -277,7 +274,9 @@ void write_csv(const ParamParamMap& map, std::ostream& out) {
 
 void write_critical_csv(const ParamParamMap& map, std::ostream& out) {
   out << "curve,x,y\n";
-  for (const auto& c : map.critical_curve) out << c.name << ',' << num17(c.x) << ',' << num17(c.y) << '\n';
+  for (const auto& c : map.critical_curve)
+    out << c.name << ',' << num_text(c.x, kRoundTripDigits) << ','
+        << num_text(c.y, kRoundTripDigits) << '\n';
 }
 
 }  // namespace cpkit::rate

@@ -14,6 +14,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/memory_limit.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/grid_map_run.hpp"
@@ -128,7 +129,7 @@ std::string report_time_limit(nlohmann::json& j, double limit, int done, int row
   j["complete"] = false;
   j["time_limit_reached"] = true;
   j["rows_done"] = done;
-  const std::string what = "time limit reached (--time-limit " + map_number_text(limit) +
+  const std::string what = "time limit reached (--time-limit " + num_text(limit, 4) +
                            " s) after " + std::to_string(done) + " of " + std::to_string(rows) +
                            " rows";
   err_of(env) << "cpkit map: " << what << ": the map is incomplete ('complete': false)"
@@ -254,8 +255,8 @@ bool run_grid_map(OnePointRun& p) {
   j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
                    {"output_bytes", est.output}, {"threads", est.threads}};
   if (est.seconds > 1.0 || est.output > 1e9)
-    err_of(p.env) << "cpkit map: " << map_number_text(est.cells, 3) << " cells: about "
-                  << map_number_text(est.seconds, 2) << " s of cells on " << est.threads
+    err_of(p.env) << "cpkit map: " << num_text(est.cells, 3) << " cells: about "
+                  << num_text(est.seconds, 2) << " s of cells on " << est.threads
                   << " threads, " << byte_text(est.memory) << " of memory"
                   << (prefix.empty() ? std::string()
                                      : ", " + byte_text(est.output) + " of output (" + a.format +
@@ -373,13 +374,13 @@ nlohmann::json check_estimate(const SystemMapEstimate& e, const SystemMapRequest
   const std::string procs = std::to_string(env.size());
   if (seconds > r.time_limit)
     throw InputError("the map has " + p.cells_text + " and would need about " +
-                     map_number_text(seconds, 3) + " s of computing on " +
+                     num_text(seconds, 3) + " s of computing on " +
                      std::to_string(e.threads) + " threads x " + procs +
                      " processes (estimated from " + std::to_string(e.sampled) +
-                     " timed cells), more than --time-limit " + map_number_text(r.time_limit, 3) +
+                     " timed cells), more than --time-limit " + num_text(r.time_limit, 3) +
                      ": " + p.fewer + ", or raise --time-limit");
   if (seconds > 1.0)
-    err_of(env) << "cpkit map: " << p.cells_text << ": about " << map_number_text(seconds, 3)
+    err_of(env) << "cpkit map: " << p.cells_text << ": about " << num_text(seconds, 3)
                 << " s on " << e.threads << " threads x " << procs << " processes (estimate)\n";
   return {{"seconds", seconds}, {"threads", e.threads}, {"sampled_cells", e.sampled}};
 }
@@ -589,13 +590,13 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
   // with the rows done, flagged incomplete (and resumable with --out).
   if (e.seconds > kTimeLimitFactor * time_limit)
     throw InputError("the map has " + cells + " and would need about " +
-                     map_number_text(e.seconds, 3) + " s of computing on " +
+                     num_text(e.seconds, 3) + " s of computing on " +
                      std::to_string(e.threads) +
                      " threads (estimated from a timed sample), far more than --time-limit " +
-                     map_number_text(time_limit) + ": " + fewer + ", or raise --time-limit");
+                     num_text(time_limit, 4) + ": " + fewer + ", or raise --time-limit");
   if (e.seconds > time_limit)
-    err_of(env) << "cpkit map: the map would need about " << map_number_text(e.seconds, 3)
-                << " s (estimate), more than --time-limit " << map_number_text(time_limit)
+    err_of(env) << "cpkit map: the map would need about " << num_text(e.seconds, 3)
+                << " s (estimate), more than --time-limit " << num_text(time_limit, 4)
                 << ": it stops at the limit with the rows done so far, flagged incomplete\n";
   double limit = static_cast<double>(kMemoryLimitBytes);
   const double avail = env.available_memory ? env.available_memory() : -1;
@@ -676,13 +677,13 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
   const double seconds = estimate_map_3d_seconds(p, threads, sampled, clock, r.time_limit);
   if (seconds > r.time_limit)
     throw InputError("the map has " + p.cells_text + " and would need about " +
-                     map_number_text(seconds, 3) + " s on " + std::to_string(threads) +
+                     num_text(seconds, 3) + " s on " + std::to_string(threads) +
                      " threads (estimated from " + std::to_string(sampled) +
-                     " timed cells), more than --time-limit " + map_number_text(r.time_limit) +
+                     " timed cells), more than --time-limit " + num_text(r.time_limit, 4) +
                      ": " + p.fewer + (opt.facets ? ", fewer --facets" : "") +
                      ", or raise --time-limit");
   if (seconds > 1.0)
-    err << "cpkit map: " << p.cells_text << ": about " << map_number_text(seconds, 3) << " s on "
+    err << "cpkit map: " << p.cells_text << ": about " << num_text(seconds, 3) << " s on "
         << threads << " threads (estimate)\n";
   // One deadline for the whole command (issue 24, item 11): the estimate was within it; the
   // cells get what is left, and the ones it does not cover are flagged, never dropped.
@@ -708,7 +709,7 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
     plot_failed = !write_map_json(r.out, r.plot, j, files, env);
   }
   if (m.timed_out_cells > 0)
-    err << "cpkit map: time limit reached (--time-limit " << map_number_text(r.time_limit)
+    err << "cpkit map: time limit reached (--time-limit " << num_text(r.time_limit, 4)
         << " s): " << m.timed_out_cells << " cells cut short (their count is what was found) or "
         << "not computed (count 0), flagged 0 in 'complete'\n";
   if (!complete)

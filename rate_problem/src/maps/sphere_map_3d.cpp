@@ -9,6 +9,7 @@
 
 #include "run_items.hpp"
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
@@ -20,12 +21,6 @@ namespace cpkit::rate {
 namespace {
 
 constexpr double kPi = 3.141592653589793;
-
-std::string num(double x) {
-  std::ostringstream o;
-  o << std::setprecision(10) << x;
-  return o.str();
-}
 
 /// Validates every point of a system (parameters and state): throws naming the point.
 void validate_points(const ContactSystem3d& sys, const std::string& where) {
@@ -255,7 +250,7 @@ Map3d compute_param_direction_map_3d(const ContactSystem3d& sys, const Map3dAxis
   if (!std::isfinite(theta_from) || !std::isfinite(theta_to) || !(theta_to > theta_from) ||
       theta_to - theta_from > 2 * kPi + 1e-12)
     throw InputError("theta range: need 0 < theta_to - theta_from <= 2 pi, got [" +
-                     num(theta_from) + ", " + num(theta_to) + "]");
+                     num_text(theta_from, 10) + ", " + num_text(theta_to, 10) + "]");
   if (!std::isfinite(gamma)) throw InputError("gamma must be finite");
   if (static_cast<int64_t>(axis.n) * theta_n > kMaxMap3dCells)
     throw InputError("n x theta_n must be at most " + std::to_string(kMaxMap3dCells) + " cells");
@@ -267,7 +262,7 @@ Map3d compute_param_direction_map_3d(const ContactSystem3d& sys, const Map3dAxis
     m.x.push_back(axis.value(i));
     apply_map_3d_parameter(axis.param, m.x.back(), rows[static_cast<std::size_t>(i)]);
     validate_points(rows[static_cast<std::size_t>(i)],
-                    axis.param.name() + " = " + num(m.x.back()) + ": ");
+                    axis.param.name() + " = " + num_text(m.x.back(), 10) + ": ");
   }
   m.y = rate::map_theta_values(theta_n, theta_from, theta_to);
   const Eigen::Vector2d g = cos_sin_exact(gamma);
@@ -306,9 +301,10 @@ Map3d compute_param_param_map_3d(const ContactSystem3d& sys, const Map3dAxis& ax
       ContactSystem3d s = sys;
       apply_map_3d_parameter(axis1.param, m.x[static_cast<std::size_t>(i)], s);
       apply_map_3d_parameter(axis2.param, m.y[static_cast<std::size_t>(j)], s);
-      validate_points(s, axis1.param.name() + " = " + num(m.x[static_cast<std::size_t>(i)]) +
-                             ", " + axis2.param.name() + " = " +
-                             num(m.y[static_cast<std::size_t>(j)]) + ": ");
+      validate_points(s, axis1.param.name() + " = " +
+                             num_text(m.x[static_cast<std::size_t>(i)], 10) + ", " +
+                             axis2.param.name() + " = " +
+                             num_text(m.y[static_cast<std::size_t>(j)], 10) + ": ");
     }
   const Eigen::VectorXd dF = *sys.dF;
   fill_map(m, options, progress, [&](int i, auto&& left, auto&& put) {

@@ -6,8 +6,9 @@ namespace cpkit::rate {
 
 ContactParameters model_parameters(const ModelOptions& m) {
   // Fields in ContactParameters' order.
-  const ContactParameters p{m.a11, m.a12, m.a22, m.mu, m.C_T, m.k_a, m.P_s,
-                            criterion_option(m.criterion)};
+  const ContactParameters p{m.a11.value_or(0), m.a12.value_or(0), m.a22.value_or(0),
+                            m.mu.value_or(0),  m.C_T.value_or(0), m.k_a.value_or(0),
+                            m.P_s.value_or(1), criterion_option(m.criterion.value_or("38"))};
   throw_if_invalid(p.validate(), "contact parameters");
   return p;
 }

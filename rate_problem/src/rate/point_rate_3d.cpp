@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/spd.hpp"
 #include "rate_3d_units.hpp"
 
@@ -38,12 +39,7 @@ double condition_number(const M& m) {
 
 bool finite(const Eigen::MatrixXd& m) { return m.allFinite(); }
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
+std::string num(double x) { return num_text(x, 10); }
 
 /// The blocks of A and the ellipse, shared by the states.
 struct Blocks {

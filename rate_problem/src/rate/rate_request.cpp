@@ -2,7 +2,6 @@
 // the three routes (one point, N points, a 3-D system) and the exit code.
 #include "cpkit/rate_problem/rate/rate_request.hpp"
 
-#include <algorithm>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -15,16 +14,23 @@
 
 namespace cpkit::rate {
 
-bool RateRequest::given(const std::string& option) const {
-  return std::find(options_given.begin(), options_given.end(), option) != options_given.end();
-}
-
 namespace {
 
 using Note = std::function<void(const std::string&)>;
 
+/// An option's name in messages and whether it was given.
+struct Given {
+  const char* name;
+  bool given;
+};
+
 /// The options a one-point problem needs (with --system they come from the file, --dF aside).
-const char* const kOnePointOptions[] = {"--state", "--a11", "--a12", "--a22", "--mu", "--dF"};
+std::vector<Given> one_point_options(const RateRequest& a) {
+  const ModelOptions& m = a.model;
+  return {{"--state", a.state.has_value()}, {"--a11", m.a11.has_value()},
+          {"--a12", m.a12.has_value()},     {"--a22", m.a22.has_value()},
+          {"--mu", m.mu.has_value()},       {"--dF", !a.dF.empty()}};
+}
 
 /// How a system's load rate is described in messages (2-D and 3-D differ).
 struct LoadRateWords {
@@ -53,14 +59,15 @@ Eigen::VectorXd system_load_rate(const std::vector<double>& arg,
 /// Options that would have no effect in the chosen state are errors, never silence; material
 /// parameters a user describes once and sweeps over states are accepted with a note (issue 27).
 void check_state_options(const RateRequest& a, const Note& note) {
-  const std::string& st = a.state;
-  if (st != "d" && a.given("--sgnPT"))
+  const std::string st = a.state.value_or("");
+  if (st != "d" && a.sgn_PT)
     throw InputError("--sgnPT has no effect in state " + st + ": only state d (sliding) has a "
                      "sign of P_T");
   if (st == "a" || st == "b")
-    for (const char* o : {"--k_a", "--P_s"})
-      if (a.given(o) && note)
-        note(std::string("note: ") + o + " does not enter state " + st +
+    for (const Given& o : {Given{"--k_a", a.model.k_a.has_value()},
+                           Given{"--P_s", a.model.P_s.has_value()}})
+      if (o.given && note)
+        note(std::string("note: ") + o.name + " does not enter state " + st +
              " (P_N = 0 there, so no wear: kappa = k_a P_N / (3 P_s) enters states c "
              "and d); accepted and echoed");
 }
@@ -154,19 +161,16 @@ void run_one_point(const RateRequest& a, RateOutcome& out, const Note& note) {
   if (a.facets != 0)
     throw InputError("--facets applies to 3-D points (--system FILE with \"dim\": 3, "
                      "docs/contact_3d.md)");
-  for (const char* o : kOnePointOptions)
-    if (!a.given(o)) throw InputError(std::string(o) + " is required (or give --system FILE)");
-  ContactParameters p = a.params;
-  const auto criterion = criterion_from_string(a.criterion);
-  if (!criterion) throw InputError("--criterion must be 38 or 35, got '" + a.criterion + "'");
-  p.criterion = *criterion;
-  throw_if_invalid(p.validate(), "contact parameters");
+  for (const Given& o : one_point_options(a))
+    if (!o.given) throw InputError(std::string(o.name) + " is required (or give --system FILE)");
+  // the criterion's name, then the values (as the program has always checked them)
+  const ContactParameters p = model_parameters(a.model);
   ContactState st;
-  const auto label = state_from_string(a.state);
-  if (!label) throw InputError("--state must be a, b, c or d, got '" + a.state + "'");
+  const auto label = state_from_string(*a.state);
+  if (!label) throw InputError("--state must be a, b, c or d, got '" + *a.state + "'");
   st.label = *label;
   st.P_N = a.P_N;
-  st.sgn_PT = a.sgn_PT;
+  st.sgn_PT = a.sgn_PT.value_or(1);
   throw_if_invalid(st.validate(p), "contact state");
   if (a.dF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
   const LoadRate f{a.dF[0], a.dF[1]};
@@ -196,15 +200,15 @@ RateOutcome run_rate_request(const RateRequest& a, const Note& note) {
   check_state_options(a, note);
   RateOutcome out;
   out.method = a.method;
-  out.state = a.state;
+  out.state = a.state.value_or("");
   if (a.system.empty()) {
     run_one_point(a, out, note);
     return out;
   }
-  for (const char* o : kOnePointOptions)
-    if (a.given(o) && std::string(o) != "--dF")
-      throw InputError(std::string(o) + " is a one-point option; with --system the state and "
-                       "parameters come from the system file");
+  for (const Given& o : one_point_options(a))
+    if (o.given && std::string(o.name) != "--dF")
+      throw InputError(std::string(o.name) + " is a one-point option; with --system the state "
+                       "and parameters come from the system file");
   run_system(a, out);
   return out;
 }

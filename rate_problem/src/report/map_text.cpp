@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
@@ -40,12 +41,6 @@ std::string count_text_3d(int count) {
 
 }  // namespace
 
-std::string map_number_text(double x, int digits) {
-  std::ostringstream s;
-  s << std::setprecision(digits) << x;
-  return s.str();
-}
-
 std::string map_types_text(unsigned mask) {
   std::string out;
   for (char c : types_to_string(mask)) {
@@ -70,7 +65,7 @@ std::string map_model_text(const ContactParameters& p, const ContactState& s,
     return false;
   };
   auto v = [&](const char* name, double x, std::initializer_list<MapParameter> ps) {
-    return std::string(name) + " = " + (on_axis(ps) ? std::string("(axis)") : map_number_text(x));
+    return std::string(name) + " = " + (on_axis(ps) ? std::string("(axis)") : num_text(x, 4));
   };
   using P = MapParameter;
   std::string t = "state " + std::string(to_string(s.label)) + ", " +
@@ -132,7 +127,7 @@ std::string direction_map_text(const DirectionMap& m, const MapSetup& s) {
 std::string param_direction_map_text(const nlohmann::json& summary, const MapSetup& s,
                                      bool theta_range) {
   auto num = [](const nlohmann::json& x, int digits = 4) {
-    return map_number_text(x.get<double>(), digits);
+    return num_text(x.get<double>(), digits);
   };
   std::ostringstream o;
   const auto& ax = summary["axis"];
@@ -156,13 +151,13 @@ std::string param_direction_map_text(const nlohmann::json& summary, const MapSet
 }
 
 std::string param_param_map_text(const nlohmann::json& summary, const MapSetup& s) {
-  auto num = [](const nlohmann::json& x) { return map_number_text(x.get<double>()); };
+  auto num = [](const nlohmann::json& x) { return num_text(x.get<double>(), 4); };
   std::ostringstream o;
   const std::string x = summary["axis"]["param"].get<std::string>();
   const std::string y = summary["axis2"]["param"].get<std::string>();
   o << "param-param map, " << map_model_text(s.params, s.state, {s.axis.param, s.axis2.param})
     << "\n  " << x << " x " << y << ": " << summary["cells"] << " cells, "
-    << map_number_text(summary["seconds"].get<double>(), 3) << " s\n";
+    << num_text(summary["seconds"].get<double>(), 3) << " s\n";
   for (const auto& c : summary["classes"])
     o << "  " << c["class"].get<std::string>() << ": " << c["cells"] << " cells, " << x
       << " in [" << num(c["x_min"]) << ", " << num(c["x_max"]) << "], " << y << " in ["
@@ -195,8 +190,8 @@ std::string system_param_direction_map_text(const SystemParamDirectionMap& m, in
   o << "param-direction map of " << n_points << " points (" << r.path << "): "
     << axis.param.name() << " in [" << r.from << ", " << r.to << "] (" << r.n << " values) x "
     << r.theta_n << " directions"
-    << (r.theta_range ? " in [" + map_number_text(r.theta_from, 3) + ", " +
-                            map_number_text(r.theta_to, 3) + "]"
+    << (r.theta_range ? " in [" + num_text(r.theta_from, 3) + ", " +
+                            num_text(r.theta_to, 3) + "]"
                       : std::string())
     << ", " << static_cast<int64_t>(r.n) * r.theta_n << " cells\ncounts:\n";
   for (const auto& c : m.classes)
@@ -223,7 +218,7 @@ std::string system_param_param_map_text(const SystemParamParamMap& m, int n_poin
 }
 
 std::string map_3d_text(const Map3dRequest& r, const Map3dPlan& p, const Map3d& m) {
-  auto num = [](double x) { return map_number_text(x); };
+  auto num = [](double x) { return num_text(x, 4); };
   const Map3dOptions& opt = p.options;
   const int N = p.sys.n_points();
   std::ostringstream o;

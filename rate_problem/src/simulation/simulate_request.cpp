@@ -31,16 +31,40 @@ T choice(const std::optional<T>& value, const char* must, const std::string& nam
   return *value;
 }
 
-/// The numeric option `key`, if given.
-std::optional<double> given(const SimulateRequest& r, const char* key) {
-  const auto it = r.num.find(key);
-  if (it == r.num.end()) return std::nullopt;
-  return it->second;
-}
+/// A numeric option's name in messages (without "--") and its field.
+struct NumberOption {
+  const char* name;
+  std::optional<double> SimulateNumbers::*field;
+};
+
+/// Every numeric option, in the order of their names (the order the 3-D route reports them).
+const NumberOption kNumberOptions[] = {
+    {"C_T", &SimulateNumbers::C_T},
+    {"F_N", &SimulateNumbers::F_N},
+    {"F_N0", &SimulateNumbers::F_N0},
+    {"F_N1", &SimulateNumbers::F_N1},
+    {"F_T0", &SimulateNumbers::F_T0},
+    {"F_T1", &SimulateNumbers::F_T1},
+    {"P_s", &SimulateNumbers::P_s},
+    {"T-initial", &SimulateNumbers::T_initial},
+    {"T-ref", &SimulateNumbers::T_ref},
+    {"a11", &SimulateNumbers::a11},
+    {"a12", &SimulateNumbers::a12},
+    {"a22", &SimulateNumbers::a22},
+    {"amplitude", &SimulateNumbers::amplitude},
+    {"cycles", &SimulateNumbers::cycles},
+    {"duration", &SimulateNumbers::duration},
+    {"heat-capacity", &SimulateNumbers::heat_capacity},
+    {"k_M", &SimulateNumbers::k_M},
+    {"k_a", &SimulateNumbers::k_a},
+    {"mu", &SimulateNumbers::mu},
+    {"period", &SimulateNumbers::period},
+    {"ramp-steps", &SimulateNumbers::ramp_steps},
+    {"steps", &SimulateNumbers::steps},
+    {"steps-per-cycle", &SimulateNumbers::steps_per_cycle}};
 
 /// A count given as a number: an integer in [lo, INT_MAX], else InputError naming the option.
-void count_option(const SimulateRequest& r, const char* key, long long lo, int& dst) {
-  const auto d = given(r, key);
+void count_option(const std::optional<double>& d, const char* key, long long lo, int& dst) {
   if (!d) return;
   if (!(*d == std::floor(*d)) || *d < static_cast<double>(lo) || *d > INT_MAX)
     throw InputError(std::string("--") + key + " must be an integer in [" + std::to_string(lo) +
@@ -96,10 +120,14 @@ SimulateOutcome run_3d(const SimulateRequest& a, const SystemFile& file) {
                      " points; the 3-D simulation (fretting with an elliptic load orbit) is for "
                      "one point (\"dim\": 3 with one point)");
   std::vector<std::string> other;  // options of the 2-D simulation given
-  for (const auto& kv : a.num)
-    if (kv.first != "F_N" && kv.first != "period" && kv.first != "cycles" &&
-        kv.first != "steps-per-cycle" && kv.first != "ramp-steps" && kv.first != "k_M")
-      other.push_back("--" + kv.first);
+  const SimulateNumbers& n = a.numbers;
+  using N = SimulateNumbers;
+  for (const NumberOption& o : kNumberOptions) {
+    const auto f = o.field;
+    if ((n.*f).has_value() && f != &N::F_N && f != &N::period && f != &N::cycles &&
+        f != &N::steps_per_cycle && f != &N::ramp_steps && f != &N::k_M)
+      other.push_back(std::string("--") + o.name);
+  }
   const std::pair<bool, const char*> flags[] = {
       {!a.config.empty(), "--config"},  {!a.criterion.empty(), "--criterion"},
       {!a.load.empty(), "--load"},      {!a.load_csv.empty(), "--load-csv"},
@@ -126,11 +154,11 @@ SimulateOutcome run_3d(const SimulateRequest& a, const SystemFile& file) {
   orbit.lead_steps = a.lead_steps.value_or(-1);
   if (a.lead_steps && *a.lead_steps < 0)
     throw InputError("--lead-steps must be >= 0, got " + std::to_string(*a.lead_steps));
-  orbit.F_N = given(a, "F_N").value_or(orbit.F_N);
-  orbit.period = given(a, "period").value_or(orbit.period);
-  count_option(a, "cycles", 1, orbit.cycles);
-  count_option(a, "steps-per-cycle", 1, orbit.steps_per_cycle);
-  count_option(a, "ramp-steps", 1, orbit.ramp_steps);
+  orbit.F_N = n.F_N.value_or(orbit.F_N);
+  orbit.period = n.period.value_or(orbit.period);
+  count_option(n.cycles, "cycles", 1, orbit.cycles);
+  count_option(n.steps_per_cycle, "steps-per-cycle", 1, orbit.steps_per_cycle);
+  count_option(n.ramp_steps, "ramp-steps", 1, orbit.ramp_steps);
   throw_if_invalid(orbit.validate(), "orbit");
   // Capped as the N-point runs (kMaxSystemSimulationSteps: 0.2 ms a step).
   check_simulation_steps(static_cast<std::int64_t>(std::min<std::size_t>(orbit.size(), INT64_MAX)),
@@ -141,9 +169,9 @@ SimulateOutcome run_3d(const SimulateRequest& a, const SystemFile& file) {
   if (!a.wear_law.empty())
     o.wear.law = choice(wear_law_from_string(a.wear_law), "--wear-law must be archard or mroz",
                         a.wear_law);
-  o.wear.k_M = given(a, "k_M").value_or(o.wear.k_M);
+  o.wear.k_M = n.k_M.value_or(o.wear.k_M);
   const bool mroz = o.wear.law == WearLaw::kMrozStupkiewicz;
-  if (!mroz && given(a, "k_M"))
+  if (!mroz && n.k_M)
     throw InputError("--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
   if (mroz && !(o.wear.k_M > 0))
     throw InputError("the wear law mroz needs --k_M > 0; for no wear use archard with k_a = 0");
@@ -235,36 +263,36 @@ SimulateOutcome run_one_point(SimulateSettings& s, const SimulateRequest& a) {
 /// The options given over the settings (a config's or the defaults).
 void apply_options(const SimulateRequest& a, SimulateSettings& s) {
   auto& P = s.opt.params;
-  auto num = [&](const char* key, double& dst) {
-    const auto v = given(a, key);
+  const SimulateNumbers& n = a.numbers;
+  auto set = [](const std::optional<double>& v, double& dst) {
     if (v) dst = *v;
     return v.has_value();
   };
-  if (num("a11", P.a11)) s.have[0] = true;
-  if (num("a12", P.a12)) s.have[1] = true;
-  if (num("a22", P.a22)) s.have[2] = true;
-  if (num("mu", P.mu)) s.have[3] = true;
-  num("C_T", P.C_T);
-  num("k_a", P.k_a);
-  num("P_s", P.P_s);
-  num("k_M", s.opt.wear.k_M);
-  num("F_N", s.fretting.F_N);
-  num("amplitude", s.fretting.amplitude);
-  if (num("period", s.fretting.period)) s.csv_period = s.fretting.period;
+  if (set(n.a11, P.a11)) s.have[0] = true;
+  if (set(n.a12, P.a12)) s.have[1] = true;
+  if (set(n.a22, P.a22)) s.have[2] = true;
+  if (set(n.mu, P.mu)) s.have[3] = true;
+  set(n.C_T, P.C_T);
+  set(n.k_a, P.k_a);
+  set(n.P_s, P.P_s);
+  set(n.k_M, s.opt.wear.k_M);
+  set(n.F_N, s.fretting.F_N);
+  set(n.amplitude, s.fretting.amplitude);
+  if (set(n.period, s.fretting.period)) s.csv_period = s.fretting.period;
   // Counts must be integers that fit an int; their ranges and the run's total size are
   // checked by validate_simulate_settings.
-  count_option(a, "cycles", INT_MIN, s.fretting.cycles);
-  count_option(a, "steps-per-cycle", INT_MIN, s.fretting.steps_per_cycle);
-  count_option(a, "ramp-steps", INT_MIN, s.fretting.ramp_steps);
-  num("F_T0", s.ramp.F_T0);
-  num("F_N0", s.ramp.F_N0);
-  num("F_T1", s.ramp.F_T1);
-  num("F_N1", s.ramp.F_N1);
-  num("duration", s.ramp.duration);
-  count_option(a, "steps", INT_MIN, s.ramp.steps);
-  num("heat-capacity", s.opt.heat.heat_capacity);
-  num("T-ref", s.opt.heat.T_ref);
-  num("T-initial", s.opt.heat.T_initial);
+  count_option(n.cycles, "cycles", INT_MIN, s.fretting.cycles);
+  count_option(n.steps_per_cycle, "steps-per-cycle", INT_MIN, s.fretting.steps_per_cycle);
+  count_option(n.ramp_steps, "ramp-steps", INT_MIN, s.fretting.ramp_steps);
+  set(n.F_T0, s.ramp.F_T0);
+  set(n.F_N0, s.ramp.F_N0);
+  set(n.F_T1, s.ramp.F_T1);
+  set(n.F_N1, s.ramp.F_N1);
+  set(n.duration, s.ramp.duration);
+  count_option(n.steps, "steps", INT_MIN, s.ramp.steps);
+  set(n.heat_capacity, s.opt.heat.heat_capacity);
+  set(n.T_ref, s.opt.heat.T_ref);
+  set(n.T_initial, s.opt.heat.T_initial);
   if (!a.T_body.empty()) std::copy_n(a.T_body.begin(), 2, s.opt.heat.T_body);
   if (!a.conductance.empty()) std::copy_n(a.conductance.begin(), 2, s.opt.heat.conductance);
   if (a.heat) s.opt.heat.enabled = true;
@@ -292,21 +320,27 @@ void apply_options(const SimulateRequest& a, SimulateSettings& s) {
 /// Options that would have no effect (another load type's, heat options without heat, wear
 /// constants of the other law) are errors, never silence.
 void refuse_without_effect(const SimulateRequest& a, const SimulateSettings& s) {
-  auto only_with = [&](std::initializer_list<const char*> keys, const std::string& needs) {
-    for (const char* k : keys)
-      if (a.num.count(k))
-        throw InputError(std::string("--") + k + " has no effect here: it needs " + needs);
+  const SimulateNumbers& n = a.numbers;
+  auto only_with = [&](std::initializer_list<NumberOption> options, const std::string& needs) {
+    for (const NumberOption& o : options)
+      if ((n.*o.field).has_value())
+        throw InputError(std::string("--") + o.name + " has no effect here: it needs " + needs);
   };
+  using N = SimulateNumbers;
   if (s.load_type != "fretting")
-    only_with({"F_N", "amplitude", "cycles", "steps-per-cycle", "ramp-steps"},
+    only_with({{"F_N", &N::F_N}, {"amplitude", &N::amplitude}, {"cycles", &N::cycles},
+               {"steps-per-cycle", &N::steps_per_cycle}, {"ramp-steps", &N::ramp_steps}},
               "--load fretting (the load is " + s.load_type + ")");
   if (s.load_type != "ramp")
-    only_with({"F_T0", "F_N0", "F_T1", "F_N1", "duration", "steps"},
+    only_with({{"F_T0", &N::F_T0}, {"F_N0", &N::F_N0}, {"F_T1", &N::F_T1}, {"F_N1", &N::F_N1},
+               {"duration", &N::duration}, {"steps", &N::steps}},
               "--load ramp (the load is " + s.load_type + ")");
   if (s.load_type == "ramp")
-    only_with({"period"}, "--load fretting or csv (the load is ramp)");
+    only_with({{"period", &N::period}}, "--load fretting or csv (the load is ramp)");
   if (!s.opt.heat.enabled) {
-    only_with({"heat-capacity", "T-ref", "T-initial"}, "--heat (or heat.enabled)");
+    only_with({{"heat-capacity", &N::heat_capacity}, {"T-ref", &N::T_ref},
+               {"T-initial", &N::T_initial}},
+              "--heat (or heat.enabled)");
     if (!a.T_body.empty() || !a.conductance.empty())
       throw InputError(std::string(!a.T_body.empty() ? "--T-body" : "--conductance") +
                        " has no effect here: it needs --heat (or heat.enabled)");

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "step_3d_terms.hpp"
 #include "../model/unit_scaling.hpp"
@@ -24,12 +25,7 @@ constexpr double kAcceptTol = 1e-9;  ///< step_3d_residual of every listed solut
 /// generous multiple of the unit roundoff): inequalities inside that band are not decided.
 constexpr double kRound = 64 * 2.220446049250313e-16;
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
+std::string num(double x) { return num_text(x, 10); }
 
 /// The problem's own units (step_3d_units) and its friction ellipse's unit.
 detail::Units scales_of(const Step3dProblem& p) noexcept {

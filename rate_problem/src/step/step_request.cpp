@@ -1,6 +1,5 @@
 #include "cpkit/rate_problem/step/step_request.hpp"
 
-#include <algorithm>
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
@@ -11,11 +10,13 @@
 
 namespace cpkit::rate {
 
-bool StepRequest::given(const std::string& option) const {
-  return std::find(options_given.begin(), options_given.end(), option) != options_given.end();
-}
-
 namespace {
+
+/// An option's name in messages and whether it was given.
+struct Given {
+  const char* name;
+  bool given;
+};
 
 std::vector<std::string> split_chain(const std::string& chain) {
   std::vector<std::string> names;
@@ -33,9 +34,9 @@ ExitCode set_exit_code(bool found, bool complete) {
 StepProblem point_problem(const StepRequest& r) {
   StepProblem p;
   p.params = model_parameters(r.model);
-  p.wear.law = wear_law_option(r.wear_law);
-  p.wear.k_M = r.k_M;
-  p.state = {r.P_T0, r.P_N0, r.g0};
+  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
+  p.wear.k_M = r.k_M.value_or(0);
+  p.state = {*r.P_T0, *r.P_N0, *r.g0};
   if (r.DF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
   p.load = {r.DF[0], r.DF[1]};
   throw_if_invalid(p.validate(), "step");
@@ -45,7 +46,7 @@ StepProblem point_problem(const StepRequest& r) {
 void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& out) {
   StepSolveOptions o;
   o.chain.clear();
-  for (const std::string& name : split_chain(r.chain)) {
+  for (const std::string& name : split_chain(r.chain.value_or(kDefaultStepChain))) {
     // A typo must not silently shorten the chain (the library skips names not registered,
     // for builds without Ipopt): every name given here must exist.
     if (!name.empty() && name != "active-set" && cpkit::lcp::solvers().find(name) == nullptr) {
@@ -70,12 +71,19 @@ void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& ou
 /// `--system` of dim 2: every solution of the N-point step (system_step.hpp).
 void run_system(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point options describe one point; with a system file they would be ignored.
-  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s",
-                        "--criterion", "--wear-law", "--k_M", "--P_T0", "--P_N0", "--g0",
-                        "--chain"})
-    if (r.given(o))
-      throw InputError(std::string(o) + " cannot be combined with --system (the system file "
-                       "gives every point's parameters and state)");
+  const ModelOptions& m = r.model;
+  for (const Given& o : {Given{"--a11", m.a11.has_value()}, Given{"--a12", m.a12.has_value()},
+                         Given{"--a22", m.a22.has_value()}, Given{"--mu", m.mu.has_value()},
+                         Given{"--C_T", m.C_T.has_value()}, Given{"--k_a", m.k_a.has_value()},
+                         Given{"--P_s", m.P_s.has_value()},
+                         Given{"--criterion", m.criterion.has_value()},
+                         Given{"--wear-law", r.wear_law.has_value()},
+                         Given{"--k_M", r.k_M.has_value()}, Given{"--P_T0", r.P_T0.has_value()},
+                         Given{"--P_N0", r.P_N0.has_value()}, Given{"--g0", r.g0.has_value()},
+                         Given{"--chain", r.chain.has_value()}})
+    if (o.given)
+      throw InputError(std::string(o.name) + " cannot be combined with --system (the system "
+                       "file gives every point's parameters and state)");
   if (!r.all) throw InputError("--system needs --all (the N-point step reports every solution)");
   SystemStepProblem& p = out.system_problem;
   p.system = parse_contact_system(file);
@@ -108,13 +116,13 @@ std::vector<Step3dState> states_3d(const StepRequest& r, const ContactSystem3d& 
     Step3dState st;
     if (pt.state.state == 'a') {
       any_open = true;
-      if (!r.given("--g0") || !(r.g0 < 0))
+      if (!r.g0 || !(*r.g0 < 0))
         throw InputError(point + " is in state a (open): give " +
                          (N == 1 ? "its gap" : std::string("the gap of the open points")) +
                          " with --g0 G, G < 0");
-      st.g0 = r.g0;
+      st.g0 = *r.g0;
     } else {
-      if (N == 1 && r.given("--g0"))
+      if (N == 1 && r.g0)
         throw InputError(std::string("--g0 applies to a state-a (open) point; the point is in "
                                      "state ") + pt.state.state + " (in contact, g0 = 0)");
       st.P_T0 = pt.state.P_T;
@@ -122,14 +130,14 @@ std::vector<Step3dState> states_3d(const StepRequest& r, const ContactSystem3d& 
     }
     states.push_back(st);
   }
-  if (!any_open && r.given("--g0"))
+  if (!any_open && r.g0)
     throw InputError("--g0 applies to state-a (open) points; no point of this file is in state a");
   return states;
 }
 
 void check_multistart(const StepRequest& r) {
-  if (r.given("--multistart") && r.multistart < 1)
-    throw InputError("--multistart needs N >= 1 starts, got " + std::to_string(r.multistart));
+  if (r.multistart && *r.multistart < 1)
+    throw InputError("--multistart needs N >= 1 starts, got " + std::to_string(*r.multistart));
 }
 
 ExitCode set_3d_exit_code(const std::string& mode, bool found, bool complete) {
@@ -143,16 +151,15 @@ ExitCode set_3d_exit_code(const std::string& mode, bool found, bool complete) {
 void run_system_3d(const StepRequest& r, StepOutcome& out) {
   Step3dOutcome& o = out.step_3d;
   const int N = o.system.n_points();
-  if (r.all || r.given("--facets"))
+  if (r.all || r.facets)
     throw InputError(std::string(r.all ? "--all" : "--facets") + " is not available for " +
                      std::to_string(N) + " coupled 3-D points: there is no complete enumeration "
                      "of the coupled 3-D step (only one point, N = 1, is enumerated exactly); use "
                      "--chain fb-soc (default) or --multistart N");
-  const bool chain_given = r.given("--chain");
-  if (chain_given && r.given("--multistart"))
+  if (r.chain && r.multistart)
     throw InputError("--chain and --multistart are alternative modes: give at most one");
-  if (chain_given && r.chain != "fb-soc")
-    throw InputError("--chain '" + r.chain + "': for " + std::to_string(N) + " coupled 3-D points "
+  if (r.chain && *r.chain != "fb-soc")
+    throw InputError("--chain '" + *r.chain + "': for " + std::to_string(N) + " coupled 3-D points "
                      "the only link is fb-soc (exact and ipopt are one-point solvers)");
   if (r.DF.size() != static_cast<std::size_t>(3 * N))
     throw InputError("--dF needs 3N = " + std::to_string(3 * N) + " numbers for " +
@@ -160,8 +167,8 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
                      std::to_string(r.DF.size()));
   SystemStep3dProblem p;
   p.system = o.system;
-  p.wear.law = wear_law_option(r.wear_law);
-  p.wear.k_M = r.k_M;
+  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
+  p.wear.k_M = r.k_M.value_or(0);
   p.states = states_3d(r, o.system, p.wear);
   p.DF = Eigen::Map<const Eigen::VectorXd>(r.DF.data(), 3 * N);
   check_multistart(r);
@@ -169,9 +176,9 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
 
   o.states = p.states;
   o.wear = p.wear;
-  o.mode = r.given("--multistart") ? "multistart" : "chain";
+  o.mode = r.multistart ? "multistart" : "chain";
   if (o.mode == "multistart") {
-    o.system_set = multistart_system_step_3d(p, r.multistart, 1);
+    o.system_set = multistart_system_step_3d(p, *r.multistart, 1);
   } else {
     const SystemStep3dSolveResult s = solve_system_step_3d_fb_soc(p);
     const bool found = s.status == Status::kSolved;
@@ -191,12 +198,17 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
 /// N coupled points (run_system_3d).
 void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point 2-D options describe a 2-D point; the file gives the 3-D point.
-  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s",
-                        "--criterion", "--P_T0", "--P_N0"})
-    if (r.given(o))
-      throw InputError(std::string(o) + " cannot be combined with a \"dim\": 3 --system file (the "
-                       "file gives the point's parameters and state)");
-  if (r.given("--multistart")) check_multistart_cap(r.multistart, "--multistart");
+  const ModelOptions& m = r.model;
+  for (const Given& o : {Given{"--a11", m.a11.has_value()}, Given{"--a12", m.a12.has_value()},
+                         Given{"--a22", m.a22.has_value()}, Given{"--mu", m.mu.has_value()},
+                         Given{"--C_T", m.C_T.has_value()}, Given{"--k_a", m.k_a.has_value()},
+                         Given{"--P_s", m.P_s.has_value()},
+                         Given{"--criterion", m.criterion.has_value()},
+                         Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()}})
+    if (o.given)
+      throw InputError(std::string(o.name) + " cannot be combined with a \"dim\": 3 --system file "
+                       "(the file gives the point's parameters and state)");
+  if (r.multistart) check_multistart_cap(*r.multistart, "--multistart");
   Step3dOutcome& o = out.step_3d;
   o.system = parse_contact_system_3d(file);
   if (o.system.n_points() != 1) {
@@ -204,9 +216,8 @@ void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out)
     run_system_3d(r, out);
     return;
   }
-  const bool chain_given = r.given("--chain");
-  const int modes = (r.all ? 1 : 0) + (chain_given ? 1 : 0) + (r.given("--facets") ? 1 : 0) +
-                    (r.given("--multistart") ? 1 : 0);
+  const int modes = (r.all ? 1 : 0) + (r.chain ? 1 : 0) + (r.facets ? 1 : 0) +
+                    (r.multistart ? 1 : 0);
   if (modes > 1)
     throw InputError("--all, --chain, --facets and --multistart are alternative modes: give at "
                      "most one");
@@ -215,12 +226,12 @@ void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out)
                      std::to_string(r.DF.size()));
   Step3dProblem p;
   p.params = o.system.point_parameters(0);
-  p.wear.law = wear_law_option(r.wear_law);
-  p.wear.k_M = r.k_M;
+  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
+  p.wear.k_M = r.k_M.value_or(0);
   o.states = states_3d(r, o.system, p.wear);
   p.state = o.states[0];
   p.DF = Eigen::Vector3d(r.DF[0], r.DF[1], r.DF[2]);
-  if (r.given("--facets") && p.wear_coefficient() != 0)
+  if (r.facets && p.wear_coefficient() != 0)
     throw InputError("--facets is the faceted LCP without wear; with wear (k_a or k_M > 0) the "
                      "faceted step is nonlinear: use --all (exact) or --multistart");
   check_multistart(r);
@@ -228,18 +239,17 @@ void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out)
 
   out.route = StepRoute::kPoint3d;
   o.wear = p.wear;
-  o.mode = r.all ? "all" : r.given("--facets") ? "facets" : r.given("--multistart") ? "multistart"
-                                                                                 : "chain";
+  o.mode = r.all ? "all" : r.facets ? "facets" : r.multistart ? "multistart" : "chain";
   if (o.mode == "all") {
     o.set = enumerate_step_3d(p);
   } else if (o.mode == "facets") {
-    o.set = solve_step_3d_faceted(p, r.facets).set;
+    o.set = solve_step_3d_faceted(p, *r.facets).set;
   } else if (o.mode == "multistart") {
-    o.set = multistart_step_3d(p, r.multistart, 1);
+    o.set = multistart_step_3d(p, *r.multistart, 1);
   } else {
     Step3dChainOptions copt;
-    if (chain_given) {
-      copt.chain = split_chain(r.chain);
+    if (r.chain) {
+      copt.chain = split_chain(*r.chain);
       throw_if_invalid(copt.validate(), "--chain");
     }
     const Step3dChainResult c = solve_step_3d(p, copt);
@@ -262,11 +272,11 @@ void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out)
 StepOutcome run_step_request(const StepRequest& r) {
   // Options that would have no effect in this context are errors, never silence.
   const bool mroz = r.wear_law == "mroz";
-  if (r.given("--k_M") && !mroz)
+  if (r.k_M && !mroz)
     throw InputError("--k_M is the Mroz-Stupkiewicz wear constant: it needs --wear-law mroz");
-  if (mroz && !r.given("--k_M"))
+  if (mroz && !r.k_M)
     throw InputError("--wear-law mroz needs --k_M (the Mroz-Stupkiewicz wear constant)");
-  if (mroz && r.given("--k_a"))
+  if (mroz && r.model.k_a)
     throw InputError("--k_a (Archard) has no effect with --wear-law mroz: give --k_M instead");
   // The file is read once (a pipe can be read only once) and dispatched on its dimension.
   std::optional<SystemFile> read;
@@ -275,25 +285,32 @@ StepOutcome run_step_request(const StepRequest& r) {
   StepOutcome out;
   out.system = r.system;
   out.DF = r.DF;
-  out.facets = r.facets;
-  out.multistart = r.multistart;
+  out.facets = r.facets.value_or(0);
+  out.multistart = r.multistart.value_or(0);
   if (file && file->dim == 3) {
     run_step_3d(r, *file, out);
     return out;
   }
-  for (const char* o : {"--facets", "--multistart"})
-    if (r.given(o))
-      throw InputError(std::string(o) + " applies to a \"dim\": 3 --system file (one 3-D point)");
-  if (r.all && r.given("--chain"))
+  for (const Given& o : {Given{"--facets", r.facets.has_value()},
+                         Given{"--multistart", r.multistart.has_value()}})
+    if (o.given)
+      throw InputError(std::string(o.name) + " applies to a \"dim\": 3 --system file (one 3-D "
+                       "point)");
+  if (r.all && r.chain)
     throw InputError("--chain has no effect with --all (every solution comes from the complete "
                      "active-set enumeration)");
   if (file) {
     run_system(r, *file, out);
     return out;
   }
-  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--P_T0", "--P_N0", "--g0"})
-    if (!r.given(o))
-      throw InputError(std::string(o) + " is required (or --system FILE for N points)");
+  for (const Given& o : {Given{"--a11", r.model.a11.has_value()},
+                         Given{"--a12", r.model.a12.has_value()},
+                         Given{"--a22", r.model.a22.has_value()},
+                         Given{"--mu", r.model.mu.has_value()},
+                         Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()},
+                         Given{"--g0", r.g0.has_value()}})
+    if (!o.given)
+      throw InputError(std::string(o.name) + " is required (or --system FILE for N points)");
   const StepProblem p = point_problem(r);
   if (r.all) {
     out.route = StepRoute::kPointAll;

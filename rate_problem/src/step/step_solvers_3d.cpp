@@ -21,7 +21,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "soc_fb.hpp"
+#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 #include "step_3d_newton.hpp"
 #include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
@@ -92,8 +92,8 @@ Normalized normalize(const Step3dProblem& pr) {
 // ---------------------------------------------------------------------------------------------
 // Fischer-Burmeister functions and Jacobian elements.
 
-using detail::fb_scalar;
-using detail::fb_soc;
+using lcp::detail::fb_scalar;
+using lcp::detail::fb_soc;
 
 /// Phi(z) and an element of its generalized Jacobian, z = (P_TX1, P_TY1, P_N1, lambda)
 /// normalized.

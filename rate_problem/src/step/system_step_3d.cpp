@@ -1,5 +1,5 @@
 // One implicit step of N coupled 3-D contact points (system_step_3d.hpp): residual, semismooth
-// Newton on the per-point FB / SOC-FB functions (soc_fb.hpp, as the one-point solver) and a
+// Newton on the per-point FB / SOC-FB functions (fischer_burmeister.hpp, as one point) and a
 // multistart. Everything runs in units normalized by the system's force and stiffness scales;
 // every answer is verified on the original problem by system_step_3d_residual.
 #include "cpkit/rate_problem/step/system_step_3d.hpp"
@@ -16,7 +16,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/damped_newton.hpp"
-#include "soc_fb.hpp"
+#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 #include "step_3d_terms.hpp"
 #include "step_3d_newton.hpp"
 #include "step_3d_verdict.hpp"
@@ -141,11 +141,11 @@ PointFb point_fb(const Normalized& n, const Vec& z, const Vec& ui, const Vec& g1
   const int r = 4 * i;
   const double PN = z(r + 2), lam = z(r + 3);
   f.g = g1(i) - n.cw[i] * PN * lam;
-  f.phi_N = detail::fb_scalar(PN, -f.g, f.da, f.db);
+  f.phi_N = lcp::detail::fb_scalar(PN, -f.g, f.da, f.db);
   f.al = n.al[static_cast<std::size_t>(i)];
   f.x << n.mu[i] * PN, z(r) / f.al(0), z(r + 1) / f.al(1);
   f.y << lam, -f.al(0) * ui(2 * i), -f.al(1) * ui(2 * i + 1);
-  detail::fb_soc(f.x, f.y, f.phi, f.Jx, f.Jy);
+  lcp::detail::fb_soc(f.x, f.y, f.phi, f.Jx, f.Jy);
   return f;
 }
 

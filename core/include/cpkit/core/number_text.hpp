@@ -22,8 +22,9 @@ NumberText parse_decimal(std::string_view token, double& value);
 /// "'1e400' is outside the range of double (|x| > 1.8e308)"; empty for kOk.
 std::string describe_number(NumberText outcome, std::string_view token);
 
-/// A number as messages show it: the stream's default format, 6 significant digits ("0.25",
-/// "1e+300"; std::to_string would print 300 digits, or 0.000000 for 1e-9).
-std::string num_text(double v);
+/// A number as messages show it: the stream's default format (printf's %g), 6 significant
+/// digits unless asked for more ("0.25", "1e+300"; std::to_string would print 300 digits, or
+/// 0.000000 for 1e-9).
+std::string num_text(double v, int significant_digits = 6);
 
 }  // namespace cpkit

@@ -4,7 +4,7 @@
 /// reformulation): Newton direction J d = -Phi by full-pivoting LU, Armijo backtracking on
 /// Psi = |Phi|^2 / 2, steepest descent -J^T Phi when the Newton direction is not finite or not a
 /// clear descent direction [De Luca, Facchinei, Kanzow 1996]. Used by the SOC solver
-/// (soc_fb.hpp) and the 3-D step solvers (one point: fixed-size 4; N points: 4N).
+/// (cone_complementarity_fb.hpp) and the 3-D step solvers (one point: fixed-size 4; N points: 4N).
 ///
 /// The loop only iterates; it grants nothing. The caller's `done(z, Phi)` says when to stop
 /// (typically a cheap test on Phi, then the verdict), and every answer goes through the caller's

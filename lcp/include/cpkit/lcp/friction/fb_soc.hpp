@@ -9,7 +9,7 @@
 /// turns De Saxce's law into the SOC complementarity x in K_1, y in K_1, x . y = 0, i.e.
 /// phi_FB(x, y) = x + y - sqrt(x o x + y o y) = 0 (Jordan product o); a contact with mu = 0 uses
 /// (phi(r_N, u_N), r_T) with the scalar FB function phi. The FB kernels and their Jacobian
-/// elements are cpkit's one implementation (cpkit/lcp/detail/soc_fb.hpp, shared with the 3-D
+/// elements are cpkit's one implementation (cpkit/lcp/detail/fischer_burmeister.hpp, shared with the 3-D
 /// step solvers). Phi(r) = 0 is solved by semismooth Newton: J = A + B W with A, B block diagonal
 /// (the derivatives of phi with respect to r and u; at u_T = 0 the element d|u_T| = 0),
 /// factorised by Eigen's SparseLU (COLAMD); a J that does not factorise is shifted,

@@ -32,11 +32,16 @@
 
 namespace cpkit::lcp::friction {
 
-/// The condensed local problem; `ok` is false (and `message` says why) when M is not
-/// symmetric positive definite to rounding.
+/// What M is, as condensation found it: condensable only when symmetric positive definite to
+/// rounding. A caller picks its route by this value (a singular M: the proximal point in v).
+enum class MassMatrix { kPositiveDefinite, kZero, kNotSymmetric, kSingular, kIndefinite };
+
+/// The condensed local problem; `ok` is false (`mass` says what M is, `message` says it in
+/// words) when M is not symmetric positive definite to rounding.
 struct CondensedProblem {
   FrictionContactProblem local;
   bool ok = false;
+  MassMatrix mass = MassMatrix::kPositiveDefinite;
   std::string message;
 };
 

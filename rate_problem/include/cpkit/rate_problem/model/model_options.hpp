@@ -5,6 +5,7 @@
 /// and their conversion to the model's types. Kept here, not in the program, so that a command's
 /// request (step/step_request.hpp) is checked by the library with the program's messages. Units
 /// as ContactParameters (parameters.hpp).
+#include <optional>
 #include <string>
 
 #include "cpkit/rate_problem/model/branch_rule.hpp"
@@ -13,14 +14,17 @@
 
 namespace cpkit::rate {
 
-/// The one-point model options as given (defaults: those `--help` shows).
+/// The one-point model options as given: an empty field was not given (a request's checks tell
+/// "given" from "not given"); the values used then are the defaults `--help` shows (0, and
+/// P_s = 1, criterion 38).
 struct ModelOptions {
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0;
-  double C_T = 0, k_a = 0, P_s = 1;
-  std::string criterion = "38";
+  std::optional<double> a11, a12, a22, mu;
+  std::optional<double> C_T, k_a, P_s;
+  std::optional<std::string> criterion;
 };
 
-/// The parameters; throws InputError naming the bad option or parameter (A not SPD, mu <= 0, ...).
+/// The parameters (defaults for the options not given); throws InputError naming the bad
+/// option or parameter (A not SPD, mu <= 0, ...).
 ContactParameters model_parameters(const ModelOptions& m);
 
 /// The values of --criterion, --wear-law and --branch-rule; each throws InputError

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cpkit/core/exit_code.hpp"
+#include "cpkit/rate_problem/model/model_options.hpp"
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
@@ -20,13 +21,13 @@
 
 namespace cpkit::rate {
 
-/// The options of `cpkit rate` as given. Defaults are those `cpkit rate --help` shows.
+/// The options of `cpkit rate` as given: an empty optional (an empty dF) was not given.
+/// Defaults are those `cpkit rate --help` shows.
 struct RateRequest {
-  std::string state;  ///< --state a|b|c|d (one point)
-  ContactParameters params;      ///< --a11 ... --P_s (the criterion comes from `criterion`)
-  std::string criterion = "38";  ///< --criterion 38|35
+  std::optional<std::string> state;  ///< --state a|b|c|d (one point: required)
+  ModelOptions model;  ///< --a11 --a12 --a22 --mu (one point: required) --C_T --k_a --P_s --criterion
   double P_N = 0;                ///< --P_N (states c and d)
-  int sgn_PT = 1;                ///< --sgnPT (state d)
+  std::optional<int> sgn_PT;     ///< --sgnPT (state d only; absent: +1)
   std::vector<double> dF;        ///< --dF: DFT DFN (one point), 2N or 3N numbers (--system)
   std::string method = "enumerate";
   std::string system;                ///< --system FILE: an N-point or 3-D system (empty: one point)
@@ -35,8 +36,6 @@ struct RateRequest {
   std::optional<SystemFile> file;
   int facets = 0;                    ///< --facets K: a 3-D system's faceted route (0: exact)
   std::optional<double> time_limit;  ///< --time-limit S: the faceted 3-D solves' budget
-  std::vector<std::string> options_given;  ///< the options given, as "--dF"
-  bool given(const std::string& option) const;
 };
 
 /// The answer to a RateRequest: the route's result, the echo of its input, the exit code and

@@ -20,8 +20,6 @@
 
 namespace cpkit::rate {
 
-/// `x` with `digits` significant digits ("0.25", "1e+03").
-std::string map_number_text(double x, int digits = 4);
 /// "stick, slip+" of a type mask.
 std::string map_types_text(unsigned mask);
 /// "no solution", "1 solution", "3 solutions", "a continuum of solutions" (count -1).

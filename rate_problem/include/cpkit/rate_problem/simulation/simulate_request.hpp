@@ -7,7 +7,6 @@
 /// "dim": 3 file). Values in the model's units (forces as F, displacements as w), angles in
 /// radians. Bad input: cpkit::InputError with the message the program prints (exit 2).
 #include <functional>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,13 +18,23 @@
 
 namespace cpkit::rate {
 
+/// The numeric options of `cpkit simulate` as given (absent: not given; --config or the
+/// defaults apply). Counts (cycles, steps, ...) are numbers here too (1e6 is accepted) and must
+/// be integers.
+struct SimulateNumbers {
+  std::optional<double> a11, a12, a22, mu, C_T, k_a, P_s;  ///< the model
+  std::optional<double> k_M;                                 ///< Mroz-Stupkiewicz wear
+  /// fretting (period also for csv loads)
+  std::optional<double> F_N, amplitude, period, cycles, steps_per_cycle, ramp_steps;
+  std::optional<double> F_T0, F_N0, F_T1, F_N1, duration, steps;  ///< ramp
+  std::optional<double> heat_capacity, T_ref, T_initial;          ///< heat
+};
+
 /// The options of `cpkit simulate` as given (empty string, empty vector or no value: not given).
 struct SimulateRequest {
   std::string config;  ///< --config FILE (JSON settings, overridden by the options)
   std::string system;  ///< --system FILE: N points ("dim": 2) or one 3-D point ("dim": 3)
-  /// Numeric options given, by name without "--" ("a11", "steps-per-cycle", "T-ref"). Counts
-  /// (cycles, steps, ...) are numbers here too (1e6 is accepted) and must be integers.
-  std::map<std::string, double> num;
+  SimulateNumbers numbers;  ///< --a11 ... --T-initial
   std::string criterion, wear_law, load, load_csv, branch_rule;  ///< --criterion ... --branch-rule
   std::string csv, summary, plot;           ///< --csv FILE, --summary FILE, --plot PREFIX
   std::vector<double> T_body, conductance;  ///< --T-body T1 T2, --conductance c1 c2

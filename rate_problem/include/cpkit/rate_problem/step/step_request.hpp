@@ -27,24 +27,27 @@
 
 namespace cpkit::rate {
 
-/// The options of `cpkit step` as given. Defaults are those `cpkit step --help` shows. Checks
-/// that depend on whether an option was given read `options_given` ("--g0", ...).
+/// The solver chain of one 2-D point when --chain is not given.
+inline constexpr const char* kDefaultStepChain = "active-set,lemke,fb-newton,ipopt";
+
+/// The options of `cpkit step` as given: an empty optional was not given (the checks that
+/// depend on it: options without effect, required options). Defaults are those `cpkit step
+/// --help` shows.
 struct StepRequest {
-  ModelOptions model;                 ///< --a11 --a12 --a22 --mu --C_T --k_a --P_s --criterion
-  std::string wear_law = "archard";   ///< --wear-law archard|mroz
-  double k_M = 0;                     ///< --k_M (Mroz-Stupkiewicz)
-  double P_T0 = 0, P_N0 = 0, g0 = 0;  ///< --P_T0 --P_N0 --g0 (start state; --g0 also 3-D)
+  ModelOptions model;  ///< --a11 --a12 --a22 --mu (one 2-D point: required) --C_T --k_a --P_s --criterion
+  std::optional<std::string> wear_law;  ///< --wear-law archard|mroz (absent: archard)
+  std::optional<double> k_M;            ///< --k_M (Mroz-Stupkiewicz)
+  std::optional<double> P_T0, P_N0, g0;  ///< --P_T0 --P_N0 --g0 (start state; --g0 also 3-D)
   std::vector<double> DF;             ///< --dF: 2, 2N, 3 or 3N numbers
   bool all = false;                   ///< --all
-  std::string chain = "active-set,lemke,fb-newton,ipopt";  ///< --chain (comma-separated)
+  std::optional<std::string> chain;   ///< --chain (comma-separated; absent: kDefaultStepChain
+                                      ///< for one 2-D point, the 3-D routes' own chains)
   std::string system;                 ///< --system FILE (empty: one 2-D point)
   /// The --system file, read once (a pipe can be read only once): by the caller, or, when
   /// absent, by run_step_request from `system` after the checks that come first.
   std::optional<SystemFile> file;
-  int facets = 0;                     ///< --facets K (3-D files)
-  int multistart = 0;                 ///< --multistart N (3-D files)
-  std::vector<std::string> options_given;  ///< the options given, as "--g0"
-  bool given(const std::string& option) const;
+  std::optional<int> facets;          ///< --facets K (3-D files)
+  std::optional<int> multistart;      ///< --multistart N (3-D files)
 };
 
 enum class StepRoute { kPointAll, kPointChain, kSystem, kPoint3d, kSystem3d };

@@ -1,5 +1,5 @@
 // Second-order-cone complementarity (soc_problem.hpp) and its FB semismooth Newton solver
-// (soc_fb.hpp). Independent sources: Moreau's decomposition (M = I: z = P_K(-q), w = P_K(q),
+// (cone_complementarity_fb.hpp). Independent sources: Moreau's decomposition (M = I: z = P_K(-q), w = P_K(q),
 // hand-computed below), the LCP solver Lemke on half-line blocks (a second algorithm), and a
 // projected-gradient fixed point z = P_K(z - t (M z + q)) written here (SPD M: unique solution).
 #include <catch2/catch.hpp>
@@ -11,7 +11,7 @@
 #include "cpkit/core/soc_problem.hpp"
 #include "cpkit/lcp/damped_newton.hpp"
 #include "cpkit/lcp/lemke.hpp"
-#include "cpkit/lcp/soc_fb.hpp"
+#include "cpkit/lcp/cone_complementarity_fb.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace {

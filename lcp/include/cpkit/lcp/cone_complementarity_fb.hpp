@@ -1,5 +1,5 @@
 #pragma once
-/// \file soc_fb.hpp
+/// \file cone_complementarity_fb.hpp
 /// Semismooth Newton on the Fischer-Burmeister reformulation of a second-order-cone
 /// complementarity problem (soc_problem.hpp), registered as "fb-soc" for ProblemKind::kSoc
 /// (the same entry solves friction problems, friction/fb_soc.hpp)
@@ -8,7 +8,7 @@
 /// Per block b, with w = M z + q: Phi_b = fb(z_b, w_b) (scalar FB) for a half-line, and
 /// Phi_b = z_b + w_b - sqrt(z_b o z_b + w_b o w_b) (Jordan product o) for a Lorentz cone; the
 /// kernels and their Jacobian elements are cpkit's one implementation
-/// (cpkit/lcp/detail/soc_fb.hpp). J = A + B M with A, B block diagonal. The loop is
+/// (cpkit/lcp/detail/fischer_burmeister.hpp). J = A + B M with A, B block diagonal. The loop is
 /// damped_newton() (damped_newton.hpp): Armijo on |Phi|^2 / 2 with a gradient fallback.
 ///
 /// Units: the problem is first scaled by powers of two (exactly) so that ||q||_inf and

@@ -1,5 +1,5 @@
-// FB semismooth Newton for second-order-cone complementarity (soc_fb.hpp).
-#include "cpkit/lcp/soc_fb.hpp"
+// FB semismooth Newton for second-order-cone complementarity (cone_complementarity_fb.hpp).
+#include "cpkit/lcp/cone_complementarity_fb.hpp"
 
 #include <cmath>
 #include <string>
@@ -8,7 +8,7 @@
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/damped_newton.hpp"
-#include "cpkit/lcp/detail/soc_fb.hpp"
+#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 
 namespace cpkit::lcp {
 namespace {
