@@ -7,7 +7,8 @@ suite's problems, the docs' examples and seeded random families it generates its
 everything they produce: the exit code, stdout (JSON and text), stderr and every file written
 (--out, --csv, --summary). Timings and the version are masked (the keys in MASKED_KEYS, and
 "<number> s" in text); the scratch directory is written as $WORK. Doubles are printed by cpkit in
-shortest round-trip form, so equal digests mean bit-identical results.
+shortest round-trip form, so equal digests mean bit-identical results. The checkout's own path is
+written as $ROOT, so that the digest does not depend on where the repository is.
 
     scripts/result_digest.py [--cpkit build/apps/cpkit] [--write FILE] [--check FILE] [--only NAME]
 
@@ -48,7 +49,7 @@ def mask_json(x):
 def masked_text(data, work):
     """Bytes of one output, masked: JSON re-serialised with the timing keys masked (key order
     and float text kept: json keeps the parsed float's repr, which round-trips)."""
-    text = data.decode("utf-8", errors="replace").replace(work, "$WORK")
+    text = data.decode("utf-8", errors="replace").replace(work, "$WORK").replace(ROOT, "$ROOT")
     stripped = text.strip()
     if stripped.startswith("{") or stripped.startswith("["):
         try:
@@ -447,7 +448,7 @@ def main():
             os.makedirs(outdir, exist_ok=True)
             p = subprocess.run([args.cpkit] + argv, cwd=ROOT, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, stdin=subprocess.DEVNULL)
-            parts = [f"command: cpkit {' '.join(argv)}".replace(work, "$WORK"),
+            parts = [f"command: cpkit {' '.join(argv)}".replace(work, "$WORK").replace(ROOT, "$ROOT"),
                      f"exit: {p.returncode}",
                      "stdout:\n" + masked_text(p.stdout, work),
                      "stderr:\n" + masked_text(p.stderr, work)]
