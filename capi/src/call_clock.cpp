@@ -26,11 +26,12 @@ bool invariant_counter() noexcept {
   return (d >> 8) & 1u;
 }
 
-/// The counter's calibration, shared by every thread: the first steady_clock / counter pair,
-/// then the rate once 10 ms have passed (0: not yet).
+/// The counter's calibration, shared by every thread: the first steady_clock / counter pair
+/// (taken together when the process first asks), then the rate once 10 ms have passed (0: not
+/// yet).
 struct Calibration {
   bool usable = invariant_counter();
-  std::atomic<std::uint64_t> first_ns{0}, first_ticks{0};
+  std::uint64_t first_ns = steady_ns(), first_ticks = __rdtsc();
   std::atomic<double> seconds_per_tick{0};
 };
 
@@ -39,20 +40,12 @@ Calibration& calibration() noexcept {
   return c;
 }
 
-/// Seconds per counter tick, or 0 while the rate is not yet known (the caller reads
-/// steady_clock then); `now_ns` is a steady_clock read taken with `now_ticks`.
+/// Fixes the rate when 10 ms have passed since the first pair (`now_ns` a steady_clock read
+/// taken with `now_ticks`).
 void calibrate(Calibration& c, std::uint64_t now_ns, std::uint64_t now_ticks) noexcept {
-  std::uint64_t expected = 0;
-  if (c.first_ns.load(std::memory_order_acquire) == 0) {
-    c.first_ticks.store(now_ticks, std::memory_order_relaxed);
-    c.first_ns.compare_exchange_strong(expected, now_ns, std::memory_order_acq_rel);
-    return;
-  }
-  const std::uint64_t ns0 = c.first_ns.load(std::memory_order_acquire);
-  const std::uint64_t ticks0 = c.first_ticks.load(std::memory_order_relaxed);
-  if (now_ns - ns0 < 10'000'000 || now_ticks <= ticks0) return;
-  c.seconds_per_tick.store(1e-9 * static_cast<double>(now_ns - ns0) /
-                               static_cast<double>(now_ticks - ticks0),
+  if (now_ns - c.first_ns < 10'000'000 || now_ticks <= c.first_ticks) return;
+  c.seconds_per_tick.store(1e-9 * static_cast<double>(now_ns - c.first_ns) /
+                               static_cast<double>(now_ticks - c.first_ticks),
                            std::memory_order_release);
 }
 #endif
