@@ -101,7 +101,8 @@ extern "C" int cpkit_fc3d_read_into(const char* path, int contacts, int nnz, int
     const FrictionContactProblem p = read(path);
     if (p.contacts() != contacts || p.W.nonZeros() != nnz)
       throw InputError(std::string(path) + " has " + std::to_string(p.contacts()) +
-                       " contacts and " + std::to_string(p.W.nonZeros()) +
+                       (p.contacts() == 1 ? " contact and " : " contacts and ") +
+                       std::to_string(p.W.nonZeros()) +
                        " stored entries of W, the arrays given are for " +
                        std::to_string(contacts) + " and " + std::to_string(nnz) +
                        " (cpkit_fc3d_read_sizes gives them)");

@@ -37,7 +37,8 @@ constexpr double kEps = 2.220446049250313e-16;
 struct Minor {
   double det = 1, size = 1;
 };
-Minor principal_minor(const double* M, int n, unsigned S) {
+template <int n>
+Minor principal_minor(const double* M, unsigned S) {
   int idx[3], k = 0;
   for (int i = 0; i < n; ++i)
     if (S >> i & 1u) idx[k++] = i;
@@ -63,17 +64,18 @@ Minor principal_minor(const double* M, int n, unsigned S) {
 
 /// True when every principal minor is positive beyond its rounding error (8 eps |terms| bounds
 /// gamma_7 of a 3 x 3 expansion with a factor 2 to spare); minors[S] receives each one.
-bool p_matrix(const double* M, int n, Minor* minors) {
+template <int n>
+bool p_matrix(const double* M, Minor* minors) {
   for (unsigned S = 1; S < (1u << n); ++S) {
-    minors[S] = principal_minor(M, n, S);
+    minors[S] = principal_minor<n>(M, S);
     if (!(minors[S].det > 16 * kEps * minors[S].size)) return false;
   }
   return true;
 }
 
 /// z_S = -M_SS^{-1} q_S by Cramer's rule (det M_SS = minors[S].det), z = 0 off S.
-void basic_solution(const double* M, const double* q, int n, unsigned S, const Minor* minors,
-                    double* z) {
+template <int n>
+void basic_solution(const double* M, const double* q, unsigned S, const Minor* minors, double* z) {
   int idx[3], k = 0;
   for (int i = 0; i < n; ++i) {
     z[i] = 0;
@@ -97,9 +99,10 @@ void basic_solution(const double* M, const double* q, int n, unsigned S, const M
 /// The unique solution of a P-matrix LCP (n <= 3) into z; false when M is not provably a
 /// P-matrix or no basis passes its sign test exactly (a degenerate problem: the enumeration
 /// decides it).
-bool p_matrix_solution(int n, const double* M, const double* q, double* z) {
-  Minor minors[8];
-  if (n > 3 || !p_matrix(M, n, minors)) return false;
+template <int n>
+bool p_matrix_solution(const double* M, const double* q, double* z) {
+  Minor minors[1u << n];
+  if (!p_matrix<n>(M, minors)) return false;
   // First the basis of the rows with q_i < 0 (the guess of one principal pivoting step, right
   // whenever those rows are the active ones), then every other one.
   unsigned guess = 0;
@@ -107,7 +110,7 @@ bool p_matrix_solution(int n, const double* M, const double* q, double* z) {
     if (q[i] < 0) guess |= 1u << i;
   for (unsigned k = 0; k < (1u << n); ++k) {
     const unsigned S = k == 0 ? guess : (k == guess ? 0 : k);
-    basic_solution(M, q, n, S, minors, z);
+    basic_solution<n>(M, q, S, minors, z);
     bool ok = true;
     for (int i = 0; i < n && ok; ++i) {
       double w = q[i];
@@ -117,6 +120,15 @@ bool p_matrix_solution(int n, const double* M, const double* q, double* z) {
     if (ok) return true;
   }
   return false;
+}
+
+bool p_matrix_solution(int n, const double* M, const double* q, double* z) {
+  switch (n) {  // the size as a constant: every loop unrolled
+    case 1: return p_matrix_solution<1>(M, q, z);
+    case 2: return p_matrix_solution<2>(M, q, z);
+    case 3: return p_matrix_solution<3>(M, q, z);
+    default: return false;
+  }
 }
 
 bool unique_solution(int n, const double* M, const double* q, double* z) {

@@ -24,6 +24,17 @@ double ratio(double a, double s) {
   return a > 0 ? kInf : -kInf;
 }
 
+// row_violation()'s formula, inlinable (the public function is not, in position-independent
+// code, and the per-call path of the C API calls it for every row).
+inline double row_violation_of(double wn, double dlo, double dhi) noexcept {
+  const double feas = std::max({0.0, -dlo, -dhi});
+  const double lo = std::max(dlo, 0.0), hi = std::max(dhi, 0.0);
+  const double at_lower = std::max(lo, std::max(0.0, -wn));   // z at l, w >= 0
+  const double at_upper = std::max(hi, std::max(0.0, wn));    // z at u, w <= 0
+  const double inside = std::abs(wn);                         // w = 0
+  return std::max(feas, std::min({at_lower, at_upper, inside}));
+}
+
 Vec row_abs_sums(const LcpProblem& p) {
   if (!p.is_sparse()) return p.M.cwiseAbs().rowwise().sum();
   Vec r = Vec::Zero(p.size());
@@ -42,13 +53,18 @@ DataSizes data_sizes(const LcpProblem& p) {
   return d;
 }
 
-double z_unit(const DataSizes& d, double z_norm) {
-  if (d.q_norm > 0 && d.m_max > 0) {
-    const double z_ref = d.q_norm / d.m_max;  // may overflow to inf: then nothing is small
+namespace {
+// z_unit()'s formula, inlinable (the public function is not, in position-independent code).
+inline double z_unit_of(double q_norm, double m_max, double z_norm) {
+  if (q_norm > 0 && m_max > 0) {
+    const double z_ref = q_norm / m_max;  // may overflow to inf: then nothing is small
     return std::max(z_norm, z_ref);
   }
   return z_norm;
 }
+}  // namespace
+
+double z_unit(const DataSizes& d, double z_norm) { return z_unit_of(d.q_norm, d.m_max, z_norm); }
 
 void w_units(const DataSizes& d, const Vec& q, double z_norm, Vec& s) {
   s.resize(q.size());
@@ -239,20 +255,19 @@ double box_complementarity(const Vec& z, const Vec& w, const Vec& l, const Vec& 
 }  // namespace
 
 double row_violation(double wn, double dlo, double dhi) noexcept {
-  const double feas = std::max({0.0, -dlo, -dhi});
-  const double lo = std::max(dlo, 0.0), hi = std::max(dhi, 0.0);
-  const double at_lower = std::max(lo, std::max(0.0, -wn));   // z at l, w >= 0
-  const double at_upper = std::max(hi, std::max(0.0, wn));    // z at u, w <= 0
-  const double inside = std::abs(wn);                         // w = 0
-  return std::max(feas, std::min({at_lower, at_upper, inside}));
+  return row_violation_of(wn, dlo, dhi);
 }
 
-double small_lcp_natural(int n, const double* M, const double* q, const double* z, double* w) {
-  if (n < 1 || n > kSmallLcpMax) return kInf;
+namespace {
+
+/// small_lcp_natural() for a size known at compile time (its loops unrolled; the same
+/// operations in the same order as for any n).
+template <int n>
+double small_natural(const double* M, const double* q, const double* z, double* w) {
   // Every step as lcp_residuals() takes it for a dense problem (the sums in column order, as
   // Eigen's products and row sums of these sizes add them), on the stack.
   auto m = [&](int i, int j) { return M[i + n * j]; };
-  double zp[kSmallLcpMax], wp[kSmallLcpMax], R[kSmallLcpMax], s[kSmallLcpMax];
+  double zp[n], wp[n], R[n], s[n];
   bool moved = false;
   double q_norm = 0, m_max = 0, z_norm = 0;
   for (int i = 0; i < n; ++i) {
@@ -277,10 +292,7 @@ double small_lcp_natural(int n, const double* M, const double* q, const double* 
     if (m_max > 0 && q_norm > 0) row = std::min(row, (row_sum / m_max) * q_norm);
     s[i] = std::abs(q[i]) + row;
   }
-  DataSizes d;
-  d.q_norm = q_norm;
-  d.m_max = m_max;
-  const double Z = z_unit(d, z_norm);
+  const double Z = z_unit_of(q_norm, m_max, z_norm);
   const double g = gamma_bound(n);
   bool finite = true;
   double natural = 0, bound = 0;
@@ -288,7 +300,7 @@ double small_lcp_natural(int n, const double* M, const double* q, const double* 
     finite = finite && std::isfinite(z[i]) && std::isfinite(wp[i]) && std::isfinite(R[i]) &&
              std::isfinite(s[i]);
     const RowValues v = row_values(zp[i], wp[i], R[i], s[i], 0.0, kInf, Z, g);
-    double r = row_violation(v.wn, v.to_lower, v.to_upper);
+    double r = row_violation_of(v.wn, v.to_lower, v.to_upper);
     if (!std::isfinite(zp[i]) || !std::isfinite(wp[i]) || !std::isfinite(R[i]) ||
         !std::isfinite(s[i]) || std::isnan(r))
       r = kInf;
@@ -299,6 +311,18 @@ double small_lcp_natural(int n, const double* M, const double* q, const double* 
   }
   natural = std::max(natural, bound);
   return finite ? natural : kInf;
+}
+
+}  // namespace
+
+double small_lcp_natural(int n, const double* M, const double* q, const double* z, double* w) {
+  switch (n) {
+    case 1: return small_natural<1>(M, q, z, w);
+    case 2: return small_natural<2>(M, q, z, w);
+    case 3: return small_natural<3>(M, q, z, w);
+    case 4: return small_natural<4>(M, q, z, w);
+    default: return kInf;
+  }
 }
 
 UnitFreePoint unit_free_point(const LcpProblem& p, const Vec& z, Vec& w) {

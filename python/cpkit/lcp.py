@@ -69,13 +69,14 @@ def solve(M, q, solver: str = _cpkit.DEFAULT_SOLVER, *, tol: float = 1e-10,
                                                              time_limit)))
 
 
-def solve_batch(Ms, qs, solver: str = "lemke", *, tol: float = 1e-10,
+def solve_batch(Ms, qs, solver: str = _cpkit.DEFAULT_SOLVER, *, tol: float = 1e-10,
                 tol_acceptable: float = 1e-6, max_iterations: int = 0,
                 time_limit: float = _INF) -> BatchResult:
     """One solution of each of k LCPs (Ms[i], qs[i]) in one call: Ms of shape (k, n, n), qs of
     shape (k, n) (dense, float64 or convertible). The problems are solved in C++ one after the
     other without the GIL and without Python objects per problem, each answer decided from its
-    data as by solve() (same solver names and tolerances; time_limit is per problem).
+    data as by solve() (same solver names, default "auto", and tolerances; time_limit is per
+    problem).
 
     Returns a BatchResult of arrays: z and w (k, n), status (k,) names, residual (k,), and
     is_solution (k,) booleans. A bad shape or a non-finite entry raises ValueError naming the

@@ -51,20 +51,21 @@ def test_batch_closed_form_and_other_solvers():
         b = cpkit.solve_batch(Ms, qs, solver=solver)
         assert (b.status == "solved").all()
         np.testing.assert_allclose(b.z, np.tile([4 / 3, 7 / 3], (4, 1)), rtol=1e-9)
-    # Lists convert; an empty batch gives empty arrays.
+    # Lists convert; the default solver is solve()'s ("auto"); an empty batch gives empty arrays.
     b = cpkit.solve_batch(Ms.tolist(), qs.tolist())
-    assert b.solver == "lemke" and (b.status == "solved").all()
+    assert b.solver == "auto" and (b.status == "solved").all()
     e = cpkit.solve_batch(np.zeros((0, 3, 3)), np.zeros((0, 3)))
     assert len(e) == 0 and e.z.shape == (0, 3)
 
 
 def test_batch_mixed_outcomes_keep_their_rows():
-    # Row 1 has no solution: M = [[-1]] (w = -z - 1 < 0 for every z >= 0): Lemke ends on a ray.
+    # Row 1 has no solution: M = [[-1]] (w = -z - 1 < 0 for every z >= 0). The batch's
+    # default is solve()'s: each row's status is that of solve() with its default.
     Ms = np.array([[[1.0]], [[-1.0]], [[2.0]]])
     qs = np.array([[-1.0], [-1.0], [4.0]])
     b = cpkit.solve_batch(Ms, qs)
     assert list(b.is_solution) == [True, False, True]
-    assert b.status[1] == cpkit.solve(Ms[1], qs[1], solver="lemke").status
+    assert b.status[1] == cpkit.solve(Ms[1], qs[1]).status
     np.testing.assert_allclose(b.z[[0, 2], 0], [1.0, 0.0])  # z = 1 (w = 0); z = 0 (w = 4)
     assert "3 problems" in repr(b) and "2 solved" in repr(b)
 

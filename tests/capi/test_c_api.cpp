@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -97,6 +98,39 @@ std::string read_text(const std::string& path) {
 }
 
 }  // namespace
+
+TEST_CASE("C API: info.seconds is the call's wall time, before and after the clock's calibration",
+          "[capi]") {
+  // Oracle: steady_clock read around each call by the test. The call's own clock
+  // (capi/src/call_clock.hpp) is steady_clock for the first 10 ms of the process and then,
+  // where the CPU has an invariant counter, the counter at a rate measured against it: both
+  // phases are crossed here (calls for > 20 ms), and every reading lies within the outer one.
+  using Clock = std::chrono::steady_clock;
+  const double M[4] = {2, 1, 1, 2}, q[2] = {-5, -6};
+  double z[2], w[2];
+  cpkit_info info;
+  const auto begin = Clock::now();
+  int calls = 0;
+  while (std::chrono::duration<double>(Clock::now() - begin).count() < 0.02 || calls < 1000) {
+    const auto t0 = Clock::now();
+    REQUIRE(cpkit_lcp_solve(2, M, q, "auto", nullptr, z, w, &info) == 0);
+    const double outer = std::chrono::duration<double>(Clock::now() - t0).count();
+    INFO("call " << calls << ": info.seconds " << info.seconds << ", outer " << outer);
+    REQUIRE(info.seconds >= 0);
+    REQUIRE(info.seconds <= outer * 1.01 + 1e-7);  // the counter's rate: ~1e-5 relative
+    ++calls;
+  }
+  // A slower call (n = 60, the general route): most of its outer time is inside it.
+  const int n = 60;
+  std::vector<double> Mb(n * n, 0.0), qb(n, -1.0), zb(n), wb(n);
+  for (int i = 0; i < n; ++i) Mb[i * (n + 1)] = 2 + i % 3;
+  const auto t0 = Clock::now();
+  REQUIRE(cpkit_lcp_solve(n, Mb.data(), qb.data(), "lemke", nullptr, zb.data(), wb.data(),
+                          &info) == 0);
+  const double outer = std::chrono::duration<double>(Clock::now() - t0).count();
+  CHECK(info.seconds <= outer * 1.01 + 1e-7);
+  CHECK(info.seconds >= 0.5 * outer);
+}
 
 TEST_CASE("C API: the tiny LCP by hand, every route", "[capi]") {
   const double M[4] = {2, 1, 1, 2}, q[2] = {-5, -6};
@@ -471,7 +505,7 @@ TEST_CASE("C API: reading a Siconos file (library-allocated and caller-owned)", 
   for (int k = 0; k < 9; ++k) CHECK(val[k] == W[k]);
   CHECK(cpkit_fc3d_read_into(path.c_str(), contacts, 8, col.data(), row.data(), val.data(),
                              qq.data(), mu.data(), &info) == 2);
-  CHECK(message(info).find("has 1 contacts and 9 stored entries") != std::string::npos);
+  CHECK(message(info).find("has 1 contact and 9 stored entries") != std::string::npos);
 }
 
 TEST_CASE("C API: a system's rate problem and step as JSON", "[capi]") {

@@ -37,37 +37,61 @@ double wall_seconds(Run&& run) {
 GridEstimate sample_param_direction(const ContactParameters& params, const ContactState& state,
                                     const MapAxis& axis, int theta_n, const MapOptions& options,
                                     bool csv, bool writing) {
+  const Stopwatch sample;
   GridEstimate e;
   const double cross_bytes = options.method != RateMethod::kEnumerate ? 1 : 0;
   const double n = axis.n, tn = theta_n;
   e.cells = n * tn;
   e.threads = map_worker_threads(options.threads, axis.n);
-  // A sub-grid of the same map (rows spread over the whole axis, directions over the circle),
-  // on the map's threads and timed in wall clock: what the map will take on this machine as
-  // loaded now. Grown (rows first: their cost varies along the axis) until it takes
-  // kSampleSeconds or is the whole map.
+  // Sub-grids of the same map (rows spread over the whole axis, directions over the circle),
+  // on the map's threads, timed in wall clock: what the map will take on this machine as loaded
+  // now. A row costs a set-up (the state's LCP as a function of the load, its critical
+  // directions) and a part per direction (a cell); builds weigh them differently (under
+  // AddressSanitizer the set-up, which allocates, slows far more than the cells, whose cost is
+  // arithmetic). Each is timed by a sample long enough that a loaded machine's pauses average
+  // out:
+  // - the set-up: rows of one direction, grown until kSampleSeconds / 3;
+  // - the cells: rows of ts directions, ts grown until the cells take 3/4 of that sample (or
+  //   are the map's rows) so that the set-up's share taken off them is small, then rows,
+  //   until kSampleSeconds or the whole map.
+  // Issue 37: one short sample of 1 and 1024 directions (rows grown first), whose difference
+  // was noise, put the 10^10-cell map at 104 s under ASan; it ran at ~3,200 s. Not sampled:
+  // the chunked run's record of each row (maps/grid_map_run.cpp): a map of a few directions per
+  // row takes up to ~2.5x its estimate (a sample through the chunked run met its per-chunk
+  // start-up instead, milliseconds on a loaded VM, and overestimated 3-17x).
   MapAxis sa = axis;
-  sa.n = std::min(axis.n, std::max(8, 4 * e.threads));
-  int ts = std::min(theta_n, 1024);
   auto time_of = [&](int directions) {
     return wall_seconds([&] {
       compute_param_direction_map(params, state, sa, directions, options, {},
                                   [](const ParamDirectionRows&) {});
     });
   };
-  double t1 = time_of(ts);
-  while (t1 < kSampleSeconds && (sa.n < axis.n || ts < theta_n)) {
-    const int g = growth(t1);
-    if (sa.n < axis.n)
-      sa.n = static_cast<int>(std::min<int64_t>(axis.n, int64_t{sa.n} * g));
-    else
-      ts = static_cast<int>(std::min<int64_t>(theta_n, int64_t{ts} * g));
-    t1 = time_of(ts);
+  sa.n = std::min(axis.n, std::max(8, 4 * e.threads));
+  double t0 = time_of(1);
+  while (t0 < kSampleSeconds / 3 && sa.n < axis.n) {
+    sa.n = static_cast<int>(std::min<int64_t>(axis.n, int64_t{sa.n} * growth(3 * t0)));
+    t0 = time_of(1);
   }
-  // The per-row part (critical directions, set-up): one direction per row.
-  const double t0 = ts > 1 ? std::min(t1, time_of(1)) : t1;
-  const double per_cell = ts > 1 ? std::max(0.0, t1 - t0) / (ts - 1) : 0;  // for sa.n rows
-  e.seconds = n / sa.n * (t0 + (tn - 1) * per_cell);
+  const double setup_per_row = t0 / sa.n;
+  double cell_time = 0;
+  if (theta_n > 1) {
+    sa.n = std::min(axis.n, std::max(8, 4 * e.threads));
+    int ts = std::min(theta_n, 256);
+    double t1 = time_of(ts);
+    for (;;) {
+      const bool cells_dominate = ts == theta_n || t1 >= 4 * setup_per_row * sa.n;
+      if (cells_dominate && (t1 >= kSampleSeconds || (sa.n == axis.n && ts == theta_n))) break;
+      if (!cells_dominate || sa.n == axis.n)
+        ts = static_cast<int>(
+            std::min<int64_t>(theta_n, int64_t{ts} * (cells_dominate ? growth(t1) : 4)));
+      else
+        sa.n = static_cast<int>(std::min<int64_t>(axis.n, int64_t{sa.n} * growth(t1)));
+      t1 = time_of(ts);
+    }
+    cell_time = std::max(0.0, t1 / sa.n - setup_per_row) / (ts - 1);
+  }
+  e.seconds = n * (setup_per_row + (tn - 1) * cell_time);
+  e.sample_seconds = sample.seconds();
   const double block =
       std::min(n, std::max<double>(grid_block_rows(theta_n), 4 * e.threads)) * tn;
   e.memory = block * (3 + (csv ? 60 : 0)) + tn * (8 + 16 + (csv ? 40 : 0)) +
@@ -96,12 +120,13 @@ GridEstimate sample_param_direction(const ContactParameters& params, const Conta
 GridEstimate sample_param_param(const ContactParameters& params, const ContactState& state,
                                 const MapAxis& axis1, const MapAxis& axis2,
                                 const MapOptions& options, bool csv, bool writing) {
+  const Stopwatch sample;
   GridEstimate e;
   const double cross_bytes = options.method != RateMethod::kEnumerate ? 1 : 0;
   const double n1 = axis1.n, n2 = axis2.n;
   e.cells = n1 * n2;
   e.threads = map_worker_threads(options.threads, axis1.n);
-  // As for param-direction: a sub-grid on the map's threads, in wall clock, grown until it
+  // As for param-direction: a sub-grid run as the map is, on its threads, in wall clock, grown until it
   // takes kSampleSeconds or is the whole map; both axes alike (the axis sampled more thinly
   // grows), since the cost of a cell varies along both (a 6-column sample of a 300 x 300 map,
   // both ends of the axis among them, put it at 3x its time).
@@ -110,7 +135,7 @@ GridEstimate sample_param_param(const ContactParameters& params, const ContactSt
   a2.n = std::min(axis2.n, 6);
   auto time_of = [&] {
     return wall_seconds([&] {
-      compute_param_param_map(params, state, a1, a2, options, {}, [](const ParamParamRows&) {});
+      run_param_param_map(params, state, a1, a2, options, {}, [](const ParamParamRows&) {});
     });
   };
   double t = time_of();
@@ -125,6 +150,7 @@ GridEstimate sample_param_param(const ContactParameters& params, const ContactSt
     t = time_of();
   }
   e.seconds = t / (static_cast<double>(a1.n) * a2.n) * e.cells;
+  e.sample_seconds = sample.seconds();
   const double block =
       std::min(n1, std::max<double>(grid_block_rows(axis2.n), 4 * e.threads)) * n2;
   e.memory = block * (5 + (csv ? 80 : 0)) + (n1 + n2) * (100 + 4 * sizeof(CriticalValue));

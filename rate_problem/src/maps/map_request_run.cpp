@@ -253,7 +253,8 @@ bool run_grid_map(OnePointRun& p) {
   validate_map_grid(s.params, s.state, s.axis,
                     s.kind == MapKind::kParamParam ? &s.axis2 : nullptr);
   j["estimate"] = {{"seconds", est.seconds}, {"memory_bytes", est.memory},
-                   {"output_bytes", est.output}, {"threads", est.threads}};
+                   {"output_bytes", est.output}, {"threads", est.threads},
+                   {"sample_seconds", est.sample_seconds}};
   if (est.seconds > 1.0 || est.output > 1e9)
     err_of(p.env) << "cpkit map: " << num_text(est.cells, 3) << " cells: about "
                   << num_text(est.seconds, 2) << " s of cells on " << est.threads
