@@ -48,9 +48,11 @@ fi
 #    the chunked run are instrumented in rate_problem.test_map_run / test_map_streaming and in
 #    the fuzz harness of the map chunks;
 #  - apps.test_cli_map_mpi needs an MPI build, which this one is not.
-#  - apps.test_cli_map_time_limit judges the map's time estimate, which misjudges instrumented code:
-#    here it put the 10^10-cell map at 104 s when it ran at ~3,200 s (in Release 1.9e3 s, right
-#    within 2x). A defect of the estimate's sample, open in issue 37; the test runs in Release.
+#  - apps.test_cli_map_time_limit times small maps against the map's time estimate (within 2x) and
+#    stops runs by the clock: a judgement of timings, which instrumented code under a parallel
+#    suite makes marginal (its estimate case failed 3 of 7 instrumented runs at load 5). The
+#    estimate's code runs instrumented in apps.test_cli_map and apps.test_cli_hostile (the
+#    refused 10^11-cell maps); the test runs in Release.
 # The seeded random families run a shorter prefix of the same seeds here (tests/test_budget.hpp).
 left_out="apps.test_docs_check;apps.test_cli_map_resume;apps.test_cli_map_mpi;apps.test_cli_map_time_limit"
 [[ "${CPKIT_SANITIZE_ALL:-0}" == 1 ]] && left_out="apps.test_cli_map_mpi"
