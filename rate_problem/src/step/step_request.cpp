@@ -1,6 +1,7 @@
 #include "cpkit/rate_problem/step/step_request.hpp"
 
 #include <sstream>
+#include <vector>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -17,6 +18,14 @@ struct Given {
   const char* name;
   bool given;
 };
+
+/// The one-point model options, in the order their refusals name the first one given.
+std::vector<Given> point_options(const ModelOptions& m) {
+  return {Given{"--a11", m.a11.has_value()},  Given{"--a12", m.a12.has_value()},
+          Given{"--a22", m.a22.has_value()},  Given{"--mu", m.mu.has_value()},
+          Given{"--C_T", m.C_T.has_value()},  Given{"--k_a", m.k_a.has_value()},
+          Given{"--P_s", m.P_s.has_value()},  Given{"--criterion", m.criterion.has_value()}};
+}
 
 std::vector<std::string> split_chain(const std::string& chain) {
   std::vector<std::string> names;
@@ -71,16 +80,12 @@ void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& ou
 /// `--system` of dim 2: every solution of the N-point step (system_step.hpp).
 void run_system(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point options describe one point; with a system file they would be ignored.
-  const ModelOptions& m = r.model;
-  for (const Given& o : {Given{"--a11", m.a11.has_value()}, Given{"--a12", m.a12.has_value()},
-                         Given{"--a22", m.a22.has_value()}, Given{"--mu", m.mu.has_value()},
-                         Given{"--C_T", m.C_T.has_value()}, Given{"--k_a", m.k_a.has_value()},
-                         Given{"--P_s", m.P_s.has_value()},
-                         Given{"--criterion", m.criterion.has_value()},
-                         Given{"--wear-law", r.wear_law.has_value()},
-                         Given{"--k_M", r.k_M.has_value()}, Given{"--P_T0", r.P_T0.has_value()},
-                         Given{"--P_N0", r.P_N0.has_value()}, Given{"--g0", r.g0.has_value()},
-                         Given{"--chain", r.chain.has_value()}})
+  std::vector<Given> options = point_options(r.model);
+  options.insert(options.end(),
+                 {Given{"--wear-law", r.wear_law.has_value()}, Given{"--k_M", r.k_M.has_value()},
+                  Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()},
+                  Given{"--g0", r.g0.has_value()}, Given{"--chain", r.chain.has_value()}});
+  for (const Given& o : options)
     if (o.given)
       throw InputError(std::string(o.name) + " cannot be combined with --system (the system "
                        "file gives every point's parameters and state)");
@@ -198,13 +203,10 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
 /// N coupled points (run_system_3d).
 void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point 2-D options describe a 2-D point; the file gives the 3-D point.
-  const ModelOptions& m = r.model;
-  for (const Given& o : {Given{"--a11", m.a11.has_value()}, Given{"--a12", m.a12.has_value()},
-                         Given{"--a22", m.a22.has_value()}, Given{"--mu", m.mu.has_value()},
-                         Given{"--C_T", m.C_T.has_value()}, Given{"--k_a", m.k_a.has_value()},
-                         Given{"--P_s", m.P_s.has_value()},
-                         Given{"--criterion", m.criterion.has_value()},
-                         Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()}})
+  std::vector<Given> options = point_options(r.model);
+  options.insert(options.end(),
+                 {Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()}});
+  for (const Given& o : options)
     if (o.given)
       throw InputError(std::string(o.name) + " cannot be combined with a \"dim\": 3 --system file "
                        "(the file gives the point's parameters and state)");
