@@ -29,9 +29,28 @@ bool invariant_counter() noexcept {
 /// The counter's calibration, shared by every thread: the first steady_clock / counter pair
 /// (taken together when the process first asks), then the rate once 10 ms have passed (0: not
 /// yet).
+/// A steady_clock read and the counter at the same moment: the counter read on both sides of
+/// the clock read, the narrowest of a few tries kept (a thread preempted between two reads would
+/// otherwise pair moments milliseconds apart and skew the rate by that much over 10 ms).
+struct ClockPair {
+  std::uint64_t ns = 0, ticks = 0, width = ~std::uint64_t{0};  ///< width: ticks between reads
+};
+
+ClockPair read_pair() noexcept {
+  ClockPair best;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const std::uint64_t before = __rdtsc();
+    const std::uint64_t ns = steady_ns();
+    const std::uint64_t after = __rdtsc();
+    if (after >= before && after - before < best.width)
+      best = ClockPair{ns, before + (after - before) / 2, after - before};
+  }
+  return best;
+}
+
 struct Calibration {
   bool usable = invariant_counter();
-  std::uint64_t first_ns = steady_ns(), first_ticks = __rdtsc();
+  ClockPair first = read_pair();
   std::atomic<double> seconds_per_tick{0};
 };
 
@@ -40,12 +59,17 @@ Calibration& calibration() noexcept {
   return c;
 }
 
-/// Fixes the rate when 10 ms have passed since the first pair (`now_ns` a steady_clock read
-/// taken with `now_ticks`).
-void calibrate(Calibration& c, std::uint64_t now_ns, std::uint64_t now_ticks) noexcept {
-  if (now_ns - c.first_ns < 10'000'000 || now_ticks <= c.first_ticks) return;
-  c.seconds_per_tick.store(1e-9 * static_cast<double>(now_ns - c.first_ns) /
-                               static_cast<double>(now_ticks - c.first_ticks),
+/// Fixes the rate once 10 ms have passed since the first pair (`now_ns`: this call's steady_clock
+/// read), from a fresh pair, when both pairs are narrower than 1/1000 of the span between them
+/// (else a later call tries again: the span only grows).
+void calibrate(Calibration& c, std::uint64_t now_ns) noexcept {
+  if (now_ns - c.first.ns < 10'000'000) return;
+  const ClockPair now = read_pair();
+  if (now.ticks <= c.first.ticks || now.ns <= c.first.ns) return;
+  const std::uint64_t span = now.ticks - c.first.ticks;
+  if (c.first.width > span / 1000 || now.width > span / 1000) return;
+  c.seconds_per_tick.store(1e-9 * static_cast<double>(now.ns - c.first.ns) /
+                               static_cast<double>(span),
                            std::memory_order_release);
 }
 #endif
@@ -74,7 +98,7 @@ double CallClock::seconds() const noexcept {
                               : 0.0;
   }
   const std::uint64_t now_ns = steady_ns();
-  if (c.usable) calibrate(c, now_ns, __rdtsc());
+  if (c.usable) calibrate(c, now_ns);
 #else
   const std::uint64_t now_ns = steady_ns();
 #endif
