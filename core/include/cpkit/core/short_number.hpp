@@ -4,6 +4,7 @@
 /// read a size or compare with a tolerance, short enough for one line.
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace cpkit {
@@ -13,7 +14,8 @@ namespace detail {
 /// printf's "%.3g" of v into out (at least 16 chars), by integer arithmetic for 1e-20 <= |v| <
 /// 1e22: |v| times an exact power of ten (one rounding) is the 3-digit mantissa, rounded to the
 /// nearest integer as printf rounds the exact value, which it equals unless the scaled value is
-/// within 1e-9 of a tie. False for a tie, 0, non-finite or out-of-range v (snprintf decides).
+/// within 1e-9 of a tie; 0 is "0" (or "-0"). False for a tie, non-finite or out-of-range v
+/// (snprintf decides).
 /// snprintf's conversion was most of a small solve's message (6 k instructions for three
 /// numbers; this takes ~100 each). tests/core/test_short_number.cpp compares both.
 inline bool short_number_fast(double v, char* out) {
@@ -21,6 +23,10 @@ inline bool short_number_fast(double v, char* out) {
                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
   const double a = std::abs(v);
+  if (a == 0) {  // an exact answer's residual: "0" (or "-0")
+    std::memcpy(out, std::signbit(v) ? "-0" : "0", std::signbit(v) ? 3 : 2);
+    return true;
+  }
   if (!(a >= 1e-20 && a < 1e22)) return false;
   int x = static_cast<int>(std::floor(std::log10(a)));  // the decimal exponent, give or take 1
   auto scaled = [a](int e) {  // a / 10^(e - 2), exact powers: |e - 2| <= 22
