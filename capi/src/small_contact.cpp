@@ -47,7 +47,8 @@ bool solve_one_contact_fast(const OneContact& contact, const Vec3& q, double mu,
   // A candidate is the answer when the verdict accepts it.
   auto accept = [&](const Vec3& candidate) {
     Vec3 u_candidate;
-    const double v = one_contact_unit_free(contact.W, contact.stored, q, mu, candidate, u_candidate);
+    const double v =
+        one_contact_unit_free(contact.W, contact.stored, q, mu, candidate, u_candidate);
     if (!(v <= tol)) return false;
     r = candidate;
     u = u_candidate;
