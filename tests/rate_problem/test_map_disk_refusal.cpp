@@ -25,8 +25,6 @@ namespace {
 MapRequest grid_request(int n, int theta_n, const std::string& out) {
   MapRequest a;
   a.preset = "fig5b";
-  a.options_given = {"--preset", "--kind", "--param", "--from", "--to", "--n", "--theta-n",
-                     "--time-limit", "--max-output", "--out", "--threads"};
   a.kind = "param-direction";
   a.param = "mu";
   a.from = 0.1;
