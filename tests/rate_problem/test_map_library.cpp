@@ -22,6 +22,7 @@
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/map_3d_plan.hpp"
 #include "cpkit/rate_problem/maps/map_files.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_request.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
