@@ -15,7 +15,12 @@
 // Printed per file: contacts, best cpkit solver and time, best Siconos solver and time, their
 // ratio, iterations and |F_nat|/|q| of both; then the median ratio.
 // Usage: bench_fc_siconos [--tol 1e-8] [--measure relative_q] [--repeat 3] [--time-limit 30]
-//                         [FILE...]
+//                         [--cpkit nsgs,prox,fb-soc,auto] [--no-siconos] [FILE...]
+// --cpkit names the cpkit solvers run (auto's column is "-" when it is not among them) and
+// --no-siconos leaves Siconos out: what an instruction count of one solver needs, e.g.
+//   valgrind --tool=callgrind --toggle-collect='cpkit::lcp::friction::solve_in_measure*'
+//     bench_fc_siconos --cpkit nsgs --no-siconos --repeat 1 FILE
+// counts one solve_in_measure(nsgs) call.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -125,7 +130,8 @@ int main(int argc, char** argv) {
   double tol = 1e-8, time_limit = 30;
   int repeat = 3;
   cpkit::FrictionMeasure measure = cpkit::FrictionMeasure::kRelativeQ;
-  std::vector<std::string> files;
+  std::vector<std::string> files, solvers = {"nsgs", "prox", "fb-soc", "auto"};
+  bool with_siconos = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tol" && i + 1 < argc) tol = std::atof(argv[++i]);
@@ -133,8 +139,18 @@ int main(int argc, char** argv) {
       measure = cpkit::parse_friction_measure(argv[++i], "--measure");
     else if (a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
     else if (a == "--time-limit" && i + 1 < argc) time_limit = std::atof(argv[++i]);
+    else if (a == "--cpkit" && i + 1 < argc) {
+      solvers.clear();
+      std::string list = argv[++i];
+      for (size_t at = 0; at <= list.size();) {
+        const size_t comma = std::min(list.find(',', at), list.size());
+        if (comma > at) solvers.push_back(list.substr(at, comma - at));
+        at = comma + 1;
+      }
+    } else if (a == "--no-siconos") with_siconos = false;
     else files.push_back(a);
   }
+  (void)with_siconos;  // unused without Siconos
   if (files.empty()) {
     for (const auto& f : std::filesystem::directory_iterator(CPKIT_SOURCE_DIR "/tests/data/fclib/local"))
       files.push_back(f.path().string());
@@ -155,9 +171,13 @@ int main(int argc, char** argv) {
       continue;
     }
     std::vector<Run> ours;
-    for (const char* s : {"nsgs", "prox", "fb-soc"})
-      ours.push_back(run_cpkit(p, s, tol, measure, time_limit, repeat));
-    const Run autorun = run_cpkit(p, "auto", tol, measure, time_limit, repeat);
+    Run autorun, nsgsrun;
+    for (const std::string& s : solvers) {
+      const Run run = run_cpkit(p, s, tol, measure, time_limit, repeat);
+      if (s == "auto") autorun = run;
+      else ours.push_back(run);
+      if (s == "nsgs") nsgsrun = run;
+    }
     std::vector<Run> theirs;
 #ifdef CPKIT_HAVE_SICONOS
     // Siconos' reader for its .dat files (its sparse-block storage); the FCLIB .hdf5 files (which
@@ -167,8 +187,9 @@ int main(int argc, char** argv) {
     Eigen::VectorXd q_copy = p.q, mu_copy = p.mu;
     if (!dat) dense = Eigen::MatrixXd(p.W);
     FrictionContactProblem* sp =
-        dat ? frictionContact_new_from_filename(path.c_str())
-            : frictionContactProblem_new_with_data(
+        !with_siconos ? nullptr
+        : dat ? frictionContact_new_from_filename(path.c_str())
+              : frictionContactProblem_new_with_data(
                   3, static_cast<int>(p.contacts()),
                   NM_create_from_data(NM_DENSE, static_cast<int>(p.q.size()),
                                       static_cast<int>(p.q.size()), dense.data()),
@@ -196,7 +217,7 @@ int main(int argc, char** argv) {
     std::printf("%-36.36s %5ld | %-7s %9.3f %6d %8.1e | %-7s %9.3f %6d %8.1e | %6.2f | %9.3f %9.3f %9.3f\n",
                 name.c_str(), static_cast<long>(p.contacts()), a ? A.solver.c_str() : "-",
                 A.seconds * 1e3, A.iterations, A.rel_q, b ? B.solver.c_str() : "-",
-                B.seconds * 1e3, B.iterations, B.rel_q, ratio, ours[0].seconds * 1e3,
+                B.seconds * 1e3, B.iterations, B.rel_q, ratio, nsgsrun.seconds * 1e3,
                 autorun.seconds * 1e3, theirs.empty() ? NAN : theirs[0].seconds * 1e3);
     std::fflush(stdout);
   }

@@ -2,14 +2,16 @@
 """Benchmark: cpkit's Python module against Siconos' (siconos.numerics), side by side in one
 process (issue 27).
 
-1. Per call: the tiny LCP M = [[2, 1], [1, 2]], q = (-5, -6) through cpkit.solve(M, q,
-   solver="lemke") and through Siconos' LCP(M, q) + SolverOptions + lcp_lexicolemke (the
-   arrays z, w made per call, as a user's call does). Trials of `calls` calls each, the two
-   interleaved (Siconos then cpkit in even trials, cpkit then Siconos in odd ones: the load of
-   the machine and the order hit both alike); each trial gives a paired ratio cpkit / Siconos.
-   Printed: the medians per call, the median paired ratio and its spread (min, quartiles, max
-   over the trials), and the verdict: ratio <= 1 "beyond the noise" when a sign test over the
-   paired trials says so (the chance of as many trials below 1 without a difference < 1%).
+1. Per call: the tiny LCP M = [[2, 1], [1, 2]], q = (-5, -6) through cpkit.solve(M, q) (the
+   default solver, "auto", as a user calls it; issue 37), through cpkit.solve(M, q,
+   solver="lemke"), and through Siconos' LCP(M, q) + SolverOptions + lcp_lexicolemke (the
+   arrays z, w made per call, as a user's call does). Trials of `calls` calls each, the three
+   interleaved (the order rotates from trial to trial: the load of the machine and the order
+   hit all alike); each trial gives a paired ratio cpkit / Siconos per cpkit route.
+   Printed: the medians per call, the median paired ratios and their spread (min, quartiles,
+   max over the trials), and the verdict per route: ratio <= 1 "beyond the noise" when a sign
+   test over the paired trials says so (the chance of as many trials below 1 without a
+   difference < 1%).
    Times are the CPU time of the thread (robust to the load). Target: <= 1.
    The load average is printed before and after (numbers in the docs quote it).
 2. Batched: k problems (2x2 and 3x3 SPD, one per contact) by cpkit.solve_batch in one call,
@@ -83,11 +85,16 @@ def time_siconos(M, q, calls):
     return (CLOCK() - t0) / calls
 
 
-def time_cpkit(M, q, calls, solver="lemke"):
+def time_cpkit(M, q, calls, solver=None):
+    """cpkit.solve per call; solver None: the default, called as a user calls it."""
     solve = cpkit.solve
     t0 = CLOCK()
-    for _ in range(calls):
-        solve(M, q, solver)
+    if solver is None:
+        for _ in range(calls):
+            solve(M, q)
+    else:
+        for _ in range(calls):
+            solve(M, q, solver)
     return (CLOCK() - t0) / calls
 
 
@@ -101,7 +108,11 @@ def loop_only(route, calls):
     """--loop ROUTE N: N calls of one route after 200 warm-up calls (run under callgrind)."""
     M = np.array([[2.0, 1.0], [1.0, 2.0]])
     q = np.array([-5.0, -6.0])
-    fn = time_siconos if route == "siconos" else time_cpkit
+    if route == "siconos":
+        fn = time_siconos
+    else:
+        def fn(M, q, n):
+            return time_cpkit(M, q, n, None if route == "cpkit" else "lemke")
     fn(M, q, 200)
     fn(M, q, calls)
 
@@ -129,13 +140,14 @@ def instructions_per_call(route, calls=2000):
 
 
 def print_instructions():
-    got = {route: instructions_per_call(route) for route in ("siconos", "cpkit")}
+    got = {route: instructions_per_call(route) for route in ("siconos", "cpkit", "cpkit-lemke")}
     if None in got.values():
         print("instructions per call: valgrind not available (Debian: valgrind)")
         return
     print(f"instructions per call (callgrind, 2000 calls beyond 2000): Siconos "
-          f"{got['siconos'] / 1e3:.1f}k, cpkit.solve {got['cpkit'] / 1e3:.1f}k, ratio "
-          f"{got['cpkit'] / got['siconos']:.3f}")
+          f"{got['siconos'] / 1e3:.1f}k, cpkit.solve (default) {got['cpkit'] / 1e3:.1f}k "
+          f"(ratio {got['cpkit'] / got['siconos']:.3f}), cpkit.solve(solver=\"lemke\") "
+          f"{got['cpkit-lemke'] / 1e3:.1f}k (ratio {got['cpkit-lemke'] / got['siconos']:.3f})")
 
 
 def main():
@@ -145,11 +157,11 @@ def main():
         return
     M = np.array([[2.0, 1.0], [1.0, 2.0]])
     q = np.array([-5.0, -6.0])
-    r = cpkit.solve(M, q, solver="lemke")
     info, zs = siconos_solve(M, q)
-    # Both against the closed form: 2 z1 + z2 = 5, z1 + 2 z2 = 6 -> z = (4/3, 7/3), w = 0.
-    assert r.status == "solved" and info == 0, (r, info)
-    assert np.allclose(r.z, [4 / 3, 7 / 3], rtol=1e-14) and np.allclose(zs, [4 / 3, 7 / 3]), (r, zs)
+    # Every route against the closed form: 2 z1 + z2 = 5, z1 + 2 z2 = 6 -> z = (4/3, 7/3), w = 0.
+    assert info == 0 and np.allclose(zs, [4 / 3, 7 / 3]), (info, zs)
+    for r in (cpkit.solve(M, q), cpkit.solve(M, q, solver="lemke")):
+        assert r.status == "solved" and np.allclose(r.z, [4 / 3, 7 / 3], rtol=1e-14), r
 
     cpu = option("--cpu", -1)
     if cpu >= 0 and hasattr(os, "sched_setaffinity"):
@@ -157,43 +169,44 @@ def main():
     trials = option("--trials", 7 if QUICK else 21)
     calls = option("--calls", 2000 if QUICK else 20000)
     load0 = os.getloadavg()[0]
-    time_siconos(M, q, calls // 10), time_cpkit(M, q, calls // 10)  # warm-up
-    sic, cpk, auto, ratio = [], [], [], []
+    routes = {"siconos": lambda n: time_siconos(M, q, n),
+              "default": lambda n: time_cpkit(M, q, n),
+              "lemke": lambda n: time_cpkit(M, q, n, "lemke")}
+    for run in routes.values():
+        run(calls // 10)  # warm-up
+    times = {name: [] for name in routes}
+    order = list(routes)
     for t in range(trials):
-        if t % 2 == 0:
-            s_t = time_siconos(M, q, calls)
-            c_t = time_cpkit(M, q, calls)
-        else:
-            c_t = time_cpkit(M, q, calls)
-            s_t = time_siconos(M, q, calls)
-        sic.append(s_t)
-        cpk.append(c_t)
-        ratio.append(c_t / s_t)
-        auto.append(time_cpkit(M, q, calls, "auto"))
+        for name in order[t % 3:] + order[:t % 3]:  # the order rotates trial by trial
+            times[name].append(routes[name](calls))
     load1 = os.getloadavg()[0]
-    s, c, a = (statistics.median(x) * 1e6 for x in (sic, cpk, auto))
-    rq = quartiles(ratio)
+    med = {name: statistics.median(x) * 1e6 for name, x in times.items()}
     clock = "wall-clock time" if CLOCK is time.perf_counter else "CPU time of the thread"
-    print(f"tiny LCP (n = 2, Lemke): {trials} interleaved trials of {calls} calls, one process, "
+    print(f"tiny LCP (n = 2): {trials} interleaved trials of {calls} calls, one process, "
           f"{clock}"
           f"{f', pinned to CPU {cpu}' if cpu >= 0 else ''}; load average {load0:.2f} before, "
           f"{load1:.2f} after")
-    print("| path | median per call | spread over the trials (min - max) | vs Siconos |")
+    print("| path | median per call | spread over the trials (min - max) | paired ratio vs Siconos |")
     print("|---|---|---|---|")
-    print(f"| Siconos: LCP + SolverOptions + lcp_lexicolemke | {s:.2f} us | "
-          f"{min(sic) * 1e6:.2f} - {max(sic) * 1e6:.2f} us | 1.00 |")
-    print(f"| cpkit.solve(M, q, \"lemke\") | {c:.2f} us | "
-          f"{min(cpk) * 1e6:.2f} - {max(cpk) * 1e6:.2f} us | {rq[2]:.2f} |")
-    print(f"| cpkit.solve(M, q) (auto chain) | {a:.2f} us | "
-          f"{min(auto) * 1e6:.2f} - {max(auto) * 1e6:.2f} us | {a / s:.2f} |")
+    labels = {"siconos": "Siconos: LCP + SolverOptions + lcp_lexicolemke",
+              "default": "cpkit.solve(M, q) (default solver, auto)",
+              "lemke": "cpkit.solve(M, q, \"lemke\")"}
+    ratios = {name: [c / s for c, s in zip(times[name], times["siconos"])]
+              for name in ("default", "lemke")}
+    for name in routes:
+        r = "1.00" if name == "siconos" else f"{statistics.median(ratios[name]):.2f}"
+        print(f"| {labels[name]} | {med[name]:.2f} us | {min(times[name]) * 1e6:.2f} - "
+              f"{max(times[name]) * 1e6:.2f} us | {r} |")
     # Sign test over the paired trials: under "no difference" each trial is below 1 with
     # probability 1/2; "beyond the noise" when the chance of as many trials below 1 is < 1%.
-    below = sum(x < 1 for x in ratio)
-    p_value = sum(math.comb(trials, j) for j in range(below, trials + 1)) / 2**trials
-    verdict = ("<= 1 beyond the noise" if p_value < 0.01 else "not shown beyond the noise")
-    print(f"per-call ratio cpkit / Siconos: median {rq[2]:.3f} over {trials} paired trials "
-          f"(min {rq[0]:.3f}, quartiles {rq[1]:.3f} - {rq[3]:.3f}, max {rq[4]:.3f}); "
-          f"{below} of {trials} trials below 1 (sign test p = {p_value:.2g}): {verdict}")
+    for name in ("default", "lemke"):
+        rq = quartiles(ratios[name])
+        below = sum(x < 1 for x in ratios[name])
+        p_value = sum(math.comb(trials, j) for j in range(below, trials + 1)) / 2**trials
+        verdict = ("<= 1 beyond the noise" if p_value < 0.01 else "not shown beyond the noise")
+        print(f"per-call ratio {labels[name]} / Siconos: median {rq[2]:.3f} over {trials} paired "
+              f"trials (min {rq[0]:.3f}, quartiles {rq[1]:.3f} - {rq[3]:.3f}, max {rq[4]:.3f}); "
+              f"{below} of {trials} trials below 1 (sign test p = {p_value:.2g}): {verdict}")
     if "--instructions" in sys.argv:
         print_instructions()
 

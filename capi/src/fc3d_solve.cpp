@@ -1,6 +1,6 @@
 // cpkit_fc3d_solve and cpkit_fc3d_solve_batch: one contact ("auto", "nsgs") first on the
-// allocation-free path (small_contact.hpp) when its solution is provably unique and the verdict
-// accepts it; otherwise the problem mapped into the library's FrictionContactProblem and solved
+// allocation-free path (small_contact.hpp: the local solve from r = 0, or the closed form of a
+// unique solution) when the verdict accepts its answer; otherwise the problem mapped into the library's FrictionContactProblem and solved
 // by the registered friction solver (or, for one contact, by the closed form when the contact
 // has exactly one solution). Every answer is decided by the friction verdict (finalize,
 // core/friction_verdict.hpp; the fast path computes the same number and accepts only what

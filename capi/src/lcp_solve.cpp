@@ -1,5 +1,5 @@
 // cpkit_lcp_solve and cpkit_lcp_solve_batch: for n <= 4 ("auto", "lemke") the closed enumeration
-// on the stack when it proves a unique solution that the verdict accepts (small_lcp.hpp);
+// on the stack when it proves a unique solution that the verdict accepts (cpkit/lcp/small_lcp.hpp);
 // otherwise the problem mapped into the library's LcpProblem and solved by the registered
 // solver. Every answer is decided by finalize()'s verdict (the fast path computes the same
 // number and accepts only what finalize() would call solved).
@@ -10,7 +10,7 @@
 
 #include "c_boundary.hpp"
 #include "finite_check.hpp"
-#include "small_lcp.hpp"
+#include "cpkit/lcp/small_lcp.hpp"
 #include "cpkit/core/errors.hpp"
 
 namespace cpkit::capi {
@@ -41,7 +41,7 @@ Outcome solve_general(int n, const double* M, const double* q, const SolverEntry
   p.M = Eigen::Map<const Mat>(M, n, n);
   p.q = Eigen::Map<const Vec>(q, n);
   SolveResult& r = ws.result;
-  if (!solve_small_unique(p, entry, o, r)) {
+  if (!lcp::solve_small_unique(p, entry, o, r)) {
     if (!entry.accepts(p))
       throw InputError("solver '" + entry.info.name + "' does not accept dense LCPs");
     r = entry.solve_lcp(p, o);  // through finalize(), as every registered solver
@@ -71,6 +71,8 @@ LcpWorkspace& workspace(int n, std::optional<LcpWorkspace>& large) {
 
 using namespace cpkit;
 using namespace cpkit::capi;
+using cpkit::lcp::small_lcp_route;
+using cpkit::lcp::solve_small_fast;
 
 extern "C" int cpkit_lcp_solve(int n, const double* M, const double* q, const char* solver,
                                const cpkit_options* options, double* z, double* w,

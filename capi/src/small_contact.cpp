@@ -4,6 +4,7 @@
 
 #include "cpkit/core/friction_verdict.hpp"
 #include "cpkit/lcp/friction/one_contact.hpp"
+#include "cpkit/lcp/friction/one_contact_newton.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 namespace cpkit::capi {
@@ -43,19 +44,26 @@ bool one_contact_route(int contacts, const SolverEntry& entry) {
 
 bool solve_one_contact_fast(const OneContact& contact, const Vec3& q, double mu, double tol,
                             Vec3& r, Vec3& u, double& unit_free) {
+  // A candidate is the answer when the verdict accepts it.
+  auto accept = [&](const Vec3& candidate) {
+    Vec3 u_candidate;
+    const double v =
+        one_contact_unit_free(contact.W, contact.stored, q, mu, candidate, u_candidate);
+    if (!(v <= tol)) return false;
+    r = candidate;
+    u = u_candidate;
+    unit_free = v;
+    return true;
+  };
   Vec3 candidate;
-  if (!decoupled_isotropic_solution(contact.W, q, mu, candidate)) {
-    const lcp::friction::OneContactSolutions all =
-        lcp::friction::one_contact_solutions(contact.W, q, mu);
-    if (all.count != 1) return false;
-    candidate = all.r[0];
-  }
-  Vec3 u_candidate;
-  unit_free = one_contact_unit_free(contact.W, contact.stored, q, mu, candidate, u_candidate);
-  if (!(unit_free <= tol)) return false;  // the general route decides (and explains) the rest
-  r = candidate;
-  u = u_candidate;
-  return true;
+  if (decoupled_isotropic_solution(contact.W, q, mu, candidate)) return accept(candidate);
+  if (lcp::friction::one_contact_newton(contact.W, nullptr, q, mu, Vec3::Zero(), candidate) &&
+      accept(candidate))
+    return true;
+  // Not found or not verified: every solution in closed form.
+  const lcp::friction::OneContactSolutions all =
+      lcp::friction::one_contact_solutions(contact.W, q, mu);
+  return all.count == 1 && accept(all.r[0]);  // the general route decides (and explains) the rest
 }
 
 bool solve_one_contact_unique(const FrictionContactProblem& p, const SolverEntry& entry,

@@ -48,21 +48,23 @@ FrictionUnits friction_units(const FrictionContactProblem& p) {
   FrictionUnits d;
   const Eigen::Index n = p.q.size(), nc = p.contacts();
   d.q_inf = n ? p.q.lpNorm<Eigen::Infinity>() : 0.0;
-  d.W_rows = p.W;
   d.row_sums = Eigen::VectorXd::Zero(n);
-  d.row_gamma.resize(n);
   d.block_max = Eigen::VectorXd::Zero(nc);
-  for (Eigen::Index k = 0; k < d.W_rows.outerSize(); ++k) {
-    double count = 0;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it) {
+  // W read by columns (its own storage: no copy); each row's sum is still formed over its
+  // columns in ascending order, as a row-by-row reading forms it.
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index col = 0; col < p.W.outerSize(); ++col) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(p.W, col); it; ++it) {
+      const Eigen::Index k = it.row();
       const double a = std::abs(it.value());
       d.row_sums[k] += a;
-      count += 1;
+      count[k] += 1;
       d.w_max = std::max(d.w_max, a);
-      if (it.col() / 3 == k / 3) d.block_max[k / 3] = std::max(d.block_max[k / 3], a);
+      if (col / 3 == k / 3) d.block_max[k / 3] = std::max(d.block_max[k / 3], a);
     }
-    d.row_gamma[k] = gamma_bound(count + 1);
   }
+  d.row_gamma.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) d.row_gamma[k] = gamma_bound(count[k] + 1);
   const bool has_ref = d.q_inf > 0 && d.w_max > 0;
   const double r_ref = has_ref ? d.q_inf / d.w_max : kInf;
   d.r_cap = Eigen::VectorXd::Constant(nc, r_ref);
@@ -79,33 +81,66 @@ namespace {
 // u_k = (W r)_k + q_k in twice the working precision (Dot2, Ogita, Rump & Oishi, SIAM J. Sci.
 // Comput. 26(6), 2005, Alg. 5.3): error-free products (fma) and sums, so that its error is
 // at most u |u_k| + gamma_{m+1}^2 ((|W||r|)_k + |q_k|) (their Prop. 5.5), not gamma (|W||r|)_k.
-template <class Rows>
-double accurate_row(const Rows& rows, Eigen::Index k, const double* r, double q) {
-  double s = q, c = 0;
-  rows.visit(k, [&](Eigen::Index col, double value) {
-    const double x = value * r[col];
-    const double e = std::fma(value, r[col], -x);
+// Start with s = q_k, add the row's products in ascending column order, read sum().
+struct Dot2 {
+  double s = 0, c = 0;
+  void add(double value, double x_col) {
+    const double x = value * x_col;
+    const double e = std::fma(value, x_col, -x);
     const double t = s + x, z = t - s;
     c += ((s - (t - z)) + (x - z)) + e;
     s = t;
-  });
-  return s + c;
-}
-
-// W's rows as the verdict reads them: visit(k, f) calls f(col, value) for the stored entries of
-// row k, columns ascending; gamma(k) is that row's rounding factor gamma_{m_k+1}; cap(col) the
-// cap of the contact that owns column col. Two readers: the general problem (FrictionUnits) and
-// one contact's dense 3 x 3 block (one_contact_residuals), so that both give the same numbers.
-struct SparseRows {
-  const FrictionUnits& d;
-  template <class F>
-  void visit(Eigen::Index k, F&& f) const {
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(d.W_rows, k); it; ++it)
-      f(it.col(), it.value());
   }
-  double gamma(Eigen::Index k) const { return d.row_gamma[k]; }
-  double cap(Eigen::Index col) const { return d.r_cap[col / 3]; }
-  double block_max(Eigen::Index i) const { return d.block_max[i]; }
+  double sum() const { return s + c; }
+};
+
+// What the verdict needs of row k of W at r: c_k = (|W| rc)_k (r capped at the data's size) and
+// full_k = (|W| |r|)_k, each summed over the row's columns in ascending order.
+struct RowSums {
+  double c = 0, full = 0;
+};
+
+// W's rows as the verdict reads them, for a given r: sums(k), accurate(k) (u_k by Dot2, asked
+// only where full_k > c_k), gamma(k) (row k's rounding factor gamma_{m_k+1}), block_max(i). Two
+// readers: the general problem (W read by columns, its own storage) and one contact's dense
+// 3 x 3 block (one_contact_unit_free); both sum every row in ascending column order, so that
+// they give the same numbers bit for bit.
+class ColumnReader {
+ public:
+  ColumnReader(const FrictionContactProblem& p, const FrictionUnits& d, const double* r)
+      : d_(d), sums_(static_cast<std::size_t>(p.q.size())) {
+    const Eigen::SparseMatrix<double>& W = p.W;
+    bool beyond = false;  // some row with full > c
+    for (Eigen::Index col = 0; col < W.outerSize(); ++col) {
+      const double ar = std::abs(r[col]), rc = std::min(ar, d.r_cap[col / 3]);
+      for (Eigen::SparseMatrix<double>::InnerIterator it(W, col); it; ++it) {
+        RowSums& rs = sums_[static_cast<std::size_t>(it.row())];
+        const double a = std::abs(it.value());
+        rs.c += a * rc;
+        rs.full += a * ar;
+      }
+      beyond = beyond || ar > rc;
+    }
+    if (!beyond) return;
+    // The rows whose u_k the verdict forms accurately, all in one more pass over the columns.
+    accurate_.resize(sums_.size());
+    for (std::size_t k = 0; k < sums_.size(); ++k)
+      if (sums_[k].full > sums_[k].c) accurate_[k].s = p.q[static_cast<Eigen::Index>(k)];
+    for (Eigen::Index col = 0; col < W.outerSize(); ++col)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(W, col); it; ++it) {
+        const auto k = static_cast<std::size_t>(it.row());
+        if (sums_[k].full > sums_[k].c) accurate_[k].add(it.value(), r[col]);
+      }
+  }
+  const RowSums& sums(Eigen::Index k) const { return sums_[static_cast<std::size_t>(k)]; }
+  double accurate(Eigen::Index k) const { return accurate_[static_cast<std::size_t>(k)].sum(); }
+  double gamma(Eigen::Index k) const { return d_.row_gamma[k]; }
+  double block_max(Eigen::Index i) const { return d_.block_max[i]; }
+
+ private:
+  const FrictionUnits& d_;
+  std::vector<RowSums> sums_;
+  std::vector<Dot2> accurate_;
 };
 
 // What the verdict reads of one contact: its units, its velocity after the rounding allowance,
@@ -125,16 +160,12 @@ ContactReading read_contact(const Rows& rows, const double* q, Eigen::Index i, c
   double c_max = 0;
   for (int j = 0; j < 3; ++j) {
     const Eigen::Index k = 3 * i + j;
-    double c = 0, full = 0;  // (|W| rc)_k and (|W| |r|)_k
-    rows.visit(k, [&](Eigen::Index col, double value) {
-      const double a = std::abs(value), ar = std::abs(r[col]);
-      c += a * std::min(ar, rows.cap(col));
-      full += a * ar;
-    });
+    const RowSums sums = rows.sums(k);
+    const double c = sums.c, full = sums.full;  // (|W| rc)_k and (|W| |r|)_k
     const double qk = std::abs(q[k]);
     double a = rows.gamma(k) * (c + qk), uk = u[k];
     if (full > c) {  // some |r_j| beyond the data's size: form u_k accurately (header comment)
-      uk = accurate_row(rows, k, r, q[k]);
+      uk = rows.accurate(k);
       const double g = rows.gamma(k);
       const double own = 2 * kEps * std::abs(uk) + g * g * (full + qk);
       if (g * g * (full + qk) > a) cu.verifiable = false;
@@ -197,10 +228,11 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
   res.min_z = kInf;
   res.min_w = kInf;
   double abs_sq = 0;
+  const ColumnReader rows(p, d, r.data());  // every row's sums at r, W read by columns
   for (Eigen::Index i = 0; i < nc; ++i) {
     const double mu = p.mu[i];
     const Vec3 ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
-    const ContactReading cu = read_contact(SparseRows{d}, p.q.data(), i, r.data(), u.data());
+    const ContactReading cu = read_contact(rows, p.q.data(), i, r.data(), u.data());
     res.scale = std::max(res.scale, cu.units.S);
     res.z_scale = std::max(res.z_scale, cu.units.R);
     const ContactReport c = judge_contact(ri, cu.u_reduced, cu.units, mu, state_tol);
@@ -232,18 +264,29 @@ Residuals friction_residuals(const FrictionContactProblem& p, const FrictionUnit
 
 namespace {
 
-// One contact's dense 3 x 3 W as the verdict reads it (SparseRows' twin): every column is
+// One contact's dense 3 x 3 W as the verdict reads it (ColumnReader's twin): every column is
 // visited, the entries not stored being exact zeros, which change no sum when r is finite.
 struct DenseRows {
   const Mat3& W;
+  const double* r;
+  const double* q;
   double row_gamma[3];
   double r_cap, d;
-  template <class F>
-  void visit(Eigen::Index k, F&& f) const {
-    for (Eigen::Index j = 0; j < 3; ++j) f(j, W(k, j));
+  RowSums sums(Eigen::Index k) const {
+    RowSums rs;
+    for (Eigen::Index j = 0; j < 3; ++j) {
+      const double a = std::abs(W(k, j)), ar = std::abs(r[j]);
+      rs.c += a * std::min(ar, r_cap);
+      rs.full += a * ar;
+    }
+    return rs;
+  }
+  double accurate(Eigen::Index k) const {
+    Dot2 u{q[k], 0};
+    for (Eigen::Index j = 0; j < 3; ++j) u.add(W(k, j), r[j]);
+    return u.sum();
   }
   double gamma(Eigen::Index k) const { return row_gamma[k]; }
-  double cap(Eigen::Index) const { return r_cap; }
   double block_max(Eigen::Index) const { return d; }
 };
 
@@ -259,7 +302,7 @@ double one_contact_unit_free(const Mat3& W, const int stored[3], const Vec3& q, 
   }
   if (!r.allFinite() || !u.allFinite()) return kInf;
   // The units of friction_units() for one contact (its block is all of W).
-  DenseRows rows{W, {}, kInf, 0};
+  DenseRows rows{W, r.data(), q.data(), {}, kInf, 0};
   double w_max = 0;
   for (int k = 0; k < 3; ++k) {
     for (int j = 0; j < 3; ++j) w_max = std::max(w_max, std::abs(W(k, j)));

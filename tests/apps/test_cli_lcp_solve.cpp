@@ -45,8 +45,10 @@ TEST_CASE("cli: solved problem, JSON output", "[cli]") {
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j.at("status") == "solved");
-  CHECK(j.at("solver") == "lemke");
-  CHECK(j.at("iterations") == 3);
+  // M is positive definite (a P-matrix): the default's tiny route answers with the one
+  // solution, no pivots; --solver lemke takes Lemke's three.
+  CHECK(j.at("solver") == "enumeration");
+  CHECK(j.at("iterations") == 0);
   REQUIRE(j.at("z").size() == 2);
   // Unique solution (4/3, 7/3), w = 0 (file note, hand check: M = [[2,1],[1,2]], q = (-5,-6)).
   CHECK(j["z"][0].get<double>() == Approx(4.0 / 3.0).epsilon(1e-14));
@@ -55,6 +57,10 @@ TEST_CASE("cli: solved problem, JSON output", "[cli]") {
   CHECK(j.at("residual").get<double>() <= 1e-10);
   CHECK_FALSE(j.contains("certificate"));
   CHECK(r.err.empty());
+  // Lemke on the same problem: z0 enters, then z2 and z1 replace it (three pivots).
+  const auto l = run_cli("lcp solve " + data("deudeu.json") + " --solver lemke --json");
+  REQUIRE(l.code == 0);
+  CHECK(nlohmann::json::parse(l.out).at("iterations") == 3);
 }
 
 TEST_CASE("cli: DART's Lemke_12D contact LCP is solved, not cycle_detected (issue 24)",

@@ -737,6 +737,49 @@ TEST_CASE("C API: one contact on the per-call path equals the registered NSGS an
   CHECK(by_nsgs >= 120);
 }
 
+TEST_CASE("C API: one contact with several solutions: one of them, and nsgs' from r = 0",
+          "[capi]") {
+  // Non-symmetric W (J J^T + 0.05 I + 0.3 J), where a contact may have several solutions: the
+  // per-call path's answer must be one of the closed form's solutions (one_contact_solutions,
+  // checked against a brute-force search in tests/lcp/test_friction_one_contact.cpp), accepted
+  // by the verdict, and the answer of the registered nsgs from r = 0 (whose first local step is
+  // the same local solve).
+  std::mt19937 g(5837);
+  std::normal_distribution<double> gauss;
+  std::uniform_real_distribution<double> mus(0.05, 2);
+  const cpkit::SolverEntry& nsgs = *cpkit::lcp::solvers().find("nsgs");
+  int several = 0;
+  for (int trial = 0; trial < 4000 && several < 20; ++trial) {
+    cpkit::Mat3 J;
+    for (int i = 0; i < 9; ++i) J.data()[i] = gauss(g);
+    const cpkit::Mat3 W = J * J.transpose() + 0.05 * cpkit::Mat3::Identity() + 0.3 * J;
+    const cpkit::Vec3 q(gauss(g), gauss(g), gauss(g));
+    const double mu = mus(g);
+    const auto all = cpkit::lcp::friction::one_contact_solutions(W, q, mu);
+    if (all.count < 2) continue;
+    ++several;
+    CAPTURE(trial, W, q, mu);
+    const int col[4] = {0, 3, 6, 9}, row[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+    double r[3], u[3];
+    REQUIRE(cpkit_fc3d_solve(1, 9, col, row, W.data(), q.data(), &mu, "auto", nullptr, r, u,
+                             nullptr) == 0);
+    const Eigen::Map<const cpkit::Vec3> rv(r);
+    bool among = false;
+    for (int k = 0; k < all.count; ++k)
+      among = among || (all.r[k] - rv).norm() <= 1e-7 * (1 + rv.norm());
+    REQUIRE(among);
+    cpkit::FrictionContactProblem p;
+    p.W = Eigen::MatrixXd(W).sparseView(1.0, -1.0);
+    p.q = q;
+    p.mu = Eigen::VectorXd::Constant(1, mu);
+    REQUIRE(cpkit::friction_errors(p, rv).unit_free <= cpkit::CommonOptions{}.tol);
+    const cpkit::SolveResult general = nsgs.solve_fc(p, cpkit::CommonOptions{});
+    REQUIRE(cpkit::is_solution(general.status));
+    REQUIRE((general.z - rv).norm() <= 1e-9 * (1 + rv.norm()));
+  }
+  CHECK(several == 20);
+}
+
 TEST_CASE("C API: tiny LCPs by hand through the P-matrix route and past it", "[capi]") {
   double z[2], w[2];
   cpkit_info info;

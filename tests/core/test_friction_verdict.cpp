@@ -252,6 +252,24 @@ TEST_CASE("a diverging r is never accepted", "[friction][verdict]") {
   VectorXd r = VectorXd::Zero(6);
   r[0] = r[3] = 1e40;
   CHECK(std::isinf(cpkit::friction_errors(p, r).unit_free));
+
+  // The verdict reads W in its own storage, by columns: the same numbers when W is left
+  // uncompressed (room for more entries in every column) and its entries were inserted
+  // columns last to first.
+  auto loose = p;
+  loose.W = Eigen::SparseMatrix<double>(6, 6);
+  loose.W.reserve(Eigen::VectorXi::Constant(6, 4));
+  for (int j = 5; j >= 0; --j)
+    for (int i = 5; i >= 0; --i)
+      if (W(i, j) != 0) loose.W.insert(i, j) = W(i, j);
+  REQUIRE(!loose.W.isCompressed());
+  for (double t : {1e3, 1e15}) {
+    VectorXd rt = VectorXd::Zero(6);
+    rt[0] = rt[3] = t;
+    CAPTURE(t);
+    CHECK(cpkit::friction_errors(loose, rt).unit_free == Approx(1.0 / 3).epsilon(1e-12));
+  }
+  CHECK(std::isinf(cpkit::friction_errors(loose, r).unit_free));
 }
 
 TEST_CASE("unit invariance: same verdict under q -> a q and (W, q) -> b (W, q)",

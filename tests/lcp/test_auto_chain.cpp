@@ -11,6 +11,7 @@
 
 #include "cpkit/core/io.hpp"
 #include "cpkit/lcp/auto_chain.hpp"
+#include "cpkit/lcp/small_lcp.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
 using cpkit::Mat;
@@ -145,6 +146,119 @@ TEST_CASE("auto on Siconos' 1x1 trap M = -1, q = -1 is never solved", "[auto][in
   INFO(r.message);
   CHECK_FALSE(cpkit::is_solution(r.status));
   if (r.status == Status::kInfeasible) CHECK(is_farkas(p, r.certificate->y));
+}
+
+namespace {
+
+/// Brute force, independent of the tiny route: every complementary basis S solved by a full-
+/// pivoting LU, kept when z_S >= 0 and w >= 0 off S; the distinct points (Gaussian data: no
+/// degenerate bases, so this lists every solution).
+std::vector<Vec> all_solutions_by_bases(const Mat& M, const Vec& q) {
+  const Eigen::Index n = q.size();
+  std::vector<Vec> found;
+  for (unsigned S = 0; S < (1u << n); ++S) {
+    std::vector<Eigen::Index> idx;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (S >> i & 1u) idx.push_back(i);
+    Vec z = Vec::Zero(n);
+    if (!idx.empty()) {
+      const Eigen::Index k = static_cast<Eigen::Index>(idx.size());
+      Mat A(k, k);
+      Vec b(k);
+      for (Eigen::Index a = 0; a < k; ++a) {
+        b(a) = -q(idx[a]);
+        for (Eigen::Index c = 0; c < k; ++c) A(a, c) = M(idx[a], idx[c]);
+      }
+      Eigen::FullPivLU<Mat> lu(A);
+      if (!lu.isInvertible()) continue;
+      const Vec zs = lu.solve(b);
+      for (Eigen::Index a = 0; a < k; ++a) z(idx[a]) = zs(a);
+    }
+    const Vec w = M * z + q;
+    const double scale = 1e-9 * (1 + q.cwiseAbs().maxCoeff());
+    bool ok = true;
+    for (Eigen::Index i = 0; i < n; ++i) ok = ok && z(i) >= -scale && w(i) >= -scale;
+    if (!ok) continue;
+    bool seen = false;
+    for (const Vec& f : found) seen = seen || (f - z).cwiseAbs().maxCoeff() <= scale;
+    if (!seen) found.push_back(z);
+  }
+  return found;
+}
+
+bool answered_by_tiny_route(const cpkit::SolveResult& r) {
+  return r.attempts.size() == 1 && r.solver == "enumeration" &&
+         r.message.find("the one solution of this LCP") != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("auto answers a tiny LCP by its one solution, and only when there is one", "[auto][tiny]") {
+  // Hand case: M = [[2, 1], [1, 2]], q = (-5, -6): z = (4/3, 7/3), w = 0, no Lemke pivots.
+  cpkit::LcpProblem hand(Mat{{2, 1}, {1, 2}}, Vec{{-5, -6}});
+  const cpkit::SolveResult r = solve_auto(hand);
+  CHECK(r.status == Status::kSolved);
+  CHECK(answered_by_tiny_route(r));
+  CHECK(r.iterations == 0);
+  CHECK(r.z(0) == Approx(4.0 / 3).epsilon(1e-15));
+  CHECK(r.z(1) == Approx(7.0 / 3).epsilon(1e-15));
+  // A trace asks to watch a solver iterate: Lemke runs (three pivots: z0 in, then z2, z1).
+  cpkit::CommonOptions traced;
+  traced.record_trace = true;
+  const cpkit::SolveResult t = solve_auto(hand, traced);
+  CHECK(t.solver == "lemke");
+  CHECK(t.trace.size() == 3);
+
+  // A problem with three solutions (battle of the sexes, n = 4) is not the tiny route's.
+  CHECK_FALSE(answered_by_tiny_route(solve_auto(load("battle_of_the_sexes"))));
+}
+
+TEST_CASE("the tiny route answers exactly the tiny LCPs with one solution, in any units",
+          "[auto][tiny]") {
+  // Seeded Gaussian problems n = 1..4, half of them positive definite: the route (the one auto
+  // takes first) answers only when brute force finds exactly one solution, with that solution,
+  // and always on a positive definite M (a P-matrix). In other units (M and q together, or q
+  // alone, scaled by 1e-12 and 1e12) it answers the same problems with the same z in those units.
+  std::mt19937_64 rng(37);
+  std::normal_distribution<double> g;
+  int answered = 0, several = 0, pd = 0, pd_answered = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const int n = 1 + k % 4;
+    Mat M(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) M(i, j) = g(rng);
+    const bool positive_definite = k % 2 == 0;
+    if (positive_definite) M = M * M.transpose() + 0.1 * Mat::Identity(n, n);
+    Vec q(n);
+    for (int i = 0; i < n; ++i) q(i) = g(rng);
+    const std::vector<Vec> sols = all_solutions_by_bases(M, q);
+    several += sols.size() > 1 ? 1 : 0;
+    double z[4], w[4], natural = 0;
+    const bool got = solve_small_fast(n, M.data(), q.data(), 1e-10, z, w, natural);
+    CAPTURE(k, M, q);
+    pd += positive_definite ? 1 : 0;
+    pd_answered += positive_definite && got ? 1 : 0;
+    if (!got) continue;
+    ++answered;
+    REQUIRE(sols.size() == 1);
+    const Vec zv = Eigen::Map<const Vec>(z, n);
+    CHECK((zv - sols[0]).cwiseAbs().maxCoeff() <= 1e-9 * (1 + sols[0].cwiseAbs().maxCoeff()));
+    CHECK(is_lcp_solution(cpkit::LcpProblem(M, q), zv, 1e-10));
+    for (const double s : {1e-12, 1e12}) {
+      const Mat sM = s * M;
+      const Vec sq = s * q;
+      double zb[4], wb[4], zq[4], wq[4], nb = 0, nq = 0;
+      REQUIRE(solve_small_fast(n, sM.data(), sq.data(), 1e-10, zb, wb, nb));  // same z
+      REQUIRE(solve_small_fast(n, M.data(), sq.data(), 1e-10, zq, wq, nq));   // z times s
+      for (int i = 0; i < n; ++i) {
+        CHECK(zb[i] == Approx(z[i]).epsilon(1e-12).margin(1e-12 * zv.cwiseAbs().maxCoeff()));
+        CHECK(zq[i] / s == Approx(z[i]).epsilon(1e-12).margin(1e-12 * zv.cwiseAbs().maxCoeff()));
+      }
+    }
+  }
+  CHECK(pd_answered == pd);
+  CHECK(answered >= 2000);
+  CHECK(several >= 50);  // problems with several solutions were met, and none was answered
 }
 
 TEST_CASE("auto for an NCP runs fb-newton, then ipopt, then nlopt", "[auto][mcp]") {

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
+#include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_examples.hpp"
@@ -16,6 +18,30 @@ using cpkit::Status;
 using cpkit::lcp::friction::ProxOptions;
 using cpkit::lcp::friction::solve_prox;
 using cpkit::test::DiagContact;
+
+// |F_nat| / |q| (FCLIB's and Siconos' error), written here from its definition: F = r -
+// P_K(r - u_hat), u = W r + q, u_hat = (u_N + mu |u_T|, u_T), P_K the projection on the cone
+// |x_T| <= mu x_N in closed form; no cpkit cone or verdict code.
+double natural_map_error(const cpkit::FrictionContactProblem& p, const Eigen::VectorXd& r) {
+  const Eigen::VectorXd u = Eigen::MatrixXd(p.W) * r + p.q;
+  double sum = 0;
+  for (Eigen::Index i = 0; i < p.mu.size(); ++i) {
+    const double m = p.mu[i];
+    const Eigen::Vector3d ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
+    Eigen::Vector3d x = ri;
+    x[0] -= ui[0] + m * ui.tail<2>().norm();
+    x.tail<2>() -= ui.tail<2>();
+    const double t = x.tail<2>().norm();
+    Eigen::Vector3d proj = x;                          // inside the cone
+    if (m * t <= -x[0]) proj.setZero();                // inside the polar cone
+    else if (t > m * x[0]) {                           // onto the cone's edge
+      const double a = (x[0] + m * t) / (1 + m * m);
+      proj << a, m * a * x[1] / t, m * a * x[2] / t;
+    }
+    sum += (ri - proj).squaredNorm();
+  }
+  return std::sqrt(sum) / p.q.norm();
+}
 
 }  // namespace
 
@@ -92,4 +118,53 @@ TEST_CASE("prox: registered, refuses bad input", "[friction][prox]") {
   CHECK_THROWS_AS(solve_prox(p, bad_shrink), cpkit::InputError);
   p.mu[0] = -1;
   CHECK_THROWS_AS(solve_prox(p), cpkit::InputError);
+}
+
+TEST_CASE("prox: real files to |F_nat|/|q| <= 1e-8, in at most Siconos PROX's outer iterations",
+          "[friction][prox]") {
+  // PROX's outer iterations: Debian's Siconos 4.4.0, fc3d_driver with SICONOS_FRICTION_3D_PROX
+  // defaults, tol 1e-8, from r = 0 (docs/benchmarks.md, h59).
+  struct Case {
+    const char* file;
+    int prox_outer;
+  };
+  const Case cases[] = {{"Confeti-ex03-Fc3D-SBM.dat", 56},
+                        {"Rover1039.dat", 27},
+                        {"NESpheres_10_1.dat", 7},
+                        {"FC3D_Example1.dat", 6}};
+  const cpkit::SolverEntry entry = cpkit::lcp::friction::prox_entry();
+  int decided = 0;
+  for (const Case& c : cases) {
+    INFO(c.file);
+    const auto p = cpkit::read_friction_problem(CPKIT_TEST_DATA_DIR "/fclib/local/" +
+                                                std::string(c.file));
+    cpkit::CommonOptions o;
+    o.tol = 1e-8;
+    const cpkit::SolveResult r = cpkit::lcp::friction::solve_in_measure(
+        p, entry, o, cpkit::FrictionMeasure::kRelativeQ);
+    CHECK(r.status == Status::kSolved);
+    REQUIRE(r.z.size() == p.q.size());
+    CHECK(natural_map_error(p, r.z) <= 1e-8);
+    CHECK(cpkit::test::violation(p, r.z) <= 1e-6);
+    CHECK(r.iterations <= c.prox_outer);  // outer iterations over every solve of the measure
+    ++decided;
+  }
+  REQUIRE(decided == 4);
+}
+
+TEST_CASE("prox: the rank-deficient BoxesStack1 with each inner solver", "[friction][prox]") {
+  // 52 contacts, W of rank 78 / 156: the Alart-Curnier inner solve (the default) and the FB one
+  // both reach |F_nat|/|q| <= 1e-8 by the check above.
+  const auto p = cpkit::read_friction_problem(CPKIT_TEST_DATA_DIR
+                                              "/fclib/local/BoxesStack1-i100000-32.hdf5.dat");
+  for (const auto inner : {cpkit::lcp::friction::ProxInner::kAlartCurnier,
+                           cpkit::lcp::friction::ProxInner::kFbSoc}) {
+    ProxOptions o;
+    o.inner = inner;
+    o.common.tol = 1e-8;
+    const cpkit::SolveResult r = solve_prox(p, o);
+    CHECK(r.status == Status::kSolved);
+    REQUIRE(r.z.size() == p.q.size());
+    CHECK(natural_map_error(p, r.z) <= 1e-8);
+  }
 }

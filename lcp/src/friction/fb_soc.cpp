@@ -22,6 +22,7 @@ using cpkit::lcp::detail::pow2_below;
 
 struct Model {
   const FrictionContactProblem& p;  // the scaled problem
+  std::vector<double> rho;          // Alart-Curnier's rho per contact; empty: the FB function
   // Phi at r (u = W r + q given); with `jac`, the blocks A_i = dPhi_i/dr_i, B_i = dPhi_i/du_i.
   void eval(const VectorXd& r, const VectorXd& u, VectorXd& phi, std::vector<Mat3>* A,
             std::vector<Mat3>* B) const {
@@ -29,6 +30,10 @@ struct Model {
     for (Eigen::Index i = 0; i < nc; ++i) {
       const double mu = p.mu[i];
       const Vec3 ri = r.segment<3>(3 * i), ui = u.segment<3>(3 * i);
+      if (!rho.empty()) {
+        alart_curnier(i, ri, ui, phi, A, B);
+        continue;
+      }
       if (mu == 0) {
         double da, db;
         phi[3 * i] = lcp::detail::fb_scalar(ri[0], ui[0], da, db);
@@ -61,7 +66,49 @@ struct Model {
       }
     }
   }
+  void alart_curnier(Eigen::Index i, const Vec3& ri, const Vec3& ui, VectorXd& phi,
+                     std::vector<Mat3>* A, std::vector<Mat3>* B) const;
 };
+
+// Alart-Curnier's Phi_i (fb_soc.hpp) and an element of its generalized Jacobian.
+void Model::alart_curnier(Eigen::Index i, const Vec3& ri, const Vec3& ui, VectorXd& phi,
+                          std::vector<Mat3>* A, std::vector<Mat3>* B) const {
+  using Vec2 = Eigen::Vector2d;
+  using Mat2 = Eigen::Matrix2d;
+  const double mu = p.mu[i], rh = rho[static_cast<size_t>(i)];
+  const double zn = ri[0] - rh * ui[0];
+  Vec3 ph;
+  Mat3 a = Mat3::Zero(), b = Mat3::Zero();
+  if (zn > 0) {  // Phi_N = rho u_N
+    ph[0] = rh * ui[0];
+    b(0, 0) = rh;
+  } else {  // Phi_N = r_N
+    ph[0] = ri[0];
+    a(0, 0) = 1;
+  }
+  const double radius = mu * std::max(0.0, zn);
+  const Vec2 zt = ri.tail<2>() - rh * ui.tail<2>();
+  const double nz = zt.norm();
+  if (nz <= radius) {  // inside the disk: Phi_T = rho u_T
+    ph.tail<2>() = rh * ui.tail<2>();
+    b(1, 1) = b(2, 2) = rh;
+  } else {  // on its edge: Phi_T = r_T - R z_T / |z_T|
+    const Vec2 n = nz > 0 ? Vec2(zt / nz) : Vec2(1, 0);
+    ph.tail<2>() = ri.tail<2>() - radius * n;
+    const Mat2 dp = (nz > 0 ? radius / nz : 0.0) * (Mat2::Identity() - n * n.transpose());
+    a.block<2, 2>(1, 1) = Mat2::Identity() - dp;
+    b.block<2, 2>(1, 1) = rh * dp;
+    if (zn > 0) {  // R = mu z_N
+      a.block<2, 1>(1, 0) = -mu * n;
+      b.block<2, 1>(1, 0) = mu * rh * n;
+    }
+  }
+  phi.segment<3>(3 * i) = ph;
+  if (A) {
+    (*A)[static_cast<size_t>(i)] = a;
+    (*B)[static_cast<size_t>(i)] = b;
+  }
+}
 
 // Every entry of every block is stored, zeros included: the pattern of J = A + B W is then the
 // same at every iterate and the LU's ordering is computed once per solve.
@@ -102,7 +149,12 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   FrictionContactProblem p = p0;
   p.W = p0.W * (1.0 / sw);  // sr / su = 1 / sw
   p.q = p0.q * (1.0 / su);
-  const Model model{p};
+  Model model{p, {}};
+  if (o.alart_curnier)
+    for (const Mat3& d : detail::diagonal_blocks(p.W)) {
+      const double w = d.diagonal().cwiseAbs().maxCoeff();
+      model.rho.push_back(w > 0 ? 1 / w : 1.0);
+    }
   const FrictionUnits units = friction_units(p);
 
   VectorXd r = o.r0.size() ? VectorXd(o.r0 / sr) : VectorXd::Zero(n);

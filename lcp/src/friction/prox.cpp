@@ -84,7 +84,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
     u = p.W * r + p.q;  // fresh each outer step: no drift of the incremental updates
     const double inner_tol = std::max(ec / 10, o.common.tol / 10);
     bool converged = false;
-    if (o.inner == ProxInner::kFbSoc) {
+    if (o.inner != ProxInner::kGaussSeidel) {
       // The regularised problem (W + alpha I, q - alpha r_k) by semismooth Newton from r_k.
       FrictionContactProblem reg;
       reg.W = p.W + alpha * identity;
@@ -100,6 +100,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       fo.common.time_limit_s = o.common.time_limit_s - clock.seconds();
       fo.common.record_trace = false;
       fo.r0 = rk;
+      fo.alart_curnier = o.inner == ProxInner::kAlartCurnier;
       const SolveResult in = solve_fb_soc(reg, fo);
       out.function_evals += in.iterations;
       if (in.z.size() == n && in.z.allFinite()) r = in.z;
@@ -159,8 +160,9 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   out.status = stop == Status::kSolved ? Status::kSolved : stop;
   out.message = "proximal point: " + std::to_string(out.iterations) + " outer iterations, " +
                 std::to_string(out.function_evals) +
-                (o.inner == ProxInner::kFbSoc ? " inner Newton iterations (fb-soc), "
-                                              : " Gauss-Seidel sweeps, ") +
+                (o.inner == ProxInner::kGaussSeidel ? " Gauss-Seidel sweeps, "
+                 : o.inner == ProxInner::kFbSoc     ? " inner Newton iterations (fb-soc), "
+                                                    : " inner Newton iterations (Alart-Curnier), ") +
                 std::to_string(inner_failures) + " inner solves not converged, last alpha " +
                 short_number(alpha / w_scale) + " w_scale";
   out.seconds = clock.seconds();
@@ -173,8 +175,8 @@ SolverEntry prox_entry() {
   SolverEntry e;
   e.info.name = "prox";
   e.info.description =
-      "proximal point method (fb-soc inner solves, PROX's alpha rule with a geometric "
-      "decrease) for friction problems [Acary-Bremond-Huber 2018]";
+      "proximal point method (semismooth Newton inner solves on Alart-Curnier's function, PROX's "
+      "alpha rule with a geometric decrease) for friction problems [Acary-Bremond-Huber 2018]";
   e.info.dense = false;
   e.info.sparse = false;
   e.solve_fc = detail::with_common_options<ProxOptions>(

@@ -76,13 +76,12 @@ struct FrictionErrors {
 /// has the wrong size; a non-finite r gives unit_free = +inf (and NaN relative errors).
 FrictionErrors friction_errors(const FrictionContactProblem& problem, const Eigen::VectorXd& r);
 
-/// The data-only part of the units (||q||_inf, ||W||_max, W by rows, its row sums and counts,
-/// each contact's block size d_i and cap_i), computed once per problem so that solvers can test
-/// every iterate cheaply.
+/// The data-only part of the units (||q||_inf, ||W||_max, W's row sums and counts, each
+/// contact's block size d_i and cap_i), computed once per problem so that solvers can test every
+/// iterate cheaply. O(n_c) memory: the verdict reads W itself, by columns (no copy of W).
 struct FrictionUnits {
   double q_inf = 0;
   double w_max = 0;
-  Eigen::SparseMatrix<double, Eigen::RowMajor> W_rows;  ///< W stored by rows
   Eigen::VectorXd row_sums;                             ///< ||W_k,:||_1
   Eigen::VectorXd row_gamma;                            ///< gamma_{m_k + 1}
   Eigen::VectorXd block_max;                            ///< d_i (w_max where the block is 0)

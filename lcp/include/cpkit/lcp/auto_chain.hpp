@@ -39,7 +39,7 @@ namespace cpkit::lcp {
 
 /// The chain's solver names for a problem kind (in order; the farkas-search step is not a
 /// registered solver and is not listed).
-std::vector<std::string> auto_chain_names(ProblemKind kind);
+const std::vector<std::string>& auto_chain_names(ProblemKind kind);
 
 /// Each throws InputError for an invalid problem or options.
 SolveResult solve_auto(const LcpProblem& problem, const CommonOptions& options = {});

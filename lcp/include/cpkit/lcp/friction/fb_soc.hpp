@@ -44,6 +44,15 @@ struct FbSocOptions {
   Eigen::VectorXd r0;
   /// Non-monotone memory of the Newton line search; 1 = monotone Armijo.
   int nonmonotone_memory = 8;
+  /// Solve Phi_AC(r) = 0 instead, Alart and Curnier's function as Siconos' NSN_AC
+  /// [Alart, Curnier 1991], with the same Newton loop, LU, line search and verdict: per contact,
+  /// with z_N = r_N - rho u_N, z_T = r_T - rho u_T, rho = 1 / max |diag W_ii| (the scaled
+  /// problem's) and the disk D(R) of radius R = mu max(0, z_N),
+  ///   Phi_N = r_N - max(0, z_N),   Phi_T = r_T - P_D(R)(z_T).
+  /// Its zeros are the same solutions (Coulomb's law with u_N is De Saxce's for every state).
+  /// prox's inner solves use it: near a solution of a rank-deficient W it takes full Newton
+  /// steps where the FB function's are damped to 1/128 or stall (docs/benchmarks.md, h59).
+  bool alart_curnier = false;
 };
 
 /// Solves the problem; throws InputError when it (or r0) is invalid.

@@ -3,12 +3,13 @@
 /// Nonsmooth Gauss-Seidel ("nsgs") for the local 3-D frictional contact problem
 /// (friction_problem.hpp) [Jean 1999; Acary, Bremond, Huber 2018, Sec. 4]: sweeps over the
 /// contacts in order; contact i's step solves its one-contact problem u_i = W_ii r_i + b_i,
-/// b_i = q_i + sum_{j != i} W_ij r_j, and takes the solution closest to the current r_i
-/// (one_contact.hpp: every solution in closed form). Where the contact keeps its state the
-/// closed forms are skipped: r_i = 0 with b_N >= 0 stays 0; r_i strictly inside the cone takes
-/// the stick solution -W_ii^-1 b_i (inverse computed once) when that is in the cone; r_i on the
-/// cone's boundary takes the slip solution that Newton's method on the slip direction finds from
-/// r_i's (accepted by one_contact's local test). These follow r_i's branch of solutions
+/// b_i = q_i + sum_{j != i} W_ij r_j, and takes a solution from the current r_i on
+/// (one_contact_newton.hpp, r_i's own state first: r_i = 0 with b_N >= 0 stays 0; r_i strictly
+/// inside the cone takes the stick solution -W_ii^-1 b_i (inverse computed once) when that is in
+/// the cone; r_i on the cone's boundary takes the slip solution that Newton's method on the slip
+/// direction finds from r_i's; then the other states, as Siconos' NSGS starts its local Newton
+/// at r_i). What that does not solve takes every solution in closed form (one_contact.hpp) and
+/// the one closest to r_i. These follow r_i's branch of solutions
 /// (issue 35: KaplasTower 21.9M -> 2.8M instructions per sweep). u = W r + q is kept up to date
 /// column by column (W need not be symmetric), and recomputed from the data at every
 /// convergence test.

@@ -1,7 +1,9 @@
 #pragma once
 /// \file one_contact.hpp
 /// Every solution of the frictional contact problem of ONE contact (friction_problem.hpp with
-/// n_c = 1), in closed form: the local step of NSGS (nsgs.hpp) and a building block of its own.
+/// n_c = 1), in closed form: the fallback of the cheap local solve (one_contact_newton.hpp) in
+/// NSGS (nsgs.hpp) and in the C API's one-contact call, the proof that a contact has exactly one
+/// solution, and a building block of its own.
 ///
 ///   u = W r + b,  r in K_mu,  u_hat = u + (mu |u_T|, 0, 0) in K*_mu,  r . u_hat = 0,
 /// W a 3x3 matrix (normal first; need not be symmetric), mu >= 0. A solution is one of

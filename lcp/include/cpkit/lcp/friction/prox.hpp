@@ -17,16 +17,18 @@
 /// alpha has W's units. PROX's rule alone (alpha0 = 0, shrink = 1) lets alpha fall only as e
 /// does, and the unit-free e falls slowly at first: 20-35 outer iterations on the FCLIB files
 /// (79 on Rover1039, 184 on fclib_local_problem_test); with the defaults 4-7 on all 12, the
-/// number Siconos' PROX needs (4-5). alpha stays in [1e-10, 1e10] w_scale (a floor and a cap
-/// in W's units).
+/// number Siconos' PROX needs (4-5). alpha0 = 0.05 (was 0.5) with the Alart-Curnier inner
+/// solve: 3-6 outer iterations on the 12 local files, 5 on Capsules-i122 and -i101 (PROX: 4).
+/// alpha stays in [1e-10, 1e10] w_scale (a floor and a cap in W's units).
 /// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised
 /// problem, each contact's 3x3 problem (block W_ii + alpha I) solved exactly by
 /// one_contact_nearest() (one_contact.hpp: the solution nearest the current r_i). The inner solve
 /// stops when a sweep changes r by at most max(e_k / 10, tol / 10) relative to the size of r
-/// (the internal tolerance adapted to the outer error, as PROX does). ProxInner::kFbSoc solves
-/// each regularised problem by fb-soc from r_k to the outer tol instead (its unit-free verdict
-/// is relative to q - alpha r_k, which a large alpha inflates) (PROX's own choice is
-/// a Newton method [Acary et al. 2018]).
+/// (the internal tolerance adapted to the outer error, as PROX does). ProxInner::kFbSoc and
+/// kAlartCurnier (the default) solve each regularised problem by fb-soc's semismooth Newton from
+/// r_k to the outer tol instead (its unit-free verdict is relative to q - alpha r_k, which a
+/// large alpha inflates), on the FB or on Alart-Curnier's function (PROX's own choice is
+/// NSN_AC [Acary et al. 2018]).
 ///
 /// Units: r in the problem's units (u per W); every test is relative (unit-free): the same
 /// problem in other units gives the same iterates, scaled. Result through finalize().
@@ -44,9 +46,11 @@ namespace cpkit::lcp::friction {
 /// The solver of each regularised problem.
 enum class ProxInner {
   kGaussSeidel,  ///< block Gauss-Seidel, exact one-contact steps
-  kFbSoc,        ///< semismooth Newton fb-soc (fb_soc.hpp) from r_k, as PROX's internal NSN
-                 ///< (the default: BoxesStack1, 52 contacts, rank 78/156: 0.14 s; Gauss-Seidel
-                 ///< had not converged after 20 s)
+  kFbSoc,        ///< semismooth Newton fb-soc (fb_soc.hpp) from r_k (BoxesStack1, 52 contacts,
+                 ///< rank 78/156: 0.14 s; Gauss-Seidel had not converged after 20 s)
+  kAlartCurnier, ///< the same Newton loop on Alart-Curnier's function (FbSocOptions::
+                 ///< alart_curnier), as PROX's internal NSN_AC: the default (fb-soc Newton
+                 ///< steps 345 -> 132 on Capsules-i122-1617, 140 -> 38 on Capsules-i101-404)
 };
 
 struct ProxOptions {
@@ -54,10 +58,10 @@ struct ProxOptions {
   Eigen::VectorXd r0;    ///< starting r (empty: r = 0), 3 per contact
   double sigma = 5;      ///< alpha = sigma e^nu w_scale (PROX's defaults sigma = 5, nu = 1)
   double nu = 1;
-  double alpha0 = 0.5;  ///< cap of the first alpha, in w_scale units (0: sigma e_0^nu alone)
+  double alpha0 = 0.05;  ///< cap of the first alpha, in w_scale units (0: sigma e_0^nu alone)
   double shrink = 30;   ///< alpha_k <= alpha_{k-1} / shrink after a converged inner solve (>= 1)
   int max_sweeps = 0;  ///< Gauss-Seidel sweeps per inner solve (0: 200)
-  ProxInner inner = ProxInner::kFbSoc;
+  ProxInner inner = ProxInner::kAlartCurnier;
   /// Empty when usable for a problem with n = 3 n_c rows; otherwise names the bad field.
   std::string validate(Eigen::Index n) const;
 };

@@ -1,11 +1,11 @@
 #pragma once
-// The tiny-LCP routes of the C API: n <= 4 with solver "auto" or "lemke".
+// The tiny-LCP routes (n <= 4): the C API with solver "auto" or "lemke", and the auto chain.
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/registry.hpp"
 #include "cpkit/core/result.hpp"
 
-namespace cpkit::capi {
+namespace cpkit::lcp {
 
 /// True for the solvers whose answer on a tiny LCP with exactly one solution is that solution
 /// ("auto" and "lemke"), so that the closed enumeration may answer for them.
@@ -30,4 +30,4 @@ bool solve_small_fast(int n, const double* M, const double* q, double tol, doubl
 bool solve_small_unique(const LcpProblem& p, const SolverEntry& entry, const CommonOptions& o,
                         SolveResult& r);
 
-}  // namespace cpkit::capi
+}  // namespace cpkit::lcp

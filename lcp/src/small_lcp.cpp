@@ -1,4 +1,4 @@
-#include "small_lcp.hpp"
+#include "cpkit/lcp/small_lcp.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "cpkit/lcp/enumerate_small.hpp"
 #include "cpkit/lcp/solvers.hpp"
 
-namespace cpkit::capi {
+namespace cpkit::lcp {
 namespace {
 
 /// The unique solution of the N x N problem (M column-major) into z; false when there is not
@@ -16,8 +16,8 @@ template <int N>
 bool unique_solution(const double* M, const double* q, double* z) {
   const Eigen::Matrix<double, N, N> Mf = Eigen::Map<const Eigen::Matrix<double, N, N>>(M);
   const Eigen::Matrix<double, N, 1> qf = Eigen::Map<const Eigen::Matrix<double, N, 1>>(q);
-  lcp::SmallSolutionSet<N> set;
-  lcp::enumerate_small<N>(Mf, qf, set);
+  SmallSolutionSet<N> set;
+  enumerate_small<N>(Mf, qf, set);
   if (set.num_points != 1 || set.infinite || set.ambiguous != 0 || set.dropped != 0) return false;
   for (int i = 0; i < N; ++i) z[i] = set.z[0][i];
   return true;
@@ -144,8 +144,8 @@ bool unique_solution(int n, const double* M, const double* q, double* z) {
 }  // namespace
 
 bool small_lcp_route(int n, const SolverEntry& entry) {
-  static const SolverEntry* const lemke = lcp::solvers().find("lemke");
-  static const SolverEntry* const automatic = lcp::solvers().find("auto");
+  static const SolverEntry* const lemke = solvers().find("lemke");
+  static const SolverEntry* const automatic = solvers().find("auto");
   return n >= 1 && n <= kSmallLcpMax && (&entry == lemke || &entry == automatic);
 }
 
@@ -183,4 +183,4 @@ bool solve_small_unique(const LcpProblem& p, const SolverEntry& entry, const Com
   return is_solution(r.status);
 }
 
-}  // namespace cpkit::capi
+}  // namespace cpkit::lcp
