@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {
