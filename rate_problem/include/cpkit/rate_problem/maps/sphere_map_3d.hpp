@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {
