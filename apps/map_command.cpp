@@ -1,6 +1,6 @@
 // `cpkit map`: non-existence and non-uniqueness maps of the rate problem (docs/maps.md).
 // Thin: the options into the request (maps/map_request.hpp), the --system file read once, one
-// library call (maps/map_request_run.hpp) with what only the program has (MPI, stderr, the
+// library call (requests/map_request_run.hpp) with what only the program has (MPI, stderr, the
 // lock of --out PREFIX, the plotting script, free memory and disk), the summary printed.
 #include <filesystem>
 #include <iostream>
@@ -12,7 +12,7 @@
 #include "cli_common.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 #include "data_files.hpp"
 #include "machine_resources.hpp"
 #include "output_guard.hpp"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 
 using namespace cpkit::rate;
 using Catch::Matchers::Contains;

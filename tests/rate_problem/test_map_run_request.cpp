@@ -1,4 +1,4 @@
-// A whole `cpkit map` request run by the library (maps/map_request_run.hpp), without the
+// A whole `cpkit map` request run by the library (requests/map_request_run.hpp), without the
 // program: the Fig. 5(b) direction map against the closed forms of its critical directions
 // [Stromberg et al. 1996, Sec. 4.3; docs/model.md, as in test_map_direction.cpp], the same
 // model as a one-point system file (the N-point route gives the same directions), the grid
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 using namespace cpkit::rate;

@@ -1,7 +1,7 @@
-// A whole `cpkit map` request (maps/map_request_run.hpp), moved out of the program: the checks
+// A whole `cpkit map` request (requests/map_request_run.hpp), moved out of the program: the checks
 // in the order the program made them (the first message a user sees is unchanged), the
 // refusals before any cell is computed, the map, its files, its JSON and text, the exit code.
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 
 #include <algorithm>
 #include <cmath>
