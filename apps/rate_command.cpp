@@ -16,7 +16,7 @@
 //
 // N points (and "dim": 3 files): cpkit rate --system FILE [--dF ... 2N numbers] [--json]
 //              [--method enumerate|lemke|fb-newton|ipopt]
-// The checks, the routes and the exit code: rate_problem/rate/rate_request.hpp; the text and JSON:
+// The checks, the routes and the exit code: rate_problem/requests/rate_request.hpp; the text and JSON:
 // report/rate_text.hpp, report/json.hpp.
 #include <iostream>
 #include <memory>
@@ -24,7 +24,7 @@
 
 #include "cli_common.hpp"
 #include "model_options.hpp"
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/report/rate_text.hpp"
 

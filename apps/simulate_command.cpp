@@ -1,5 +1,5 @@
 // `cpkit simulate`: quasi-static fretting simulation with friction, wear and heat
-// (docs/simulation.md; library: cpkit/rate_problem/simulation/simulate_request.hpp).
+// (docs/simulation.md; library: cpkit/rate_problem/requests/simulate_request.hpp).
 //
 //   cpkit simulate --config FILE.json [options overriding the file]
 //   cpkit simulate --a11 X --a12 X --a22 X --mu X [--C_T X --k_a X --P_s X --criterion 38|35]
@@ -22,7 +22,7 @@
 #include <string>
 
 #include "cli_common.hpp"
-#include "cpkit/rate_problem/simulation/simulate_request.hpp"
+#include "cpkit/rate_problem/requests/simulate_request.hpp"
 #include "simulation_outputs.hpp"
 
 namespace cpkit::cli {

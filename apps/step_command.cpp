@@ -8,7 +8,7 @@
 //   cpkit step --system FILE3D --dF X Y N [--all|--chain|--facets K|--multistart N]
 //                                        ("dim": 3, one point or N coupled points)
 //
-// The checks, the routes and the exit code are library work (step/step_request.hpp), so is the
+// The checks, the routes and the exit code are library work (requests/step_request.hpp), so is the
 // text and JSON of the answer (report/step_text.hpp, report/json.hpp); this file registers the
 // options, fills the request, makes the one call and prints.
 #include <iostream>
@@ -20,7 +20,7 @@
 #include "model_options.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/report/step_text.hpp"
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/requests/step_request.hpp"
 
 namespace cpkit::cli {
 namespace {

@@ -10,9 +10,9 @@
 #include "c_boundary.hpp"
 #include "finite_check.hpp"
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/requests/step_request.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::capi {

@@ -28,7 +28,7 @@
 #include "cpkit/cpkit.h"
 #include "cpkit/lcp/friction/one_contact.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 
 using namespace cpkit::rate;
 using Catch::Matchers::Contains;
@@ -25,8 +25,6 @@ namespace {
 MapRequest grid_request(int n, int theta_n, const std::string& out) {
   MapRequest a;
   a.preset = "fig5b";
-  a.options_given = {"--preset", "--kind", "--param", "--from", "--to", "--n", "--theta-n",
-                     "--time-limit", "--max-output", "--out", "--threads"};
   a.kind = "param-direction";
   a.param = "mu";
   a.from = 0.1;

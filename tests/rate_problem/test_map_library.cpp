@@ -6,6 +6,7 @@
 // the NPY format specification (numpy.lib.format: magic, version 1.0, header dict, 64-byte
 // aligned data).
 #include <Eigen/Dense>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "cpkit/rate_problem/maps/direction_map.hpp"
 #include "cpkit/rate_problem/maps/map_3d_plan.hpp"
 #include "cpkit/rate_problem/maps/map_files.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
 #include "cpkit/rate_problem/maps/map_request.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/maps/system_grid_map.hpp"
@@ -59,13 +61,11 @@ ContactParameters wedge_params(double mu = 2.0) {
   return p;
 }
 
-Map3dRequest request_3d(const std::string& text, const std::string& kind,
-                        std::vector<std::string> given) {
+Map3dRequest request_3d(const std::string& text, const std::string& kind) {
   Map3dRequest r;
   r.system = "test.json";
   r.file = parse_system_file(text, "test.json");
   r.kind = kind;
-  r.options_given = std::move(given);
   return r;
 }
 
@@ -243,7 +243,7 @@ TEST_CASE("system fingerprint: FNV-1a of the documented byte order", "[rate][map
 
 TEST_CASE("3-D map plan: the sphere map on g = 0 is the 2-D closed form; JSON and sizes",
           "[rate3d][maps][report]") {
-  Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+  Map3dRequest r = request_3d(kDecoupled3d, "sphere");
   r.n = 9;
   r.n2 = 8;  // g = 0 is column 3 (g in (-pi, pi])
   const Map3dPlan p = make_map_3d_plan(r);
@@ -284,7 +284,7 @@ TEST_CASE("3-D map plan: the sphere map on g = 0 is the 2-D closed form; JSON an
 
 TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
   SECTION("a map no larger than the 4 x 8 sample is not estimated") {
-    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere");
     r.n = 3;
     r.n2 = 8;
     const Map3dPlan p = make_map_3d_plan(r);
@@ -294,7 +294,7 @@ TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
     CHECK(sampled == 0);
   }
   SECTION("a larger one is estimated from the 4 x 8 sample") {
-    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--n", "--n2"});
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere");
     r.n = 20;
     r.n2 = 30;
     const Map3dPlan p = make_map_3d_plan(r);
@@ -304,8 +304,7 @@ TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
     CHECK(sampled == 32);
   }
   SECTION("param-direction: the directions and the echo") {
-    Map3dRequest r = request_3d(kDecoupled3d, "param-direction",
-                                {"--param", "--from", "--to", "--n", "--theta-n"});
+    Map3dRequest r = request_3d(kDecoupled3d, "param-direction");
     r.param = "mu";
     r.from = 1;
     r.to = 3;
@@ -319,18 +318,18 @@ TEST_CASE("3-D map plan: estimate, and bad requests named", "[rate3d][maps]") {
     CHECK(p.input["theta_to"].get<double>() == Approx(kTwoPi));
   }
   SECTION("refusals name the option") {
-    Map3dRequest r = request_3d(kDecoupled3d, "sphere", {"--facets"});
+    Map3dRequest r = request_3d(kDecoupled3d, "sphere");
     r.facets = 2;
     CHECK_THROWS_WITH(make_map_3d_plan(r), "--facets must be in [3, 64], got 2");
-    r = request_3d(kDecoupled3d, "sphere", {"--point"});
+    r = request_3d(kDecoupled3d, "sphere");
     r.point = 2;
     CHECK_THROWS_WITH(make_map_3d_plan(r), "--point must be in [1, 1], got 2");
-    r = request_3d(kDecoupled3d, "param-param",
-                   {"--param", "--from", "--to", "--param2", "--from2", "--to2"});
+    r = request_3d(kDecoupled3d, "param-param");
     r.param = "mu";
     r.param2 = "C_T";
     r.from = 1;
     r.to = 2;
+    r.from2 = 0;
     r.to2 = 1;
     CHECK_THROWS_WITH(make_map_3d_plan(r), Catch::Contains("needs \"dF\""));
   }
@@ -407,7 +406,6 @@ TEST_CASE("map request: the one-point setup from a preset and the options over i
     CHECK(s.state.label == StateLabel::kB);
     CHECK(s.kind == MapKind::kDirection);
     a.mu = 0.75;
-    a.options_given = {"--mu"};
     s = make_map_setup(a);
     CHECK(s.params.mu == 0.75);
   }
@@ -420,7 +418,6 @@ TEST_CASE("map request: the one-point setup from a preset and the options over i
     a.from = 0.1;
     a.to = 2;
     a.n = 7;
-    a.options_given = {"--a11", "--a12", "--a22", "--kind", "--param", "--from", "--to", "--n"};
     const MapSetup s = make_map_setup(a);
     CHECK(s.kind == MapKind::kParamDirection);
     CHECK(s.axis.param == MapParameter::kMu);
@@ -430,23 +427,22 @@ TEST_CASE("map request: the one-point setup from a preset and the options over i
   }
   SECTION("refusals and notes") {
     a.preset = "fig5a";
-    a.options_given = {"--P_N"};
     a.P_N = 1;
     CHECK_THROWS_WITH(make_map_setup(a), Catch::StartsWith("--P_N has no effect in state b"));
-    a.options_given = {"--mu", "--param", "--from", "--to", "--kind"};
+    a.P_N.reset();
+    a.mu = 0;
     a.kind = "param-direction";
     a.param = "mu";
+    a.from = 0;
     a.to = 1;
     CHECK_THROWS_WITH(make_map_setup(a),
                       Catch::StartsWith("--mu has no effect: mu varies along the map's"));
     MapRequest b;
-    b.options_given = {"--a11"};
     b.a11 = 1;
     CHECK_THROWS_WITH(make_map_setup(b), Catch::Contains("(missing: --a12 --a22 --mu)"));
     MapRequest c;
     c.preset = "fig5a";
     c.k_a = 0.5;
-    c.options_given = {"--k_a"};
     std::vector<std::string> notes;
     (void)make_map_setup(c, [&](const std::string& n) { notes.push_back(n); });
     REQUIRE(notes.size() == 1);
@@ -548,39 +544,65 @@ TEST_CASE("grid map file sinks: the .npy cells are the one-point closed form", "
   fs::remove_all(dir);
 }
 
+TEST_CASE("map requests: the options given, in the order the first refused is named",
+          "[rate][maps]") {
+  MapRequest a;
+  CHECK(map_options_given(a).empty());
+  a.theta_n = 12;
+  a.mu = 1;
+  a.C_T = 0.5;
+  // Byte order, as `cpkit map` has always named the first refused option: "--C_T" < "--mu".
+  CHECK(map_options_given(a) == std::vector<std::string>{"--C_T", "--mu", "--theta-n"});
+  a.system = "two.json";
+  CHECK_THROWS_WITH(system_map_request(a, SystemFile{}, 1),
+                    Catch::StartsWith("--C_T does not apply with --system --kind direction"));
+  // Every option given: 36 distinct names, sorted as std::string compares them.
+  a.preset = a.kind = a.state = a.criterion = a.method = a.out = a.param = a.param2 = "x";
+  a.format = a.max_output = a.others = "x";
+  a.time_limit = a.a11 = a.a12 = a.a22 = a.k_a = a.P_s = a.P_N = a.gamma = 1;
+  a.from = a.to = a.from2 = a.to2 = a.theta_from = a.theta_to = 1;
+  a.sgnPT = a.n = a.n2 = a.threads = a.facets = a.point = 1;
+  a.resume = true;
+  const std::vector<std::string> all = map_options_given(a);
+  CHECK(all.size() == 36);
+  CHECK(std::is_sorted(all.begin(), all.end()));
+  CHECK(std::adjacent_find(all.begin(), all.end()) == all.end());
+}
+
 TEST_CASE("map requests: the options that apply to N-point and 3-D maps", "[rate][maps]") {
   MapRequest a;
   a.system = "two.json";
   SECTION("N points: defaults, and options that do not apply") {
     a.kind = "param-direction";
     a.param = "mu";
+    a.from = 0;
     a.to = 1;
-    a.options_given = {"--from", "--kind", "--param", "--system", "--to"};
     const SystemMapRequest r = system_map_request(a, SystemFile{}, 1);
     CHECK(r.kind == "param-direction");
     CHECK(r.n == 100);  // docs/maps.md: --system maps default to 100 values per axis
     CHECK(r.theta_n == 360);
     CHECK(r.theta_to == Approx(kTwoPi));
     CHECK(r.max_output == 4.0 * 1024 * 1024 * 1024);  // --max-output 4G
-    a.options_given.push_back("--mu");
+    a.mu = 0;
     CHECK_THROWS_WITH(system_map_request(a, SystemFile{}, 1),
                       Catch::StartsWith("--mu does not apply with --system --kind param-direction"));
     MapRequest d;
-    d.options_given = {"--system"};
+    d.system = "two.json";
     CHECK_THROWS_WITH(system_map_request(d, SystemFile{}, 2),
                       Catch::StartsWith("a direction map is one exact computation"));
-    d.options_given = {"--system", "--kind", "--param", "--from"};
     d.kind = "param-direction";
+    d.param = "mu";
+    d.from = 0;
     CHECK_THROWS_WITH(system_map_request(d, SystemFile{}, 1),
                       "--system --kind param-direction needs --to");
   }
   SECTION("3-D: the kind is required; options of other kinds are refused") {
     CHECK_THROWS_WITH(check_map_3d_request(a), Catch::StartsWith("maps of a dim 3 system need --kind"));
     a.kind = "sphere";
-    a.options_given = {"--kind", "--system", "--theta-n"};
+    a.theta_n = 360;
     CHECK_THROWS_WITH(check_map_3d_request(a),
                       Catch::StartsWith("--theta-n has no effect with a dim 3 system and --kind sphere"));
-    a.options_given = {"--kind", "--system"};
+    a.theta_n.reset();
     CHECK_NOTHROW(check_map_3d_request(a));
     CHECK_THROWS_WITH(check_map_3d_request(a, 2), Catch::StartsWith("3-D maps run on the threads of one process"));
   }

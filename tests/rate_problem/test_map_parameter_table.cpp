@@ -88,3 +88,60 @@ TEST_CASE("PsOfAnNPointMapSetsTheHardnessAndTheSlidingLimit", "[map][params]") {
   CHECK_THROWS_AS(apply_system_map_parameter(base, parse_system_map_parameter("P_s", 2), 0),
                   cpkit::InputError);
 }
+
+TEST_CASE("EveryRowOfSystemsSetsItsOwnQuantity", "[map][params]") {
+  // The rows apply themselves (set_point, set_point_3d): each must set the point field its name
+  // says, of point 2 only with @2, and nothing else (fields read back by name, by hand).
+  const ContactSystem base = parse_contact_system(
+      R"({"A": [[2, 0.1, 0, 0], [0.1, 2, 0, 0], [0, 0, 2, 0.1], [0, 0, 0.1, 2]],
+          "points": [{"state": "c", "mu": 0.5, "P_N": 1}, {"state": "c", "mu": 0.5, "P_N": 1}]})");
+  auto field_2d = [](const SystemPoint& p, const std::string& name) {
+    return name == "mu" ? p.mu : name == "C_T" ? p.C_T : name == "k_a" ? p.k_a
+         : name == "P_s" ? p.P_s : name == "P_N" ? p.P_N : -1.0;
+  };
+  auto field_3d = [](const SystemPoint3d& p, const std::string& name) {
+    return name == "mu" ? p.mu : name == "C_T" ? p.C_T : name == "k_a" ? p.k_a
+         : name == "P_s" ? p.P_s : name == "alpha_X" ? p.alpha(0) : name == "alpha_Y" ? p.alpha(1)
+         : -1.0;
+  };
+  ContactSystem3d base3;
+  base3.A = Eigen::MatrixXd::Identity(6, 6);
+  base3.points.resize(2);
+  int decided_2d = 0, decided_3d = 0;
+  for (const auto& row : map_parameter_table()) {
+    const std::string name = row.name;
+    CAPTURE(name);
+    if ((row.dimensions & kMapNPoints) && row.per_point) {
+      const ContactSystem s =
+          apply_system_map_parameter(base, parse_system_map_parameter(name + "@2", 2), 0.375);
+      CHECK(field_2d(s.points[1], name) == 0.375);
+      CHECK(field_2d(s.points[0], name) == field_2d(base.points[0], name));
+      ++decided_2d;
+    }
+    if (row.dimensions & kMap3d) {
+      ContactSystem3d s = base3;
+      apply_map_3d_parameter(parse_map_3d_parameter(name + "@2", 2), 0.375, s);
+      CHECK(field_3d(s.points[1], name) == 0.375);
+      CHECK(field_3d(s.points[0], name) == field_3d(base3.points[0], name));
+      ++decided_3d;
+    }
+  }
+  CHECK(decided_2d == 5);  // mu, C_T, k_a, P_s, P_N
+  CHECK(decided_3d == 6);  // mu, C_T, k_a, P_s, alpha_X, alpha_Y
+  // coupling has no point: it scales the blocks between points (A(c) = D + c (A - D)).
+  ContactSystem coupled = base;
+  coupled.A(0, 2) = coupled.A(2, 0) = 0.25;
+  const ContactSystem c =
+      apply_system_map_parameter(coupled, parse_system_map_parameter("coupling", 2), 0.5);
+  CHECK(c.A(0, 2) == 0.125);
+  CHECK(c.A(2, 0) == 0.125);
+  CHECK(c.A(1, 0) == 0.1);  // a point's own block is kept
+  // P_N is refused for a point in state a or b, naming it.
+  const ContactSystem ab = parse_contact_system(
+      R"({"A": [[2, 0.1], [0.1, 2]], "points": [{"state": "b", "mu": 0.5}]})");
+  CHECK_THROWS_WITH(
+      apply_system_map_parameter(ab, parse_system_map_parameter("P_N@1", 1), 1),
+      Catch::Contains("point 1 is in state b (P_N applies to points in state c or d)"));
+  CHECK_THROWS_WITH(apply_system_map_parameter(ab, parse_system_map_parameter("P_N", 1), 1),
+                    "map parameter P_N: no point of the system is in state c or d");
+}

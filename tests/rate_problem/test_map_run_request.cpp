@@ -1,4 +1,4 @@
-// A whole `cpkit map` request run by the library (maps/map_request_run.hpp), without the
+// A whole `cpkit map` request run by the library (requests/map_request_run.hpp), without the
 // program: the Fig. 5(b) direction map against the closed forms of its critical directions
 // [Stromberg et al. 1996, Sec. 4.3; docs/model.md, as in test_map_direction.cpp], the same
 // model as a one-point system file (the N-point route gives the same directions), the grid
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 using namespace cpkit::rate;
@@ -26,11 +26,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The Fig. 5(b) preset (a11 = 1, a12 = 0.5, a22 = 1, C_T = 0.25, mu = 3, state b; a direction
 /// map, or a mu axis over [0.1, 4]) with the options `given` over it.
-MapRequest fig5b_request(std::vector<std::string> given = {}) {
+MapRequest fig5b_request() {
   MapRequest a;
   a.preset = "fig5b";
-  a.options_given = {"--preset"};
-  a.options_given.insert(a.options_given.end(), given.begin(), given.end());
   return a;
 }
 
@@ -101,7 +99,6 @@ TEST_CASE("The same model as a one-point system file: the N-point route's critic
           "[rate][maps][request]") {
   MapRequest a;
   a.system = "fig5b.json";
-  a.options_given = {"--system"};
   a.file = parse_system_file(R"({"name": "fig5b", "A": [[1, 0.5], [0.5, 1]],
       "points": [{"state": "b", "mu": 3, "C_T": 0.25}]})", "fig5b.json");
   const MapOutcome o = run_map_request(a);
@@ -113,7 +110,7 @@ TEST_CASE("The same model as a one-point system file: the N-point route's critic
 
 TEST_CASE("A param-direction grid over mu: the critical value D+ = 0 at mu = a11/a12 = 2",
           "[rate][maps][request]") {
-  MapRequest a = fig5b_request({"--kind", "--n", "--theta-n", "--threads"});
+  MapRequest a = fig5b_request();
   a.kind = "param-direction";
   a.n = 7;  // mu = 0.1, 0.75, ..., 4
   a.theta_n = 24;
@@ -140,7 +137,6 @@ TEST_CASE("Exit codes of a picture asked for: 4 when not drawn, 0 when drawn",
   MapRequest a = fig5b_request();
   a.out = (dir / "m").string();
   a.plot = true;
-  a.options_given = {"--preset", "--out", "--plot"};
   int claims = 0;
   MapEnvironment env;
   env.claim_prefix = [&](const std::string& prefix, const auto& inputs) {
@@ -171,26 +167,23 @@ TEST_CASE("Refused requests: the messages users see (exit 2)", "[rate][maps][req
   MapRequest a = fig5b_request();
   SECTION("--resume without --out") {
     a.resume = true;
-    a.options_given.push_back("--resume");
     CHECK_THROWS_WITH(run_map_request(a), "--resume applies to grid maps written with --out "
                                           "PREFIX (the finished chunks are kept in PREFIX.parts)");
   }
   SECTION("an axis of no values, in options") {
-    a = fig5b_request({"--kind", "--n"});
+    a = fig5b_request();
     a.kind = "param-direction";
     a.n = 0;
     CHECK_THROWS_WITH(run_map_request(a), "--n must be >= 1, got 0");
   }
   SECTION("a direction map's range of directions, in options") {
     a.theta_from = 1;
-    a.options_given.push_back("--theta-from");
     CHECK_THROWS_WITH(run_map_request(a),
                       "--theta-from applies to --kind param-direction only (a direction map "
                       "computes the critical directions exactly, without sampling)");
   }
   SECTION("a 3-D option without a 3-D system") {
     a.facets = 8;
-    a.options_given.push_back("--facets");
     CHECK_THROWS_WITH(run_map_request(a), "--facets applies to maps of 3-D systems (--system "
                                           "FILE with \"dim\": 3)");
   }

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/rate/point_rate.hpp"
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 
 using namespace cpkit::rate;
 

@@ -1,4 +1,4 @@
-// `cpkit rate`'s request in the library (rate/rate_request.hpp): the routes, the exit codes, the
+// `cpkit rate`'s request in the library (requests/rate_request.hpp): the routes, the exit codes, the
 // refusals and the text, without a subprocess. Values from hand solutions of the rate problem
 // (docs/contact_model.md Sec. 1 and 3: dF - dP = A dw, the laws of each type) and the text of
 // the docs' worked example.
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/report/rate_text.hpp"
 

@@ -1,4 +1,4 @@
-// The run of a `cpkit simulate` request, called directly (simulation/simulate_request.hpp): the
+// The run of a `cpkit simulate` request, called directly (requests/simulate_request.hpp): the
 // checks and their messages, the runs and their exit codes, the files written. Independent
 // sources: hand calculations of the first steps (below), the messages and the caps stated in
 // docs/simulation.md and docs/contact_3d.md, and condition (46) of the paper for the stop.
@@ -21,7 +21,7 @@
 #include <system_error>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/simulation/simulate_request.hpp"
+#include "cpkit/rate_problem/requests/simulate_request.hpp"
 
 using namespace cpkit::rate;
 using Catch::Contains;

@@ -23,6 +23,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/rate/analytic.hpp"
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
 
 using namespace cpkit;

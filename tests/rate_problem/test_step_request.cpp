@@ -1,4 +1,4 @@
-// Tests of what `cpkit step` was asked (step/step_request.hpp) and of its text
+// Tests of what `cpkit step` was asked (requests/step_request.hpp) and of its text
 // (report/step_text.hpp), without the program. Every expected value comes from an independent
 // source: hand calculations (in the comments) of steps whose answer is a closed form (a stick
 // step is DP = DF; an open 3-D step is DP = 0, Dw = A^-1 DF; a softening step beyond condition
@@ -14,7 +14,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/report/json.hpp"
 #include "cpkit/rate_problem/report/step_text.hpp"
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/requests/step_request.hpp"
 
 namespace {
 

@@ -10,15 +10,12 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
 
 namespace {
-
-nlohmann::json axis_json(const MapAxis& ax) {
-  return {{"param", to_string(ax.param)}, {"from", ax.from}, {"to", ax.to}, {"n", ax.n}};
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

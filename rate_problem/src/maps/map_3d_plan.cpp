@@ -35,11 +35,11 @@ Map3dAxis axis_of(const std::string& param, double from, double to, int n, int n
 void set_route(const Map3dRequest& r, Map3dPlan& p) {
   const int N = p.sys.n_points();
   Map3dOptions& o = p.options;
-  if (r.has("--facets")) {
-    if (r.facets < 3 || r.facets > kMaxFacets)
+  if (r.facets) {
+    if (*r.facets < 3 || *r.facets > kMaxFacets)
       throw InputError("--facets must be in [3, " + std::to_string(kMaxFacets) + "], got " +
-                       std::to_string(r.facets));
-    o.facets = r.facets;
+                       std::to_string(*r.facets));
+    o.facets = *r.facets;
   }
   if (N > 1 && o.facets == 0)
     throw InputError("a system of " + std::to_string(N) +
@@ -50,34 +50,35 @@ void set_route(const Map3dRequest& r, Map3dPlan& p) {
     int nb = 0, nd = 0;
     for (const auto& pt : p.sys.points) nb += pt.state.state == 'b', nd += pt.state.state == 'd';
     if (nb > kMaxGrazing3d)
-      throw InputError(r.system + ": " + std::to_string(nb) + " grazing points (state b); the "
+      throw InputError(r.system.value_or("") + ": " + std::to_string(nb) + " grazing points (state b); the "
                        "faceted route takes at most " + std::to_string(kMaxGrazing3d) +
                        " (2^n_b separation cases per cell)");
     if (nd + o.facets * nb > lcp::kMaxEnumerationSize)
-      throw InputError(r.system + ": the faceted LCP would have size n_d + K n_b = " +
+      throw InputError(r.system.value_or("") + ": the faceted LCP would have size n_d + K n_b = " +
                        std::to_string(nd + o.facets * nb) + " > " +
                        std::to_string(lcp::kMaxEnumerationSize) + ": use fewer --facets");
   }
-  if (r.point < 1 || r.point > N)
+  const int point = r.point.value_or(1);
+  if (point < 1 || point > N)
     throw InputError("--point must be in [1, " + std::to_string(N) + "], got " +
-                     std::to_string(r.point));
-  o.point = r.point - 1;
+                     std::to_string(point));
+  o.point = point - 1;
   // The other points' load rates: the file's dF when it has one (a grazing point with a zero
   // load rate is a degenerate LCP: slow, and not proved complete), else 0; --others chooses.
-  o.others_from_file = r.has("--others") ? r.others == "file" : (N > 1 && p.sys.dF.has_value());
+  o.others_from_file = r.others ? *r.others == "file" : (N > 1 && p.sys.dF.has_value());
   if (o.others_from_file && !p.sys.dF)
     throw InputError("--others file needs \"dF\" in the system file (the other points' load "
                      "rates)");
   if (o.others_from_file && N == 1) throw InputError("--others has no effect with one point");
-  o.threads = r.threads;
+  o.threads = r.threads.value_or(0);
 }
 
 /// --kind sphere: the grid of b (--n, --from, --to) and g (--n2).
 void set_sphere_grid(const Map3dRequest& r, Map3dPlan& p) {
-  p.grid.n_beta = r.has("--n") ? r.n : 91;
-  p.grid.n_gamma = r.has("--n2") ? r.n2 : 180;
-  if (r.has("--from")) p.grid.beta_from = r.from;
-  if (r.has("--to")) p.grid.beta_to = r.to;
+  p.grid.n_beta = r.n.value_or(91);
+  p.grid.n_gamma = r.n2.value_or(180);
+  p.grid.beta_from = r.from.value_or(p.grid.beta_from);
+  p.grid.beta_to = r.to.value_or(p.grid.beta_to);
   if (p.grid.n_beta < 1 || p.grid.n_beta > 1000000) throw InputError("--n must be in [1, 1000000]");
   if (p.grid.n_gamma < 1 || p.grid.n_gamma > 1000000)
     throw InputError("--n2 must be in [1, 1000000]");
@@ -100,13 +101,13 @@ void set_sphere_grid(const Map3dRequest& r, Map3dPlan& p) {
 
 /// --kind param-direction: the directions (--theta-n, --theta-from, --theta-to, --gamma).
 void set_directions(const Map3dRequest& r, Map3dPlan& p) {
-  p.theta_n = r.has("--theta-n") ? r.theta_n : 360;
+  p.theta_n = r.theta_n.value_or(360);
   if (p.theta_n < 1 || p.theta_n > 1000000) throw InputError("--theta-n must be in [1, 1000000]");
-  if (r.has("--theta-from")) p.theta_from = r.theta_from;
-  if (r.has("--theta-to")) p.theta_to = r.theta_to;
+  p.theta_from = r.theta_from.value_or(p.theta_from);
+  p.theta_to = r.theta_to.value_or(p.theta_to);
   if (!(p.theta_to > p.theta_from) || p.theta_to - p.theta_from > 2 * kPi + 1e-12)
     throw InputError("--theta-from/--theta-to: need 0 < theta_to - theta_from <= 2 pi");
-  p.gamma = r.has("--gamma") ? r.gamma : 0.0;
+  p.gamma = r.gamma.value_or(0.0);
   p.cells = static_cast<int64_t>(p.a1.n) * p.theta_n;
   p.cells_text =
       std::to_string(p.a1.n) + " x " + std::to_string(p.theta_n) + " cells (--n x --theta-n)";
@@ -122,7 +123,7 @@ void set_directions(const Map3dRequest& r, Map3dPlan& p) {
 /// --kind param-param: the second axis, at the file's dF.
 void set_second_axis(const Map3dRequest& r, Map3dPlan& p) {
   const int N = p.sys.n_points();
-  p.a2 = axis_of(r.param2, r.from2, r.to2, r.has("--n2") ? r.n2 : 100, N, "2");
+  p.a2 = axis_of(r.param2.value_or(""), r.from2.value_or(0), r.to2.value_or(0), r.n2.value_or(100), N, "2");
   if (!p.sys.dF)
     throw InputError("--kind param-param with a dim 3 system is computed at the file's "
                      "load rate: the system file needs \"dF\"");
@@ -131,8 +132,8 @@ void set_second_axis(const Map3dRequest& r, Map3dPlan& p) {
   p.fewer = "use a smaller --n or --n2";
   p.yname = p.a2.param.name();
   p.input["param2"] = p.yname;
-  p.input["from2"] = r.from2;
-  p.input["to2"] = r.to2;
+  p.input["from2"] = r.from2.value_or(0);
+  p.input["to2"] = r.to2.value_or(0);
   p.input["n2"] = p.a2.n;
   const Eigen::VectorXd& d = *p.sys.dF;
   p.input["dF"] = std::vector<double>(d.data(), d.data() + d.size());
@@ -157,43 +158,51 @@ std::vector<std::string> allowed_options(const std::string& kind) {
 }  // namespace
 
 void check_map_3d_request(const MapRequest& r, int processes) {
-  if (r.kind.empty())
+  const std::string kind = r.kind.value_or("");
+  if (kind.empty())
     throw InputError("maps of a dim 3 system need --kind sphere, param-direction or param-param "
                      "(the 2-D direction map has no 3-D counterpart: --kind sphere maps the "
                      "sphere of load directions)");
-  if (r.kind != "sphere" && r.kind != "param-direction" && r.kind != "param-param")
+  if (kind != "sphere" && kind != "param-direction" && kind != "param-param")
     throw InputError("--kind with a dim 3 system must be sphere, param-direction or param-param, "
-                     "got '" + r.kind + "'");
-  const std::vector<std::string> allowed = allowed_options(r.kind);
+                     "got '" + kind + "'");
+  const std::vector<std::string> allowed = allowed_options(kind);
   std::string list;
   for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-  for (const auto& o : r.options_given)
+  for (const auto& o : map_options_given(r))
     if (std::find(allowed.begin(), allowed.end(), o) == allowed.end())
-      throw InputError(o + " has no effect with a dim 3 system and --kind " + r.kind +
+      throw InputError(o + " has no effect with a dim 3 system and --kind " + kind +
                        " (the model comes from the system file; options: " + list +
                        ", --json, --plot)");
-  std::vector<std::string> needed;
-  if (r.kind == "param-direction") needed = {"--param", "--from", "--to"};
-  if (r.kind == "param-param") needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
-  for (const auto& o : needed)
-    if (!r.has(o)) throw InputError("--kind " + r.kind + " with a dim 3 system needs " + o);
-  if (r.kind == "sphere" && (r.has("--from") != r.has("--to")))
+  std::vector<std::pair<const char*, bool>> needed;
+  if (kind != "sphere")
+    needed = {{"--param", r.param.has_value()}, {"--from", r.from.has_value()},
+              {"--to", r.to.has_value()}};
+  if (kind == "param-param")
+    needed.insert(needed.end(), {{"--param2", r.param2.has_value()},
+                                 {"--from2", r.from2.has_value()}, {"--to2", r.to2.has_value()}});
+  for (const auto& [name, given] : needed)
+    if (!given) throw InputError("--kind " + kind + " with a dim 3 system needs " + name);
+  if (kind == "sphere" && (r.from.has_value() != r.to.has_value()))
     throw InputError("--from and --to (the range of b, rad) go together");
-  const std::pair<const char*, double> reals[] = {
+  const std::pair<const char*, const std::optional<double>&> reals[] = {
       {"--from", r.from},   {"--to", r.to},         {"--from2", r.from2},
       {"--to2", r.to2},     {"--theta-from", r.theta_from}, {"--theta-to", r.theta_to},
       {"--gamma", r.gamma}, {"--time-limit", r.time_limit}};
   for (const auto& [name, v] : reals)
-    if (r.has(name) && !std::isfinite(v)) throw InputError(std::string(name) + " must be finite");
-  if (!(r.time_limit > 0)) throw InputError("--time-limit must be a positive number of seconds");
-  if (r.has("--format") && r.format != "npy")
-    throw InputError("--format: 3-D maps are written as .npy arrays only, got '" + r.format + "'");
-  if (r.has("--format") && r.out.empty()) throw InputError("--format needs --out PREFIX");
-  if (r.plot && r.out.empty()) throw InputError("--plot needs --out PREFIX");
-  if (r.threads < 0 || r.threads > 1024)
-    throw InputError("--threads must be in [0, 1024] (0: all cores), got " + std::to_string(r.threads));
-  if (r.has("--others") && r.others != "zero" && r.others != "file")
-    throw InputError("--others must be zero or file, got '" + r.others + "'");
+    if (v && !std::isfinite(*v)) throw InputError(std::string(name) + " must be finite");
+  if (!(r.time_limit.value_or(kMapTimeLimitDefault) > 0))
+    throw InputError("--time-limit must be a positive number of seconds");
+  if (r.format && *r.format != "npy")
+    throw InputError("--format: 3-D maps are written as .npy arrays only, got '" + *r.format + "'");
+  const bool no_out = r.out.value_or("").empty();
+  if (r.format && no_out) throw InputError("--format needs --out PREFIX");
+  if (r.plot && no_out) throw InputError("--plot needs --out PREFIX");
+  const int threads = r.threads.value_or(0);
+  if (threads < 0 || threads > 1024)
+    throw InputError("--threads must be in [0, 1024] (0: all cores), got " + std::to_string(threads));
+  if (r.others && *r.others != "zero" && *r.others != "file")
+    throw InputError("--others must be zero or file, got '" + *r.others + "'");
   if (processes > 1)
     throw InputError("3-D maps run on the threads of one process: run them without mpirun "
                      "(--threads)");
@@ -201,25 +210,27 @@ void check_map_3d_request(const MapRequest& r, int processes) {
 
 Map3dPlan make_map_3d_plan(const Map3dRequest& r) {
   Map3dPlan p;
-  p.kind = r.kind;
+  p.kind = r.kind.value_or("");
   p.sys = parse_contact_system_3d(r.file);
   const int N = p.sys.n_points();
   set_route(r, p);
   const Map3dOptions& o = p.options;
-  p.input = {{"system", r.system}, {"name", p.sys.name}, {"n_points", N}, {"point", r.point},
+  p.input = {{"system", r.system.value_or("")}, {"name", p.sys.name}, {"n_points", N},
+             {"point", r.point.value_or(1)},
              {"route", o.facets ? "faceted" : "exact"},
              {"facets", o.facets ? nlohmann::json(o.facets) : nlohmann::json()}};
-  if (r.kind == "sphere") {
+  if (p.kind == "sphere") {
     set_sphere_grid(r, p);
     return p;
   }
-  p.a1 = axis_of(r.param, r.from, r.to, r.has("--n") ? r.n : 100, N, "");
+  p.a1 = axis_of(r.param.value_or(""), r.from.value_or(0), r.to.value_or(0), r.n.value_or(100),
+                 N, "");
   p.xname = p.a1.param.name();
   p.input["param"] = p.xname;
-  p.input["from"] = r.from;
-  p.input["to"] = r.to;
+  p.input["from"] = r.from.value_or(0);
+  p.input["to"] = r.to.value_or(0);
   p.input["n"] = p.a1.n;
-  if (r.kind == "param-direction")
+  if (p.kind == "param-direction")
     set_directions(r, p);
   else
     set_second_axis(r, p);

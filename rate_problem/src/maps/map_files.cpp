@@ -7,7 +7,6 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/map_output.hpp"
-#include "cpkit/rate_problem/report/map_json.hpp"
 
 namespace cpkit::rate {
 

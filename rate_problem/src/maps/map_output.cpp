@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <string>
 
@@ -19,10 +20,6 @@ constexpr SolutionType kTypes[] = {SolutionType::kOpen, SolutionType::kSeparatio
 constexpr int kGridDigits = 12;
 /// Critical directions and values: round-trip precision.
 constexpr int kRoundTripDigits = 17;
-
-nlohmann::json axis_json(const MapAxis& a) {
-  return {{"param", std::string(to_string(a.param))}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
-}
 
 const std::array<std::string, 32>& type_strings() {
   static const std::array<std::string, 32> t = [] {
@@ -277,6 +274,42 @@ void write_critical_csv(const ParamParamMap& map, std::ostream& out) {
   for (const auto& c : map.critical_curve)
     out << c.name << ',' << num_text(c.x, kRoundTripDigits) << ','
         << num_text(c.y, kRoundTripDigits) << '\n';
+}
+
+void write_system_csv_header(const SystemMapAxis& axis, std::ostream& out) {
+  out << std::setprecision(17) << axis.param.name() << ",theta,count,pattern\n";
+}
+
+void write_system_csv_rows(const SystemMapAxis& axis, const std::vector<double>& theta,
+                           const SystemParamDirectionRows& rows, std::ostream& out) {
+  const std::size_t cols = theta.size();
+  out << std::setprecision(17);
+  for (int i = rows.row_begin; i < rows.row_end; ++i)
+    for (std::size_t jj = 0; jj < cols; ++jj) {
+      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;
+      out << axis.value(i) << ',' << theta[jj] << ',' << count_to_string(rows.count[k]) << ','
+          << rows.pattern[k] << '\n';
+    }
+}
+
+void write_system_csv_header(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
+                             std::ostream& out) {
+  out << std::setprecision(17) << axis1.param.name() << ',' << axis2.param.name()
+      << ",class,min_count,max_count,pattern\n";
+}
+
+void write_system_csv_rows(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
+                           const SystemParamParamRows& rows, std::ostream& out) {
+  const std::size_t cols = static_cast<std::size_t>(axis2.n);
+  out << std::setprecision(17);
+  for (int i = rows.row_begin; i < rows.row_end; ++i)
+    for (int jj = 0; jj < axis2.n; ++jj) {
+      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;
+      out << axis1.value(i) << ',' << axis2.value(jj) << ','
+          << to_string(static_cast<UniquenessClass>(rows.cls[k])) << ','
+          << count_to_string(rows.min_count[k]) << ',' << count_to_string(rows.max_count[k])
+          << ',' << rows.pattern[k] << '\n';
+    }
 }
 
 }  // namespace cpkit::rate

@@ -4,11 +4,33 @@
 #include <algorithm>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
+#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {
 
 namespace {
 constexpr unsigned kAll = kMapOnePoint | kMapNPoints | kMap3d;
+
+/// How a row sets a quantity of one point of an N-point system (every point takes it) and of
+/// a 3-D system.
+template <double SystemPoint::*field>
+bool set_point(SystemPoint& p, double v) {
+  p.*field = v;
+  return true;
+}
+template <double SystemPoint3d::*field>
+void set_point_3d(SystemPoint3d& p, double v) {
+  p.*field = v;
+}
+
+/// P_N: of the points in state c or d (a point in state a or b has none).
+bool set_normal_force(SystemPoint& p, double v) {
+  if (p.state.label != StateLabel::kC && p.state.label != StateLabel::kD) return false;
+  p.state.P_N = v;
+  p.P_N = v;
+  return true;
+}
 
 std::string where_it_applies(unsigned dims) {
   std::string s;
@@ -30,26 +52,37 @@ std::string_view to_string(MapDimension d) noexcept {
 const std::vector<MapParameterRow>& map_parameter_table() {
   static const std::vector<MapParameterRow> table = {
       {"mu", kAll, true, "friction coefficient (of every point, or of point i)",
-       "> 0, with the model (validate) at every grid value before any cell"},
+       "> 0, with the model (validate) at every grid value before any cell",
+       set_point<&SystemPoint::mu>, set_point_3d<&SystemPoint3d::mu>},
       {"a11", kMapOnePoint, false, "A_11 of the 2x2 compliance block", "A positive definite"},
       {"a12", kMapOnePoint, false, "A_12 (= A_21)", "A positive definite"},
       {"a22", kMapOnePoint, false, "A_22", "A positive definite"},
       {"a12/a11", kMapOnePoint, false, "A_12 = value * A_11 (A_11 kept)", "A positive definite"},
-      {"C_T", kAll, true, "tangential compliance", ">= 0"},
-      {"k_a", kAll, true, "Archard wear coefficient (k = k_a / (3 P_s))", ">= 0"},
-      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0"},
+      {"C_T", kAll, true, "tangential compliance", ">= 0", set_point<&SystemPoint::C_T>,
+       set_point_3d<&SystemPoint3d::C_T>},
+      {"k_a", kAll, true, "Archard wear coefficient (k = k_a / (3 P_s))", ">= 0",
+       set_point<&SystemPoint::k_a>, set_point_3d<&SystemPoint3d::k_a>},
+      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0", set_point<&SystemPoint::P_s>,
+       set_point_3d<&SystemPoint3d::P_s>},
       {"P_N", kMapOnePoint | kMapNPoints, true,
        "normal force of the points in state c or d (a sliding point stays on its friction limit)",
-       "> 0; N points: point i must be in state c or d, and some point for P_N"},
+       "> 0; N points: point i must be in state c or d, and some point for P_N",
+       set_normal_force},
       {"kappa", kMapOnePoint, false, "kappa = k_a P_N / (3 P_s): sets k_a = 3 P_s kappa / P_N",
        "needs P_N > 0 (state c or d)"},
       {"coupling", kMapNPoints, false,
        "A(c) = D + c (A - D): the points' own 2x2 blocks kept, the blocks between points scaled",
        "A(c) positive definite"},
-      {"alpha_X", kMap3d, true, "half-axis alpha_X of the wear ellipse", "> 0"},
-      {"alpha_Y", kMap3d, true, "half-axis alpha_Y of the wear ellipse", "> 0"},
+      {"alpha_X", kMap3d, true, "half-axis alpha_X of the wear ellipse", "> 0", nullptr,
+       [](SystemPoint3d& p, double v) { p.alpha(0) = v; }},
+      {"alpha_Y", kMap3d, true, "half-axis alpha_Y of the wear ellipse", "> 0", nullptr,
+       [](SystemPoint3d& p, double v) { p.alpha(1) = v; }},
   };
   return table;
+}
+
+std::string MapParameterRef::name() const {
+  return point > 0 ? row->name + ("@" + std::to_string(point)) : std::string(row->name);
 }
 
 std::string map_parameter_names(MapDimension dimension, int n_points) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <iterator>
 #include <tuple>
 
 #include "cpkit/core/errors.hpp"
@@ -16,11 +17,44 @@
 
 namespace cpkit::rate {
 
-bool MapRequest::given(const std::string& option) const {
-  return std::find(options_given.begin(), options_given.end(), option) != options_given.end();
+std::vector<std::string> map_options_given(const MapRequest& a) {
+  const std::pair<const char*, bool> all[] = {
+      {"--C_T", a.C_T.has_value()},         {"--P_N", a.P_N.has_value()},
+      {"--P_s", a.P_s.has_value()},         {"--a11", a.a11.has_value()},
+      {"--a12", a.a12.has_value()},         {"--a22", a.a22.has_value()},
+      {"--criterion", a.criterion.has_value()}, {"--facets", a.facets.has_value()},
+      {"--format", a.format.has_value()},   {"--from", a.from.has_value()},
+      {"--from2", a.from2.has_value()},     {"--gamma", a.gamma.has_value()},
+      {"--k_a", a.k_a.has_value()},         {"--kind", a.kind.has_value()},
+      {"--max-output", a.max_output.has_value()}, {"--method", a.method.has_value()},
+      {"--mu", a.mu.has_value()},           {"--n", a.n.has_value()},
+      {"--n2", a.n2.has_value()},           {"--others", a.others.has_value()},
+      {"--out", a.out.has_value()},         {"--param", a.param.has_value()},
+      {"--param2", a.param2.has_value()},   {"--point", a.point.has_value()},
+      {"--preset", a.preset.has_value()},   {"--resume", a.resume.has_value()},
+      {"--sgnPT", a.sgnPT.has_value()},     {"--state", a.state.has_value()},
+      {"--system", a.system.has_value()},   {"--theta-from", a.theta_from.has_value()},
+      {"--theta-n", a.theta_n.has_value()}, {"--theta-to", a.theta_to.has_value()},
+      {"--threads", a.threads.has_value()}, {"--time-limit", a.time_limit.has_value()},
+      {"--to", a.to.has_value()},           {"--to2", a.to2.has_value()}};
+  std::vector<std::string> names;
+  for (const auto& [name, given] : all)
+    if (given) names.push_back(name);
+  return names;
 }
 
 namespace {
+
+/// An option's name in messages and whether it was given.
+struct Given {
+  const char* name;
+  bool given;
+};
+
+template <class T>
+Given option(const char* name, const std::optional<T>& value) {
+  return {name, value.has_value()};
+}
 
 void require_finite(double v, const char* name) {
   if (!std::isfinite(v)) throw InputError(std::string("--") + name + " must be finite");
@@ -31,45 +65,55 @@ void require_finite(double v, const char* name) {
 void check_options_have_effect(const MapRequest& a, const MapSetup& s,
                                 const std::function<void(const std::string&)>& note) {
   auto on_axis = [&](const std::string& name) {
-    return (a.given("--param") && (a.param == name || (name == "a12" && a.param == "a12/a11"))) ||
-           (a.given("--param2") && (a.param2 == name || (name == "a12" && a.param2 == "a12/a11")));
+    auto is = [&name](const std::optional<std::string>& p) {
+      return p && (*p == name || (name == "a12" && *p == "a12/a11"));
+    };
+    return is(a.param) || is(a.param2);
   };
-  for (const char* o : {"--a11", "--a12", "--a22", "--mu", "--C_T", "--k_a", "--P_s", "--P_N"})
-    if (a.given(o) && on_axis(o + 2))
-      throw InputError(std::string(o) + " has no effect: " + (o + 2) +
+  for (const Given o : {option("--a11", a.a11), option("--a12", a.a12), option("--a22", a.a22),
+                        option("--mu", a.mu), option("--C_T", a.C_T), option("--k_a", a.k_a),
+                        option("--P_s", a.P_s), option("--P_N", a.P_N)})
+    if (o.given && on_axis(o.name + 2))
+      throw InputError(std::string(o.name) + " has no effect: " + (o.name + 2) +
                        " varies along the map's parameter axis (--param/--param2)");
-  if (a.preset.empty()) {
+  if (a.preset.value_or("").empty()) {
     std::string missing;
-    for (const char* o : {"--a11", "--a12", "--a22", "--mu"})
-      if (!a.given(o) && !on_axis(o + 2)) missing += (missing.empty() ? "" : " ") + std::string(o);
+    for (const Given o : {option("--a11", a.a11), option("--a12", a.a12),
+                          option("--a22", a.a22), option("--mu", a.mu)})
+      if (!o.given && !on_axis(o.name + 2))
+        missing += (missing.empty() ? "" : " ") + std::string(o.name);
     if (!missing.empty())
       throw InputError("cpkit map needs a model: --preset NAME (--list-presets shows them) or "
                        "--a11 --a12 --a22 --mu (missing: " + missing + ")");
   }
-  auto none_of = [&](std::initializer_list<const char*> opts, const std::string& why) {
-    for (const char* o : opts)
-      if (a.given(o)) throw InputError(std::string(o) + " has no effect " + why);
+  auto none_of = [&](std::initializer_list<Given> opts, const std::string& why) {
+    for (const Given o : opts)
+      if (o.given) throw InputError(std::string(o.name) + " has no effect " + why);
   };
+  const Given second_axis[] = {option("--param2", a.param2), option("--from2", a.from2),
+                               option("--to2", a.to2), option("--n2", a.n2)};
   if (s.kind == MapKind::kDirection)
-    none_of({"--param", "--from", "--to", "--n", "--param2", "--from2", "--to2", "--n2",
-             "--threads"},
+    none_of({option("--param", a.param), option("--from", a.from), option("--to", a.to),
+             option("--n", a.n), second_axis[0], second_axis[1], second_axis[2], second_axis[3],
+             option("--threads", a.threads)},
             "in a direction map (it has no parameter axis; use --kind param-direction or "
             "param-param)");
   if (s.kind == MapKind::kParamDirection)
-    none_of({"--param2", "--from2", "--to2", "--n2"},
+    none_of({second_axis[0], second_axis[1], second_axis[2], second_axis[3]},
             "in a param-direction map (one parameter axis; use --kind param-param)");
   const StateLabel st = s.state.label;
   if (st == StateLabel::kA || st == StateLabel::kB) {
-    none_of({"--P_N"}, std::string("in state ") + std::string(to_string(st)) +
-                           " (P_N = 0 there: the normal force enters only states c and d)");
+    none_of({option("--P_N", a.P_N)},
+            std::string("in state ") + std::string(to_string(st)) +
+                " (P_N = 0 there: the normal force enters only states c and d)");
     // Material parameters a user describes once and sweeps over states: accepted and echoed.
-    for (const char* o : {"--k_a", "--P_s"})
-      if (a.given(o) && note)
-        note(std::string(o) + " does not enter state " + std::string(to_string(st)) +
+    for (const Given o : {option("--k_a", a.k_a), option("--P_s", a.P_s)})
+      if (o.given && note)
+        note(std::string(o.name) + " does not enter state " + std::string(to_string(st)) +
              " (P_N = 0 there, so no wear: kappa = k_a P_N / (3 P_s) enters states c "
              "and d); accepted and echoed in the model");
   }
-  if (st != StateLabel::kD) none_of({"--sgnPT"}, "outside state d (the sliding state)");
+  if (st != StateLabel::kD) none_of({option("--sgnPT", a.sgnPT)}, "outside state d (the sliding state)");
 }
 
 }  // namespace
@@ -77,12 +121,12 @@ void check_options_have_effect(const MapRequest& a, const MapSetup& s,
 MapSetup make_map_setup(const MapRequest& a,
                         const std::function<void(const std::string&)>& note) {
   MapSetup s;
-  if (!a.preset.empty()) {
-    const auto p = find_map_preset(a.preset);
+  if (!a.preset.value_or("").empty()) {
+    const auto p = find_map_preset(*a.preset);
     if (!p) {
       std::string names;
       for (const auto& x : map_presets()) names += (names.empty() ? "" : ", ") + x.name;
-      throw InputError("unknown preset '" + a.preset + "' (known: " + names + ")");
+      throw InputError("unknown preset '" + *a.preset + "' (known: " + names + ")");
     }
     s.params = p->params;
     s.state = p->state;
@@ -92,79 +136,80 @@ MapSetup make_map_setup(const MapRequest& a,
     s.have_axis = s.have_axis2 = true;
     s.theta_n = p->theta_n;
   }
-  if (a.given("--kind")) {
-    const auto k = map_kind_from_string(a.kind);
+  if (a.kind) {
+    const auto k = map_kind_from_string(*a.kind);
     if (!k) throw InputError("--kind must be direction, param-direction or param-param, got '" +
-                             a.kind + "'");
+                             *a.kind + "'");
     s.kind = *k;
   }
-  if (a.given("--state")) {
-    const auto l = state_from_string(a.state);
-    if (!l) throw InputError("--state must be a, b, c or d, got '" + a.state + "'");
+  if (a.state) {
+    const auto l = state_from_string(*a.state);
+    if (!l) throw InputError("--state must be a, b, c or d, got '" + *a.state + "'");
     s.state.label = *l;
   }
-  if (a.given("--criterion")) {
-    const auto c = criterion_from_string(a.criterion);
+  if (a.criterion) {
+    const auto c = criterion_from_string(*a.criterion);
     if (!c)
       throw InputError("--criterion must be 38 (Coulomb, default) or 35 (softening), got '" +
-                       a.criterion + "'");
+                       *a.criterion + "'");
     s.params.criterion = *c;
   }
   struct {
     const char* name;
-    const double* value;
-    double* target;
-  } const fields[] = {{"--a11", &a.a11, &s.params.a11}, {"--a12", &a.a12, &s.params.a12},
-                      {"--a22", &a.a22, &s.params.a22}, {"--mu", &a.mu, &s.params.mu},
-                      {"--C_T", &a.C_T, &s.params.C_T}, {"--k_a", &a.k_a, &s.params.k_a},
-                      {"--P_s", &a.P_s, &s.params.P_s}, {"--P_N", &a.P_N, &s.state.P_N}};
+    const std::optional<double>& value;
+    double& target;
+  } const fields[] = {{"--a11", a.a11, s.params.a11}, {"--a12", a.a12, s.params.a12},
+                      {"--a22", a.a22, s.params.a22}, {"--mu", a.mu, s.params.mu},
+                      {"--C_T", a.C_T, s.params.C_T}, {"--k_a", a.k_a, s.params.k_a},
+                      {"--P_s", a.P_s, s.params.P_s}, {"--P_N", a.P_N, s.state.P_N}};
   for (const auto& f : fields)
-    if (a.given(f.name)) {
+    if (f.value) {
       require_finite(*f.value, f.name + 2);
-      *f.target = *f.value;
+      f.target = *f.value;
     }
-  if (a.given("--sgnPT")) {
-    if (a.sgnPT != 1 && a.sgnPT != -1) throw InputError("--sgnPT must be +1 or -1");
-    s.state.sgn_PT = a.sgnPT;
+  if (a.sgnPT) {
+    if (*a.sgnPT != 1 && *a.sgnPT != -1) throw InputError("--sgnPT must be +1 or -1");
+    s.state.sgn_PT = *a.sgnPT;
   }
   check_options_have_effect(a, s, note);
   throw_if_invalid(s.params.validate(), "model parameters");
   throw_if_invalid(s.state.validate(s.params), "contact state");
 
-  auto set_axis = [&](MapAxis& axis, bool& have, const std::string& name, const char* o_param,
-                      const char* o_from, const char* o_to, const char* o_n, double from,
-                      double to, int n) {
-    if (a.given(o_param)) {
-      const auto p = map_parameter_from_string(name);  // the table's names and aliases
-      if (!p) (void)check_map_parameter(name, kMapOnePoint, 1, o_param);  // throws, naming it
-      if (!p) throw InputError(std::string(o_param) + ": unknown parameter '" + name + "'");
+  // An axis: --paramS NAME over the preset's, --fromS, --toS, --nS (S: "" or "2").
+  auto set_axis = [&](MapAxis& axis, bool& have, const std::optional<std::string>& name,
+                      const std::optional<double>& from, const std::optional<double>& to,
+                      const std::optional<int>& n, const std::string& S) {
+    const std::string o_param = "--param" + S, o_from = "--from" + S, o_to = "--to" + S,
+                      o_n = "--n" + S;
+    if (name) {
+      const auto p = map_parameter_from_string(*name);  // the table's names and aliases
+      if (!p) (void)check_map_parameter(*name, kMapOnePoint, 1, o_param);  // throws, naming it
+      if (!p) throw InputError(o_param + ": unknown parameter '" + *name + "'");
       if (!have || axis.param != *p) {
-        if (!a.given(o_from) || !a.given(o_to))
-          throw InputError(std::string(o_param) + " " + name + " needs " + o_from + " and " + o_to);
+        if (!from || !to) throw InputError(o_param + " " + *name + " needs " + o_from + " and " + o_to);
         axis.n = 200;
       }
       axis.param = *p;
       have = true;
     }
-    if (a.given(o_from)) axis.from = from;
-    if (a.given(o_to)) axis.to = to;
-    if (a.given(o_n)) axis.n = n;
-    if ((a.given(o_from) || a.given(o_to) || a.given(o_n)) && !have)
-      throw InputError(std::string(o_from) + "/" + o_to + "/" + o_n + " need " + o_param);
-    require_finite(axis.from, o_from + 2);
-    require_finite(axis.to, o_to + 2);
+    if (from) axis.from = *from;
+    if (to) axis.to = *to;
+    if (n) axis.n = *n;
+    if ((from || to || n) && !have)
+      throw InputError(o_from + "/" + o_to + "/" + o_n + " need " + o_param);
+    require_finite(axis.from, o_from.c_str() + 2);
+    require_finite(axis.to, o_to.c_str() + 2);
   };
-  set_axis(s.axis, s.have_axis, a.param, "--param", "--from", "--to", "--n", a.from, a.to, a.n);
-  set_axis(s.axis2, s.have_axis2, a.param2, "--param2", "--from2", "--to2", "--n2", a.from2,
-           a.to2, a.n2);
-  if (a.given("--theta-n")) {
+  set_axis(s.axis, s.have_axis, a.param, a.from, a.to, a.n, "");
+  set_axis(s.axis2, s.have_axis2, a.param2, a.from2, a.to2, a.n2, "2");
+  if (a.theta_n) {
     // Only a param-direction map samples directions; a direction map computes its critical
     // directions exactly and a param-param map classifies each cell from its exact direction map.
     if (s.kind != MapKind::kParamDirection)
       throw InputError("--theta-n applies to --kind param-direction only (a " +
                        std::string(to_string(s.kind)) +
                        " map computes the critical directions exactly, without sampling)");
-    s.theta_n = a.theta_n;
+    s.theta_n = *a.theta_n;
   }
   if (s.kind != MapKind::kDirection && !s.have_axis)
     throw InputError(std::string(to_string(s.kind)) + " map needs --param NAME --from X --to Y");
@@ -219,18 +264,27 @@ SystemGridPlan make_system_grid_plan(const SystemMapRequest& r) {
 }
 
 SystemMapRequest system_map_request(const MapRequest& a, SystemFile file, int processes) {
-  const std::string kind = a.given("--kind") ? a.kind : "direction";
+  const std::string kind = a.kind.value_or("direction");
+  const std::string out = a.out.value_or(""), format = a.format.value_or(kMapFormatDefault);
+  const double time_limit = a.time_limit.value_or(kMapTimeLimitDefault);
+  const int threads = a.threads.value_or(0);
   std::vector<std::string> allowed = {"--system", "--kind", "--out", "--json", "--threads"};
-  const double max_output = parse_byte_size(a.max_output, "--max-output");
-  std::vector<std::string> needed;
+  const double max_output =
+      parse_byte_size(a.max_output.value_or(kMapMaxOutputDefault), "--max-output");
+  const Given first_axis[] = {option("--param", a.param), option("--from", a.from),
+                              option("--to", a.to)};
+  const Given second_axis[] = {option("--param2", a.param2), option("--from2", a.from2),
+                               option("--to2", a.to2)};
+  std::vector<Given> needed;
   if (kind == "param-direction")
-    needed = {"--param", "--from", "--to"};
-  else if (kind == "param-param")
-    needed = {"--param", "--from", "--to", "--param2", "--from2", "--to2"};
-  else if (kind != "direction")
+    needed.assign(std::begin(first_axis), std::end(first_axis));
+  else if (kind == "param-param") {
+    needed.assign(std::begin(first_axis), std::end(first_axis));
+    needed.insert(needed.end(), std::begin(second_axis), std::end(second_axis));
+  } else if (kind != "direction")
     throw InputError("--kind with --system must be direction, param-direction or param-param, "
                      "got '" + kind + "'");
-  allowed.insert(allowed.end(), needed.begin(), needed.end());
+  for (const Given& o : needed) allowed.push_back(o.name);
   if (kind != "direction")
     for (const char* o : {"--n", "--format", "--time-limit", "--max-output", "--resume"})
       allowed.push_back(o);
@@ -239,46 +293,50 @@ SystemMapRequest system_map_request(const MapRequest& a, SystemFile file, int pr
   if (kind == "param-param") allowed.push_back("--n2");
   std::string list;
   for (const auto& o : allowed) list += (list.empty() ? "" : ", ") + o;
-  for (const auto& name : a.options_given)
+  for (const auto& name : map_options_given(a))
     if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
       throw InputError(name + " does not apply with --system --kind " + kind +
                        " (the state, parameters and load patterns come from the system file; "
                        "options: " + list + (kind == "direction" ? "" : ", --plot") + ")");
-  for (const auto& o : needed)
-    if (!a.given(o)) throw InputError("--system --kind " + kind + " needs " + o);
+  for (const Given& o : needed)
+    if (!o.given) throw InputError("--system --kind " + kind + " needs " + o.name);
   if (a.plot && kind == "direction")
     throw InputError("--plot with --system applies to --kind param-direction and param-param");
-  if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
-  if (a.resume && a.out.empty())
+  if (a.plot && out.empty()) throw InputError("--plot needs --out PREFIX");
+  if (a.resume.value_or(false) && out.empty())
     throw InputError("--resume needs --out PREFIX (the finished chunks are kept in PREFIX.parts)");
   if (kind == "direction" && processes > 1)
     throw InputError("a direction map is one exact computation, not a grid of cells: run it "
                      "without mpirun (--threads uses the cores of one machine)");
-  if (a.given("--format") && a.out.empty())
+  if (a.format && out.empty())
     throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
-  if (a.format != "npy" && a.format != "csv")
-    throw InputError("--format must be npy or csv, got '" + a.format + "'");
-  if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
+  if (format != "npy" && format != "csv")
+    throw InputError("--format must be npy or csv, got '" + format + "'");
+  if (!(time_limit > 0) || !std::isfinite(time_limit))
     throw InputError("--time-limit must be a positive number of seconds");
-  if (a.threads < 0 || a.threads > 1024)
+  if (threads < 0 || threads > 1024)
     throw InputError("--threads must be in [0, 1024] (0: all cores), got " +
-                     std::to_string(a.threads));
+                     std::to_string(threads));
   SystemMapRequest r;
-  r.path = a.system;
+  r.path = a.system.value_or("");
   r.file = std::move(file);
   r.kind = kind;
   r.max_output = max_output;
-  std::tie(r.out, r.format, r.threads, r.time_limit) =
-      std::tie(a.out, a.format, a.threads, a.time_limit);
-  std::tie(r.json, r.plot, r.resume) = std::tie(a.json, a.plot, a.resume);
-  std::tie(r.param, r.from, r.to) = std::tie(a.param, a.from, a.to);
-  std::tie(r.param2, r.from2, r.to2) = std::tie(a.param2, a.from2, a.to2);
-  if (a.given("--n")) r.n = a.n;
-  if (a.given("--n2")) r.n2 = a.n2;
-  if (a.given("--theta-n")) r.theta_n = a.theta_n;
-  r.theta_range = a.given("--theta-from") || a.given("--theta-to");
-  if (a.given("--theta-from")) r.theta_from = a.theta_from;
-  if (a.given("--theta-to")) r.theta_to = a.theta_to;
+  std::tie(r.out, r.format, r.threads, r.time_limit) = std::tie(out, format, threads, time_limit);
+  std::tie(r.json, r.plot) = std::tie(a.json, a.plot);
+  r.resume = a.resume.value_or(false);
+  r.param = a.param.value_or("");
+  r.param2 = a.param2.value_or("");
+  r.from = a.from.value_or(0);
+  r.to = a.to.value_or(0);
+  r.from2 = a.from2.value_or(0);
+  r.to2 = a.to2.value_or(0);
+  r.n = a.n.value_or(r.n);
+  r.n2 = a.n2.value_or(r.n2);
+  r.theta_n = a.theta_n.value_or(r.theta_n);
+  r.theta_range = a.theta_from || a.theta_to;
+  r.theta_from = a.theta_from.value_or(r.theta_from);
+  r.theta_to = a.theta_to.value_or(r.theta_to);
   return r;
 }
 

@@ -134,40 +134,14 @@ std::string SphereGrid::validate() const {
   return {};
 }
 
-std::string Map3dParameter::name() const {
-  static const char* names[] = {"alpha_X", "alpha_Y", "mu", "C_T", "k_a", "P_s"};
-  std::string s = names[static_cast<int>(kind)];
-  if (point > 0) s += "@" + std::to_string(point);
-  return s;
-}
-
 Map3dParameter parse_map_3d_parameter(std::string_view text, int n_points) {
-  // The names, the 3-D kinds and NAME@i are the map parameter table's.
-  const rate::MapParameterRef ref = rate::check_map_parameter(text, rate::kMap3d, n_points);
-  static const std::pair<const char*, Map3dParameter::Kind> table[] = {
-      {"alpha_X", Map3dParameter::Kind::kAlphaX}, {"alpha_Y", Map3dParameter::Kind::kAlphaY},
-      {"mu", Map3dParameter::Kind::kMu},          {"C_T", Map3dParameter::Kind::kCT},
-      {"k_a", Map3dParameter::Kind::kKa},         {"P_s", Map3dParameter::Kind::kPs}};
-  Map3dParameter p;
-  p.point = ref.point;
-  for (const auto& [name, kind] : table)
-    if (std::string_view(name) == ref.row->name) p.kind = kind;
-  return p;
+  return check_map_parameter(text, kMap3d, n_points);  // the names and NAME@i of 3-D maps
 }
 
 void apply_map_3d_parameter(const Map3dParameter& p, double v, ContactSystem3d& sys) {
-  for (int i = 0; i < sys.n_points(); ++i) {
-    if (p.point > 0 && i != p.point - 1) continue;
-    SystemPoint3d& pt = sys.points[static_cast<std::size_t>(i)];
-    switch (p.kind) {
-      case Map3dParameter::Kind::kAlphaX: pt.alpha(0) = v; break;
-      case Map3dParameter::Kind::kAlphaY: pt.alpha(1) = v; break;
-      case Map3dParameter::Kind::kMu: pt.mu = v; break;
-      case Map3dParameter::Kind::kCT: pt.C_T = v; break;
-      case Map3dParameter::Kind::kKa: pt.k_a = v; break;
-      case Map3dParameter::Kind::kPs: pt.P_s = v; break;
-    }
-  }
+  for (int i = 0; i < sys.n_points(); ++i)
+    if (p.point == 0 || i == p.point - 1)
+      p.row->set_point_3d(sys.points[static_cast<std::size_t>(i)], v);
 }
 
 double Map3dAxis::value(int i) const noexcept {
@@ -284,7 +258,7 @@ Map3d compute_param_param_map_3d(const ContactSystem3d& sys, const Map3dAxis& ax
   throw_if_invalid(axis1.validate(), "first axis");
   throw_if_invalid(axis2.validate(), "second axis");
   const Map3dParameter &p1 = axis1.param, &p2 = axis2.param;
-  if (p1.kind == p2.kind && (p1.point == 0 || p2.point == 0 || p1.point == p2.point))
+  if (p1.row == p2.row && (p1.point == 0 || p2.point == 0 || p1.point == p2.point))
     throw InputError("the two axes " + p1.name() + " and " + p2.name() +
                      " vary the same quantity of the same point");
   if (!sys.dF) throw InputError("a param-param map is computed at the system's \"dF\": the file has none");

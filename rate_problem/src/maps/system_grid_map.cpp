@@ -16,17 +16,6 @@
 namespace cpkit::rate {
 
 namespace {
-using Kind = SystemMapParameter::Kind;
-
-struct KindName {
-  Kind kind;
-  const char* name;
-};
-// The names are the map parameter table's (map_parameter_table.hpp) for N-point maps.
-constexpr KindName kKindNames[] = {{Kind::kMu, "mu"},   {Kind::kCT, "C_T"},
-                                   {Kind::kKa, "k_a"},  {Kind::kPs, "P_s"},
-                                   {Kind::kPN, "P_N"},  {Kind::kCoupling, "coupling"}};
-
 /// A cell's point-type pattern: its sorted type tuples (what the pattern table numbers).
 std::vector<TypeTuple> tuples_of(const SystemRateSummary& s) {
   const int k = std::min(s.n_tuples, SystemRateSummary::kCap);
@@ -34,20 +23,8 @@ std::vector<TypeTuple> tuples_of(const SystemRateSummary& s) {
 }
 }  // namespace
 
-std::string SystemMapParameter::name() const {
-  std::string s = "?";
-  for (const auto& k : kKindNames)
-    if (k.kind == kind) s = k.name;
-  return point > 0 ? s + "@" + std::to_string(point) : s;
-}
-
 SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points) {
-  const MapParameterRef ref = check_map_parameter(s, kMapNPoints, n_points);
-  SystemMapParameter p;
-  p.point = ref.point;
-  for (const auto& k : kKindNames)
-    if (std::string_view(k.name) == ref.row->name) p.kind = k.kind;
-  return p;
+  return check_map_parameter(s, kMapNPoints, n_points);
 }
 
 ContactSystem apply_system_map_parameter(const ContactSystem& base, const SystemMapParameter& p,
@@ -60,33 +37,25 @@ ContactSystem apply_system_map_parameter(const ContactSystem& base, const System
     return s.str();
   };
   if (!std::isfinite(value)) throw InputError(where() + ": not a finite number");
-  if (p.kind == Kind::kCoupling) {
-    // A(c) = D + c (A - D): the points' own 2x2 blocks stay, the coupling between them scales.
+  if (!p.row->set_point) {
+    // coupling: A(c) = D + c (A - D): the points' own 2x2 blocks stay, the coupling between
+    // them scales.
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         if (i != j) sys.A.block(2 * i, 2 * j, 2, 2) *= value;
   } else {
+    bool any = false;  // a point took the value
     for (int i = 0; i < N; ++i) {
       if (p.point > 0 && i != p.point - 1) continue;
       SystemPoint& pt = sys.points[static_cast<std::size_t>(i)];
-      switch (p.kind) {
-        case Kind::kMu: pt.mu = value; break;
-        case Kind::kCT: pt.C_T = value; break;
-        case Kind::kKa: pt.k_a = value; break;
-        case Kind::kPs: pt.P_s = value; break;
-        case Kind::kPN:
-          if (pt.state.label != StateLabel::kC && pt.state.label != StateLabel::kD) {
-            if (p.point > 0)
-              throw InputError(where() + ": point " + std::to_string(i + 1) + " is in state " +
-                               std::string(to_string(pt.state.label)) + " (P_N applies to "
-                               "points in state c or d)");
-            continue;
-          }
-          pt.state.P_N = value;
-          pt.P_N = value;
-          break;
-        case Kind::kCoupling: break;
+      if (!p.row->set_point(pt, value)) {  // P_N of a point in state a or b
+        if (p.point > 0)
+          throw InputError(where() + ": point " + std::to_string(i + 1) + " is in state " +
+                           std::string(to_string(pt.state.label)) + " (" + p.row->name +
+                           " applies to points in state c or d)");
+        continue;
       }
+      any = true;
       // A sliding point stays on its friction limit: |P_T| = mu P_N (criterion (38)) or
       // mu P_N - k P_N^2 (35), with its sign.
       if (pt.state.label == StateLabel::kD) {
@@ -96,13 +65,9 @@ ContactSystem apply_system_map_parameter(const ContactSystem& base, const System
         pt.P_T = pt.state.sgn_PT * limit;
       }
     }
-    if (p.kind == Kind::kPN && p.point == 0) {
-      bool any = false;
-      for (const auto& pt : sys.points)
-        any = any || pt.state.label == StateLabel::kC || pt.state.label == StateLabel::kD;
-      if (!any)
-        throw InputError("map parameter P_N: no point of the system is in state c or d");
-    }
+    if (!any)
+      throw InputError("map parameter " + std::string(p.row->name) +
+                       ": no point of the system is in state c or d");
   }
   if (std::string e = sys.validate(); !e.empty()) throw InputError(where() + ": " + e);
   return sys;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/rate_problem/maps/map_output.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -98,11 +99,6 @@ void store_rows(SystemParamParamMap& m, const SystemParamParamRows& r, std::size
   append_cells(m.max_count, r.max_count, n);
   append_cells(m.pattern, r.pattern, n);
 }
-
-nlohmann::json axis_json(const SystemMapAxis& a) {
-  return {{"param", a.param.name()}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
-}
-
 
 }  // namespace
 

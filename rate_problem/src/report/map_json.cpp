@@ -125,42 +125,6 @@ nlohmann::json system_param_param_json(const SystemParamParamMap& m, int n_point
           {"complete", m.unreliable == 0 && m.inconsistent_sectors == 0}};
 }
 
-void write_system_csv_header(const SystemMapAxis& axis, std::ostream& out) {
-  out << std::setprecision(17) << axis.param.name() << ",theta,count,pattern\n";
-}
-
-void write_system_csv_rows(const SystemMapAxis& axis, const std::vector<double>& theta,
-                           const SystemParamDirectionRows& rows, std::ostream& out) {
-  const std::size_t cols = theta.size();
-  out << std::setprecision(17);
-  for (int i = rows.row_begin; i < rows.row_end; ++i)
-    for (std::size_t jj = 0; jj < cols; ++jj) {
-      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;
-      out << axis.value(i) << ',' << theta[jj] << ',' << count_to_string(rows.count[k]) << ','
-          << rows.pattern[k] << '\n';
-    }
-}
-
-void write_system_csv_header(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
-                             std::ostream& out) {
-  out << std::setprecision(17) << axis1.param.name() << ',' << axis2.param.name()
-      << ",class,min_count,max_count,pattern\n";
-}
-
-void write_system_csv_rows(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
-                           const SystemParamParamRows& rows, std::ostream& out) {
-  const std::size_t cols = static_cast<std::size_t>(axis2.n);
-  out << std::setprecision(17);
-  for (int i = rows.row_begin; i < rows.row_end; ++i)
-    for (int jj = 0; jj < axis2.n; ++jj) {
-      const std::size_t k = static_cast<std::size_t>(i - rows.row_begin) * cols + jj;
-      out << axis1.value(i) << ',' << axis2.value(jj) << ','
-          << to_string(static_cast<UniquenessClass>(rows.cls[k])) << ','
-          << count_to_string(rows.min_count[k]) << ',' << count_to_string(rows.max_count[k])
-          << ',' << rows.pattern[k] << '\n';
-    }
-}
-
 nlohmann::json map_3d_json(const Map3d& m, const std::string& kind, const nlohmann::json& input,
                            const std::string& xname, const std::string& yname) {
   nlohmann::json j;

@@ -222,23 +222,23 @@ std::string map_3d_text(const Map3dRequest& r, const Map3dPlan& p, const Map3d& 
   const Map3dOptions& opt = p.options;
   const int N = p.sys.n_points();
   std::ostringstream o;
-  o << r.kind << " map of " << N << (N == 1 ? " 3-D point" : " 3-D points") << " (" << r.system
+  o << p.kind << " map of " << N << (N == 1 ? " 3-D point" : " 3-D points") << " (" << r.system.value_or("")
     << "), ";
-  if (r.kind != "param-param") o << "load at point " << r.point << ", ";
+  if (p.kind != "param-param") o << "load at point " << r.point.value_or(1) << ", ";
   o << (opt.facets ? "faceted with " + std::to_string(opt.facets) + " facets"
                    : std::string("exact"))
     << ": " << m.cells() << " cells\n";
-  if (r.kind == "sphere")
+  if (p.kind == "sphere")
     o << "  dF = (sin b cos g, sin b sin g, cos b): b in [" << num(p.grid.beta_from) << ", "
       << num(p.grid.beta_to) << "] (" << m.rows << " values) x g in (-pi, pi] (" << m.cols
       << " values)\n";
-  else if (r.kind == "param-direction")
-    o << "  " << p.xname << " in [" << num(r.from) << ", " << num(r.to) << "] (" << m.rows
+  else if (p.kind == "param-direction")
+    o << "  " << p.xname << " in [" << num(r.from.value_or(0)) << ", " << num(r.to.value_or(0)) << "] (" << m.rows
       << " values) x theta in [" << num(p.theta_from) << ", " << num(p.theta_to) << "] ("
       << m.cols << " values) at g = " << num(p.gamma) << '\n';
   else
-    o << "  " << p.xname << " in [" << num(r.from) << ", " << num(r.to) << "] x " << p.yname
-      << " in [" << num(r.from2) << ", " << num(r.to2) << "]\n";
+    o << "  " << p.xname << " in [" << num(r.from.value_or(0)) << ", " << num(r.to.value_or(0)) << "] x " << p.yname
+      << " in [" << num(r.from2.value_or(0)) << ", " << num(r.to2.value_or(0)) << "]\n";
   o << "counts:\n";
   for (const auto& [c, n] : m.count_cells) o << "  " << count_text_3d(c) << ": " << n << " cells\n";
   o << "types:\n";

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/report/rate_outcome.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "piece_json.hpp"
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/report/step_outcome.hpp"
 #include "piece_json.hpp"
 
 namespace cpkit::rate {

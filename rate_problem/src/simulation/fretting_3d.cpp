@@ -11,8 +11,10 @@
 #include <Eigen/Cholesky>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "../model/unit_scaling.hpp"
+#include "step_march.hpp"
 
 namespace cpkit::rate {
 
@@ -251,17 +253,15 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
     }
     auto stop = [&](Fretting3dResult::Outcome o, const std::string& why) {
       res.outcome = o;
-      std::ostringstream m;
-      m.precision(10);
-      m << "stopped before t = " << lp.t << " (load (" << lp.F_T(0) << ", " << lp.F_T(1) << ", "
-        << lp.F_N << ")): " << why << " Last state: " << describe(cur);
-      res.message = m.str();
+      const std::string at = num_text(lp.t, 10) + " (load (" + num_text(lp.F_T(0), 10) + ", " +
+                             num_text(lp.F_T(1), 10) + ", " + num_text(lp.F_N, 10) + "))";
+      res.message = detail::stop_message(at, why, describe(cur));
     };
     if (set.count() == 0) {
       stop(Fretting3dResult::Outcome::kNoSolution,
-           set.complete ? "the step has no solution (complete enumeration)."
+           set.complete ? "the step has no solution (complete enumeration). "
                         : "no solution found and the enumeration is not proved complete (" +
-                              set.message + ").");
+                              set.message + "). ");
       break;
     }
     int best = 0;
@@ -270,13 +270,12 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
         stop(Fretting3dResult::Outcome::kAmbiguous,
              "the step has " + std::to_string(set.count()) +
                  " solutions and its enumeration is not proved complete (" + set.message +
-                 "): no rule can choose honestly.");
+                 "): no rule can choose honestly. ");
         break;
       }
       if (opt.branch_rule == rate::BranchRule::kStop) {
         stop(Fretting3dResult::Outcome::kBranchStop,
-             "the step has " + std::to_string(set.count()) +
-                 " solutions and the branch rule is 'stop'.");
+             detail::branch_stop_why(static_cast<std::size_t>(set.count())));
         break;
       }
       double bd = std::numeric_limits<double>::infinity();
@@ -334,7 +333,7 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
                                  : k_archard * std::max(v.P_N1, 0.0) * lam;
     if (!finite(nx) || !std::isfinite(wear_law)) {
       stop(Fretting3dResult::Outcome::kNumericalFailure,
-           "the next state would not be finite (values beyond the range of double; rescale).");
+           "the next state would not be finite (values beyond the range of double; rescale). ");
       break;
     }
     // Negative beyond rounding (the step's residual tolerance) is reported.
@@ -376,11 +375,8 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
   res.final_state = cur;
   res.wear_depth = cur.w_w;
   res.min_step_dissipation = min_D;
-  if (res.outcome == Fretting3dResult::Outcome::kCompleted) {
-    std::ostringstream m;
-    m << "completed " << res.steps << " steps; final " << describe(cur);
-    res.message = m.str();
-  }
+  if (res.outcome == Fretting3dResult::Outcome::kCompleted)
+    res.message = detail::completed_message(res.steps, describe(cur));
   return res;
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
 #include "step_march.hpp"
 
@@ -105,11 +106,15 @@ void check_load_point(const LoadPoint& lp, std::size_t k, double t_last) {
                      std::to_string(t_last) + ")");
 }
 
-/// The outcome and message of a step with no solution to march on (pts.n == 0).
-std::string no_solution_stop(const StepPoints& pts, const StepProblem& sp, const LoadPoint& lp,
-                             const SimulationSample& cur, SimulationResult::Outcome& outcome) {
+/// The load point in the stop messages: "t (load (F_T, F_N))".
+std::string load_text(const LoadPoint& lp) {
+  return num_text(lp.t) + " (load (" + num_text(lp.F_T) + ", " + num_text(lp.F_N) + "))";
+}
+
+/// Why a step has no solution to march on (pts.n == 0), with the outcome that says it.
+std::string no_solution_why(const StepPoints& pts, const StepProblem& sp,
+                            SimulationResult::Outcome& outcome) {
   std::ostringstream m;
-  m << "stopped before t = " << lp.t << " (load (" << lp.F_T << ", " << lp.F_N << ")): ";
   if (pts.infinite) {
     outcome = SimulationResult::Outcome::kContinuum;
     m << "the step's solutions form a continuum (degenerate data); no rule can choose. ";
@@ -126,7 +131,6 @@ std::string no_solution_stop(const StepPoints& pts, const StepProblem& sp, const
       m << "Criterion (35) admits no P_N above 3 P_s mu / k_a = " << sp.params.mu / sp.params.k()
         << " (condition (46)). ";
   }
-  m << "Last state: " << describe(cur);
   return m.str();
 }
 
@@ -205,11 +209,8 @@ void finish(SimulationResult& res, const SimulationSample& cur, const Sums& sums
   res.min_step_dissipation = min_D;
   res.energy_error = std::abs(res.external_work - res.stored_energy - res.dissipation) /
                      std::max(res.work_abs, 1e-300);
-  if (res.outcome == SimulationResult::Outcome::kCompleted) {
-    std::ostringstream m;
-    m << "completed " << res.steps << " steps; final " << describe(cur);
-    res.message = m.str();
-  }
+  if (res.outcome == SimulationResult::Outcome::kCompleted)
+    res.message = detail::completed_message(res.steps, describe(cur));
 }
 
 }  // namespace
@@ -277,7 +278,8 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       throw InputError(m.str());
     }
     if (pts.n == 0) {
-      res.message = no_solution_stop(pts, sp, lp, cur, res.outcome);
+      const std::string why = no_solution_why(pts, sp, res.outcome);
+      res.message = detail::stop_message(load_text(lp), why, describe(cur));
       break;
     }
     int best = 0;
@@ -295,10 +297,9 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       }
       if (opt.branch_rule == BranchRule::kStop) {
         res.outcome = SimulationResult::Outcome::kBranchStop;
-        std::ostringstream m;
-        m << "stopped before t = " << lp.t << ": the step has " << pts.n
-          << " solutions and the branch rule is 'stop'. Last state: " << describe(cur);
-        res.message = m.str();
+        res.message = detail::stop_message(num_text(lp.t),
+                                           detail::branch_stop_why(static_cast<std::size_t>(pts.n)),
+                                           describe(cur));
         break;
       }
     }
@@ -325,12 +326,11 @@ SimulationResult simulate(const LoadSource& history, const SimulationOptions& op
       // Data beyond the range of double (e.g. loads near 1e300, whose energies overflow): an
       // honest stop before this step, never a "completed" run with inf/NaN in its results.
       res.outcome = SimulationResult::Outcome::kNumericalFailure;
-      std::ostringstream m;
-      m << "stopped before t = " << lp.t << ": " << bad
-        << " would not be finite (the values exceed the range of double; rescale the data). "
-           "Last state: "
-        << describe(cur);
-      res.message = m.str();
+      res.message = detail::stop_message(
+          num_text(lp.t),
+          std::string(bad) +
+              " would not be finite (the values exceed the range of double; rescale the data). ",
+          describe(cur));
       break;
     }
     sums = next;

@@ -2,10 +2,11 @@
 // Internal: what the one-point march (simulation.cpp) and the N-point march
 // (system_simulation.cpp) do the same way for every point at every step: the point placed on its
 // active constraints, the step's dissipation and external work, and the load cycle a step
-// belongs to.
+// belongs to; and the sentences every march (3-D fretting too) stops or completes with.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 
 #include "cpkit/rate_problem/step/incremental_step.hpp"
 
@@ -64,6 +65,25 @@ inline bool step_cycle(double period, double cycle_start, double t_prev, double 
   if (tc < 0) return false;
   cycle = static_cast<std::size_t>(std::floor(tc / period));
   return true;
+}
+
+/// The sentence every march stops with: "stopped before t = <at>: <why>Last state: <last>".
+/// The parts are the march's own words (the CLI prints them byte for byte): `at` the load point
+/// (its time; one point and 3-D add the load), `why` ending with its own separator, `last` the
+/// march's description of the state it stopped in.
+inline std::string stop_message(const std::string& at, const std::string& why,
+                                const std::string& last) {
+  return "stopped before t = " + at + ": " + why + "Last state: " + last;
+}
+
+/// Why a march with the branch rule 'stop' stops at a step with `count` > 1 solutions.
+inline std::string branch_stop_why(std::size_t count) {
+  return "the step has " + std::to_string(count) + " solutions and the branch rule is 'stop'. ";
+}
+
+/// The message of a march that completed its `steps` steps in the state described by `last`.
+inline std::string completed_message(long steps, const std::string& last) {
+  return "completed " + std::to_string(steps) + " steps; final " + last;
 }
 
 }  // namespace cpkit::rate::detail

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/number_text.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
 #include "step_march.hpp"
@@ -122,11 +123,9 @@ std::string enumerate_or_unrepresentable(const SystemStepProblem& sp, const Syst
   return {};
 }
 
-/// The stop message of a step without solutions; sets outcome and inconclusive.
-std::string no_solution_stop(const SystemStepSolutionSet& set, double t,
-                             const SystemSimulationSample& cur, SystemSimulationResult& res) {
+/// Why a step has no solution to march on; sets outcome and inconclusive.
+std::string no_solution_why(const SystemStepSolutionSet& set, SystemSimulationResult& res) {
   std::ostringstream m;
-  m << "stopped before t = " << t << ": ";
   res.outcome = SimulationResult::Outcome::kNoSolution;
   if (set.complete) {
     m << "the step has no solution (complete enumeration of its 4^N active sets). ";
@@ -135,7 +134,6 @@ std::string no_solution_stop(const SystemStepSolutionSet& set, double t,
     m << "no solution was found and the enumeration is not complete ("
       << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
   }
-  m << "Last state: " << describe(cur);
   return m.str();
 }
 
@@ -211,12 +209,11 @@ void finish(SystemSimulationResult& res, const SystemSimulationSample& cur, doub
   res.energy_error = std::abs(res.external_work - (res.stored_energy - E0) - cur.dissipation_total) /
                      std::max(res.work_abs, 1e-300);
   if (res.outcome == SimulationResult::Outcome::kCompleted) {
-    std::ostringstream m;
-    m << "completed " << res.steps << " steps; final " << describe(cur);
+    res.message = detail::completed_message(res.steps, describe(cur));
     if (res.incomplete_steps > 0)
-      m << "; " << res.incomplete_steps
-        << " steps had an enumeration not proved complete (m >= 3 points slipping with wear)";
-    res.message = m.str();
+      res.message += "; " + std::to_string(res.incomplete_steps) +
+                     " steps had an enumeration not proved complete (m >= 3 points slipping "
+                     "with wear)";
   }
 }
 
@@ -265,13 +262,14 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
     const std::string unrepresentable = enumerate_or_unrepresentable(sp, so, set);
     if (!unrepresentable.empty()) {
       res.outcome = SimulationResult::Outcome::kNumericalFailure;
-      res.message = "stopped before t = " + std::to_string(lp.t) + ": " + unrepresentable +
-                    ". Last state: " + describe(cur);
+      res.message =
+          detail::stop_message(std::to_string(lp.t), unrepresentable + ". ", describe(cur));
       break;
     }
     if (!set.complete) ++res.incomplete_steps;
     if (set.solutions.empty()) {
-      res.message = no_solution_stop(set, lp.t, cur, res);
+      const std::string why = no_solution_why(set, res);
+      res.message = detail::stop_message(num_text(lp.t), why, describe(cur));
       break;
     }
     std::size_t best = 0;
@@ -279,10 +277,8 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
       ++res.branch_steps;
       if (opt.branch_rule == BranchRule::kStop) {
         res.outcome = SimulationResult::Outcome::kBranchStop;
-        std::ostringstream m;
-        m << "stopped before t = " << lp.t << ": the step has " << set.solutions.size()
-          << " solutions and the branch rule is 'stop'. Last state: " << describe(cur);
-        res.message = m.str();
+        res.message = detail::stop_message(
+            num_text(lp.t), detail::branch_stop_why(set.solutions.size()), describe(cur));
         break;
       }
       best = closest_solution(set, pc.xi_weight);
@@ -303,8 +299,8 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
     nx.stored = 0.5 * nx.w.dot(system.A * nx.w) + 0.5 * ct_energy(nx.P_T);
     if (!nx.w.allFinite() || !std::isfinite(nx.stored) || !std::isfinite(nx.work_total)) {
       res.outcome = SimulationResult::Outcome::kNumericalFailure;
-      res.message = "stopped before t = " + std::to_string(lp.t) +
-                    ": the values exceed the range of double. Last state: " + describe(cur);
+      res.message = detail::stop_message(
+          std::to_string(lp.t), "the values exceed the range of double. ", describe(cur));
       break;
     }
     add_to_cycle(res, load, t_prev, lp.t, sol);

@@ -1,13 +1,17 @@
 #pragma once
 /// \file map_output.hpp
-/// CSV and JSON forms of the maps (docs/maps.md describes every column and field).
+/// CSV and JSON forms of the maps (docs/maps.md describes every column and field): one point,
+/// and the grid maps of N points.
 /// Counts are integers, "inf" for a continuum of solutions; types are joined with '|'
 /// ("separation|stick|slip+"), "none" when there is no solution.
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/system_grid_map.hpp"
 
 namespace cpkit::rate {
 
@@ -17,6 +21,18 @@ std::string types_to_string(unsigned mask);    ///< "stick|slip+", "none" for 0
 nlohmann::json types_to_json(unsigned mask);   ///< ["stick", "slip+"]
 
 nlohmann::json model_to_json(const ContactParameters& params, const ContactState& state);
+
+/// {"param", "from", "to", "n"} of a grid map's axis (one point: MapAxis, N points:
+/// SystemMapAxis), as the summaries and the checkpoint manifests hold it.
+template <class Axis>
+nlohmann::json axis_json(const Axis& a) {
+  std::string param;
+  if constexpr (std::is_same_v<Axis, MapAxis>)
+    param = to_string(a.param);
+  else
+    param = a.param.name();
+  return {{"param", param}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
+}
 
 /// {"sectors": [{theta_from, theta_to, count, types}], "critical": [{theta, count, types,
 ///  conditions, dF_T, dF_N}], "evaluations", "disagreements", "inconsistent_sectors"}.
@@ -46,5 +62,15 @@ void write_csv_rows(const MapAxis& axis1, const MapAxis& axis2, const ParamParam
                     std::ostream& out);
 /// CSV: curve,x,y.
 void write_critical_csv(const ParamParamMap& map, std::ostream& out);
+
+/// The CSV header and rows of the N-point grid maps (17 digits; the CSV of --format csv):
+/// <param>,theta,count,pattern and <param1>,<param2>,class,min_count,max_count,pattern.
+void write_system_csv_header(const SystemMapAxis& axis, std::ostream& out);
+void write_system_csv_rows(const SystemMapAxis& axis, const std::vector<double>& theta,
+                           const SystemParamDirectionRows& rows, std::ostream& out);
+void write_system_csv_header(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
+                             std::ostream& out);
+void write_system_csv_rows(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
+                           const SystemParamParamRows& rows, std::ostream& out);
 
 }  // namespace cpkit::rate

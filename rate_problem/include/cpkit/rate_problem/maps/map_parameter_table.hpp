@@ -3,12 +3,16 @@
 // `--param2`) can vary, for which kind of map (one point, N points of a 2-D system, 3-D
 // systems), whether one point's value can be chosen (NAME@i, i = 1..N), how a value is applied
 // and how it is validated. The three map kinds and Python check a name against it, so that an
-// unknown or inapplicable name is refused the same way (InputError naming it: exit 2).
+// unknown or inapplicable name is refused the same way (InputError naming it: exit 2). The rows
+// of the maps of systems apply themselves to a point (set_point, set_point_3d).
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace cpkit::rate {
+
+struct SystemPoint;
+struct SystemPoint3d;
 
 /// The map kinds a parameter applies to (bits).
 enum MapDimension : unsigned {
@@ -24,19 +28,28 @@ struct MapParameterRow {
   bool per_point;         ///< NAME@i accepted (maps of systems: N points, 3-D)
   const char* applied;    ///< what a value sets
   const char* validated;  ///< what is checked, and when
+  /// Sets the value in one point of an N-point system; false when the point does not take it
+  /// (P_N: a point in state a or b). Null: not a quantity of the points of N-point maps
+  /// (coupling scales the system's A).
+  bool (*set_point)(SystemPoint& point, double value) = nullptr;
+  /// Sets the value in one point of a 3-D system (null: not a parameter of 3-D maps).
+  void (*set_point_3d)(SystemPoint3d& point, double value) = nullptr;
 };
 /// Every map parameter, in the order of the docs.
 const std::vector<MapParameterRow>& map_parameter_table();
 
+/// A row of the table and the point it applies to: what a map axis of a system varies
+/// (N points: SystemMapParameter, 3-D: Map3dParameter).
+struct MapParameterRef {
+  const MapParameterRow* row = &map_parameter_table().front();  ///< default: mu
+  int point = 0;              ///< 0: every point; i >= 1: point i only
+  std::string name() const;  ///< "mu", "mu@2", "coupling", ...
+};
 /// NAME or NAME@i checked against the table for a map of `dimension` with `n_points` points:
 /// the row and the point (0: every point). Throws InputError naming the parameter when it is
 /// unknown (with the accepted names of this kind), applies to other kinds of map only (naming
 /// them), does not take @i, or its i is not in 1..n_points. A non-empty `context` starts the
 /// message ("--param: ...").
-struct MapParameterRef {
-  const MapParameterRow* row = nullptr;
-  int point = 0;
-};
 MapParameterRef check_map_parameter(std::string_view text, MapDimension dimension, int n_points,
                                     const std::string& context = "");
 

@@ -7,6 +7,7 @@
 /// ...), as the program prints it (exit 2).
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,28 +18,41 @@
 
 namespace cpkit::rate {
 
-/// The options of `cpkit map` as given. Defaults are those `cpkit map --help` shows; options
+/// The options of `cpkit map` as given: an empty optional was not given (the program fills
+/// the fields, apps/map_command.cpp). Defaults are those `cpkit map --help` shows; options
 /// whose default depends on the map (--n, --theta-to, ...) are read only when given.
 struct MapRequest {
-  std::string preset, kind, state, method = "enumerate", out, param, param2, criterion;
-  std::string system;  ///< --system FILE (N points or a 3-D system)
-  SystemFile file;     ///< the --system file, read once by the caller (dim known)
-  std::string format = "npy";
-  double time_limit = 600;  ///< seconds the map may take (--time-limit)
-  double a11 = 0, a12 = 0, a22 = 0, mu = 0, C_T = 0, k_a = 0, P_s = 1, P_N = 0;
-  int sgnPT = 1;
-  double from = 0, to = 0, from2 = 0, to2 = 0, theta_from = 0, theta_to = 0;
-  int n = 0, n2 = 0, theta_n = 360, threads = 0;
-  std::string max_output = "4G";  ///< --max-output SIZE (core/memory_limit.hpp)
-  bool plot = false, json = false, list_presets = false, resume = false;
-  // 3-D systems only: --facets K, --point i (1-based), --others zero|file, --gamma G
-  int facets = 0, point = 1;
-  std::string others;
-  double gamma = 0;
-  std::vector<std::string> options_given;  ///< the options given, as "--n"
-  bool given(const std::string& option) const;
-  bool has(const std::string& option) const { return given(option); }
+  std::optional<std::string> preset, kind, state, criterion;
+  std::optional<std::string> method;  ///< enumerate (default) | analytic
+  std::optional<std::string> out;     ///< --out PREFIX
+  std::optional<std::string> param, param2;
+  std::optional<std::string> system;  ///< --system FILE (N points or a 3-D system)
+  SystemFile file;                    ///< the --system file, read once by the caller (dim known)
+  std::optional<std::string> format;      ///< npy (default) | csv
+  std::optional<double> time_limit;       ///< seconds the map may take (default 600)
+  std::optional<std::string> max_output;  ///< SIZE (core/memory_limit.hpp; default 4G)
+  std::optional<double> a11, a12, a22, mu, C_T, k_a, P_s, P_N;
+  std::optional<int> sgnPT;  ///< +1 or -1 (state d)
+  std::optional<double> from, to, from2, to2, theta_from, theta_to;
+  std::optional<int> n, n2, theta_n;
+  std::optional<int> threads;  ///< 0 (default): all cores
+  std::optional<bool> resume;  ///< N-point and one-point grid maps written with --out
+  bool plot = false, json = false, list_presets = false;
+  // 3-D systems only: --facets K, --point i (1-based, default 1), --others zero|file, --gamma G
+  std::optional<int> facets, point;
+  std::optional<std::string> others;
+  std::optional<double> gamma;
 };
+
+/// The defaults of the options `cpkit map --help` shows with one.
+inline constexpr const char* kMapMethodDefault = "enumerate";
+inline constexpr const char* kMapFormatDefault = "npy";
+inline constexpr const char* kMapMaxOutputDefault = "4G";
+inline constexpr double kMapTimeLimitDefault = 600;
+
+/// The names of the options given ("--n"), in the order the program has always named the first
+/// one it refuses: alphabetical (byte order: "--C_T" before "--a11").
+std::vector<std::string> map_options_given(const MapRequest& a);
 
 /// The one-point map of a request: the model, the kind and the axes.
 struct MapSetup {

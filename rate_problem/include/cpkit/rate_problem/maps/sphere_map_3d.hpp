@@ -26,6 +26,8 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {
@@ -62,13 +64,9 @@ struct SphereGrid {
   std::string validate() const;  ///< empty when usable; names n_beta, n_gamma, beta_from, ...
 };
 
-/// A quantity a 3-D map axis varies, of every point (point = 0) or of point i (1..N).
-struct Map3dParameter {
-  enum class Kind { kAlphaX, kAlphaY, kMu, kCT, kKa, kPs };
-  Kind kind = Kind::kMu;
-  int point = 0;
-  std::string name() const;  ///< "alpha_X", "mu@2", ...
-};
+/// A quantity a 3-D map axis varies, of every point (point = 0) or of point i (1..N): a row of
+/// the map parameter table.
+using Map3dParameter = MapParameterRef;
 /// Parses alpha_X, alpha_Y, mu, C_T, k_a, P_s, or "<name>@i" (1 <= i <= n_points). Throws
 /// InputError naming the accepted names.
 Map3dParameter parse_map_3d_parameter(std::string_view s, int n_points);

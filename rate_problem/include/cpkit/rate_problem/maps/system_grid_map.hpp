@@ -23,19 +23,16 @@
 #include <vector>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
+#include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/rate/system_rate.hpp"
 
 namespace cpkit::rate {
 
-/// A quantity of a system that a map axis varies.
-struct SystemMapParameter {
-  enum class Kind { kMu, kCT, kKa, kPN, kCoupling, kPs };
-  Kind kind = Kind::kMu;
-  int point = 0;  ///< 0: every point; i >= 1: point i only (not for coupling)
-  std::string name() const;  ///< "mu", "mu@2", "coupling", ...
-};
+/// A quantity of a system that a map axis varies: a row of the map parameter table and the
+/// point (0: every point; i >= 1: point i only, not for coupling).
+using SystemMapParameter = MapParameterRef;
 /// Parses "mu", "C_T", "k_a", "P_s", "P_N", "coupling" or "<name>@i" (1 <= i <= n_points),
 /// checked against the map parameter table (map_parameter_table.hpp): InputError naming the
 /// parameter and the accepted names.

@@ -3,7 +3,7 @@
 /// The contact-model options of the commands (`cpkit rate`, `cpkit step`, `cpkit simulate`:
 /// --a11 --a12 --a22 --mu --C_T --k_a --P_s --criterion, --wear-law, --branch-rule) as given,
 /// and their conversion to the model's types. Kept here, not in the program, so that a command's
-/// request (step/step_request.hpp) is checked by the library with the program's messages. Units
+/// request (requests/step_request.hpp) is checked by the library with the program's messages. Units
 /// as ContactParameters (parameters.hpp).
 #include <optional>
 #include <string>

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {

@@ -18,7 +18,7 @@
 
 namespace cpkit::rate {
 
-struct RateOutcome;  // rate/rate_request.hpp
+struct RateOutcome;  // report/rate_outcome.hpp
 
 // Rate problem.
 
@@ -38,7 +38,7 @@ nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* re
 /// solutions (types per point, kind, values | start[, ...]). The program adds the input echo.
 nlohmann::json system_rate_set_json(const SystemRateSolutionSet& s);
 
-/// The object `cpkit rate --json` prints for an outcome (rate/rate_request.hpp): one point,
+/// The object `cpkit rate --json` prints for an outcome (report/rate_outcome.hpp): one point,
 /// rate_set_json (with the enumerated reference of a single solver); N points and 3-D systems,
 /// the set with "cpkit_version" (`version`), "input" (system, name, dF, method; 3-D: facets)
 /// and "n_points" (3-D: "dim": 3). The program adds "run".
@@ -69,7 +69,7 @@ nlohmann::json contact_system_json(const ContactSystem& system);
 /// cpkit_version, input and n_points.
 nlohmann::json system_step_set_json(const SystemStepSolutionSet& s);
 
-struct StepOutcome;  // step/step_request.hpp
+struct StepOutcome;  // report/step_outcome.hpp
 
 /// The object `cpkit step --json` prints for the answer of a request (run_step_request), every
 /// route: one 2-D point (step_set_json, or step_result_json with the enumeration an active-set

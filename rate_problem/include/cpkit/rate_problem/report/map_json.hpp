@@ -49,14 +49,7 @@ nlohmann::json system_param_direction_json(const SystemParamDirectionMap& m, int
 nlohmann::json system_param_param_json(const SystemParamParamMap& m, int n_points,
                                        const nlohmann::json& input);
 
-/// The CSV header and rows of the N-point grid maps (17 digits; the CSV of --format csv).
-void write_system_csv_header(const SystemMapAxis& axis, std::ostream& out);
-void write_system_csv_rows(const SystemMapAxis& axis, const std::vector<double>& theta,
-                           const SystemParamDirectionRows& rows, std::ostream& out);
-void write_system_csv_header(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
-                             std::ostream& out);
-void write_system_csv_rows(const SystemMapAxis& axis1, const SystemMapAxis& axis2,
-                           const SystemParamParamRows& rows, std::ostream& out);
+/// The CSV of the N-point grid maps: maps/map_output.hpp.
 
 /// A 3-D map (sphere, param-direction or param-param, `kind`): {"kind", "dim": 3,
 /// "input", "axes" ({"x": xname, "y": yname}), "cells", "counts" ([{"count" (or "infinite"),

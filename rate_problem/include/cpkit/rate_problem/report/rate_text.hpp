@@ -6,7 +6,7 @@
 /// input's units), the note. Its JSON: rate_outcome_json (report/json.hpp).
 #include <string>
 
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/report/rate_outcome.hpp"
 
 namespace cpkit::rate {
 

@@ -1,12 +1,12 @@
 #pragma once
 /// \file step_text.hpp
 /// The text `cpkit step` prints (without --json) for the answer of a request
-/// (step/step_request.hpp), written once here for the program, Python and tests: one 2-D point
+/// (report/step_outcome.hpp), written once here for the program, Python and tests: one 2-D point
 /// (every solution, or the chain's answer), N 2-D points, one 3-D point, N coupled 3-D points.
 /// Numbers with 10 significant digits (residuals and slip angles 6); units as the input's.
 #include <string>
 
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/report/step_outcome.hpp"
 
 namespace cpkit::rate {
 

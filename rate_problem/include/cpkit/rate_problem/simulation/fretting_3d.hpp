@@ -33,6 +33,7 @@
 #include "cpkit/rate_problem/model/branch_rule.hpp"
 #include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/simulation/load_history.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
 
 namespace cpkit::rate {
@@ -72,14 +73,9 @@ struct EllipticOrbit {
   LoadPoint3d at(std::size_t i) const noexcept;
 };
 
-/// A load produced point by point (memory independent of its length); the march starts from the
-/// unloaded grazing state at t = 0 and takes one step to every point, in order.
-struct LoadSource3d {
-  std::size_t size = 0;
-  std::function<LoadPoint3d(std::size_t)> at;
-  double period = 0;       ///< > 0: per-cycle sums are reported
-  double cycle_start = 0;  ///< t at which cycle 0 begins
-};
+/// A 3-D load produced point by point (load_history.hpp); the march starts from the unloaded
+/// grazing state at t = 0 and takes one step to every point, in order.
+using LoadSource3d = LoadSourceOf<LoadPoint3d>;
 /// The orbit as a source. Throws InputError when orbit.validate() fails.
 LoadSource3d orbit_source(const EllipticOrbit& orbit);
 

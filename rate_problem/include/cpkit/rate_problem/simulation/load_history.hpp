@@ -69,15 +69,19 @@ struct LoadRamp {
 };
 LoadHistory ramp_history(const LoadRamp& ramp);
 
-/// A load history produced point by point (memory independent of its length): `at(k)` for
-/// k = 0 .. size - 1 returns the same points as the stored history would hold. The simulation
-/// reads each point once, in order.
-struct LoadSource {
+/// A load produced point by point (memory independent of its length): `at(k)` for
+/// k = 0 .. size - 1 returns the same points as a stored history would hold. A march reads each
+/// point once, in order. One type for every march, by its load point: LoadSource (one 2-D
+/// point), SystemLoadSource (N points, system_simulation.hpp), LoadSource3d (3-D fretting,
+/// fretting_3d.hpp).
+template <class Point>
+struct LoadSourceOf {
   std::size_t size = 0;
-  std::function<LoadPoint(std::size_t)> at;
-  double period = 0;       ///< as LoadHistory::period
-  double cycle_start = 0;  ///< as LoadHistory::cycle_start
+  std::function<Point(std::size_t)> at;
+  double period = 0;       ///< as LoadHistory::period (> 0: per-cycle sums are reported)
+  double cycle_start = 0;  ///< as LoadHistory::cycle_start (t at which cycle 0 begins)
 };
+using LoadSource = LoadSourceOf<LoadPoint>;
 /// A view of a stored history (which must outlive the source).
 LoadSource history_source(const LoadHistory& history);
 /// The fretting cycle / ramp generated on the fly (the points of fretting_history /

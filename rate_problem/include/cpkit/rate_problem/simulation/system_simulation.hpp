@@ -45,12 +45,8 @@ struct SystemLoadPoint {
 std::vector<SystemLoadPoint> parse_system_load_csv(const std::string& text,
                                                    const std::string& origin, int n_points);
 
-/// An N-point load history produced point by point (memory independent of its length).
-struct SystemLoadSource {
-  std::size_t size = 0;
-  std::function<SystemLoadPoint(std::size_t)> at;
-  double period = 0, cycle_start = 0;  ///< as LoadHistory
-};
+/// An N-point load history produced point by point (load_history.hpp).
+using SystemLoadSource = LoadSourceOf<SystemLoadPoint>;
 
 /// The one-point fretting cycle through two load patterns: F(t) = F_T(t) e_T + F_N(t) e_N with
 /// F_T, F_N the one-point cycle (fretting_source) and e_T, e_N 2N-vectors (a system's

@@ -12,8 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/model/parameters_3d.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
-#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
 
 namespace cpkit::rate {
 

@@ -1,7 +1,7 @@
-// A whole `cpkit map` request (maps/map_request_run.hpp), moved out of the program: the checks
+// A whole `cpkit map` request (requests/map_request_run.hpp), moved out of the program: the checks
 // in the order the program made them (the first message a user sees is unchanged), the
 // refusals before any cell is computed, the map, its files, its JSON and text, the exit code.
-#include "cpkit/rate_problem/maps/map_request_run.hpp"
+#include "cpkit/rate_problem/requests/map_request_run.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -159,6 +159,10 @@ struct OnePointRun {
   Stopwatch clock;
   std::string text;
   ChunkRunStats stats;  ///< of a grid map's run (stopped by the time limit: complete = false)
+  // The request's values, defaults filled in
+  std::string method = a.method.value_or(kMapMethodDefault);
+  std::string format = a.format.value_or(kMapFormatDefault);
+  double time_limit = a.time_limit.value_or(kMapTimeLimitDefault);
 };
 
 /// A grid map's summary into the run's JSON, its disagreements and unreliable cells on stderr.
@@ -211,7 +215,7 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const GridRunOptio
     err_of(p.env) << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
                   << ", theta = " << m.theta[k] << '\n';
   write_critical(p, m);
-  p.text = param_direction_map_text(p.j, s, p.a.given("--theta-from") || p.a.given("--theta-to"));
+  p.text = param_direction_map_text(p.j, s, p.a.theta_from || p.a.theta_to);
   return true;
 }
 
@@ -246,7 +250,7 @@ bool run_grid_map(OnePointRun& p) {
   GridEstimate est = estimate_grid(s, p.options, p.csv, !prefix.empty());
   est.seconds /= p.env.size();  // the ranks share the cells
   check_grid_fits(s, est, prefix.empty() ? "" : fs::path(prefix).parent_path().string(), p.csv,
-                  a.time_limit, p.max_output, p.env);
+                  p.time_limit, p.max_output, p.env);
   // Every grid value next (cheaper than a cell; after the refusals, which need no pass over
   // the grid): the first invalid one is named before any cell is computed, whichever rank
   // or chunk would meet it first.
@@ -260,10 +264,10 @@ bool run_grid_map(OnePointRun& p) {
                   << num_text(est.seconds, 2) << " s of cells on " << est.threads
                   << " threads, " << byte_text(est.memory) << " of memory"
                   << (prefix.empty() ? std::string()
-                                     : ", " + byte_text(est.output) + " of output (" + a.format +
+                                     : ", " + byte_text(est.output) + " of output (" + p.format +
                                            ")")
                   << '\n';
-  j["format"] = a.format;
+  j["format"] = p.format;
   nlohmann::json bits = nlohmann::json::object();
   for (unsigned b = 0; b < 8; ++b)
     if (types_to_string(1u << b) != "none") bits[types_to_string(1u << b)] = 1u << b;
@@ -275,61 +279,69 @@ bool run_grid_map(OnePointRun& p) {
   // pass over the map.
   GridRunOptions run;
   run.checkpoint_prefix = prefix;
-  run.resume = a.resume;
+  run.resume = a.resume.value_or(false);
   run.manifest = {{"cpkit_version", p.env.version}, {"kind", j["kind"]}, {"model", j["model"]},
-                  {"method", a.method}, {"format", a.format}};
+                  {"method", p.method}, {"format", p.format}};
   run.transport = p.env.transport;
   run.progress = progress_of(p.env);
   // One deadline for the whole command (the sample of the estimate included): no chunk is
   // begun after it; the chunks running then are finished (a chunk is at most 1/64 of the map's
   // rows, or 2^20 cells).
   const Stopwatch& clock = p.clock;
-  const double limit = a.time_limit;
+  const double limit = p.time_limit;
   run.stop = [&clock, limit] { return clock.seconds() >= limit; };
   const bool ok = s.kind == MapKind::kParamDirection ? run_param_direction_grid(p, out, run)
                                                      : run_param_param_grid(p, out, run);
   if (ok && !p.stats.complete)
-    p.text = report_time_limit(p.j, a.time_limit, p.stats.rows_done, s.axis.n, p.prefix, p.env) +
+    p.text = report_time_limit(p.j, p.time_limit, p.stats.rows_done, s.axis.n, p.prefix, p.env) +
              p.text;
   return ok;
 }
 
 /// The options of a one-point map beyond its model and axes (the program's order of checks).
 MapOptions one_point_options(const MapRequest& a, const MapSetup& s, const MapEnvironment& env) {
+  const bool no_out = a.out.value_or("").empty();
   if (s.kind == MapKind::kDirection && env.size() > 1)
     throw InputError("a direction map is one exact computation, not a grid of cells: run it "
                      "without mpirun");
-  if (a.resume && (s.kind == MapKind::kDirection || a.out.empty()))
+  if (a.resume.value_or(false) && (s.kind == MapKind::kDirection || no_out))
     throw InputError("--resume applies to grid maps written with --out PREFIX (the finished "
                      "chunks are kept in PREFIX.parts)");
   MapOptions options;
-  const auto method = rate_method_from_string(a.method);
-  if (!method) throw InputError("--method must be enumerate or analytic, got '" + a.method + "'");
+  const std::string method_name = a.method.value_or(kMapMethodDefault);
+  const auto method = rate_method_from_string(method_name);
+  if (!method)
+    throw InputError("--method must be enumerate or analytic, got '" + method_name + "'");
   options.method = *method;
-  if (a.threads > 1024)
+  const int threads = a.threads.value_or(0);
+  if (threads > 1024)
     throw InputError("--threads must be at most 1024 (0: all cores), got " +
-                     std::to_string(a.threads));
-  options.threads = a.threads;
+                     std::to_string(threads));
+  options.threads = threads;
   // Zoom on a thin band of directions (sampled directions of a param-direction map only).
-  for (const char* o : {"--theta-from", "--theta-to"})
-    if (a.given(o) && s.kind != MapKind::kParamDirection)
-      throw InputError(std::string(o) + " applies to --kind param-direction only (a " +
+  for (const auto& [name, given] :
+       {std::pair<const char*, bool>{"--theta-from", a.theta_from.has_value()},
+        {"--theta-to", a.theta_to.has_value()}})
+    if (given && s.kind != MapKind::kParamDirection)
+      throw InputError(std::string(name) + " applies to --kind param-direction only (a " +
                        std::string(to_string(s.kind)) +
                        " map computes the critical directions exactly, without sampling)");
-  if (a.given("--theta-from")) options.theta_from = a.theta_from;
-  if (a.given("--theta-to")) options.theta_to = a.theta_to;
+  options.theta_from = a.theta_from.value_or(options.theta_from);
+  options.theta_to = a.theta_to.value_or(options.theta_to);
   throw_in_options(options.validate(), {{"theta_from", "--theta-from"},
                                         {"theta_to", "--theta-to"},
                                         {"threads", "--threads"}});
-  if (a.plot && a.out.empty()) throw InputError("--plot needs --out PREFIX");
-  if (a.format != "npy" && a.format != "csv")
-    throw InputError("--format must be npy or csv, got '" + a.format + "'");
-  if (a.given("--format") && s.kind == MapKind::kDirection && a.format != "csv")
+  if (a.plot && no_out) throw InputError("--plot needs --out PREFIX");
+  const std::string format = a.format.value_or(kMapFormatDefault);
+  if (format != "npy" && format != "csv")
+    throw InputError("--format must be npy or csv, got '" + format + "'");
+  if (a.format && s.kind == MapKind::kDirection && format != "csv")
     throw InputError("--format npy applies to the grid maps (param-direction, param-param); a "
                      "direction map is written as CSV and JSON");
-  if (a.given("--format") && a.out.empty())
+  if (a.format && no_out)
     throw InputError("--format needs --out PREFIX (without --out only the summary is printed)");
-  if (!(a.time_limit > 0) || !std::isfinite(a.time_limit))
+  const double time_limit = a.time_limit.value_or(kMapTimeLimitDefault);
+  if (!(time_limit > 0) || !std::isfinite(time_limit))
     throw InputError("--time-limit must be a positive number of seconds");
   return options;
 }
@@ -612,21 +624,23 @@ void check_grid_fits(const MapSetup& s, const GridEstimate& e, const std::string
 
 MapOutcome run_one_point_map(const MapRequest& a, const MapEnvironment& env) {
   const MapSetup s = checked_map_setup(a, env);
-  const double max_output = parse_byte_size(a.max_output, "--max-output");
+  const double max_output =
+      parse_byte_size(a.max_output.value_or(kMapMaxOutputDefault), "--max-output");
   const MapOptions options = one_point_options(a, s, env);
-  const std::shared_ptr<void> lock = claim(env, a.out, {});  // held until the map is written
+  const std::string out = a.out.value_or("");
+  const std::shared_ptr<void> lock = claim(env, out, {});  // held until the map is written
 
   OnePointRun r(a, s, env);
   r.options = options;
-  r.csv = a.format == "csv";
+  r.csv = r.format == "csv";
   r.max_output = max_output;
-  r.prefix = a.out;
-  r.name = a.out.empty() ? "" : fs::path(a.out).filename().string();
+  r.prefix = out;
+  r.name = out.empty() ? "" : fs::path(out).filename().string();
   nlohmann::json& j = r.j;
   j["kind"] = std::string(to_string(s.kind));
-  if (!a.preset.empty()) j["preset"] = a.preset;
+  if (!a.preset.value_or("").empty()) j["preset"] = *a.preset;
   j["cpkit_version"] = env.version;
-  j["method"] = a.method;
+  j["method"] = r.method;
   j["run"] = env.run_echo;
   j["model"] = model_to_json(s.params, s.state);
   if (s.kind == MapKind::kDirection)
@@ -659,9 +673,12 @@ MapOutcome run_system_map(const SystemMapRequest& r, const MapEnvironment& env) 
 }
 
 MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
-  const double max_output = parse_byte_size(r.max_output, "--max-output");
+  const double max_output =
+      parse_byte_size(r.max_output.value_or(kMapMaxOutputDefault), "--max-output");
   check_map_3d_request(r, env.size());
-  const std::shared_ptr<void> lock = claim(env, r.out, {{"--system", r.system}});
+  const std::string out = r.out.value_or("");
+  const double time_limit = r.time_limit.value_or(kMapTimeLimitDefault);
+  const std::shared_ptr<void> lock = claim(env, out, {{"--system", r.system.value_or("")}});
   const Stopwatch clock;
   Map3dPlan p = make_map_3d_plan(r);
   Map3dOptions& opt = p.options;
@@ -669,18 +686,18 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
   if (p.cells > kMaxMap3dCells)
     throw InputError("the map has " + p.cells_text + ", more than the " +
                      std::to_string(kMaxMap3dCells) + " cells a 3-D map holds: " + p.fewer);
-  if (!r.out.empty())  // before any cell is computed
+  if (!out.empty())  // before any cell is computed
     check_output_fits(p.cells_text, p.fewer, map_3d_output_bytes(p), max_output,
-                      fs::path(r.out).parent_path().string(), "", "", env);
+                      fs::path(out).parent_path().string(), "", "", env);
   // Up-front cost from a timed sample (which also reports invalid input before the long run).
-  const int threads = map_worker_threads(r.threads, p.rows());
+  const int threads = map_worker_threads(r.threads.value_or(0), p.rows());
   int64_t sampled = 0;
-  const double seconds = estimate_map_3d_seconds(p, threads, sampled, clock, r.time_limit);
-  if (seconds > r.time_limit)
+  const double seconds = estimate_map_3d_seconds(p, threads, sampled, clock, time_limit);
+  if (seconds > time_limit)
     throw InputError("the map has " + p.cells_text + " and would need about " +
                      num_text(seconds, 3) + " s on " + std::to_string(threads) +
                      " threads (estimated from " + std::to_string(sampled) +
-                     " timed cells), more than --time-limit " + num_text(r.time_limit, 4) +
+                     " timed cells), more than --time-limit " + num_text(time_limit, 4) +
                      ": " + p.fewer + (opt.facets ? ", fewer --facets" : "") +
                      ", or raise --time-limit");
   if (seconds > 1.0)
@@ -688,7 +705,7 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
         << threads << " threads (estimate)\n";
   // One deadline for the whole command (issue 24, item 11): the estimate was within it; the
   // cells get what is left, and the ones it does not cover are flagged, never dropped.
-  opt.time_limit_s = std::max(1e-3, r.time_limit - clock.seconds());
+  opt.time_limit_s = std::max(1e-3, time_limit - clock.seconds());
   const MapProgress progress = progress_of(env);
   const Map3d m = compute_map_3d(p, opt, [progress](double f) {
     if (progress) progress("cells", f);
@@ -696,7 +713,7 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
 
   MapOutcome o;
   nlohmann::json& j = o.json;
-  j = map_3d_json(m, r.kind, p.input, p.xname, p.yname);
+  j = map_3d_json(m, p.kind, p.input, p.xname, p.yname);
   j["cpkit_version"] = env.version;
   const bool complete = m.incomplete_cells == 0;
   j["estimate"] = {{"seconds", seconds >= 0 ? nlohmann::json(seconds) : nlohmann::json()},
@@ -704,20 +721,20 @@ MapOutcome run_map_3d(const MapRequest& r, const MapEnvironment& env) {
   j["seconds"] = clock.seconds();
   bool plot_failed = false;
   nlohmann::json files = nlohmann::json::object();
-  if (!r.out.empty()) {
-    write_map_3d_files(r.out, m, files);
+  if (!out.empty()) {
+    write_map_3d_files(out, m, files);
     j["run"] = env.run_echo;
-    plot_failed = !write_map_json(r.out, r.plot, j, files, env);
+    plot_failed = !write_map_json(out, r.plot, j, files, env);
   }
   if (m.timed_out_cells > 0)
-    err << "cpkit map: time limit reached (--time-limit " << num_text(r.time_limit, 4)
+    err << "cpkit map: time limit reached (--time-limit " << num_text(time_limit, 4)
         << " s): " << m.timed_out_cells << " cells cut short (their count is what was found) or "
         << "not computed (count 0), flagged 0 in 'complete'\n";
   if (!complete)
     err << "cpkit map: " << m.incomplete_cells
         << " cells not proved complete (a merging pair of slip directions, an "
            "undecided enumeration, or the time limit): flagged 0 in 'complete'\n";
-  o.text = map_3d_text(r, p, m) + (r.out.empty() ? "" : map_files_text(r.out, files));
+  o.text = map_3d_text(r, p, m) + (out.empty() ? "" : map_files_text(out, files));
   o.exit_code = !complete ? kExitInconclusive : plot_failed ? kExitInternal : kExitOk;
   return o;
 }
@@ -729,10 +746,13 @@ MapOutcome run_map_request(const MapRequest& a, const MapEnvironment& env) {
     return o;
   }
   // The system file was read once (a pipe can be read only once): dispatched on its dim.
-  const bool system = a.given("--system");
+  const bool system = a.system.has_value();
   if (system && a.file.dim == 3) return run_map_3d(a, env);
-  for (const char* opt : {"--facets", "--point", "--others", "--gamma"})
-    if (a.given(opt))
+  for (const auto& [opt, given] : {std::pair<const char*, bool>{"--facets", a.facets.has_value()},
+                                   {"--point", a.point.has_value()},
+                                   {"--others", a.others.has_value()},
+                                   {"--gamma", a.gamma.has_value()}})
+    if (given)
       throw InputError(std::string(opt) + " applies to maps of 3-D systems (--system FILE with "
                        "\"dim\": 3)");
   if (system) return run_system_map(system_map_request(a, a.file, env.size()), env);

@@ -1,6 +1,6 @@
 // `cpkit rate`'s request: the option checks (with the messages the program has always printed),
 // the three routes (one point, N points, a 3-D system) and the exit code.
-#include "cpkit/rate_problem/rate/rate_request.hpp"
+#include "cpkit/rate_problem/requests/rate_request.hpp"
 
 #include <sstream>
 

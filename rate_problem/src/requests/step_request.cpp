@@ -1,4 +1,4 @@
-#include "cpkit/rate_problem/step/step_request.hpp"
+#include "cpkit/rate_problem/requests/step_request.hpp"
 
 #include <sstream>
 #include <vector>

@@ -5,18 +5,15 @@
 /// file (--system FILE, read once here; its "dim" chooses the route). Values in the model's
 /// units (forces as dF, stiffnesses as A); the sign of P_T as in docs/contact_model.md.
 /// Bad input: InputError whose message names the option (--dF, --method, ...), as the program
-/// prints it (exit 2). The text and JSON of the outcome: report/rate_text.hpp, report/json.hpp.
-#include <Eigen/Core>
+/// prints it (exit 2). The outcome: report/rate_outcome.hpp; its text and JSON: report/rate_text.hpp,
+/// report/json.hpp.
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "cpkit/core/exit_code.hpp"
 #include "cpkit/rate_problem/model/model_options.hpp"
-#include "cpkit/rate_problem/rate/point_rate.hpp"
-#include "cpkit/rate_problem/rate/system_rate.hpp"
-#include "cpkit/rate_problem/rate/system_rate_3d.hpp"
+#include "cpkit/rate_problem/report/rate_outcome.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {
@@ -36,26 +33,6 @@ struct RateRequest {
   std::optional<SystemFile> file;
   int facets = 0;                    ///< --facets K: a 3-D system's faceted route (0: exact)
   std::optional<double> time_limit;  ///< --time-limit S: the faceted 3-D solves' budget
-};
-
-/// The answer to a RateRequest: the route's result, the echo of its input, the exit code and
-/// the lines for stderr (without the "cpkit rate: " the program puts before each).
-struct RateOutcome {
-  enum class Route { kOnePoint, kSystem, kSystem3d };
-  Route route = Route::kOnePoint;
-  std::string method;  ///< as given
-  std::string state;   ///< one point: the state as given
-  std::optional<CheckedRateSolution> one_point;
-  // --system: the file, its name, its points and the load rate used (--dF or the file's)
-  std::string path, name;
-  int n_points = 0;
-  Eigen::VectorXd dF;
-  std::optional<SystemRateSolutionSet> system;     ///< a 2-D system
-  std::optional<SystemRateRoute3d> system_3d;      ///< a 3-D system
-  int facets = 0;                                  ///< 3-D: --facets (0: exact)
-  char first_state = 0;                            ///< 3-D: the state of point 1
-  ExitCode exit_code = kExitOk;  ///< 0 a solution, 1 none, 3 disagreement, 5 inconclusive
-  std::vector<std::string> notes;  ///< why the exit code is 3 or 5, for stderr
 };
 
 /// Validates `request` in the order `cpkit rate` always has (options that have no effect in

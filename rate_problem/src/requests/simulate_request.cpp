@@ -1,7 +1,7 @@
 // The run of a `cpkit simulate` request (simulate_request.hpp): the checks in the order the
 // program has always made them (so a request with several faults gets the same message), the
 // one-point, N-point and 3-D runs, their files and their summaries.
-#include "cpkit/rate_problem/simulation/simulate_request.hpp"
+#include "cpkit/rate_problem/requests/simulate_request.hpp"
 
 #include <algorithm>
 #include <climits>
