@@ -7,6 +7,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
+#include "cpkit/lcp/friction/auto.hpp"
 #include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -167,4 +168,28 @@ TEST_CASE("prox: the rank-deficient BoxesStack1 with each inner solver", "[frict
     REQUIRE(r.z.size() == p.q.size());
     CHECK(natural_map_error(p, r.z) <= 1e-8);
   }
+}
+
+TEST_CASE("prox and auto: a time limit that runs out mid-solve is a time limit, never bad input",
+          "[friction][prox]") {
+  // prox read the time left twice (check, then the inner solve's limit); between the two reads
+  // it could pass 0, and fb-soc refused the limit <= 0 as bad input ("time_limit_s must be > 0",
+  // RockPile_tob1 at 40 s, h64); auto read it twice the same way. Limits from 10 us to 10 ms
+  // end the solve at every stage of BoxesStack1 (prox solves it in about 0.1 s).
+  const auto p = cpkit::read_friction_problem(CPKIT_TEST_DATA_DIR
+                                              "/fclib/local/BoxesStack1-i100000-32.hdf5.dat");
+  int decided = 0;
+  for (double limit = 1e-5; limit <= 1e-2; limit *= 1.25) {
+    INFO("time limit " << limit << " s");
+    ProxOptions o;
+    o.common.tol = 1e-8;
+    o.common.time_limit_s = limit;
+    cpkit::SolveResult r;
+    REQUIRE_NOTHROW(r = solve_prox(p, o));
+    CHECK((r.status == Status::kTimeLimit || cpkit::is_solution(r.status)));
+    REQUIRE_NOTHROW(r = cpkit::lcp::friction::solve_auto(p, o.common));
+    CHECK(r.status != Status::kNotRun);  // the best answer's status, or kTimeLimit before any
+    ++decided;
+  }
+  REQUIRE(decided >= 30);
 }

@@ -40,10 +40,17 @@ SolveResult nsgs_stage(const FrictionContactProblem& p, const CommonOptions& o,
   int s_last = 0;
   std::string why;
   for (;;) {
+    // The time left, taken once (read twice it could pass 0 in between, and a solver refuses a
+    // time limit <= 0 as bad input).
+    const double left = o.time_limit_s - clock.seconds();
+    if (!(left > 0)) {
+      if (runs == 0) out.status = Status::kTimeLimit;
+      break;
+    }
     NsgsOptions no;
     no.common = o;
     no.common.max_iterations = chunk;
-    no.common.time_limit_s = o.time_limit_s - clock.seconds();
+    no.common.time_limit_s = left;
     no.r0 = r0;
     out = solve_nsgs(p, no);  // its z is never worse than its start r0
     done += out.iterations;
@@ -116,6 +123,8 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
     }
   };
   auto warm = [&]() { return have && best.z.size() == p.q.size() ? best.z : Eigen::VectorXd(); };
+  // The caller's options with the time left, taken once: a solver is called only when that
+  // number is > 0 (read again after a check it could have passed 0, which solvers refuse).
   auto common = [&]() {
     CommonOptions c = o;
     c.time_limit_s = left();
@@ -132,7 +141,8 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
                             : "skipped: not registered"});
       continue;
     }
-    if (!(left() > 0)) {
+    const CommonOptions c = common();
+    if (!(c.time_limit_s > 0)) {
       attempts.push_back({name, Status::kTimeLimit, 0, 0, "skipped: time limit reached"});
       continue;
     }
@@ -145,18 +155,19 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
       // nsgs' iterate: its alpha rule then starts large (Capsules-i125-1213: 5 outer
       // iterations from 0, 10 from nsgs' iterate; Capsules-i101-404: 8 and 15).
       ProxOptions po;
-      po.common = common();
+      po.common = c;
       record(name, solve_prox(p, po));
       continue;
     }
     if (name == "fb-soc") {
       FbSocOptions fo;  // Newton from the best iterate so far
-      fo.common = common();
+      fo.common = c;
       fo.r0 = warm();
       record(name, solve_fb_soc(p, fo));
-      if (best.status != Status::kSolved && left() > 0) {
+      const CommonOptions c2 = common();
+      if (best.status != Status::kSolved && c2.time_limit_s > 0) {
         FbSocOptions mo;  // the other line search (fb_soc.hpp), from r = 0
-        mo.common = common();
+        mo.common = c2;
         mo.nonmonotone_memory = 1;
         SolveResult r = solve_fb_soc(p, mo);
         r.message = "monotone line search" + (r.message.empty() ? "" : "; " + r.message);
@@ -164,17 +175,18 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
       }
       continue;
     }
-    record(name, e->solve_fc(p, common()));
+    record(name, e->solve_fc(p, c));
   }
   // An answer accepted only just (above tol / 10): a few Gauss-Seidel sweeps from it, kept when
   // they do better. FrictionContact3D_RR_1c at tol 1e-8: fb-soc stops at 3.8e-9 (1.1e-7 by
   // Siconos' |q| measure); nsgs from there reaches rounding.
   // (Not after nsgs itself: the polish would only continue its sweeps, doubling the time of a
   // small problem.)
+  const CommonOptions polish = common();
   if (have && best.status == Status::kSolved && best.solver != "nsgs" &&
-      best.residuals.natural > 0.1 * o.tol && left() > 0) {
+      best.residuals.natural > 0.1 * o.tol && polish.time_limit_s > 0) {
     NsgsOptions no;
-    no.common = common();
+    no.common = polish;
     no.common.max_iterations = kPolishSweeps;
     no.common.tol = 1e-2 * o.tol;  // aims lower than the answer it starts from
     no.common.tol_acceptable = std::max(no.common.tol, o.tol_acceptable);
@@ -190,8 +202,11 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
   }
   best.attempts = std::move(attempts);
   if (!have) {
-    best.status = Status::kNotRun;
-    best.message = "auto: no friction solver ran";
+    // A time limit spent before the first solver (a limit of microseconds) is a time limit.
+    const bool timed_out = !(left() > 0);
+    best.status = timed_out ? Status::kTimeLimit : Status::kNotRun;
+    best.message = timed_out ? "auto: time limit reached before any friction solver ran"
+                             : "auto: no friction solver ran";
     best.seconds = clock.seconds();
     return best;
   }

@@ -85,6 +85,13 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
     const double inner_tol = std::max(ec / 10, o.common.tol / 10);
     bool converged = false;
     if (o.inner != ProxInner::kGaussSeidel) {
+      // The time left, taken once: read again after the check above it could be <= 0, which
+      // fb-soc refuses as bad input (RockPile_tob1 with the FB inner solve at 40 s, h64).
+      const double left = o.common.time_limit_s - clock.seconds();
+      if (!(left > 0)) {
+        stop = Status::kTimeLimit;
+        break;
+      }
       // The regularised problem (W + alpha I, q - alpha r_k) by semismooth Newton from r_k.
       FrictionContactProblem reg;
       reg.W = p.W + alpha * identity;
@@ -97,7 +104,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       // itself on FrictionContact3D_RR_1c, and the iteration stood still); Newton makes the
       // extra digits cheap.
       fo.common.tol = o.common.tol;
-      fo.common.time_limit_s = o.common.time_limit_s - clock.seconds();
+      fo.common.time_limit_s = left;
       fo.common.record_trace = false;
       fo.r0 = rk;
       fo.alart_curnier = o.inner == ProxInner::kAlartCurnier;
