@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
+#include "cpkit/core/friction_io.hpp"
 #include "cpkit/lcp/friction/faceted.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_examples.hpp"
@@ -130,4 +131,25 @@ TEST_CASE("faceted Lemke: an infeasible problem is reported, never solved", "[fr
   CHECK_FALSE(cpkit::is_solution(res.status));
   CHECK(res.status != Status::kInfeasible);  // no certificate for the true cone
   CHECK(res.message.find("faceted problem has no solution") != std::string::npos);
+}
+
+TEST_CASE("faceted Lemke: a time limit that runs out mid-solve is a time limit, never bad input",
+          "[friction][faceted]") {
+  // The polish on the true cone read the time left twice (check, then fb-soc's limit), and the
+  // faceted solve passed what was left to the polish unchecked: a limit that ran out in between
+  // reached a solver as time_limit_s <= 0, which solvers refuse as bad input (h64 found it in
+  // prox). Limits from 10 us to 30 ms end the solve of Confeti-ex03 (54 contacts) at every stage.
+  const auto p = cpkit::read_friction_problem(CPKIT_TEST_DATA_DIR
+                                              "/fclib/local/Confeti-ex03-Fc3D-SBM.dat");
+  int decided = 0;
+  for (double limit = 1e-5; limit <= 3e-2; limit *= 1.3) {
+    INFO("time limit " << limit << " s");
+    FacetedLemkeOptions o;
+    o.common.time_limit_s = limit;
+    cpkit::SolveResult r;
+    REQUIRE_NOTHROW(r = solve_faceted_lemke(p, o));
+    CHECK(r.status != Status::kNotRun);
+    ++decided;
+  }
+  REQUIRE(decided >= 30);
 }

@@ -134,7 +134,12 @@ SolveResult solve_faceted_lemke(const FrictionContactProblem& p, const FacetedLe
     return faceted;
   }
   CommonOptions pc = o.common;
-  pc.time_limit_s = o.common.time_limit_s - clock.seconds();
+  pc.time_limit_s = o.common.time_limit_s - clock.seconds();  // read once: a solver refuses <= 0
+  if (!(pc.time_limit_s > 0)) {
+    faceted.message += "; not polished: time limit reached";
+    faceted.seconds = clock.seconds();
+    return faceted;
+  }
   SolveResult polished = polish_on_true_cone(p, faceted.z, pc);
   const std::string head = faceted.message;
   SolveResult& best =
@@ -171,7 +176,8 @@ SolveResult polish_on_true_cone(const FrictionContactProblem& p, const Eigen::Ve
   if (a.status == Status::kSolved) return a;
   FbSocOptions fo;
   fo.common = c;
-  fo.common.time_limit_s = c.time_limit_s - clock.seconds();
+  fo.common.time_limit_s = c.time_limit_s - clock.seconds();  // read once: fb-soc refuses <= 0
+  if (!(fo.common.time_limit_s > 0)) return a;
   fo.r0 = r0;
   SolveResult b = solve_fb_soc(p, fo);
   b.solver = "polish";

@@ -194,7 +194,13 @@ GlobalSolveResult solve_global(const GlobalFrictionContactProblem& g, const std:
     return out;
   }
   CommonOptions lo = o;
-  lo.time_limit_s = o.time_limit_s - clock.seconds();
+  lo.time_limit_s = o.time_limit_s - clock.seconds();  // read once: a solver refuses <= 0
+  if (!(lo.time_limit_s > 0)) {
+    out.result.status = Status::kTimeLimit;
+    out.result.message = "time limit reached before the local solve";
+    out.result.seconds = clock.seconds();
+    return out;
+  }
   SolveResult local = entry->solve_fc(c.local, lo);
   if (local.solver.empty()) local.solver = entry->info.name;
   out.result = std::move(local);
@@ -258,7 +264,10 @@ GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
   double progress = std::numeric_limits<double>::infinity();
   Status stop = Status::kIterationLimit;
   for (; k < max_outer; ++k) {
-    if (clock.exceeded(o.time_limit_s)) {
+    // The time left, read once (read twice it could pass 0 in between, and a solver refuses a
+    // time limit <= 0 as bad input).
+    const double left = o.time_limit_s - clock.seconds();
+    if (!(left > 0)) {
       stop = Status::kTimeLimit;
       break;
     }
@@ -266,7 +275,7 @@ GlobalSolveResult solve_global_proximal(const GlobalFrictionContactProblem& g,
     reg.f = g.f + rho * v;
     CommonOptions io = o;
     io.max_iterations = 0;  // the inner solver's own default
-    io.time_limit_s = o.time_limit_s - clock.seconds();
+    io.time_limit_s = left;
     GlobalSolveResult in = solve_global(reg, solver, io);
     if (!in.condensed.ok || in.v.size() != g.dofs() || in.result.z.size() != g.H.cols()) {
       out = std::move(in);
