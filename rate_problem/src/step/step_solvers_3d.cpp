@@ -100,15 +100,10 @@ void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& r,
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {
   const double F0 = normalize(problem).F0;
   std::vector<Step3dSolution> out;
-  for (const auto& s : sols) {
-    bool dup = false;
-    for (auto& o : out)
-      if (detail::same_point_solution_3d(o.values, s.values, F0)) {
-        dup = true;
-        if (s.residual < o.residual) o = s;
-      }
-    if (!dup) out.push_back(s);
-  }
+  for (const auto& s : sols)
+    detail::add_distinct(out, s, [F0](const Step3dSolution& a, const Step3dSolution& b) {
+      return detail::same_point_solution_3d(a.values, b.values, F0);
+    });
   std::stable_sort(out.begin(), out.end(), [](const Step3dSolution& a, const Step3dSolution& b) {
     if (a.type != b.type) return static_cast<int>(a.type) < static_cast<int>(b.type);
     if (a.type == SolutionType::kSlip) return a.slip_angle < b.slip_angle;

@@ -218,17 +218,9 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
         normalized_values(uv, s, detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
     Step3dSolution sol;
     sol.values = uv;
-    if (v.P_N1 <= 1e-9)
-      sol.type = p.states[static_cast<std::size_t>(i)].g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
-    else if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff()))
-      sol.type = SolutionType::kStick;
-    else
-      sol.type = SolutionType::kSlip;
+    sol.type = detail::classify_normalized_step_3d(v, p.states[static_cast<std::size_t>(i)].g0);
     sol.residual = local[static_cast<std::size_t>(i)];
-    if (sol.type == SolutionType::kSlip && uv.Dw_Ti.stableNorm() > 0) {
-      sol.slip_direction = uv.Dw_Ti.stableNormalized();  // no overflow near 1e308
-      sol.slip_angle = std::atan2(sol.slip_direction(1), sol.slip_direction(0));
-    }
+    detail::set_slip_direction(sol);
     out.residual = std::isfinite(sol.residual) ? std::max(out.residual, sol.residual) : kInf;
     out.points.push_back(sol);
   }
@@ -268,13 +260,10 @@ SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& pro
     detail::newton_3d<Vec, Mat>(SystemKernel{{n}, problem}, z, o, r);
     if (r.status != Status::kSolved) continue;
     ++ok;
-    bool dup = false;
-    for (auto& s : sols)
-      if (same_solution(s, r.solution, n.F0)) {
-        dup = true;
-        if (r.solution.residual < s.residual) s = r.solution;
-      }
-    if (!dup) sols.push_back(r.solution);
+    detail::add_distinct(sols, r.solution,
+                         [&n](const SystemStep3dSolution& a, const SystemStep3dSolution& b) {
+                           return same_solution(a, b, n.F0);
+                         });
   }
   SystemStep3dSolutionSet set;
   set.solutions = std::move(sols);
