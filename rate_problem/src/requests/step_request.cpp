@@ -188,6 +188,7 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
     const SystemStep3dSolveResult s = solve_system_step_3d_fb_soc(p);
     const bool found = s.status == Status::kSolved;
     if (found) o.system_set.solutions.push_back(s.solution);
+    o.system_set.complete = false;  // one Newton solve: never a list of every solution
     o.system_set.message = s.message;
     o.chain = {"fb-soc"};
     o.status = s.status;

@@ -628,10 +628,7 @@ double step_3d_residual(const Step3dProblem& user, const Step3dValues& uv) noexc
 
 SolutionType classify_step_3d(const Step3dProblem& user, const Step3dValues& uv) noexcept {
   const detail::Units s = scales_of(user);
-  const Step3dValues v = to_normalized(uv, s);
-  if (v.P_N1 <= 1e-9) return user.state.g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
-  if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff())) return SolutionType::kStick;
-  return SolutionType::kSlip;
+  return detail::classify_normalized_step_3d(to_normalized(uv, s), user.state.g0);
 }
 
 Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues& v) {
@@ -639,10 +636,7 @@ Step3dSolution make_step_3d_solution(const Step3dProblem& p, const Step3dValues&
   s.values = v;
   s.type = classify_step_3d(p, v);
   s.residual = step_3d_residual(p, v);
-  if (s.type == SolutionType::kSlip && v.Dw_Ti.stableNorm() > 0) {
-    s.slip_direction = v.Dw_Ti.stableNormalized();  // no overflow near 1e308
-    s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
-  }
+  detail::set_slip_direction(s);
   return s;
 }
 

@@ -3,7 +3,7 @@
 // (step_solvers_3d.cpp, fixed-size 4) and N points (system_step_3d.cpp, 4N): the one damped
 // Newton loop run with the step's iteration limit (and the status an unverified stop claims),
 // the Newton solve with its verification and canonical form, the multistart's random starts and
-// its test of a repeated solution, and the message of a result the verdict did not accept.
+// its test of a repeated solution (and the list of distinct ones), and the message of a result the verdict did not accept.
 //
 // The unknowns z, normalized, are per point (P_TX, P_TY, P_N, lambda). What differs between one
 // point and N points is the kernel (the normalized problem and its FB residual map, whose
@@ -21,6 +21,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -141,6 +142,19 @@ bool same_point_solution_3d(const Values& u, const Values& v, double F0) {
   const double d =
       std::max((u.P_T1 - v.P_T1).cwiseAbs().maxCoeff(), std::abs(u.P_N1 - v.P_N1));
   return d <= 1e-7 * F0;
+}
+
+/// Adds s to the distinct solutions `out` unless `same` finds it there; a repeated solution
+/// replaces each one it repeats when its residual is smaller.
+template <class Solution, class Same>
+void add_distinct(std::vector<Solution>& out, const Solution& s, Same&& same) {
+  bool dup = false;
+  for (auto& o : out)
+    if (same(o, s)) {
+      dup = true;
+      if (s.residual < o.residual) o = s;
+    }
+  if (!dup) out.push_back(s);
 }
 
 }  // namespace cpkit::rate::detail

@@ -1,7 +1,8 @@
 #pragma once
 // Internal: the units of a 3-D step and the per-point terms of the step residual
-// (step_3d_residual, docs/contact_3d.md section 7), shared by the one-point step (step_3d.cpp)
-// and the N-point step (system_step_3d.cpp), which adds its own equilibrium over all points.
+// (step_3d_residual, docs/contact_3d.md section 7) and a point's type and slip direction,
+// shared by the one-point step (step_3d.cpp) and the N-point step (system_step_3d.cpp), which
+// adds its own equilibrium over all points.
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -49,6 +50,22 @@ inline Step3dProblem normalized_step_3d(Step3dProblem n, const Units& u) noexcep
   n.state.g0 /= u.length;
   n.DF /= u.force;
   return n;
+}
+
+/// The type of a point's solution from its values in normalized units (classify_step_3d): P_N1
+/// = 0 is separation (open when the step started open, g0 < 0), else stick or slip.
+inline SolutionType classify_normalized_step_3d(const Step3dValues& v, double g0) noexcept {
+  if (v.P_N1 <= 1e-9) return g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
+  if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff())) return SolutionType::kStick;
+  return SolutionType::kSlip;
+}
+
+/// A slip solution's direction (the unit vector of Dw_T^i) and its angle.
+inline void set_slip_direction(Step3dSolution& s) noexcept {
+  if (s.type == SolutionType::kSlip && s.values.Dw_Ti.stableNorm() > 0) {
+    s.slip_direction = s.values.Dw_Ti.stableNormalized();  // no overflow near 1e308
+    s.slip_angle = std::atan2(s.slip_direction(1), s.slip_direction(0));
+  }
 }
 
 /// Projection onto the second-order cone {(x0, x1): x0 >= |x1|}.

@@ -4,7 +4,6 @@
 // (F0 / |A|)); every answer is verified on the original problem by step_3d_residual.
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -17,12 +16,11 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/registry.hpp"
-#include "cpkit/lcp/damped_newton.hpp"
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/mpcc.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 #include "step_3d_newton.hpp"
+#include "step_3d_normalized.hpp"
 #include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
@@ -34,142 +32,34 @@ using Mat4 = Eigen::Matrix4d;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// The step in normalized units: forces / F0, A / K0, lengths / L0 = F0 / K0, and the affine
-/// maps of the unknowns P1 = (P_T1, P_N1):
-///   Dw_T^i = ui0 + Ui P1,   g1 = gc + gN . P1 - cw P_N1 lambda.
-struct Normalized {
-  double K0 = 1, F0 = 1, L0 = 1;
-  double mu = 0.5, C = 0, cw = 0;
-  double E = 1;  ///< the ellipse's unit (unit_scaling.hpp): lambda / (L0 E) is normalized
-  Eigen::Vector2d al{1, 1};
-  Eigen::Matrix3d A = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d DF{0, 0, 0}, dw0{0, 0, 0};  // Dw = dw0 - A^-1 P1
-  Eigen::Vector2d PT0{0, 0};
-  double PN0 = 0, g0 = 0;
-  Eigen::Vector2d ui0{0, 0};
-  Eigen::Matrix<double, 2, 3> Ui = Eigen::Matrix<double, 2, 3>::Zero();
-  double gc = 0;
-  Eigen::RowVector3d gN = Eigen::RowVector3d::Zero();
-};
+using Normalized = detail::Normalized3d<1>;
+
+/// The units of the one-point step: stiffness |A|, force the largest of |DF|, |P_T0|, P_N0 and
+/// |A| |g0| (1 when that is 0 or overflows), length force / stiffness.
+detail::Units units_of(const Step3dProblem& pr) noexcept {
+  detail::Units u;
+  u.stiffness = pr.params.A.cwiseAbs().maxCoeff();
+  const double f = std::max({pr.DF.cwiseAbs().maxCoeff(), pr.state.P_T0.cwiseAbs().maxCoeff(),
+                             std::abs(pr.state.P_N0), u.stiffness * std::abs(pr.state.g0)});
+  u.force = (f > 0 && std::isfinite(f)) ? f : 1.0;
+  u.length = u.force / u.stiffness;
+  return u;
+}
 
 Normalized normalize(const Step3dProblem& pr) {
-  Normalized n;
-  const ContactParameters3d& p = pr.params;
-  n.K0 = p.A.cwiseAbs().maxCoeff();
-  const double f = std::max({pr.DF.cwiseAbs().maxCoeff(), pr.state.P_T0.cwiseAbs().maxCoeff(),
-                             std::abs(pr.state.P_N0), n.K0 * std::abs(pr.state.g0)});
-  n.F0 = (f > 0 && std::isfinite(f)) ? f : 1.0;
-  n.L0 = n.F0 / n.K0;
-  detail::require_representable(n.F0, n.L0, "step");
-  // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
-  n.E = detail::ellipse_unit(p.alpha);
-  n.mu = p.mu * n.E;
-  n.C = p.C_T * n.K0;
-  n.cw = pr.wear_coefficient() * n.F0 * n.E;
-  n.al = p.alpha / n.E;
-  n.A = p.A / n.K0;
-  if (!std::isfinite(n.C) || !std::isfinite(n.cw) || !std::isfinite(n.L0) || n.L0 == 0)
-    throw InputError("the step's scales overflow double (C_T |A|, c_w F0 or F0 / |A|): give the "
-                     "data in units of moderate size");
-  // The factorisation, not an explicit inverse: dw0 by a direct solve; the affine maps of P1
-  // (rows of A^-1, A symmetric: A^-1 e_k) by solves with unit vectors.
-  const Eigen::LDLT<Eigen::Matrix3d> ldlt(n.A);
-  n.DF = pr.DF / n.F0;
-  n.PT0 = pr.state.P_T0 / n.F0;
-  n.PN0 = pr.state.P_N0 / n.F0;
-  n.g0 = pr.state.g0 / n.L0;
-  const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
-  n.dw0 = ldlt.solve(n.DF + P0);
-  n.ui0 = n.dw0.head<2>() + n.C * n.PT0;
-  for (int k = 0; k < 2; ++k) n.Ui.row(k) = -ldlt.solve(Eigen::Vector3d::Unit(k)).transpose();
-  n.Ui(0, 0) -= n.C;
-  n.Ui(1, 1) -= n.C;
-  n.gc = n.g0 + n.dw0(2);
-  n.gN = -ldlt.solve(Eigen::Vector3d::UnitZ()).transpose();
-  return n;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Fischer-Burmeister functions and Jacobian elements.
-
-using lcp::detail::fb_scalar;
-using lcp::detail::fb_soc;
-
-/// Phi(z) and an element of its generalized Jacobian, z = (P_TX1, P_TY1, P_N1, lambda)
-/// normalized.
-void residual_map(const Normalized& n, const Vec4& z, Vec4& Phi, Mat4& J) noexcept {
-  const Eigen::Vector3d P1 = z.head<3>();
-  const double PN = z(2), lam = z(3);
-  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
-  const double g1 = n.gc + n.gN.dot(P1) - n.cw * PN * lam;
-  double da, db;
-  Phi(0) = fb_scalar(PN, -g1, da, db);
-  // d(-g1)/dz
-  Eigen::RowVector4d dmg;
-  dmg << -n.gN(0), -n.gN(1), -n.gN(2) + n.cw * lam, n.cw * PN;
-  J.row(0) = db * dmg;
-  J(0, 2) += da;
-  Eigen::Vector3d x, y;
-  x << n.mu * PN, z(0) / n.al(0), z(1) / n.al(1);
-  y << lam, -n.al(0) * ui(0), -n.al(1) * ui(1);
-  Eigen::Matrix<double, 3, 4> dx = Eigen::Matrix<double, 3, 4>::Zero(), dy = dx;
-  dx(0, 2) = n.mu;
-  dx(1, 0) = 1 / n.al(0);
-  dx(2, 1) = 1 / n.al(1);
-  dy(0, 3) = 1;
-  dy.block<1, 3>(1, 0) = -n.al(0) * n.Ui.row(0);
-  dy.block<1, 3>(2, 0) = -n.al(1) * n.Ui.row(1);
-  Eigen::Vector3d phi;
-  Eigen::Matrix3d Jx, Jy;
-  fb_soc(x, y, phi, Jx, Jy);
-  Phi.tail<3>() = phi;
-  J.bottomRows<3>() = Jx * dx + Jy * dy;
-}
-
-/// The solver's own check in normalized units, besides step_3d_residual: each FB function
-/// small against its arguments, |fb(a, b)| <= 1e-9 (1 + min(|a|, |b|)) + 1e-13 (|a| + |b|),
-/// so that a point with a huge multiplier and a small but nonzero complementarity product
-/// (x interior to K, y not zero) is never taken, whatever the scaling of a relative residual.
-bool fb_small(const Normalized& n, const Vec4& z) noexcept {
-  const Eigen::Vector3d P1 = z.head<3>();
-  const double PN = z(2), lam = z(3);
-  const Eigen::Vector2d ui = n.ui0 + n.Ui * P1;
-  const double g1 = n.gc + n.gN.dot(P1) - n.cw * PN * lam;
-  double da, db;
-  const double f0 = fb_scalar(PN, -g1, da, db);
-  auto ok = [](double f, double a, double b) {
-    return std::abs(f) <= 1e-9 * (1 + std::min(a, b)) + 1e-13 * (a + b);
-  };
-  if (!ok(f0, std::abs(PN), std::abs(g1))) return false;
-  Eigen::Vector3d x, y, phi;
-  x << n.mu * PN, z(0) / n.al(0), z(1) / n.al(1);
-  y << lam, -n.al(0) * ui(0), -n.al(1) * ui(1);
-  Eigen::Matrix3d Jx, Jy;
-  fb_soc(x, y, phi, Jx, Jy);
-  return ok(phi.norm(), x.norm(), y.norm());
+  return detail::normalize_3d<1>(units_of(pr), pr.params.A, pr.DF, 1,
+                                 [&pr](int) -> const Step3dProblem& { return pr; });
 }
 
 /// Physical values of a normalized iterate, verified on the original problem.
 Step3dValues physical(const Step3dProblem& pr, const Normalized& n, const Vec4& z) noexcept {
-  return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * n.E * z(3));
+  return step_3d_values(pr, n.F0 * z.head<2>(), n.F0 * z(2), n.L0 * n.E(0) * z(3));
 }
 
 /// The one-point kernel of the shared Newton solve (step_3d_newton.hpp).
-struct PointKernel {
+struct PointKernel : detail::NormalizedKernel3d<1> {
   const Step3dProblem& pr;
-  const Normalized& n;
-  int points() const noexcept { return 1; }
-  double mu(int) const noexcept { return n.mu; }
-  Eigen::Vector2d alpha(int) const noexcept { return n.al; }
-  Eigen::Vector2d slip_rates(const Vec4& z) const noexcept {
-    const Eigen::Vector3d P1 = z.head<3>();
-    return n.ui0 + n.Ui * P1;
-  }
-  void residual_map(const Vec4& z, Vec4& Phi, Mat4& J) const noexcept {
-    rate::residual_map(n, z, Phi, J);
-  }
   double residual(const Vec4& z) const noexcept { return step_3d_residual(pr, physical(pr, n, z)); }
-  bool fb_small(const Vec4& z) const noexcept { return rate::fb_small(n, z); }
   void finalize(const Vec4& z, Step3dSolveResult& out, const CommonOptions& o) const {
     out.solution.values = physical(pr, n, z);
     finalize_step_3d(pr, out, o);
@@ -179,19 +69,15 @@ struct PointKernel {
 /// The semismooth Newton iteration from z (normalized); fills `out` (not `seconds`).
 void newton(const Step3dProblem& pr, const Normalized& n, const Vec4& z, const CommonOptions& o,
             Step3dSolveResult& out) {
-  detail::newton_3d<Vec4, Mat4>(PointKernel{pr, n}, z, o, out);
+  detail::newton_3d<Vec4, Mat4>(PointKernel{{n}, pr}, z, o, out);
 }
 
 void check(const Step3dProblem& pr) {
   throw_if_invalid(pr.validate(), "step");
 }
 
-Vec4 normalized_start(const Step3dProblem& pr, const Normalized& n, const Step3dStart* s) {
-  if (s == nullptr) return Vec4(n.PT0(0), n.PT0(1), n.PN0, 0);
-  const Vec4 z(s->P_T1(0) / n.F0, s->P_T1(1) / n.F0, s->P_N1 / n.F0, s->lambda / (n.L0 * n.E));
-  if (!z.allFinite()) throw InputError("start point must be finite");
-  (void)pr;
-  return z;
+Vec4 normalized_start(const Normalized& n, const Step3dStart* s) {
+  return s == nullptr ? n.z0 : detail::normalized_start_3d(n, s);
 }
 
 }  // namespace
@@ -214,15 +100,10 @@ void finalize_step_3d(const Step3dProblem& problem, Step3dSolveResult& r,
 void sort_and_dedup_step_3d(const Step3dProblem& problem, std::vector<Step3dSolution>& sols) {
   const double F0 = normalize(problem).F0;
   std::vector<Step3dSolution> out;
-  for (const auto& s : sols) {
-    bool dup = false;
-    for (auto& o : out)
-      if (detail::same_point_solution_3d(o.values, s.values, F0)) {
-        dup = true;
-        if (s.residual < o.residual) o = s;
-      }
-    if (!dup) out.push_back(s);
-  }
+  for (const auto& s : sols)
+    detail::add_distinct(out, s, [F0](const Step3dSolution& a, const Step3dSolution& b) {
+      return detail::same_point_solution_3d(a.values, b.values, F0);
+    });
   std::stable_sort(out.begin(), out.end(), [](const Step3dSolution& a, const Step3dSolution& b) {
     if (a.type != b.type) return static_cast<int>(a.type) < static_cast<int>(b.type);
     if (a.type == SolutionType::kSlip) return a.slip_angle < b.slip_angle;
@@ -247,7 +128,7 @@ Step3dSolveResult solve_step_3d_fb_soc(const Step3dProblem& problem,
   const Normalized n = checked_normalized(problem, options);
   Step3dSolveResult out;
   out.solver = "fb-soc";
-  newton(problem, n, normalized_start(problem, n, start), options, out);
+  newton(problem, n, normalized_start(n, start), options, out);
   out.seconds = detail::seconds_since(t0);
   return out;
 }
@@ -257,14 +138,14 @@ Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
                                        const Step3dStart* start) {
   const auto t0 = std::chrono::steady_clock::now();
   const Normalized n = checked_normalized(problem, options);
-  const Vec4 xs = normalized_start(problem, n, start);
+  const Vec4 xs = normalized_start(n, start);
   Step3dSolveResult out;
   out.solver = "ipopt";
   // u = D Dw_T^i = u0 + U x (2 x 4), q = D^-1 P_T1
   const Eigen::Matrix2d D = n.al.asDiagonal(), Dinv = n.al.cwiseInverse().asDiagonal();
   const Eigen::Vector2d u0 = D * n.ui0;
   Eigen::Matrix<double, 2, 4> U = Eigen::Matrix<double, 2, 4>::Zero();
-  U.leftCols<3>() = D * n.Ui;
+  U.leftCols<3>() = D * n.Ui.leftCols<3>();
   lcp::MpccProblem m;
   m.n = 4;
   m.lower = Vec::Constant(4, -kInf);
@@ -287,14 +168,14 @@ Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
   m.constraints = [&n, u0, U, Dinv](const Vec& x, Vec& c) {
     const Eigen::Vector2d u = u0 + U * x.head<4>();
     const Eigen::Vector2d q = Dinv * x.head<2>();
-    c = n.mu * x(2) * u - x(3) * q;
+    c = n.mu(0) * x(2) * u - x(3) * q;
     return true;
   };
   m.constraint_jacobian = [&n, u0, U, Dinv](const Vec& x, Mat& J) {
     const Eigen::Vector2d u = u0 + U * x.head<4>();
     const Eigen::Vector2d q = Dinv * x.head<2>();
-    J = n.mu * x(2) * U;
-    J.col(2) += n.mu * u;
+    J = n.mu(0) * x(2) * U;
+    J.col(2) += n.mu(0) * u;
     J.leftCols(2) -= x(3) * Dinv;
     J.col(3) -= q;
     return true;
@@ -316,19 +197,19 @@ Step3dSolveResult solve_step_3d_ipopt(const Step3dProblem& problem,
   m.H = [&n, Dinv](const Vec& x, Vec& H) {
     const Eigen::Vector3d P1 = x.head<3>();
     H = Vec(2);
-    H(0) = -(n.gc + n.gN.dot(P1) - n.cw * x(2) * x(3));
-    H(1) = n.mu * n.mu * x(2) * x(2) - (Dinv * x.head<2>()).squaredNorm();
+    H(0) = -(n.gc(0) + n.gz.leftCols<3>().dot(P1) - n.cw(0) * x(2) * x(3));
+    H(1) = n.mu(0) * n.mu(0) * x(2) * x(2) - (Dinv * x.head<2>()).squaredNorm();
     return true;
   };
   m.H_jacobian = [&n, Dinv](const Vec& x, Mat& J) {
     J = Mat::Zero(2, 4);
-    J.block<1, 3>(0, 0) = -n.gN;
-    J(0, 2) += n.cw * x(3);
-    J(0, 3) = n.cw * x(2);
+    J.block<1, 3>(0, 0) = -n.gz.leftCols<3>();
+    J(0, 2) += n.cw(0) * x(3);
+    J(0, 3) = n.cw(0) * x(2);
     const Eigen::Vector2d q = Dinv * x.head<2>();
     J(1, 0) = -2 * q(0) * Dinv(0, 0);
     J(1, 1) = -2 * q(1) * Dinv(1, 1);
-    J(1, 2) = 2 * n.mu * n.mu * x(2);
+    J(1, 2) = 2 * n.mu(0) * n.mu(0) * x(2);
     return true;
   };
   m.name = "step_3d";
@@ -425,11 +306,11 @@ FacetMap facet_map(const Normalized& n, const Eigen::Matrix<double, 2, Eigen::Dy
   E.block<2, 2>(0, 0).setIdentity();
   E.block<2, 3>(0, 2) = n.A.topRows<2>();
   E.block<1, 3>(2, 2) = n.A.row(2);
-  E.block<2, 2>(3, 0) = -n.C * Eigen::Matrix2d::Identity();
+  E.block<2, 2>(3, 0) = -n.C(0) * Eigen::Matrix2d::Identity();
   E.block<2, 2>(3, 2).setIdentity();
   const Eigen::FullPivLU<Eigen::Matrix<double, 5, 5>> lu(E);
   Eigen::Matrix<double, 5, 1> b0 = Eigen::Matrix<double, 5, 1>::Zero(), bN = b0;
-  b0 << n.DF(0), n.DF(1), n.DF(2) + n.PN0, 0, 0;
+  b0 << n.DF(0), n.DF(1), n.DF(2) + n.P0(2), 0, 0;
   bN(2) = -1;
   const int k = static_cast<int>(Nh.cols());
   Eigen::Matrix<double, 5, Eigen::Dynamic> BL = Eigen::Matrix<double, 5, Eigen::Dynamic>::Zero(5, k);
@@ -455,9 +336,9 @@ Step3dValues facet_values(const Step3dProblem& pr, const Normalized& n, const Fa
   v.Dw_T = n.L0 * s.segment<2>(2);
   v.Dw_N = n.L0 * s(4);
   v.Dw_Ti = n.L0 * (Nh * lam);
-  v.Dw_w = n.L0 * n.cw * PN * sum;
+  v.Dw_w = n.L0 * n.cw(0) * PN * sum;
   v.g1 = pr.state.g0 + v.Dw_N - v.Dw_w;
-  v.lambda = n.L0 * n.E * sum;
+  v.lambda = n.L0 * n.E(0) * sum;
   if (PN == 0) v.lambda = (pr.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
   return v;
 }
@@ -484,19 +365,19 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
     sols.push_back(make_step_3d_solution(problem, facet_values(problem, n, f, Nh, PN, lam)));
   };
   // w_j = mu P_N1 - Nh_j . (P_T0 + DP_T), affine in (P_N1, lambda)
-  if (n.cw == 0) {
+  if (n.cw(0) == 0) {
     out.lcp = true;
     out.size = k;
     // Separation (P_N1 = 0, P_T1 = 0: every multiplier free): directly, when g1 <= 0.
     {
       const Eigen::Matrix<double, 5, 1> s = f.S0 + f.SN * 0.0;
       // P_T1 = 0 requires DP_T = -P_T0; equilibrium with P1 = 0 gives Dw = A^-1 (DF + P0)
-      const double gN1 = n.gc;  // g1 at P1 = 0
+      const double gN1 = n.gc(0);  // g1 at P1 = 0
       (void)s;
       // g1 = g0 + (A^-1 (DF + P0))_N in normalised units: "<= 0" up to the rounding of that
       // sum (its terms' size, not a fixed 1e-12)
-      const Eigen::Vector3d P0(n.PT0(0), n.PT0(1), n.PN0);
-      const double g_terms = std::abs(n.g0) + n.gN.cwiseAbs().dot((n.DF + P0).cwiseAbs());
+      const Eigen::Vector3d P0 = n.P0;
+      const double g_terms = std::abs(n.g0(0)) + n.gz.leftCols<3>().cwiseAbs().dot((n.DF + P0).cwiseAbs());
       if (gN1 <= 64 * 2.220446049250313e-16 * g_terms) {
         Step3dValues v = step_3d_values(problem, Eigen::Vector2d::Zero(), 0.0, 0.0);
         v.lambda = (problem.params.alpha.array() * v.Dw_Ti.array()).matrix().norm();
@@ -507,14 +388,14 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
     // s = S0 + SN P_N1 + SL lambda, g1 = g0 + Dw_N = g0 + s(4) = 0:
     //   P_N1 = -(g0 + S0(4) + SL.row(4) lambda) / SN(4)   (SN(4) != 0: A SPD).
     const double sn = f.SN(4);
-    const double pn0 = -(n.g0 + f.S0(4)) / sn;
+    const double pn0 = -(n.g0(0) + f.S0(4)) / sn;
     const Eigen::RowVectorXd pnl = -f.SL.row(4) / sn;
     // DP_T = S0T + SNT P_N1 + SLT lambda
     const Eigen::Vector2d dpt0 = f.S0.head<2>() + f.SN.head<2>() * pn0;
     const Eigen::Matrix<double, 2, Eigen::Dynamic> dptl = f.SL.topRows<2>() + f.SN.head<2>() * pnl;
     LcpProblem lcp;
-    lcp.M = n.mu * Eigen::VectorXd::Ones(k) * pnl - Nh.transpose() * dptl;
-    lcp.q = n.mu * pn0 * Eigen::VectorXd::Ones(k) - Nh.transpose() * (n.PT0 + dpt0);
+    lcp.M = n.mu(0) * Eigen::VectorXd::Ones(k) * pnl - Nh.transpose() * dptl;
+    lcp.q = n.mu(0) * pn0 * Eigen::VectorXd::Ones(k) - Nh.transpose() * (n.P0.head<2>() + dpt0);
     lcp::EnumerationOptions eo;
     const lcp::SolutionSet zs = lcp::enumerate_all(lcp, eo);
     out.nodes = zs.nodes;
@@ -555,11 +436,11 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
     Vec q(m);
     M(0, 0) = -f.SN(4);
     M.block(0, 1, 1, k) = -f.SL.row(4);
-    q(0) = -(n.g0 + f.S0(4));
-    M.block(1, 0, k, 1) = n.mu * Eigen::VectorXd::Ones(k) - Nh.transpose() * f.SN.head<2>();
+    q(0) = -(n.g0(0) + f.S0(4));
+    M.block(1, 0, k, 1) = n.mu(0) * Eigen::VectorXd::Ones(k) - Nh.transpose() * f.SN.head<2>();
     M.block(1, 1, k, k) = -Nh.transpose() * f.SL.topRows<2>();
-    q.tail(k) = -Nh.transpose() * (n.PT0 + f.S0.head<2>());
-    const double cw = n.cw;
+    q.tail(k) = -Nh.transpose() * (n.P0.head<2>() + f.S0.head<2>());
+    const double cw = n.cw(0);
     McpProblem mcp = make_ncp(
         m,
         [M, q, cw, k](const Vec& z, Vec& F) {
@@ -584,7 +465,7 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
     for (int s = 0; s < n_starts; ++s) {
       Vec x0 = Vec::Zero(m);
       if (s == 0) {
-        x0(0) = n.PN0;
+        x0(0) = n.P0(2);
       } else {
         x0(0) = U(rng) < 0.2 ? 0.0 : std::exp(-4 + 5.5 * U(rng));
         const int j = static_cast<int>(U(rng) * k) % k;
@@ -692,12 +573,12 @@ Step3dSolutionSet multistart_step_3d(const Step3dProblem& problem, int n_starts,
   const CommonOptions o = step_3d_solver_options();
   int fb_ok = 0, ip_ok = 0, fb_runs = 0, ip_runs = 0;
   for (int i = 0; i <= n_starts; ++i) {
-    const Vec4 z = i == 0 ? Vec4(n.PT0(0), n.PT0(1), n.PN0, 0)
-                          : detail::random_start_3d<Vec4>(PointKernel{problem, n}, rng);
+    const Vec4 z = i == 0 ? n.z0
+                          : detail::random_start_3d<Vec4>(PointKernel{{n}, problem}, rng);
     Step3dStart s;
     s.P_T1 = n.F0 * z.head<2>();
     s.P_N1 = n.F0 * z(2);
-    s.lambda = n.L0 * n.E * z(3);
+    s.lambda = n.L0 * n.E(0) * z(3);
     const Step3dSolveResult r = solve_step_3d_fb_soc(problem, o, &s);
     ++fb_runs;
     if (r.status == Status::kSolved) {

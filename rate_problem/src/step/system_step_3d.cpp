@@ -15,10 +15,9 @@
 #include <sstream>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/lcp/damped_newton.hpp"
-#include "cpkit/lcp/detail/fischer_burmeister.hpp"
 #include "step_3d_terms.hpp"
 #include "step_3d_newton.hpp"
+#include "step_3d_normalized.hpp"
 #include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
@@ -56,143 +55,11 @@ Step3dValues normalized_values(Step3dValues v, const detail::Units& s, double el
   return v;
 }
 
-/// The step in normalized units with the affine maps of z (4N; per point (P_TX, P_TY, P_N,
-/// lambda)): Dw_T,i^i = ui0_i + Ui_i z, g1_i = gc_i + gz_i . z - cw_i P_N1,i lambda_i.
-struct Normalized {
-  int N = 0;
-  double K0 = 1, F0 = 1, L0 = 1;
-  std::vector<double> mu, C, cw;
-  std::vector<double> E;  ///< per point: the ellipse's unit (lambda / (L0 E) is normalized)
-  std::vector<Eigen::Vector2d> al;
-  Vec z0;      ///< start state (lambda = 0)
-  Mat Ui;      ///< 2N x 4N
-  Vec ui0;     ///< 2N
-  Mat gz;      ///< N x 4N
-  Vec gc;      ///< N
-};
+using Normalized = detail::Normalized3d<Eigen::Dynamic>;
 
 Normalized normalize(const SystemStep3dProblem& pr) {
-  Normalized n;
-  const int N = pr.n_points();
-  n.N = N;
-  const detail::Units s = scales_of(pr);
-  n.K0 = s.stiffness;
-  n.F0 = s.force;
-  n.L0 = s.length;
-  detail::require_representable(n.F0, n.L0, "step");
-  if (!std::isfinite(n.L0) || n.L0 == 0)
-    throw InputError("step: the step's scales overflow double (F0 / |A|): give the data in units "
-                     "of moderate size");
-  const Mat A = pr.system.A / n.K0;
-  const Eigen::LDLT<Mat> ldlt(A);
-  const Vec DF = pr.DF / n.F0;
-  Vec P0(3 * N);
-  n.z0 = Vec::Zero(4 * N);
-  for (int i = 0; i < N; ++i) {
-    const Step3dProblem q = pr.point_problem(i);
-    // The ellipse in its own unit: alpha / E, mu E, c_w E (lambda / E).
-    const double E = detail::ellipse_unit(q.params.alpha);
-    n.E.push_back(E);
-    n.mu.push_back(q.params.mu * E);
-    n.C.push_back(q.params.C_T * n.K0);
-    n.cw.push_back(q.wear_coefficient() * n.F0 * E);
-    n.al.push_back(q.params.alpha / E);
-    if (!std::isfinite(n.C.back()) || !std::isfinite(n.cw.back()))
-      throw InputError("step: point " + std::to_string(i + 1) + ": C_T |A| or c_w F0 overflows "
-                       "double: give the data in units of moderate size");
-    P0.segment<3>(3 * i) << q.state.P_T0 / n.F0, q.state.P_N0 / n.F0;
-    n.z0.segment<3>(4 * i) = P0.segment<3>(3 * i);
-  }
-  // Dw = dw0 - A^-1 P1 by the factorisation (no explicit inverse): dw0 by a direct solve, the
-  // linear map of z (A^-1 applied to the spreading of z's force part) by a solve with it.
-  const Vec dw0 = ldlt.solve(DF + P0);
-  Mat Sz = Mat::Zero(3 * N, 4 * N);  // P1 = Sz z (column 4j + k <- row 3j + k, k < 3)
-  for (int j = 0; j < N; ++j)
-    for (int k = 0; k < 3; ++k) Sz(3 * j + k, 4 * j + k) = 1;
-  const Mat Az = ldlt.solve(Sz);
-  if (ldlt.info() != Eigen::Success || !dw0.allFinite() || !Az.allFinite())
-    throw InputError("step: A cannot be factorised in double precision");
-  n.Ui = Mat::Zero(2 * N, 4 * N);
-  n.ui0 = Vec::Zero(2 * N);
-  n.gz = Mat::Zero(N, 4 * N);
-  n.gc = Vec::Zero(N);
-  for (int i = 0; i < N; ++i) {
-    n.Ui.middleRows(2 * i, 2) = -Az.middleRows(3 * i, 2);
-    n.Ui(2 * i, 4 * i) -= n.C[i];
-    n.Ui(2 * i + 1, 4 * i + 1) -= n.C[i];
-    n.ui0.segment<2>(2 * i) = dw0.segment<2>(3 * i) + n.C[i] * P0.segment<2>(3 * i);
-    n.gz.row(i) = -Az.row(3 * i + 2);
-    n.gc(i) = pr.states[static_cast<std::size_t>(i)].g0 / n.L0 + dw0(3 * i + 2);
-  }
-  return n;
-}
-
-/// Point i's two FB functions at z (ui, g1: the slip rates and gaps at z): the normal pair
-/// (P_N, -g) and the cone pair x = (mu P_N, P_T / alpha), y = (lambda, -alpha Dw_T^i), with
-/// their derivatives.
-struct PointFb {
-  double g = 0, phi_N = 0, da = 0, db = 0;  ///< gap with the wear term; FB value; dFB/d(P_N, -g)
-  Eigen::Vector2d al;
-  Eigen::Vector3d x, y, phi;
-  Eigen::Matrix3d Jx, Jy;
-};
-PointFb point_fb(const Normalized& n, const Vec& z, const Vec& ui, const Vec& g1, int i) {
-  PointFb f;
-  const int r = 4 * i;
-  const double PN = z(r + 2), lam = z(r + 3);
-  f.g = g1(i) - n.cw[i] * PN * lam;
-  f.phi_N = lcp::detail::fb_scalar(PN, -f.g, f.da, f.db);
-  f.al = n.al[static_cast<std::size_t>(i)];
-  f.x << n.mu[i] * PN, z(r) / f.al(0), z(r + 1) / f.al(1);
-  f.y << lam, -f.al(0) * ui(2 * i), -f.al(1) * ui(2 * i + 1);
-  lcp::detail::fb_soc(f.x, f.y, f.phi, f.Jx, f.Jy);
-  return f;
-}
-
-/// Phi(z) (4N) and an element of its generalized Jacobian (4N x 4N).
-void residual_map(const Normalized& n, const Vec& z, Vec& Phi, Mat& J) {
-  const Vec ui = n.ui0 + n.Ui * z;
-  const Vec g1 = n.gc + n.gz * z;
-  J.setZero();
-  for (int i = 0; i < n.N; ++i) {
-    const int r = 4 * i;
-    const PointFb f = point_fb(n, z, ui, g1, i);
-    const double PN = z(r + 2), lam = z(r + 3);
-    const Eigen::Vector2d& al = f.al;
-    Phi(r) = f.phi_N;
-    J.row(r) = -f.db * n.gz.row(i);
-    J(r, r + 2) += f.da + f.db * n.cw[i] * lam;
-    J(r, r + 3) += f.db * n.cw[i] * PN;
-    const Eigen::Matrix3d& Jx = f.Jx;
-    const Eigen::Matrix3d& Jy = f.Jy;
-    Phi.segment<3>(r + 1) = f.phi;
-    // dx/dz: own columns only; dy/dz: lambda_i and the rows of Ui (all points).
-    Eigen::Matrix3d dxo = Eigen::Matrix3d::Zero();  // d x / d(P_TX, P_TY, P_N)_i
-    dxo(0, 2) = n.mu[i];
-    dxo(1, 0) = 1 / al(0);
-    dxo(2, 1) = 1 / al(1);
-    J.block(r + 1, r, 3, 3) += Jx * dxo;
-    Mat dy = Mat::Zero(3, 4 * n.N);
-    dy(0, r + 3) = 1;
-    dy.row(1) = -al(0) * n.Ui.row(2 * i);
-    dy.row(2) = -al(1) * n.Ui.row(2 * i + 1);
-    J.middleRows(r + 1, 3) += Jy * dy;
-  }
-}
-
-/// Each FB function small against its arguments (as the one-point solver's check).
-bool fb_small(const Normalized& n, const Vec& z) {
-  const Vec ui = n.ui0 + n.Ui * z;
-  const Vec g1 = n.gc + n.gz * z;
-  auto ok = [](double f, double a, double b) {
-    return std::abs(f) <= 1e-9 * (1 + std::min(a, b)) + 1e-13 * (a + b);
-  };
-  for (int i = 0; i < n.N; ++i) {
-    const PointFb f = point_fb(n, z, ui, g1, i);
-    if (!ok(f.phi_N, std::abs(z(4 * i + 2)), std::abs(f.g))) return false;
-    if (!ok(f.phi.norm(), f.x.norm(), f.y.norm())) return false;
-  }
-  return true;
+  return detail::normalize_3d<Eigen::Dynamic>(scales_of(pr), pr.system.A, pr.DF, pr.n_points(),
+                                              [&pr](int i) { return pr.point_problem(i); });
 }
 
 std::vector<Step3dValues> physical(const SystemStep3dProblem& pr, const Normalized& n,
@@ -200,7 +67,7 @@ std::vector<Step3dValues> physical(const SystemStep3dProblem& pr, const Normaliz
   Vec P1(3 * n.N), lam(n.N);
   for (int i = 0; i < n.N; ++i) {
     P1.segment<3>(3 * i) = n.F0 * z.segment<3>(4 * i);
-    lam(i) = n.L0 * n.E[static_cast<std::size_t>(i)] * z(4 * i + 3);
+    lam(i) = n.L0 * n.E(i) * z(4 * i + 3);
   }
   return system_step_3d_values(pr, P1, lam);
 }
@@ -214,16 +81,9 @@ void finalize_system(const SystemStep3dProblem& pr, const std::vector<Step3dValu
 }
 
 /// The N-point kernel of the shared Newton solve (step_3d_newton.hpp).
-struct SystemKernel {
+struct SystemKernel : detail::NormalizedKernel3d<Eigen::Dynamic> {
   const SystemStep3dProblem& pr;
-  const Normalized& n;
-  int points() const noexcept { return n.N; }
-  double mu(int i) const noexcept { return n.mu[static_cast<std::size_t>(i)]; }
-  Eigen::Vector2d alpha(int i) const noexcept { return n.al[static_cast<std::size_t>(i)]; }
-  Vec slip_rates(const Vec& z) const { return n.ui0 + n.Ui * z; }
-  void residual_map(const Vec& z, Vec& Phi, Mat& J) const { rate::residual_map(n, z, Phi, J); }
   double residual(const Vec& z) const { return system_step_3d_residual(pr, physical(pr, n, z)); }
-  bool fb_small(const Vec& z) const { return rate::fb_small(n, z); }
   void finalize(const Vec& z, SystemStep3dSolveResult& out, const CommonOptions& o) const {
     finalize_system(pr, physical(pr, n, z), out, o);
   }
@@ -358,17 +218,9 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& p,
         normalized_values(uv, s, detail::ellipse_unit(p.system.points[static_cast<std::size_t>(i)].alpha));
     Step3dSolution sol;
     sol.values = uv;
-    if (v.P_N1 <= 1e-9)
-      sol.type = p.states[static_cast<std::size_t>(i)].g0 < 0 ? SolutionType::kOpen : SolutionType::kSeparation;
-    else if (v.lambda <= 1e-9 * (1 + v.Dw_T.cwiseAbs().maxCoeff()))
-      sol.type = SolutionType::kStick;
-    else
-      sol.type = SolutionType::kSlip;
+    sol.type = detail::classify_normalized_step_3d(v, p.states[static_cast<std::size_t>(i)].g0);
     sol.residual = local[static_cast<std::size_t>(i)];
-    if (sol.type == SolutionType::kSlip && uv.Dw_Ti.stableNorm() > 0) {
-      sol.slip_direction = uv.Dw_Ti.stableNormalized();  // no overflow near 1e308
-      sol.slip_angle = std::atan2(sol.slip_direction(1), sol.slip_direction(0));
-    }
+    detail::set_slip_direction(sol);
     out.residual = std::isfinite(sol.residual) ? std::max(out.residual, sol.residual) : kInf;
     out.points.push_back(sol);
   }
@@ -382,21 +234,13 @@ SystemStep3dSolveResult solve_system_step_3d_fb_soc(const SystemStep3dProblem& p
   throw_if_invalid(options.validate(), "options");
   const auto t0 = std::chrono::steady_clock::now();
   const Normalized n = normalize(problem);
-  Vec z = n.z0;
-  if (start != nullptr) {
-    if (static_cast<int>(start->size()) != n.N)
-      throw InputError("start: " + std::to_string(start->size()) + " start points for " +
-                       std::to_string(n.N) + " points");
-    for (int i = 0; i < n.N; ++i) {
-      const Step3dStart& s = (*start)[static_cast<std::size_t>(i)];
-      z.segment<4>(4 * i) << s.P_T1 / n.F0, s.P_N1 / n.F0,
-          s.lambda / (n.L0 * n.E[static_cast<std::size_t>(i)]);
-    }
-    if (!z.allFinite()) throw InputError("start point must be finite");
-  }
+  if (start != nullptr && static_cast<int>(start->size()) != n.N)
+    throw InputError("start: " + std::to_string(start->size()) + " start points for " +
+                     std::to_string(n.N) + " points");
+  const Vec z = start == nullptr ? n.z0 : detail::normalized_start_3d(n, start->data());
   SystemStep3dSolveResult out;
   out.solver = "fb-soc";
-  detail::newton_3d<Vec, Mat>(SystemKernel{problem, n}, z, options, out);
+  detail::newton_3d<Vec, Mat>(SystemKernel{{n}, problem}, z, options, out);
   out.seconds = detail::seconds_since(t0);
   return out;
 }
@@ -411,18 +255,15 @@ SystemStep3dSolutionSet multistart_system_step_3d(const SystemStep3dProblem& pro
   std::vector<SystemStep3dSolution> sols;
   int ok = 0;
   for (int i = 0; i <= n_starts; ++i) {
-    const Vec z = i == 0 ? n.z0 : detail::random_start_3d<Vec>(SystemKernel{problem, n}, rng);
+    const Vec z = i == 0 ? n.z0 : detail::random_start_3d<Vec>(SystemKernel{{n}, problem}, rng);
     SystemStep3dSolveResult r;
-    detail::newton_3d<Vec, Mat>(SystemKernel{problem, n}, z, o, r);
+    detail::newton_3d<Vec, Mat>(SystemKernel{{n}, problem}, z, o, r);
     if (r.status != Status::kSolved) continue;
     ++ok;
-    bool dup = false;
-    for (auto& s : sols)
-      if (same_solution(s, r.solution, n.F0)) {
-        dup = true;
-        if (r.solution.residual < s.residual) s = r.solution;
-      }
-    if (!dup) sols.push_back(r.solution);
+    detail::add_distinct(sols, r.solution,
+                         [&n](const SystemStep3dSolution& a, const SystemStep3dSolution& b) {
+                           return same_solution(a, b, n.F0);
+                         });
   }
   SystemStep3dSolutionSet set;
   set.solutions = std::move(sols);

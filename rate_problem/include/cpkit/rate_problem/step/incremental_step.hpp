@@ -36,15 +36,12 @@
 #include "cpkit/rate_problem/model/parameters.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/model/wear.hpp"
+#include "cpkit/rate_problem/step/step_state.hpp"
 
 namespace cpkit::rate {
 
-/// The known state at the start of a step.
-struct StepState {
-  double P_T0 = 0;  ///< tangential contact force
-  double P_N0 = 0;  ///< normal contact force, >= 0
-  double g0 = 0;    ///< gap function w_N - w^w, <= 0 (0 in contact); P_N0 g0 = 0
-};
+/// The known state at the start of a step (step_state.hpp).
+using StepState = StepStateOf<double>;
 
 /// The load increment of a step.
 struct LoadIncrement {

@@ -26,15 +26,13 @@
 
 #include "cpkit/rate_problem/model/wear.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/step/step_result.hpp"
+#include "cpkit/rate_problem/step/step_state.hpp"
 
 namespace cpkit::rate {
 
-/// The known state at the start of a step.
-struct Step3dState {
-  Eigen::Vector2d P_T0{0, 0};  ///< tangential contact force
-  double P_N0 = 0;             ///< normal contact force, >= 0
-  double g0 = 0;               ///< gap function w_N - w^w, <= 0 (0 in contact); P_N0 g0 = 0
-};
+/// The known state at the start of a step (step_state.hpp): P_T0 = (P_TX0, P_TY0).
+using Step3dState = StepStateOf<Eigen::Vector2d>;
 
 /// One step: parameters (A, mu, C_T, k_a, P_s, alpha), wear law, start state, load increment.
 struct Step3dProblem {
@@ -91,12 +89,9 @@ struct Step3dSolution {
 /// Fills type, slip direction, angle and residual of a solution from its values.
 Step3dSolution make_step_3d_solution(const Step3dProblem& problem, const Step3dValues& v);
 
-struct Step3dSolutionSet {
-  std::vector<Step3dSolution> solutions;  ///< order: separation/open, stick, slip by angle
-  bool complete = true;  ///< every solution is listed (false: `message` says why)
-  std::string message;
-  int count() const noexcept { return static_cast<int>(solutions.size()); }
-};
+/// The solutions of one 3-D point (step_result.hpp), in the order separation/open, stick, slip
+/// by angle.
+using Step3dSolutionSet = StepSolutionSetOf<Step3dSolution>;
 
 /// Every solution of the step, exactly (docs/contact_3d.md, "Every solution of a step"):
 /// separation and stick are linear; a slip solution has P_T1 = mu P_N1 D t(phi) and the three

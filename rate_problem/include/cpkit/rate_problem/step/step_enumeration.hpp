@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/step/step_result.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 
 namespace cpkit::rate {
@@ -67,13 +68,12 @@ struct StepSolution {
   bool jump = false;         ///< not on a branch from the start state (see the file comment)
 };
 
-struct StepSolutionSet {
-  std::vector<StepSolution> solutions;  ///< pieces in the order: separation/open, stick, slip+, slip-
+/// The pieces of one 2-D point's step (step_result.hpp), in the order separation/open, stick,
+/// slip+, slip-. `complete` is false when some candidate could be neither accepted nor rejected
+/// (backward error between 1e-12 and tol): the listed solutions are verified, but the set may
+/// miss some.
+struct StepSolutionSet : StepSolutionSetOf<StepSolution> {
   bool infinite = false;                ///< a segment or a ray is present
-  /// false when some candidate could be neither accepted nor rejected (backward error between
-  /// 1e-12 and tol): the listed solutions are verified, but the set may miss some.
-  bool complete = true;
-  std::string message;  ///< why not complete (empty otherwise)
   int continuous_count = 0;  ///< rate-consistent point solutions (-1 when not determined)
   /// Number of solutions: -1 when infinite.
   int count() const noexcept;

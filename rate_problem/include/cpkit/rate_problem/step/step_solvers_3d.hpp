@@ -44,10 +44,7 @@ CommonOptions step_3d_solver_options();
 /// line_search_steps, gradient_steps, seconds, message; z = (P_T1, P_N1, lambda) in the
 /// problem's units, residuals.natural = step_3d_residual) with the step's solution. The status
 /// is granted only by finalize_step_3d.
-struct Step3dSolveResult : SolveResult {
-  Step3dSolution solution;  ///< the final iterate (a solution when status == kSolved)
-  double merit = 0;         ///< 0.5 |Phi|^2 at the end (normalized units)
-};
+using Step3dSolveResult = StepSolveResultOf<Step3dSolution>;
 
 /// The verdict, as finalize() for an LCP (core/finalize.hpp): recomputes the solution (type,
 /// residual) from claim.solution.values and the problem data; kSolved when step_3d_residual
@@ -109,10 +106,8 @@ struct Step3dChainOptions {
 
 /// The common SolveResult of the chain: status kSolved when a link gave a verified solution
 /// (solver = that link), else the last attempt's status; attempts = every link tried (residual =
-/// step_3d_residual of its answer, inf when it gave none).
-struct Step3dChainResult : SolveResult {
-  Step3dSolution solution;
-};
+/// step_3d_residual of its answer, inf when it gave none); merit 0.
+using Step3dChainResult = StepSolveResultOf<Step3dSolution>;
 
 /// One verified solution by the chain. Throws InputError for invalid input or options.
 Step3dChainResult solve_step_3d(const Step3dProblem& problem,

@@ -49,12 +49,9 @@ struct SystemStep3dSolution {
   double residual = 0;  ///< system_step_3d_residual
 };
 
-struct SystemStep3dSolutionSet {
-  std::vector<SystemStep3dSolution> solutions;
-  bool complete = false;  ///< always false: no complete enumeration for coupled 3-D points
-  std::string message;
-  int count() const noexcept { return static_cast<int>(solutions.size()); }
-};
+/// The solutions of N coupled 3-D points (step_result.hpp). There is no complete enumeration
+/// of the coupled 3-D step: its multistart says complete = false.
+using SystemStep3dSolutionSet = StepSolutionSetOf<SystemStep3dSolution>;
 
 /// Per-point values from the end forces P1 (3N, interleaved) and the multipliers lambda (N):
 /// Dw = A^-1 (DF - DP), Dw_T^i = Dw_T - C_T DP_T, Dw^w = c_w P_N1 lambda, g1 = g0 + Dw_N - Dw^w.
@@ -79,10 +76,7 @@ SystemStep3dSolution make_system_step_3d_solution(const SystemStep3dProblem& pro
 
 /// The common SolveResult (status granted by the system verdict: kSolved when
 /// system_step_3d_residual <= tol, as finalize_step_3d) with the system's solution.
-struct SystemStep3dSolveResult : SolveResult {
-  SystemStep3dSolution solution;  ///< the final iterate (a solution when status == kSolved)
-  double merit = 0;               ///< 0.5 |Phi|^2 at the end (normalized units)
-};
+using SystemStep3dSolveResult = StepSolveResultOf<SystemStep3dSolution>;
 
 /// Semismooth Newton on the 4N unknowns z_i = (P_TX1, P_TY1, P_N1, lambda)_i with, per point,
 /// the scalar FB function of the contact pair and the SOC FB function of (x_i, y_i) (as
