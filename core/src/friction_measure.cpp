@@ -51,7 +51,8 @@ void decide_in_measure(const FrictionContactProblem& p, SolveResult& r, const Co
   // The trust check: what the verdict refutes or cannot verify is never a solution (finalize()
   // called it no solution; for a global problem the global verdict did).
   if (!is_solution(r.status)) return;
-  decide_in_measure(p, r, o, m, friction_errors(p, r.z));
+  // finalize() stored z's errors with its verdict; a result decided elsewhere is judged here.
+  decide_in_measure(p, r, o, m, r.friction_errors ? *r.friction_errors : friction_errors(p, r.z));
 }
 
 void decide_in_measure(const FrictionContactProblem& p, SolveResult& r, const CommonOptions& o,
@@ -61,20 +62,26 @@ void decide_in_measure(const FrictionContactProblem& p, SolveResult& r, const Co
     return;
   if (!(e.unit_free <= o.tol_acceptable)) return;
   const double v = measured(e, m);
-  const std::string name = to_string(m);
+  // The reason, appended piece by piece (a small solve's hot path: no temporaries).
+  std::string text;
+  text.reserve(96);
+  const char* name = to_string(m);
   if (v <= o.tol) {
     r.status = Status::kSolved;
-    detail::append(r.message, name + " " + short_number(v) + " <= tol " + short_number(o.tol) +
-                                  " (unit-free " + short_number(e.unit_free) + ")");
+    text.append(name).append(" ").append(short_number(v)).append(" <= tol ");
+    text.append(short_number(o.tol)).append(" (unit-free ").append(short_number(e.unit_free));
+    text.append(")");
   } else if (v <= o.tol_acceptable) {
     r.status = Status::kSolvedInaccurate;
-    detail::append(r.message, name + " " + short_number(v) + " above tol " + short_number(o.tol));
+    text.append(name).append(" ").append(short_number(v)).append(" above tol ");
+    text.append(short_number(o.tol));
   } else {
     r.status = Status::kNumericalFailure;
-    detail::append(r.message, "not a solution in " + name + ": " + short_number(v) +
-                                  " > tol_acceptable " + short_number(o.tol_acceptable) +
-                                  " (unit-free " + short_number(e.unit_free) + ")");
+    text.append("not a solution in ").append(name).append(": ").append(short_number(v));
+    text.append(" > tol_acceptable ").append(short_number(o.tol_acceptable));
+    text.append(" (unit-free ").append(short_number(e.unit_free)).append(")");
   }
+  detail::append(r.message, text);
 }
 
 }  // namespace cpkit

@@ -369,11 +369,14 @@ template <class Units>
 SolveResult finalize_valid(const FrictionContactProblem& p, Units units, SolveResult claim,
                            const CommonOptions& options) {
   const bool claimed_solution = is_solution(claim.status);
+  claim.friction_errors.reset();
   if (detail::refuse_infeasibility(claim, "a friction problem") ||
       !detail::usable_point(claim, p.q.size(), claimed_solution))
     return claim;
   claim.w = p.W * claim.z + p.q;
-  claim.residuals = friction_residuals(p, units(), claim.z, claim.w);
+  FrictionErrors errors;  // friction_errors()'s numbers: the same u, the same sums
+  claim.residuals = friction_residuals(p, units(), claim.z, claim.w, &errors);
+  claim.friction_errors = errors;
   detail::decide(claim, claimed_solution, options);
   return claim;
 }

@@ -168,17 +168,7 @@ bool solve_small_unique(const LcpProblem& p, const SolverEntry& entry, const Com
   if (p.is_sparse() || !small_lcp_route(n, entry)) return false;
   r.z.resize(n);
   if (!unique_solution(n, p.M.data(), p.q.data(), r.z.data())) return false;
-  // The claim, with the scratch result's other fields cleared (their storage is kept).
-  r.status = Status::kSolved;
-  r.solver = "enumerate";
-  r.iterations = r.function_evals = r.jacobian_evals = r.line_search_steps = r.gradient_steps = 0;
-  r.seconds = 0;
-  r.certificate.reset();
-  r.ray.reset();
-  r.basis.clear();
-  r.trace.clear();
-  r.attempts.clear();
-  r.message.clear();
+  reuse_as_claim(r, Status::kSolved, "enumerate");  // the scratch result's storage kept
   r = finalize(p, std::move(r), o);
   return is_solution(r.status);
 }

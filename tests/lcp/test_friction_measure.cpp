@@ -101,6 +101,16 @@ TEST_CASE("relative_q and relative_max of a one-contact r are the hand values", 
   const SolveResult judged = finalize(normal, units, claim, CommonOptions{});
   CHECK(judged.status == Status::kNumericalFailure);
   CHECK(judged.w.isApprox(Eigen::Vector3d(1, 0, 0)));
+  // finalize() stores the errors it computed with its verdict: the hand values, whatever errors
+  // the claim came with; a point it cannot judge keeps none.
+  claim.friction_errors = FrictionErrors{0, 0, 0};
+  const SolveResult stored = finalize(normal, units, claim, CommonOptions{});
+  REQUIRE(stored.friction_errors);
+  CHECK(stored.friction_errors->relative_q == 1.0);
+  CHECK(stored.friction_errors->relative_max == 0.5);
+  CHECK(stored.friction_errors->unit_free == stored.residuals.natural);
+  claim.z = Eigen::Vector3d(NAN, 0, 0);
+  CHECK_FALSE(finalize(normal, units, claim, CommonOptions{}).friction_errors);
   CHECK_THROWS_AS(friction_errors(normal, units, Eigen::VectorXd::Zero(6)), InputError);
 }
 
@@ -270,3 +280,35 @@ TEST_CASE("fc solutions in relative_q: every solution called solved is within to
   CHECK(solved >= 1);
   CHECK(out.exit_code == kExitOk);
 }
+
+TEST_CASE("auto's answers on real files: finalize() decides them again the same way, and the "
+          "stored errors are the natural map's", "[friction][measure][auto]") {
+  // auto no longer judges its chosen answer a second time (every stage returned through
+  // finalize() at the caller's tol): a fresh verdict (finalize(), then the measure's decision)
+  // must agree, and relative_q must be the natural map's norm written in this test.
+  int decided = 0;
+  for (const char* name : {"FrictionContact3D_1c.dat", "FC3D_Example1.dat", "Rover1039.dat",
+                           "NESpheres_10_1.dat", "Confeti-ex03-Fc3D-SBM.dat"}) {
+    INFO(name);
+    const FrictionContactProblem p = read_friction_problem(data(std::string("local/") + name));
+    for (FrictionMeasure m : {FrictionMeasure::kUnitFree, FrictionMeasure::kRelativeQ}) {
+      CommonOptions o;
+      o.tol = 1e-8;
+      const SolveResult r = solve_in_measure(p, *lcp::solvers().find("auto"), o, m);
+      REQUIRE(r.status == Status::kSolved);
+      REQUIRE(r.friction_errors);
+      SolveResult again = finalize(p, r, o);  // the unit-free verdict, then the measure's
+      decide_in_measure(p, again, o, m);
+      CHECK(again.status == Status::kSolved);
+      CHECK(again.residuals.natural == r.residuals.natural);
+      CHECK(r.friction_errors->unit_free == r.residuals.natural);
+      const double F = relative_q(p, r.z);
+      // Two roundings of one number: equal to 1e-9 of it, or to 1e-14 of |q| near 0.
+      CHECK(std::abs(r.friction_errors->relative_q - F) <= 1e-9 * F + 1e-14);
+      if (m == FrictionMeasure::kRelativeQ) CHECK(F <= 1e-8);
+      ++decided;
+    }
+  }
+  CHECK(decided == 10);
+}
+

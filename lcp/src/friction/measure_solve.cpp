@@ -19,17 +19,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// The errors of r, or nullopt when r is not an answer of the problem's size.
+/// The errors of r, or nullopt when r is not an answer of the problem's size: those finalize()
+/// stored with its verdict, else computed (a result decided without finalize()).
 std::optional<FrictionErrors> errors_of(const FrictionContactProblem& p, const SolveResult& r) {
   if (r.z.size() == 0 || r.z.size() != p.q.size() || !r.z.allFinite()) return std::nullopt;
+  if (r.friction_errors) return r.friction_errors;
   return friction_errors(p, r.z);
-}
-
-/// The same with the problem's units computed once by the caller.
-std::optional<FrictionErrors> errors_of(const FrictionContactProblem& p,
-                                        const FrictionUnits& units, const SolveResult& r) {
-  if (r.z.size() == 0 || r.z.size() != p.q.size() || !r.z.allFinite()) return std::nullopt;
-  return friction_errors(p, units, r.z);
 }
 
 /// Accepted by the verdict: a solution (finalize(), or a global problem's verdict) whose
@@ -58,8 +53,7 @@ SolveResult tighten(const FrictionContactProblem& p, SolveResult first, double f
                     Resolve resolve) {
   if (m == FrictionMeasure::kUnitFree) return first;
   SolveResult best = std::move(first);
-  const FrictionUnits units = friction_units(p);                     // once per problem
-  std::optional<FrictionErrors> best_e = errors_of(p, units, best);  // one verdict per answer
+  std::optional<FrictionErrors> best_e = errors_of(p, best);  // finalize()'s, as a rule
   int iterations = best.iterations;
   double seconds = best.seconds;
   double t = first_tol;
@@ -81,7 +75,7 @@ SolveResult tighten(const FrictionContactProblem& p, SolveResult first, double f
     ++solves;
     iterations += r.iterations;
     seconds += r.seconds;
-    std::optional<FrictionErrors> r_e = errors_of(p, units, r);
+    std::optional<FrictionErrors> r_e = errors_of(p, r);
     if (better_in_measure(r, r_e, best, best_e, o, m)) {
       best = std::move(r);
       best_e = r_e;

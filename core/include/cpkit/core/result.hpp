@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cpkit/core/friction_errors.hpp"
 #include "cpkit/core/problem.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/status.hpp"
@@ -59,6 +60,27 @@ struct SolveResult {
   std::vector<TraceEntry> trace;
   std::vector<Attempt> attempts;  ///< solver chains: every attempt, in order
   std::string message;       ///< human-readable account of the outcome
+  /// Frictional contact problems: z's errors in the three measures, computed by finalize()
+  /// with `residuals` (so that deciding in another measure needs no second verdict); empty
+  /// for every other problem kind and when finalize() judged no point.
+  std::optional<FrictionErrors> friction_errors;
 };
+
+/// Makes a used result (its vectors' storage kept) the claim of a solver that found z
+/// without iterating: status and solver set, every count 0, every other field cleared.
+/// Callers on a per-call hot path reuse one result this way instead of building a new one.
+inline void reuse_as_claim(SolveResult& r, Status status, const char* solver) {
+  r.status = status;
+  r.solver = solver;
+  r.iterations = r.function_evals = r.jacobian_evals = r.line_search_steps = r.gradient_steps = 0;
+  r.seconds = 0;
+  r.certificate.reset();
+  r.ray.reset();
+  r.basis.clear();
+  r.trace.clear();
+  r.attempts.clear();
+  r.message.clear();
+  r.friction_errors.reset();
+}
 
 }  // namespace cpkit
