@@ -8,6 +8,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
 #include "cpkit/lcp/friction/auto.hpp"
+#include "cpkit/lcp/friction/fb_soc.hpp"
 #include "cpkit/lcp/friction/measure_solve.hpp"
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
@@ -117,6 +118,12 @@ TEST_CASE("prox: registered, refuses bad input", "[friction][prox]") {
   ProxOptions bad_shrink;
   bad_shrink.shrink = 0.5;  // alpha would grow after every converged inner solve
   CHECK_THROWS_AS(solve_prox(p, bad_shrink), cpkit::InputError);
+  ProxOptions bad_full_step;
+  bad_full_step.full_step_below = 2;  // a step length: at most the full step, 1
+  CHECK_THROWS_AS(solve_prox(p, bad_full_step), cpkit::InputError);
+  cpkit::lcp::friction::FbSocOptions bad_fb;
+  bad_fb.full_step_below = -0.5;
+  CHECK_THROWS_AS(cpkit::lcp::friction::solve_fb_soc(p, bad_fb), cpkit::InputError);
   p.mu[0] = -1;
   CHECK_THROWS_AS(solve_prox(p), cpkit::InputError);
 }

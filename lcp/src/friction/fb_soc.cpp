@@ -137,6 +137,10 @@ bool same_pattern(const SpMat& a, const SpMat& b) {
 SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o) {
   const Stopwatch clock;
   detail::check_input(p0, o.common, o.r0);
+  throw_if_invalid(o.full_step_below >= 0 && o.full_step_below <= 1
+                       ? ""
+                       : "full_step_below must be in [0, 1]",
+                   "fb-soc options");
   const Eigen::Index nc = p0.contacts(), n = 3 * nc;
   const int max_it = o.common.max_iterations > 0 ? o.common.max_iterations : 200;
 
@@ -185,6 +189,7 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
   double progress_res = best_res;
   int progress_it = 0;
   std::vector<double> history{psi};
+  bool forced_last = false;  // the last step was a full step taken over the line search's
   int it = 0;
   for (; it < max_it && stop != Status::kSolved; ++it) {
     if (o.common.time_limit_s < 1e300 && clock.exceeded(o.common.time_limit_s)) {
@@ -233,6 +238,25 @@ SolveResult solve_fb_soc(const FrictionContactProblem& p0, const FbSocOptions& o
     double t = 0;
     // 1. Newton, against the non-monotone reference.
     if (d.size() == n && grad.dot(d) < 0) t = search(d, 1.0, 1e-14, psi_ref);
+    // 1b. The full Newton step when the line search damped it below full_step_below (header):
+    //     not twice in a row, and only to a finite point.
+    const bool may_force = !forced_last;
+    forced_last = false;
+    if (d.size() == n && t < o.full_step_below && may_force) {
+      trial_r = r + d;
+      trial_u.noalias() = p.W * trial_r;
+      trial_u += p.q;
+      if (trial_r.allFinite() && trial_u.allFinite()) {
+        t = 1;
+        kind = "full";
+        forced_last = true;
+        ++res.function_evals;
+      } else if (t > 0) {  // the damped step found above, again
+        trial_r = r + t * d;
+        trial_u.noalias() = p.W * trial_r;
+        trial_u += p.q;
+      }
+    }
     // 2. Levenberg-Marquardt, (J^T J + lambda I) d = -J^T Phi with lambda = |Phi| (the scaled
     //    problem's units): a descent direction that stays bounded where J is singular
     //    (non-isolated solutions of rank-deficient W) [Fan, Yuan 2005].

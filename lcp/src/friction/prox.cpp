@@ -27,6 +27,7 @@ std::string ProxOptions::validate(Eigen::Index n) const {
   if (!(alpha0 >= 0) || !std::isfinite(alpha0)) return "alpha0 must be >= 0 and finite";
   if (!(shrink >= 1) || !std::isfinite(shrink)) return "shrink must be >= 1 and finite";
   if (max_sweeps < 0) return "max_sweeps must be >= 0";
+  if (!(full_step_below >= 0 && full_step_below <= 1)) return "full_step_below must be in [0, 1]";
   return {};
 }
 
@@ -108,6 +109,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       fo.common.record_trace = false;
       fo.r0 = rk;
       fo.alart_curnier = o.inner == ProxInner::kAlartCurnier;
+      fo.full_step_below = o.full_step_below;
       const SolveResult in = solve_fb_soc(reg, fo);
       out.function_evals += in.iterations;
       if (in.z.size() == n && in.z.allFinite()) r = in.z;

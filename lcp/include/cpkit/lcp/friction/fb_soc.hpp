@@ -53,6 +53,13 @@ struct FbSocOptions {
   /// prox's inner solves use it: near a solution of a rank-deficient W it takes full Newton
   /// steps where the FB function's are damped to 1/128 or stall (docs/benchmarks.md, h59).
   bool alart_curnier = false;
+  /// When the Newton step's line search ends below this t (or fails), the full Newton step is
+  /// taken instead, as Siconos' nonsmooth Newton does when its Goldstein-Price search fails;
+  /// never twice in a row, the best iterate is still the answer. 0 (the default): never.
+  /// prox's inner solves use it: from r_k, the first step of a proximal sub-problem with a small
+  /// alpha moves far along W's near-kernel and the line search would take it 1/1000 at a time
+  /// (docs/benchmarks.md, h63).
+  double full_step_below = 0;
 };
 
 /// Solves the problem; throws InputError when it (or r0) is invalid.
