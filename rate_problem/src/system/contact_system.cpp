@@ -91,10 +91,7 @@ SystemPoint parse_point(const json& v, std::size_t i, Criterion criterion) {
     }
   }
   ContactParameters par;  // the interface data only; A's block does not matter for classify
-  par.mu = p.mu;
-  par.C_T = p.C_T;
-  par.k_a = p.k_a;
-  par.P_s = p.P_s;
+  static_cast<InterfaceParameters&>(par) = p;
   par.criterion = criterion;
   {
     const std::string m = par.validate();
@@ -189,10 +186,7 @@ ContactParameters ContactSystem::point_parameters(int i) const {
     c.a12 = A(2 * i, 2 * i + 1);
     c.a22 = A(2 * i + 1, 2 * i + 1);
   }
-  c.mu = p.mu;
-  c.C_T = p.C_T;
-  c.k_a = p.k_a;
-  c.P_s = p.P_s;
+  static_cast<InterfaceParameters&>(c) = p;
   c.criterion = criterion;
   return c;
 }

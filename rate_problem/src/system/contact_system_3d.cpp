@@ -13,10 +13,7 @@ namespace {
 /// A point's material (friction, compliance, wear, ellipse); A's block is the caller's.
 ContactParameters3d material_of(const SystemPoint3d& pt) {
   ContactParameters3d p;
-  p.mu = pt.mu;
-  p.C_T = pt.C_T;
-  p.k_a = pt.k_a;
-  p.P_s = pt.P_s;
+  static_cast<InterfaceParameters&>(p) = pt;
   p.alpha = pt.alpha;
   return p;
 }

@@ -21,12 +21,9 @@
 
 namespace cpkit::rate {
 
-/// One contact point of a system: its interface parameters and its current state.
-struct SystemPoint {
-  double mu = 0.5;   ///< friction coefficient, > 0
-  double C_T = 0;    ///< tangential compliance >= 0
-  double k_a = 0;    ///< Archard wear coefficient >= 0
-  double P_s = 1;    ///< hardness > 0
+/// One contact point of a system: its interface parameters (mu, C_T, k_a, P_s) and its
+/// current state.
+struct SystemPoint : InterfaceParameters {
   /// The state as the rate problem needs it (label, P_N for c/d, sgn P_T for d). When the file
   /// gives the current values instead, it is classified from them.
   ContactState state;

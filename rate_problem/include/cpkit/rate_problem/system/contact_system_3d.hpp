@@ -17,8 +17,9 @@
 
 namespace cpkit::rate {
 
-struct SystemPoint3d {
-  double mu = 0.5, C_T = 0, k_a = 0, P_s = 1;
+/// One 3-D contact point of a system: its interface parameters (mu, C_T, k_a, P_s), the
+/// half-axes of its friction ellipse and its state.
+struct SystemPoint3d : InterfaceParameters {
   Eigen::Vector2d alpha{1, 1};
   ContactState3d state;
 };
