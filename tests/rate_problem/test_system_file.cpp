@@ -146,6 +146,43 @@ TEST_CASE("ContactSystem::validate on a constructed system", "[rate][system]") {
   CHECK_THROWS_AS(s.point_parameters(2), std::out_of_range);
 }
 
+TEST_CASE("ContactSystem3d::validate and point_parameters: the 2-D checks in 3-D", "[rate][system]") {
+  // ContactSystemOf<3> shares validate() and point_parameters() with the 2-D system; the
+  // expectations are read off the data by hand.
+  ContactSystem3d s;
+  CHECK(s.validate() == "points: the system needs at least one point");
+  s.points.resize(2);
+  s.A = Eigen::MatrixXd::Identity(4, 4);
+  CHECK(s.validate() == "A is 4 x 4, need 3N x 3N = 6 x 6 for the 2 points");
+  s.A = 2 * Eigen::MatrixXd::Identity(6, 6);
+  s.A(1, 5) = s.A(5, 1) = 0.25;  // point 1's T_Y couples to point 2's N
+  CHECK(s.validate().empty());   // defaults: state b, P = 0, alpha = (1, 1)
+  s.A(5, 1) = 0.5;
+  CHECK(s.validate().find("A is not symmetric: A[1][5] = 0.25 but A[5][1] = 0.5") == 0);
+  s.A(5, 1) = 0.25;
+  // point 2's own block is rows/columns 3..5: the coupling entry (1, 5) is not in it
+  s.points[1].mu = 0.75;
+  s.points[1].alpha = Eigen::Vector2d(2, 0.5);
+  const ContactParameters3d p = s.point_parameters(1);
+  CHECK(p.A == 2 * Eigen::Matrix3d::Identity());
+  CHECK(p.mu == 0.75);
+  CHECK(p.alpha == Eigen::Vector2d(2, 0.5));
+  CHECK(s.point_parameters(0).A(1, 2) == 0);
+  CHECK_THROWS_AS(s.point_parameters(2), std::out_of_range);
+  s.points[1].mu = 0;
+  CHECK(s.validate().rfind("point 2: mu must be finite and > 0", 0) == 0);
+  s.points[1].mu = 0.75;
+  s.points[0].state.state = 'c';  // stick needs P_N > 0
+  CHECK(s.validate().rfind("point 1: state c needs P_N > 0", 0) == 0);
+  s.points[0].state.state = 'b';
+  s.dF = Eigen::VectorXd::Zero(4);
+  CHECK(s.validate() == "dF has 4 entries, need 3N = 6");
+  s.dF = Eigen::VectorXd::Zero(6);
+  CHECK(s.validate().empty());
+  s.criterion = Criterion::kSoftening;  // 3-D points follow Coulomb (38) only
+  CHECK(!s.validate().empty());
+}
+
 TEST_CASE("system file: directories and devices are refused", "[rate][system]") {
   CHECK_THROWS_AS(read_contact_system("/dev/zero"), cpkit::InputError);
   CHECK_THROWS_AS(read_contact_system("/tmp"), cpkit::InputError);

@@ -14,12 +14,12 @@ constexpr unsigned kAll = kMapOnePoint | kMapNPoints | kMap3d;
 
 /// How a row sets a quantity of one point of an N-point system (every point takes it) and of
 /// a 3-D system.
-template <double SystemPoint::*field>
+template <double InterfaceParameters::*field>
 bool set_point(SystemPoint& p, double v) {
   p.*field = v;
   return true;
 }
-template <double SystemPoint3d::*field>
+template <double InterfaceParameters::*field>
 void set_point_3d(SystemPoint3d& p, double v) {
   p.*field = v;
 }
@@ -53,17 +53,17 @@ const std::vector<MapParameterRow>& map_parameter_table() {
   static const std::vector<MapParameterRow> table = {
       {"mu", kAll, true, "friction coefficient (of every point, or of point i)",
        "> 0, with the model (validate) at every grid value before any cell",
-       set_point<&SystemPoint::mu>, set_point_3d<&SystemPoint3d::mu>},
+       set_point<&InterfaceParameters::mu>, set_point_3d<&InterfaceParameters::mu>},
       {"a11", kMapOnePoint, false, "A_11 of the 2x2 compliance block", "A positive definite"},
       {"a12", kMapOnePoint, false, "A_12 (= A_21)", "A positive definite"},
       {"a22", kMapOnePoint, false, "A_22", "A positive definite"},
       {"a12/a11", kMapOnePoint, false, "A_12 = value * A_11 (A_11 kept)", "A positive definite"},
-      {"C_T", kAll, true, "tangential compliance", ">= 0", set_point<&SystemPoint::C_T>,
-       set_point_3d<&SystemPoint3d::C_T>},
+      {"C_T", kAll, true, "tangential compliance", ">= 0", set_point<&InterfaceParameters::C_T>,
+       set_point_3d<&InterfaceParameters::C_T>},
       {"k_a", kAll, true, "Archard wear coefficient (k = k_a / (3 P_s))", ">= 0",
-       set_point<&SystemPoint::k_a>, set_point_3d<&SystemPoint3d::k_a>},
-      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0", set_point<&SystemPoint::P_s>,
-       set_point_3d<&SystemPoint3d::P_s>},
+       set_point<&InterfaceParameters::k_a>, set_point_3d<&InterfaceParameters::k_a>},
+      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0", set_point<&InterfaceParameters::P_s>,
+       set_point_3d<&InterfaceParameters::P_s>},
       {"P_N", kMapOnePoint | kMapNPoints, true,
        "normal force of the points in state c or d (a sliding point stays on its friction limit)",
        "> 0; N points: point i must be in state c or d, and some point for P_N",

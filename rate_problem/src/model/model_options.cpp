@@ -5,10 +5,15 @@
 namespace cpkit::rate {
 
 ContactParameters model_parameters(const ModelOptions& m) {
-  // Fields in ContactParameters' order.
-  const ContactParameters p{m.a11.value_or(0), m.a12.value_or(0), m.a22.value_or(0),
-                            m.mu.value_or(0),  m.C_T.value_or(0), m.k_a.value_or(0),
-                            m.P_s.value_or(1), criterion_option(m.criterion.value_or("38"))};
+  ContactParameters p;
+  p.a11 = m.a11.value_or(0);
+  p.a12 = m.a12.value_or(0);
+  p.a22 = m.a22.value_or(0);
+  p.mu = m.mu.value_or(0);
+  p.C_T = m.C_T.value_or(0);
+  p.k_a = m.k_a.value_or(0);
+  p.P_s = m.P_s.value_or(1);
+  p.criterion = criterion_option(m.criterion.value_or("38"));
   throw_if_invalid(p.validate(), "contact parameters");
   return p;
 }

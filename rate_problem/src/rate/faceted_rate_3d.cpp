@@ -14,6 +14,8 @@
 namespace cpkit::rate {
 namespace {
 
+using detail::rates_distance;
+
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTol = 1e-10;  // relative "zero", as in point_rate_3d.cpp
 
@@ -36,11 +38,6 @@ struct FacetedMap {
     return r;
   }
 };
-
-double rates_distance(const Rates3d& a, const Rates3d& b, double force, double disp) {
-  return std::max({(a.dP_T - b.dP_T).cwiseAbs().maxCoeff() / force, std::abs(a.dP_N - b.dP_N) / force,
-                   (a.dw_T - b.dw_T).cwiseAbs().maxCoeff() / disp, std::abs(a.dw_N - b.dw_N) / disp});
-}
 
 }  // namespace
 

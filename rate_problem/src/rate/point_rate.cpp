@@ -37,10 +37,6 @@ std::optional<RateMethod> rate_method_from_string(std::string_view s) noexcept {
   return std::nullopt;
 }
 
-int RateSolutionSet::count() const noexcept {
-  return infinite ? -1 : static_cast<int>(solutions.size());
-}
-
 unsigned RateSolutionSet::type_mask() const noexcept {
   unsigned m = 0;
   for (const auto& s : solutions) m |= 1u << static_cast<unsigned>(s.type);

@@ -526,11 +526,6 @@ std::string ContactState3d::validate(const ContactParameters3d& params) const {
   }
 }
 
-bool RateSolutionSet3d::infinite() const noexcept {
-  return std::any_of(solutions.begin(), solutions.end(),
-                     [](const RateSolution3d& s) { return s.ray; });
-}
-
 double SlipDirectionFunction::operator()(double phi) const noexcept {
   const double c = std::cos(phi), s = std::sin(phi);
   return a * c * c + b * c * s + d * s * s + e * c + f * s;

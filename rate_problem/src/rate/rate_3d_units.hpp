@@ -1,6 +1,8 @@
 #pragma once
 // Internal: the solutions of a 3-D rate problem solved in normalized units
-// (model/unit_scaling.hpp, normalize) scaled back to the user's.
+// (model/unit_scaling.hpp, normalize) scaled back to the user's, and the distance of two rates
+// in given units.
+#include <algorithm>
 #include <cmath>
 
 #include "cpkit/core/errors.hpp"
@@ -16,6 +18,14 @@ inline void rescale(Rates3d& r, const Units& s) {
   r.dw_N *= s.length;
   r.dw_Ti *= s.length;
   r.dw_w *= s.length;
+}
+
+/// How far apart two rates are: the largest difference of their forces per `force` and of
+/// their displacement rates per `disp` (the one-point faceted route and the N-point route
+/// deduplicate solutions by it).
+inline double rates_distance(const Rates3d& a, const Rates3d& b, double force, double disp) {
+  return std::max({(a.dP_T - b.dP_T).cwiseAbs().maxCoeff() / force, std::abs(a.dP_N - b.dP_N) / force,
+                   (a.dw_T - b.dw_T).cwiseAbs().maxCoeff() / disp, std::abs(a.dw_N - b.dw_N) / disp});
 }
 
 /// Scales the solutions back; throws InputError when a rate does not fit a double.

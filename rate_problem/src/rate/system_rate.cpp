@@ -41,10 +41,6 @@ PointRows point_rows(const ContactSystem& S, const std::vector<int>& off, int i)
 
 }  // namespace
 
-int SystemRateSolutionSet::count() const noexcept {
-  return infinite ? -1 : static_cast<int>(solutions.size());
-}
-
 TypeTuple encode_types(const std::vector<SolutionType>& types) noexcept {
   TypeTuple code = 0, w = 1;
   for (std::size_t i = 0; i < types.size() && i < static_cast<std::size_t>(kMaxTupleNPoints); ++i) {

@@ -14,6 +14,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "../model/unit_scaling.hpp"
+#include "rate_3d_units.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -260,10 +261,7 @@ bool already_listed(const Faceted& f, const std::vector<SystemSolution3d>& liste
   for (const auto& o : listed) {
     double d = 0;
     for (int i = 0; i < f.n; ++i)
-      d = std::max({d, (o.rates[i].dP_T - sol.rates[i].dP_T).cwiseAbs().maxCoeff() / f.force_back,
-                    std::abs(o.rates[i].dP_N - sol.rates[i].dP_N) / f.force_back,
-                    (o.rates[i].dw_T - sol.rates[i].dw_T).cwiseAbs().maxCoeff() / f.disp_back,
-                    std::abs(o.rates[i].dw_N - sol.rates[i].dw_N) / f.disp_back});
+      d = std::max(d, detail::rates_distance(o.rates[i], sol.rates[i], f.force_back, f.disp_back));
     if (d <= 1e-8) return true;
   }
   return false;
@@ -359,12 +357,6 @@ SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& user_sys,
   return out;
 }
 
-bool SystemRateRoute3d::infinite() const noexcept {
-  for (const auto& r : solutions)
-    if (r.ray) return true;
-  return false;
-}
-
 SystemRateRoute3d solve_system_rate_3d(const ContactSystem3d& system, const Eigen::VectorXd& dF,
                                        int facets, double time_limit_s) {
   SystemRateRoute3d out;
@@ -373,12 +365,7 @@ SystemRateRoute3d solve_system_rate_3d(const ContactSystem3d& system, const Eige
     if (facets == 0)
       throw InputError("coupled 3-D points are solved with the faceted friction ellipses: "
                        "facets must be given (3.." + std::to_string(kMaxFacets) + ")");
-    const SystemRateSet3d s = solve_system_rate_3d_faceted(system, dF, facets, time_limit_s);
-    out.complete = s.complete;
-    out.timed_out = s.timed_out;
-    out.message = s.message;
-    for (const auto& x : s.solutions) out.solutions.push_back({x.types, x.rates, {}, false, true});
-    return out;
+    return solve_system_rate_3d_faceted(system, dF, facets, time_limit_s);
   }
   const ContactState3d& st = system.points[0].state;
   if (facets != 0 && st.state != 'b')

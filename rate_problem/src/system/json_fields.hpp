@@ -10,6 +10,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/json_read.hpp"
+#include "cpkit/rate_problem/model/interface_parameters.hpp"
 
 namespace cpkit::rate::detail {
 
@@ -30,8 +31,12 @@ inline double get_num(const nlohmann::json& v, const std::string& field) {
 /// The interface data that 2-D and 3-D points share (mu, C_T, k_a, P_s): reads key `k` into its
 /// field and returns true, or returns false for another key.
 inline bool read_interface_key(const std::string& k, const nlohmann::json& v, const std::string& f,
-                               double& mu, double& C_T, double& k_a, double& P_s) {
-  double* field = k == "mu" ? &mu : k == "C_T" ? &C_T : k == "k_a" ? &k_a : k == "P_s" ? &P_s : nullptr;
+                               InterfaceParameters& p) {
+  double* field = k == "mu"    ? &p.mu
+                  : k == "C_T" ? &p.C_T
+                  : k == "k_a" ? &p.k_a
+                  : k == "P_s" ? &p.P_s
+                               : nullptr;
   if (!field) return false;
   *field = get_num(v, f);
   return true;

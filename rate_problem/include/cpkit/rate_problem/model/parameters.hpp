@@ -8,6 +8,8 @@
 #include <string_view>
 #include <optional>
 
+#include "cpkit/rate_problem/model/interface_parameters.hpp"
+
 namespace cpkit::rate {
 
 /// Friction-and-wear criterion.
@@ -18,18 +20,14 @@ enum class Criterion {
 std::string_view to_string(Criterion c) noexcept;  ///< "coulomb" / "softening"
 std::optional<Criterion> criterion_from_string(std::string_view s) noexcept;  ///< also "38"/"35"
 
-struct ContactParameters {
+/// One 2-D point alone: its interface data (mu, C_T, k_a, P_s, k(), kappa()), its stiffness
+/// block and the friction criterion, which in 2-D is the point's cone.
+struct ContactParameters : InterfaceParameters {
   double a11 = 1, a12 = 0, a22 = 1;  ///< A = [[a11, a12], [a12, a22]], symmetric positive definite
-  double mu = 0.5;                   ///< friction coefficient, > 0
-  double C_T = 0;                    ///< tangential compliance 1/k_T >= 0 (0: Psi_1, rigid)
-  double k_a = 0;                    ///< Archard wear coefficient >= 0 (0: no wear)
-  double P_s = 1;                    ///< hardness > 0
   Criterion criterion = Criterion::kCoulomb;
 
   double detA() const noexcept { return a11 * a22 - a12 * a12; }
   double D0() const noexcept { return a22 + C_T * detA(); }     ///< model.md Sec. 2
-  double k() const noexcept { return k_a / (3.0 * P_s); }       ///< Archard k = k_a / (3 P_s)
-  double kappa(double P_N) const noexcept { return k() * P_N; } ///< kappa = k_a P_N / (3 P_s)
   /// Empty when usable; else names the field (A not SPD, mu <= 0, C_T < 0, NaN, ...).
   std::string validate() const;
 };

@@ -9,14 +9,14 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "cpkit/rate_problem/model/interface_parameters.hpp"
+
 namespace cpkit::rate {
 
-struct ContactParameters3d {
+/// One 3-D point alone: its interface data (mu, C_T, k_a, P_s), its stiffness block and its
+/// cone, the friction ellipse with half-axes alpha (only the Coulomb criterion (38) in 3-D).
+struct ContactParameters3d : InterfaceParameters {
   Eigen::Matrix3d A = Eigen::Matrix3d::Identity();  ///< stiffness on (T_X, T_Y, N), SPD
-  double mu = 0.5;                                  ///< friction coefficient, > 0
-  double C_T = 0;                                   ///< tangential compliance >= 0
-  double k_a = 0;                                   ///< Archard wear coefficient >= 0
-  double P_s = 1;                                   ///< hardness > 0
   Eigen::Vector2d alpha{1, 1};  ///< ellipse half-axes (alpha_X, alpha_Y) of (39), > 0
   /// Empty when usable; else names the field (A not symmetric or not SPD, mu <= 0, NaN, ...).
   std::string validate() const;

@@ -25,25 +25,32 @@ enum class RateMethod {
 std::string_view to_string(RateMethod m) noexcept;  ///< "enumerate", "analytic", "lemke", "fb-newton", "ipopt"
 std::optional<RateMethod> rate_method_from_string(std::string_view s) noexcept;
 
-/// All solutions of one rate problem, and the quantities that decide them.
-struct RateSolutionSet {
-  std::vector<RateSolution> solutions;  ///< points, segments, rays; types partition the set
-  bool infinite = false;                ///< some piece is a segment or a ray
-  bool complete = true;                 ///< false for single-solution methods (lemke, ...)
-  double Lambda = 0;                    ///< eqn (51) for state d with s = sgn P_T (else 0)
-  double D_plus = 0, D_minus = 0;       ///< D_s = a11 - s mu a12 (state b)
-  bool unique_for_all_directions = false;  ///< b: a11 > mu|a12|; c: true; d: Lambda > 0; a: true
-  /// Componentwise magnitudes used for tolerance comparisons of rates (see contains()):
-  /// forces |dF_T| + |dF_N|, displacement rates that times (C_T + 1/a11 + 1/a22).
-  Rates scale;
-  /// Why the set is incomplete or a single solver failed (empty otherwise).
+/// The solution set of a 2-D rate problem, of one point (Piece = RateSolution) or of N points
+/// (SystemRateSolution, system_rate.hpp): connected pieces (points, segments, rays, never
+/// sampled) whose types partition the set, whether the list is the whole set and why not.
+template <class Piece>
+struct RatePieceSetOf {
+  std::vector<Piece> solutions;  ///< points, segments, rays; types partition the set
+  bool infinite = false;         ///< some piece is a segment or a ray
+  bool complete = true;          ///< false for single-solution methods (lemke, ...)
+  /// Why the set is incomplete or a single solver failed / which one answered (else empty).
   std::string message;
   /// Single solvers: the natural residual ||min(z, w)||_inf of the LCP solution divided by
   /// 1 + ||q||_inf (relative to the data, not to the iterate; 0 otherwise). Checks of such a
   /// point against a complete set should allow an error of order 1e3 x residual.
   double residual = 0;
   /// Number of solutions: -1 when infinite.
-  int count() const noexcept;
+  int count() const noexcept { return infinite ? -1 : static_cast<int>(solutions.size()); }
+};
+
+/// All solutions of one rate problem, and the quantities that decide them.
+struct RateSolutionSet : RatePieceSetOf<RateSolution> {
+  double Lambda = 0;                    ///< eqn (51) for state d with s = sgn P_T (else 0)
+  double D_plus = 0, D_minus = 0;       ///< D_s = a11 - s mu a12 (state b)
+  bool unique_for_all_directions = false;  ///< b: a11 > mu|a12|; c: true; d: Lambda > 0; a: true
+  /// Componentwise magnitudes used for tolerance comparisons of rates (see contains()):
+  /// forces |dF_T| + |dF_N|, displacement rates that times (C_T + 1/a11 + 1/a22).
+  Rates scale;
   /// Bit mask of the types present (bit = static_cast<int>(SolutionType)).
   unsigned type_mask() const noexcept;
 };

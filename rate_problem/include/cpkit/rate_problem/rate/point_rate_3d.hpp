@@ -15,6 +15,7 @@
 /// dw^w = k P_N |D dw_T^i|, k = k_a / (3 P_s). alpha = (1, 1) is the isotropic law, whose wear
 /// (40) is Archard's (37).
 #include <Eigen/Core>
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,13 +50,20 @@ struct RateSolution3d {
   double slip_angle = 0;
 };
 
-struct RateSolutionSet3d {
-  std::vector<RateSolution3d> solutions;
+/// The solution set of a 3-D rate problem, of one point (Solution = RateSolution3d) or of N
+/// points (SystemRateRow3d, system_rate_3d.hpp): the listed solutions (points and rays, each
+/// with its `ray` flag), whether the list is the whole set, and why not.
+template <class Solution>
+struct RateSet3dOf {
+  std::vector<Solution> solutions;
   bool complete = true;  ///< every solution is listed (false: `message` says why)
   std::string message;
   int count() const noexcept { return static_cast<int>(solutions.size()); }
-  bool infinite() const noexcept;  ///< some solution is a ray
+  bool infinite() const noexcept {  ///< some solution is a ray
+    return std::any_of(solutions.begin(), solutions.end(), [](const Solution& s) { return s.ray; });
+  }
 };
+using RateSolutionSet3d = RateSet3dOf<RateSolution3d>;
 
 /// Every solution of the rate problem for the load rate dF = (dF_TX, dF_TY, dF_N).
 /// States a, c: one solution (linear systems). State d: a 1x1 complementarity problem in the

@@ -44,23 +44,16 @@ struct SystemRateSolution {
   SystemRates direction;      ///< ray: direction (unit max-norm in the force components)
 };
 
-/// All solutions of one N-point rate problem.
-struct SystemRateSolutionSet {
-  std::vector<SystemRateSolution> solutions;
-  bool infinite = false;  ///< some piece is a segment or a ray
-  /// false for the single-solver methods, and when the enumeration could not decide every case
-  /// (sign tests too close to call, time limit) or met a piece of dimension >= 2 (a "face" of
-  /// physical solutions, possible for two or more degenerate points; not listed, message says),
-  /// when a candidate piece failed the check of the rate laws (not listed), or cond(A) > 1e8.
-  bool complete = true;
-  std::string message;    ///< why complete is false, or which single solver answered
-  /// Single solvers: the natural residual of the LCP solution (as RateSolutionSet::residual).
-  double residual = 0;
+/// All solutions of one N-point rate problem. `complete` is false for the single-solver
+/// methods, and when the enumeration could not decide every case (sign tests too close to call,
+/// time limit) or met a piece of dimension >= 2 (a "face" of physical solutions, possible for
+/// two or more degenerate points; not listed, message says), when a candidate piece failed the
+/// check of the rate laws (not listed), or cond(A) > 1e8.
+struct SystemRateSolutionSet : RatePieceSetOf<SystemRateSolution> {
   /// Single solvers: the solver's point is not in the enumerated set (CLI exit 3).
   bool disagreement = false;
   /// Force and displacement-rate scales used by the tolerance tests (relative to the load).
   double force_scale = 1, disp_scale = 1;
-  int count() const noexcept;  ///< number of solutions; -1 when infinite
 };
 
 /// Type tuple encoded base 5 in 64 bits: sum_i type_i 5^i (point 1 is the lowest digit;

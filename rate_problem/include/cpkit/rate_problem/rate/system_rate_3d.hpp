@@ -17,21 +17,24 @@
 
 namespace cpkit::rate {
 
-/// One solution: per point its type and rates.
-struct SystemSolution3d {
+/// One solution of a 3-D system's rate problem: per point its type and rates; a ray (one
+/// point, state b or d) starts at `rates` and runs along `direction`.
+struct SystemRateRow3d {
   std::vector<SolutionType> types;
-  std::vector<Rates3d> rates;
+  std::vector<Rates3d> rates;      ///< the point; a ray's origin
+  std::vector<Rates3d> direction;  ///< a ray's direction (empty for a point)
+  bool ray = false;
+  bool origin_included = true;     ///< a ray: is its origin part of it
 };
+using SystemSolution3d = SystemRateRow3d;
 
-struct SystemRateSet3d {
-  std::vector<SystemSolution3d> solutions;  ///< deduplicated physical solutions
-  bool complete = true;  ///< false: a case was not decided or a continuum met (`message`)
-  bool timed_out = false;  ///< the time limit ended the solve (then complete = false)
-  std::string message;
-  int facets = 0;
-  long long nodes = 0;   ///< enumeration search nodes over all subsets
-  int count() const noexcept { return static_cast<int>(solutions.size()); }
+/// Every solution of a 3-D system's rate problem, by either route below.
+struct SystemRateSet3d : RateSet3dOf<SystemRateRow3d> {
+  bool timed_out = false;  ///< the time limit ended the faceted N-point solve (then incomplete)
+  int facets = 0;          ///< 0: the exact one-point route; k: the faceted one
+  long long nodes = 0;     ///< the faceted N-point solve: enumeration search nodes over all subsets
 };
+using SystemRateRoute3d = SystemRateSet3d;
 
 /// Largest number of grazing points (2^n_b separation subsets).
 inline constexpr int kMaxGrazing3d = 10;
@@ -47,27 +50,6 @@ inline constexpr int kMaxGrazing3d = 10;
 SystemRateSet3d solve_system_rate_3d_faceted(const ContactSystem3d& system,
                                              const Eigen::VectorXd& dF, int facets,
                                              double time_limit_s = 60);
-
-/// One solution of a 3-D system's rate problem as the routes below list it: per point its type
-/// and rates; a ray (one point, state b or d) starts at `rates` and runs along `direction`.
-struct SystemRateRow3d {
-  std::vector<SolutionType> types;
-  std::vector<Rates3d> rates;      ///< the point; a ray's origin
-  std::vector<Rates3d> direction;  ///< a ray's direction (empty for a point)
-  bool ray = false;
-  bool origin_included = true;     ///< a ray: is its origin part of it
-};
-
-/// The rate problem of a "dim": 3 system by its route (`cpkit rate --system`, Python).
-struct SystemRateRoute3d {
-  std::vector<SystemRateRow3d> solutions;
-  bool complete = true;    ///< every solution is listed (false: `message` says why)
-  bool timed_out = false;  ///< the time limit ended the faceted N-point solve
-  std::string message;
-  int facets = 0;          ///< 0: the exact one-point route; k: the faceted one
-  int count() const noexcept { return static_cast<int>(solutions.size()); }
-  bool infinite() const noexcept;  ///< some solution is a ray
-};
 
 /// Every solution of a 3-D system's rate problem for dF (3N): one point exactly
 /// (solve_rate_3d, facets = 0) or faceted (solve_rate_3d_faceted, state b only); N > 1 points by
