@@ -116,16 +116,8 @@ class PatternNumbering {
   std::map<std::vector<TypeTuple>, int> index_;
 };
 
-MapAxis as_map_axis(const SystemMapAxis& a) {
-  MapAxis m;
-  m.from = a.from;
-  m.to = a.to;
-  m.n = a.n;
-  return m;
-}
-
 void validate_axis(const SystemMapAxis& a) {
-  throw_if_invalid(as_map_axis(a).validate(), "map axis " + a.param.name());
+  throw_if_invalid(a.validate(), "map axis " + a.param.name());
 }
 
 /// Size of the rate LCP (the same in every row and cell: parameters do not change states).
