@@ -37,17 +37,6 @@ void run_row_blocks(int row0, int row1, int block_rows, int threads, int& block_
   if (progress) progress("cells", 1.0);
 }
 
-/// The classes with cells, in code order (code = index + first_code).
-template <std::size_t K>
-std::vector<GridClassBox> present_classes(std::array<GridClassBox, K>& boxes, int first_code) {
-  std::vector<GridClassBox> v;
-  for (std::size_t c = 0; c < K; ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c) + first_code;
-      v.push_back(boxes[c]);
-    }
-  return v;
-}
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 /// Values of the uniqueness criteria (as uniqueness_criteria, without names or allocation).
@@ -79,6 +68,24 @@ void set_and_validate(const MapAxis& axis, double x, ContactParameters& p, Conta
     throw_if_invalid(e, "map axis " + where() + ": parameters");
   if (std::string e = st.validate(p); !e.empty())
     throw_if_invalid(e, "map axis " + where() + ": contact state");
+}
+
+/// Validates the model of every cell of rows [row0, row1) of a parameter x parameter grid
+/// (the message names both values).
+void validate_cells(const ContactParameters& params, const ContactState& state,
+                    const MapAxis& axis1, const MapAxis& axis2, int row0, int row1) {
+  for (int i = row0; i < row1; ++i)
+    for (int j = 0; j < axis2.n; ++j) {
+      ContactParameters p = params;
+      ContactState st = state;
+      apply_map_parameter(axis1.param, axis1.value(i), p, st);
+      try {
+        set_and_validate(axis2, axis2.value(j), p, st);
+      } catch (const InputError& e) {
+        throw InputError("map cell " + axis1.param.name() + " = " +
+                         std::to_string(axis1.value(i)) + ", " + e.what());
+      }
+    }
 }
 
 /// Zeros of the uniqueness criteria along one axis (the other quantities fixed), located by a
@@ -194,24 +201,11 @@ void validate_map_grid(const ContactParameters& params, const ContactState& stat
                        const MapAxis& axis1, const MapAxis* axis2) {
   throw_if_invalid(axis1.validate(), "map axis " + axis1.param.name());
   if (axis2) throw_if_invalid(axis2->validate(), "map axis " + axis2->param.name());
+  if (axis2) return validate_cells(params, state, axis1, *axis2, 0, axis1.n);
   for (int i = 0; i < axis1.n; ++i) {
     ContactParameters p = params;
     ContactState st = state;
-    if (!axis2) {
-      set_and_validate(axis1, axis1.value(i), p, st);
-      continue;
-    }
-    apply_map_parameter(axis1.param, axis1.value(i), p, st);
-    for (int j = 0; j < axis2->n; ++j) {
-      ContactParameters pj = p;
-      ContactState sj = st;
-      try {
-        set_and_validate(*axis2, axis2->value(j), pj, sj);
-      } catch (const InputError& e) {
-        throw InputError("map cell " + axis1.param.name() + " = " +
-                         std::to_string(axis1.value(i)) + ", " + e.what());
-      }
-    }
+    set_and_validate(axis1, axis1.value(i), p, st);
   }
 }
 
@@ -223,8 +217,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const RowRange& range) {
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis.validate(), "map axis " + axis.param.name());
-  if (theta_n < 1 || theta_n > 1000000)
-    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  check_theta_n(theta_n);
   const Stopwatch clock;
 
   // Per-row model data of the range's rows (index i - row0), validated once.
@@ -378,19 +371,7 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   const Stopwatch clock;
   const int n1 = axis1.n, n2 = axis2.n;
   const auto [row0, row1] = checked_range(range, n1);
-  // Validate every cell's model before any work (the message names both values).
-  for (int i = row0; i < row1; ++i)
-    for (int j = 0; j < n2; ++j) {
-      ContactParameters p = params;
-      ContactState st = state;
-      apply_map_parameter(axis1.param, axis1.value(i), p, st);
-      try {
-        set_and_validate(axis2, axis2.value(j), p, st);
-      } catch (const InputError& e) {
-        throw InputError("map cell " + axis1.param.name() + " = " +
-                         std::to_string(axis1.value(i)) + ", " + e.what());
-      }
-    }
+  validate_cells(params, state, axis1, axis2, row0, row1);  // before any work
 
   ParamParamMap map;
   map.axis1 = axis1;
