@@ -119,8 +119,8 @@ int main(int argc, char** argv) {
     const char* preset;
     MapAxis axis;
   };
-  const Case cases[] = {{"b", "fig5b", MapAxis{MapParameter::kMu, 0.1, 4.0, n}},
-                        {"d", "state-d", MapAxis{MapParameter::kMu, 0.2, 2.5, n}}};
+  const Case cases[] = {{"b", "fig5b", MapAxis{map_parameter("mu"), 0.1, 4.0, n}},
+                        {"d", "state-d", MapAxis{map_parameter("mu"), 0.2, 2.5, n}}};
   for (const Case& c : cases) {
     const MapPreset p = *find_map_preset(c.preset);
     for (const RateMethod method : {RateMethod::kEnumerate, RateMethod::kAnalytic}) {

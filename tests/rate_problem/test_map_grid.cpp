@@ -39,7 +39,7 @@ double lambda_d(double mu, double kappa) {
 
 TEST_CASE("MuDirectionMapHasTheCriticalLineAtA11OverA12", "[map][grid]") {
   // Three solutions exactly for mu > a11/a12 = 2 and theta strictly between L+ = 0 and N = 0.
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 61};  // step 0.05, mu = 2 is row 30
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 61};  // step 0.05, mu = 2 is row 30
   const int tn = 720;
   const ParamDirectionMap m = compute_param_direction_map(fig5(), state_b(), axis, tn);
   REQUIRE(m.cells() == 61 * tn);
@@ -71,7 +71,7 @@ TEST_CASE("MuDirectionMapHasTheCriticalLineAtA11OverA12", "[map][grid]") {
 }
 
 TEST_CASE("RatioAxisPutsTheCriticalLineAtOneOverMu", "[map][grid]") {
-  const MapAxis axis{MapParameter::kA12OverA11, -0.9, 0.9, 19};
+  const MapAxis axis{map_parameter("a12/a11"), -0.9, 0.9, 19};
   const ParamDirectionMap m = compute_param_direction_map(fig5(), state_b(), axis, 36);
   // D+ = a11 (1 - 3 r) = 0 at r = 1/3; D- = a11 (1 + 3 r) = 0 at r = -1/3.
   REQUIRE(m.critical_values.size() == 2);
@@ -84,7 +84,7 @@ TEST_CASE("RatioAxisPutsTheCriticalLineAtOneOverMu", "[map][grid]") {
 TEST_CASE("StateDMapHasLambdaZeroAtMu8Over7", "[map][grid]") {
   const auto preset = find_map_preset("state-d");
   REQUIRE(preset);
-  const MapAxis axis{MapParameter::kMu, 0.2, 2.5, 47};
+  const MapAxis axis{map_parameter("mu"), 0.2, 2.5, 47};
   const int tn = 180;
   const ParamDirectionMap m =
       compute_param_direction_map(preset->params, preset->state, axis, tn);
@@ -113,7 +113,7 @@ TEST_CASE("StateDMapHasLambdaZeroAtMu8Over7", "[map][grid]") {
 TEST_CASE("ParamParamClassesFollowTheSignOfLambda", "[map][grid]") {
   const auto preset = find_map_preset("state-d-mu-kappa");
   REQUIRE(preset);
-  const MapAxis a1{MapParameter::kMu, 0.1, 2.0, 21}, a2{MapParameter::kKappa, 0.0, 2.0, 17};
+  const MapAxis a1{map_parameter("mu"), 0.1, 2.0, 21}, a2{map_parameter("kappa"), 0.0, 2.0, 17};
   const ParamParamMap m = compute_param_param_map(preset->params, preset->state, a1, a2);
   REQUIRE(m.cells() == 21 * 17);
   for (int i = 0; i < a1.n; ++i)
@@ -129,7 +129,7 @@ TEST_CASE("ParamParamClassesFollowTheSignOfLambda", "[map][grid]") {
   REQUIRE(!m.critical_curve.empty());
   for (const auto& p : m.critical_curve) CHECK(std::abs(lambda_d(p.x, p.y)) < 1e-10);
   // State b over mu x a12/a11: unique iff a11 > mu |a12|, never without solution.
-  const MapAxis b1{MapParameter::kMu, 0.2, 3.0, 15}, b2{MapParameter::kA12OverA11, -0.9, 0.9, 13};
+  const MapAxis b1{map_parameter("mu"), 0.2, 3.0, 15}, b2{map_parameter("a12/a11"), -0.9, 0.9, 13};
   const ParamParamMap mb = compute_param_param_map(fig5(), state_b(), b1, b2);
   for (int i = 0; i < b1.n; ++i)
     for (int j = 0; j < b2.n; ++j) {
@@ -141,7 +141,7 @@ TEST_CASE("ParamParamClassesFollowTheSignOfLambda", "[map][grid]") {
 }
 
 TEST_CASE("MapsAreIdenticalForAnyThreadCount", "[map][grid]") {
-  const MapAxis axis{MapParameter::kMu, 0.1, 4.0, 97};
+  const MapAxis axis{map_parameter("mu"), 0.1, 4.0, 97};
   MapOptions o1;
   o1.threads = 1;
   const ParamDirectionMap ref = compute_param_direction_map(fig5(), state_b(), axis, 101, o1);
@@ -161,7 +161,7 @@ TEST_CASE("MapsAreIdenticalForAnyThreadCount", "[map][grid]") {
     CHECK(a.str() == b.str());
   }
   const auto preset = find_map_preset("state-d-mu-kappa");
-  const MapAxis a1{MapParameter::kMu, 0.1, 2.0, 9}, a2{MapParameter::kKappa, 0.0, 2.0, 7};
+  const MapAxis a1{map_parameter("mu"), 0.1, 2.0, 9}, a2{map_parameter("kappa"), 0.0, 2.0, 7};
   const ParamParamMap p1 = compute_param_param_map(preset->params, preset->state, a1, a2, o1);
   MapOptions o3;
   o3.threads = 3;
@@ -173,7 +173,7 @@ TEST_CASE("MapsAreIdenticalForAnyThreadCount", "[map][grid]") {
 TEST_CASE("AnalyticCrossCheckReportsNoDisagreementOnFig5", "[map][grid]") {
   MapOptions o;
   o.method = RateMethod::kAnalytic;
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 31};
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 31};
   const ParamDirectionMap m = compute_param_direction_map(fig5(), state_b(), axis, 90, o);
   CHECK(m.cross_checked);
   CHECK(m.disagreements == 0);
@@ -184,7 +184,7 @@ TEST_CASE("AnalyticCrossCheckReportsNoDisagreementOnFig5", "[map][grid]") {
 }
 
 TEST_CASE("GridMapOutputsParse", "[map][grid][io]") {
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 4};
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 4};
   const ParamDirectionMap m = compute_param_direction_map(fig5(), state_b(), axis, 8);
   std::ostringstream csv;
   write_csv(m, csv);
@@ -210,28 +210,28 @@ TEST_CASE("GridMapOutputsParse", "[map][grid][io]") {
 TEST_CASE("GridMapsRejectBadInput", "[map][grid]") {
   const ContactParameters p = fig5();
   const ContactState s = state_b();
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kMu, 2, 1, 10}, 10),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("mu"), 2, 1, 10}, 10),
                   cpkit::InputError);
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kMu, 0.1, 1, 0}, 10),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("mu"), 0.1, 1, 0}, 10),
                   cpkit::InputError);
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kMu, 0.1, 1, 10}, 0),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("mu"), 0.1, 1, 10}, 0),
                   cpkit::InputError);
   CHECK_THROWS_AS(
-      compute_param_direction_map(p, s, {MapParameter::kMu, std::nan(""), 1, 10}, 10),
+      compute_param_direction_map(p, s, {map_parameter("mu"), std::nan(""), 1, 10}, 10),
       cpkit::InputError);
   // mu <= 0 inside the range: an invalid model row.
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kMu, -1, 1, 10}, 10),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("mu"), -1, 1, 10}, 10),
                   cpkit::InputError);
   // kappa needs P_N > 0 (state b has P_N = 0).
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kKappa, 0, 1, 10}, 10),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("kappa"), 0, 1, 10}, 10),
                   cpkit::InputError);
   MapOptions o;
   o.threads = -1;
-  CHECK_THROWS_AS(compute_param_direction_map(p, s, {MapParameter::kMu, 0.1, 1, 10}, 10, o),
+  CHECK_THROWS_AS(compute_param_direction_map(p, s, {map_parameter("mu"), 0.1, 1, 10}, 10, o),
                   cpkit::InputError);
-  CHECK_THROWS_AS(compute_param_param_map(p, s, {MapParameter::kMu, 0.1, 1, 3},
-                                          {MapParameter::kMu, 0.1, 1, 3}),
+  CHECK_THROWS_AS(compute_param_param_map(p, s, {map_parameter("mu"), 0.1, 1, 3},
+                                          {map_parameter("mu"), 0.1, 1, 3}),
                   cpkit::InputError);
-  CHECK(map_parameter_from_string("a12/a11") == MapParameter::kA12OverA11);
+  CHECK(map_parameter_from_string("a12/a11") == map_parameter("a12/a11"));
   CHECK(!map_parameter_from_string("nonsense"));
 }

@@ -420,7 +420,7 @@ TEST_CASE("map request: the one-point setup from a preset and the options over i
     a.n = 7;
     const MapSetup s = make_map_setup(a);
     CHECK(s.kind == MapKind::kParamDirection);
-    CHECK(s.axis.param == MapParameter::kMu);
+    CHECK(s.axis.param == map_parameter("mu"));
     CHECK(s.axis.n == 7);
     CHECK(s.axis.value(6) == Approx(2.0).epsilon(1e-15));
     CHECK(s.params.a11 == 2.0);
@@ -504,7 +504,7 @@ TEST_CASE("grid map file sinks: the .npy cells are the one-point closed form", "
   fs::create_directories(dir);
   const std::string prefix = (dir / "pd").string();
   MapAxis axis;
-  axis.param = MapParameter::kMu;
+  axis.param = map_parameter("mu");
   axis.from = 0.5;
   axis.to = 3.0;
   axis.n = 4;

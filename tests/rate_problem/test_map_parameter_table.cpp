@@ -20,11 +20,13 @@ TEST_CASE("MapParameterTableGovernsTheThreeParsers", "[map][params]") {
   for (const auto& row : map_parameter_table()) {
     const std::string name = row.name;
     CAPTURE(name);
-    // One point: the enum's name is the table's.
+    // One point: the row found by its name is the row, and applies to a one-point model.
     const auto p1 = map_parameter_from_string(name);
     CHECK(p1.has_value() == bool(row.dimensions & kMapOnePoint));
+    CHECK(bool(row.set_one_point) == bool(row.dimensions & kMapOnePoint));
     if (p1) {
-      CHECK(std::string(to_string(*p1)) == name);
+      CHECK(p1->row == &row);
+      CHECK(p1->name() == name);
       ++one;
     }
     // N points.
@@ -44,7 +46,7 @@ TEST_CASE("MapParameterTableGovernsTheThreeParsers", "[map][params]") {
                         Catch::Contains("'" + name + "'") && Catch::Contains("does not apply"));
     }
   }
-  // The enums' sizes: MapParameter 10 values, SystemMapParameter 6 (P_s included), Map3dParameter 6.
+  // The rows per kind: one point 10, N points 6 (P_s included), 3-D 6.
   CHECK(one == 10);
   CHECK(n_points == 6);
   CHECK(three_d == 6);
@@ -68,6 +70,44 @@ TEST_CASE("MapParameterNamesAreCheckedWithTheirPoint", "[map][params]") {
   CHECK(std::string(r.row->name) == "P_s");
   CHECK(r.point == 2);
   CHECK(parse_system_map_parameter("P_s@2", 2).name() == "P_s@2");
+}
+
+TEST_CASE("OnePointRowsApplyThemselvesToTheModel", "[map][params]") {
+  // The older spellings name the same rows; names of other kinds and NAME@i are not one-point.
+  CHECK(map_parameter_from_string("ratio")->name() == "a12/a11");
+  CHECK(map_parameter_from_string("a12_a11")->name() == "a12/a11");
+  CHECK(map_parameter_from_string("CT")->name() == "C_T");
+  CHECK(map_parameter_from_string("C_t")->name() == "C_T");
+  CHECK(map_parameter_from_string("ka")->name() == "k_a");
+  CHECK(map_parameter_from_string("Ps")->name() == "P_s");
+  CHECK(map_parameter_from_string("PN")->name() == "P_N");
+  CHECK(!map_parameter_from_string("coupling"));
+  CHECK(!map_parameter_from_string("alpha_X"));
+  CHECK(!map_parameter_from_string("mu@1"));
+  CHECK_THROWS_AS(map_parameter("nonsense"), cpkit::InputError);
+
+  // By hand: a12/a11 = 0.25 with a11 = 2 gives a12 = 0.5; kappa = 0.5 with P_s = 2, P_N = 3
+  // gives k_a = 3 P_s kappa / P_N = 1; P_N sets the state's normal force.
+  ContactParameters p;
+  p.a11 = 2;
+  p.P_s = 2;
+  ContactState st;
+  st.P_N = 3;
+  apply_map_parameter(map_parameter("a12/a11"), 0.25, p, st);
+  CHECK(p.a12 == 0.5);
+  CHECK(p.a11 == 2);
+  apply_map_parameter(map_parameter("kappa"), 0.5, p, st);
+  CHECK(p.k_a == 1);
+  apply_map_parameter(map_parameter("P_N"), 7, p, st);
+  CHECK(st.P_N == 7);
+  apply_map_parameter(map_parameter("mu"), 0.75, p, st);
+  CHECK(p.mu == 0.75);
+  // kappa needs P_N > 0; a row of another kind of map does not apply to one point.
+  st.P_N = 0;
+  CHECK_THROWS_WITH(apply_map_parameter(map_parameter("kappa"), 0.5, p, st),
+                    Catch::Contains("needs P_N > 0"));
+  CHECK_THROWS_WITH(apply_map_parameter(map_parameter("coupling"), 0.5, p, st),
+                    Catch::Contains("does not apply to one-point maps"));
 }
 
 TEST_CASE("PsOfAnNPointMapSetsTheHardnessAndTheSlidingLimit", "[map][params]") {

@@ -125,7 +125,7 @@ int chunk_files(const fs::path& parts) {
 }  // namespace
 
 TEST_CASE("MapRunStoppedAfterChunksAndResumedEqualsTheClosedForm", "[map][run]") {
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 13};  // 13 rows: 13 chunks of one row
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 13};  // 13 rows: 13 chunks of one row
   const int tn = 48;
   MapOptions options;
   options.threads = 1;
@@ -183,7 +183,7 @@ TEST_CASE("MapRunStoppedAfterChunksAndResumedEqualsTheClosedForm", "[map][run]")
 }
 
 TEST_CASE("MapRunParamParamResumedEqualsTheOnePassMap", "[map][run]") {
-  const MapAxis a1{MapParameter::kMu, 0.5, 3.5, 7}, a2{MapParameter::kA12, -0.9, 0.9, 5};
+  const MapAxis a1{map_parameter("mu"), 0.5, 3.5, 7}, a2{map_parameter("a12"), -0.9, 0.9, 5};
   MapOptions options;
   options.threads = 1;
   const fs::path dir = scratch("pp");
@@ -217,7 +217,7 @@ TEST_CASE("MapRunParamParamResumedEqualsTheOnePassMap", "[map][run]") {
 }
 
 TEST_CASE("MapRunRefusesTheCheckpointOfAnotherMap", "[map][run]") {
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 4};
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 4};
   MapOptions options;
   options.threads = 1;
   const fs::path dir = scratch("other");
@@ -227,7 +227,7 @@ TEST_CASE("MapRunRefusesTheCheckpointOfAnotherMap", "[map][run]") {
   (void)run_param_direction_map(fig5(), state_b(), axis, 8, options, run);
   run.resume = true;
   run.chunk_limit = -1;
-  const MapAxis other{MapParameter::kMu, 0.5, 3.0, 4};
+  const MapAxis other{map_parameter("mu"), 0.5, 3.0, 4};
   CHECK_THROWS_WITH(run_param_direction_map(fig5(), state_b(), other, 8, options, run),
                     Catch::Contains("axis.to differs"));
   GridRunOptions none;
@@ -282,7 +282,7 @@ TEST_CASE("MapRunOfNPointsStoppedAndResumedEqualsTheOnePassMap", "[map][run][sys
 TEST_CASE("MapRunOverAnInjectedTransportEqualsTheOnePassMap", "[map][run][transport]") {
   // Three ranks as threads: rank 0 hands the chunks out, stores and merges them; the resumed
   // part of a map stopped by a one-process run is not computed again.
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 17};
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 17};
   const int tn = 40;
   MapOptions options;
   options.threads = 1;
@@ -330,7 +330,7 @@ TEST_CASE("MapRunStoppedByItsStopQuestionKeepsTheRowsDoneAndResumes", "[map][run
   // GridRunOptions::stop is `cpkit map`'s time limit (issue 37): asked before every chunk, it
   // ends the run where it says so (here: after 4 chunks, deterministically, where the program
   // asks the clock). The rows done are the one-pass map's first rows; the rest resumes.
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 13};  // 13 chunks of one row
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 13};  // 13 chunks of one row
   const int tn = 48;
   MapOptions options;
   options.threads = 1;
@@ -365,7 +365,7 @@ TEST_CASE("MapRunStoppedByItsStopQuestionKeepsTheRowsDoneAndResumes", "[map][run
 TEST_CASE("MapRunOverATransportStopsHandingOutChunksWhenAskedTo", "[map][run][transport][time]") {
   // The distributed path: rank 0 hands out no chunk once stop() says so; the workers are told
   // to stop, the chunks consumed in order are the one-pass map's first rows.
-  const MapAxis axis{MapParameter::kMu, 0.5, 3.5, 17};
+  const MapAxis axis{map_parameter("mu"), 0.5, 3.5, 17};
   const int tn = 40;
   MapOptions options;
   options.threads = 1;

@@ -18,7 +18,7 @@ TEST_CASE("StreamedParamDirectionBlocksEqualTheInMemoryMap", "[map][grid][stream
   // 2^20 / 50000 = 20 rows per block: 47 rows give three blocks, the last one partial.
   const int theta_n = 50000;
   REQUIRE(grid_block_rows(theta_n) == 20);
-  const MapAxis axis{MapParameter::kMu, 0.1, 4.0, 47};
+  const MapAxis axis{map_parameter("mu"), 0.1, 4.0, 47};
   MapOptions o;
   o.threads = 2;
   const ParamDirectionMap ref = compute_param_direction_map(p.params, p.state, axis, theta_n, o);
@@ -61,7 +61,7 @@ TEST_CASE("StreamedParamDirectionBlocksEqualTheInMemoryMap", "[map][grid][stream
 
 TEST_CASE("StreamedParamParamMapAndThreadedCriticalCurves", "[map][grid][stream]") {
   const MapPreset p = *find_map_preset("state-d-mu-kappa");
-  const MapAxis a1{MapParameter::kMu, 0.1, 2.0, 13}, a2{MapParameter::kKappa, 0.0, 2.0, 11};
+  const MapAxis a1{map_parameter("mu"), 0.1, 2.0, 13}, a2{map_parameter("kappa"), 0.0, 2.0, 11};
   MapOptions o1, o3;
   o1.threads = 1;
   o3.threads = 3;

@@ -150,7 +150,7 @@ TEST_CASE("param-direction map at g = 0 of a decoupled isotropic point is the 2-
   p2.mu = 2.0;
   p2.C_T = 0.25;
   rate::MapAxis a2;
-  a2.param = rate::MapParameter::kMu;
+  a2.param = rate::map_parameter("mu");
   a2.from = 0.5;
   a2.to = 3.0;
   a2.n = 12;

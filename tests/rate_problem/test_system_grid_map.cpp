@@ -24,7 +24,7 @@ namespace {
 
 /// The one-point map of point i of an uncoupled system, on the same axis and directions (with
 /// the default patterns, point i sees dF_i = (cos theta, sin theta)).
-ParamDirectionMap one_point_map(const ContactSystem& S, int i, MapParameter p, double from,
+ParamDirectionMap one_point_map(const ContactSystem& S, int i, MapParameterRef p, double from,
                                 double to, int n, int theta_n) {
   const SystemPoint& pt = S.points[static_cast<std::size_t>(i)];
   MapAxis axis;
@@ -71,7 +71,7 @@ TEST_CASE("N = 1: the system map equals the one-point map cell by cell", "[map][
     S.points.push_back(random_point(rng, trial % 2 ? StateLabel::kB : StateLabel::kD));
     S.A = random_spd(rng, 2);
     const double from = 0.2, to = 4;
-    const ParamDirectionMap one = one_point_map(S, 0, MapParameter::kMu, from, to, 15, 90);
+    const ParamDirectionMap one = one_point_map(S, 0, map_parameter("mu"), from, to, 15, 90);
     REQUIRE(one.disagreements == 0);
     const SystemParamDirectionMap m = compute_system_param_direction_map(S, sys_axis("mu", 1, from, to, 15), 90, threads(1));
     REQUIRE(m.unreliable == 0);
@@ -100,7 +100,7 @@ TEST_CASE("coupling 0: counts and patterns are products of one-point maps", "[ma
     std::vector<ParamDirectionMap> one;
     for (int i = 0; i < 2; ++i) {
       const double a12 = S.A(2 * i, 2 * i + 1);
-      one.push_back(one_point_map(S, i, MapParameter::kA12, a12, a12, 1, 120));
+      one.push_back(one_point_map(S, i, map_parameter("a12"), a12, a12, 1, 120));
     }
     for (int j = 0; j < 120; ++j) {
       const int c1 = one[0].count[j], c2 = one[1].count[j];
@@ -174,11 +174,11 @@ TEST_CASE("N = 1: the system param-param map equals the one-point param-param ma
     S.points.push_back(random_point(rng, trial % 3 ? StateLabel::kB : StateLabel::kD));
     S.A = random_spd(rng, 2);
     MapAxis a1, a2;
-    a1.param = MapParameter::kMu;
+    a1.param = map_parameter("mu");
     a1.from = 0.1;
     a1.to = 4;
     a1.n = 9;
-    a2.param = MapParameter::kCT;
+    a2.param = map_parameter("C_T");
     a2.from = 0;
     a2.to = 2;
     a2.n = 5;

@@ -37,30 +37,7 @@ void run_row_blocks(int row0, int row1, int block_rows, int threads, int& block_
   if (progress) progress("cells", 1.0);
 }
 
-/// The classes with cells, in code order (code = index + first_code).
-template <std::size_t K>
-std::vector<GridClassBox> present_classes(std::array<GridClassBox, K>& boxes, int first_code) {
-  std::vector<GridClassBox> v;
-  for (std::size_t c = 0; c < K; ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c) + first_code;
-      v.push_back(boxes[c]);
-    }
-  return v;
-}
 constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-struct ParamName {
-  MapParameter p;
-  const char* name;
-};
-constexpr ParamName kParamNames[] = {
-    {MapParameter::kMu, "mu"},     {MapParameter::kA11, "a11"},
-    {MapParameter::kA12, "a12"},   {MapParameter::kA22, "a22"},
-    {MapParameter::kA12OverA11, "a12/a11"}, {MapParameter::kCT, "C_T"},
-    {MapParameter::kKa, "k_a"},    {MapParameter::kPs, "P_s"},
-    {MapParameter::kPN, "P_N"},    {MapParameter::kKappa, "kappa"},
-};
 
 /// Values of the uniqueness criteria (as uniqueness_criteria, without names or allocation).
 int criterion_values(const ContactParameters& p, const ContactState& state, double out[2]) {
@@ -86,11 +63,29 @@ int criterion_values(const ContactParameters& p, const ContactState& state, doub
 /// (params, state) with the axis parameter set to `x`; validated (message names the value).
 void set_and_validate(const MapAxis& axis, double x, ContactParameters& p, ContactState& st) {
   apply_map_parameter(axis.param, x, p, st);
-  auto where = [&] { return std::string(to_string(axis.param)) + " = " + std::to_string(x); };
+  auto where = [&] { return axis.param.name() + " = " + std::to_string(x); };
   if (std::string e = p.validate(); !e.empty())
     throw_if_invalid(e, "map axis " + where() + ": parameters");
   if (std::string e = st.validate(p); !e.empty())
     throw_if_invalid(e, "map axis " + where() + ": contact state");
+}
+
+/// Validates the model of every cell of rows [row0, row1) of a parameter x parameter grid
+/// (the message names both values).
+void validate_cells(const ContactParameters& params, const ContactState& state,
+                    const MapAxis& axis1, const MapAxis& axis2, int row0, int row1) {
+  for (int i = row0; i < row1; ++i)
+    for (int j = 0; j < axis2.n; ++j) {
+      ContactParameters p = params;
+      ContactState st = state;
+      apply_map_parameter(axis1.param, axis1.value(i), p, st);
+      try {
+        set_and_validate(axis2, axis2.value(j), p, st);
+      } catch (const InputError& e) {
+        throw InputError("map cell " + axis1.param.name() + " = " +
+                         std::to_string(axis1.value(i)) + ", " + e.what());
+      }
+    }
 }
 
 /// Zeros of the uniqueness criteria along one axis (the other quantities fixed), located by a
@@ -102,7 +97,8 @@ std::vector<std::pair<std::string, double>> criterion_zeros(const ContactParamet
   if (axis.n <= 1) return zeros;
   const auto names = uniqueness_criteria(base, base_state);
   const int scan = std::max(64, 8 * axis.n);
-  if (axis.param == MapParameter::kKappa && !(base_state.P_N > 0)) return zeros;  // no kappa
+  if (axis.param.row->name == std::string_view("kappa") && !(base_state.P_N > 0))
+    return zeros;  // no kappa
   auto model = [&](double x, ContactParameters& p, ContactState& st) {
     p = base;
     st = base_state;
@@ -167,53 +163,6 @@ std::string join_conditions(const std::vector<std::string>& c) {
 }
 }  // namespace
 
-std::string_view to_string(MapParameter p) noexcept {
-  for (const auto& n : kParamNames)
-    if (n.p == p) return n.name;
-  return "?";
-}
-
-std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept {
-  for (const auto& n : kParamNames)
-    if (s == n.name) return n.p;
-  if (s == "ratio" || s == "a12_a11") return MapParameter::kA12OverA11;
-  if (s == "CT" || s == "C_t") return MapParameter::kCT;
-  if (s == "ka") return MapParameter::kKa;
-  if (s == "Ps") return MapParameter::kPs;
-  if (s == "PN") return MapParameter::kPN;
-  return std::nullopt;
-}
-
-std::string map_parameter_names() { return map_parameter_names(kMapOnePoint); }
-
-void apply_map_parameter(MapParameter p, double value, ContactParameters& params,
-                         ContactState& state) {
-  switch (p) {
-    case MapParameter::kMu: params.mu = value; return;
-    case MapParameter::kA11: params.a11 = value; return;
-    case MapParameter::kA12: params.a12 = value; return;
-    case MapParameter::kA22: params.a22 = value; return;
-    case MapParameter::kA12OverA11: params.a12 = value * params.a11; return;
-    case MapParameter::kCT: params.C_T = value; return;
-    case MapParameter::kKa: params.k_a = value; return;
-    case MapParameter::kPs: params.P_s = value; return;
-    case MapParameter::kPN: state.P_N = value; return;
-    case MapParameter::kKappa:
-      if (!(state.P_N > 0))
-        throw InputError("map parameter kappa = k_a P_N / (3 P_s) needs P_N > 0 (state c or d)");
-      params.k_a = 3.0 * params.P_s * value / state.P_N;
-      return;
-  }
-}
-
-std::string MapAxis::validate() const {
-  if (n < 1) return "n must be >= 1, got " + std::to_string(n);
-  if (n > 100000) return "n must be <= 100000, got " + std::to_string(n);
-  if (!std::isfinite(from) || !std::isfinite(to)) return "axis range must be finite";
-  if (n > 1 && !(from < to)) return "axis range needs from < to";
-  return {};
-}
-
 std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& p,
                                                      const ContactState& state) {
   double v[2] = {0, 0};
@@ -250,26 +199,13 @@ int grid_block_rows(int64_t columns) noexcept {
 
 void validate_map_grid(const ContactParameters& params, const ContactState& state,
                        const MapAxis& axis1, const MapAxis* axis2) {
-  throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
-  if (axis2) throw_if_invalid(axis2->validate(), "map axis " + std::string(to_string(axis2->param)));
+  throw_if_invalid(axis1.validate(), "map axis " + axis1.param.name());
+  if (axis2) throw_if_invalid(axis2->validate(), "map axis " + axis2->param.name());
+  if (axis2) return validate_cells(params, state, axis1, *axis2, 0, axis1.n);
   for (int i = 0; i < axis1.n; ++i) {
     ContactParameters p = params;
     ContactState st = state;
-    if (!axis2) {
-      set_and_validate(axis1, axis1.value(i), p, st);
-      continue;
-    }
-    apply_map_parameter(axis1.param, axis1.value(i), p, st);
-    for (int j = 0; j < axis2->n; ++j) {
-      ContactParameters pj = p;
-      ContactState sj = st;
-      try {
-        set_and_validate(*axis2, axis2->value(j), pj, sj);
-      } catch (const InputError& e) {
-        throw InputError("map cell " + std::string(to_string(axis1.param)) + " = " +
-                         std::to_string(axis1.value(i)) + ", " + e.what());
-      }
-    }
+    set_and_validate(axis1, axis1.value(i), p, st);
   }
 }
 
@@ -280,9 +216,8 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
                                               const ParamDirectionSink& sink,
                                               const RowRange& range) {
   throw_if_invalid(options.validate(), "map options");
-  throw_if_invalid(axis.validate(), "map axis " + std::string(to_string(axis.param)));
-  if (theta_n < 1 || theta_n > 1000000)
-    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  throw_if_invalid(axis.validate(), "map axis " + axis.param.name());
+  check_theta_n(theta_n);
   const Stopwatch clock;
 
   // Per-row model data of the range's rows (index i - row0), validated once.
@@ -428,27 +363,15 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
                                       const MapOptions& options, const MapProgress& progress,
                                       const ParamParamSink& sink, const RowRange& range) {
   throw_if_invalid(options.validate(), "map options");
-  throw_if_invalid(axis1.validate(), "map axis " + std::string(to_string(axis1.param)));
-  throw_if_invalid(axis2.validate(), "map axis " + std::string(to_string(axis2.param)));
+  throw_if_invalid(axis1.validate(), "map axis " + axis1.param.name());
+  throw_if_invalid(axis2.validate(), "map axis " + axis2.param.name());
   if (axis1.param == axis2.param)
     throw InputError("param-param map: the two axes vary the same parameter '" +
-                     std::string(to_string(axis1.param)) + "'");
+                     axis1.param.name() + "'");
   const Stopwatch clock;
   const int n1 = axis1.n, n2 = axis2.n;
   const auto [row0, row1] = checked_range(range, n1);
-  // Validate every cell's model before any work (the message names both values).
-  for (int i = row0; i < row1; ++i)
-    for (int j = 0; j < n2; ++j) {
-      ContactParameters p = params;
-      ContactState st = state;
-      apply_map_parameter(axis1.param, axis1.value(i), p, st);
-      try {
-        set_and_validate(axis2, axis2.value(j), p, st);
-      } catch (const InputError& e) {
-        throw InputError("map cell " + std::string(to_string(axis1.param)) + " = " +
-                         std::to_string(axis1.value(i)) + ", " + e.what());
-      }
-    }
+  validate_cells(params, state, axis1, axis2, row0, row1);  // before any work
 
   ParamParamMap map;
   map.axis1 = axis1;

@@ -149,7 +149,7 @@ nlohmann::json to_json(const ParamDirectionMap& map) {
 }
 
 void write_csv_header(const MapAxis& axis, bool cross_checked, std::ostream& out) {
-  out << to_string(axis.param) << ",theta,count,types" << (cross_checked ? ",disagree" : "")
+  out << axis.param.name() << ",theta,count,types" << (cross_checked ? ",disagree" : "")
       << '\n';
 }
 
@@ -224,7 +224,7 @@ nlohmann::json to_json(const ParamParamMap& map) {
 
 void write_csv_header(const MapAxis& axis1, const MapAxis& axis2, bool cross_checked,
                       std::ostream& out) {
-  out << to_string(axis1.param) << ',' << to_string(axis2.param)
+  out << axis1.param.name() << ',' << axis2.param.name()
       << ",class,min_count,max_count,types" << (cross_checked ? ",disagree" : "") << '\n';
 }
 

@@ -2,6 +2,7 @@
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
@@ -13,15 +14,31 @@ namespace {
 constexpr unsigned kAll = kMapOnePoint | kMapNPoints | kMap3d;
 
 /// How a row sets a quantity of one point of an N-point system (every point takes it) and of
-/// a 3-D system.
-template <double InterfaceParameters::*field>
+/// a 3-D system. `field`: a member pointer (the interface's quantities are members of
+/// InterfaceParameters, which every point's parameters derive from).
+template <auto field>
 bool set_point(SystemPoint& p, double v) {
   p.*field = v;
   return true;
 }
-template <double InterfaceParameters::*field>
+template <auto field>
 void set_point_3d(SystemPoint3d& p, double v) {
   p.*field = v;
+}
+
+/// How a row sets a quantity of the model of a one-point map.
+template <auto field>
+void set_one_point(ContactParameters& p, ContactState&, double v) {
+  p.*field = v;
+}
+void set_one_point_a12_over_a11(ContactParameters& p, ContactState&, double v) {
+  p.a12 = v * p.a11;
+}
+void set_one_point_normal_force(ContactParameters&, ContactState& st, double v) { st.P_N = v; }
+void set_one_point_kappa(ContactParameters& p, ContactState& st, double v) {
+  if (!(st.P_N > 0))
+    throw InputError("map parameter kappa = k_a P_N / (3 P_s) needs P_N > 0 (state c or d)");
+  p.k_a = 3.0 * p.P_s * v / st.P_N;
 }
 
 /// P_N: of the points in state c or d (a point in state a or b has none).
@@ -53,29 +70,36 @@ const std::vector<MapParameterRow>& map_parameter_table() {
   static const std::vector<MapParameterRow> table = {
       {"mu", kAll, true, "friction coefficient (of every point, or of point i)",
        "> 0, with the model (validate) at every grid value before any cell",
-       set_point<&InterfaceParameters::mu>, set_point_3d<&InterfaceParameters::mu>},
-      {"a11", kMapOnePoint, false, "A_11 of the 2x2 compliance block", "A positive definite"},
-      {"a12", kMapOnePoint, false, "A_12 (= A_21)", "A positive definite"},
-      {"a22", kMapOnePoint, false, "A_22", "A positive definite"},
-      {"a12/a11", kMapOnePoint, false, "A_12 = value * A_11 (A_11 kept)", "A positive definite"},
-      {"C_T", kAll, true, "tangential compliance", ">= 0", set_point<&InterfaceParameters::C_T>,
-       set_point_3d<&InterfaceParameters::C_T>},
+       set_one_point<&ContactParameters::mu>, set_point<&SystemPoint::mu>,
+       set_point_3d<&SystemPoint3d::mu>},
+      {"a11", kMapOnePoint, false, "A_11 of the 2x2 compliance block", "A positive definite",
+       set_one_point<&ContactParameters::a11>},
+      {"a12", kMapOnePoint, false, "A_12 (= A_21)", "A positive definite",
+       set_one_point<&ContactParameters::a12>},
+      {"a22", kMapOnePoint, false, "A_22", "A positive definite",
+       set_one_point<&ContactParameters::a22>},
+      {"a12/a11", kMapOnePoint, false, "A_12 = value * A_11 (A_11 kept)", "A positive definite",
+       set_one_point_a12_over_a11},
+      {"C_T", kAll, true, "tangential compliance", ">= 0", set_one_point<&ContactParameters::C_T>,
+       set_point<&SystemPoint::C_T>, set_point_3d<&SystemPoint3d::C_T>},
       {"k_a", kAll, true, "Archard wear coefficient (k = k_a / (3 P_s))", ">= 0",
-       set_point<&InterfaceParameters::k_a>, set_point_3d<&InterfaceParameters::k_a>},
-      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0", set_point<&InterfaceParameters::P_s>,
-       set_point_3d<&InterfaceParameters::P_s>},
+       set_one_point<&ContactParameters::k_a>, set_point<&SystemPoint::k_a>,
+       set_point_3d<&SystemPoint3d::k_a>},
+      {"P_s", kAll, true, "hardness (k = k_a / (3 P_s))", "> 0",
+       set_one_point<&ContactParameters::P_s>, set_point<&SystemPoint::P_s>,
+       set_point_3d<&SystemPoint3d::P_s>},
       {"P_N", kMapOnePoint | kMapNPoints, true,
        "normal force of the points in state c or d (a sliding point stays on its friction limit)",
        "> 0; N points: point i must be in state c or d, and some point for P_N",
-       set_normal_force},
+       set_one_point_normal_force, set_normal_force},
       {"kappa", kMapOnePoint, false, "kappa = k_a P_N / (3 P_s): sets k_a = 3 P_s kappa / P_N",
-       "needs P_N > 0 (state c or d)"},
+       "needs P_N > 0 (state c or d)", set_one_point_kappa},
       {"coupling", kMapNPoints, false,
        "A(c) = D + c (A - D): the points' own 2x2 blocks kept, the blocks between points scaled",
        "A(c) positive definite"},
-      {"alpha_X", kMap3d, true, "half-axis alpha_X of the wear ellipse", "> 0", nullptr,
+      {"alpha_X", kMap3d, true, "half-axis alpha_X of the wear ellipse", "> 0", nullptr, nullptr,
        [](SystemPoint3d& p, double v) { p.alpha(0) = v; }},
-      {"alpha_Y", kMap3d, true, "half-axis alpha_Y of the wear ellipse", "> 0", nullptr,
+      {"alpha_Y", kMap3d, true, "half-axis alpha_Y of the wear ellipse", "> 0", nullptr, nullptr,
        [](SystemPoint3d& p, double v) { p.alpha(1) = v; }},
   };
   return table;
@@ -83,6 +107,33 @@ const std::vector<MapParameterRow>& map_parameter_table() {
 
 std::string MapParameterRef::name() const {
   return point > 0 ? row->name + ("@" + std::to_string(point)) : std::string(row->name);
+}
+
+MapParameterRef map_parameter(std::string_view name) {
+  const auto& table = map_parameter_table();
+  const auto it = std::find_if(table.begin(), table.end(),
+                               [&](const MapParameterRow& r) { return name == r.name; });
+  if (it == table.end()) throw InputError("unknown map parameter '" + std::string(name) + "'");
+  return MapParameterRef{&*it, 0};
+}
+
+std::optional<MapParameterRef> map_parameter_from_string(std::string_view name) {
+  // The spellings one-point maps accepted before the table (scripts still use them).
+  static constexpr std::pair<const char*, const char*> kOlderSpellings[] = {
+      {"ratio", "a12/a11"}, {"a12_a11", "a12/a11"}, {"CT", "C_T"}, {"C_t", "C_T"},
+      {"ka", "k_a"},        {"Ps", "P_s"},          {"PN", "P_N"}};
+  for (const auto& [old, now] : kOlderSpellings)
+    if (name == old) name = now;
+  for (const auto& r : map_parameter_table())
+    if (name == r.name && (r.dimensions & kMapOnePoint)) return MapParameterRef{&r, 0};
+  return std::nullopt;
+}
+
+void apply_map_parameter(const MapParameterRef& p, double value, ContactParameters& params,
+                         ContactState& state) {
+  if (!p.row->set_one_point)
+    throw InputError("map parameter '" + p.name() + "' does not apply to one-point maps");
+  p.row->set_one_point(params, state, value);
 }
 
 std::string map_parameter_names(MapDimension dimension, int n_points) {

@@ -31,8 +31,8 @@ MapPreset fig5(const char* name, double mu) {
   p.state.label = StateLabel::kB;
   p.state.P_N = 0;
   p.kind = MapKind::kDirection;
-  p.axis = MapAxis{MapParameter::kMu, 0.1, 4.0, 400};
-  p.axis2 = MapAxis{MapParameter::kCT, 0.0, 1.0, 200};
+  p.axis = MapAxis{map_parameter("mu"), 0.1, 4.0, 400};
+  p.axis2 = MapAxis{map_parameter("C_T"), 0.0, 1.0, 200};
   return p;
 }
 }  // namespace
@@ -63,16 +63,16 @@ const std::vector<MapPreset>& map_presets() {
     d.state.P_N = 1;
     d.state.sgn_PT = +1;
     d.kind = MapKind::kParamDirection;
-    d.axis = MapAxis{MapParameter::kMu, 0.2, 2.5, 400};
-    d.axis2 = MapAxis{MapParameter::kKappa, 0.0, 2.0, 200};
+    d.axis = MapAxis{map_parameter("mu"), 0.2, 2.5, 400};
+    d.axis2 = MapAxis{map_parameter("kappa"), 0.0, 2.0, 200};
     v.push_back(d);
 
     MapPreset dk = d;
     dk.name = "state-d-mu-kappa";
     dk.description = "the state-d model, mu in [0.1, 2] x kappa in [0, 2] (param-param)";
     dk.kind = MapKind::kParamParam;
-    dk.axis = MapAxis{MapParameter::kMu, 0.1, 2.0, 200};
-    dk.axis2 = MapAxis{MapParameter::kKappa, 0.0, 2.0, 200};
+    dk.axis = MapAxis{map_parameter("mu"), 0.1, 2.0, 200};
+    dk.axis2 = MapAxis{map_parameter("kappa"), 0.0, 2.0, 200};
     v.push_back(dk);
     return v;
   }();

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the map engines: running independent work items (rows of a grid map) on threads.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -44,6 +45,24 @@ inline std::pair<int, int> checked_range(const RowRange& r, int rows) {
     throw InputError("row range [" + std::to_string(r.begin) + ", " + std::to_string(end) +
                      ") is outside the map's " + std::to_string(rows) + " rows");
   return {r.begin, end};
+}
+
+/// Throws InputError unless a param-direction map's direction count is in [1, 1000000].
+inline void check_theta_n(int theta_n) {
+  if (theta_n < 1 || theta_n > 1000000)
+    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+}
+
+/// The classes of a grid map with cells, in code order (code = index + first_code).
+template <std::size_t K>
+std::vector<GridClassBox> present_classes(std::array<GridClassBox, K>& boxes, int first_code) {
+  std::vector<GridClassBox> v;
+  for (std::size_t c = 0; c < K; ++c)
+    if (boxes[c].cells > 0) {
+      boxes[c].code = static_cast<int>(c) + first_code;
+      v.push_back(boxes[c]);
+    }
+  return v;
 }
 
 inline int resolve_threads(int requested, int64_t work_items) {

@@ -144,18 +144,6 @@ void apply_map_3d_parameter(const Map3dParameter& p, double v, ContactSystem3d& 
       p.row->set_point_3d(sys.points[static_cast<std::size_t>(i)], v);
 }
 
-double Map3dAxis::value(int i) const noexcept {
-  return n <= 1 ? from : from + (to - from) * (static_cast<double>(i) / (n - 1));
-}
-
-std::string Map3dAxis::validate() const {
-  if (n < 1 || n > 1000000) return "n must be in [1, 1000000]";
-  if (!std::isfinite(from)) return "from must be finite";
-  if (!std::isfinite(to)) return "to must be finite";
-  if (n > 1 && !(from < to)) return "from must be < to";
-  return {};
-}
-
 std::string Map3dOptions::validate(const ContactSystem3d& sys) const {
   const int N = sys.n_points();
   if (facets != 0 && (facets < 3 || facets > kMaxFacets))

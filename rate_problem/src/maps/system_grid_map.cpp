@@ -116,16 +116,8 @@ class PatternNumbering {
   std::map<std::vector<TypeTuple>, int> index_;
 };
 
-MapAxis as_map_axis(const SystemMapAxis& a) {
-  MapAxis m;
-  m.from = a.from;
-  m.to = a.to;
-  m.n = a.n;
-  return m;
-}
-
 void validate_axis(const SystemMapAxis& a) {
-  throw_if_invalid(as_map_axis(a).validate(), "map axis " + a.param.name());
+  throw_if_invalid(a.validate(), "map axis " + a.param.name());
 }
 
 /// Size of the rate LCP (the same in every row and cell: parameters do not change states).
@@ -239,8 +231,7 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
                                                            const RowRange& range) {
   check_common(system, options);
   validate_axis(axis);
-  if (theta_n < 1 || theta_n > 1000000)
-    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  check_theta_n(theta_n);
   const int n = axis.n;
   if (!sink && static_cast<int64_t>(n) * theta_n > kMaxSystemMapCells)
     throw InputError("the map has " + std::to_string(static_cast<int64_t>(n) * theta_n) +
@@ -316,13 +307,7 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
     map.count = std::move(count);
     map.pattern = std::move(pattern);
   }
-  for (std::size_t c = 0; c < boxes.size(); ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c) - 1;
-      map.classes.push_back(boxes[c]);
-    }
-  std::sort(map.classes.begin(), map.classes.end(),
-            [](const GridClassBox& a, const GridClassBox& b) { return a.code < b.code; });
+  map.classes = present_classes(boxes, -1);  // by count, -1 (a continuum) first
   map.seconds = clock.seconds();
   return map;
 }
@@ -412,11 +397,7 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
     map.max_count = std::move(hi);
     map.pattern = std::move(pattern);
   }
-  for (std::size_t c = 0; c < boxes.size(); ++c)
-    if (boxes[c].cells > 0) {
-      boxes[c].code = static_cast<int>(c);
-      map.classes.push_back(boxes[c]);
-    }
+  map.classes = present_classes(boxes, 0);
   map.seconds = clock.seconds();
   return map;
 }
@@ -445,8 +426,7 @@ SystemMapEstimate estimate_system_param_direction_map(const ContactSystem& syste
                                                       const MapOptions& options) {
   check_common(system, options);
   validate_axis(axis);
-  if (theta_n < 1 || theta_n > 1000000)
-    throw InputError("theta-n must be in [1, 1000000], got " + std::to_string(theta_n));
+  check_theta_n(theta_n);
   checked_lcp_size(system);
   SystemMapEstimate e;
   e.cells = static_cast<double>(axis.n) * theta_n;

@@ -57,25 +57,24 @@ std::string map_count_text(int count) {
 }
 
 std::string map_model_text(const ContactParameters& p, const ContactState& s,
-                           const std::vector<MapParameter>& axes) {
-  auto on_axis = [&](std::initializer_list<MapParameter> ps) {
-    for (auto a : axes)
-      for (auto q : ps)
-        if (a == q) return true;
+                           const std::vector<MapParameterRef>& axes) {
+  // A value is "(axis)" when an axis varies it, directly or through a row that sets it.
+  auto on_axis = [&](std::initializer_list<std::string_view> names) {
+    for (const auto& a : axes)
+      for (auto q : names)
+        if (q == a.row->name) return true;
     return false;
   };
-  auto v = [&](const char* name, double x, std::initializer_list<MapParameter> ps) {
-    return std::string(name) + " = " + (on_axis(ps) ? std::string("(axis)") : num_text(x, 4));
+  auto v = [&](const char* name, double x, std::initializer_list<std::string_view> names) {
+    return std::string(name) + " = " + (on_axis(names) ? std::string("(axis)") : num_text(x, 4));
   };
-  using P = MapParameter;
-  std::string t = "state " + std::string(to_string(s.label)) + ", " +
-                  v("a11", p.a11, {P::kA11}) + ", " + v("a12", p.a12, {P::kA12, P::kA12OverA11}) +
-                  ", " + v("a22", p.a22, {P::kA22}) + ", " + v("mu", p.mu, {P::kMu}) + ", " +
-                  v("C_T", p.C_T, {P::kCT});
+  std::string t = "state " + std::string(to_string(s.label)) + ", " + v("a11", p.a11, {"a11"}) +
+                  ", " + v("a12", p.a12, {"a12", "a12/a11"}) + ", " + v("a22", p.a22, {"a22"}) +
+                  ", " + v("mu", p.mu, {"mu"}) + ", " + v("C_T", p.C_T, {"C_T"});
   if (s.label == StateLabel::kC || s.label == StateLabel::kD)
-    t += ", " + v("P_N", s.P_N, {P::kPN}) + ", " + v("k_a", p.k_a, {P::kKa, P::kKappa}) + ", " +
-         v("P_s", p.P_s, {P::kPs}) + ", " +
-         v("kappa", p.kappa(s.P_N), {P::kKappa, P::kKa, P::kPN, P::kPs}) +
+    t += ", " + v("P_N", s.P_N, {"P_N"}) + ", " + v("k_a", p.k_a, {"k_a", "kappa"}) + ", " +
+         v("P_s", p.P_s, {"P_s"}) + ", " +
+         v("kappa", p.kappa(s.P_N), {"kappa", "k_a", "P_N", "P_s"}) +
          (s.label == StateLabel::kD ? ", sgn P_T = " + std::to_string(s.sgn_PT) : "");
   if (p.criterion == Criterion::kSoftening)
     t += ", criterion (35)" +

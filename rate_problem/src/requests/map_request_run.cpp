@@ -212,7 +212,7 @@ bool run_param_direction_grid(OnePointRun& p, GridFiles& out, const GridRunOptio
   ParamDirectionMap& m = res.map;
   record_grid_result(p, m, res.stats, "cells");
   for (const auto& [i, k] : shown)
-    err_of(p.env) << "  " << to_string(m.axis.param) << " = " << m.axis.value(i)
+    err_of(p.env) << "  " << m.axis.param.name() << " = " << m.axis.value(i)
                   << ", theta = " << m.theta[k] << '\n';
   write_critical(p, m);
   p.text = param_direction_map_text(p.j, s, p.a.theta_from || p.a.theta_to);

@@ -19,6 +19,7 @@ struct GridEstimate {
   double memory = 0;   ///< bytes
   double output = 0;   ///< bytes written (0 without writing)
   int threads = 1;
+  int sampled = 0;     ///< cells timed (N-point maps)
 };
 
 GridEstimate estimate_param_direction_map(const ContactParameters& params,

@@ -21,42 +21,9 @@
 #include <vector>
 
 #include "cpkit/rate_problem/maps/direction_map.hpp"
+#include "cpkit/rate_problem/maps/map_axis.hpp"
 
 namespace cpkit::rate {
-
-/// A model quantity a map axis can vary.
-enum class MapParameter {
-  kMu,          ///< "mu": friction coefficient
-  kA11,         ///< "a11"
-  kA12,         ///< "a12"
-  kA22,         ///< "a22"
-  kA12OverA11,  ///< "a12/a11": a12 = value * a11 (a11 kept)
-  kCT,          ///< "C_T": tangential compliance
-  kKa,          ///< "k_a": Archard wear coefficient
-  kPs,          ///< "P_s": hardness
-  kPN,          ///< "P_N": normal contact force of state c/d
-  kKappa,       ///< "kappa" = k_a P_N / (3 P_s): sets k_a = 3 P_s kappa / P_N (needs P_N > 0)
-};
-std::string_view to_string(MapParameter p) noexcept;
-std::optional<MapParameter> map_parameter_from_string(std::string_view s) noexcept;
-/// Comma-separated list of the accepted names (for messages): the map parameter table's
-/// (map_parameter_table.hpp) for one-point maps.
-std::string map_parameter_names();
-
-/// Sets `p` to `value` in (params, state). Throws InputError when impossible (kappa with P_N = 0).
-void apply_map_parameter(MapParameter p, double value, ContactParameters& params,
-                         ContactState& state);
-
-/// An axis: n >= 1 values from `from` to `to` inclusive (n = 1: just `from`).
-struct MapAxis {
-  MapParameter param = MapParameter::kMu;
-  double from = 0, to = 1;
-  int n = 100;
-  double value(int i) const noexcept {
-    return n <= 1 ? from : from + (to - from) * static_cast<double>(i) / (n - 1);
-  }
-  std::string validate() const;  ///< empty when usable (finite ends, from < to unless n = 1, n >= 1)
-};
 
 /// A zero of an analytic criterion along a parameter (state b: D_+ / D_-, state d: Lambda).
 struct CriticalValue {
@@ -118,13 +85,15 @@ struct RowRange {
 void validate_map_grid(const ContactParameters& params, const ContactState& state,
                        const MapAxis& axis1, const MapAxis* axis2 = nullptr);
 
-/// Rows [row_begin, row_end) of a parameter x direction map; arrays are row-major with theta_n
-/// columns (disagree: nullptr unless cross-checked).
+/// Rows [row_begin, row_end) of a parameter x direction map of one point or of N points
+/// (system_grid_map.hpp); arrays are row-major with theta_n columns, null where the kind has
+/// none (disagree: one point, cross-checked only; pattern: N points).
 struct ParamDirectionRows {
   int row_begin = 0, row_end = 0;
   const int8_t* count = nullptr;
-  const uint8_t* types = nullptr;
+  const uint8_t* types = nullptr;     ///< one point: the type mask
   const uint8_t* disagree = nullptr;
+  const uint16_t* pattern = nullptr;  ///< N points: ids into the map's pattern table (final)
 };
 using ParamDirectionSink = std::function<void(const ParamDirectionRows&)>;
 
@@ -170,14 +139,16 @@ enum class UniquenessClass : uint8_t {
 /// "unique", "non-unique", "no-solution", "none-and-several"
 std::string_view to_string(UniquenessClass c) noexcept;
 
-/// Rows [row_begin, row_end) of a parameter x parameter map, row-major with axis2.n columns.
+/// Rows [row_begin, row_end) of a parameter x parameter map of one point or of N points,
+/// row-major with axis2.n columns, null where the kind has none (as ParamDirectionRows).
 struct ParamParamRows {
   int row_begin = 0, row_end = 0;
-  const uint8_t* cls = nullptr;
+  const uint8_t* cls = nullptr;  ///< UniquenessClass
   const int8_t* min_count = nullptr;
   const int8_t* max_count = nullptr;
-  const uint8_t* types = nullptr;
-  const uint8_t* disagree = nullptr;  ///< nullptr unless cross-checked
+  const uint8_t* types = nullptr;     ///< one point: the union of the type masks
+  const uint8_t* disagree = nullptr;  ///< one point: nullptr unless cross-checked
+  const uint16_t* pattern = nullptr;  ///< N points: the union of the type tuples, as an id
 };
 using ParamParamSink = std::function<void(const ParamParamRows&)>;
 

@@ -29,14 +29,9 @@ struct GridRunOptions {
   std::function<bool()> stop;
 };
 
-struct ParamDirectionRun {
-  ParamDirectionMap map;  ///< rank 0 (summary always; cells only without a sink)
-  ChunkRunStats stats;
-};
-struct ParamParamRun {
-  ParamParamMap map;
-  ChunkRunStats stats;
-};
+/// map: rank 0 (summary always; cells only without a sink).
+using ParamDirectionRun = GridMapRun<ParamDirectionMap>;
+using ParamParamRun = GridMapRun<ParamParamMap>;
 
 /// The map's rows go to `sink` on rank 0 in row order (without a sink: into map.count/types/
 /// disagree). Ranks other than 0 return an empty map. map.seconds is the run's wall time.

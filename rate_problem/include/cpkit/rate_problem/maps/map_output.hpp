@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "cpkit/rate_problem/maps/grid_map.hpp"
@@ -22,16 +21,11 @@ nlohmann::json types_to_json(unsigned mask);   ///< ["stick", "slip+"]
 
 nlohmann::json model_to_json(const ContactParameters& params, const ContactState& state);
 
-/// {"param", "from", "to", "n"} of a grid map's axis (one point: MapAxis, N points:
-/// SystemMapAxis), as the summaries and the checkpoint manifests hold it.
-template <class Axis>
-nlohmann::json axis_json(const Axis& a) {
-  std::string param;
-  if constexpr (std::is_same_v<Axis, MapAxis>)
-    param = to_string(a.param);
-  else
-    param = a.param.name();
-  return {{"param", param}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
+/// {"param", "from", "to", "n"} of a grid map's axis (map_axis.hpp), as the summaries and the
+/// checkpoint manifests hold it.
+template <AxisSpacing Spacing>
+nlohmann::json axis_json(const GridAxis<Spacing>& a) {
+  return {{"param", a.param.name()}, {"from", a.from}, {"to", a.to}, {"n", a.n}};
 }
 
 /// {"sectors": [{theta_from, theta_to, count, types}], "critical": [{theta, count, types,

@@ -91,6 +91,14 @@ struct ChunkRunStats {
   int rows_done = 0;      ///< rows consumed, from the first on (rank 0): all of them when complete
 };
 
+/// A grid map run in chunks (grid_map_run.hpp, system_grid_map_run.hpp): the map (rank 0) and
+/// what the run did.
+template <class Map>
+struct GridMapRun {
+  Map map;
+  ChunkRunStats stats;
+};
+
 /// Runs the map's chunks (every rank calls it). Errors during the distributed phase end the
 /// whole job (MapTransport::abort naming the rank). Throws InputError (before any work) when a
 /// resume meets a checkpoint of a different map, or a file there cpkit did not write.

@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 
+#include "cpkit/rate_problem/maps/map_axis.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
@@ -72,14 +73,6 @@ using Map3dParameter = MapParameterRef;
 Map3dParameter parse_map_3d_parameter(std::string_view s, int n_points);
 /// Sets the parameter in the system (no validation).
 void apply_map_3d_parameter(const Map3dParameter& p, double value, ContactSystem3d& system);
-
-struct Map3dAxis {
-  Map3dParameter param;
-  double from = 0, to = 1;
-  int n = 100;
-  double value(int i) const noexcept;  ///< from + (to - from) i / (n - 1); n = 1: from
-  std::string validate() const;        ///< finite ends, from < to unless n = 1, n in [1, 1e6]
-};
 
 struct Map3dOptions {
   int facets = 0;  ///< 0: exact (one point only); K in [3, 64]: the faceted route

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cpkit/rate_problem/maps/grid_estimate.hpp"
 #include "cpkit/rate_problem/maps/grid_map.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
@@ -44,16 +45,6 @@ SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points);
 ContactSystem apply_system_map_parameter(const ContactSystem& base, const SystemMapParameter& p,
                                          double value);
 
-/// An axis of an N-point map: `n` values of a system parameter from `from` to `to` inclusive.
-struct SystemMapAxis {
-  SystemMapParameter param;
-  double from = 0, to = 1;
-  int n = 100;
-  double value(int i) const noexcept {
-    return n <= 1 ? from : from + (to - from) * static_cast<double>(i) / (n - 1);
-  }
-};
-
 /// Distinct point-type patterns of a map, numbered in order of first appearance (row-major).
 /// A pattern is a sorted list of type tuples (empty: no solution).
 struct SystemPatternTable {
@@ -61,14 +52,9 @@ struct SystemPatternTable {
   std::vector<int64_t> cells;  ///< cells per pattern
 };
 
-/// Rows [row_begin, row_end) of an N-point parameter x direction map, row-major with theta_n
-/// columns; pattern ids index the map's pattern table (final: ids never change later).
-struct SystemParamDirectionRows {
-  int row_begin = 0, row_end = 0;
-  const int8_t* count = nullptr;
-  const uint16_t* pattern = nullptr;
-};
-using SystemParamDirectionSink = std::function<void(const SystemParamDirectionRows&)>;
+/// Rows of an N-point parameter x direction map: count and pattern (grid_map.hpp).
+using SystemParamDirectionRows = ParamDirectionRows;
+using SystemParamDirectionSink = ParamDirectionSink;
 
 struct SystemParamDirectionMap {
   SystemMapAxis axis;
@@ -103,16 +89,10 @@ SystemParamDirectionMap compute_system_param_direction_map(
     const MapOptions& options = {}, const MapProgress& progress = {},
     const SystemParamDirectionSink& sink = {}, const RowRange& rows = {});
 
-/// Rows [row_begin, row_end) of an N-point parameter x parameter map, row-major with axis2.n
-/// columns (codes as ParamParamMap; pattern: the union of the type tuples over all directions).
-struct SystemParamParamRows {
-  int row_begin = 0, row_end = 0;
-  const uint8_t* cls = nullptr;  ///< UniquenessClass
-  const int8_t* min_count = nullptr;
-  const int8_t* max_count = nullptr;
-  const uint16_t* pattern = nullptr;
-};
-using SystemParamParamSink = std::function<void(const SystemParamParamRows&)>;
+/// Rows of an N-point parameter x parameter map: cls, min_count, max_count and pattern
+/// (grid_map.hpp).
+using SystemParamParamRows = ParamParamRows;
+using SystemParamParamSink = ParamParamSink;
 
 struct SystemParamParamMap {
   SystemMapAxis axis1, axis2;
@@ -145,12 +125,8 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
 /// Up-front cost of a map: the cell phase's time extrapolated from a timed sample of the same
 /// map's cells (spread over the grid, one thread, stopped after about a second of sampling).
 /// Cells of one map can differ in cost by orders of magnitude: an estimate, not a bound.
-struct SystemMapEstimate {
-  double cells = 0;
-  double seconds = 0;  ///< on `threads` workers
-  int threads = 1;
-  int sampled = 0;     ///< cells timed
-};
+/// Filled: cells, seconds (on `threads` workers), threads, sampled (grid_estimate.hpp).
+using SystemMapEstimate = GridEstimate;
 SystemMapEstimate estimate_system_param_direction_map(const ContactSystem& system,
                                                       const SystemMapAxis& axis, int theta_n,
                                                       const MapOptions& options = {});

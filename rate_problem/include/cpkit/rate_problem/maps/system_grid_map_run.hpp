@@ -11,14 +11,9 @@
 
 namespace cpkit::rate {
 
-struct SystemParamDirectionRun {
-  SystemParamDirectionMap map;  ///< rank 0: table, classes, counters; cells only without a sink
-  ChunkRunStats stats;
-};
-struct SystemParamParamRun {
-  SystemParamParamMap map;
-  ChunkRunStats stats;
-};
+/// map: rank 0 (table, classes, counters; cells only without a sink).
+using SystemParamDirectionRun = GridMapRun<SystemParamDirectionMap>;
+using SystemParamParamRun = GridMapRun<SystemParamParamMap>;
 
 /// The rows go to `sink` on rank 0 in row order with the map's final pattern ids (without a
 /// sink: into map.count/pattern). Ranks other than 0 return an empty map.

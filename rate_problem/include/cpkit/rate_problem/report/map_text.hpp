@@ -27,7 +27,7 @@ std::string map_count_text(int count);
 
 /// The one-point model in one line; the quantities that vary along a map axis are "(axis)".
 std::string map_model_text(const ContactParameters& p, const ContactState& s,
-                           const std::vector<MapParameter>& axes = {});
+                           const std::vector<MapParameterRef>& axes = {});
 
 /// "NAME (KIND): DESCRIPTION" per preset (`cpkit map --list-presets`).
 std::string map_presets_text();
