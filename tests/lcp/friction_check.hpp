@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -86,6 +87,15 @@ void check_random_rigid_problems(Solve solve) {
   }
   INFO("solved " << solved << " of " << tried);
   CHECK(solved >= tried * 3 / 4);
+}
+
+/// Time limits from `from` to `to` seconds, each `factor` times the one before: a sweep that
+/// ends a solve at each of its stages (the tests of a limit that runs out between two readings
+/// of the clock, which must give a time limit, never a refusal of the limit as bad input).
+inline std::vector<double> time_limit_sweep(double from, double to, double factor) {
+  std::vector<double> limits;
+  for (double t = from; t <= to; t *= factor) limits.push_back(t);
+  return limits;
 }
 
 }  // namespace cpkit::test
