@@ -218,6 +218,17 @@ SolveResult solve_auto(const FrictionContactProblem& p, const CommonOptions& o) 
     best = finalize(p, std::move(best), o);
     best.solver = solver;
   }
+  // A chain the clock cut short (a solver stopped by it, or one never started) has not shown
+  // that its solvers fail: the best unverified answer's own status (e.g. nsgs' iteration_limit)
+  // would say so. Its status is the time limit; the message keeps the answer's own.
+  const bool clock_cut = std::any_of(best.attempts.begin(), best.attempts.end(),
+                                     [](const Attempt& a) { return a.status == Status::kTimeLimit; });
+  if (clock_cut && !is_solution(best.status)) {
+    best.message = "auto: time limit reached; best answer by " + best.solver + " (" +
+                   std::string(to_string(best.status)) + ")" +
+                   (best.message.empty() ? "" : ": " + best.message);
+    best.status = Status::kTimeLimit;
+  }
   best.seconds = clock.seconds();
   return best;
 }
