@@ -14,6 +14,7 @@
 #include "cpkit/core/units.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/core/timer.hpp"
+#include "uniform01.hpp"
 
 namespace cpkit::lcp {
 
@@ -269,8 +270,7 @@ bool within_divergence_bound(const Vec& z, const McpProblem& mcp) {
   return z.allFinite() && z.lpNorm<Eigen::Infinity>() <= 1e10 * ref;
 }
 
-/// Uniform double in [0, 1) from the 53 high bits of a 64-bit draw (portable across libraries).
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+using detail::uniform01;
 
 Vec restart_point(const McpProblem& mcp, Eigen::Index N, std::mt19937_64& rng) {
   Vec y = Vec::Zero(N);

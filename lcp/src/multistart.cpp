@@ -9,6 +9,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/mpcc_solvers.hpp"
 #include "cpkit/lcp/solvers.hpp"
+#include "uniform01.hpp"
 
 namespace cpkit::lcp {
 
@@ -34,7 +35,7 @@ std::string MultistartOptions::validate(Eigen::Index n) const {
 
 namespace {
 
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+using detail::uniform01;
 
 // Relative to the points' own size (no absolute floor: the same in any units; two zero vectors
 // are the same).

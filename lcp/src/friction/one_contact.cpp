@@ -11,7 +11,6 @@
 namespace cpkit::lcp::friction {
 namespace {
 
-constexpr double kLocalTol = 1e-9;
 using Cplx = std::complex<double>;
 
 struct Candidates {
@@ -180,7 +179,7 @@ Candidates candidates(const Mat3& W, const Vec3& b, double mu) {
   return c;
 }
 
-bool valid(const Candidates& c, int i) { return c.res[i] <= kLocalTol; }
+bool valid(const Candidates& c, int i) { return c.res[i] <= kOneContactLocalTol; }
 
 }  // namespace
 

@@ -9,8 +9,6 @@
 namespace cpkit::lcp::friction {
 namespace {
 
-// one_contact.hpp's acceptance of a local solution.
-constexpr double kLocalTol = 1e-9;
 // Newton steps in phi: at most this many, each cut to half a radian (a step beyond it would
 // jump to another root of the direction equation, or nowhere).
 constexpr int kSlipSteps = 16;
@@ -47,7 +45,7 @@ bool slip_from(const Mat3& A, const Vec3& b, double mu, double phi0, Vec3& r) {
   const double we = A.row(0).dot(e);
   if (!(we != 0)) return false;
   r = (-b[0] / we) * e;
-  return r[0] > 0 && one_contact_residual(A, b, mu, r) <= kLocalTol;
+  return r[0] > 0 && one_contact_residual(A, b, mu, r) <= kOneContactLocalTol;
 }
 
 // The direction angle of the slip whose tangential force is opposite to t (r_T = -|r_T| d).
@@ -94,7 +92,7 @@ bool one_contact_newton(const Mat3& A, const Mat3* A_inv, const Vec3& b, double 
   const Vec3 x = -((A_inv ? *A_inv : own_inverse) * b);
   const double x_t = std::hypot(x[1], x[2]);
   if (x[0] > 0 && x_t <= mu * x[0] &&
-      (A_inv || one_contact_residual(A, b, mu, x) <= kLocalTol)) {
+      (A_inv || one_contact_residual(A, b, mu, x) <= kOneContactLocalTol)) {
     r = x;
     return true;
   }

@@ -19,6 +19,7 @@
 #include "cpkit/lcp/friction/prox.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "friction_common.hpp"
+#include "../uniform01.hpp"
 
 namespace cpkit::lcp::friction {
 namespace {
@@ -35,9 +36,7 @@ constexpr double kEnumerationSeconds = 5;
 constexpr Eigen::Index kIpoptContacts = 10;
 constexpr double kEnumerationRegularisation = 1e-8;
 
-// 53-bit uniform in [0, 1): the same sequence on every platform (std::uniform_real_distribution
-// is not specified bit for bit).
-double uniform(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
+using lcp::detail::uniform01;
 
 struct Collector {
   const FrictionContactProblem& p;
@@ -204,8 +203,8 @@ FrictionSolutionSet friction_solutions(const FrictionContactProblem& p,
     po.common.time_limit_s = remaining();
     po.r0.resize(n);
     for (Eigen::Index i = 0; i < nc; ++i) {
-      const double rn = 2 * r_ref * uniform(gen);
-      const double rad = p.mu[i] * rn * std::sqrt(uniform(gen)), th = 2 * kPi * uniform(gen);
+      const double rn = 2 * r_ref * uniform01(gen);
+      const double rad = p.mu[i] * rn * std::sqrt(uniform01(gen)), th = 2 * kPi * uniform01(gen);
       po.r0.segment<3>(3 * i) = Vec3(rn, rad * std::cos(th), rad * std::sin(th));
     }
     ++runs;

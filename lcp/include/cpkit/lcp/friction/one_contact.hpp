@@ -26,6 +26,9 @@
 
 namespace cpkit::lcp::friction {
 
+/// The local acceptance of a candidate: its natural-map residual in the local units above.
+inline constexpr double kOneContactLocalTol = 1e-9;
+
 /// Up to 6 solutions (separation, stick, 4 slips), duplicates removed.
 struct OneContactSolutions {
   Vec3 r[6];
