@@ -29,6 +29,7 @@ std::string ProxOptions::validate(Eigen::Index n) const {
   if (!(shrink_after_failure >= 1) || !std::isfinite(shrink_after_failure))
     return "shrink_after_failure must be >= 1 and finite";
   if (max_sweeps < 0) return "max_sweeps must be >= 0";
+  if (newton_after_failure < 0) return "newton_after_failure must be >= 0";
   if (!(full_step_below >= 0 && full_step_below <= 1)) return "full_step_below must be in [0, 1]";
   return {};
 }
@@ -111,6 +112,10 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       fo.common.tol = o.common.tol;
       fo.common.time_limit_s = left;
       fo.common.record_trace = false;
+      // Once an inner solve has failed, each is cut short (prox.hpp): a failure costs its cap,
+      // not fb-soc's 50-step stagnation stop.
+      if (inner_failures > 0 && o.newton_after_failure > 0)
+        fo.common.max_iterations = o.newton_after_failure;
       fo.r0 = rk;
       fo.alart_curnier = o.inner == ProxInner::kAlartCurnier;
       fo.full_step_below = o.full_step_below;
