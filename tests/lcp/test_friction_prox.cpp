@@ -4,6 +4,8 @@
 // independent check violation() of friction_examples.hpp.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+#include <string>
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/friction_io.hpp"
@@ -119,6 +121,14 @@ TEST_CASE("prox: registered, refuses bad input", "[friction][prox]") {
   ProxOptions bad_shrink;
   bad_shrink.shrink = 0.5;  // alpha would grow after every converged inner solve
   CHECK_THROWS_AS(solve_prox(p, bad_shrink), cpkit::InputError);
+  ProxOptions bad_after_failure;
+  bad_after_failure.shrink_after_failure = 0.5;
+  CHECK_THROWS_AS(solve_prox(p, bad_after_failure), cpkit::InputError);
+  bad_after_failure.shrink_after_failure = std::nan("");
+  CHECK_THROWS_AS(solve_prox(p, bad_after_failure), cpkit::InputError);
+  ProxOptions bad_cap;
+  bad_cap.newton_after_failure = -1;
+  CHECK_THROWS_AS(solve_prox(p, bad_cap), cpkit::InputError);
   ProxOptions bad_full_step;
   bad_full_step.full_step_below = 2;  // a step length: at most the full step, 1
   CHECK_THROWS_AS(solve_prox(p, bad_full_step), cpkit::InputError);
@@ -176,6 +186,40 @@ TEST_CASE("prox: the rank-deficient BoxesStack1 with each inner solver", "[frict
     REQUIRE(r.z.size() == p.q.size());
     CHECK(natural_map_error(p, r.z) <= 1e-8);
   }
+}
+
+TEST_CASE("prox: after an inner solve fails, alpha falls gently and inner solves are cut short",
+          "[friction][prox]") {
+  // W = H^T H with H 30 x 60 (rank 30, 20 contacts: more contact rows than body coordinates),
+  // mu = 1 as on RockPile_tob1, seeded: a problem where prox's inner Newton fails at the
+  // smallest alphas. After a failure, alpha / 30 (h64's rule) then alpha * 10 again wasted the
+  // failed solves' Newton steps (50 each); alpha / 3 and inner solves of at most 15 steps waste
+  // fewer. Both answers are checked by the natural map written above.
+  std::mt19937 rng(10);
+  cpkit::FrictionContactProblem p = cpkit::test::rigid_like(rng, 20, 30);
+  p.mu.setConstant(1.0);
+  REQUIRE(Eigen::FullPivLU<Eigen::MatrixXd>(Eigen::MatrixXd(p.W)).rank() == 30);
+  ProxOptions gentle;
+  gentle.common.tol = 1e-8;
+  ProxOptions steep = gentle;
+  steep.shrink_after_failure = steep.shrink;  // the rule before: alpha / 30 after a failure too,
+  steep.newton_after_failure = 0;             // and every inner solve to fb-soc's own stop
+  // "..., N inner solves not converged, ..." (prox's message)
+  auto failures = [](const cpkit::SolveResult& r) {
+    const std::size_t end = r.message.find(" inner solves not converged");
+    REQUIRE(end != std::string::npos);
+    const std::size_t begin = r.message.rfind(' ', end - 1) + 1;
+    return std::stoi(r.message.substr(begin, end - begin));
+  };
+  const cpkit::SolveResult a = solve_prox(p, gentle), b = solve_prox(p, steep);
+  INFO(a.message << " | " << b.message);
+  REQUIRE(a.status == Status::kSolved);
+  REQUIRE(b.status == Status::kSolved);
+  CHECK(natural_map_error(p, a.z) <= 1e-8);
+  CHECK(natural_map_error(p, b.z) <= 1e-8);
+  CHECK(failures(b) >= 2);  // the case exercises the rule
+  CHECK(failures(a) >= 1);
+  CHECK(a.function_evals < b.function_evals);  // inner Newton steps
 }
 
 TEST_CASE("prox and auto: a time limit that runs out mid-solve is a time limit, never bad input",

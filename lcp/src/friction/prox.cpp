@@ -26,7 +26,10 @@ std::string ProxOptions::validate(Eigen::Index n) const {
   if (!(nu >= 0) || !std::isfinite(nu)) return "nu must be >= 0 and finite";
   if (!(alpha0 >= 0) || !std::isfinite(alpha0)) return "alpha0 must be >= 0 and finite";
   if (!(shrink >= 1) || !std::isfinite(shrink)) return "shrink must be >= 1 and finite";
+  if (!(shrink_after_failure >= 1) || !std::isfinite(shrink_after_failure))
+    return "shrink_after_failure must be >= 1 and finite";
   if (max_sweeps < 0) return "max_sweeps must be >= 0";
+  if (newton_after_failure < 0) return "newton_after_failure must be >= 0";
   if (!(full_step_below >= 0 && full_step_below <= 1)) return "full_step_below must be in [0, 1]";
   return {};
 }
@@ -59,6 +62,7 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
   bool failed = false;
   double alpha = 0;
   int inner_failures = 0;
+  double shrink = o.shrink;
   Status stop = Status::kIterationLimit;
   for (int k = 0; k < max_outer; ++k) {
     if (best_e <= o.common.tol) {
@@ -79,8 +83,9 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
     else if (k == 0)
       alpha = o.alpha0 > 0 ? std::min(o.alpha0 * w_scale, prox_rule) : prox_rule;
     else
-      alpha = std::min(prox_rule, alpha / o.shrink);
+      alpha = std::min(prox_rule, alpha / shrink);
     alpha = std::clamp(alpha, 1e-10 * w_scale, 1e10 * w_scale);  // floor and cap in W's units
+    if (failed) shrink = std::min(o.shrink, o.shrink_after_failure);  // from now on (prox.hpp)
     rk = r;
     u = p.W * r + p.q;  // fresh each outer step: no drift of the incremental updates
     const double inner_tol = std::max(ec / 10, o.common.tol / 10);
@@ -107,6 +112,10 @@ SolveResult solve_prox(const FrictionContactProblem& p, const ProxOptions& o) {
       fo.common.tol = o.common.tol;
       fo.common.time_limit_s = left;
       fo.common.record_trace = false;
+      // Once an inner solve has failed, each is cut short (prox.hpp): a failure costs its cap,
+      // not fb-soc's 50-step stagnation stop.
+      if (inner_failures > 0 && o.newton_after_failure > 0)
+        fo.common.max_iterations = o.newton_after_failure;
       fo.r0 = rk;
       fo.alart_curnier = o.inner == ProxInner::kAlartCurnier;
       fo.full_step_below = o.full_step_below;

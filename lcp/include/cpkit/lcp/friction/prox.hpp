@@ -19,7 +19,11 @@
 /// (79 on Rover1039, 184 on fclib_local_problem_test); with the defaults 4-7 on all 12, the
 /// number Siconos' PROX needs (4-5). alpha0 = 0.05 (was 0.5) with the Alart-Curnier inner
 /// solve: 3-6 outer iterations on the 12 local files, 5 on Capsules-i122 and -i101 (PROX: 4).
-/// alpha stays in [1e-10, 1e10] w_scale (a floor and a cap in W's units).
+/// alpha stays in [1e-10, 1e10] w_scale (a floor and a cap in W's units). Once an inner solve
+/// has failed, the decrease is gentler (shrink_after_failure): a problem whose regularised
+/// problems fail below some alpha is approached in smaller steps instead of alternating between
+/// a failed alpha / shrink and 10 times that; and each inner solve is then given at most
+/// newton_after_failure Newton steps (one that needs more is likely one that fails).
 /// Inner solver (ProxInner::kGaussSeidel): block Gauss-Seidel over the contacts on the regularised
 /// problem, each contact's 3x3 problem (block W_ii + alpha I) solved exactly by
 /// one_contact_nearest() (one_contact.hpp: the solution nearest the current r_i). The inner solve
@@ -62,6 +66,16 @@ struct ProxOptions {
   double nu = 1;
   double alpha0 = 0.05;  ///< cap of the first alpha, in w_scale units (0: sigma e_0^nu alone)
   double shrink = 30;   ///< alpha_k <= alpha_{k-1} / shrink after a converged inner solve (>= 1)
+  /// The shrink once an inner solve has failed (>= 1; shrink when that is smaller): alpha / 30 then failed
+  /// again and again on RockPile_tob1 (mu = 1), each failure ~50 wasted Newton steps and 10
+  /// alpha; with alpha / 3 prox solves it (relative_q 9.5e-12, 75 outer steps, where it stood
+  /// at 1.6e-5 after 30 s; docs/benchmarks.md, h73). No inner solve fails on the 16 files of docs/benchmarks.md: their steps are unchanged.
+  double shrink_after_failure = 3;
+  /// Newton steps of each inner solve (kFbSoc, kAlartCurnier) once an inner solve has failed
+  /// (0: no cap, fb-soc's own stop): a failed solve ran to fb-soc's 50-step stagnation stop.
+  /// RockPile_tob1: 1,612 -> 735 Newton steps (7.0 -> 3.7 s of CPU); shrink_after_failure = 4,
+  /// which alone stalls at 4e-6, then solves it too. The 16 files: no failure, no change.
+  int newton_after_failure = 15;
   int max_sweeps = 0;  ///< Gauss-Seidel sweeps per inner solve (0: 200)
   /// The Newton inner solves' FbSocOptions::full_step_below: a Newton step damped below this t
   /// is taken whole (Newton steps 132 -> 29 on Capsules-i122-1617, 38 -> 24 on -i101-404; 0: off)
