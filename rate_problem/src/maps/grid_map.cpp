@@ -15,6 +15,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "grid_cells.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -239,9 +240,7 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   for (int j = 0; j < theta_n; ++j) loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
   // Without a sink the whole grid is kept; with one, a buffer of one block of rows.
   map.threads = resolve_threads(options.threads, row1 - row0);
-  // At least a few rows per worker in a block, or long rows would run on one thread.
-  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(theta_n), 4 * map.threads))
-                              : row1 - row0;
+  const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, theta_n, map.threads);
   const std::size_t buffer_cells =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer_cells, 0);
@@ -365,9 +364,7 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis1.validate(), "map axis " + axis1.param.name());
   throw_if_invalid(axis2.validate(), "map axis " + axis2.param.name());
-  if (axis1.param == axis2.param)
-    throw InputError("param-param map: the two axes vary the same parameter '" +
-                     axis1.param.name() + "'");
+  check_distinct_axes(axis1, axis2);
   const Stopwatch clock;
   const int n1 = axis1.n, n2 = axis2.n;
   const auto [row0, row1] = checked_range(range, n1);
@@ -378,8 +375,7 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   map.axis2 = axis2;
   map.cross_checked = options.method != RateMethod::kEnumerate;
   map.threads = resolve_threads(options.threads, row1 - row0);
-  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(n2), 4 * map.threads))
-                              : row1 - row0;
+  const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, n2, map.threads);
   const std::size_t buffer_cells = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer_cells, 0), types(buffer_cells, 0);
   std::vector<int8_t> min_count(buffer_cells, 0), max_count(buffer_cells, 0);
@@ -397,30 +393,13 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
       apply_map_parameter(axis1.param, axis1.value(i), p, st);
       apply_map_parameter(axis2.param, axis2.value(j), p, st);
       const DirectionMap dm = compute_direction_map(p, st, cell_options);
-      // Counts over all sectors and critical directions; -1 (a continuum) ranks above all.
-      auto rank = [](int c) { return c < 0 ? 1000 : c; };
-      int lo = 0, hi = 0, lo_rank = 1001, hi_rank = -1;
       unsigned type_mask = 0;
-      bool none = false, multiple = false;
-      auto visit = [&](const RateSummary& s) {
-        const int r = rank(s.count);
-        if (r < lo_rank) { lo_rank = r; lo = s.count; }
-        if (r > hi_rank) { hi_rank = r; hi = s.count; }
-        type_mask |= s.types;
-        if (s.count == 0) none = true;
-        if (s.count != 0 && s.count != 1) multiple = true;
-      };
-      for (const auto& s : dm.sectors) visit(s.summary);
-      for (const auto& c : dm.critical) visit(c.summary);
+      const CellClass c = classify_cell(dm, [&](const RateSummary& s) { type_mask |= s.types; });
       const std::size_t k =
           static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2) + j;
-      // "no solution for some directions" must not hide that others have several.
-      cls[k] = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
-                                    : none           ? UniquenessClass::kNoSolutionSome
-                                    : multiple       ? UniquenessClass::kNonUniqueSome
-                                                     : UniquenessClass::kUniqueAll);
-      min_count[k] = static_cast<int8_t>(lo);
-      max_count[k] = static_cast<int8_t>(hi);
+      cls[k] = c.cls;
+      min_count[k] = c.lo;
+      max_count[k] = c.hi;
       types[k] = static_cast<uint8_t>(type_mask);
       if (map.cross_checked) {
         disagree[k] = dm.disagreements > 0 ? 1 : 0;
@@ -433,10 +412,7 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
   run_row_blocks(row0, row1, block_rows, map.threads, block_begin, progress, row,
                  [&](int b0, int b1) {
-                   for (int i = b0; i < b1; ++i)
-                     for (int j = 0; j < n2; ++j)
-                       boxes[cls[static_cast<std::size_t>(i - b0) * n2 + j]].add(
-                           axis1.value(i), axis2.value(j));
+                   add_class_boxes(boxes, cls.data(), b0, b1, axis1, axis2);
                    if (sink)
                      sink(ParamParamRows{b0, b1, cls.data(), min_count.data(), max_count.data(),
                                          types.data(),

@@ -11,6 +11,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "grid_cells.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -134,11 +135,6 @@ void check_common(const ContactSystem& system, const MapOptions& options) {
     throw InputError("map options: the N-point maps use the enumeration route only");
 }
 
-/// Rows per block: all rows without a sink; else about 2^20 cells, at least 4 rows per worker.
-int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
-  return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;
-}
-
 /// A piece of one row, a work item: rows are split when a block has too few rows for the
 /// threads (a chunk of a distributed map may be a single row). Each segment numbers its
 /// patterns itself; merged in segment order they give the numbering of a row-major scan.
@@ -183,37 +179,6 @@ void run_block(int b0, int b1, int row0, int row1, int columns, int threads,
     unreliable += g.unreliable;
     inconsistent += g.inconsistent;
   }
-}
-
-/// Classes of a cell's direction map (as compute_param_param_map for one point).
-struct CellClass {
-  uint8_t cls = 0;
-  int8_t lo = 0, hi = 0;
-  std::vector<TypeTuple> tuples;  ///< union over all directions, sorted
-};
-CellClass classify(const SystemDirectionMap& dm) {
-  auto rank = [](int c) { return c < 0 ? 1000 : c; };  // a continuum ranks above all counts
-  CellClass out;
-  int lo_rank = 1001, hi_rank = -1;
-  bool none = false, multiple = false;
-  auto visit = [&](const SystemRateSummary& s) {
-    const int r = rank(s.count);
-    if (r < lo_rank) { lo_rank = r; out.lo = static_cast<int8_t>(s.count); }
-    if (r > hi_rank) { hi_rank = r; out.hi = static_cast<int8_t>(s.count); }
-    for (int k = 0; k < std::min(s.n_tuples, SystemRateSummary::kCap); ++k)
-      out.tuples.push_back(s.tuples[static_cast<std::size_t>(k)]);
-    none = none || s.count == 0;
-    multiple = multiple || (s.count != 0 && s.count != 1);
-  };
-  for (const auto& s : dm.sectors) visit(s.summary);
-  for (const auto& c : dm.critical) visit(c.summary);
-  std::sort(out.tuples.begin(), out.tuples.end());
-  out.tuples.erase(std::unique(out.tuples.begin(), out.tuples.end()), out.tuples.end());
-  out.cls = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
-                                 : none           ? UniquenessClass::kNoSolutionSome
-                                 : multiple       ? UniquenessClass::kNonUniqueSome
-                                                  : UniquenessClass::kUniqueAll);
-  return out;
 }
 
 ContactSystem cell_system(const ContactSystem& base, const SystemMapAxis& a1, double x,
@@ -322,9 +287,7 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
   check_common(system, options);
   validate_axis(axis1);
   validate_axis(axis2);
-  if (axis1.param.name() == axis2.param.name())
-    throw InputError("param-param map: the two axes vary the same parameter '" +
-                     axis1.param.name() + "'");
+  check_distinct_axes(axis1, axis2);
   const int n1 = axis1.n, n2 = axis2.n;
   if (!sink && static_cast<int64_t>(n1) * n2 > kMaxSystemMapCells)
     throw InputError("the map has " + std::to_string(static_cast<int64_t>(n1) * n2) +
@@ -360,13 +323,19 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
     for (int j = g.c0; j < g.c1; ++j) {
       const SystemDirectionMap dm = compute_system_direction_map(
           cell_system(system, axis1, axis1.value(g.row), axis2, axis2.value(j)), cell_options);
-      CellClass c = classify(dm);
+      std::vector<TypeTuple> tuples;  // the union of the type tuples over all directions
+      const CellClass c = classify_cell(dm, [&](const SystemRateSummary& s) {
+        for (int t = 0; t < std::min(s.n_tuples, SystemRateSummary::kCap); ++t)
+          tuples.push_back(s.tuples[static_cast<std::size_t>(t)]);
+      });
+      std::sort(tuples.begin(), tuples.end());
+      tuples.erase(std::unique(tuples.begin(), tuples.end()), tuples.end());
       const std::size_t at = static_cast<std::size_t>(g.row - block_begin) *
                                  static_cast<std::size_t>(n2) + static_cast<std::size_t>(j);
       cls[at] = c.cls;
       lo[at] = c.lo;
       hi[at] = c.hi;
-      pattern[at] = g.table.id(std::move(c.tuples));
+      pattern[at] = g.table.id(std::move(tuples));
       g.unreliable += dm.unreliable;
       g.inconsistent += dm.inconsistent_sectors;
     }
@@ -375,10 +344,7 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
     const int block_end = std::min(row1, block_begin + block_rows);
     run_block(block_begin, block_end, row0, row1, n2, map.threads, segs, segment, progress,
               numbering, pattern.data(), map.unreliable, map.inconsistent_sectors);
-    for (int i = block_begin; i < block_end; ++i) {
-      const std::size_t base = static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2);
-      for (int j = 0; j < n2; ++j) boxes[cls[base + j]].add(axis1.value(i), axis2.value(j));
-    }
+    add_class_boxes(boxes, cls.data(), block_begin, block_end, axis1, axis2);
     if (sink) {
       SystemParamParamRows rows;
       rows.row_begin = block_begin;

@@ -39,16 +39,6 @@ struct CriticalDirectionPoint {
   RateSummary summary;     ///< solution set on the critical direction itself
 };
 
-/// The analytic criteria whose sign decides uniqueness for every direction: state b
-/// {"D+", D_+}, {"D-", D_-}; state d {"Lambda", Lambda(sgn P_T)} of eqn (51), with mu replaced
-/// by mu_eff = mu - 2 kappa for the softening criterion (35) (as in the rate problem); else none.
-struct UniquenessCriterion {
-  std::string name;
-  double value = 0;
-};
-std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& params,
-                                                     const ContactState& state);
-
 /// Progress callback: the phase ("cells", "critical curves") and the fraction of it done in
 /// [0, 1]; called from the calling thread only, about every 0.1 s and once with 1 at the end.
 using MapProgress = std::function<void(std::string_view phase, double fraction)>;
