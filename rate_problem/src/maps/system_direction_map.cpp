@@ -202,8 +202,8 @@ SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
     } else {
       const std::size_t i = static_cast<std::size_t>(k) - arcs.size();
       at[i].theta = cand[i];
-      at[i].dF = load(cand[i]);
-      at[i].summary = summarize_rate_problem(pre, at[i].dF, /*on_critical=*/true);
+      at[i].load = load(cand[i]);
+      at[i].summary = summarize_rate_problem(pre, at[i].load, /*on_critical=*/true);
     }
   }, [](int) {});
   for (const Arc& a : arcs) {

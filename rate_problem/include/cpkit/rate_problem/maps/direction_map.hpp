@@ -40,22 +40,28 @@ inline bool same_solution_set(const RateSummary& a, const RateSummary& b) noexce
 /// An open sector of directions: the counter-clockwise arc from theta_from to theta_to.
 /// theta_from is in [0, 2 pi) and theta_to in (theta_from, theta_from + 2 pi], so theta_to > 2 pi
 /// marks the sector that contains theta = 0; a map with no critical direction has the single
-/// sector (0, 2 pi] (covering the whole circle).
-struct DirectionSector {
+/// sector (0, 2 pi] (covering the whole circle). Summary: the point kind's (RateSummary for one
+/// point, SystemRateSummary for N points, system_direction_map.hpp).
+template <class Summary>
+struct DirectionSectorOf {
   double theta_from = 0, theta_to = 0;
-  RateSummary summary;        ///< at the midpoint, by options.method
-  RateSummary check;          ///< by the enumeration route when cross-checking (else = summary)
-  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
+  Summary summary;         ///< at the midpoint, by options.method
+  Summary check;           ///< one point: by the enumeration route when cross-checking (else = summary)
+  bool consistent = true;  ///< the quarter points gave the same summary as the midpoint
 };
+using DirectionSector = DirectionSectorOf<RateSummary>;
 
-/// A critical direction (the solution set there differs from an adjacent sector).
-struct CriticalDirectionResult {
+/// A critical direction (the solution set there differs from an adjacent sector); Load: the
+/// point kind's load rate (LoadRate; N points: dF(theta), Eigen::VectorXd).
+template <class Summary, class Load>
+struct CriticalDirectionOf {
   double theta = 0;
-  LoadRate load;                        ///< the exact load used (a form is exactly 0 on it)
-  std::vector<std::string> conditions;  ///< which forms vanish: "N=0", "L+=0", ...
-  RateSummary summary;
-  RateSummary check;
+  Load load;  ///< the exact load used (one point: a form is exactly 0 on it)
+  std::vector<std::string> conditions;  ///< one point: which forms vanish: "N=0", "L+=0", ...
+  Summary summary;
+  Summary check;  ///< one point: by the enumeration route when cross-checking (else = summary)
 };
+using CriticalDirectionResult = CriticalDirectionOf<RateSummary, LoadRate>;
 
 struct DirectionMap {
   std::vector<DirectionSector> sectors;            ///< sorted by theta_from

@@ -29,18 +29,10 @@ namespace cpkit::rate {
 bool same_solution_set(const SystemRateSummary& a, const SystemRateSummary& b) noexcept;
 
 /// An open sector (theta_from, theta_to) of directions, conventions as DirectionSector.
-struct SystemDirectionSector {
-  double theta_from = 0, theta_to = 0;
-  SystemRateSummary summary;  ///< at the midpoint
-  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
-};
-
-/// A critical direction: the solution set there differs from an adjacent sector.
-struct SystemCriticalDirection {
-  double theta = 0;
-  Eigen::VectorXd dF;  ///< cos(theta) e1 + sin(theta) e2
-  SystemRateSummary summary;
-};
+using SystemDirectionSector = DirectionSectorOf<SystemRateSummary>;
+/// A critical direction: the solution set there differs from an adjacent sector; load: dF =
+/// cos(theta) e1 + sin(theta) e2.
+using SystemCriticalDirection = CriticalDirectionOf<SystemRateSummary, Eigen::VectorXd>;
 
 struct SystemDirectionMap {
   Eigen::VectorXd e1, e2;                         ///< the patterns used
