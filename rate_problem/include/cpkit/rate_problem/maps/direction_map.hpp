@@ -63,15 +63,21 @@ struct CriticalDirectionOf {
 };
 using CriticalDirectionResult = CriticalDirectionOf<RateSummary, LoadRate>;
 
-struct DirectionMap {
-  std::vector<DirectionSector> sectors;            ///< sorted by theta_from
-  std::vector<CriticalDirectionResult> critical;   ///< sorted by theta
+/// A direction map of one point or of N points (system_direction_map.hpp): the loads
+/// dF(theta) = cos(theta) e1 + sin(theta) e2 (one point: e1 = dF_T, e2 = dF_N).
+template <class Summary, class Load>
+struct DirectionMapOf {
+  Load e1, e2;  ///< N points: the patterns used (one point: unused)
+  std::vector<DirectionSectorOf<Summary>> sectors;         ///< sorted by theta_from
+  std::vector<CriticalDirectionOf<Summary, Load>> critical;  ///< sorted by theta
+  int candidates = 0;        ///< N points: distinct zeros of the linear forms
   int evaluations = 0;       ///< rate problems solved (per route)
-  int disagreements = 0;     ///< evaluations where the two routes disagree (cross-check only)
+  int disagreements = 0;     ///< one point: evaluations where the two routes disagree (cross-check)
   int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
-  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call (RateSummary)
-  bool cross_checked = false;
+  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call
+  bool cross_checked = false;  ///< one point: the enumeration route run as well
 };
+using DirectionMap = DirectionMapOf<RateSummary, LoadRate>;
 
 /// Computes the direction map. Throws InputError for invalid parameters, state or options.
 DirectionMap compute_direction_map(const ContactParameters& params, const ContactState& state,

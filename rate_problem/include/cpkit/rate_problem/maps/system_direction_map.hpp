@@ -34,15 +34,9 @@ using SystemDirectionSector = DirectionSectorOf<SystemRateSummary>;
 /// cos(theta) e1 + sin(theta) e2.
 using SystemCriticalDirection = CriticalDirectionOf<SystemRateSummary, Eigen::VectorXd>;
 
-struct SystemDirectionMap {
-  Eigen::VectorXd e1, e2;                         ///< the patterns used
-  std::vector<SystemDirectionSector> sectors;     ///< sorted by theta_from
-  std::vector<SystemCriticalDirection> critical;  ///< sorted by theta
-  int candidates = 0;            ///< distinct zeros of the linear forms
-  int evaluations = 0;           ///< rate problems summarised
-  int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
-  int unreliable = 0;            ///< evaluations flagged unreliable (SystemRateSummary)
-};
+/// The N-point direction map: e1, e2 (the patterns used), sectors, critical, candidates,
+/// evaluations, inconsistent_sectors, unreliable.
+using SystemDirectionMap = DirectionMapOf<SystemRateSummary, Eigen::VectorXd>;
 
 /// The load patterns of a system's maps: the file's e1, e2, or by default e1 = (1, 0, 1, 0, ...),
 /// e2 = (0, 1, 0, 1, ...). Throws InputError when they are linearly dependent.
