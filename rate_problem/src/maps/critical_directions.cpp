@@ -1,5 +1,5 @@
 // Exact candidate critical directions of the rate problem (docs/model.md Sec. 2).
-#include "cpkit/rate_problem/maps/critical_directions.hpp"
+#include "critical_directions.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,8 @@
 #include <string>
 
 #include "cpkit/core/errors.hpp"
-#include "cpkit/rate_problem/maps/critical_directions.hpp"
+#include "critical_directions.hpp"
+#include "direction_sectors.hpp"
 
 namespace cpkit::rate {
 
@@ -118,34 +119,11 @@ DirectionMap compute_direction_map(const ContactParameters& params, const Contac
   for (std::size_t i = 0; i < m; ++i)
     if (is_critical[i]) crit.push_back(i);
 
-  if (crit.empty()) {
-    DirectionSector s;
-    s.theta_from = 0;
-    s.theta_to = kTwoPi;
-    s.summary = arcs[0].summary;
-    s.check = arcs[0].check;
-    for (const Arc& a : arcs) s.consistent = s.consistent && a.consistent;
-    map.sectors.push_back(s);
-  } else {
-    for (std::size_t k = 0; k < crit.size(); ++k) {
-      const std::size_t i0 = crit[k];
-      const std::size_t i1 = crit[(k + 1) % crit.size()];
-      DirectionSector s;
-      s.theta_from = cand[i0].theta;
-      s.theta_to = cand[i1].theta;
-      if (s.theta_to <= s.theta_from) s.theta_to += kTwoPi;
-      s.summary = arcs[i0].summary;
-      s.check = arcs[i0].check;
-      // All arcs merged into this sector have the same summary (their candidates were not
-      // critical); carry their consistency flags.
-      for (std::size_t i = i0;; i = (i + 1) % m) {
-        s.consistent = s.consistent && arcs[i].consistent;
-        if ((i + 1) % m == i1) break;
-      }
-      map.sectors.push_back(s);
-      map.critical.push_back(cand[i0]);
-    }
-  }
+  sectors_from_arcs(arcs, cand, crit, map.sectors, map.critical,
+                    [](DirectionSector& s, const Arc& a) {
+                      s.summary = a.summary;
+                      s.check = a.check;
+                    });
   map.evaluations = eval.evaluations;
   map.disagreements = eval.disagreements;
   map.unreliable = eval.unreliable;

@@ -15,27 +15,12 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
+#include "grid_cells.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
 
 namespace {
-
-/// Rows [row0, row1) of a grid map in blocks of `block_rows` (the rows' buffers hold one block,
-/// indexed from `block_begin`): every row of a block computed (`row(i)` on `threads`), then
-/// `block(block_begin, block_end)` (its summary, its sink); progress "cells" throughout.
-template <class Row, class Block>
-void run_row_blocks(int row0, int row1, int block_rows, int threads, int& block_begin,
-                    const MapProgress& progress, const Row& row, const Block& block) {
-  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
-    const int block_end = std::min(row1, block_begin + block_rows);
-    run_items(block_begin, block_end, threads, row, [&](int done) {
-      if (progress) progress("cells", static_cast<double>(block_begin - row0 + done) / (row1 - row0));
-    });
-    block(block_begin, block_end);
-  }
-  if (progress) progress("cells", 1.0);
-}
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
@@ -239,25 +224,24 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
   for (int j = 0; j < theta_n; ++j) loads[j] = LoadRate{std::cos(map.theta[j]), std::sin(map.theta[j])};
   // Without a sink the whole grid is kept; with one, a buffer of one block of rows.
   map.threads = resolve_threads(options.threads, row1 - row0);
-  // At least a few rows per worker in a block, or long rows would run on one thread.
-  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(theta_n), 4 * map.threads))
-                              : row1 - row0;
+  const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, theta_n, map.threads);
   const std::size_t buffer_cells =
       static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(theta_n);
   std::vector<int8_t> count(buffer_cells, 0);
   std::vector<uint8_t> types(buffer_cells, 0);
   std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
-  std::vector<int64_t> row_disagree(range_rows, 0);
-  std::vector<int64_t> row_unreliable(range_rows, 0);
   std::vector<std::vector<CriticalDirectionPoint>> row_crit(range_rows);
 
   const RateMethod method = options.method;
   const bool cross = map.cross_checked;
   int block_begin = 0;
-  auto row = [&](int i) {
+  std::vector<Segment> segs;
+  auto segment = [&](Segment& g) {
+    const int i = g.row;
     const ContactParameters& p = row_params[i - row0];
     const ContactState& st = row_state[i - row0];
-    // Once per row (the row's model is fixed): the state's LCP as a linear function of the load.
+    // Once per segment (the row's model is fixed): the state's LCP as a linear function of the
+    // load.
     const RatePrecomputed pre = precompute_rate_problem(p, st);
     const std::size_t base =
         static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(theta_n);
@@ -265,29 +249,26 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     uint8_t* typ = types.data() + base;
     const LoadRate* load = loads.data();
     // The cell loop: allocation-free (summarize_rate_problem is).
-    int64_t n_unreliable = 0;
     if (!cross) {
-      for (int j = 0; j < theta_n; ++j) {
+      for (int j = g.c0; j < g.c1; ++j) {
         const RateSummary s = summarize_rate_problem(pre, load[j], method);
         cnt[j] = static_cast<int8_t>(s.count);
         typ[j] = static_cast<uint8_t>(s.types);
-        n_unreliable += !s.reliable;
+        g.unreliable += !s.reliable;
       }
     } else {
       uint8_t* dis = disagree.data() + base;
-      int64_t n_dis = 0;
-      for (int j = 0; j < theta_n; ++j) {
+      for (int j = g.c0; j < g.c1; ++j) {
         const RateSummary s = summarize_rate_problem(pre, load[j], method);
         const RateSummary e = summarize_rate_problem(pre, load[j], RateMethod::kEnumerate);
         cnt[j] = static_cast<int8_t>(s.count);
         typ[j] = static_cast<uint8_t>(s.types);
         dis[j] = same_solution_set(s, e) ? 0 : 1;
-        n_dis += dis[j];
-        n_unreliable += !s.reliable || !e.reliable;
+        g.disagreements += dis[j];
+        g.unreliable += !s.reliable || !e.reliable;
       }
-      row_disagree[i - row0] = n_dis;
     }
-    row_unreliable[i - row0] = n_unreliable;
+    if (g.c0 > 0) return;  // the row's critical directions: by its first segment
     // The exact critical directions of this row (curves theta_c(x) over the map).
     MapOptions dopt;
     dopt.method = method;
@@ -301,47 +282,25 @@ ParamDirectionMap compute_param_direction_map(const ContactParameters& params,
     }
   };
 
-  // Summary per count (index count + 1; counts are small, -1 = a continuum).
-  std::array<GridClassBox, 128> boxes{};
-  std::vector<int> first(boxes.size()), last(boxes.size());
-  auto summarize_rows = [&](int r0, int r1) {
-    for (int i = r0; i < r1; ++i) {
-      const std::size_t base = static_cast<std::size_t>(i - block_begin) * theta_n;
-      std::fill(first.begin(), first.end(), -1);
-      std::array<int64_t, 128> n_count{};
-      for (int j = 0; j < theta_n; ++j) {
-        const int c = (count[base + j] + 1) & 127;
-        if (first[c] < 0) first[c] = j;
-        last[c] = j;
-        ++n_count[c];
-        ++map.type_cells[types[base + j] & 31u];
-      }
-      for (std::size_t c = 0; c < boxes.size(); ++c)
-        if (n_count[c] > 0) {
-          // theta increases with j: the first and last cell bound the row's theta range.
-          boxes[c].add(axis.value(i), map.theta[first[c]]);
-          boxes[c].add(axis.value(i), map.theta[last[c]]);
-          boxes[c].cells += n_count[c] - 2;
-        }
-    }
-  };
-
-  run_row_blocks(row0, row1, block_rows, map.threads, block_begin, progress, row,
-                 [&](int b0, int b1) {
-                   summarize_rows(b0, b1);
-                   if (sink)
-                     sink(ParamDirectionRows{b0, b1, count.data(), types.data(),
-                                             cross ? disagree.data() : nullptr});
-                 });
+  std::array<GridClassBox, 128> boxes{};  // per count + 1 (-1: a continuum)
+  run_grid_blocks(row0, row1, block_rows, theta_n, map.threads, block_begin, segs, progress,
+                  segment, [&](int b0, int b1) {
+                    for (const Segment& g : segs) {
+                      map.disagreements += g.disagreements;
+                      map.unreliable += g.unreliable;
+                    }
+                    add_count_boxes(boxes, count.data(), types.data(), map.type_cells, b0, b1,
+                                    axis, map.theta);
+                    if (sink)
+                      sink(ParamDirectionRows{b0, b1, count.data(), types.data(),
+                                              cross ? disagree.data() : nullptr});
+                  });
   if (!sink)
     std::tie(map.count, map.types, map.disagree) =
         std::forward_as_tuple(std::move(count), std::move(types), std::move(disagree));
   map.classes = present_classes(boxes, -1);
-  for (int i = row0; i < row1; ++i) {
-    map.disagreements += row_disagree[i - row0];
-    map.unreliable += row_unreliable[i - row0];
-    for (auto& c : row_crit[i - row0]) map.critical_directions.push_back(std::move(c));
-  }
+  for (auto& row : row_crit)
+    for (auto& c : row) map.critical_directions.push_back(std::move(c));
   for (const auto& z : criterion_zeros(params, state, axis))
     map.critical_values.push_back({z.first, z.second, 0});
   map.seconds = clock.seconds();
@@ -365,9 +324,7 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   throw_if_invalid(options.validate(), "map options");
   throw_if_invalid(axis1.validate(), "map axis " + axis1.param.name());
   throw_if_invalid(axis2.validate(), "map axis " + axis2.param.name());
-  if (axis1.param == axis2.param)
-    throw InputError("param-param map: the two axes vary the same parameter '" +
-                     axis1.param.name() + "'");
+  check_distinct_axes(axis1, axis2);
   const Stopwatch clock;
   const int n1 = axis1.n, n2 = axis2.n;
   const auto [row0, row1] = checked_range(range, n1);
@@ -378,80 +335,59 @@ ParamParamMap compute_param_param_map(const ContactParameters& params, const Con
   map.axis2 = axis2;
   map.cross_checked = options.method != RateMethod::kEnumerate;
   map.threads = resolve_threads(options.threads, row1 - row0);
-  const int block_rows = sink ? std::min(row1 - row0, std::max(grid_block_rows(n2), 4 * map.threads))
-                              : row1 - row0;
+  const int block_rows = block_rows_for(static_cast<bool>(sink), row1 - row0, n2, map.threads);
   const std::size_t buffer_cells = static_cast<std::size_t>(block_rows) * static_cast<std::size_t>(n2);
   std::vector<uint8_t> cls(buffer_cells, 0), types(buffer_cells, 0);
   std::vector<int8_t> min_count(buffer_cells, 0), max_count(buffer_cells, 0);
   std::vector<uint8_t> disagree(map.cross_checked ? buffer_cells : 0, 0);
-  std::vector<int64_t> row_dis(static_cast<std::size_t>(row1 - row0), 0), row_inc(row_dis),
-      row_unr(row_dis);  // index i - row0
   MapOptions cell_options = options;
   cell_options.threads = 1;
 
   int block_begin = 0;
-  auto row = [&](int i) {
-    for (int j = 0; j < n2; ++j) {
+  std::vector<Segment> segs;
+  auto segment = [&](Segment& g) {
+    const int i = g.row;
+    for (int j = g.c0; j < g.c1; ++j) {
       ContactParameters p = params;
       ContactState st = state;
       apply_map_parameter(axis1.param, axis1.value(i), p, st);
       apply_map_parameter(axis2.param, axis2.value(j), p, st);
       const DirectionMap dm = compute_direction_map(p, st, cell_options);
-      // Counts over all sectors and critical directions; -1 (a continuum) ranks above all.
-      auto rank = [](int c) { return c < 0 ? 1000 : c; };
-      int lo = 0, hi = 0, lo_rank = 1001, hi_rank = -1;
       unsigned type_mask = 0;
-      bool none = false, multiple = false;
-      auto visit = [&](const RateSummary& s) {
-        const int r = rank(s.count);
-        if (r < lo_rank) { lo_rank = r; lo = s.count; }
-        if (r > hi_rank) { hi_rank = r; hi = s.count; }
-        type_mask |= s.types;
-        if (s.count == 0) none = true;
-        if (s.count != 0 && s.count != 1) multiple = true;
-      };
-      for (const auto& s : dm.sectors) visit(s.summary);
-      for (const auto& c : dm.critical) visit(c.summary);
+      const CellClass c = classify_cell(dm, [&](const RateSummary& s) { type_mask |= s.types; });
       const std::size_t k =
           static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2) + j;
-      // "no solution for some directions" must not hide that others have several.
-      cls[k] = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
-                                    : none           ? UniquenessClass::kNoSolutionSome
-                                    : multiple       ? UniquenessClass::kNonUniqueSome
-                                                     : UniquenessClass::kUniqueAll);
-      min_count[k] = static_cast<int8_t>(lo);
-      max_count[k] = static_cast<int8_t>(hi);
+      cls[k] = c.cls;
+      min_count[k] = c.lo;
+      max_count[k] = c.hi;
       types[k] = static_cast<uint8_t>(type_mask);
       if (map.cross_checked) {
         disagree[k] = dm.disagreements > 0 ? 1 : 0;
-        row_dis[i - row0] += disagree[k];
+        g.disagreements += disagree[k];
       }
-      row_inc[i - row0] += dm.inconsistent_sectors;
-      row_unr[i - row0] += dm.unreliable;
+      g.inconsistent += dm.inconsistent_sectors;
+      g.unreliable += dm.unreliable;
     }
   };
   std::array<GridClassBox, 4> boxes{};  // one per UniquenessClass
-  run_row_blocks(row0, row1, block_rows, map.threads, block_begin, progress, row,
-                 [&](int b0, int b1) {
-                   for (int i = b0; i < b1; ++i)
-                     for (int j = 0; j < n2; ++j)
-                       boxes[cls[static_cast<std::size_t>(i - b0) * n2 + j]].add(
-                           axis1.value(i), axis2.value(j));
-                   if (sink)
-                     sink(ParamParamRows{b0, b1, cls.data(), min_count.data(), max_count.data(),
-                                         types.data(),
-                                         map.cross_checked ? disagree.data() : nullptr});
-                 });
+  run_grid_blocks(row0, row1, block_rows, n2, map.threads, block_begin, segs, progress, segment,
+                  [&](int b0, int b1) {
+                    for (const Segment& g : segs) {
+                      map.disagreements += g.disagreements;
+                      map.inconsistent_sectors += g.inconsistent;
+                      map.unreliable += g.unreliable;
+                    }
+                    add_class_boxes(boxes, cls.data(), b0, b1, axis1, axis2);
+                    if (sink)
+                      sink(ParamParamRows{b0, b1, cls.data(), min_count.data(), max_count.data(),
+                                          types.data(),
+                                          map.cross_checked ? disagree.data() : nullptr});
+                  });
   if (!sink)
     std::tie(map.cls, map.min_count, map.max_count, map.types, map.disagree) =
         std::forward_as_tuple(std::move(cls), std::move(min_count), std::move(max_count),
                               std::move(types), std::move(disagree));
   map.classes = present_classes(boxes, 0);
-  for (int i = row0; i < row1; ++i) {
-    map.disagreements += row_dis[i - row0];
-    map.inconsistent_sectors += row_inc[i - row0];
-    map.unreliable += row_unr[i - row0];
-  }
 
   // Critical curve: zeros of the criteria along every row (x fixed) and every column (y fixed),
   // one work item per row and per column; stored by item, so the order is thread-independent.

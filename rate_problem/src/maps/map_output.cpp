@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cpkit/core/number_text.hpp"
+#include "grid_cells.hpp"
 
 namespace cpkit::rate {
 

@@ -22,6 +22,39 @@ namespace {
 
 constexpr double kPi = 3.141592653589793;
 
+struct Cell3d {
+  int8_t count = 0;     ///< -1: infinitely many (a ray of the one-point state d)
+  uint8_t types = 0;    ///< mask of type_bit() of the loaded point's solution types
+  bool complete = true;
+  bool timed_out = false;  ///< the time limit ended the cell's solve (complete = false)
+};
+
+/// One cell: every solution for the load rate dF (3N) by the route of `options`; the faceted
+/// solve gets at most `time_limit_s` seconds (what is left of the map's budget).
+Cell3d evaluate_cell_3d(const ContactSystem3d& sys, const Eigen::VectorXd& dF,
+                        const Map3dOptions& o, double time_limit_s) {
+  Cell3d c;
+  if (!(time_limit_s > 0)) {  // the map's budget is spent: not computed
+    c.complete = false;
+    c.timed_out = true;
+    return c;
+  }
+  if (o.facets == 0) {
+    const RateSolutionSet3d s = solve_rate_3d(sys.point_parameters(0), sys.points[0].state,
+                                              Eigen::Vector3d(dF.head<3>()));
+    c.count = static_cast<int8_t>(s.infinite() ? -1 : std::min(s.count(), 127));
+    for (const auto& x : s.solutions) c.types |= type_bit(x.type);
+    c.complete = s.complete;
+    return c;
+  }
+  const SystemRateSet3d s = solve_system_rate_3d_faceted(sys, dF, o.facets, time_limit_s);
+  c.count = static_cast<int8_t>(std::min(s.count(), 127));
+  for (const auto& x : s.solutions) c.types |= type_bit(x.types[static_cast<std::size_t>(o.point)]);
+  c.complete = s.complete;
+  c.timed_out = s.timed_out;
+  return c;
+}
+
 /// Validates every point of a system (parameters and state): throws naming the point.
 void validate_points(const ContactSystem3d& sys, const std::string& where) {
   for (int i = 0; i < sys.n_points(); ++i) {
@@ -159,30 +192,6 @@ std::string Map3dOptions::validate(const ContactSystem3d& sys) const {
   if (threads < 0 || threads > 1024) return "threads must be in [0, 1024]";
   if (!(time_limit_s > 0)) return "time_limit_s must be > 0 (infinite: no limit)";
   return {};
-}
-
-Cell3d evaluate_cell_3d(const ContactSystem3d& sys, const Eigen::VectorXd& dF,
-                        const Map3dOptions& o, double time_limit_s) {
-  Cell3d c;
-  if (!(time_limit_s > 0)) {  // the map's budget is spent: not computed
-    c.complete = false;
-    c.timed_out = true;
-    return c;
-  }
-  if (o.facets == 0) {
-    const RateSolutionSet3d s = solve_rate_3d(sys.point_parameters(0), sys.points[0].state,
-                                              Eigen::Vector3d(dF.head<3>()));
-    c.count = static_cast<int8_t>(s.infinite() ? -1 : std::min(s.count(), 127));
-    for (const auto& x : s.solutions) c.types |= type_bit(x.type);
-    c.complete = s.complete;
-    return c;
-  }
-  const SystemRateSet3d s = solve_system_rate_3d_faceted(sys, dF, o.facets, time_limit_s);
-  c.count = static_cast<int8_t>(std::min(s.count(), 127));
-  for (const auto& x : s.solutions) c.types |= type_bit(x.types[static_cast<std::size_t>(o.point)]);
-  c.complete = s.complete;
-  c.timed_out = s.timed_out;
-  return c;
 }
 
 Map3d compute_sphere_map_3d(const ContactSystem3d& sys, const SphereGrid& grid,

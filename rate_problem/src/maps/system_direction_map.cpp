@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "cpkit/core/errors.hpp"
+#include "direction_sectors.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -201,8 +202,8 @@ SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
     } else {
       const std::size_t i = static_cast<std::size_t>(k) - arcs.size();
       at[i].theta = cand[i];
-      at[i].dF = load(cand[i]);
-      at[i].summary = summarize_rate_problem(pre, at[i].dF, /*on_critical=*/true);
+      at[i].load = load(cand[i]);
+      at[i].summary = summarize_rate_problem(pre, at[i].load, /*on_critical=*/true);
     }
   }, [](int) {});
   for (const Arc& a : arcs) {
@@ -223,29 +224,8 @@ SystemDirectionMap compute_system_direction_map(const ContactSystem& system,
         !same_solution_set(before.summary, after.summary))
       crit.push_back(i);
   }
-  if (crit.empty()) {
-    SystemDirectionSector s;
-    s.theta_from = 0;
-    s.theta_to = kTwoPi;
-    s.summary = arcs[0].summary;
-    for (const Arc& a : arcs) s.consistent = s.consistent && a.consistent;
-    map.sectors.push_back(s);
-    return map;
-  }
-  for (std::size_t k = 0; k < crit.size(); ++k) {
-    const std::size_t i0 = crit[k], i1 = crit[(k + 1) % crit.size()];
-    SystemDirectionSector s;
-    s.theta_from = cand[i0];
-    s.theta_to = cand[i1];
-    if (s.theta_to <= s.theta_from) s.theta_to += kTwoPi;
-    s.summary = arcs[i0].summary;
-    for (std::size_t i = i0;; i = (i + 1) % m) {  // arcs merged into this sector
-      s.consistent = s.consistent && arcs[i].consistent;
-      if ((i + 1) % m == i1) break;
-    }
-    map.sectors.push_back(s);
-    map.critical.push_back(at[i0]);
-  }
+  sectors_from_arcs(arcs, at, crit, map.sectors, map.critical,
+                    [](SystemDirectionSector& s, const Arc& a) { s.summary = a.summary; });
   return map;
 }
 

@@ -11,6 +11,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "grid_cells.hpp"
 #include "run_items.hpp"
 
 namespace cpkit::rate {
@@ -75,23 +76,23 @@ ContactSystem apply_system_map_parameter(const ContactSystem& base, const System
 
 namespace {
 
-/// Row-local pattern table: ids in order of first appearance in the row.
-struct RowPatterns {
-  std::vector<std::vector<TypeTuple>> list;
-  uint16_t id(std::vector<TypeTuple>&& tuples) {
-    auto it = std::find(list.begin(), list.end(), tuples);
-    if (it != list.end()) return static_cast<uint16_t>(it - list.begin());
-    if (list.size() >= 65535)
-      throw InputError("a map row has more than 65535 distinct point-type patterns");
-    list.push_back(std::move(tuples));
-    return static_cast<uint16_t>(list.size() - 1);
-  }
-};
-
 /// The global table, filled in row order: ids do not depend on which thread ran which row.
 class PatternNumbering {
  public:
   explicit PatternNumbering(SystemPatternTable& table) : table_(table) {}
+  /// Merges a block's segments in order: their ids in `pattern` (the block's cells row-major
+  /// from row b0, `columns` a row) replaced by global ids, their counters added.
+  void merge_segments(const std::vector<Segment>& segs, int b0, int columns, uint16_t* pattern,
+                      int64_t& unreliable, int64_t& inconsistent) {
+    for (const Segment& g : segs) {
+      merge_row(g.table, pattern + static_cast<std::size_t>(g.row - b0) * columns + g.c0,
+                g.c1 - g.c0);
+      unreliable += g.unreliable;
+      inconsistent += g.inconsistent;
+    }
+  }
+
+ private:
   /// Replaces the row-local ids in ids[0..cells) by global ids and counts the cells.
   void merge_row(const RowPatterns& row, uint16_t* ids, int cells) {
     std::vector<uint16_t> to_global(row.list.size());
@@ -111,7 +112,6 @@ class PatternNumbering {
     }
   }
 
- private:
   SystemPatternTable& table_;
   std::map<std::vector<TypeTuple>, int> index_;
 };
@@ -132,88 +132,6 @@ void check_common(const ContactSystem& system, const MapOptions& options) {
   throw_if_invalid(options.validate(), "map options");
   if (options.method != RateMethod::kEnumerate)
     throw InputError("map options: the N-point maps use the enumeration route only");
-}
-
-/// Rows per block: all rows without a sink; else about 2^20 cells, at least 4 rows per worker.
-int block_rows_for(bool streamed, int rows, int64_t columns, int threads) {
-  return streamed ? std::min(rows, std::max(grid_block_rows(columns), 4 * threads)) : rows;
-}
-
-/// A piece of one row, a work item: rows are split when a block has too few rows for the
-/// threads (a chunk of a distributed map may be a single row). Each segment numbers its
-/// patterns itself; merged in segment order they give the numbering of a row-major scan.
-struct Segment {
-  int row = 0, c0 = 0, c1 = 0;
-  RowPatterns table;
-  int64_t unreliable = 0, inconsistent = 0;
-};
-
-void plan_segments(int b0, int b1, int columns, int threads, std::vector<Segment>& segs) {
-  segs.clear();
-  const int rows = b1 - b0;
-  const int per_row = std::max(1, std::min(columns, (4 * threads + rows - 1) / rows));
-  for (int i = b0; i < b1; ++i)
-    for (int k = 0; k < per_row; ++k) {
-      Segment g;
-      g.row = i;
-      g.c0 = static_cast<int>(int64_t{columns} * k / per_row);
-      g.c1 = static_cast<int>(int64_t{columns} * (k + 1) / per_row);
-      segs.push_back(std::move(g));
-    }
-}
-
-/// Block [b0, b1) of rows [row0, row1): its segments computed on the threads by fn(k), then
-/// their pattern tables merged in segment order (ids in `pattern`, the block's cells row-major)
-/// and their counters added.
-template <class SegmentFn>
-void run_block(int b0, int b1, int row0, int row1, int columns, int threads,
-               std::vector<Segment>& segs, SegmentFn&& fn, const MapProgress& progress,
-               PatternNumbering& numbering, uint16_t* pattern, int64_t& unreliable,
-               int64_t& inconsistent) {
-  plan_segments(b0, b1, columns, threads, segs);
-  const int n_segs = static_cast<int>(segs.size());
-  run_items(0, n_segs, threads, fn, [&](int done) {
-    if (progress)
-      progress("cells", (b0 - row0 + static_cast<double>(done) / n_segs * (b1 - b0)) /
-                            (row1 - row0));
-  });
-  for (const Segment& g : segs) {
-    const std::size_t base = static_cast<std::size_t>(g.row - b0) * static_cast<std::size_t>(columns);
-    numbering.merge_row(g.table, pattern + base + g.c0, g.c1 - g.c0);
-    unreliable += g.unreliable;
-    inconsistent += g.inconsistent;
-  }
-}
-
-/// Classes of a cell's direction map (as compute_param_param_map for one point).
-struct CellClass {
-  uint8_t cls = 0;
-  int8_t lo = 0, hi = 0;
-  std::vector<TypeTuple> tuples;  ///< union over all directions, sorted
-};
-CellClass classify(const SystemDirectionMap& dm) {
-  auto rank = [](int c) { return c < 0 ? 1000 : c; };  // a continuum ranks above all counts
-  CellClass out;
-  int lo_rank = 1001, hi_rank = -1;
-  bool none = false, multiple = false;
-  auto visit = [&](const SystemRateSummary& s) {
-    const int r = rank(s.count);
-    if (r < lo_rank) { lo_rank = r; out.lo = static_cast<int8_t>(s.count); }
-    if (r > hi_rank) { hi_rank = r; out.hi = static_cast<int8_t>(s.count); }
-    for (int k = 0; k < std::min(s.n_tuples, SystemRateSummary::kCap); ++k)
-      out.tuples.push_back(s.tuples[static_cast<std::size_t>(k)]);
-    none = none || s.count == 0;
-    multiple = multiple || (s.count != 0 && s.count != 1);
-  };
-  for (const auto& s : dm.sectors) visit(s.summary);
-  for (const auto& c : dm.critical) visit(c.summary);
-  std::sort(out.tuples.begin(), out.tuples.end());
-  out.tuples.erase(std::unique(out.tuples.begin(), out.tuples.end()), out.tuples.end());
-  out.cls = static_cast<uint8_t>(none && multiple ? UniquenessClass::kNoneAndSeveral
-                                 : none           ? UniquenessClass::kNoSolutionSome
-                                 : multiple       ? UniquenessClass::kNonUniqueSome
-                                                  : UniquenessClass::kUniqueAll);
-  return out;
 }
 
 ContactSystem cell_system(const ContactSystem& base, const SystemMapAxis& a1, double x,
@@ -266,12 +184,9 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
   PatternNumbering numbering(map.table);
   std::array<GridClassBox, 128> boxes{};
   int block_begin = 0;
-  auto segment = [&](int k) {
-    Segment& g = segs[static_cast<std::size_t>(k)];
+  auto segment = [&](Segment& g) {
     const SystemRatePrecomputed pre = precompute_system_rate(
         apply_system_map_parameter(system, axis.param, axis.value(g.row)));
-    g.table.list.clear();
-    g.unreliable = 0;
     const std::size_t base =
         static_cast<std::size_t>(g.row - block_begin) * static_cast<std::size_t>(theta_n);
     for (int j = g.c0; j < g.c1; ++j) {
@@ -281,28 +196,17 @@ SystemParamDirectionMap compute_system_param_direction_map(const ContactSystem& 
       g.unreliable += !s.reliable;
     }
   };
-  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
-    const int block_end = std::min(row1, block_begin + block_rows);
-    int64_t no_sectors = 0;  // a parameter x direction map has no sectors to check
-    run_block(block_begin, block_end, row0, row1, theta_n, map.threads, segs, segment, progress,
-              numbering, pattern.data(), map.unreliable, no_sectors);
-    for (int i = block_begin; i < block_end; ++i) {
-      const std::size_t base =
-          static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(theta_n);
-      for (int j = 0; j < theta_n; ++j)
-        boxes[static_cast<std::size_t>((count[base + j] + 1) & 127)].add(axis.value(i),
-                                                                         map.theta[j]);
-    }
-    if (sink) {
-      SystemParamDirectionRows rows;
-      rows.row_begin = block_begin;
-      rows.row_end = block_end;
-      rows.count = count.data();
-      rows.pattern = pattern.data();
-      sink(rows);
-    }
-  }
-  if (progress) progress("cells", 1.0);
+  run_grid_blocks(row0, row1, block_rows, theta_n, map.threads, block_begin, segs, progress,
+                  segment, [&](int b0, int b1) {
+                    int64_t no_sectors = 0;  // a parameter x direction map has no sectors
+                    numbering.merge_segments(segs, b0, theta_n, pattern.data(), map.unreliable,
+                                             no_sectors);
+                    add_count_boxes(boxes, count.data(), nullptr, map.type_cells, b0, b1, axis,
+                                    map.theta);
+                    if (sink)
+                      sink(ParamDirectionRows{b0, b1, count.data(), nullptr, nullptr,
+                                              pattern.data()});
+                  });
   if (!sink) {
     map.count = std::move(count);
     map.pattern = std::move(pattern);
@@ -322,9 +226,7 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
   check_common(system, options);
   validate_axis(axis1);
   validate_axis(axis2);
-  if (axis1.param.name() == axis2.param.name())
-    throw InputError("param-param map: the two axes vary the same parameter '" +
-                     axis1.param.name() + "'");
+  check_distinct_axes(axis1, axis2);
   const int n1 = axis1.n, n2 = axis2.n;
   if (!sink && static_cast<int64_t>(n1) * n2 > kMaxSystemMapCells)
     throw InputError("the map has " + std::to_string(static_cast<int64_t>(n1) * n2) +
@@ -353,44 +255,36 @@ SystemParamParamMap compute_system_param_param_map(const ContactSystem& system,
   MapOptions cell_options;
   cell_options.threads = 1;
   int block_begin = 0;
-  auto segment = [&](int k) {
-    Segment& g = segs[static_cast<std::size_t>(k)];
-    g.table.list.clear();
-    g.unreliable = g.inconsistent = 0;
+  auto segment = [&](Segment& g) {
     for (int j = g.c0; j < g.c1; ++j) {
       const SystemDirectionMap dm = compute_system_direction_map(
           cell_system(system, axis1, axis1.value(g.row), axis2, axis2.value(j)), cell_options);
-      CellClass c = classify(dm);
+      std::vector<TypeTuple> tuples;  // the union of the type tuples over all directions
+      const CellClass c = classify_cell(dm, [&](const SystemRateSummary& s) {
+        for (int t = 0; t < std::min(s.n_tuples, SystemRateSummary::kCap); ++t)
+          tuples.push_back(s.tuples[static_cast<std::size_t>(t)]);
+      });
+      std::sort(tuples.begin(), tuples.end());
+      tuples.erase(std::unique(tuples.begin(), tuples.end()), tuples.end());
       const std::size_t at = static_cast<std::size_t>(g.row - block_begin) *
                                  static_cast<std::size_t>(n2) + static_cast<std::size_t>(j);
       cls[at] = c.cls;
       lo[at] = c.lo;
       hi[at] = c.hi;
-      pattern[at] = g.table.id(std::move(c.tuples));
+      pattern[at] = g.table.id(std::move(tuples));
       g.unreliable += dm.unreliable;
       g.inconsistent += dm.inconsistent_sectors;
     }
   };
-  for (block_begin = row0; block_begin < row1; block_begin += block_rows) {
-    const int block_end = std::min(row1, block_begin + block_rows);
-    run_block(block_begin, block_end, row0, row1, n2, map.threads, segs, segment, progress,
-              numbering, pattern.data(), map.unreliable, map.inconsistent_sectors);
-    for (int i = block_begin; i < block_end; ++i) {
-      const std::size_t base = static_cast<std::size_t>(i - block_begin) * static_cast<std::size_t>(n2);
-      for (int j = 0; j < n2; ++j) boxes[cls[base + j]].add(axis1.value(i), axis2.value(j));
-    }
-    if (sink) {
-      SystemParamParamRows rows;
-      rows.row_begin = block_begin;
-      rows.row_end = block_end;
-      rows.cls = cls.data();
-      rows.min_count = lo.data();
-      rows.max_count = hi.data();
-      rows.pattern = pattern.data();
-      sink(rows);
-    }
-  }
-  if (progress) progress("cells", 1.0);
+  run_grid_blocks(row0, row1, block_rows, n2, map.threads, block_begin, segs, progress, segment,
+                  [&](int b0, int b1) {
+                    numbering.merge_segments(segs, b0, n2, pattern.data(), map.unreliable,
+                                             map.inconsistent_sectors);
+                    add_class_boxes(boxes, cls.data(), b0, b1, axis1, axis2);
+                    if (sink)
+                      sink(ParamParamRows{b0, b1, cls.data(), lo.data(), hi.data(), nullptr,
+                                          nullptr, pattern.data()});
+                  });
   if (!sink) {
     map.cls = std::move(cls);
     map.min_count = std::move(lo);

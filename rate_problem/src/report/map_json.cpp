@@ -58,7 +58,7 @@ nlohmann::json system_direction_map_json(const SystemDirectionMap& m, const Cont
     measure[s.summary.count] += s.theta_to - s.theta_from;
   }
   for (const auto& c : m.critical)
-    critical.push_back({{"theta", c.theta}, {"dF", as_list(c.dF)},
+    critical.push_back({{"theta", c.theta}, {"dF", as_list(c.load)},
                         {"count", count_to_json(c.summary.count)},
                         {"types", type_tuple_names(c.summary, N)}});
   nlohmann::json counts = nlohmann::json::object();

@@ -40,32 +40,44 @@ inline bool same_solution_set(const RateSummary& a, const RateSummary& b) noexce
 /// An open sector of directions: the counter-clockwise arc from theta_from to theta_to.
 /// theta_from is in [0, 2 pi) and theta_to in (theta_from, theta_from + 2 pi], so theta_to > 2 pi
 /// marks the sector that contains theta = 0; a map with no critical direction has the single
-/// sector (0, 2 pi] (covering the whole circle).
-struct DirectionSector {
+/// sector (0, 2 pi] (covering the whole circle). Summary: the point kind's (RateSummary for one
+/// point, SystemRateSummary for N points, system_direction_map.hpp).
+template <class Summary>
+struct DirectionSectorOf {
   double theta_from = 0, theta_to = 0;
-  RateSummary summary;        ///< at the midpoint, by options.method
-  RateSummary check;          ///< by the enumeration route when cross-checking (else = summary)
-  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
+  Summary summary;         ///< at the midpoint, by options.method
+  Summary check;           ///< one point: by the enumeration route when cross-checking (else = summary)
+  bool consistent = true;  ///< the quarter points gave the same summary as the midpoint
 };
+using DirectionSector = DirectionSectorOf<RateSummary>;
 
-/// A critical direction (the solution set there differs from an adjacent sector).
-struct CriticalDirectionResult {
+/// A critical direction (the solution set there differs from an adjacent sector); Load: the
+/// point kind's load rate (LoadRate; N points: dF(theta), Eigen::VectorXd).
+template <class Summary, class Load>
+struct CriticalDirectionOf {
   double theta = 0;
-  LoadRate load;                        ///< the exact load used (a form is exactly 0 on it)
-  std::vector<std::string> conditions;  ///< which forms vanish: "N=0", "L+=0", ...
-  RateSummary summary;
-  RateSummary check;
+  Load load;  ///< the exact load used (one point: a form is exactly 0 on it)
+  std::vector<std::string> conditions;  ///< one point: which forms vanish: "N=0", "L+=0", ...
+  Summary summary;
+  Summary check;  ///< one point: by the enumeration route when cross-checking (else = summary)
 };
+using CriticalDirectionResult = CriticalDirectionOf<RateSummary, LoadRate>;
 
-struct DirectionMap {
-  std::vector<DirectionSector> sectors;            ///< sorted by theta_from
-  std::vector<CriticalDirectionResult> critical;   ///< sorted by theta
+/// A direction map of one point or of N points (system_direction_map.hpp): the loads
+/// dF(theta) = cos(theta) e1 + sin(theta) e2 (one point: e1 = dF_T, e2 = dF_N).
+template <class Summary, class Load>
+struct DirectionMapOf {
+  Load e1, e2;  ///< N points: the patterns used (one point: unused)
+  std::vector<DirectionSectorOf<Summary>> sectors;         ///< sorted by theta_from
+  std::vector<CriticalDirectionOf<Summary, Load>> critical;  ///< sorted by theta
+  int candidates = 0;        ///< N points: distinct zeros of the linear forms
   int evaluations = 0;       ///< rate problems solved (per route)
-  int disagreements = 0;     ///< evaluations where the two routes disagree (cross-check only)
+  int disagreements = 0;     ///< one point: evaluations where the two routes disagree (cross-check)
   int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
-  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call (RateSummary)
-  bool cross_checked = false;
+  int unreliable = 0;  ///< evaluations the enumeration flagged as too close to call
+  bool cross_checked = false;  ///< one point: the enumeration route run as well
 };
+using DirectionMap = DirectionMapOf<RateSummary, LoadRate>;
 
 /// Computes the direction map. Throws InputError for invalid parameters, state or options.
 DirectionMap compute_direction_map(const ContactParameters& params, const ContactState& state,

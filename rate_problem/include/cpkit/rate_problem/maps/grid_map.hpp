@@ -39,16 +39,6 @@ struct CriticalDirectionPoint {
   RateSummary summary;     ///< solution set on the critical direction itself
 };
 
-/// The analytic criteria whose sign decides uniqueness for every direction: state b
-/// {"D+", D_+}, {"D-", D_-}; state d {"Lambda", Lambda(sgn P_T)} of eqn (51), with mu replaced
-/// by mu_eff = mu - 2 kappa for the softening criterion (35) (as in the rate problem); else none.
-struct UniquenessCriterion {
-  std::string name;
-  double value = 0;
-};
-std::vector<UniquenessCriterion> uniqueness_criteria(const ContactParameters& params,
-                                                     const ContactState& state);
-
 /// Progress callback: the phase ("cells", "critical curves") and the fraction of it done in
 /// [0, 1]; called from the calling thread only, about every 0.1 s and once with 1 at the end.
 using MapProgress = std::function<void(std::string_view phase, double fraction)>;
@@ -85,6 +75,14 @@ struct RowRange {
 void validate_map_grid(const ContactParameters& params, const ContactState& state,
                        const MapAxis& axis1, const MapAxis* axis2 = nullptr);
 
+/// Distinct point-type patterns of an N-point map, numbered in order of first appearance
+/// (row-major). A pattern is a sorted list of type tuples (TypeTuple, rate/system_rate.hpp;
+/// empty: no solution).
+struct SystemPatternTable {
+  std::vector<std::vector<std::uint64_t>> patterns;
+  std::vector<int64_t> cells;  ///< cells per pattern
+};
+
 /// Rows [row_begin, row_end) of a parameter x direction map of one point or of N points
 /// (system_grid_map.hpp); arrays are row-major with theta_n columns, null where the kind has
 /// none (disagree: one point, cross-checked only; pattern: N points).
@@ -97,22 +95,28 @@ struct ParamDirectionRows {
 };
 using ParamDirectionSink = std::function<void(const ParamDirectionRows&)>;
 
+/// A parameter x direction map of one point or of N points (system_grid_map.hpp); the fields
+/// of the other kind stay empty. Cells are row-major from the first row computed (the whole map
+/// without a row range), empty with a sink.
 struct ParamDirectionMap {
   MapAxis axis;
   int theta_n = 0;
   double theta_from = 0, theta_to = 0;  ///< the sampled range (MapOptions)
   /// cell centres theta_from + (j + 1/2) (theta_to - theta_from) / theta_n
   std::vector<double> theta;
-  std::vector<int8_t> count;     ///< [i * theta_n + j], -1 = infinitely many
-  std::vector<uint8_t> types;    ///< type mask (bit = SolutionType)
-  std::vector<uint8_t> disagree; ///< cross-check: 1 where the routes disagree (empty otherwise)
+  std::vector<int8_t> count;     ///< [i * theta_n + j], -1 = infinitely many (a continuum)
+  std::vector<uint8_t> types;    ///< one point: type mask (bit = SolutionType)
+  std::vector<uint8_t> disagree; ///< one point: 1 where the routes disagree (cross-check only)
+  std::vector<uint16_t> pattern; ///< N points: index into `table`
+  SystemPatternTable table;      ///< N points: the point-type patterns
   int64_t disagreements = 0;
   int64_t unreliable = 0;  ///< cells the enumeration flagged as too close to call
   bool cross_checked = false;
-  std::vector<CriticalValue> critical_values;            ///< analytic curves x = const
-  std::vector<CriticalDirectionPoint> critical_directions;  ///< curves theta_c(x)
+  std::vector<CriticalValue> critical_values;            ///< one point: analytic curves x = const
+  std::vector<CriticalDirectionPoint> critical_directions;  ///< one point: curves theta_c(x)
   std::vector<GridClassBox> classes;       ///< per count, sorted by count (-1 first)
-  std::array<int64_t, 32> type_cells{};    ///< cells per type mask
+  std::array<int64_t, 32> type_cells{};    ///< one point: cells per type mask
+  int m_max = 0;  ///< N points: largest rate LCP over the rows
   double seconds = 0;
   int threads = 1;
   int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
@@ -152,19 +156,24 @@ struct ParamParamRows {
 };
 using ParamParamSink = std::function<void(const ParamParamRows&)>;
 
+/// A parameter x parameter map of one point or of N points (system_grid_map.hpp); the fields
+/// of the other kind stay empty. Cells as ParamDirectionMap's.
 struct ParamParamMap {
   MapAxis axis1, axis2;
   std::vector<uint8_t> cls;       ///< [i * axis2.n + j]
   std::vector<int8_t> min_count;  ///< over all directions (-1: infinite)
   std::vector<int8_t> max_count;  ///< over all directions (-1: infinite)
-  std::vector<uint8_t> types;     ///< union of the type masks over all directions
-  std::vector<uint8_t> disagree;  ///< cross-check (empty otherwise)
+  std::vector<uint8_t> types;     ///< one point: union of the type masks over all directions
+  std::vector<uint8_t> disagree;  ///< one point: cross-check (empty otherwise)
+  std::vector<uint16_t> pattern;  ///< N points: union of the type tuples, index into `table`
+  SystemPatternTable table;       ///< N points: the point-type patterns
   int64_t disagreements = 0;
   int64_t inconsistent_sectors = 0;
   int64_t unreliable = 0;  ///< direction-map evaluations flagged as too close to call
   bool cross_checked = false;
-  std::vector<CriticalValue> critical_curve;  ///< points (x, y) where a criterion is 0
+  std::vector<CriticalValue> critical_curve;  ///< one point: points (x, y) where a criterion is 0
   std::vector<GridClassBox> classes;          ///< per UniquenessClass present, by code
+  int m_max = 0;  ///< N points: largest rate LCP over the rows
   double seconds = 0;
   int threads = 1;
   int64_t cells() const noexcept { return static_cast<int64_t>(axis1.n) * axis2.n; }

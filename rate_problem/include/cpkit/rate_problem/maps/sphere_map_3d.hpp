@@ -92,19 +92,6 @@ struct Map3dOptions {
   std::string validate(const ContactSystem3d& system) const;
 };
 
-struct Cell3d {
-  int8_t count = 0;     ///< -1: infinitely many (a ray of the one-point state d)
-  uint8_t types = 0;    ///< mask of type_bit() of the loaded point's solution types
-  bool complete = true;
-  bool timed_out = false;  ///< the time limit ended the cell's solve (complete = false)
-};
-
-/// One cell: every solution for the load rate dF (3N) by the route of `options`; the faceted
-/// solve gets at most `time_limit_s` seconds (default 60, as solve_system_rate_3d_faceted;
-/// options.time_limit_s is the map's, not used here).
-Cell3d evaluate_cell_3d(const ContactSystem3d& system, const Eigen::VectorXd& dF,
-                        const Map3dOptions& options, double time_limit_s = 60);
-
 /// Progress: fraction of rows done, from the calling thread (about every 0.1 s).
 using Map3dProgress = std::function<void(double fraction)>;
 

@@ -29,28 +29,14 @@ namespace cpkit::rate {
 bool same_solution_set(const SystemRateSummary& a, const SystemRateSummary& b) noexcept;
 
 /// An open sector (theta_from, theta_to) of directions, conventions as DirectionSector.
-struct SystemDirectionSector {
-  double theta_from = 0, theta_to = 0;
-  SystemRateSummary summary;  ///< at the midpoint
-  bool consistent = true;     ///< the quarter points gave the same summary as the midpoint
-};
+using SystemDirectionSector = DirectionSectorOf<SystemRateSummary>;
+/// A critical direction: the solution set there differs from an adjacent sector; load: dF =
+/// cos(theta) e1 + sin(theta) e2.
+using SystemCriticalDirection = CriticalDirectionOf<SystemRateSummary, Eigen::VectorXd>;
 
-/// A critical direction: the solution set there differs from an adjacent sector.
-struct SystemCriticalDirection {
-  double theta = 0;
-  Eigen::VectorXd dF;  ///< cos(theta) e1 + sin(theta) e2
-  SystemRateSummary summary;
-};
-
-struct SystemDirectionMap {
-  Eigen::VectorXd e1, e2;                         ///< the patterns used
-  std::vector<SystemDirectionSector> sectors;     ///< sorted by theta_from
-  std::vector<SystemCriticalDirection> critical;  ///< sorted by theta
-  int candidates = 0;            ///< distinct zeros of the linear forms
-  int evaluations = 0;           ///< rate problems summarised
-  int inconsistent_sectors = 0;  ///< sectors whose quarter points disagree with the midpoint
-  int unreliable = 0;            ///< evaluations flagged unreliable (SystemRateSummary)
-};
+/// The N-point direction map: e1, e2 (the patterns used), sectors, critical, candidates,
+/// evaluations, inconsistent_sectors, unreliable.
+using SystemDirectionMap = DirectionMapOf<SystemRateSummary, Eigen::VectorXd>;
 
 /// The load patterns of a system's maps: the file's e1, e2, or by default e1 = (1, 0, 1, 0, ...),
 /// e2 = (0, 1, 0, 1, ...). Throws InputError when they are linearly dependent.

@@ -45,33 +45,12 @@ SystemMapParameter parse_system_map_parameter(std::string_view s, int n_points);
 ContactSystem apply_system_map_parameter(const ContactSystem& base, const SystemMapParameter& p,
                                          double value);
 
-/// Distinct point-type patterns of a map, numbered in order of first appearance (row-major).
-/// A pattern is a sorted list of type tuples (empty: no solution).
-struct SystemPatternTable {
-  std::vector<std::vector<TypeTuple>> patterns;
-  std::vector<int64_t> cells;  ///< cells per pattern
-};
-
 /// Rows of an N-point parameter x direction map: count and pattern (grid_map.hpp).
 using SystemParamDirectionRows = ParamDirectionRows;
 using SystemParamDirectionSink = ParamDirectionSink;
 
-struct SystemParamDirectionMap {
-  SystemMapAxis axis;
-  int theta_n = 0;
-  double theta_from = 0, theta_to = 0;  ///< the sampled range (MapOptions)
-  std::vector<double> theta;        ///< cell centres theta_from + (j + 1/2) span / theta_n
-  /// [(i - rows.begin) * theta_n + j]; -1: a continuum (empty with a sink)
-  std::vector<int8_t> count;
-  std::vector<uint16_t> pattern;    ///< [i * theta_n + j]: index into `table` (empty with a sink)
-  SystemPatternTable table;
-  std::vector<GridClassBox> classes;   ///< per count (-1 first), bounding boxes (x, theta)
-  int64_t unreliable = 0;  ///< cells the enumeration flagged as not decided (complete: false)
-  int m_max = 0;           ///< largest rate LCP over the rows
-  int threads = 1;
-  double seconds = 0;
-  int64_t cells() const noexcept { return static_cast<int64_t>(axis.n) * theta_n; }
-};
+/// An N-point parameter x direction map: count, pattern, table, classes, unreliable, m_max.
+using SystemParamDirectionMap = ParamDirectionMap;
 
 /// Largest map kept in memory (without a sink): 3 bytes a cell. With a sink any size is
 /// streamed; memory is one block of rows.
@@ -94,21 +73,9 @@ SystemParamDirectionMap compute_system_param_direction_map(
 using SystemParamParamRows = ParamParamRows;
 using SystemParamParamSink = ParamParamSink;
 
-struct SystemParamParamMap {
-  SystemMapAxis axis1, axis2;
-  std::vector<uint8_t> cls;       ///< [i * axis2.n + j] (empty with a sink)
-  std::vector<int8_t> min_count;  ///< over all directions (-1: a continuum)
-  std::vector<int8_t> max_count;  ///< over all directions (-1: a continuum)
-  std::vector<uint16_t> pattern;  ///< union of the type tuples over all directions
-  SystemPatternTable table;
-  std::vector<GridClassBox> classes;  ///< per UniquenessClass present, by code
-  int64_t unreliable = 0;             ///< direction-map evaluations too close to call
-  int64_t inconsistent_sectors = 0;   ///< direction-map sectors that are not uniform
-  int m_max = 0;
-  int threads = 1;
-  double seconds = 0;
-  int64_t cells() const noexcept { return static_cast<int64_t>(axis1.n) * axis2.n; }
-};
+/// An N-point parameter x parameter map: cls, min_count, max_count, pattern, table, classes,
+/// unreliable, inconsistent_sectors, m_max.
+using SystemParamParamMap = ParamParamMap;
 
 /// Computes a parameter x parameter map, each cell classified from its exact direction map
 /// (compute_system_direction_map): unique for every direction, non-unique for some, no solution
