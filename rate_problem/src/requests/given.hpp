@@ -18,7 +18,7 @@ struct Given {
 };
 
 template <class T>
-Given given(const char* name, const std::optional<T>& value) {
+Given option(const char* name, const std::optional<T>& value) {
   return {name, value.has_value()};
 }
 
@@ -36,9 +36,9 @@ inline void require_given(const std::vector<Given>& options, const std::string& 
 
 /// The one-point model options, in the order their refusals name the first one given.
 inline std::vector<Given> model_options_given(const ModelOptions& m) {
-  return {given("--a11", m.a11), given("--a12", m.a12),     given("--a22", m.a22),
-          given("--mu", m.mu),   given("--C_T", m.C_T),     given("--k_a", m.k_a),
-          given("--P_s", m.P_s), given("--criterion", m.criterion)};
+  return {option("--a11", m.a11), option("--a12", m.a12), option("--a22", m.a22),
+          option("--mu", m.mu),   option("--C_T", m.C_T), option("--k_a", m.k_a),
+          option("--P_s", m.P_s), option("--criterion", m.criterion)};
 }
 
 }  // namespace cpkit::rate::detail

@@ -321,8 +321,8 @@ MapOptions one_point_options(const MapRequest& a, const MapSetup& s, const MapEn
   options.threads = threads;
   // Zoom on a thin band of directions (sampled directions of a param-direction map only).
   if (s.kind != MapKind::kParamDirection)
-    detail::refuse_given({detail::given("--theta-from", a.theta_from),
-                          detail::given("--theta-to", a.theta_to)},
+    detail::refuse_given({detail::option("--theta-from", a.theta_from),
+                          detail::option("--theta-to", a.theta_to)},
                          " applies to --kind param-direction only (a " +
                              std::string(to_string(s.kind)) +
                              " map computes the critical directions exactly, without sampling)");
@@ -748,8 +748,8 @@ MapOutcome run_map_request(const MapRequest& a, const MapEnvironment& env) {
   // The system file was read once (a pipe can be read only once): dispatched on its dim.
   const bool system = a.system.has_value();
   if (system && a.file.dim == 3) return run_map_3d(a, env);
-  detail::refuse_given({detail::given("--facets", a.facets), detail::given("--point", a.point),
-                        detail::given("--others", a.others), detail::given("--gamma", a.gamma)},
+  detail::refuse_given({detail::option("--facets", a.facets), detail::option("--point", a.point),
+                        detail::option("--others", a.others), detail::option("--gamma", a.gamma)},
                        " applies to maps of 3-D systems (--system FILE with \"dim\": 3)");
   if (system) return run_system_map(system_map_request(a, a.file, env.size()), env);
   return run_one_point_map(a, env);

@@ -17,15 +17,15 @@ namespace cpkit::rate {
 
 namespace {
 
-using detail::given;
+using detail::option;
 using detail::Given;
 using Note = std::function<void(const std::string&)>;
 
 /// The options a one-point problem needs besides --dF (with --system they come from the file).
 std::vector<Given> one_point_options(const RateRequest& a) {
   const ModelOptions& m = a.model;
-  return {given("--state", a.state), given("--a11", m.a11), given("--a12", m.a12),
-          given("--a22", m.a22), given("--mu", m.mu)};
+  return {option("--state", a.state), option("--a11", m.a11), option("--a12", m.a12),
+          option("--a22", m.a22), option("--mu", m.mu)};
 }
 
 /// How a system's load rate is described in messages (2-D and 3-D differ).
@@ -60,7 +60,7 @@ void check_state_options(const RateRequest& a, const Note& note) {
     throw InputError("--sgnPT has no effect in state " + st + ": only state d (sliding) has a "
                      "sign of P_T");
   if (st == "a" || st == "b")
-    for (const Given& o : {given("--k_a", a.model.k_a), given("--P_s", a.model.P_s)})
+    for (const Given& o : {option("--k_a", a.model.k_a), option("--P_s", a.model.P_s)})
       if (o.given && note)
         note(std::string("note: ") + o.name + " does not enter state " + st +
              " (P_N = 0 there, so no wear: kappa = k_a P_N / (3 P_s) enters states c "

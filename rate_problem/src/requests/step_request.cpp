@@ -14,7 +14,7 @@ namespace cpkit::rate {
 
 namespace {
 
-using detail::given;
+using detail::option;
 using detail::Given;
 
 std::vector<std::string> split_chain(const std::string& chain) {
@@ -78,9 +78,9 @@ void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& ou
 void run_system(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point options describe one point; with a system file they would be ignored.
   std::vector<Given> options = detail::model_options_given(r.model);
-  options.insert(options.end(), {given("--wear-law", r.wear_law), given("--k_M", r.k_M),
-                                 given("--P_T0", r.P_T0), given("--P_N0", r.P_N0),
-                                 given("--g0", r.g0), given("--chain", r.chain)});
+  options.insert(options.end(), {option("--wear-law", r.wear_law), option("--k_M", r.k_M),
+                                 option("--P_T0", r.P_T0), option("--P_N0", r.P_N0),
+                                 option("--g0", r.g0), option("--chain", r.chain)});
   detail::refuse_given(options, " cannot be combined with --system (the system file gives "
                                 "every point's parameters and state)");
   if (!r.all) throw InputError("--system needs --all (the N-point step reports every solution)");
@@ -198,7 +198,7 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
 void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point 2-D options describe a 2-D point; the file gives the 3-D point.
   std::vector<Given> options = detail::model_options_given(r.model);
-  options.insert(options.end(), {given("--P_T0", r.P_T0), given("--P_N0", r.P_N0)});
+  options.insert(options.end(), {option("--P_T0", r.P_T0), option("--P_N0", r.P_N0)});
   detail::refuse_given(options, " cannot be combined with a \"dim\": 3 --system file (the file "
                                 "gives the point's parameters and state)");
   if (r.multistart) check_multistart_cap(*r.multistart, "--multistart");
@@ -283,7 +283,7 @@ StepOutcome run_step_request(const StepRequest& r) {
     run_step_3d(r, *file, out);
     return out;
   }
-  detail::refuse_given({given("--facets", r.facets), given("--multistart", r.multistart)},
+  detail::refuse_given({option("--facets", r.facets), option("--multistart", r.multistart)},
                        " applies to a \"dim\": 3 --system file (one 3-D point)");
   if (r.all && r.chain)
     throw InputError("--chain has no effect with --all (every solution comes from the complete "
@@ -292,9 +292,9 @@ StepOutcome run_step_request(const StepRequest& r) {
     run_system(r, *file, out);
     return out;
   }
-  detail::require_given({given("--a11", r.model.a11), given("--a12", r.model.a12),
-                         given("--a22", r.model.a22), given("--mu", r.model.mu),
-                         given("--P_T0", r.P_T0), given("--P_N0", r.P_N0), given("--g0", r.g0)},
+  detail::require_given({option("--a11", r.model.a11), option("--a12", r.model.a12),
+                         option("--a22", r.model.a22), option("--mu", r.model.mu),
+                         option("--P_T0", r.P_T0), option("--P_N0", r.P_N0), option("--g0", r.g0)},
                         " is required (or --system FILE for N points)");
   const StepProblem p = point_problem(r);
   if (r.all) {

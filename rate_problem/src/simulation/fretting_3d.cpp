@@ -97,15 +97,6 @@ std::string Fretting3dOptions::validate() const {
 
 namespace {
 
-std::string describe_orbit(const Fretting3dSample& s) {
-  std::ostringstream o;
-  o.precision(10);
-  o << "t = " << s.t << " (step " << s.step << "): P_T = (" << s.P_T(0) << ", " << s.P_T(1)
-    << "), P_N = " << s.P_N << ", g = " << s.g << ", w^w = " << s.w_w << ", F = (" << s.F_T(0)
-    << ", " << s.F_T(1) << ", " << s.F_N << ")";
-  return o.str();
-}
-
 bool finite(const Fretting3dSample& s) noexcept {
   return s.P_T.allFinite() && std::isfinite(s.P_N) && std::isfinite(s.g) && s.w_T.allFinite() &&
          std::isfinite(s.w_N) && s.w_Ti.allFinite() && std::isfinite(s.w_w) &&
@@ -359,7 +350,14 @@ class OrbitMarch {
     return num_text(lp.t, 10) + " (load (" + num_text(lp.F_T(0), 10) + ", " +
            num_text(lp.F_T(1), 10) + ", " + num_text(lp.F_N, 10) + "))";
   }
-  std::string describe(const Sample& s) const { return describe_orbit(s); }
+  std::string describe(const Sample& s) const {
+    std::ostringstream o;
+    o.precision(10);
+    o << "t = " << s.t << " (step " << s.step << "): P_T = (" << s.P_T(0) << ", " << s.P_T(1)
+      << "), P_N = " << s.P_N << ", g = " << s.g << ", w^w = " << s.w_w << ", F = (" << s.F_T(0)
+      << ", " << s.F_T(1) << ", " << s.F_N << ")";
+    return o.str();
+  }
 
   void finish(Result& res) const { res.wear_depth = res.final_state.w_w; }
 

@@ -71,15 +71,6 @@ const char* first_non_finite(const SimulationSample& s, const Sums& r) noexcept 
   return nullptr;
 }
 
-std::string describe_point(const SimulationSample& s) {
-  std::ostringstream o;
-  o.precision(10);
-  o << "t = " << s.t << " (step " << s.step << "), state " << to_string(s.state)
-    << ": P_T = " << s.P_T << ", P_N = " << s.P_N << ", g = " << s.g << ", w_T = " << s.w_T
-    << ", w_N = " << s.w_N << ", w^w = " << s.w_w << ", F = (" << s.F_T << ", " << s.F_N << ")";
-  return o.str();
-}
-
 /// Why a step has no solution to march on (pts.n == 0), with the outcome that says it.
 detail::MarchStop no_solution_stop(const StepPoints& pts, const StepProblem& sp) {
   std::ostringstream m;
@@ -124,11 +115,9 @@ class PointMarch {
   /// Unloaded, grazing (state b) at t = 0; a leading unloaded point at t <= 0 is the start of
   /// the run (its t becomes the start time); any other load needs t > 0.
   Sample start(const LoadPoint& front, double& t_prev, std::size_t& k0) const {
+    check(front, 0, 0);
     Sample cur;
     cur.temperature = opt_.heat.T_initial;
-    if (!std::isfinite(front.t) || !std::isfinite(front.F_T) || !std::isfinite(front.F_N))
-      throw InputError("load history: load point 0 (t = " + std::to_string(front.t) +
-                       ") has a non-finite value");
     if (front.t > 0) return cur;
     if (front.F_T != 0 || front.F_N != 0)
       throw InputError("load history: the run starts unloaded at t = 0, so the first point "
@@ -139,13 +128,12 @@ class PointMarch {
     return cur;
   }
 
-  /// Points of a generated history are checked as they are reached (point 0 by start).
+  /// Points of a generated history are checked as they are reached (point 0 also by start).
   void check(const LoadPoint& lp, std::size_t k, double t_last) const {
-    if (k == 0) return;
     if (!std::isfinite(lp.t) || !std::isfinite(lp.F_T) || !std::isfinite(lp.F_N))
       throw InputError("load history: load point " + std::to_string(k) + " (t = " +
                        std::to_string(lp.t) + ") has a non-finite value");
-    if (!(lp.t > t_last))
+    if (k > 0 && !(lp.t > t_last))
       throw InputError("load history: load point " + std::to_string(k) + ": t = " +
                        std::to_string(lp.t) + " does not increase (previous " +
                        std::to_string(t_last) + ")");
@@ -267,7 +255,14 @@ class PointMarch {
       return num_text(lp.t);
     return num_text(lp.t) + " (load (" + num_text(lp.F_T) + ", " + num_text(lp.F_N) + "))";
   }
-  std::string describe(const Sample& s) const { return describe_point(s); }
+  std::string describe(const Sample& s) const {
+    std::ostringstream o;
+    o.precision(10);
+    o << "t = " << s.t << " (step " << s.step << "), state " << to_string(s.state)
+      << ": P_T = " << s.P_T << ", P_N = " << s.P_N << ", g = " << s.g << ", w_T = " << s.w_T
+      << ", w_N = " << s.w_N << ", w^w = " << s.w_w << ", F = (" << s.F_T << ", " << s.F_N << ")";
+    return o.str();
+  }
 
   /// The totals of the result from the last state and the running sums.
   void finish(Result& res) const {

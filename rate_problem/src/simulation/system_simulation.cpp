@@ -50,14 +50,6 @@ std::string SystemSimulationOptions::validate() const {
 
 namespace {
 
-std::string describe_points(const SystemSimulationSample& s) {
-  std::ostringstream o;
-  o.precision(8);
-  o << "t = " << s.t << " (step " << s.step << "), states ";
-  for (std::size_t i = 0; i < s.state.size(); ++i) o << (i ? "/" : "") << to_string(s.state[i]);
-  return o.str();
-}
-
 /// Per point: Archard k, the weight of the slip in the branch distance, C_T.
 struct PointConstants {
   Eigen::VectorXd k, xi_weight, C_T;
@@ -265,7 +257,13 @@ class SystemMarch {
   std::string at(const SystemLoadPoint& lp, SimulationOutcome o) const {
     return o == SimulationOutcome::kNumericalFailure ? std::to_string(lp.t) : num_text(lp.t);
   }
-  std::string describe(const Sample& s) const { return describe_points(s); }
+  std::string describe(const Sample& s) const {
+    std::ostringstream o;
+    o.precision(8);
+    o << "t = " << s.t << " (step " << s.step << "), states ";
+    for (std::size_t i = 0; i < s.state.size(); ++i) o << (i ? "/" : "") << to_string(s.state[i]);
+    return o.str();
+  }
 
   void finish(Result& res) const {
     const Sample& cur = res.final_state;

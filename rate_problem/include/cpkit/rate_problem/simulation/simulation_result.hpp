@@ -84,8 +84,9 @@ struct SimulationResultOf {
   long enumeration_missed = 0;
   std::string first_missed;
   double wear_depth = 0;      ///< one point: final w^w
-  /// The wear law summed along the run from the end-of-step values: Archard
-  /// sum k P_N1 |D Dw_T^i| (2-D: D = 1; N points: per point), 3-D Mroz (41) sum k_M P_T1 . Dw_T^i.
+  /// The wear law summed along the run from the end-of-step values: 2-D sum c_w P_N1 |Dw_T^i|
+  /// (c_w the law's coefficient; N points: per point, Archard k_i); 3-D Archard (40)
+  /// sum k P_N1 |D Dw_T^i|, Mroz (41) sum k_M P_T1 . Dw_T^i.
   PerPoint wear_integral{};
   PerPoint total_slip{};            ///< sum |Dw_T^i| (3-D: Euclidean length of the slip path)
   double total_lambda = 0;          ///< 3-D: sum |D Dw_T^i|
