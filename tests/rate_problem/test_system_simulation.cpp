@@ -49,6 +49,16 @@ TEST_CASE("OnePointSystemSimulationEqualsTheOnePointSimulation", "[system_sim]")
   CHECK(r.total_slip[0] == Approx(ref.total_slip).epsilon(1e-9));
   CHECK(r.external_work == Approx(ref.external_work).epsilon(1e-9));
   CHECK(r.energy_error == Approx(ref.energy_error).epsilon(1e-6).margin(1e-12));
+  // Without on_sample the series is kept, as the one-point march keeps it: sample by sample.
+  REQUIRE(r.series.size() == ref.series.size());
+  REQUIRE(r.series.size() == static_cast<std::size_t>(ref.steps) + 1);
+  for (std::size_t j = 0; j < r.series.size(); ++j) {
+    INFO("sample " << j);
+    CHECK(r.series[j].t == ref.series[j].t);
+    CHECK(r.series[j].P_T[0] == Approx(ref.series[j].P_T).epsilon(1e-9).margin(1e-12));
+    CHECK(r.series[j].w_w[0] == Approx(ref.series[j].w_w).epsilon(1e-9).margin(1e-15));
+    CHECK(r.series[j].state[0] == ref.series[j].state);
+  }
 }
 
 TEST_CASE("FlatPunchPartialSlipAndArchardWearPerPoint", "[system_sim]") {

@@ -25,6 +25,7 @@
 #include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
 #include "cpkit/rate_problem/report/map_json.hpp"
 #include "cpkit/rate_problem/report/map_text.hpp"
+#include "given.hpp"
 
 namespace cpkit::rate {
 
@@ -319,13 +320,12 @@ MapOptions one_point_options(const MapRequest& a, const MapSetup& s, const MapEn
                      std::to_string(threads));
   options.threads = threads;
   // Zoom on a thin band of directions (sampled directions of a param-direction map only).
-  for (const auto& [name, given] :
-       {std::pair<const char*, bool>{"--theta-from", a.theta_from.has_value()},
-        {"--theta-to", a.theta_to.has_value()}})
-    if (given && s.kind != MapKind::kParamDirection)
-      throw InputError(std::string(name) + " applies to --kind param-direction only (a " +
-                       std::string(to_string(s.kind)) +
-                       " map computes the critical directions exactly, without sampling)");
+  if (s.kind != MapKind::kParamDirection)
+    detail::refuse_given({detail::option("--theta-from", a.theta_from),
+                          detail::option("--theta-to", a.theta_to)},
+                         " applies to --kind param-direction only (a " +
+                             std::string(to_string(s.kind)) +
+                             " map computes the critical directions exactly, without sampling)");
   options.theta_from = a.theta_from.value_or(options.theta_from);
   options.theta_to = a.theta_to.value_or(options.theta_to);
   throw_in_options(options.validate(), {{"theta_from", "--theta-from"},
@@ -748,13 +748,9 @@ MapOutcome run_map_request(const MapRequest& a, const MapEnvironment& env) {
   // The system file was read once (a pipe can be read only once): dispatched on its dim.
   const bool system = a.system.has_value();
   if (system && a.file.dim == 3) return run_map_3d(a, env);
-  for (const auto& [opt, given] : {std::pair<const char*, bool>{"--facets", a.facets.has_value()},
-                                   {"--point", a.point.has_value()},
-                                   {"--others", a.others.has_value()},
-                                   {"--gamma", a.gamma.has_value()}})
-    if (given)
-      throw InputError(std::string(opt) + " applies to maps of 3-D systems (--system FILE with "
-                       "\"dim\": 3)");
+  detail::refuse_given({detail::option("--facets", a.facets), detail::option("--point", a.point),
+                        detail::option("--others", a.others), detail::option("--gamma", a.gamma)},
+                       " applies to maps of 3-D systems (--system FILE with \"dim\": 3)");
   if (system) return run_system_map(system_map_request(a, a.file, env.size()), env);
   return run_one_point_map(a, env);
 }

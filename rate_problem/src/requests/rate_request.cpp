@@ -11,25 +11,21 @@
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
+#include "given.hpp"
 
 namespace cpkit::rate {
 
 namespace {
 
+using detail::option;
+using detail::Given;
 using Note = std::function<void(const std::string&)>;
 
-/// An option's name in messages and whether it was given.
-struct Given {
-  const char* name;
-  bool given;
-};
-
-/// The options a one-point problem needs (with --system they come from the file, --dF aside).
+/// The options a one-point problem needs besides --dF (with --system they come from the file).
 std::vector<Given> one_point_options(const RateRequest& a) {
   const ModelOptions& m = a.model;
-  return {{"--state", a.state.has_value()}, {"--a11", m.a11.has_value()},
-          {"--a12", m.a12.has_value()},     {"--a22", m.a22.has_value()},
-          {"--mu", m.mu.has_value()},       {"--dF", !a.dF.empty()}};
+  return {option("--state", a.state), option("--a11", m.a11), option("--a12", m.a12),
+          option("--a22", m.a22), option("--mu", m.mu)};
 }
 
 /// How a system's load rate is described in messages (2-D and 3-D differ).
@@ -64,8 +60,7 @@ void check_state_options(const RateRequest& a, const Note& note) {
     throw InputError("--sgnPT has no effect in state " + st + ": only state d (sliding) has a "
                      "sign of P_T");
   if (st == "a" || st == "b")
-    for (const Given& o : {Given{"--k_a", a.model.k_a.has_value()},
-                           Given{"--P_s", a.model.P_s.has_value()}})
+    for (const Given& o : {option("--k_a", a.model.k_a), option("--P_s", a.model.P_s)})
       if (o.given && note)
         note(std::string("note: ") + o.name + " does not enter state " + st +
              " (P_N = 0 there, so no wear: kappa = k_a P_N / (3 P_s) enters states c "
@@ -161,8 +156,9 @@ void run_one_point(const RateRequest& a, RateOutcome& out, const Note& note) {
   if (a.facets != 0)
     throw InputError("--facets applies to 3-D points (--system FILE with \"dim\": 3, "
                      "docs/contact_3d.md)");
-  for (const Given& o : one_point_options(a))
-    if (!o.given) throw InputError(std::string(o.name) + " is required (or give --system FILE)");
+  std::vector<Given> required = one_point_options(a);
+  required.push_back({"--dF", !a.dF.empty()});
+  detail::require_given(required, " is required (or give --system FILE)");
   // the criterion's name, then the values (as the program has always checked them)
   const ContactParameters p = model_parameters(a.model);
   ContactState st;
@@ -205,10 +201,8 @@ RateOutcome run_rate_request(const RateRequest& a, const Note& note) {
     run_one_point(a, out, note);
     return out;
   }
-  for (const Given& o : one_point_options(a))
-    if (o.given && std::string(o.name) != "--dF")
-      throw InputError(std::string(o.name) + " is a one-point option; with --system the state "
-                       "and parameters come from the system file");
+  detail::refuse_given(one_point_options(a), " is a one-point option; with --system the state "
+                                             "and parameters come from the system file");
   run_system(a, out);
   return out;
 }

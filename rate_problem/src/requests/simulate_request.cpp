@@ -111,6 +111,16 @@ SimulateOutcome outputs(const std::string& csv, const std::string& summary,
   return o;
 }
 
+/// The exit code of every march: 0 completed; 5 stopped at a step whose enumeration is not
+/// proved complete (N points: no solution found; 3-D: several, ambiguous); else 1 (no solution,
+/// a continuum, a branch point with the rule 'stop', numerical failure).
+template <class Sample, class PerPoint>
+ExitCode exit_code(const SimulationResultOf<Sample, PerPoint>& r) {
+  if (r.outcome == SimulationOutcome::kCompleted) return kExitOk;
+  return r.inconclusive || r.outcome == SimulationOutcome::kAmbiguous ? kExitInconclusive
+                                                                      : kExitNoSolution;
+}
+
 /// One 3-D point under an elliptic load orbit (fretting_3d.hpp); the options of the 2-D
 /// simulation are refused.
 SimulateOutcome run_3d(const SimulateRequest& a, const SystemFile& file) {
@@ -195,9 +205,7 @@ SimulateOutcome run_3d(const SimulateRequest& a, const SystemFile& file) {
   out.summary["run"] = a.run;
   if (!out.summary_file.empty()) write_json_file(out.summary_file, out.summary);
   out.text = fretting_3d_text(r, o.wear.law);
-  out.exit_code = r.outcome == Fretting3dResult::Outcome::kCompleted ? kExitOk
-                  : r.outcome == Fretting3dResult::Outcome::kAmbiguous ? kExitInconclusive
-                                                                       : kExitNoSolution;
+  out.exit_code = exit_code(r);
   return out;
 }
 
@@ -235,9 +243,7 @@ SimulateOutcome run_system(const SimulateSettings& s, const SystemFile& file,
   out.summary["cpkit_version"] = a.version;
   if (!out.summary_file.empty()) write_json_file(out.summary_file, out.summary);
   out.text = system_simulation_text(r);
-  out.exit_code = r.outcome == SimulationResult::Outcome::kCompleted ? kExitOk
-                  : r.inconclusive                                   ? kExitInconclusive
-                                                                     : kExitNoSolution;
+  out.exit_code = exit_code(r);
   return out;
 }
 
@@ -255,8 +261,7 @@ SimulateOutcome run_one_point(SimulateSettings& s, const SimulateRequest& a) {
   out.summary["run"] = a.run;  // version and command line
   if (!out.summary_file.empty()) write_json_file(out.summary_file, out.summary);
   out.text = simulation_text(r, s.opt.heat.enabled);
-  out.exit_code =
-      r.outcome == SimulationResult::Outcome::kCompleted ? kExitOk : kExitNoSolution;
+  out.exit_code = exit_code(r);
   return out;
 }
 

@@ -8,24 +8,14 @@
 #include "cpkit/rate_problem/step/multistart_cap.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
+#include "given.hpp"
 
 namespace cpkit::rate {
 
 namespace {
 
-/// An option's name in messages and whether it was given.
-struct Given {
-  const char* name;
-  bool given;
-};
-
-/// The one-point model options, in the order their refusals name the first one given.
-std::vector<Given> point_options(const ModelOptions& m) {
-  return {Given{"--a11", m.a11.has_value()},  Given{"--a12", m.a12.has_value()},
-          Given{"--a22", m.a22.has_value()},  Given{"--mu", m.mu.has_value()},
-          Given{"--C_T", m.C_T.has_value()},  Given{"--k_a", m.k_a.has_value()},
-          Given{"--P_s", m.P_s.has_value()},  Given{"--criterion", m.criterion.has_value()}};
-}
+using detail::option;
+using detail::Given;
 
 std::vector<std::string> split_chain(const std::string& chain) {
   std::vector<std::string> names;
@@ -40,11 +30,18 @@ ExitCode set_exit_code(bool found, bool complete) {
   return complete ? kExitNoSolution : kExitInconclusive;
 }
 
+/// --wear-law (default archard) and --k_M.
+WearModel wear_model(const StepRequest& r) {
+  WearModel w;
+  w.law = wear_law_option(r.wear_law.value_or("archard"));
+  w.k_M = r.k_M.value_or(0);
+  return w;
+}
+
 StepProblem point_problem(const StepRequest& r) {
   StepProblem p;
   p.params = model_parameters(r.model);
-  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
-  p.wear.k_M = r.k_M.value_or(0);
+  p.wear = wear_model(r);
   p.state = {*r.P_T0, *r.P_N0, *r.g0};
   if (r.DF.size() != 2) throw InputError("--dF needs two values: DFT DFN");
   p.load = {r.DF[0], r.DF[1]};
@@ -80,15 +77,12 @@ void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& ou
 /// `--system` of dim 2: every solution of the N-point step (system_step.hpp).
 void run_system(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point options describe one point; with a system file they would be ignored.
-  std::vector<Given> options = point_options(r.model);
-  options.insert(options.end(),
-                 {Given{"--wear-law", r.wear_law.has_value()}, Given{"--k_M", r.k_M.has_value()},
-                  Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()},
-                  Given{"--g0", r.g0.has_value()}, Given{"--chain", r.chain.has_value()}});
-  for (const Given& o : options)
-    if (o.given)
-      throw InputError(std::string(o.name) + " cannot be combined with --system (the system "
-                       "file gives every point's parameters and state)");
+  std::vector<Given> options = detail::model_options_given(r.model);
+  options.insert(options.end(), {option("--wear-law", r.wear_law), option("--k_M", r.k_M),
+                                 option("--P_T0", r.P_T0), option("--P_N0", r.P_N0),
+                                 option("--g0", r.g0), option("--chain", r.chain)});
+  detail::refuse_given(options, " cannot be combined with --system (the system file gives "
+                                "every point's parameters and state)");
   if (!r.all) throw InputError("--system needs --all (the N-point step reports every solution)");
   SystemStepProblem& p = out.system_problem;
   p.system = parse_contact_system(file);
@@ -172,8 +166,7 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
                      std::to_string(r.DF.size()));
   SystemStep3dProblem p;
   p.system = o.system;
-  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
-  p.wear.k_M = r.k_M.value_or(0);
+  p.wear = wear_model(r);
   p.states = states_3d(r, o.system, p.wear);
   p.DF = Eigen::Map<const Eigen::VectorXd>(r.DF.data(), 3 * N);
   check_multistart(r);
@@ -204,13 +197,10 @@ void run_system_3d(const StepRequest& r, StepOutcome& out) {
 /// N coupled points (run_system_3d).
 void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out) {
   // The one-point 2-D options describe a 2-D point; the file gives the 3-D point.
-  std::vector<Given> options = point_options(r.model);
-  options.insert(options.end(),
-                 {Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()}});
-  for (const Given& o : options)
-    if (o.given)
-      throw InputError(std::string(o.name) + " cannot be combined with a \"dim\": 3 --system file "
-                       "(the file gives the point's parameters and state)");
+  std::vector<Given> options = detail::model_options_given(r.model);
+  options.insert(options.end(), {option("--P_T0", r.P_T0), option("--P_N0", r.P_N0)});
+  detail::refuse_given(options, " cannot be combined with a \"dim\": 3 --system file (the file "
+                                "gives the point's parameters and state)");
   if (r.multistart) check_multistart_cap(*r.multistart, "--multistart");
   Step3dOutcome& o = out.step_3d;
   o.system = parse_contact_system_3d(file);
@@ -229,8 +219,7 @@ void run_step_3d(const StepRequest& r, const SystemFile& file, StepOutcome& out)
                      std::to_string(r.DF.size()));
   Step3dProblem p;
   p.params = o.system.point_parameters(0);
-  p.wear.law = wear_law_option(r.wear_law.value_or("archard"));
-  p.wear.k_M = r.k_M.value_or(0);
+  p.wear = wear_model(r);
   o.states = states_3d(r, o.system, p.wear);
   p.state = o.states[0];
   p.DF = Eigen::Vector3d(r.DF[0], r.DF[1], r.DF[2]);
@@ -294,11 +283,8 @@ StepOutcome run_step_request(const StepRequest& r) {
     run_step_3d(r, *file, out);
     return out;
   }
-  for (const Given& o : {Given{"--facets", r.facets.has_value()},
-                         Given{"--multistart", r.multistart.has_value()}})
-    if (o.given)
-      throw InputError(std::string(o.name) + " applies to a \"dim\": 3 --system file (one 3-D "
-                       "point)");
+  detail::refuse_given({option("--facets", r.facets), option("--multistart", r.multistart)},
+                       " applies to a \"dim\": 3 --system file (one 3-D point)");
   if (r.all && r.chain)
     throw InputError("--chain has no effect with --all (every solution comes from the complete "
                      "active-set enumeration)");
@@ -306,14 +292,10 @@ StepOutcome run_step_request(const StepRequest& r) {
     run_system(r, *file, out);
     return out;
   }
-  for (const Given& o : {Given{"--a11", r.model.a11.has_value()},
-                         Given{"--a12", r.model.a12.has_value()},
-                         Given{"--a22", r.model.a22.has_value()},
-                         Given{"--mu", r.model.mu.has_value()},
-                         Given{"--P_T0", r.P_T0.has_value()}, Given{"--P_N0", r.P_N0.has_value()},
-                         Given{"--g0", r.g0.has_value()}})
-    if (!o.given)
-      throw InputError(std::string(o.name) + " is required (or --system FILE for N points)");
+  detail::require_given({option("--a11", r.model.a11), option("--a12", r.model.a12),
+                         option("--a22", r.model.a22), option("--mu", r.model.mu),
+                         option("--P_T0", r.P_T0), option("--P_N0", r.P_N0), option("--g0", r.g0)},
+                        " is required (or --system FILE for N points)");
   const StepProblem p = point_problem(r);
   if (r.all) {
     out.route = StepRoute::kPointAll;

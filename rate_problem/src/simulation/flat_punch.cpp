@@ -14,10 +14,7 @@ ContactSystem flat_punch_system(const FlatPunch& p) {
   if (!(p.modulus > 0) || !std::isfinite(p.modulus))
     throw InputError("flat punch: modulus must be > 0");
   ContactParameters cp;
-  cp.mu = p.mu;
-  cp.C_T = p.C_T;
-  cp.k_a = p.k_a;
-  cp.P_s = p.P_s;
+  static_cast<InterfaceParameters&>(cp) = p;
   throw_if_invalid(cp.validate(), "flat punch");
   const int N = p.n_points;
   const double h = p.width / N, c = 2 / (std::acos(-1.0) * p.modulus);
@@ -50,10 +47,7 @@ ContactSystem flat_punch_system(const FlatPunch& p) {
   s.pattern2 = e2;
   for (int i = 0; i < N; ++i) {
     SystemPoint q;
-    q.mu = p.mu;
-    q.C_T = p.C_T;
-    q.k_a = p.k_a;
-    q.P_s = p.P_s;
+    static_cast<InterfaceParameters&>(q) = p;
     q.state.label = StateLabel::kB;
     s.points.push_back(q);
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -85,6 +86,7 @@ LoadSource3d orbit_source(const EllipticOrbit& orbit) {
   return src;
 }
 
+template <>
 std::string Fretting3dOptions::validate() const {
   if (std::string m = params.validate(); !m.empty()) return m;
   if (!std::isfinite(wear.k_M) || wear.k_M < 0)
@@ -94,15 +96,6 @@ std::string Fretting3dOptions::validate() const {
 }
 
 namespace {
-
-std::string describe(const Fretting3dSample& s) {
-  std::ostringstream o;
-  o.precision(10);
-  o << "t = " << s.t << " (step " << s.step << "): P_T = (" << s.P_T(0) << ", " << s.P_T(1)
-    << "), P_N = " << s.P_N << ", g = " << s.g << ", w^w = " << s.w_w << ", F = (" << s.F_T(0)
-    << ", " << s.F_T(1) << ", " << s.F_N << ")";
-  return o.str();
-}
 
 bool finite(const Fretting3dSample& s) noexcept {
   return s.P_T.allFinite() && std::isfinite(s.P_N) && std::isfinite(s.g) && s.w_T.allFinite() &&
@@ -183,124 +176,114 @@ bool local_slip_solution(const Step3dProblem& user, Step3dSolution& out) {
   return false;
 }
 
-}  // namespace
+/// The march of one 3-D point (detail::run_march): every step by enumerate_step_3d, a step it
+/// finds no solution of by the local fallback.
+class OrbitMarch {
+ public:
+  using Point = LoadPoint3d;
+  using Sample = Fretting3dSample;
+  using Step = Step3dSolutionSet;
+  using Result = Fretting3dResult;
+  using Options = Fretting3dOptions;
+  /// A step the rule 'stop' stops at is not counted in branch_steps (as ever in 3-D).
+  static constexpr bool kCountsStoppedBranch = false;
 
-Fretting3dResult simulate_fretting_3d(const EllipticOrbit& orbit, const Fretting3dOptions& opt) {
-  return simulate_fretting_3d(orbit_source(orbit), opt);
-}
+  OrbitMarch(const Fretting3dOptions& opt, const LoadSource3d& load)
+      : opt_(opt), load_(load), par_(opt.params),
+        mroz_(opt.wear.law == rate::WearLaw::kMrozStupkiewicz),
+        k_archard_(par_.k_a / (3 * par_.P_s)) {
+    sp_.params = par_;
+    sp_.wear = opt.wear;
+    // The branch rule's weight: the tangential stiffness with the normal DOF held, through the
+    // compliance: K = (I + C_T S)^-1 S, S = A_TT - A_TN A_NT / A_NN (force/length).
+    const Eigen::Matrix2d S = par_.A.topLeftCorner<2, 2>() -
+                              par_.A.topRightCorner<2, 1>() * par_.A.bottomLeftCorner<1, 2>() /
+                                  par_.A(2, 2);
+    K_ = (Eigen::Matrix2d::Identity() + par_.C_T * S).partialPivLu().solve(S);
+  }
 
-Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& opt) {
-  throw_if_invalid(opt.validate(), "3-D fretting");
-  if (load.size == 0 || !load.at) throw InputError("3-D fretting: the load is empty");
-  if (!std::isfinite(load.period) || load.period < 0 || !std::isfinite(load.cycle_start))
-    throw InputError("3-D fretting: period and cycle_start must be finite, period >= 0");
-  const ContactParameters3d& par = opt.params;
-  Fretting3dResult res;
-  Step3dProblem sp;
-  sp.params = par;
-  sp.wear = opt.wear;
-  const bool mroz = opt.wear.law == rate::WearLaw::kMrozStupkiewicz;
-  const double k_archard = par.k_a / (3 * par.P_s);
-  const Eigen::Vector2d alpha = par.alpha;
-  // The branch rule's weight: the tangential stiffness with the normal DOF held, through the
-  // compliance: K = (I + C_T S)^-1 S, S = A_TT - A_TN A_NT / A_NN (force/length).
-  const Eigen::Matrix2d S = par.A.topLeftCorner<2, 2>() -
-                            par.A.topRightCorner<2, 1>() * par.A.bottomLeftCorner<1, 2>() /
-                                par.A(2, 2);
-  const Eigen::Matrix2d K =
-      (Eigen::Matrix2d::Identity() + par.C_T * S).partialPivLu().solve(S);
+  /// Unloaded, grazing, t = 0.
+  Sample start(const LoadPoint3d&, double&, std::size_t&) const { return Sample{}; }
 
-  Fretting3dSample cur;  // unloaded, grazing, t = 0
-  const bool streaming = static_cast<bool>(opt.on_sample);
-  auto record = [&](const Fretting3dSample& s) {
-    if (streaming) opt.on_sample(s);
-    else res.series.push_back(s);
-  };
-  if (opt.record_every > 0) record(cur);
-  const bool cycles = load.period > 0;
-  double t_last = 0, min_D = 0;
-  for (std::size_t k = 0; k < load.size; ++k) {
-    const LoadPoint3d lp = load.at(k);
+  void check(const LoadPoint3d& lp, std::size_t k, double t_last) const {
     if (!std::isfinite(lp.t) || !lp.F_T.allFinite() || !std::isfinite(lp.F_N))
       throw InputError("3-D fretting: load point " + std::to_string(k) + " is not finite");
     if (!(lp.t > t_last))
       throw InputError("3-D fretting: load point " + std::to_string(k) + ": t = " +
                        std::to_string(lp.t) + " does not increase");
-    sp.state.P_T0 = cur.P_T;
-    sp.state.P_N0 = cur.P_N;
-    sp.state.g0 = cur.g;
-    sp.DF << lp.F_T - cur.F_T, lp.F_N - cur.F_N;
-    Step3dSolutionSet set = enumerate_step_3d(sp);
-    if (set.count() == 0 && opt.local_fallback) {
-      Step3dSolution sol;
-      if (local_slip_solution(sp, sol)) {
-        // A verified solution the enumeration did not list: its "complete" was wrong.
-        if (set.complete) {
-          ++res.enumeration_missed;
-          if (res.first_missed.empty()) {
-            std::ostringstream m;
-            m.precision(17);
-            m << "step " << res.steps + 1 << ": P_T0 = (" << sp.state.P_T0(0) << ", "
-              << sp.state.P_T0(1) << "), P_N0 = " << sp.state.P_N0 << ", g0 = " << sp.state.g0
-              << ", DF = (" << sp.DF(0) << ", " << sp.DF(1) << ", " << sp.DF(2) << ")";
-            res.first_missed = m.str();
-          }
-        }
-        set.complete = false;
-        set.solutions.push_back(sol);
-        ++res.local_steps;
+  }
+
+  std::optional<detail::MarchStop> solve(const Sample& cur, const LoadPoint3d& lp, Step& set,
+                                         Result& res) {
+    sp_.state.P_T0 = cur.P_T;
+    sp_.state.P_N0 = cur.P_N;
+    sp_.state.g0 = cur.g;
+    sp_.DF << lp.F_T - cur.F_T, lp.F_N - cur.F_N;
+    set = enumerate_step_3d(sp_);
+    if (set.count() > 0 || !opt_.local_fallback) return std::nullopt;
+    Step3dSolution sol;
+    if (!local_slip_solution(sp_, sol)) return std::nullopt;
+    // A verified solution the enumeration did not list: its "complete" was wrong.
+    if (set.complete) {
+      ++res.enumeration_missed;
+      if (res.first_missed.empty()) {
+        std::ostringstream m;
+        m.precision(17);
+        m << "step " << res.steps + 1 << ": P_T0 = (" << sp_.state.P_T0(0) << ", "
+          << sp_.state.P_T0(1) << "), P_N0 = " << sp_.state.P_N0 << ", g0 = " << sp_.state.g0
+          << ", DF = (" << sp_.DF(0) << ", " << sp_.DF(1) << ", " << sp_.DF(2) << ")";
+        res.first_missed = m.str();
       }
     }
-    auto stop = [&](Fretting3dResult::Outcome o, const std::string& why) {
-      res.outcome = o;
-      const std::string at = num_text(lp.t, 10) + " (load (" + num_text(lp.F_T(0), 10) + ", " +
-                             num_text(lp.F_T(1), 10) + ", " + num_text(lp.F_N, 10) + "))";
-      res.message = detail::stop_message(at, why, describe(cur));
-    };
-    if (set.count() == 0) {
-      stop(Fretting3dResult::Outcome::kNoSolution,
-           set.complete ? "the step has no solution (complete enumeration). "
-                        : "no solution found and the enumeration is not proved complete (" +
-                              set.message + "). ");
-      break;
+    set.complete = false;
+    set.solutions.push_back(sol);
+    ++res.local_steps;
+    return std::nullopt;
+  }
+
+  std::size_t count(const Step& set) const { return static_cast<std::size_t>(set.count()); }
+
+  detail::MarchStop no_solution(const Step& set, Result&) const {
+    return {SimulationOutcome::kNoSolution,
+            set.complete ? "the step has no solution (complete enumeration). "
+                         : "no solution found and the enumeration is not proved complete (" +
+                               set.message + "). "};
+  }
+
+  std::optional<detail::MarchStop> ambiguous(const Step& set) const {
+    if (set.complete) return std::nullopt;
+    return detail::MarchStop{SimulationOutcome::kAmbiguous,
+                             "the step has " + std::to_string(set.count()) +
+                                 " solutions and its enumeration is not proved complete (" +
+                                 set.message + "): no rule can choose honestly. "};
+  }
+
+  /// The branch rule 'closest': the smallest |DP_T| + |DP_N| + |K Dw_T^i|.
+  std::size_t choose(const Step& set, const LoadPoint3d&, Result&) const {
+    std::size_t best = 0;
+    double bd = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < set.solutions.size(); ++i) {
+      const Step3dValues& v = set.solutions[i].values;
+      const double d = v.DP_T.norm() + std::abs(v.DP_N) + (K_ * v.Dw_Ti).norm();
+      if (d < bd) {
+        bd = d;
+        best = i;
+      }
     }
-    int best = 0;
-    if (set.count() > 1) {
-      if (!set.complete) {
-        stop(Fretting3dResult::Outcome::kAmbiguous,
-             "the step has " + std::to_string(set.count()) +
-                 " solutions and its enumeration is not proved complete (" + set.message +
-                 "): no rule can choose honestly. ");
-        break;
-      }
-      if (opt.branch_rule == rate::BranchRule::kStop) {
-        stop(Fretting3dResult::Outcome::kBranchStop,
-             detail::branch_stop_why(static_cast<std::size_t>(set.count())));
-        break;
-      }
-      double bd = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < set.count(); ++i) {
-        const Step3dValues& v = set.solutions[static_cast<std::size_t>(i)].values;
-        const double d = v.DP_T.norm() + std::abs(v.DP_N) + (K * v.Dw_Ti).norm();
-        if (d < bd) {
-          bd = d;
-          best = i;
-        }
-      }
-      ++res.branch_steps;
-    } else if (!set.complete) {
-      ++res.incomplete_steps;
-    }
-    const Step3dSolution& sol = set.solutions[static_cast<std::size_t>(best)];
+    return best;
+  }
+
+  std::optional<detail::MarchStop> advance(const Sample& cur, const LoadPoint3d& lp,
+                                           const Step& set, std::size_t chosen, double t_last,
+                                           Result& res, Sample& nx) {
+    // A step taken with several solutions was proved complete (else ambiguous).
+    if (!set.complete) ++res.incomplete_steps;
+    const Step3dSolution& sol = set.solutions[chosen];
     const Step3dValues& v = sol.values;
     res.max_residual = std::max(res.max_residual, sol.residual);
-    Fretting3dSample nx = cur;
-    nx.step = res.steps + 1;
-    nx.t = lp.t;
     nx.F_T = lp.F_T;
     nx.F_N = lp.F_N;
     nx.type = sol.type;
-    nx.count = set.count();
     nx.complete = set.complete;
     nx.w_T = cur.w_T + v.Dw_T;
     nx.w_N = cur.w_N + v.Dw_N;
@@ -321,62 +304,87 @@ Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3d
       nx.P_N = v.P_N1;
       nx.g = 0;
       nx.P_T = v.P_T1;
-      const double nrm = (alpha.cwiseInverse().asDiagonal() * v.P_T1).norm();
-      const double Y = par.mu * v.P_N1;
+      const double nrm = (par_.alpha.cwiseInverse().asDiagonal() * v.P_T1).norm();
+      const double Y = par_.mu * v.P_N1;
       if (nrm > 0 && (sol.type == SolutionType::kSlip || nrm > Y)) nx.P_T *= Y / nrm;
     }
     const double D = v.P_T1.dot(Dw_Ti) + v.P_N1 * v.Dw_w;
     const double D_scale = v.P_T1.norm() * Dw_Ti.norm() + std::abs(v.P_N1 * v.Dw_w);
     nx.dissipation = D;
-    const double lam = (alpha.asDiagonal() * Dw_Ti).norm();
-    const double wear_law = mroz ? opt.wear.k_M * v.P_T1.dot(Dw_Ti)
-                                 : k_archard * std::max(v.P_N1, 0.0) * lam;
-    if (!finite(nx) || !std::isfinite(wear_law)) {
-      stop(Fretting3dResult::Outcome::kNumericalFailure,
-           "the next state would not be finite (values beyond the range of double; rescale). ");
-      break;
-    }
+    const double lam = (par_.alpha.asDiagonal() * Dw_Ti).norm();
+    const double wear_law = mroz_ ? opt_.wear.k_M * v.P_T1.dot(Dw_Ti)
+                                  : k_archard_ * std::max(v.P_N1, 0.0) * lam;
+    if (!finite(nx) || !std::isfinite(wear_law))
+      return detail::MarchStop{
+          SimulationOutcome::kNumericalFailure,
+          "the next state would not be finite (values beyond the range of double; rescale). "};
     // Negative beyond rounding (the step's residual tolerance) is reported.
-    if (D < -1e-9 * D_scale) min_D = std::min(min_D, D / D_scale);
+    if (D < -1e-9 * D_scale) res.min_step_dissipation = std::min(res.min_step_dissipation, D / D_scale);
     res.dissipation += D;
     res.wear_integral += wear_law;
     res.total_slip += Dw_Ti.norm();
     res.total_lambda += lam;
-    if (cycles && lp.t > load.cycle_start) {
-      const double tc = 0.5 * (t_last + lp.t) - load.cycle_start;
-      if (tc >= 0) {
-        const std::size_t c = static_cast<std::size_t>(std::floor(tc / load.period));
-        nx.cycle = static_cast<long>(c);
-        if (c >= res.slip_per_cycle.size()) {
-          res.slip_per_cycle.resize(c + 1, 0.0);
-          res.wear_per_cycle.resize(c + 1, 0.0);
-          res.wear_X_per_cycle.resize(c + 1, 0.0);
-          res.wear_Y_per_cycle.resize(c + 1, 0.0);
-        }
-        res.slip_per_cycle[c] += Dw_Ti.norm();
-        res.wear_per_cycle[c] += v.Dw_w;
-        if (lam > 0) {
-          const double ax = alpha(0) * Dw_Ti(0), ay = alpha(1) * Dw_Ti(1);
-          res.wear_X_per_cycle[c] += v.Dw_w * ax * ax / (lam * lam);
-          res.wear_Y_per_cycle[c] += v.Dw_w * ay * ay / (lam * lam);
-        }
-      } else {
-        nx.cycle = -1;
+    nx.cycle = -1;
+    std::size_t c = 0;
+    if (detail::step_cycle(load_.period, load_.cycle_start, t_last, lp.t, c)) {
+      nx.cycle = static_cast<long>(c);
+      if (c >= res.slip_per_cycle.size()) {
+        res.slip_per_cycle.resize(c + 1, 0.0);
+        res.wear_per_cycle.resize(c + 1, 0.0);
+        res.wear_X_per_cycle.resize(c + 1, 0.0);
+        res.wear_Y_per_cycle.resize(c + 1, 0.0);
       }
-    } else {
-      nx.cycle = -1;
+      res.slip_per_cycle[c] += Dw_Ti.norm();
+      res.wear_per_cycle[c] += v.Dw_w;
+      if (lam > 0) {
+        const double ax = par_.alpha(0) * Dw_Ti(0), ay = par_.alpha(1) * Dw_Ti(1);
+        res.wear_X_per_cycle[c] += v.Dw_w * ax * ax / (lam * lam);
+        res.wear_Y_per_cycle[c] += v.Dw_w * ay * ay / (lam * lam);
+      }
     }
-    t_last = lp.t;
-    cur = nx;
-    ++res.steps;
-    if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == load.size))
-      record(cur);
+    return std::nullopt;
   }
-  res.final_state = cur;
-  res.wear_depth = cur.w_w;
-  res.min_step_dissipation = min_D;
-  if (res.outcome == Fretting3dResult::Outcome::kCompleted)
-    res.message = detail::completed_message(res.steps, describe(cur));
+
+  /// The load of a stop: its time and forces, 10 digits.
+  std::string at(const LoadPoint3d& lp, SimulationOutcome) const {
+    return num_text(lp.t, 10) + " (load (" + num_text(lp.F_T(0), 10) + ", " +
+           num_text(lp.F_T(1), 10) + ", " + num_text(lp.F_N, 10) + "))";
+  }
+  std::string describe(const Sample& s) const {
+    std::ostringstream o;
+    o.precision(10);
+    o << "t = " << s.t << " (step " << s.step << "): P_T = (" << s.P_T(0) << ", " << s.P_T(1)
+      << "), P_N = " << s.P_N << ", g = " << s.g << ", w^w = " << s.w_w << ", F = (" << s.F_T(0)
+      << ", " << s.F_T(1) << ", " << s.F_N << ")";
+    return o.str();
+  }
+
+  void finish(Result& res) const { res.wear_depth = res.final_state.w_w; }
+
+ private:
+  const Fretting3dOptions& opt_;
+  const LoadSource3d& load_;
+  const ContactParameters3d& par_;
+  const bool mroz_;
+  const double k_archard_;
+  Eigen::Matrix2d K_;
+  Step3dProblem sp_;
+};
+
+}  // namespace
+
+Fretting3dResult simulate_fretting_3d(const EllipticOrbit& orbit, const Fretting3dOptions& opt) {
+  return simulate_fretting_3d(orbit_source(orbit), opt);
+}
+
+Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& opt) {
+  throw_if_invalid(opt.validate(), "3-D fretting");
+  if (load.size == 0 || !load.at) throw InputError("3-D fretting: the load is empty");
+  if (!std::isfinite(load.period) || load.period < 0 || !std::isfinite(load.cycle_start))
+    throw InputError("3-D fretting: period and cycle_start must be finite, period >= 0");
+  OrbitMarch march(opt, load);
+  Fretting3dResult res;
+  detail::run_march(march, load, opt, res);
   return res;
 }
 

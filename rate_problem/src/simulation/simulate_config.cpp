@@ -110,6 +110,15 @@ void parse_wear(const json& v, SimulateSettings& s) {
   }
 }
 
+/// A path from the config file: relative ones are relative to the config file's folder (one
+/// base for every path in the file: load.file, output.*, system; command-line paths use the
+/// working directory).
+std::string config_path(const json& v, const std::string& field, const std::string& dir) {
+  const std::string file = get_str(v, field);
+  if (file.empty()) throw InputError(field + " must not be empty");
+  return file[0] == '/' ? file : dir + "/" + file;
+}
+
 void parse_load(const json& v, const std::string& dir, SimulateSettings& s) {
   need_object(v, "load");
   for (auto p = v.begin(); p != v.end(); ++p) {
@@ -128,13 +137,8 @@ void parse_load(const json& v, const std::string& dir, SimulateSettings& s) {
     else if (k == "F_N1") s.ramp.F_N1 = get_num(*p, f);
     else if (k == "duration") s.ramp.duration = get_num(*p, f);
     else if (k == "steps") s.ramp.steps = get_int(*p, f, 1, kIntMax);
-    else if (k == "file") {
-      const std::string file = get_str(*p, f);
-      if (file.empty()) throw InputError(f + " must not be empty");
-      s.load_csv = file[0] == '/' ? file : dir + "/" + file;  // as config_path()
-    } else {
-      throw InputError("unknown key " + f);
-    }
+    else if (k == "file") s.load_csv = config_path(*p, f, dir);
+    else throw InputError("unknown key " + f);
   }
 }
 
@@ -160,14 +164,6 @@ void parse_heat(const json& v, SimulateSettings& s) {
       throw InputError("unknown key " + f);
     }
   }
-}
-
-/// A path from the config file: relative ones are relative to the config file's folder, like
-/// load.file (one base for every path in the file; command-line paths use the working directory).
-std::string config_path(const json& v, const std::string& field, const std::string& dir) {
-  const std::string file = get_str(v, field);
-  if (file.empty()) throw InputError(field + " must not be empty");
-  return file[0] == '/' ? file : dir + "/" + file;
 }
 
 void parse_output(const json& v, const std::string& dir, SimulateSettings& s) {
@@ -213,11 +209,7 @@ void parse_simulate_config(const std::string& text, const std::string& origin,
         if (!rule) throw InputError("branch_rule must be closest or stop, got " + shown(v));
         s.opt.branch_rule = *rule;
       } else if (k == "output") parse_output(v, dir, s);
-      else if (k == "system") {
-        const std::string file = get_str(v, k);
-        if (file.empty()) throw InputError("system must not be empty");
-        s.system = file[0] == '/' ? file : dir + "/" + file;
-      }
+      else if (k == "system") s.system = config_path(v, k, dir);
       else if (k == "name" || k == "note") {
         // free text
       } else {
@@ -309,12 +301,10 @@ void validate_simulate_settings(const SimulateSettings& s) {
   else throw_if_invalid(o.heat.validate(), "heat");
   if (s.load_type == "fretting") {
     throw_if_invalid(s.fretting.validate(), "fretting cycle");
-    check_history_memory(std::int64_t{s.fretting.ramp_steps} +
-                             std::int64_t{s.fretting.cycles} * s.fretting.steps_per_cycle,
-                         s);
-    check_simulation_steps(std::int64_t{s.fretting.ramp_steps} +
-                               std::int64_t{s.fretting.cycles} * s.fretting.steps_per_cycle,
-                           !s.system.empty(), "ramp_steps + cycles x steps_per_cycle");
+    const std::int64_t steps = std::int64_t{s.fretting.ramp_steps} +
+                               std::int64_t{s.fretting.cycles} * s.fretting.steps_per_cycle;
+    check_history_memory(steps, s);
+    check_simulation_steps(steps, !s.system.empty(), "ramp_steps + cycles x steps_per_cycle");
   } else if (s.load_type == "ramp") {
     throw_if_invalid(s.ramp.validate(), "ramp");
     check_history_memory(std::int64_t{s.ramp.steps} + 1, s);

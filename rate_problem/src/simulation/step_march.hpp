@@ -1,13 +1,17 @@
 #pragma once
-// Internal: what the one-point march (simulation.cpp) and the N-point march
-// (system_simulation.cpp) do the same way for every point at every step: the point placed on its
-// active constraints, the step's dissipation and external work, and the load cycle a step
-// belongs to; and the sentences every march (3-D fretting too) stops or completes with.
+// Internal: the one loop of every march (one 2-D point, simulation.cpp; N points,
+// system_simulation.cpp; one 3-D point under an orbit, fretting_3d.cpp), and what the 2-D
+// marches do the same way for every point at every step: the point placed on its active
+// constraints, the step's dissipation and external work, and the load cycle a step belongs to.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 
+#include "cpkit/rate_problem/simulation/load_history.hpp"
+#include "cpkit/rate_problem/simulation/simulation_result.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
 
 namespace cpkit::rate::detail {
@@ -84,6 +88,94 @@ inline std::string branch_stop_why(std::size_t count) {
 /// The message of a march that completed its `steps` steps in the state described by `last`.
 inline std::string completed_message(long steps, const std::string& last) {
   return "completed " + std::to_string(steps) + " steps; final " + last;
+}
+
+/// Why a march stops at a step: the outcome and the march's own words (ending with their
+/// separator).
+struct MarchStop {
+  SimulationOutcome outcome;
+  std::string why;
+};
+
+/// The one loop of every march over a load source. `March` is the march kind: its types
+/// (Point, Sample, Step: the solved step, Result, Options) and its words and steps:
+/// - `Sample start(const Point& first, double& t_prev, std::size_t& k0)`: the start state, the
+///   start time and the first load point to march to;
+/// - `void check(const Point&, std::size_t k, double t_prev)`: throws InputError for a bad point;
+/// - `std::optional<MarchStop> solve(const Sample&, const Point&, Step&, Result&)`: every
+///   solution of the step to the point (or a stop);
+/// - `std::size_t count(const Step&)`; `MarchStop no_solution(const Step&, Result&)`;
+///   `std::optional<MarchStop> ambiguous(const Step&)`: several solutions no rule may choose
+///   from; `std::size_t choose(const Step&, const Point&, Result&)`: the branch rule 'closest';
+///   `kCountsStoppedBranch`: a step the rule 'stop' stops at counts as a branch step;
+/// - `std::optional<MarchStop> advance(const Sample& cur, const Point&, const Step&, std::size_t
+///   chosen, double t_prev, Result&, Sample& next)`: the state after the step and the running
+///   sums (a stop when a value would not be finite);
+/// - `std::string at(const Point&, SimulationOutcome)`, `std::string describe(const Sample&)`:
+///   the load and the state in the sentences of a stop (the CLI prints them byte for byte);
+/// - `void finish(Result&)`: the totals, once `final_state` and `message` are set.
+template <class March>
+void run_march(March& m, const LoadSourceOf<typename March::Point>& load,
+               const typename March::Options& opt, typename March::Result& res) {
+  using Sample = typename March::Sample;
+  const bool streaming = static_cast<bool>(opt.on_sample);
+  auto record = [&](const Sample& s) {
+    if (streaming) opt.on_sample(s);
+    else res.series.push_back(s);
+  };
+  double t_prev = 0;
+  std::size_t k0 = 0;
+  Sample cur = m.start(load.at(0), t_prev, k0);
+  if (opt.record_every > 0) record(cur);
+  typename March::Step step;
+  for (std::size_t k = k0; k < load.size; ++k) {
+    const typename March::Point lp = load.at(k);
+    m.check(lp, k, t_prev);
+    auto stop = [&](const MarchStop& s) {
+      res.outcome = s.outcome;
+      res.message = stop_message(m.at(lp, s.outcome), s.why, m.describe(cur));
+    };
+    if (const auto s = m.solve(cur, lp, step, res)) {
+      stop(*s);
+      break;
+    }
+    const std::size_t count = m.count(step);
+    if (count == 0) {
+      stop(m.no_solution(step, res));
+      break;
+    }
+    std::size_t chosen = 0;
+    if (count > 1) {
+      if (const auto s = m.ambiguous(step)) {
+        stop(*s);
+        break;
+      }
+      chosen = m.choose(step, lp, res);
+      if (March::kCountsStoppedBranch) ++res.branch_steps;
+      if (opt.branch_rule == BranchRule::kStop) {
+        stop({SimulationOutcome::kBranchStop, branch_stop_why(count)});
+        break;
+      }
+      if (!March::kCountsStoppedBranch) ++res.branch_steps;
+    }
+    Sample next = cur;
+    if (const auto s = m.advance(cur, lp, step, chosen, t_prev, res, next)) {
+      stop(*s);
+      break;
+    }
+    next.step = res.steps + 1;
+    next.t = lp.t;
+    next.count = static_cast<int>(count);
+    t_prev = lp.t;
+    cur = std::move(next);
+    ++res.steps;
+    if (opt.record_every > 0 && (res.steps % opt.record_every == 0 || k + 1 == load.size))
+      record(cur);
+  }
+  res.final_state = cur;
+  if (res.outcome == SimulationOutcome::kCompleted)
+    res.message = completed_message(res.steps, m.describe(cur));
+  m.finish(res);
 }
 
 }  // namespace cpkit::rate::detail

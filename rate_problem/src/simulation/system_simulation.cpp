@@ -38,6 +38,7 @@ SystemLoadSource system_history_source(const std::vector<SystemLoadPoint>& point
   return s;
 }
 
+template <>
 std::string SystemSimulationOptions::validate() const {
   std::string m = heat.validate();
   if (!m.empty()) return "heat: " + m;
@@ -48,14 +49,6 @@ std::string SystemSimulationOptions::validate() const {
 }
 
 namespace {
-
-std::string describe(const SystemSimulationSample& s) {
-  std::ostringstream o;
-  o.precision(8);
-  o << "t = " << s.t << " (step " << s.step << "), states ";
-  for (std::size_t i = 0; i < s.state.size(); ++i) o << (i ? "/" : "") << to_string(s.state[i]);
-  return o.str();
-}
 
 /// Per point: Archard k, the weight of the slip in the branch distance, C_T.
 struct PointConstants {
@@ -96,18 +89,6 @@ SystemSimulationSample initial_sample(const ContactSystem& system, const SystemS
   return cur;
 }
 
-void check_load_point(const SystemLoadPoint& lp, std::size_t step, int N, double t_prev) {
-  if (lp.F.size() != 2 * N)
-    throw InputError("load point " + std::to_string(step) + " has " +
-                     std::to_string(lp.F.size()) + " numbers; " + std::to_string(N) +
-                     " points need " + std::to_string(2 * N));
-  if (!std::isfinite(lp.t) || !lp.F.allFinite())
-    throw InputError("load point " + std::to_string(step) + " has a non-finite value");
-  if (!(lp.t > t_prev))
-    throw InputError("load point " + std::to_string(step) + ": t = " + std::to_string(lp.t) +
-                     " does not increase (previous " + std::to_string(t_prev) + ")");
-}
-
 /// Enumerates the step's solutions into `set`; returns why a value is not representable in
 /// double (loads near 1e308), or an empty string.
 std::string enumerate_or_unrepresentable(const SystemStepProblem& sp, const SystemStepOptions& so,
@@ -121,38 +102,6 @@ std::string enumerate_or_unrepresentable(const SystemStepProblem& sp, const Syst
     return e.what();
   }
   return {};
-}
-
-/// Why a step has no solution to march on; sets outcome and inconclusive.
-std::string no_solution_why(const SystemStepSolutionSet& set, SystemSimulationResult& res) {
-  std::ostringstream m;
-  res.outcome = SimulationResult::Outcome::kNoSolution;
-  if (set.complete) {
-    m << "the step has no solution (complete enumeration of its 4^N active sets). ";
-  } else {
-    res.inconclusive = true;
-    m << "no solution was found and the enumeration is not complete ("
-      << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
-  }
-  return m.str();
-}
-
-/// The branch rule 'closest', summed over the points.
-std::size_t closest_solution(const SystemStepSolutionSet& set, const Eigen::VectorXd& xi_weight) {
-  std::size_t best = 0;
-  double bd = INFINITY;
-  for (std::size_t j = 0; j < set.solutions.size(); ++j) {
-    double d = 0;
-    for (int i = 0; i < xi_weight.size(); ++i) {
-      const StepValues& v = set.solutions[j].values[static_cast<std::size_t>(i)];
-      d += std::abs(v.DP_T) + std::abs(v.DP_N) + xi_weight[i] * std::abs(v.Dw_Ti);
-    }
-    if (d < bd) {
-      bd = d;
-      best = j;
-    }
-  }
-  return best;
 }
 
 /// Point i of `nx` after the step along `sol`, placed exactly on its active constraints, with
@@ -191,31 +140,167 @@ double advance_point(int i, const SystemStepSolution& sol, const SystemStepProbl
   return dW;
 }
 
-/// Wear of a step of a cyclic history, added per point to the cycle its midpoint falls in.
-void add_to_cycle(SystemSimulationResult& res, const SystemLoadSource& load, double t_prev,
-                  double t, const SystemStepSolution& sol) {
-  std::size_t c = 0;
-  if (!detail::step_cycle(load.period, load.cycle_start, t_prev, t, c)) return;
-  const auto N = static_cast<Eigen::Index>(sol.values.size());
-  while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N));
-  for (Eigen::Index i = 0; i < N; ++i)
-    res.wear_per_cycle[c][i] += sol.values[static_cast<std::size_t>(i)].Dw_w;
-}
+/// The march of N points (detail::run_march): every step by the N-point enumeration, verified
+/// by its unit-free residual.
+class SystemMarch {
+ public:
+  using Point = SystemLoadPoint;
+  using Sample = SystemSimulationSample;
+  using Step = SystemStepSolutionSet;
+  using Result = SystemSimulationResult;
+  using Options = SystemSimulationOptions;
+  static constexpr bool kCountsStoppedBranch = true;
 
-void finish(SystemSimulationResult& res, const SystemSimulationSample& cur, double E0) {
-  res.final_state = cur;
-  res.external_work = cur.work_total;
-  res.stored_energy = cur.stored;
-  res.energy_error = std::abs(res.external_work - (res.stored_energy - E0) - cur.dissipation_total) /
-                     std::max(res.work_abs, 1e-300);
-  if (res.outcome == SimulationResult::Outcome::kCompleted) {
-    res.message = detail::completed_message(res.steps, describe(cur));
-    if (res.incomplete_steps > 0)
+  SystemMarch(const ContactSystem& system, const SystemSimulationOptions& opt,
+              const SystemLoadSource& load)
+      : system_(system), opt_(opt), load_(load), N_(system.n_points()) {
+    sp_.system = system;
+    sp_.DF = Eigen::VectorXd::Zero(2 * N_);
+    throw_if_invalid(sp_.validate(), "system");
+    so_.tol = opt.tol;
+    so_.max_points = opt.max_points;
+    pc_ = point_constants(sp_, N_);
+  }
+
+  /// The system's points' current P and g, w = 0, F = 0 (and E0, their stored energy).
+  Sample start(const SystemLoadPoint&, double&, std::size_t&) {
+    Sample cur = initial_sample(system_, sp_, opt_);
+    E0_ = 0.5 * ct_energy(cur.P_T);
+    return cur;
+  }
+
+  void check(const SystemLoadPoint& lp, std::size_t step, double t_prev) const {
+    if (lp.F.size() != 2 * N_)
+      throw InputError("load point " + std::to_string(step) + " has " +
+                       std::to_string(lp.F.size()) + " numbers; " + std::to_string(N_) +
+                       " points need " + std::to_string(2 * N_));
+    if (!std::isfinite(lp.t) || !lp.F.allFinite())
+      throw InputError("load point " + std::to_string(step) + " has a non-finite value");
+    if (!(lp.t > t_prev))
+      throw InputError("load point " + std::to_string(step) + ": t = " + std::to_string(lp.t) +
+                       " does not increase (previous " + std::to_string(t_prev) + ")");
+  }
+
+  /// A step whose increment or solution double cannot represent (loads near 1e308) stops the
+  /// run as numerical_failure, as an energy beyond double's range does in advance().
+  std::optional<detail::MarchStop> solve(const Sample& cur, const SystemLoadPoint& lp,
+                                         Step& set, Result& res) {
+    for (int i = 0; i < N_; ++i) {
+      SystemPoint& q = sp_.system.points[static_cast<std::size_t>(i)];
+      q.P_T = cur.P_T[i];
+      q.P_N = cur.P_N[i];
+      q.g = cur.g[i];
+    }
+    sp_.DF = lp.F - cur.F;
+    const std::string unrepresentable = enumerate_or_unrepresentable(sp_, so_, set);
+    if (!unrepresentable.empty())
+      return detail::MarchStop{SimulationOutcome::kNumericalFailure, unrepresentable + ". "};
+    if (!set.complete) ++res.incomplete_steps;
+    return std::nullopt;
+  }
+
+  std::size_t count(const Step& set) const { return set.solutions.size(); }
+
+  /// Why a step has no solution to march on; sets `inconclusive` when it is not proved.
+  detail::MarchStop no_solution(const Step& set, Result& res) const {
+    std::ostringstream m;
+    if (set.complete) {
+      m << "the step has no solution (complete enumeration of its 4^N active sets). ";
+    } else {
+      res.inconclusive = true;
+      m << "no solution was found and the enumeration is not complete ("
+        << (set.notes.empty() ? std::string() : set.notes.front()) << "). ";
+    }
+    return {SimulationOutcome::kNoSolution, m.str()};
+  }
+  std::optional<detail::MarchStop> ambiguous(const Step&) const { return std::nullopt; }
+
+  /// The branch rule 'closest', summed over the points.
+  std::size_t choose(const Step& set, const SystemLoadPoint&, Result&) const {
+    std::size_t best = 0;
+    double bd = INFINITY;
+    for (std::size_t j = 0; j < set.solutions.size(); ++j) {
+      double d = 0;
+      for (int i = 0; i < N_; ++i) {
+        const StepValues& v = set.solutions[j].values[static_cast<std::size_t>(i)];
+        d += std::abs(v.DP_T) + std::abs(v.DP_N) + pc_.xi_weight[i] * std::abs(v.Dw_Ti);
+      }
+      if (d < bd) {
+        bd = d;
+        best = j;
+      }
+    }
+    return best;
+  }
+
+  std::optional<detail::MarchStop> advance(const Sample& cur, const SystemLoadPoint& lp,
+                                           const Step& set, std::size_t chosen, double t_prev,
+                                           Result& res, Sample& nx) const {
+    const SystemStepSolution& sol = set.solutions[chosen];
+    res.max_residual = std::max(res.max_residual, sol.residual);
+    nx.F = lp.F;
+    nx.complete = set.complete;
+    double dW = 0;
+    const double dt = lp.t - t_prev;
+    for (int i = 0; i < N_; ++i) dW += advance_point(i, sol, sp_, pc_, cur, lp, dt, opt_, nx, res);
+    nx.work_total += dW;
+    res.work_abs += std::abs(dW);
+    nx.stored = 0.5 * nx.w.dot(system_.A * nx.w) + 0.5 * ct_energy(nx.P_T);
+    if (!nx.w.allFinite() || !std::isfinite(nx.stored) || !std::isfinite(nx.work_total))
+      return detail::MarchStop{SimulationOutcome::kNumericalFailure,
+                               "the values exceed the range of double. "};
+    add_to_cycle(res, t_prev, lp.t, sol);
+    return std::nullopt;
+  }
+
+  /// The load of a stop: its time, as std::to_string writes it for a value beyond double.
+  std::string at(const SystemLoadPoint& lp, SimulationOutcome o) const {
+    return o == SimulationOutcome::kNumericalFailure ? std::to_string(lp.t) : num_text(lp.t);
+  }
+  std::string describe(const Sample& s) const {
+    std::ostringstream o;
+    o.precision(8);
+    o << "t = " << s.t << " (step " << s.step << "), states ";
+    for (std::size_t i = 0; i < s.state.size(); ++i) o << (i ? "/" : "") << to_string(s.state[i]);
+    return o.str();
+  }
+
+  void finish(Result& res) const {
+    const Sample& cur = res.final_state;
+    res.external_work = cur.work_total;
+    res.stored_energy = cur.stored;
+    res.energy_error =
+        std::abs(res.external_work - (res.stored_energy - E0_) - cur.dissipation_total) /
+        std::max(res.work_abs, 1e-300);
+    if (res.outcome == SimulationOutcome::kCompleted && res.incomplete_steps > 0)
       res.message += "; " + std::to_string(res.incomplete_steps) +
                      " steps had an enumeration not proved complete (m >= 3 points slipping "
                      "with wear)";
   }
-}
+
+ private:
+  double ct_energy(const Eigen::VectorXd& P_T) const {
+    return pc_.C_T.dot(P_T.cwiseProduct(P_T));
+  }
+
+  /// Wear of a step of a cyclic history, added per point to the cycle its midpoint falls in.
+  void add_to_cycle(Result& res, double t_prev, double t, const SystemStepSolution& sol) const {
+    std::size_t c = 0;
+    if (!detail::step_cycle(load_.period, load_.cycle_start, t_prev, t, c)) return;
+    while (res.wear_per_cycle.size() <= c) res.wear_per_cycle.push_back(Eigen::VectorXd::Zero(N_));
+    for (int i = 0; i < N_; ++i)
+      res.wear_per_cycle[c][i] += sol.values[static_cast<std::size_t>(i)].Dw_w;
+  }
+
+  const ContactSystem& system_;
+  const SystemSimulationOptions& opt_;
+  const SystemLoadSource& load_;
+  const int N_;
+  SystemStepProblem sp_;
+  SystemStepOptions so_;
+  PointConstants pc_;
+  double E0_ = 0;
+};
 
 }  // namespace
 
@@ -228,90 +313,12 @@ SystemSimulationResult simulate_system(const ContactSystem& system, const System
                      std::to_string(N) + " points exceed the limit of " +
                      std::to_string(opt.max_points));
   if (load.size == 0 || !load.at) throw InputError("load history: the load history is empty");
-  SystemStepProblem sp;
-  sp.system = system;
-  sp.DF = Eigen::VectorXd::Zero(2 * N);
-  throw_if_invalid(sp.validate(), "system");
-  SystemStepOptions so;
-  so.tol = opt.tol;
-  so.max_points = opt.max_points;
-
-  const PointConstants pc = point_constants(sp, N);
+  SystemMarch march(system, opt, load);
   SystemSimulationResult res;
-  SystemSimulationSample cur = initial_sample(system, sp, opt);
-  auto ct_energy = [&](const Eigen::VectorXd& P_T) { return pc.C_T.dot(P_T.cwiseProduct(P_T)); };
-  const double E0 = 0.5 * ct_energy(cur.P_T);
   res.wear_integral = res.total_slip = res.dissipation = res.min_step_dissipation =
       Eigen::VectorXd::Zero(N);
-  res.max_temperature = cur.temperature;
-  if (opt.record_every > 0 && opt.on_sample) opt.on_sample(cur);
-  double t_prev = 0;
-  for (std::size_t step = 0; step < load.size; ++step) {
-    const SystemLoadPoint lp = load.at(step);
-    check_load_point(lp, step, N, t_prev);
-    for (int i = 0; i < N; ++i) {
-      SystemPoint& q = sp.system.points[static_cast<std::size_t>(i)];
-      q.P_T = cur.P_T[i];
-      q.P_N = cur.P_N[i];
-      q.g = cur.g[i];
-    }
-    sp.DF = lp.F - cur.F;
-    // A step whose increment or solution double cannot represent (loads near 1e308) stops the
-    // run as numerical_failure, as an energy beyond double's range does below.
-    SystemStepSolutionSet set;
-    const std::string unrepresentable = enumerate_or_unrepresentable(sp, so, set);
-    if (!unrepresentable.empty()) {
-      res.outcome = SimulationResult::Outcome::kNumericalFailure;
-      res.message =
-          detail::stop_message(std::to_string(lp.t), unrepresentable + ". ", describe(cur));
-      break;
-    }
-    if (!set.complete) ++res.incomplete_steps;
-    if (set.solutions.empty()) {
-      const std::string why = no_solution_why(set, res);
-      res.message = detail::stop_message(num_text(lp.t), why, describe(cur));
-      break;
-    }
-    std::size_t best = 0;
-    if (set.solutions.size() > 1) {
-      ++res.branch_steps;
-      if (opt.branch_rule == BranchRule::kStop) {
-        res.outcome = SimulationResult::Outcome::kBranchStop;
-        res.message = detail::stop_message(
-            num_text(lp.t), detail::branch_stop_why(set.solutions.size()), describe(cur));
-        break;
-      }
-      best = closest_solution(set, pc.xi_weight);
-    }
-    const SystemStepSolution& sol = set.solutions[best];
-    res.max_residual = std::max(res.max_residual, sol.residual);
-    SystemSimulationSample nx = cur;
-    nx.step = res.steps + 1;
-    nx.t = lp.t;
-    nx.F = lp.F;
-    nx.count = static_cast<int>(set.solutions.size());
-    nx.complete = set.complete;
-    double dW = 0;
-    const double dt = lp.t - t_prev;
-    for (int i = 0; i < N; ++i) dW += advance_point(i, sol, sp, pc, cur, lp, dt, opt, nx, res);
-    nx.work_total += dW;
-    res.work_abs += std::abs(dW);
-    nx.stored = 0.5 * nx.w.dot(system.A * nx.w) + 0.5 * ct_energy(nx.P_T);
-    if (!nx.w.allFinite() || !std::isfinite(nx.stored) || !std::isfinite(nx.work_total)) {
-      res.outcome = SimulationResult::Outcome::kNumericalFailure;
-      res.message = detail::stop_message(
-          std::to_string(lp.t), "the values exceed the range of double. ", describe(cur));
-      break;
-    }
-    add_to_cycle(res, load, t_prev, lp.t, sol);
-    t_prev = lp.t;
-    cur = nx;
-    ++res.steps;
-    if (opt.record_every > 0 && opt.on_sample &&
-        (res.steps % opt.record_every == 0 || step + 1 == load.size))
-      opt.on_sample(cur);
-  }
-  finish(res, cur, E0);
+  res.max_temperature = Eigen::VectorXd::Constant(N, opt.heat.T_initial);
+  detail::run_march(march, load, opt, res);
   return res;
 }
 

@@ -19,15 +19,16 @@
 /// punch, A_TT 1 scaled to total 1 (largest at the edges: the half-plane's edge concentration);
 /// pattern 2 (normal) is a uniform pressure of total 1 (a flexible pad). With the fretting cycle
 /// F = F_T(t) e1 + F_N(t) e2 and |F_T| < mu F_N, the edges reach the friction limit first.
+#include "cpkit/rate_problem/model/interface_parameters.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 
-struct FlatPunch {
+/// The punch; its interface parameters (mu, C_T, k_a, P_s) are every point's.
+struct FlatPunch : InterfaceParameters {
   int n_points = 5;     ///< N >= 2
   double width = 1;     ///< b (length)
   double modulus = 1;   ///< E* (force / length^2 per unit thickness)
-  double mu = 0.5, C_T = 0, k_a = 0, P_s = 1;  ///< every point's interface parameters
 };
 
 /// The system: A (2N x 2N), N points in state b (grazing, P = 0, g = 0), pattern1 and

@@ -25,16 +25,12 @@
 /// 1/force). Angles in radians.
 #include <Eigen/Core>
 #include <cstddef>
-#include <functional>
 #include <string>
-#include <string_view>
-#include <vector>
 
-#include "cpkit/rate_problem/model/branch_rule.hpp"
-#include "cpkit/rate_problem/model/wear.hpp"
-#include "cpkit/rate_problem/rate/point_rate_3d.hpp"
+#include "cpkit/rate_problem/model/parameters_3d.hpp"
+#include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/simulation/load_history.hpp"
-#include "cpkit/rate_problem/simulation/simulation.hpp"
+#include "cpkit/rate_problem/simulation/simulation_result.hpp"
 
 namespace cpkit::rate {
 
@@ -101,50 +97,10 @@ struct Fretting3dSample {
   long cycle = -1;               ///< orbit cycle of the step (-1: ramp or lead-in)
 };
 
-struct Fretting3dOptions {
-  ContactParameters3d params;
-  rate::WearModel wear;  ///< Archard (40): k = k_a / (3 P_s); Mroz (41): k_M
-  rate::BranchRule branch_rule = rate::BranchRule::kClosest;
-  int record_every = 1;  ///< keep every n-th step in the series (0: none); plus start and end
-  /// A step whose enumeration finds no solution (not proved complete: a near-double root of the
-  /// slip condition, met in nearly symmetric problems with little wear) is tried by a
-  /// local Newton method on the slip equations from the start state's slip direction; a root
-  /// verified by step_3d_residual <= 1e-9 is taken and counted in `local_steps` and
-  /// `incomplete_steps` (false: such a step stops the run).
-  bool local_fallback = true;
-  /// When set, every recorded sample is passed here instead of being stored in
-  /// Fretting3dResult::series: the memory is then independent of the number of steps.
-  std::function<void(const Fretting3dSample&)> on_sample;
-  std::string validate() const;
-};
-
-struct Fretting3dResult {
-  using Outcome = SimulationOutcome;  ///< never kContinuum
-  Outcome outcome = Outcome::kCompleted;
-  std::string message;  ///< for a stop: time, state and why
-  long steps = 0;
-  std::vector<Fretting3dSample> series;  ///< empty when on_sample is set
-  Fretting3dSample final_state;
-  long branch_steps = 0;      ///< steps with several solutions (the rule chose)
-  long incomplete_steps = 0;  ///< steps taken whose enumeration was not proved complete
-  long local_steps = 0;       ///< of them, solved by the local fallback (local_fallback)
-  /// Of the local steps, those whose enumeration had claimed "complete, no solution" (a defect
-  /// of the enumeration: the verified root contradicts it); the first one's data for a report.
-  long enumeration_missed = 0;
-  std::string first_missed;
-  double wear_depth = 0;      ///< final w^w (sum of the steps' Dw^w)
-  /// The wear law summed along the run from the end-of-step values: Archard (40)
-  /// sum k P_N1 |D Dw_T^i|, Mroz (41) sum k_M P_T1 . Dw_T^i.
-  double wear_integral = 0;
-  double total_slip = 0;    ///< sum |Dw_T^i| (Euclidean length of the slip path)
-  double total_lambda = 0;  ///< sum |D Dw_T^i|
-  /// Per orbit cycle: slip length, wear, and the wear split by slip direction,
-  /// wear_X = sum c_w P_N1 (alpha_X Dw_TiX)^2 / |D Dw_T^i| (wear_X + wear_Y = the wear).
-  std::vector<double> slip_per_cycle, wear_per_cycle, wear_X_per_cycle, wear_Y_per_cycle;
-  double dissipation = 0;            ///< sum of the steps' dissipation
-  double min_step_dissipation = 0;   ///< most negative D / scale met (0: none negative)
-  double max_residual = 0;           ///< largest step_3d_residual accepted
-};
+using Fretting3dOptions = SimulationOptionsOf<Fretting3dSample, ContactParameters3d>;
+template <>
+std::string Fretting3dOptions::validate() const;
+using Fretting3dResult = SimulationResultOf<Fretting3dSample, double>;
 
 /// Runs the march. Throws InputError for invalid options or load.
 Fretting3dResult simulate_fretting_3d(const LoadSource3d& load, const Fretting3dOptions& options);

@@ -18,14 +18,13 @@
 ///   temperature by the one-point heat balance per point (the same HeatOptions for all). The
 ///   global energy balance W_ext = sum (F0 + F1)/2 . Dw = E - E_0 + sum_i D_i with
 ///   E = w.A w / 2 + sum_i C_T,i P_T,i^2 / 2.
-#include <functional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "cpkit/rate_problem/model/contact_state.hpp"
-#include "cpkit/rate_problem/model/heat.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/simulation/load_history.hpp"
 #include "cpkit/rate_problem/simulation/simulation.hpp"
@@ -57,19 +56,6 @@ SystemLoadSource system_fretting_source(const FrettingCycle& cycle, const Eigen:
 SystemLoadSource system_history_source(const std::vector<SystemLoadPoint>& points,
                                        double period = 0);
 
-struct SystemSimulationSample;
-
-struct SystemSimulationOptions {
-  HeatOptions heat;
-  BranchRule branch_rule = BranchRule::kClosest;
-  double tol = 1e-9;     ///< acceptance on the step's unit-free residual
-  int record_every = 1;  ///< every n-th step is passed to on_sample (0: none)
-  int max_points = 8;    ///< enumeration limit (system_step.hpp)
-  /// Receives the start state, every record_every-th step and the last step, as produced.
-  std::function<void(const SystemSimulationSample&)> on_sample;
-  std::string validate() const;
-};
-
 /// The state after a step (per point vectors of length N; w of length 2N).
 struct SystemSimulationSample {
   long step = 0;
@@ -85,24 +71,10 @@ struct SystemSimulationSample {
   double dissipation_total = 0, work_total = 0, stored = 0;
 };
 
-struct SystemSimulationResult {
-  SimulationResult::Outcome outcome = SimulationResult::Outcome::kCompleted;
-  bool inconclusive = false;  ///< stopped at a step with no solution found and no proof
-  std::string message;
-  long steps = 0;
-  SystemSimulationSample final_state;
-  long branch_steps = 0;      ///< steps with more than one solution
-  long incomplete_steps = 0;  ///< steps whose enumeration was not proved complete
-  Eigen::VectorXd wear_integral;  ///< per point: sum k_i P_N1,i |Dw_Ti,i| (Archard)
-  Eigen::VectorXd total_slip;     ///< per point: sum |Dw_Ti,i|
-  Eigen::VectorXd dissipation;    ///< per point: sum D_i
-  Eigen::VectorXd min_step_dissipation;  ///< per point: most negative D_i / its scale (0: none)
-  Eigen::VectorXd max_temperature;       ///< per point
-  std::vector<Eigen::VectorXd> wear_per_cycle;  ///< per cycle, per point (when periodic)
-  double external_work = 0, stored_energy = 0, work_abs = 0;
-  double energy_error = 0;  ///< |W - (E - E0) - sum D| / work_abs
-  double max_residual = 0;
-};
+using SystemSimulationOptions = SimulationOptionsOf<SystemSimulationSample, std::monostate>;
+template <>
+std::string SystemSimulationOptions::validate() const;
+using SystemSimulationResult = SimulationResultOf<SystemSimulationSample, Eigen::VectorXd>;
 
 /// Runs the march. Throws InputError for invalid options, system or load (sizes, NaN, t not
 /// increasing, N above max_points).
