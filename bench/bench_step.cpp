@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
     std::string name;
     for (const auto& n : chain) name += (name.empty() ? "" : ",") + n;
     std::printf("| solve_step %s | %d | %.3g | %s |\n", name.c_str(), calls, median(t),
-                std::string(cpkit::to_string(r.result.status)).c_str());
+                std::string(cpkit::to_string(r.status)).c_str());
   };
   time_chain({"active-set", "lemke", "fb-newton", "ipopt"}, 20000);
   time_chain({"fb-newton"}, 2000);

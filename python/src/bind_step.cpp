@@ -80,9 +80,9 @@ pyb::dict solve_step(const pyb::object& params, double P_T0, double P_N0, double
   throw_if_invalid(o.validate(), "step options");
   rate::StepSolveResult r = without_gil([&] { return rate::solve_step(p, o); });
   pyb::dict d;
-  d["result"] = to_dict(r.result);
-  d["values"] = values_dict(r.values);
-  d["type"] = std::string(rate::to_string(r.type));
+  d["result"] = to_dict(static_cast<const SolveResult&>(r));
+  d["values"] = values_dict(r.solution.values);
+  d["type"] = std::string(rate::to_string(r.solution.type));
   return d;
 }
 

@@ -95,10 +95,10 @@ TEST_CASE("step request, one 2-D point: a stick step is DP = DF (hand calculatio
   const StepOutcome one = run_step_request(r);
   CHECK(one.route == StepRoute::kPointChain);
   CHECK(one.exit_code == cpkit::kExitOk);
-  CHECK(one.one.result.solver == "active-set");
-  CHECK(one.one.type == SolutionType::kStick);
-  CHECK(near(one.one.values.P_T1, 0.1));
-  CHECK(near(one.one.values.P_N1, 1.1));
+  CHECK(one.one.solver == "active-set");
+  CHECK(one.one.solution.type == SolutionType::kStick);
+  CHECK(near(one.one.solution.values.P_T1, 0.1));
+  CHECK(near(one.one.solution.values.P_N1, 1.1));
   REQUIRE(one.has_enumeration);
   CHECK(one.set.count() == 1);
   CHECK_THAT(step_text(one), Contains("\n1 of 1 solution\n"));
@@ -123,7 +123,7 @@ TEST_CASE("step request, one 2-D point: the worked example of docs/simulation.md
   r.all = false;
   const StepOutcome one = run_step_request(r);
   CHECK(one.exit_code == cpkit::kExitOk);
-  CHECK(one.one.type == SolutionType::kStick);
+  CHECK(one.one.solution.type == SolutionType::kStick);
   CHECK_THAT(step_text(one), Contains("1 of 3 solutions; --all lists them\n"));
   const nlohmann::json j = step_outcome_json(one, "test");
   CHECK(j["solutions_found"] == 3);

@@ -53,14 +53,14 @@ TEST_CASE("DefaultChainSolvesEveryStepWithASolution", "[step][chain]") {
     for (const auto& p : corpus(wear)) {
       const StepSolutionSet set = enumerate_step(p);
       const StepSolveResult r = solve_step(p);
-      CAPTURE(wear, r.result.message);
+      CAPTURE(wear, r.message);
       if (set.solutions.empty()) {
-        CHECK_FALSE(cpkit::is_solution(r.result.status));
+        CHECK_FALSE(cpkit::is_solution(r.status));
         continue;
       }
-      REQUIRE(cpkit::is_solution(r.result.status));
-      CHECK(r.result.solver == "active-set");
-      CHECK(in_set(set, r.values));
+      REQUIRE(cpkit::is_solution(r.status));
+      CHECK(r.solver == "active-set");
+      CHECK(in_set(set, r.solution.values));
     }
   }
 }
@@ -86,10 +86,10 @@ TEST_CASE("EveryRegisteredSolverReturnsAnEnumeratedStepSolution", "[step][chain]
       o.chain = {name};
       const StepSolveResult r = solve_step(p, o);
       ++total;
-      if (!cpkit::is_solution(r.result.status)) continue;
+      if (!cpkit::is_solution(r.status)) continue;
       ++solved;
-      CAPTURE(wear, r.values.P_N1, r.values.P_T1, r.values.Dw_Ti);
-      CHECK(in_set(set, r.values));
+      CAPTURE(wear, r.solution.values.P_N1, r.solution.values.P_T1, r.solution.values.Dw_Ti);
+      CHECK(in_set(set, r.solution.values));
     }
     CAPTURE(wear, solved, total);
     // Local solvers may fail on a few nonconvex steps; a verified answer is never wrong.
@@ -105,9 +105,9 @@ TEST_CASE("ChainSkipsWhatDoesNotApplyAndRejectsBadOptions", "[step][chain][input
   StepSolveOptions o;
   o.chain = {"lemke", "no-such-solver"};
   const StepSolveResult r = solve_step(p, o);
-  CHECK_FALSE(cpkit::is_solution(r.result.status));
-  CHECK(r.result.message.find("no-such-solver") != std::string::npos);
-  CHECK(r.result.message.find("lemke") != std::string::npos);
+  CHECK_FALSE(cpkit::is_solution(r.status));
+  CHECK(r.message.find("no-such-solver") != std::string::npos);
+  CHECK(r.message.find("lemke") != std::string::npos);
   o.chain.clear();
   CHECK_THROWS_AS(solve_step(p, o), cpkit::InputError);
   o.chain = {"active-set"};

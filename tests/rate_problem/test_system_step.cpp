@@ -638,6 +638,11 @@ TEST_CASE("SystemStepCondSweepRightSetOrIncomplete", "[system_step]") {
     if (set.complete) {
       ++complete;
       CHECK(set.solutions.size() == ref.size());
+      CHECK(set.message.empty());
+    } else {
+      // The step family's contract (step_result.hpp): an incomplete set says why.
+      REQUIRE_FALSE(set.notes.empty());
+      CHECK(set.message == set.notes.front());
     }
     if (lc <= 6) CHECK(set.complete);
   }

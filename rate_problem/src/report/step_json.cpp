@@ -41,19 +41,19 @@ nlohmann::json step_set_json(const StepSolutionSet& s) {
 
 nlohmann::json step_result_json(const StepSolveResult& r, const StepSolutionSet* all) {
   nlohmann::json j;
-  j["status"] = std::string(to_string(r.result.status));
-  j["solver"] = r.result.solver;
-  if (is_solution(r.result.status)) {
-    j["type"] = std::string(to_string(r.type));
-    j["values"] = step_values_json(r.values);
+  j["status"] = std::string(to_string(r.status));
+  j["solver"] = r.solver;
+  if (is_solution(r.status)) {
+    j["type"] = std::string(to_string(r.solution.type));
+    j["values"] = step_values_json(r.solution.values);
   }
-  j["residual"] = r.result.residuals.natural;
+  j["residual"] = r.residuals.natural;
   nlohmann::json at = nlohmann::json::array();
-  for (const auto& a : r.result.attempts)
+  for (const auto& a : r.attempts)
     at.push_back({{"solver", a.solver}, {"status", std::string(to_string(a.status))},
                   {"residual", a.residual}, {"seconds", a.seconds}, {"message", a.message}});
   j["attempts"] = at;
-  j["message"] = r.result.message;
+  j["message"] = r.message;
   if (all) {
     j["solutions_found"] = report_detail::count_json(all->count());
     j["listed"] = 1;

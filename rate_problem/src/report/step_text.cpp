@@ -50,11 +50,11 @@ void point_all_text(std::ostream& out, const StepSolutionSet& s) {
 /// was picked.
 void point_chain_text(std::ostream& out, const StepOutcome& o) {
   const StepSolveResult& r = o.one;
-  out << "status: " << to_string(r.result.status) << " (solver " << r.result.solver
-      << ", residual " << r.result.residuals.natural << ")\n";
-  if (is_solution(r.result.status))
-    out << "  " << to_string(r.type) << ": " << values_text(r.values) << "\n";
-  if (!r.result.message.empty()) out << "note: " << r.result.message << "\n";
+  out << "status: " << to_string(r.status) << " (solver " << r.solver
+      << ", residual " << r.residuals.natural << ")\n";
+  if (is_solution(r.status))
+    out << "  " << to_string(r.solution.type) << ": " << values_text(r.solution.values) << "\n";
+  if (!r.message.empty()) out << "note: " << r.message << "\n";
   if (o.has_enumeration) {
     const StepSolutionSet& all = o.set;
     out << "1 of " << count_text(all.count()) << (all.count() == 1 ? " solution" : " solutions")

@@ -64,10 +64,10 @@ void run_point_chain(const StepRequest& r, const StepProblem& p, StepOutcome& ou
     o.chain.push_back(name);
   }
   out.one = solve_step(p, o);
-  const bool ok = is_solution(out.one.result.status);
+  const bool ok = is_solution(out.one.status);
   // The active-set link picked one point out of an exact enumeration: say out of how many
   // (the same enumeration as --all, so that "--all lists them" holds; issue 27).
-  if (ok && out.one.result.solver == "active-set") {
+  if (ok && out.one.solver == "active-set") {
     out.set = enumerate_step(p);
     out.has_enumeration = true;
   }

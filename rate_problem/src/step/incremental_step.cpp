@@ -172,16 +172,21 @@ Eigen::Vector3d step_unknowns(const StepValues& v) noexcept {
   return Eigen::Vector3d(v.P_N1, std::max(v.Dw_Ti, 0.0), std::max(-v.Dw_Ti, 0.0));
 }
 
+bool step_started_open(const StepProblem& p) noexcept {
+  const ContactParameters& a = p.params;
+  const double fscale = std::max({std::abs(p.state.P_T0), std::abs(p.state.P_N0),
+                                  std::abs(p.load.dF_T), std::abs(p.load.dF_N),
+                                  std::numeric_limits<double>::min()});
+  const double comp = (a.a11 + a.a22) / a.detA() + a.C_T;
+  return p.state.g0 < -1e-9 * (std::abs(p.state.g0) + fscale * comp);
+}
+
 SolutionType classify_step(const StepProblem& p, const StepValues& v) noexcept {
   // Every test compares a quantity with the magnitudes of the terms it is made of (unit-free:
   // the same verdict in any units, whatever the conditioning of A).
   const ContactParameters& a = p.params;
   const double tol = 1e-9;
-  const double fscale = std::max({std::abs(p.state.P_T0), std::abs(p.state.P_N0),
-                                  std::abs(p.load.dF_T), std::abs(p.load.dF_N),
-                                  std::numeric_limits<double>::min()});
-  const double comp = (a.a11 + a.a22) / a.detA() + a.C_T;
-  const bool started_open = p.state.g0 < -tol * (std::abs(p.state.g0) + fscale * comp);
+  const bool started_open = step_started_open(p);
   // Displacements of this solution, or what its forces move the stiffest direction by.
   const double forces = std::abs(v.DP_T) + std::abs(v.DP_N) + std::abs(p.load.dF_T) +
                         std::abs(p.load.dF_N);

@@ -34,27 +34,13 @@ detail::Units scales_of(const Step3dProblem& p) noexcept {
   return s;
 }
 
-Step3dValues to_user_units(Step3dValues v, const detail::Units& s) noexcept {
-  v.DP_T *= s.force;
-  v.P_T1 *= s.force;
-  v.DP_N *= s.force;
-  v.P_N1 *= s.force;
-  v.Dw_T *= s.length;
-  v.Dw_Ti *= s.length;
-  v.Dw_N *= s.length;
-  v.Dw_w *= s.length;
-  v.g1 *= s.length;
-  v.lambda *= s.length * s.ellipse;
-  return v;
+Step3dValues to_user_units(const Step3dValues& v, const detail::Units& s) noexcept {
+  return detail::scaled_values(v, s.force, s.length, s.length * s.ellipse);
 }
 
-Step3dValues to_normalized(Step3dValues v, const detail::Units& s) noexcept {
-  detail::Units inv;
-  inv.force = 1 / s.force;
-  inv.stiffness = 1 / s.stiffness;
-  inv.length = inv.force / inv.stiffness;
-  inv.ellipse = 1 / s.ellipse;
-  return to_user_units(v, inv);
+Step3dValues to_normalized(const Step3dValues& v, const detail::Units& s) noexcept {
+  const double force = 1 / s.force, length = force / (1 / s.stiffness);
+  return detail::scaled_values(v, force, length, length * (1 / s.ellipse));
 }
 
 using detail::project_soc;

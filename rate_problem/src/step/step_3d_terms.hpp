@@ -52,6 +52,24 @@ inline Step3dProblem normalized_step_3d(Step3dProblem n, const Units& u) noexcep
   return n;
 }
 
+/// A step's values with its forces times `force`, its lengths times `length` and its plastic
+/// multiplier times `multiplier`: into or out of a problem's units (each caller passes its own
+/// factors, computed as it always has, so that its rounding stays what it was).
+inline Step3dValues scaled_values(Step3dValues v, double force, double length,
+                                  double multiplier) noexcept {
+  v.DP_T *= force;
+  v.P_T1 *= force;
+  v.DP_N *= force;
+  v.P_N1 *= force;
+  v.Dw_T *= length;
+  v.Dw_Ti *= length;
+  v.Dw_N *= length;
+  v.Dw_w *= length;
+  v.g1 *= length;
+  v.lambda *= multiplier;
+  return v;
+}
+
 /// The type of a point's solution from its values in normalized units (classify_step_3d): P_N1
 /// = 0 is separation (open when the step started open, g0 < 0), else stick or slip.
 inline SolutionType classify_normalized_step_3d(const Step3dValues& v, double g0) noexcept {

@@ -362,15 +362,6 @@ StepValues values_of(const StepProblem& n, const double u[5]) noexcept {
   return v;
 }
 
-
-bool started_open(const StepProblem& n) noexcept {
-  const ContactParameters& a = n.params;
-  const double fscale = std::max({std::abs(n.state.P_T0), n.state.P_N0, std::abs(n.load.dF_T),
-                                  std::abs(n.load.dF_N), std::numeric_limits<double>::min()});
-  const double dscale = std::abs(n.state.g0) + fscale * ((a.a11 + a.a22) / a.detA() + a.C_T);
-  return n.state.g0 < -1e-9 * dscale;
-}
-
 /// Type of an accepted candidate: its piece, except at the ends of the pieces, where a
 /// quantity at the rounding level of the candidate's own scales (scales_of) counts as 0.
 SolutionType type_of(const StepProblem& n, const Candidate& c) noexcept {
@@ -378,7 +369,7 @@ SolutionType type_of(const StepProblem& n, const Candidate& c) noexcept {
   const double* u = c.u;
   const double fs = c.fs, ds = c.ds;
   const double P1 = n.state.P_N0 + u[1];
-  const bool open = started_open(n);
+  const bool open = step_started_open(n);
   auto by_slip = [&]() {
     if (std::abs(u[4]) <= kTypeTol * ds) return SolutionType::kStick;
     return u[4] > 0 ? SolutionType::kSlipPlus : SolutionType::kSlipMinus;
@@ -600,6 +591,18 @@ void mark_jumps(const StepProblem& n, const Setup& st, double tol, StepSolutionS
   };
   std::vector<StepValues> prev_v, cur_v;
   std::vector<char> prev_r, cur_r;
+  // The index of the solution of the previous t nearest to v (-1: none), its distance in best.
+  auto nearest = [&](const StepValues& v, double& best) {
+    int bi = -1;
+    for (std::size_t j = 0; j < prev_v.size(); ++j) {
+      const double d = dist(v, prev_v[j]);
+      if (d < best) {
+        best = d;
+        bi = static_cast<int>(j);
+      }
+    }
+    return bi;
+  };
   bool ok = true;
   for (int k = 0; k <= kSteps && ok; ++k) {
     const double t = static_cast<double>(k) / kSteps;
@@ -621,14 +624,7 @@ void mark_jumps(const StepProblem& n, const Setup& st, double tol, StepSolutionS
         r = distance(v) + st.detA / st.D0 * std::abs(v.Dw_Ti) <= 1e-9 * st.fscale;
       } else {
         double best = INFINITY;
-        int bi = -1;
-        for (std::size_t j = 0; j < prev_v.size(); ++j) {
-          const double d = dist(v, prev_v[j]);
-          if (d < best) {
-            best = d;
-            bi = static_cast<int>(j);
-          }
-        }
+        const int bi = nearest(v, best);
         r = bi >= 0 && prev_r[bi] && best <= link;
       }
       cur_v.push_back(v);
@@ -642,14 +638,7 @@ void mark_jumps(const StepProblem& n, const Setup& st, double tol, StepSolutionS
     set.continuous_count = 0;
     for (auto& sol : set.solutions) {
       double best = INFINITY;
-      int bi = -1;
-      for (std::size_t j = 0; j < prev_v.size(); ++j) {
-        const double d = dist(sol.start, prev_v[j]);
-        if (d < best) {
-          best = d;
-          bi = static_cast<int>(j);
-        }
-      }
+      const int bi = nearest(sol.start, best);
       sol.jump = !(bi >= 0 && prev_r[bi]);
       if (!sol.jump) ++set.continuous_count;
     }

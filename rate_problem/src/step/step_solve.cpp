@@ -6,7 +6,6 @@
 #include "cpkit/core/finalize.hpp"
 #include "cpkit/core/timer.hpp"
 #include "cpkit/lcp/solvers.hpp"
-#include "cpkit/rate_problem/step/step_enumeration.hpp"
 
 namespace cpkit::rate {
 
@@ -124,15 +123,18 @@ StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& o
     last = r;
     if (is_solution(r.status)) break;
   }
-  out.result = last;
-  out.result.attempts = attempts;
-  if (!skipped.empty()) append(out.result.message, skipped);
+  static_cast<SolveResult&>(out) = last;
+  out.attempts = attempts;
+  if (!skipped.empty()) append(out.message, skipped);
   if (is_solution(last.status) && last.z.size() == 3) {
     // Physical values from z: DP_N = P_N1 - P_N0, xi = l+ - l-.
-    out.values = last.solver == "active-set"
-                     ? active_set_values
-                     : step_values(problem, last.z[0] - problem.state.P_N0, last.z[1] - last.z[2]);
-    out.type = last.solver == "active-set" ? active_set_type : classify_step(problem, out.values);
+    StepPoint& pt = out.solution;
+    pt.values = last.solver == "active-set"
+                    ? active_set_values
+                    : step_values(problem, last.z[0] - problem.state.P_N0, last.z[1] - last.z[2]);
+    pt.type = last.solver == "active-set" ? active_set_type : classify_step(problem, pt.values);
+    pt.DP_N = pt.values.DP_N;
+    pt.xi = pt.values.Dw_Ti;
   }
   return out;
 }

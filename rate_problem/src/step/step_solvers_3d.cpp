@@ -21,6 +21,7 @@
 #include "cpkit/lcp/solvers.hpp"
 #include "step_3d_newton.hpp"
 #include "step_3d_normalized.hpp"
+#include "step_3d_terms.hpp"
 #include "step_3d_verdict.hpp"
 #include "../model/unit_scaling.hpp"
 
@@ -34,20 +35,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using Normalized = detail::Normalized3d<1>;
 
-/// The units of the one-point step: stiffness |A|, force the largest of |DF|, |P_T0|, P_N0 and
-/// |A| |g0| (1 when that is 0 or overflows), length force / stiffness.
-detail::Units units_of(const Step3dProblem& pr) noexcept {
-  detail::Units u;
-  u.stiffness = pr.params.A.cwiseAbs().maxCoeff();
-  const double f = std::max({pr.DF.cwiseAbs().maxCoeff(), pr.state.P_T0.cwiseAbs().maxCoeff(),
-                             std::abs(pr.state.P_N0), u.stiffness * std::abs(pr.state.g0)});
-  u.force = (f > 0 && std::isfinite(f)) ? f : 1.0;
-  u.length = u.force / u.stiffness;
-  return u;
-}
-
+/// The problem in its own units (step_3d_units, as the exact enumeration and N points).
 Normalized normalize(const Step3dProblem& pr) {
-  return detail::normalize_3d<1>(units_of(pr), pr.params.A, pr.DF, 1,
+  return detail::normalize_3d<1>(detail::step_3d_units(pr.params.A, pr.DF, &pr.state, 1),
+                                 pr.params.A, pr.DF, 1,
                                  [&pr](int) -> const Step3dProblem& { return pr; });
 }
 
@@ -370,10 +361,8 @@ FacetedStep3dResult solve_step_3d_faceted(const Step3dProblem& problem, int k, i
     out.size = k;
     // Separation (P_N1 = 0, P_T1 = 0: every multiplier free): directly, when g1 <= 0.
     {
-      const Eigen::Matrix<double, 5, 1> s = f.S0 + f.SN * 0.0;
       // P_T1 = 0 requires DP_T = -P_T0; equilibrium with P1 = 0 gives Dw = A^-1 (DF + P0)
       const double gN1 = n.gc(0);  // g1 at P1 = 0
-      (void)s;
       // g1 = g0 + (A^-1 (DF + P0))_N in normalised units: "<= 0" up to the rounding of that
       // sum (its terms' size, not a fixed 1e-12)
       const Eigen::Vector3d P0 = n.P0;

@@ -12,7 +12,7 @@
 #include "cpkit/core/spd.hpp"
 #include "cpkit/core/residuals.hpp"
 #include "cpkit/rate_problem/step/step_enumeration.hpp"
-#include "system_step_units.hpp"
+#include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -26,6 +26,63 @@ constexpr double kGray = 1e3;
 /// coupled 2-point steps against a long-double brute force is right up to cond 1e10 and misses
 /// full separations from 1e11 on (the displacements of the soft mode lose their digits).
 constexpr double kMaxProvedCond = 1e9;
+
+/// The units the enumeration works in: force unit f (the largest force of the data) and length
+/// unit l = f / max|A_ij| (so that A is O(1)). The step is invariant under a change of units
+/// (forces / f, lengths / l, A l / f, C_T f / l, k_a f), so enumerating in these units makes
+/// every tolerance unit-free and keeps loads near the ends of double's range representable
+/// (issue 24, items 4 and 5).
+detail::Units step_units(const SystemStepProblem& p) {
+  const ContactSystem& s = p.system;
+  const double amax = s.A.cwiseAbs().maxCoeff();
+  double f = p.DF.cwiseAbs().maxCoeff(), gmax = 0;
+  for (const auto& q : s.points) {
+    f = std::max({f, std::abs(q.P_N), std::abs(q.P_T)});
+    gmax = std::max(gmax, std::abs(q.g));
+  }
+  if (!(f > 0)) f = amax * gmax;  // no force at all: the force that closes the largest gap
+  if (!(f > 0) || !std::isfinite(f)) f = amax;  // nothing but A: every unknown is zero
+  detail::Units u;
+  u.force = f;
+  u.stiffness = amax;
+  // f / amax beyond double's range: the nearest representable length unit (the solution may
+  // still fit; from_units says when it does not)
+  u.length = std::min(std::max(f / amax, std::numeric_limits<double>::min()),
+                 std::numeric_limits<double>::max());
+  return u;
+}
+
+[[noreturn]] void not_representable(const std::string& what) {
+  throw InputError("the step is not representable in double precision: " + what +
+                   " (rescale the data: forces and displacements beyond about 1e308 or below "
+                   "1e-308 in the units of the problem)");
+}
+
+SystemStepProblem to_units(const SystemStepProblem& p, const detail::Units& u) {
+  SystemStepProblem q = p;
+  q.system.A = p.system.A * (u.length / u.force);
+  q.DF = p.DF / u.force;
+  for (auto& x : q.system.points) {
+    x.P_N /= u.force;
+    x.P_T /= u.force;
+    x.g /= u.length;
+    x.C_T *= u.force / u.length;
+    x.k_a *= u.force;
+  }
+  if (!q.system.A.allFinite() || !q.DF.allFinite()) not_representable("A or DF in units of the load");
+  for (const auto& x : q.system.points)
+    if (!std::isfinite(x.P_N) || !std::isfinite(x.P_T) || !std::isfinite(x.g) ||
+        !std::isfinite(x.C_T) || !std::isfinite(x.k_a))
+      not_representable("a point's data in units of the load");
+  return q;
+}
+
+void from_units(StepValues& v, const detail::Units& u) {
+  for (double* x : {&v.DP_T, &v.DP_N, &v.P_T1, &v.P_N1}) *x *= u.force;
+  for (double* x : {&v.Dw_T, &v.Dw_N, &v.Dw_Ti, &v.Dw_w, &v.g1}) *x *= u.length;
+  for (double x : {v.DP_T, v.DP_N, v.P_T1, v.P_N1, v.Dw_T, v.Dw_N, v.Dw_Ti, v.Dw_w, v.g1})
+    if (!std::isfinite(x)) not_representable("a solution's forces or displacements overflow");
+}
 
 /// The affine maps of u = (P_N1 (N), xi (N)) computed once per problem:
 /// P_T1 = pt0 + PT u, Dw_N = wn0 + WN u, Dw_T = wt0 + WT u (wt0/WT: total tangential Dw).
@@ -724,8 +781,8 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
     throw InputError("the N-point step enumerates 4^N active sets; " + std::to_string(N) +
                      " points exceed the limit of " + std::to_string(opt.max_points));
   // Enumerate in the problem's own units (step_units), report in the caller's.
-  const detail::Units units = detail::step_units(p);
-  const SystemStepProblem ps = detail::to_units(p, units);
+  const detail::Units units = step_units(p);
+  const SystemStepProblem ps = to_units(p, units);
   const Maps m = make_maps(ps);
   const McpProblem mcp = make_mcp(m);
   SystemStepSolutionSet out;
@@ -755,8 +812,9 @@ SystemStepSolutionSet enumerate_system_step(const SystemStepProblem& p,
       out.notes.push_back(o.str());
     }
   }
+  if (!out.notes.empty()) out.message = out.notes.front();
   for (auto& sol : out.solutions)
-    for (auto& v : sol.values) detail::from_units(v, units);
+    for (auto& v : sol.values) from_units(v, units);
   return out;
 }
 

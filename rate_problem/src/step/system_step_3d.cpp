@@ -40,19 +40,9 @@ bool sizes_ok(const SystemStep3dProblem& p) noexcept {
 }
 
 /// `ellipse`: detail::ellipse_unit of the point's alpha (the multiplier's unit).
-Step3dValues normalized_values(Step3dValues v, const detail::Units& s, double ellipse) noexcept {
-  const double f = 1 / s.force, d = 1 / s.length;
-  v.DP_T *= f;
-  v.P_T1 *= f;
-  v.DP_N *= f;
-  v.P_N1 *= f;
-  v.Dw_T *= d;
-  v.Dw_Ti *= d;
-  v.Dw_N *= d;
-  v.Dw_w *= d;
-  v.g1 *= d;
-  v.lambda *= d / ellipse;
-  return v;
+Step3dValues normalized_values(const Step3dValues& v, const detail::Units& s, double ellipse) noexcept {
+  const double length = 1 / s.length;
+  return detail::scaled_values(v, 1 / s.force, length, length / ellipse);
 }
 
 using Normalized = detail::Normalized3d<Eigen::Dynamic>;

@@ -107,6 +107,11 @@ StepValues step_values(const StepProblem& problem, double DP_N, double xi) noexc
 /// The NCP unknowns z = (P_N1, l+, l-) of a physical solution (l+ = max(xi, 0), ...).
 Eigen::Vector3d step_unknowns(const StepValues& v) noexcept;
 
+/// The step starts open: g0 < 0 beyond 1e-9 of the displacement scale |g0| + F (a11 + a22)
+/// / det A + F C_T, F the largest of |P_T0|, |P_N0|, |dF_T|, |dF_N| (classify_step and the
+/// enumeration's types decide `open` by it).
+bool step_started_open(const StepProblem& problem) noexcept;
+
 /// Type of a step solution: P_N1 = 0 with g1 < 0 is `separation` (`open` when the step
 /// started open, g0 < 0); otherwise stick (Dw_T^i = 0) or slip+/slip- by the sign of Dw_T^i
 /// (a grazing end P_N1 = 0, g1 = 0 with slip is the rate problem's zero-force slip).

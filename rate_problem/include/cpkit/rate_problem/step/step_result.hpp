@@ -2,10 +2,11 @@
 /// \file step_result.hpp
 /// The results of a step, one family for one point and N points, 2-D and 3-D: the set of its
 /// solutions and the outcome of one iterative solve, each a template over the route's solution
-/// (Step3dSolution, SystemStep3dSolution, StepSolution, SystemStepSolution). The old names are
-/// aliases (Step3dSolutionSet, SystemStep3dSolutionSet, Step3dSolveResult,
-/// SystemStep3dSolveResult, Step3dChainResult); a route with more to say derives and adds it
-/// (StepSolutionSet: pieces and jumps; SystemStepSolutionSet: the active sets).
+/// (Step3dSolution, SystemStep3dSolution, StepSolution, SystemStepSolution, the 2-D chain's
+/// StepPoint). The old names are aliases (Step3dSolutionSet, SystemStep3dSolutionSet,
+/// Step3dSolveResult, SystemStep3dSolveResult, Step3dChainResult, StepSolveResult); a route
+/// with more to say derives and adds it (StepSolutionSet: pieces and jumps;
+/// SystemStepSolutionSet: its notes and the active sets examined).
 #include <string>
 #include <vector>
 

@@ -12,12 +12,16 @@
 /// A name not registered (yet) is skipped with a message in SolveResult::message; every link
 /// that runs is recorded in SolveResult::attempts. Every claim goes through cpkit::finalize()
 /// against step_as_mcp() (or step_as_lcp() for Lemke), which alone grants "solved".
+/// The result is the step family's StepSolveResultOf (step_result.hpp) over the 2-D point
+/// solution StepPoint (step_enumeration.hpp).
 #include <string>
 #include <vector>
 
 #include "cpkit/core/options.hpp"
 #include "cpkit/core/result.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/step/step_enumeration.hpp"
+#include "cpkit/rate_problem/step/step_result.hpp"
 
 namespace cpkit::rate {
 
@@ -28,11 +32,10 @@ struct StepSolveOptions {
   std::string validate() const;
 };
 
-struct StepSolveResult {
-  SolveResult result;          ///< z = (P_N1, l+, l-); status decided by finalize()
-  StepValues values;           ///< physical outputs (meaningful when is_solution(status))
-  SolutionType type = SolutionType::kStick;
-};
+/// The chain's outcome: the common SolveResult (z = (P_N1, l+, l-), status decided by
+/// finalize(), every link in attempts) with the point's type and physical values in
+/// `solution` (meaningful when is_solution(status); merit unused, 0).
+using StepSolveResult = StepSolveResultOf<StepPoint>;
 
 /// Solves one step. Throws InputError for an invalid problem or options.
 StepSolveResult solve_step(const StepProblem& problem, const StepSolveOptions& options = {});

@@ -47,6 +47,7 @@
 #include "cpkit/core/problem.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 #include "cpkit/rate_problem/step/incremental_step.hpp"
+#include "cpkit/rate_problem/step/step_result.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
@@ -67,11 +68,11 @@ struct SystemStepSolution {
   double residual = 0;              ///< unit-free natural residual of the step NCP
 };
 
-struct SystemStepSolutionSet {
-  std::vector<SystemStepSolution> solutions;
-  /// true only when every active set was solved by a method that finds every root, no
-  /// candidate was undecided, and cond(A) <= 1e9.
-  bool complete = true;
+/// The solutions of the N-point step (step_result.hpp). `complete` is true only when every
+/// active set was solved by a method that finds every root, no candidate was undecided, and
+/// cond(A) <= 1e9; why not is said in `notes` (one line per unresolved active set), and
+/// `message` is the first of them.
+struct SystemStepSolutionSet : StepSolutionSetOf<SystemStepSolution> {
   std::vector<std::string> notes;  ///< why not complete (one line per unresolved active set)
   long active_sets = 0;            ///< active sets examined (4^N)
 };
