@@ -6,7 +6,7 @@
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/step_outcome.hpp"
-#include "piece_json.hpp"
+#include "piece_report.hpp"
 
 namespace cpkit::rate {
 
