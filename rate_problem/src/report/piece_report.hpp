@@ -4,7 +4,9 @@
 // and direction.
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 
@@ -51,6 +53,14 @@ void piece_text(std::ostream& o, const Piece& p, const char* from, const char* s
         << text(p.direction) << "\n";
       break;
   }
+}
+
+/// The names of the solution types present, sorted, each once.
+template <class Solutions>
+std::vector<std::string> type_names(const Solutions& solutions) {
+  std::set<std::string> types;
+  for (const auto& p : solutions) types.insert(std::string(to_string(p.type)));
+  return {types.begin(), types.end()};
 }
 
 /// A count as the reports print it: "inf" for infinitely many (count() < 0), else the number.

@@ -1,6 +1,5 @@
 #include "cpkit/rate_problem/report/json.hpp"
 
-#include <set>
 #include <string>
 #include <vector>
 
@@ -31,9 +30,7 @@ nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* re
   nlohmann::json j;
   report_detail::add_count(j, s.complete, s.count(), s.solutions.size());
   if (reference && reference->complete) j["enumerated_count"] = count_json(reference->count());
-  std::set<std::string> types;
-  for (const auto& p : s.solutions) types.insert(std::string(to_string(p.type)));
-  j["types"] = std::vector<std::string>(types.begin(), types.end());
+  j["types"] = report_detail::type_names(s.solutions);
   nlohmann::json sols = nlohmann::json::array();
   for (const auto& p : s.solutions) {
     nlohmann::json e;

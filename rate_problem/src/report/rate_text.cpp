@@ -2,7 +2,6 @@
 // is kept as it was when the program printed it.
 #include "cpkit/rate_problem/report/rate_text.hpp"
 
-#include <set>
 #include <sstream>
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
@@ -79,9 +78,7 @@ void one_point_text(std::ostream& o, const RateOutcome& out) {
   } else {
     o << "no solution found by " << out.method << " (incomplete: not a proof)   types:";
   }
-  std::set<std::string> types;
-  for (const auto& p : s.solutions) types.insert(std::string(to_string(p.type)));
-  for (const auto& t : types) o << ' ' << t;
+  for (const auto& t : report_detail::type_names(s.solutions)) o << ' ' << t;
   o << "\nLambda: " << s.Lambda << "   D_+: " << s.D_plus << "   D_-: " << s.D_minus
     << "   unique for all directions: " << (s.unique_for_all_directions ? "yes" : "no") << "\n";
   for (const auto& p : s.solutions) {

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "cpkit/rate_problem/rate/system_rate.hpp"
 #include "piece_report.hpp"
 
 namespace cpkit::rate {
@@ -60,9 +61,7 @@ void system_text(std::ostream& out, const StepOutcome& o) {
   out << "step (" << o.system_problem.system.n_points() << " points): " << s.solutions.size()
       << " solution(s)" << (s.complete ? " (complete)" : " (NOT proved complete)") << "\n";
   for (const auto& sol : s.solutions) {
-    out << "  ";
-    for (std::size_t i = 0; i < sol.types.size(); ++i) out << (i ? "/" : "") << to_string(sol.types[i]);
-    out << "\n";
+    out << "  " << types_string(sol.types) << "\n";
     for (std::size_t i = 0; i < sol.values.size(); ++i)
       out << "    point " << i + 1 << ": " << values_text(sol.values[i]) << "\n";
   }
