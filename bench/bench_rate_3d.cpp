@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
       agree = 0;
       nodes = 0;
       for (std::size_t i = 0; i < cases.size(); ++i) {
-        const FacetedRateResult f = solve_rate_3d_faceted(cases[i].p, cases[i].dF, k);
-        agree += f.set.count() == exact_count[i];
+        const RateSolutionSet3d f = solve_rate_3d_faceted(cases[i].p, cases[i].dF, k);
+        agree += f.count() == exact_count[i];
         nodes += f.nodes;
       }
     });

@@ -192,7 +192,7 @@ def system_direction_counts(system: ContactSystem, theta, e1=None, e2=None) -> D
 
 class ContactSystem3d:
     """A "dim": 3 system (docs/file_formats.md, "System file"; rate_problem/system/
-    contact_system_3d.hpp), parsed once: ContactSystem3d(source) with a path, the file's JSON
+    contact_system.hpp), parsed once: ContactSystem3d(source) with a path, the file's JSON
     text or a dict of it, or ContactSystem3d.from_file(path) (the reader of `cpkit`, messages
     naming the file). ValueError naming the field and the point for bad input. Every function that
     takes a 3-D system accepts one (and a path, JSON text or dict, parsed at the call)."""

@@ -9,7 +9,7 @@
 #include "convert.hpp"
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::py {
 namespace {

@@ -9,7 +9,7 @@
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/rate/system_rate_3d.hpp"
 
 namespace cpkit::py {
@@ -57,9 +57,9 @@ pyb::dict solve_rate_3d(const pyb::object& point, const std::string& state, cons
   pyb::dict d;
   if (facets > 0) {
     if (s.state != 'b') throw InputError("facets apply to the grazing state b (a, c, d are linear)");
-    rate::FacetedRateResult r =
+    rate::RateSolutionSet3d r =
         without_gil([&] { return rate::solve_rate_3d_faceted(p, load, facets); });
-    d = set_dict(r.set);
+    d = set_dict(r);
     d["facets"] = r.facets;
     d["route"] = "faceted";
   } else {

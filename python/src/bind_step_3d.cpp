@@ -14,7 +14,7 @@
 #include "cpkit/rate_problem/step/multistart_cap.hpp"
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::py {
 namespace {

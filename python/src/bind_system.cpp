@@ -8,7 +8,6 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::py {
 namespace {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Fuzz target: the system-file readers as the commands use them: the file read once and its
 // dimension told (system/system_file.hpp), then the 2-D reader (system/contact_system.hpp) or
-// the "dim": 3 one (system/contact_system_3d.hpp), and for an accepted one-point 3-D system with a dF
+// the "dim": 3 one (parse_contact_system_3d), and for an accepted one-point 3-D system with a dF
 // its exact rate problem. Any input must end in success or cpkit::InputError: every other
 // exception, crash, sanitizer report or failed invariant below is a bug.
 #include <cstddef>
@@ -10,7 +10,6 @@
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "fuzz_target.hpp"
 
 using cpkit::fuzz::require;

@@ -124,7 +124,7 @@ TEST_CASE("3-D rate (exact and faceted), every state: the same solutions in ever
     }
     const Eigen::Vector3d dF(u(rng), u(rng), u(rng));
     const RateSolutionSet3d ref = solve_rate_3d(p, st, dF);
-    const RateSolutionSet3d fref = solve_rate_3d_faceted(p, dF, 8).set;
+    const RateSolutionSet3d fref = solve_rate_3d_faceted(p, dF, 8);
     for (double c : kUnits)
       for (double s : {1.0, 1e-9, 1e9}) {
         CAPTURE(trial, st.state, c, s);
@@ -141,7 +141,7 @@ TEST_CASE("3-D rate (exact and faceted), every state: the same solutions in ever
           CHECK(same_rates(ref.solutions[k].at, x.solutions[k].at, s));
         }
         if (st.state != 'b') continue;
-        const RateSolutionSet3d f = solve_rate_3d_faceted(q, s * dF, 8).set;
+        const RateSolutionSet3d f = solve_rate_3d_faceted(q, s * dF, 8);
         CHECK(f.complete == fref.complete);
         REQUIRE(f.count() == fref.count());
         for (int k = 0; k < fref.count(); ++k) CHECK(same_rates(fref.solutions[k].at, f.solutions[k].at, s));

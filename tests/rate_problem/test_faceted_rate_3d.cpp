@@ -42,13 +42,13 @@ TEST_CASE("faceted 3-D, isotropic with Y decoupled and unloaded: the 2-D closed 
     p3.mu = p2.mu;
     p3.C_T = p2.C_T;
     const int k = 4 + 2 * (c % 6);  // even: vertices at +-X
-    const FacetedRateResult got = solve_rate_3d_faceted(p3, {std::cos(th), 0, std::sin(th)}, k);
-    CAPTURE(c, k, p2.a11, p2.a12, p2.a22, p2.mu, p2.C_T, th, got.set.message);
-    CHECK(got.set.complete);
-    REQUIRE(got.set.count() == static_cast<int>(ref.solutions.size()));
+    const RateSolutionSet3d got = solve_rate_3d_faceted(p3, {std::cos(th), 0, std::sin(th)}, k);
+    CAPTURE(c, k, p2.a11, p2.a12, p2.a22, p2.mu, p2.C_T, th, got.message);
+    CHECK(got.complete);
+    REQUIRE(got.count() == static_cast<int>(ref.solutions.size()));
     for (const auto& s : ref.solutions) {
       bool found = false;
-      for (const auto& g : got.set.solutions)
+      for (const auto& g : got.solutions)
         found = found || (std::abs(g.at.dP_N - s.start.dP_N) <= 1e-8 &&
                           std::abs(g.at.dP_T(0) - s.start.dP_T) <= 1e-8 &&
                           std::abs(g.at.dP_T(1)) <= 1e-8 &&
@@ -81,15 +81,15 @@ TEST_CASE("faceted 3-D: the counts approach the exact elliptic counts as k grows
     ++cases;
     non_unique += exact.count() > 1;
     for (std::size_t i = 0; i < ks.size(); ++i) {
-      const FacetedRateResult f = solve_rate_3d_faceted(p, dF, ks[i]);
-      CAPTURE(c, ks[i], f.set.message);
-      CHECK(f.set.complete);
-      agree[i] += f.set.count() == exact.count();
+      const RateSolutionSet3d f = solve_rate_3d_faceted(p, dF, ks[i]);
+      CAPTURE(c, ks[i], f.message);
+      CHECK(f.complete);
+      agree[i] += f.count() == exact.count();
       // the faceted slip directions approach the exact ones
       for (const auto& e : exact.solutions) {
         if (e.type != SolutionType::kSlip) continue;
         double best = 10;
-        for (const auto& g : f.set.solutions)
+        for (const auto& g : f.solutions)
           if (g.type == SolutionType::kSlip)
             best = std::min(best, std::abs(std::remainder(g.slip_angle - e.slip_angle, 2 * kPi)));
         max_angle_error[i] = std::max(max_angle_error[i], best);

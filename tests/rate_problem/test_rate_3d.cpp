@@ -472,8 +472,8 @@ TEST_CASE("3-D rate: a direction where the slip system has rank one for every lo
     const RateSolutionSet3d e = solve_rate_3d(p, ContactState3d{}, dF);
     INFO("trial " << trial << ": " << e.message);
     REQUIRE(e.complete);
-    const FacetedRateResult f = solve_rate_3d_faceted(p, dF, 64);
-    agree += f.set.count() == e.count();
+    const RateSolutionSet3d f = solve_rate_3d_faceted(p, dF, 64);
+    agree += f.count() == e.count();
     ++total;
     Step3dProblem st;
     st.params = p;
@@ -546,7 +546,7 @@ TEST_CASE("3-D rate: rank-one eigenvector directions over random loads", "[rate3
     ++total;
     complete += e.complete;
     if (!e.complete) continue;
-    agree += solve_rate_3d_faceted(p, dF, 64).set.count() == e.count();
+    agree += solve_rate_3d_faceted(p, dF, 64).count() == e.count();
   }
   CHECK(complete >= total - 6);
   CHECK(agree >= complete - 4);  // the faceted slip directions are approximate near tangencies

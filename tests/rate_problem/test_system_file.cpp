@@ -16,7 +16,6 @@
 #include "cpkit/rate_problem/step/system_step.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/step/system_step_3d.hpp"
 
 using namespace cpkit::rate;

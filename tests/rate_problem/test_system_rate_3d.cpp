@@ -55,7 +55,7 @@ SystemPoint3d random_point(std::mt19937& rng, char state) {
 
 /// One-point solution set of point i alone (faceted in b, exact in c/d).
 RateSolutionSet3d one_point(const ContactSystem3d& s, int i, const Eigen::Vector3d& dF, int k) {
-  if (s.points[i].state.state == 'b') return solve_rate_3d_faceted(s.point_parameters(i), dF, k).set;
+  if (s.points[i].state.state == 'b') return solve_rate_3d_faceted(s.point_parameters(i), dF, k);
   return solve_rate_3d(s.point_parameters(i), s.points[i].state, dF);
 }
 }  // namespace

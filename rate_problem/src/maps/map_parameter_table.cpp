@@ -6,7 +6,6 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 
 namespace cpkit::rate {
 

@@ -9,6 +9,7 @@
 
 #include "cpkit/core/errors.hpp"
 #include "cpkit/lcp/enumerate.hpp"
+#include "facet_polygon.hpp"
 #include "rate_3d_units.hpp"
 
 namespace cpkit::rate {
@@ -16,7 +17,6 @@ namespace {
 
 using detail::rates_distance;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTol = 1e-10;  // relative "zero", as in point_rate_3d.cpp
 
 /// Contact (dw_N = 0): lambda (one slip multiplier per facet) -> physical rates, affine:
@@ -41,7 +41,7 @@ struct FacetedMap {
 
 }  // namespace
 
-FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
+RateSolutionSet3d solve_rate_3d_faceted(const ContactParameters3d& user_params,
                                         const Eigen::Vector3d& user_dF, int k,
                                         double time_limit_s) {
   if (const std::string e = user_params.validate(); !e.empty()) throw InputError("parameters: " + e);
@@ -53,23 +53,11 @@ FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
   Eigen::Vector3d dF = user_dF;
   detail::normalize_ellipse(p);  // the rates hold no multiplier: nothing to scale back
   const detail::Units scaling = detail::normalize(p, dF);
-  // The polygon: vertices v_i = D (cos theta_i, sin theta_i) (counter-clockwise), facet j from
-  // v_j to v_j+1 with outward unit normal n_j and support h_j = n_j . v_j > 0; friction set
-  // n_j . dP_T <= mu h_j dP_N, flow dw_T^i = sum lambda_j n_j.
-  std::vector<Eigen::Vector2d> vert(static_cast<std::size_t>(k));
-  for (int i = 0; i < k; ++i) {
-    const double th = 2 * kPi * i / k;
-    vert[i] = p.alpha.asDiagonal() * Eigen::Vector2d(std::cos(th), std::sin(th));
-  }
+  const detail::FacetPolygon poly = detail::facet_polygon(p.alpha, k);
   FacetedMap map;
   map.C_T = p.C_T;
-  map.N.resize(2, k);
-  Eigen::VectorXd h(k);
-  for (int j = 0; j < k; ++j) {
-    const Eigen::Vector2d e = vert[(j + 1) % k] - vert[j];
-    map.N.col(j) = Eigen::Vector2d(e(1), -e(0)).normalized();
-    h(j) = map.N.col(j).dot(vert[j]);
-  }
+  map.N = poly.N;
+  const Eigen::VectorXd& h = poly.h;
   // In contact, dF - dP = A (C_T dP_T + N lambda, 0): dP_T = K^-1 (dF_T - A_TT N lambda) with
   // K = I + C_T A_TT, dP_N = dF_N - A_NT (C_T dP_T + N lambda).
   const Eigen::Matrix2d ATT = p.A.topLeftCorner<2, 2>();
@@ -90,12 +78,9 @@ FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
   opt.time_limit_s = time_limit_s;
   const lcp::SolutionSet zs = lcp::enumerate_all(lcp, opt);
 
-  FacetedRateResult out;
-  out.facets = k;
-  out.lcp_size = k;
-  out.nodes = zs.nodes;
-  out.seconds = zs.seconds;
-  RateSolutionSet3d& set = out.set;
+  RateSolutionSet3d set;
+  set.facets = k;
+  set.nodes = zs.nodes;
   set.complete = zs.complete;
   set.message = zs.message;
   const double force = std::max(dF.cwiseAbs().maxCoeff(), 1e-300);
@@ -167,7 +152,7 @@ FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& user_params,
     }
   }
   detail::rescale(set, scaling);
-  return out;
+  return set;
 }
 
 }  // namespace cpkit::rate

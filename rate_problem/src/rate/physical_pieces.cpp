@@ -706,17 +706,8 @@ namespace cpkit::rate {
 
 bool contains(const SystemRateSolutionSet& set, const SystemRates& r, double rel_tol) {
   const Eigen::Index N = r.dP_T.size();
-  const Eigen::VectorXd s = [&] {
-    Eigen::VectorXd v(6 * N);
-    v.head(2 * N).setConstant(set.force_scale);
-    v.tail(4 * N).setConstant(set.disp_scale);
-    return v;
-  }();
-  auto norm = [&](const SystemRates& x) -> Eigen::VectorXd {
-    Eigen::VectorXd v(6 * N);
-    v << x.dP_T, x.dP_N, x.dw_T, x.dw_N, x.dw_Ti, x.dw_w;
-    return v.cwiseQuotient(s);
-  };
+  const Eigen::VectorXd s = detail::scale_vector(static_cast<int>(N), set.force_scale, set.disp_scale);
+  auto norm = [&](const SystemRates& x) -> Eigen::VectorXd { return detail::stack(x).cwiseQuotient(s); };
   if (set.solutions.empty() || set.solutions.front().start.dP_T.size() != N) return false;
   const Eigen::VectorXd y = norm(r);
   const double tol = rel_tol * std::max(1.0, y.lpNorm<Eigen::Infinity>());

@@ -231,10 +231,10 @@ RateSummary summarize_rate_problem(const ContactParameters& params, const Contac
 namespace cpkit::rate {
 namespace {
 
+using detail::as_array;
+
 bool close_rates(const Rates& x, const Rates& y, const Rates& sc, double tol) noexcept {
-  const double xs[] = {x.dP_T, x.dP_N, x.dw_T, x.dw_N, x.dw_Ti, x.dw_w};
-  const double ys[] = {y.dP_T, y.dP_N, y.dw_T, y.dw_N, y.dw_Ti, y.dw_w};
-  const double ss[] = {sc.dP_T, sc.dP_N, sc.dw_T, sc.dw_N, sc.dw_Ti, sc.dw_w};
+  const auto xs = as_array(x), ys = as_array(y), ss = as_array(sc);
   for (int c = 0; c < 6; ++c) {
     const double n = std::max({ss[c] > 0 ? ss[c] : 1.0, std::abs(xs[c]), std::abs(ys[c])});
     if (std::abs(xs[c] - ys[c]) > tol * n) return false;
@@ -255,11 +255,7 @@ bool same_piece(const RateSolution& a, const RateSolution& b, const Rates& sc, d
     case RateSolution::Kind::kRay: {
       if (!close_rates(a.start, b.start, sc, tol) || a.start_closed != b.start_closed) return false;
       // directions agree up to a positive factor: compare normalised by dw_T^i or the largest
-      const double da[] = {a.direction.dP_T, a.direction.dP_N, a.direction.dw_T,
-                           a.direction.dw_N, a.direction.dw_Ti, a.direction.dw_w};
-      const double db[] = {b.direction.dP_T, b.direction.dP_N, b.direction.dw_T,
-                           b.direction.dw_N, b.direction.dw_Ti, b.direction.dw_w};
-      const double ss[] = {sc.dP_T, sc.dP_N, sc.dw_T, sc.dw_N, sc.dw_Ti, sc.dw_w};
+      const auto da = as_array(a.direction), db = as_array(b.direction), ss = as_array(sc);
       double na = 0, nb = 0;
       for (int c = 0; c < 6; ++c) {
         const double s = ss[c] > 0 ? ss[c] : 1.0;

@@ -1,6 +1,7 @@
 #pragma once
 // Internal helpers shared by the routes of the rate problem (not installed).
 #include <array>
+#include <string>
 #include <vector>
 
 #include "cpkit/rate_problem/model/contact_state.hpp"
@@ -8,7 +9,18 @@
 #include "cpkit/rate_problem/rate/point_rate.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
 
+namespace cpkit {
+struct SolverEntry;
+struct SolveResult;
+}  // namespace cpkit
+
 namespace cpkit::rate::detail {
+
+/// The registered LCP solver of a single-solver route, one point or N points ("ipopt" also
+/// under the MPCC route's longer names); nullptr when there is none.
+const SolverEntry* find_lcp_solver(const std::string& name);
+/// What a single solver's answer says: "<solver>: <status>" and " (<its message>)" if any.
+std::string solver_message(const SolverEntry& entry, const SolveResult& r);
 
 /// Fixed-capacity list of solution pieces (allocation-free). The analytic route needs at most
 /// 4 pieces (one per type in b); the enumeration route's conversion uses the larger capacity.
@@ -33,6 +45,11 @@ struct PieceListN {
 
 using PieceList = PieceListN<16>;
 using SmallPieceList = PieceListN<4>;
+
+/// The six rates (dP_T, dP_N, dw_T, dw_N, dw_Ti, dw_w) as an array, for componentwise tests.
+inline std::array<double, 6> as_array(const Rates& r) noexcept {
+  return {r.dP_T, r.dP_N, r.dw_T, r.dw_N, r.dw_Ti, r.dw_w};
+}
 
 /// Throws InputError naming the first problem of params, state or load.
 void validate_inputs(const ContactParameters& params, const ContactState& state,

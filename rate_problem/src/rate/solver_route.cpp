@@ -11,13 +11,10 @@
 #include "rate_detail.hpp"
 
 namespace cpkit::rate {
-namespace {
 
-std::array<double, 6> as_array(const Rates& r) noexcept {
-  return {r.dP_T, r.dP_N, r.dw_T, r.dw_N, r.dw_Ti, r.dw_w};
-}
+using detail::as_array;
 
-const SolverEntry* find_solver(const std::string& name) {
+const SolverEntry* detail::find_lcp_solver(const std::string& name) {
   const SolverRegistry& reg = lcp::solvers();
   if (const SolverEntry* e = reg.find(name)) return e;
   if (name == "ipopt") {  // the MPCC route may be registered under a longer name
@@ -27,12 +24,15 @@ const SolverEntry* find_solver(const std::string& name) {
   return nullptr;
 }
 
-}  // namespace
+std::string detail::solver_message(const SolverEntry& entry, const SolveResult& r) {
+  return entry.info.name + ": " + std::string(to_string(r.status)) +
+         (r.message.empty() ? "" : " (" + r.message + ")");
+}
 
 RateSolutionSet solve_rate_single(const ContactParameters& p, const ContactState& st,
                                   const LoadRate& f, const std::string& solver, SolveResult* raw) {
   detail::validate_inputs(p, st, f);
-  const SolverEntry* entry = find_solver(solver);
+  const SolverEntry* entry = detail::find_lcp_solver(solver);
   if (entry == nullptr || !entry->solve_lcp) {
     std::string names;
     for (const auto& n : lcp::solvers().names(ProblemKind::kLcp)) names += (names.empty() ? "" : ", ") + n;
@@ -58,8 +58,7 @@ RateSolutionSet solve_rate_single(const ContactParameters& p, const ContactState
       s.type = classify_rates(p, st, f, s.start);
       list.push(s);
     }
-    message = entry->info.name + ": " + std::string(to_string(r.status)) +
-              (r.message.empty() ? "" : " (" + r.message + ")");
+    message = detail::solver_message(*entry, r);
     // finalize()'s unit-free number: its w-units do not grow with z, so a drift to large z
     // along the z-rays of state b does not shrink it (residuals.hpp)
     residual = r.residuals.natural;

@@ -13,6 +13,7 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/lcp/solvers.hpp"
 #include "physical_pieces.hpp"
+#include "rate_detail.hpp"
 #include "../model/unit_scaling.hpp"
 
 namespace cpkit::rate {
@@ -219,25 +220,6 @@ void check_load(const ContactSystem& s, const Eigen::VectorXd& dF) {
   if (!dF.allFinite()) throw InputError("dF has a NaN or infinite entry");
 }
 
-const SolverEntry* find_solver(const std::string& name) {
-  const SolverRegistry& reg = lcp::solvers();
-  if (const SolverEntry* e = reg.find(name)) return e;
-  if (name == "ipopt") {
-    for (const char* alt : {"mpcc-ipopt", "mpcc", "ipopt-mpcc"})
-      if (const SolverEntry* e = reg.find(alt)) return e;
-  }
-  return nullptr;
-}
-
-const char* solver_name(RateMethod m) {
-  switch (m) {
-    case RateMethod::kLemke: return "lemke";
-    case RateMethod::kFbNewton: return "fb-newton";
-    case RateMethod::kIpopt: return "ipopt";
-    default: return "";
-  }
-}
-
 }  // namespace
 
 namespace detail {
@@ -337,8 +319,8 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
     set_from_units(all, units);
     return all;
   }
-  const std::string name = solver_name(method);
-  const SolverEntry* entry = find_solver(name);
+  const std::string name(to_string(method));
+  const SolverEntry* entry = detail::find_lcp_solver(name);
   if (entry == nullptr || !entry->solve_lcp)
     throw InputError("LCP solver '" + name + "' is not registered in this build");
   SystemRateSolutionSet one;
@@ -351,8 +333,7 @@ SystemRateSolutionSet solve_rate_problem(const ContactSystem& system_in,
   } else {
     const LcpProblem lcp(pre.M, detail::system_q(pre, dF), "N-point rate problem");
     SolveResult r = entry->solve_lcp(lcp, CommonOptions{});
-    one.message = entry->info.name + ": " + std::string(to_string(r.status)) +
-                  (r.message.empty() ? "" : " (" + r.message + ")");
+    one.message = detail::solver_message(*entry, r);
     one.residual = r.residuals.natural;
     if (!is_solution(r.status)) return one;
     z = r.z;

@@ -14,35 +14,13 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/rate/faceted_rate_3d.hpp"
 #include "../model/unit_scaling.hpp"
+#include "facet_polygon.hpp"
 #include "rate_3d_units.hpp"
 
 namespace cpkit::rate {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 constexpr double kTol = 1e-10;
-
-/// The inscribed polygon of a point's ellipse: outward unit facet normals and supports.
-struct Polygon {
-  Eigen::Matrix<double, 2, Eigen::Dynamic> N;
-  Eigen::VectorXd h;
-};
-
-Polygon polygon(const Eigen::Vector2d& alpha, int k) {
-  Polygon p;
-  p.N.resize(2, k);
-  p.h.resize(k);
-  std::vector<Eigen::Vector2d> v(static_cast<std::size_t>(k));
-  for (int i = 0; i < k; ++i)
-    v[i] = alpha.asDiagonal() * Eigen::Vector2d(std::cos(2 * kPi * i / k), std::sin(2 * kPi * i / k));
-  for (int j = 0; j < k; ++j) {
-    const Eigen::Vector2d e = v[(j + 1) % k] - v[j];
-    p.N.col(j) = Eigen::Vector2d(e(1), -e(0)).normalized();
-    p.h(j) = p.N.col(j).dot(v[j]);
-  }
-  return p;
-}
 
 /// The problem in normalized units (as unit_scaling.hpp for one point: A / |A|, C_T |A|,
 /// dF / |dF|), checked, with the facets of every grazing point.
@@ -53,7 +31,7 @@ struct Faceted {
   Eigen::MatrixXd A;
   Eigen::VectorXd dF;
   double a = 1, force_back = 1, disp_back = 1;
-  std::vector<Polygon> poly;
+  std::vector<detail::FacetPolygon> poly;
   int nb() const { return static_cast<int>(grazing.size()); }
   /// Whether point i is a grazing point that separates in case `mask` (bit b: grazing point b).
   bool separated(unsigned mask, int i) const {
@@ -108,7 +86,7 @@ Faceted prepare(const ContactSystem3d& user_sys, const Eigen::VectorXd& user_dF,
   f.force_back = fs;
   f.disp_back = fs / f.a;
   f.poly.resize(static_cast<std::size_t>(n));
-  for (int i : f.grazing) f.poly[i] = polygon(sys.points[i].alpha, k);
+  for (int i : f.grazing) f.poly[i] = detail::facet_polygon(sys.points[i].alpha, k);
   return f;
 }
 
@@ -374,7 +352,7 @@ SystemRateRoute3d solve_system_rate_3d(const ContactSystem3d& system, const Eige
   if (dF.size() != 3) throw InputError("dF must have 3 entries for one 3-D point");
   const ContactParameters3d p = system.point_parameters(0);
   const Eigen::Vector3d f = dF;
-  const RateSolutionSet3d s = facets != 0 ? solve_rate_3d_faceted(p, f, facets, time_limit_s).set
+  const RateSolutionSet3d s = facets != 0 ? solve_rate_3d_faceted(p, f, facets, time_limit_s)
                                           : solve_rate_3d(p, st, f);
   out.complete = s.complete;
   out.message = s.message;

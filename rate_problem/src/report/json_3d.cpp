@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "piece_report.hpp"
+
 namespace cpkit::rate {
 
 namespace {
@@ -83,11 +85,8 @@ nlohmann::json fretting_3d_sample_json(const Fretting3dSample& s) {
 nlohmann::json system_rate_3d_json(const SystemRateRoute3d& r) {
   nlohmann::json j;
   j["route"] = r.facets != 0 ? "faceted" : "exact";
-  j["complete"] = r.complete;
+  report_detail::add_count(j, r.complete, r.infinite() ? -1 : r.count(), r.solutions.size());
   if (r.timed_out) j["time_limit_reached"] = true;
-  if (!r.complete) j["found"] = r.count();
-  else if (r.infinite()) j["count"] = "inf";
-  else j["count"] = r.count();
   if (!r.message.empty()) j["message"] = r.message;
   nlohmann::json sols = nlohmann::json::array();
   for (const auto& x : r.solutions) {

@@ -1,12 +1,11 @@
 #include "cpkit/rate_problem/report/json.hpp"
 
-#include <set>
 #include <string>
 #include <vector>
 
 #include "cpkit/rate_problem/report/rate_outcome.hpp"
 #include "cpkit/rate_problem/report/json_3d.hpp"
-#include "piece_json.hpp"
+#include "piece_report.hpp"
 
 namespace cpkit::rate {
 
@@ -29,14 +28,9 @@ nlohmann::json rates_json(const SystemRates& r) {
 nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* reference) {
   using report_detail::count_json;
   nlohmann::json j;
-  j["complete"] = s.complete;
-  // A count only when the set is complete: one solver's one solution is not "count 1".
-  if (s.complete) j["count"] = count_json(s.count());
-  else j["found"] = s.solutions.size();
+  report_detail::add_count(j, s.complete, s.count(), s.solutions.size());
   if (reference && reference->complete) j["enumerated_count"] = count_json(reference->count());
-  std::set<std::string> types;
-  for (const auto& p : s.solutions) types.insert(std::string(to_string(p.type)));
-  j["types"] = std::vector<std::string>(types.begin(), types.end());
+  j["types"] = report_detail::type_names(s.solutions);
   nlohmann::json sols = nlohmann::json::array();
   for (const auto& p : s.solutions) {
     nlohmann::json e;
@@ -54,9 +48,7 @@ nlohmann::json rate_set_json(const RateSolutionSet& s, const RateSolutionSet* re
 
 nlohmann::json system_rate_set_json(const SystemRateSolutionSet& s) {
   nlohmann::json j;
-  j["complete"] = s.complete;
-  if (s.complete) j["count"] = report_detail::count_json(s.count());
-  else j["found"] = s.solutions.size();
+  report_detail::add_count(j, s.complete, s.count(), s.solutions.size());
   if (!s.message.empty()) j["message"] = s.message;
   nlohmann::json sols = nlohmann::json::array();
   for (const auto& p : s.solutions) {

@@ -2,10 +2,10 @@
 // is kept as it was when the program printed it.
 #include "cpkit/rate_problem/report/rate_text.hpp"
 
-#include <set>
 #include <sstream>
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
+#include "piece_report.hpp"
 
 namespace cpkit::rate {
 namespace {
@@ -60,44 +60,14 @@ std::string values_3d_text(const std::vector<Rates3d>& rs) {
   return o.str();
 }
 
-std::string types_3d_text(const std::vector<SolutionType>& t) {
-  std::string s;
-  for (std::size_t i = 0; i < t.size(); ++i) s += (i ? "/" : "") + std::string(to_string(t[i]));
-  return s;
-}
-
-/// "from X (closed)\n      to Y (open)" and the like: a point, segment or ray. `text` prints one
-/// end (one point: "dP_T=...", after `from` = "from " and `sep` = " "; N points: " dP_T=[...]",
-/// after " from" and "").
-template <class Values, class Text>
-void piece_text(std::ostream& o, const RateSolution::Kind kind, const char* from, const char* sep,
-                const Values& start, bool start_closed, const Values& end, bool end_closed,
-                const Values& direction, Text text) {
-  switch (kind) {
-    case RateSolution::Kind::kPoint:
-      o << text(start) << "\n";
-      break;
-    case RateSolution::Kind::kSegment:
-      o << from << text(start) << (start_closed ? " (closed)" : " (open)")
-        << "\n      to" << sep << text(end) << (end_closed ? " (closed)" : " (open)") << "\n";
-      break;
-    case RateSolution::Kind::kRay:
-      o << from << text(start) << (start_closed ? " (closed)" : " (open)")
-        << "\n      direction" << sep << text(direction) << "\n";
-      break;
-  }
-}
-
-std::string count_text(const RateSolutionSet& s) {
-  return s.count() < 0 ? std::string("inf") : std::to_string(s.count());
-}
+std::string count_text(int count) { return count < 0 ? std::string("inf") : std::to_string(count); }
 
 void one_point_text(std::ostream& o, const RateOutcome& out) {
   const RateSolutionSet& s = out.one_point->set;
   const RateSolutionSet* reference = out.one_point->reference ? &*out.one_point->reference : nullptr;
   o << "rate problem, state " << out.state << ", method " << out.method << "\n";
   if (s.complete) {
-    o << "count: " << count_text(s) << "   types:";
+    o << "count: " << count_text(s.count()) << "   types:";
   } else if (!reference) {
     o << "solutions found: " << s.solutions.size()
       << " (the enumeration is INCOMPLETE: not a count)   types:";
@@ -108,19 +78,16 @@ void one_point_text(std::ostream& o, const RateOutcome& out) {
   } else {
     o << "no solution found by " << out.method << " (incomplete: not a proof)   types:";
   }
-  std::set<std::string> types;
-  for (const auto& p : s.solutions) types.insert(std::string(to_string(p.type)));
-  for (const auto& t : types) o << ' ' << t;
+  for (const auto& t : report_detail::type_names(s.solutions)) o << ' ' << t;
   o << "\nLambda: " << s.Lambda << "   D_+: " << s.D_plus << "   D_-: " << s.D_minus
     << "   unique for all directions: " << (s.unique_for_all_directions ? "yes" : "no") << "\n";
   for (const auto& p : s.solutions) {
     o << "  " << to_string(p.type) << ' ' << to_string(p.kind) << ": ";
-    piece_text(o, p.kind, "from ", " ", p.start, p.start_closed, p.end, p.end_closed, p.direction,
-               rates_text);
+    report_detail::piece_text(o, p, "from ", " ", rates_text);
   }
   if (!s.message.empty()) o << "note: " << s.message << "\n";
   if (reference && reference->complete)
-    o << "complete enumeration (--method enumerate): " << count_text(*reference)
+    o << "complete enumeration (--method enumerate): " << count_text(reference->count())
       << " solution(s)\n";
 }
 
@@ -130,7 +97,7 @@ void system_text(std::ostream& o, const RateOutcome& out) {
   o << "rate problem, system " << (out.name.empty() ? out.path : out.name) << " ("
     << out.n_points << " points), method " << out.method << "\n";
   if (s.complete)
-    o << "count: " << (s.count() < 0 ? std::string("inf") : std::to_string(s.count())) << "\n";
+    o << "count: " << count_text(s.count()) << "\n";
   else if (single)
     o << (s.solutions.empty() ? "no solution found" : "a solution") << " (found by "
       << out.method << "; not a count)\n";
@@ -138,8 +105,7 @@ void system_text(std::ostream& o, const RateOutcome& out) {
     o << "solutions found: " << s.solutions.size() << " (INCOMPLETE: not a count)\n";
   for (const auto& p : s.solutions) {
     o << "  " << types_string(p.types) << ' ' << to_string(p.kind) << ":";
-    piece_text(o, p.kind, " from", "", p.start, p.start_closed, p.end, p.end_closed, p.direction,
-               system_values_text);
+    report_detail::piece_text(o, p, " from", "", system_values_text);
   }
   if (!s.message.empty()) o << "note: " << s.message << "\n";
 }
@@ -153,11 +119,11 @@ void system_3d_text(std::ostream& o, const RateOutcome& out) {
     << (out.facets != 0 ? "faceted with " + std::to_string(out.facets) + " facets" : "exact")
     << "\n";
   if (s.complete)
-    o << "count: " << (s.infinite() ? std::string("inf") : std::to_string(s.count())) << "\n";
+    o << "count: " << count_text(s.infinite() ? -1 : s.count()) << "\n";
   else
     o << "solutions found: " << s.count() << " (INCOMPLETE: not a count)\n";
   for (const auto& r : s.solutions) {
-    o << "  " << types_3d_text(r.types) << (r.ray ? " ray from" : " point:")
+    o << "  " << types_string(r.types) << (r.ray ? " ray from" : " point:")
       << values_3d_text(r.rates);
     nlohmann::json e;
     add_slip_json(e, r.types, r.ray ? r.direction : r.rates);

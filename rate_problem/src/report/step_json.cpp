@@ -1,12 +1,11 @@
 #include "cpkit/rate_problem/report/json.hpp"
 
-#include <set>
 #include <string>
 #include <vector>
 
 #include "cpkit/rate_problem/report/json_3d.hpp"
 #include "cpkit/rate_problem/report/step_outcome.hpp"
-#include "piece_json.hpp"
+#include "piece_report.hpp"
 
 namespace cpkit::rate {
 
@@ -17,11 +16,9 @@ nlohmann::json step_values_json(const StepValues& v) {
 }
 
 nlohmann::json step_set_json(const StepSolutionSet& s) {
-  std::set<std::string> types;
-  for (const auto& sol : s.solutions) types.insert(std::string(to_string(sol.type)));
   nlohmann::json j;
   j["count"] = report_detail::count_json(s.count());
-  j["types"] = std::vector<std::string>(types.begin(), types.end());
+  j["types"] = report_detail::type_names(s.solutions);
   j["continuous_count"] = s.continuous_count;
   j["complete"] = s.complete;
   if (!s.complete) j["message"] = s.message;

@@ -2,6 +2,9 @@
 
 #include <sstream>
 
+#include "cpkit/rate_problem/rate/system_rate.hpp"
+#include "piece_report.hpp"
+
 namespace cpkit::rate {
 namespace {
 
@@ -13,8 +16,6 @@ std::string values_text(const StepValues& v) {
     << " g1=" << v.g1;
   return o.str();
 }
-
-const char* end_text(bool closed) { return closed ? " (closed)" : " (open)"; }
 
 std::string count_text(int count) {
   return count < 0 ? std::string("infinitely many") : std::to_string(count);
@@ -30,15 +31,7 @@ void point_all_text(std::ostream& out, const StepSolutionSet& s) {
   for (const auto& sol : s.solutions) {
     out << "  " << to_string(sol.type) << " (" << to_string(sol.kind)
         << (sol.jump ? ", jump" : "") << "): ";
-    if (sol.kind == RateSolution::Kind::kPoint) {
-      out << values_text(sol.start) << "\n";
-    } else if (sol.kind == RateSolution::Kind::kSegment) {
-      out << "from " << values_text(sol.start) << end_text(sol.start_closed) << "\n      to "
-          << values_text(sol.end) << end_text(sol.end_closed) << "\n";
-    } else {
-      out << "from " << values_text(sol.start) << end_text(sol.start_closed)
-          << "\n      direction " << values_text(sol.direction) << "\n";
-    }
+    report_detail::piece_text(out, sol, "from ", " ", values_text);
   }
   if (s.continuous_count == 0 && !s.solutions.empty())
     out << "note: every solution is a jump: the rate problem has no solution in this "
@@ -68,9 +61,7 @@ void system_text(std::ostream& out, const StepOutcome& o) {
   out << "step (" << o.system_problem.system.n_points() << " points): " << s.solutions.size()
       << " solution(s)" << (s.complete ? " (complete)" : " (NOT proved complete)") << "\n";
   for (const auto& sol : s.solutions) {
-    out << "  ";
-    for (std::size_t i = 0; i < sol.types.size(); ++i) out << (i ? "/" : "") << to_string(sol.types[i]);
-    out << "\n";
+    out << "  " << types_string(sol.types) << "\n";
     for (std::size_t i = 0; i < sol.values.size(); ++i)
       out << "    point " << i + 1 << ": " << values_text(sol.values[i]) << "\n";
   }

@@ -9,7 +9,6 @@
 #include "cpkit/lcp/enumerate.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 #include "given.hpp"
 

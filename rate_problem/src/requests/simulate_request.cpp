@@ -18,7 +18,6 @@
 #include "cpkit/rate_problem/simulation/fretting_3d.hpp"
 #include "cpkit/rate_problem/simulation/system_simulation.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
 
 namespace cpkit::rate {

@@ -15,7 +15,7 @@
 #include "cpkit/core/timer.hpp"
 #include "cpkit/rate_problem/maps/map_request.hpp"
 #include "cpkit/rate_problem/maps/sphere_map_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 

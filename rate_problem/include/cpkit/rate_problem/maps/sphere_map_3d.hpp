@@ -29,7 +29,7 @@
 #include "cpkit/rate_problem/maps/map_axis.hpp"
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/model/rates.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 

@@ -11,21 +11,15 @@
 
 namespace cpkit::rate {
 
-struct FacetedRateResult {
-  RateSolutionSet3d set;   ///< physical solutions, deduplicated; complete as the enumeration
-  int facets = 0;          ///< k
-  int lcp_size = 0;        ///< k
-  long long nodes = 0;     ///< enumeration search nodes
-  double seconds = 0;      ///< enumeration time
-};
-
 /// Largest k accepted (the enumeration's supports are 64-bit masks).
 inline constexpr int kMaxFacets = 64;
 
-/// Every solution of the faceted state-b problem for the load rate dF. Throws InputError for
+/// Every solution of the faceted state-b problem for the load rate dF: physical solutions,
+/// deduplicated, complete as the enumeration (an LCP of size k), with facets = k and the
+/// enumeration's search nodes. Throws InputError for
 /// invalid input, a state other than b (the faceted route is for the grazing state; a, c, d are
 /// linear: solve_rate_3d), or k outside [3, kMaxFacets].
-FacetedRateResult solve_rate_3d_faceted(const ContactParameters3d& params,
+RateSolutionSet3d solve_rate_3d_faceted(const ContactParameters3d& params,
                                         const Eigen::Vector3d& dF, int facets,
                                         double time_limit_s = 60);
 

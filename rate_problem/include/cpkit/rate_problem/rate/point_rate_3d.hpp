@@ -51,13 +51,17 @@ struct RateSolution3d {
 };
 
 /// The solution set of a 3-D rate problem, of one point (Solution = RateSolution3d) or of N
-/// points (SystemRateRow3d, system_rate_3d.hpp): the listed solutions (points and rays, each
+/// points (SystemRateRow3d, system_rate_3d.hpp), by the exact route or the faceted one
+/// (faceted_rate_3d.hpp, system_rate_3d.hpp): the listed solutions (points and rays, each
 /// with its `ray` flag), whether the list is the whole set, and why not.
 template <class Solution>
 struct RateSet3dOf {
   std::vector<Solution> solutions;
   bool complete = true;  ///< every solution is listed (false: `message` says why)
   std::string message;
+  int facets = 0;          ///< 0: the exact route; k: the faceted one (a polygon of k facets)
+  long long nodes = 0;     ///< the faceted route: enumeration search nodes (over every case)
+  bool timed_out = false;  ///< the time limit ended the faceted N-point solve (then incomplete)
   int count() const noexcept { return static_cast<int>(solutions.size()); }
   bool infinite() const noexcept {  ///< some solution is a ray
     return std::any_of(solutions.begin(), solutions.end(), [](const Solution& s) { return s.ray; });

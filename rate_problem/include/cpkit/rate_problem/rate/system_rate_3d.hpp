@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include "cpkit/rate_problem/rate/point_rate_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 
@@ -29,11 +29,7 @@ struct SystemRateRow3d {
 using SystemSolution3d = SystemRateRow3d;
 
 /// Every solution of a 3-D system's rate problem, by either route below.
-struct SystemRateSet3d : RateSet3dOf<SystemRateRow3d> {
-  bool timed_out = false;  ///< the time limit ended the faceted N-point solve (then incomplete)
-  int facets = 0;          ///< 0: the exact one-point route; k: the faceted one
-  long long nodes = 0;     ///< the faceted N-point solve: enumeration search nodes over all subsets
-};
+using SystemRateSet3d = RateSet3dOf<SystemRateRow3d>;
 using SystemRateRoute3d = SystemRateSet3d;
 
 /// Largest number of grazing points (2^n_b separation subsets).

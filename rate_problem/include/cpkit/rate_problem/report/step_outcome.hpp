@@ -13,7 +13,7 @@
 #include "cpkit/rate_problem/step/step_solve.hpp"
 #include "cpkit/rate_problem/step/system_step.hpp"
 #include "cpkit/rate_problem/step/system_step_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 

@@ -21,7 +21,7 @@
 
 #include "cpkit/rate_problem/step/step_3d.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
-#include "cpkit/rate_problem/system/contact_system_3d.hpp"
+#include "cpkit/rate_problem/system/contact_system.hpp"
 
 namespace cpkit::rate {
 

@@ -3,7 +3,7 @@
 /// A system file (docs/file_formats.md, "System file") read once, whatever the dimension of its
 /// points: the commands read the file (a regular file, or a pipe such as `--system <(cat F)`,
 /// which can be read only once), look at its "dim", and hand the parsed document to the 2-D
-/// reader (contact_system.hpp) or the 3-D one (system/contact_system_3d.hpp).
+/// reader (contact_system.hpp) or the 3-D one (both in system/contact_system.hpp).
 #include <string>
 
 #include <nlohmann/json.hpp>
