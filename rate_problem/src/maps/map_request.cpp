@@ -14,6 +14,7 @@
 #include "cpkit/rate_problem/maps/map_parameter_table.hpp"
 #include "cpkit/rate_problem/maps/map_presets.hpp"
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
+#include "../model/options_given.hpp"
 
 namespace cpkit::rate {
 
@@ -45,16 +46,8 @@ std::vector<std::string> map_options_given(const MapRequest& a) {
 
 namespace {
 
-/// An option's name in messages and whether it was given.
-struct Given {
-  const char* name;
-  bool given;
-};
-
-template <class T>
-Given option(const char* name, const std::optional<T>& value) {
-  return {name, value.has_value()};
-}
+using detail::Given;
+using detail::option;
 
 void require_finite(double v, const char* name) {
   if (!std::isfinite(v)) throw InputError(std::string("--") + name + " must be finite");

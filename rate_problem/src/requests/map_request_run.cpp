@@ -25,7 +25,7 @@
 #include "cpkit/rate_problem/maps/system_grid_map_run.hpp"
 #include "cpkit/rate_problem/report/map_json.hpp"
 #include "cpkit/rate_problem/report/map_text.hpp"
-#include "given.hpp"
+#include "../model/options_given.hpp"
 
 namespace cpkit::rate {
 

@@ -10,7 +10,7 @@
 #include "cpkit/rate_problem/maps/system_direction_map.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
 #include "cpkit/rate_problem/system/system_file.hpp"
-#include "given.hpp"
+#include "../model/options_given.hpp"
 
 namespace cpkit::rate {
 

@@ -8,7 +8,7 @@
 #include "cpkit/rate_problem/step/multistart_cap.hpp"
 #include "cpkit/rate_problem/step/step_solvers_3d.hpp"
 #include "cpkit/rate_problem/system/contact_system.hpp"
-#include "given.hpp"
+#include "../model/options_given.hpp"
 
 namespace cpkit::rate {
 

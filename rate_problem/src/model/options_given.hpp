@@ -1,7 +1,8 @@
 #pragma once
 // Internal: the options a request was given, checked the same way by every request (rate,
 // step, map): an option that would have no effect is refused, a required one demanded, each by
-// its name as the program spells it.
+// its name as the program spells it. In model/, the lowest layer that knows ModelOptions, so
+// that maps/ (below requests/) reads the same type.
 #include <optional>
 #include <string>
 #include <vector>
